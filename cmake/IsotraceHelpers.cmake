@@ -1,0 +1,15 @@
+# Folder-level helpers: every folder lists its own sources and tests; the top level never names a file.
+
+# Adds library sources (paths relative to the calling folder) to the isotrace library.
+function(isotrace_sources)
+  foreach(source IN LISTS ARGN)
+    target_sources(isotrace PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/${source}")
+  endforeach()
+endfunction()
+
+# Adds GoogleTest sources (beside the code they test) to the single isotrace_tests executable.
+function(isotrace_tests)
+  foreach(source IN LISTS ARGN)
+    set_property(GLOBAL APPEND PROPERTY ISOTRACE_TEST_SOURCES "${CMAKE_CURRENT_SOURCE_DIR}/${source}")
+  endforeach()
+endfunction()

@@ -1,0 +1,23 @@
+#include "geometry/mesh/mesh_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "geometry/mesh/obj_loader.h"
+#include "geometry/mesh/ply_loader.h"
+#include "renderer/core/input_error.h"
+
+namespace isotrace {
+
+TriangleMeshData load_mesh_file(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".obj") return load_obj(path);
+    if (extension == ".ply") return load_ply(path);
+    const std::string found = extension.empty() ? "no file extension" : "unsupported file extension '" + extension + "'";
+    throw InputError({path}, "", found + " (supported mesh formats: .obj, .ply)");
+}
+
+}  // namespace isotrace

@@ -1,0 +1,112 @@
+#include "geometry/mesh/triangle_mesh_shape.h"
+
+#include <cstring>
+
+#include "geometry/mesh/mesh_file.h"
+
+namespace isotrace {
+
+TriangleMeshShape::TriangleMeshShape(TriangleMeshData mesh) : mesh_(std::move(mesh)) {}
+
+Bounds3f TriangleMeshShape::bounds() const {
+    Bounds3f b;
+    for (const Vec3f& p : mesh_.positions) b.extend(p);
+    return b;
+}
+
+void TriangleMeshShape::bake(const Transform& to_world) {
+    for (Vec3f& p : mesh_.positions) p = to_world.point(p);
+    for (Vec3f& n : mesh_.normals) n = to_world.normal(n);
+}
+
+RTCGeometry TriangleMeshShape::create_geometry(RTCDevice device) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree-owned buffers: they come padded for its 16-byte vector loads.
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), mesh_.positions.size()));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                   3 * sizeof(unsigned), mesh_.triangles.size()));
+    if (!vertices || !indices) return geometry;  // the caller reports Embree's error
+    for (std::size_t i = 0; i < mesh_.positions.size(); ++i) {
+        vertices[3 * i] = mesh_.positions[i].x;
+        vertices[3 * i + 1] = mesh_.positions[i].y;
+        vertices[3 * i + 2] = mesh_.positions[i].z;
+    }
+    static_assert(sizeof(mesh_.triangles[0]) == 3 * sizeof(unsigned));
+    std::memcpy(indices, mesh_.triangles.data(), mesh_.triangles.size() * sizeof(mesh_.triangles[0]));
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_normal) const {
+    LocalShading result;
+    result.geometric_normal = -embree_normal;
+    result.normal = result.geometric_normal;
+    const auto& triangle = mesh_.triangles[hit.primID];
+    const float w = 1 - hit.u - hit.v;
+    if (!mesh_.normals.empty()) {
+        const Vec3f n = mesh_.normals[triangle[0]] * w + mesh_.normals[triangle[1]] * hit.u +
+                        mesh_.normals[triangle[2]] * hit.v;
+        const float len = length(n);
+        if (len > 0 && std::isfinite(len)) result.normal = n / len;
+    }
+    if (!mesh_.uvs.empty()) {
+        for (int k = 0; k < 2; ++k)
+            result.uv[std::size_t(k)] = mesh_.uvs[triangle[0]][std::size_t(k)] * w +
+                                        mesh_.uvs[triangle[1]][std::size_t(k)] * hit.u +
+                                        mesh_.uvs[triangle[2]][std::size_t(k)] * hit.v;
+    } else {
+        result.uv = {hit.u, hit.v};
+    }
+    return result;
+}
+
+namespace {
+
+// Inline meshes: "positions": [[x,y,z], ...], "triangles": [[i,j,k], ...], optional "normals", "uvs".
+TriangleMeshData parse_inline_mesh(const SceneNode& node) {
+    TriangleMeshData mesh;
+    for (const SceneNode& p : node.optional_value("positions")->elements()) mesh.positions.push_back(Vec3f(p.as_vec3()));
+    if (auto normals = node.optional_value("normals"))
+        for (const SceneNode& n : normals->elements()) mesh.normals.push_back(Vec3f(n.as_vec3()));
+    if (auto uvs = node.optional_value("uvs"))
+        for (const SceneNode& uv : uvs->elements()) {
+            if (!uv.json().is_array() || uv.json().items.size() != 2) uv.fail("expected [u, v]");
+            mesh.uvs.push_back({float(uv.elements()[0].as_number()), float(uv.elements()[1].as_number())});
+        }
+    const auto triangles = node.optional_value("triangles");
+    if (!triangles) node.fail("an inline mesh needs \"triangles\"");
+    for (const SceneNode& t : triangles->elements()) {
+        const Vec3d index = t.as_vec3();
+        std::array<std::uint32_t, 3> triangle{};
+        for (int k = 0; k < 3; ++k) {
+            if (index[k] < 0 || index[k] != std::floor(index[k]) || index[k] >= double(mesh.positions.size()))
+                t.fail("vertex index " + std::to_string(index[k]) + " is not an index into positions (" +
+                       std::to_string(mesh.positions.size()) + " vertices)");
+            triangle[std::size_t(k)] = std::uint32_t(index[k]);
+        }
+        mesh.triangles.push_back(triangle);
+    }
+    try {
+        mesh.validate(node.context().file);
+    } catch (const InputError& error) {
+        node.fail(error.what());
+    }
+    return mesh;
+}
+
+std::unique_ptr<Shape> create(const SceneNode& node) {
+    if (node.has("file") && node.has("positions")) node.fail("give either \"file\" or inline \"positions\", not both");
+    TriangleMeshData mesh = node.has("file") ? load_mesh_file(node.file_path("file").string()) : parse_inline_mesh(node);
+    mesh.remove_degenerate_triangles();
+    if (mesh.triangles.empty()) node.fail("the mesh has no triangles of non-zero area");
+    return std::make_unique<TriangleMeshShape>(std::move(mesh));
+}
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(shape_registry, "mesh",
+                         "triangle mesh; file (.obj/.ply, relative to the scene) or inline positions/triangles",
+                         create)
+
+}  // namespace isotrace

@@ -1,0 +1,157 @@
+#include "geometry/sphere/sphere_shape.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "geometry/sphere/sphere_intersection.h"
+#include "renderer/core/render_counters.h"
+
+namespace isotrace {
+namespace {
+
+// The nearest root strictly inside (t_near, t_far), if any.
+std::optional<double> nearest_root(const SphereRoots& roots, double t_near, double t_far) {
+    if (roots.t0 > t_near && roots.t0 < t_far) return roots.t0;
+    if (roots.t1 > t_near && roots.t1 < t_far) return roots.t1;
+    return std::nullopt;
+}
+
+}  // namespace
+
+SphereShape::SphereShape(std::vector<Sphere> spheres) : spheres_(std::move(spheres)) {}
+
+Bounds3f SphereShape::bounds() const {
+    Bounds3f b;
+    for (const Sphere& s : spheres_) {
+        b.extend(Vec3f(s.centre - Vec3d(s.radius, s.radius, s.radius)));
+        b.extend(Vec3f(s.centre + Vec3d(s.radius, s.radius, s.radius)));
+    }
+    return b;
+}
+
+void SphereShape::bake(const Transform& to_world) {
+    const double scale = to_world.similarity_scale();
+    for (Sphere& s : spheres_) {
+        s.centre = to_world.point(s.centre);
+        s.radius *= scale;
+    }
+}
+
+RTCGeometry SphereShape::create_geometry(RTCDevice device) {
+    counter_slot_ = counters::geometry_type_slot(type_name(), true);
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(spheres_.size()));
+    rtcSetGeometryUserData(geometry, this);  // the bounds callback ignores its own userPtr in Embree 3.13.5
+    rtcSetGeometryBoundsFunction(geometry, bounds_callback, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, intersect_callback);
+    rtcSetGeometryOccludedFunction(geometry, occluded_callback);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+void SphereShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
+    const auto* self = static_cast<const SphereShape*>(args->geometryUserPtr);
+    const Sphere& s = self->spheres_[args->primID];
+    // Round outwards so float bounds still contain the double-precision sphere.
+    const auto down = [](double v) { return std::nextafter(float(v), -std::numeric_limits<float>::infinity()); };
+    const auto up = [](double v) { return std::nextafter(float(v), std::numeric_limits<float>::infinity()); };
+    args->bounds_o->lower_x = down(s.centre.x - s.radius);
+    args->bounds_o->lower_y = down(s.centre.y - s.radius);
+    args->bounds_o->lower_z = down(s.centre.z - s.radius);
+    args->bounds_o->upper_x = up(s.centre.x + s.radius);
+    args->bounds_o->upper_y = up(s.centre.y + s.radius);
+    args->bounds_o->upper_z = up(s.centre.z + s.radius);
+}
+
+void SphereShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
+    const auto* self = static_cast<const SphereShape*>(args->geometryUserPtr);
+    const Sphere& s = self->spheres_[args->primID];
+    RTCRayHitN* rayhit = args->rayhit;
+    RTCRayN* rays = RTCRayHitN_RayN(rayhit, args->N);
+    RTCHitN* hits = RTCRayHitN_HitN(rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        counters::count_test(self->counter_slot_);
+        const Vec3d origin(RTCRayN_org_x(rays, args->N, i), RTCRayN_org_y(rays, args->N, i),
+                           RTCRayN_org_z(rays, args->N, i));
+        const Vec3d direction(RTCRayN_dir_x(rays, args->N, i), RTCRayN_dir_y(rays, args->N, i),
+                              RTCRayN_dir_z(rays, args->N, i));
+        const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
+        if (!roots) continue;
+        float& t_far = RTCRayN_tfar(rays, args->N, i);
+        const auto t = nearest_root(*roots, RTCRayN_tnear(rays, args->N, i), t_far);
+        if (!t) continue;
+        counters::count_candidate_hit(self->counter_slot_);
+        const Vec3d normal = origin + direction * *t - s.centre;
+        t_far = float(*t);
+        RTCHitN_Ng_x(hits, args->N, i) = float(normal.x);
+        RTCHitN_Ng_y(hits, args->N, i) = float(normal.y);
+        RTCHitN_Ng_z(hits, args->N, i) = float(normal.z);
+        RTCHitN_u(hits, args->N, i) = 0;  // uv derived from the normal in shading()
+        RTCHitN_v(hits, args->N, i) = 0;
+        RTCHitN_primID(hits, args->N, i) = args->primID;
+        RTCHitN_geomID(hits, args->N, i) = args->geomID;
+        RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+    }
+}
+
+void SphereShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
+    const auto* self = static_cast<const SphereShape*>(args->geometryUserPtr);
+    const Sphere& s = self->spheres_[args->primID];
+    RTCRayN* rays = args->ray;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        counters::count_test(self->counter_slot_);
+        const Vec3d origin(RTCRayN_org_x(rays, args->N, i), RTCRayN_org_y(rays, args->N, i),
+                           RTCRayN_org_z(rays, args->N, i));
+        const Vec3d direction(RTCRayN_dir_x(rays, args->N, i), RTCRayN_dir_y(rays, args->N, i),
+                              RTCRayN_dir_z(rays, args->N, i));
+        const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
+        float& t_far = RTCRayN_tfar(rays, args->N, i);
+        if (!roots || !nearest_root(*roots, RTCRayN_tnear(rays, args->N, i), t_far)) continue;
+        counters::count_candidate_hit(self->counter_slot_);
+        t_far = -std::numeric_limits<float>::infinity();
+    }
+}
+
+LocalShading SphereShape::shading(const RTCHit&, const Vec3f& geometric_normal) const {
+    // Spherical coordinates of the normal, y up: u around the axis, v from the top (0) to the bottom (1).
+    const float u = 0.5f + std::atan2(geometric_normal.x, geometric_normal.z) * float(0.5 * std::numbers::inv_pi);
+    const float v = std::acos(std::clamp(geometric_normal.y, -1.0f, 1.0f)) * float(std::numbers::inv_pi);
+    return {geometric_normal, geometric_normal, {u, v}};
+}
+
+namespace {
+
+Sphere parse_sphere(const SceneNode& node) {
+    Sphere s;
+    s.centre = node.vec3_or("center", {0, 0, 0});
+    s.radius = node.number_or("radius", 1.0, NumberRange::positive());
+    if (max_component(abs(s.centre)) + s.radius > 1e18)  // Embree silently drops bounds this large
+        node.fail("sphere extends beyond 1e18 from the origin");
+    return s;
+}
+
+std::unique_ptr<Shape> create(const SceneNode& node) {
+    std::vector<Sphere> spheres;
+    const std::vector<SceneNode> list = node.object_array("spheres");
+    if (!list.empty() && (node.has("center") || node.has("radius")))
+        node.fail("give either \"center\"/\"radius\" or a \"spheres\" list, not both");
+    for (const SceneNode& item : list) {
+        spheres.push_back(parse_sphere(item));
+        item.finish();
+    }
+    if (list.empty()) {
+        if (node.has("spheres")) node.fail_at("spheres", "the list of spheres is empty");
+        spheres.push_back(parse_sphere(node));
+    }
+    return std::make_unique<SphereShape>(std::move(spheres));
+}
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(shape_registry, "sphere", "analytic sphere(s); center, radius or spheres: [{center, radius}]",
+                         create)
+
+}  // namespace isotrace

@@ -1,0 +1,72 @@
+#include "integrators/preview/preview_integrator.h"
+
+#include <numbers>
+
+#include "renderer/sampling/sampler.h"
+#include "renderer/sampling/warps.h"
+#include "renderer/scene/render_scene.h"
+
+namespace isotrace {
+
+Rgb PreviewIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
+                                PrimaryHitRecord& primary) const {
+    const std::optional<SurfaceHit> found = scene.intersect(camera_ray, RayKind::Camera);
+    if (!found) return settings_.background;
+    SurfaceHit hit = *found;
+    // Two-sided shading: turn the normals towards the viewer.
+    if (dot(hit.geometric_normal, camera_ray.direction) > 0) {
+        hit.geometric_normal = -hit.geometric_normal;
+        hit.shading_normal = -hit.shading_normal;
+    }
+    const Rgb albedo = hit.material->albedo(hit);
+    primary.hit = true;
+    primary.albedo = albedo;
+    primary.shading_normal = hit.shading_normal;
+    primary.position = hit.position;
+    primary.object_id = hit.object_index;
+    primary.primitive_id = hit.primitive_id;
+
+    Rgb result = hit.material->emission(hit);
+    if (albedo.is_black()) return result;
+
+    Rgb direct;
+    for (const auto& light : scene.lights()) {
+        const LightSample s = light->sample(hit.position, samples.next_2d());
+        const float cosine = dot(hit.shading_normal, s.direction);
+        if (cosine <= 0 || s.pdf <= 0 || s.radiance.is_black()) continue;
+        Ray shadow{hit.spawn_origin(s.direction), s.direction, 0, s.distance * (1 - 1e-4f)};
+        if (!scene.occluded(shadow)) direct += s.radiance * (cosine / s.pdf);
+    }
+    result += albedo * direct * float(std::numbers::inv_pi);
+
+    if (!settings_.ambient.is_black()) {
+        Vec3f tangent, bitangent;
+        orthonormal_basis(hit.shading_normal, tangent, bitangent);
+        int unoccluded = 0;
+        for (int i = 0; i < settings_.ambient_samples; ++i) {
+            const Vec3f local = square_to_cosine_hemisphere(samples.next_2d());
+            const Vec3f direction = tangent * local.x + bitangent * local.y + hit.shading_normal * local.z;
+            if (dot(direction, hit.geometric_normal) <= 0) continue;  // below the true surface: blocked
+            Ray probe{hit.spawn_origin(direction), direction, 0, settings_.ambient_distance};
+            if (!scene.occluded(probe)) ++unoccluded;
+        }
+        result += albedo * settings_.ambient * (float(unoccluded) / float(settings_.ambient_samples));
+    }
+    return result;
+}
+
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "preview",
+                         "direct light from point/directional lights + ambient occlusion under a uniform sky; "
+                         "ambient, background, ambient_samples, ambient_distance",
+                         [](const SceneNode& node) -> std::unique_ptr<Integrator> {
+                             PreviewSettings settings;
+                             settings.ambient = node.colour_or("ambient", settings.ambient);
+                             settings.background = node.colour_or("background", settings.ambient);
+                             settings.ambient_samples =
+                                 node.integer_or("ambient_samples", 1, NumberRange::between(1, 1024));
+                             settings.ambient_distance =
+                                 float(node.number_or("ambient_distance", 1e30, NumberRange::positive()));
+                             return std::make_unique<PreviewIntegrator>(settings);
+                         })
+
+}  // namespace isotrace

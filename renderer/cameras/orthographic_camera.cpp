@@ -1,0 +1,35 @@
+// Orthographic camera: parallel rays along -z of the camera frame through a width x height window.
+#include "renderer/plugin/camera.h"
+
+namespace isotrace {
+namespace {
+
+class OrthographicCamera final : public Camera {
+public:
+    OrthographicCamera(const Transform& to_world, const RasterSize& raster, double width)
+        : Camera(to_world), raster_(raster), half_width_(width / 2), half_height_(width / 2 * raster.height / raster.width) {}
+
+    Ray generate_ray(float raster_x, float raster_y, std::array<float, 2>) const override {
+        const Vec3d origin((2.0 * raster_x / raster_.width - 1.0) * half_width_,
+                           (1.0 - 2.0 * raster_y / raster_.height) * half_height_, 0);
+        Ray ray;
+        ray.origin = Vec3f(camera_to_world().point(origin));
+        ray.direction = Vec3f(normalize(camera_to_world().vector(Vec3d(0, 0, -1))));
+        return ray;
+    }
+
+private:
+    RasterSize raster_;
+    double half_width_, half_height_;
+};
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(camera_registry, "orthographic", "parallel projection; width (world units), look_at|transform",
+                         [](const SceneNode& node, const RasterSize& raster) -> std::unique_ptr<Camera> {
+                             const Transform to_world = parse_camera_placement(node);
+                             const double width = node.number_or("width", 2.0, NumberRange::positive());
+                             return std::make_unique<OrthographicCamera>(to_world, raster, width);
+                         })
+
+}  // namespace isotrace

@@ -1,0 +1,84 @@
+// Pinhole or thin-lens perspective camera. The camera looks down -z of its own frame, y up.
+#include <cmath>
+#include <numbers>
+
+#include "renderer/plugin/camera.h"
+#include "renderer/sampling/warps.h"
+
+namespace isotrace {
+namespace {
+
+class PerspectiveCamera final : public Camera {
+public:
+    PerspectiveCamera(const Transform& to_world, const RasterSize& raster, double fov_degrees,
+                      const std::string& fov_axis, double aperture_radius, double focus_distance)
+        : Camera(to_world),
+          raster_(raster),
+          aperture_radius_(float(aperture_radius)),
+          focus_distance_(float(focus_distance)) {
+        const double tan_half = std::tan(fov_degrees * std::numbers::pi / 360.0);
+        const double w = raster.width, h = raster.height;
+        std::string axis = fov_axis;
+        if (axis == "smaller") axis = w <= h ? "x" : "y";
+        if (axis == "larger") axis = w >= h ? "x" : "y";
+        if (axis == "x") {
+            half_width_ = tan_half;
+            half_height_ = tan_half * h / w;
+        } else if (axis == "y") {
+            half_height_ = tan_half;
+            half_width_ = tan_half * w / h;
+        } else {  // diagonal
+            const double diagonal = std::hypot(w, h);
+            half_width_ = tan_half * w / diagonal;
+            half_height_ = tan_half * h / diagonal;
+        }
+    }
+
+    Ray generate_ray(float raster_x, float raster_y, std::array<float, 2> lens_u) const override {
+        const double x = (2.0 * raster_x / raster_.width - 1.0) * half_width_;
+        const double y = (1.0 - 2.0 * raster_y / raster_.height) * half_height_;
+        Vec3d origin(0, 0, 0);
+        Vec3d direction(x, y, -1);
+        if (aperture_radius_ > 0) {
+            // Thin lens: rays through every lens point meet again on the plane of focus.
+            const auto disk = square_to_uniform_disk_concentric(lens_u);
+            origin = Vec3d(disk[0] * aperture_radius_, disk[1] * aperture_radius_, 0);
+            direction = direction * double(focus_distance_) - origin;
+        }
+        const Transform& to_world = camera_to_world();
+        Ray ray;
+        ray.origin = Vec3f(to_world.point(origin));
+        ray.direction = Vec3f(normalize(to_world.vector(direction)));
+        return ray;
+    }
+
+private:
+    RasterSize raster_;
+    double half_width_ = 1, half_height_ = 1;  // image-plane extent at distance 1
+    float aperture_radius_;
+    float focus_distance_;
+};
+
+std::unique_ptr<Camera> create(const SceneNode& node, const RasterSize& raster) {
+    const Transform to_world = parse_camera_placement(node);
+    const double fov = node.number_or("fov", 40.0, {0, 180, true, true});
+    const std::string axis = node.choice_or("fov_axis", "x", {"x", "y", "diagonal", "smaller", "larger"});
+    const double aperture = node.number_or("aperture_radius", 0.0, NumberRange::non_negative());
+    double focus = 1.0;
+    if (node.has("focus_distance")) {
+        focus = node.number("focus_distance", NumberRange::positive());
+    } else if (auto look_at = node.optional_object("look_at")) {
+        focus = length(look_at->vec3("target") - look_at->vec3("eye"));
+    } else if (aperture > 0) {
+        node.fail("a thin-lens camera (aperture_radius > 0) needs \"focus_distance\" or \"look_at\"");
+    }
+    return std::make_unique<PerspectiveCamera>(to_world, raster, fov, axis, aperture, focus);
+}
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(camera_registry, "perspective",
+                         "pinhole/thin lens; fov (deg), fov_axis, aperture_radius, focus_distance, look_at|transform",
+                         create)
+
+}  // namespace isotrace

@@ -1,0 +1,105 @@
+#include "renderer/core/render_counters.h"
+
+#include <array>
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <vector>
+
+namespace isotrace::counters {
+namespace {
+
+constexpr int kMaxGeometryTypes = 64;
+
+// Relaxed atomics written only by the owning thread: plain loads/stores in machine code, yet the progress
+// display may read them mid-render without a data race.
+using Counter = std::atomic<std::uint64_t>;
+
+void bump(Counter& counter) { counter.store(counter.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed); }
+std::uint64_t read(const Counter& counter) { return counter.load(std::memory_order_relaxed); }
+
+struct ThreadBlock {
+    Counter rays[3] = {0, 0, 0};
+    Counter nan_samples{0};
+    std::array<std::array<Counter, 3>, kMaxGeometryTypes> geometry{};  // tests, candidates, closest
+
+    void clear() {
+        for (auto& c : rays) c.store(0, std::memory_order_relaxed);
+        nan_samples.store(0, std::memory_order_relaxed);
+        for (auto& type : geometry)
+            for (auto& c : type) c.store(0, std::memory_order_relaxed);
+    }
+};
+
+struct Registry {
+    std::mutex mutex;
+    std::vector<std::unique_ptr<ThreadBlock>> blocks;  // owned here so counts survive thread exit
+    std::vector<std::string> type_names;
+    std::vector<bool> type_counts_tests;
+};
+
+Registry& registry() {
+    static Registry instance;
+    return instance;
+}
+
+ThreadBlock& local_block() {
+    thread_local ThreadBlock* block = [] {
+        Registry& r = registry();
+        std::lock_guard lock(r.mutex);
+        r.blocks.push_back(std::make_unique<ThreadBlock>());
+        return r.blocks.back().get();
+    }();
+    return *block;
+}
+
+}  // namespace
+
+int geometry_type_slot(const std::string& type_name, bool counts_tests) {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    for (std::size_t i = 0; i < r.type_names.size(); ++i)
+        if (r.type_names[i] == type_name) return int(i);
+    if (r.type_names.size() == kMaxGeometryTypes) throw std::logic_error("too many geometry types for counters");
+    r.type_names.push_back(type_name);
+    r.type_counts_tests.push_back(counts_tests);
+    return int(r.type_names.size() - 1);
+}
+
+void count_ray(RayKind kind) { bump(local_block().rays[int(kind)]); }
+void count_test(int slot) { bump(local_block().geometry[std::size_t(slot)][0]); }
+void count_candidate_hit(int slot) { bump(local_block().geometry[std::size_t(slot)][1]); }
+void count_closest_hit(int slot) { bump(local_block().geometry[std::size_t(slot)][2]); }
+void count_nan_sample() { bump(local_block().nan_samples); }
+
+CounterTotals totals() {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    CounterTotals result;
+    for (const auto& block : r.blocks) {
+        result.camera_rays += read(block->rays[int(RayKind::Camera)]);
+        result.secondary_rays += read(block->rays[int(RayKind::Secondary)]);
+        result.shadow_rays += read(block->rays[int(RayKind::Shadow)]);
+        result.nan_samples += read(block->nan_samples);
+    }
+    for (std::size_t slot = 0; slot < r.type_names.size(); ++slot) {
+        GeometryTypeCounts counts;
+        counts.counts_tests = r.type_counts_tests[slot];
+        for (const auto& block : r.blocks) {
+            counts.tests += read(block->geometry[slot][0]);
+            counts.candidate_hits += read(block->geometry[slot][1]);
+            counts.closest_hits += read(block->geometry[slot][2]);
+        }
+        result.geometry[r.type_names[slot]] = counts;
+    }
+    return result;
+}
+
+void reset() {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    for (auto& block : r.blocks) block->clear();
+}
+
+}  // namespace isotrace::counters

@@ -1,0 +1,107 @@
+#include "renderer/film/film.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace isotrace {
+namespace {
+
+bool needs_hit_data(const std::vector<Aov>& aovs) {
+    return std::any_of(aovs.begin(), aovs.end(),
+                       [](Aov a) { return a != Aov::SampleCount && a != Aov::Variance; });
+}
+
+}  // namespace
+
+Film::Film(FilmSettings settings) : settings_(std::move(settings)) {
+    beauty_.resize(std::size_t(settings_.crop.area()));
+    if (needs_hit_data(settings_.aovs)) aovs_.resize(beauty_.size());
+}
+
+void Film::add_sample(int x, int y, const CameraSample& sample) {
+    const std::size_t i = index(x, y);
+    Accumulator& pixel = beauty_[i];
+    const double w = sample.filter_weight;
+    const double value[3] = {sample.radiance.r, sample.radiance.g, sample.radiance.b};
+    pixel.weight += w;
+    pixel.weight_squared += w * w;
+    for (int c = 0; c < 3; ++c) {
+        pixel.rgb[c] += w * value[c];
+        pixel.rgb_squared[c] += w * value[c] * value[c];
+    }
+    if (sample.primary.hit) pixel.coverage += w;
+    ++pixel.samples;
+    if (aovs_.empty() || !sample.primary.hit) return;
+
+    AovAccumulator& aov = aovs_[i];
+    const PrimaryHitRecord& hit = sample.primary;
+    const float a[3] = {hit.albedo.r, hit.albedo.g, hit.albedo.b};
+    for (int c = 0; c < 3; ++c) {
+        aov.albedo[c] += w * a[c];
+        aov.normal[c] += w * hit.shading_normal[c];
+        aov.position[c] += w * hit.position[c];
+    }
+    aov.depth += w * hit.depth;
+    aov.hit_weight += w;
+    if (sample.offset_squared < aov.nearest_offset) {  // ids cannot be averaged: keep the most central sample's
+        aov.nearest_offset = sample.offset_squared;
+        aov.object_id = hit.object_id;
+        aov.primitive_id = hit.primitive_id;
+    }
+}
+
+std::uint32_t Film::sample_count(int x, int y) const { return beauty_[index(x, y)].samples; }
+
+ImageBuffer Film::resolve() const {
+    ImageBuffer image;
+    image.width = settings_.crop.width();
+    image.height = settings_.crop.height();
+    image.channels = {"R", "G", "B", "A"};
+    for (Aov aov : settings_.aovs)
+        for (const char* channel : aov_info(aov).channels) image.channels.push_back(channel);
+    const std::size_t stride = image.channels.size();
+    image.pixels.assign(beauty_.size() * stride, 0.0f);
+    const float inf = std::numeric_limits<float>::infinity();
+
+    for (std::size_t i = 0; i < beauty_.size(); ++i) {
+        const Accumulator& p = beauty_[i];
+        float* out = image.pixels.data() + i * stride;
+        const double inv_w = p.weight > 0 ? 1.0 / p.weight : 0.0;
+        for (int c = 0; c < 3; ++c) out[c] = float(p.rgb[c] * inv_w);
+        out[3] = float(p.coverage * inv_w);
+        std::size_t k = 4;
+        for (Aov aov : settings_.aovs) {
+            const AovAccumulator* a = aovs_.empty() ? nullptr : &aovs_[i];
+            const double inv_hit = a && a->hit_weight > 0 ? 1.0 / a->hit_weight : 0.0;
+            switch (aov) {
+                case Aov::Albedo:
+                    for (int c = 0; c < 3; ++c) out[k++] = float(a->albedo[c] * inv_hit);
+                    break;
+                case Aov::Normal:
+                    for (int c = 0; c < 3; ++c) out[k++] = float(a->normal[c] * inv_hit);
+                    break;
+                case Aov::Position:
+                    for (int c = 0; c < 3; ++c) out[k++] = float(a->position[c] * inv_hit);
+                    break;
+                case Aov::Depth: out[k++] = a->hit_weight > 0 ? float(a->depth * inv_hit) : inf; break;
+                case Aov::ObjectId: out[k++] = float(a->object_id); break;
+                case Aov::PrimitiveId: out[k++] = float(a->primitive_id); break;
+                case Aov::SampleCount: out[k++] = float(p.samples); break;
+                case Aov::Variance: {
+                    // Variance of the weighted mean, with the effective sample count (sum w)^2 / sum w^2.
+                    const double denominator = p.weight * p.weight - p.weight_squared;
+                    for (int c = 0; c < 3; ++c) {
+                        const double mean = p.rgb[c] * inv_w;
+                        const double second_moment = p.rgb_squared[c] * inv_w;
+                        const double spread = std::max(0.0, second_moment - mean * mean);
+                        out[k++] = denominator > 0 ? float(spread * p.weight_squared / denominator) : inf;
+                    }
+                    break;
+                }
+            }
+        }
+    }
+    return image;
+}
+
+}  // namespace isotrace

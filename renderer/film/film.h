@@ -1,0 +1,83 @@
+#pragma once
+// Film: per-pixel accumulation of weighted radiance samples (filter importance sampling: every sample belongs
+// to exactly one pixel) plus the requested AOVs. A pixel's samples are added in sample-index order by one
+// thread, so the result is independent of thread count and tile size.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "renderer/film/aov.h"
+#include "renderer/math/rgb.h"
+#include "renderer/plugin/camera.h"
+#include "renderer/plugin/integrator.h"
+
+namespace isotrace {
+
+// Pixel rectangle [x0, x1) x [y0, y1) of the full raster.
+struct PixelBounds {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    std::int64_t area() const { return std::int64_t(width()) * height(); }
+};
+
+struct FilmSettings {
+    RasterSize raster;
+    PixelBounds crop;  // the part of the raster rendered and written
+    std::vector<Aov> aovs;
+    bool half_float = false;  // EXR pixel type
+};
+
+// Interleaved float image with named channels.
+struct ImageBuffer {
+    int width = 0, height = 0;
+    std::vector<std::string> channels;
+    std::vector<float> pixels;  // width * height * channels.size()
+    float* pixel(int x, int y) { return pixels.data() + (std::size_t(y) * width + x) * channels.size(); }
+};
+
+struct CameraSample {
+    Rgb radiance;
+    float filter_weight = 1;
+    float offset_squared = 0;  // squared distance of the sample from the pixel centre (id AOVs keep the nearest)
+    PrimaryHitRecord primary;
+};
+
+class Film {
+public:
+    explicit Film(FilmSettings settings);
+
+    const FilmSettings& settings() const { return settings_; }
+    const PixelBounds& bounds() const { return settings_.crop; }
+
+    // x, y in full-raster pixels inside bounds(). Not thread-safe per pixel (one thread owns a pixel).
+    void add_sample(int x, int y, const CameraSample& sample);
+    std::uint32_t sample_count(int x, int y) const;
+
+    // Beauty RGBA followed by the AOV channels in the order requested.
+    ImageBuffer resolve() const;
+
+private:
+    struct Accumulator {
+        double weight = 0, weight_squared = 0;
+        double rgb[3] = {0, 0, 0};
+        double rgb_squared[3] = {0, 0, 0};
+        double coverage = 0;  // weighted fraction of samples that hit a surface
+        std::uint32_t samples = 0;
+    };
+    struct AovAccumulator {
+        double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, position[3] = {0, 0, 0};
+        double depth = 0, hit_weight = 0;
+        float nearest_offset = 1e30f;
+        std::int64_t object_id = -1, primitive_id = -1;
+    };
+    std::size_t index(int x, int y) const {
+        return std::size_t(y - settings_.crop.y0) * std::size_t(settings_.crop.width()) + std::size_t(x - settings_.crop.x0);
+    }
+
+    FilmSettings settings_;
+    std::vector<Accumulator> beauty_;
+    std::vector<AovAccumulator> aovs_;  // empty unless AOVs that need them were requested
+};
+
+}  // namespace isotrace

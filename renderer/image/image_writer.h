@@ -1,0 +1,41 @@
+#pragma once
+// Writes rendered images: scene-linear EXR with every channel and metadata, or a display-referred 8-bit
+// PNG/JPEG of the beauty through the OCIO display/view transform.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "renderer/film/film.h"
+
+namespace isotrace {
+
+class ColourSystem;
+
+struct ImageMetadata {
+    std::vector<std::pair<std::string, std::variant<std::string, double, std::int64_t>>> entries;
+    void set(const std::string& name, std::variant<std::string, double, std::int64_t> value) {
+        entries.emplace_back(name, std::move(value));
+    }
+};
+
+// Placement of a (possibly cropped) image inside the full raster.
+struct ImageWindow {
+    RasterSize full;
+    int x = 0, y = 0;  // data window origin
+};
+
+enum class ImageKind { Exr, Display };
+
+// Chooses by extension: .exr -> Exr; .png/.jpg/.jpeg/.tif/.tiff -> Display. Throws InputError otherwise.
+ImageKind image_kind_for(const std::filesystem::path& path);
+
+void write_exr(const std::filesystem::path& path, const ImageBuffer& image, const ImageWindow& window,
+               bool half_float, const ImageMetadata& metadata);
+
+void write_display_image(const std::filesystem::path& path, const ImageBuffer& image, const ColourSystem& colours,
+                         const std::string& display, const std::string& view, const ImageMetadata& metadata);
+
+}  // namespace isotrace

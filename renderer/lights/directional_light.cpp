@@ -1,0 +1,36 @@
+// Distant light (sun-like): parallel light arriving from one direction with a given irradiance.
+#include <limits>
+
+#include "renderer/plugin/light.h"
+
+namespace isotrace {
+namespace {
+
+class DirectionalLight final : public Light {
+public:
+    DirectionalLight(const Vec3f& towards_light, const Rgb& irradiance)
+        : towards_light_(towards_light), irradiance_(irradiance) {}
+
+    LightSample sample(const Vec3f&, std::array<float, 2>) const override {
+        return {irradiance_, towards_light_, std::numeric_limits<float>::infinity(), 1.0f, true};
+    }
+    float power() const override { return irradiance_.max(); }
+
+private:
+    Vec3f towards_light_;
+    Rgb irradiance_;
+};
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(light_registry, "directional",
+                         "distant light; direction (travel direction of the light), irradiance (colour), scale",
+                         [](const SceneNode& node) -> std::unique_ptr<Light> {
+                             const Vec3d direction = node.vec3("direction");
+                             if (!(length(direction) > 0)) node.fail_at("direction", "direction must not be zero");
+                             const Rgb irradiance = node.colour_or("irradiance", Rgb(1.0f)) *
+                                                    float(node.number_or("scale", 1.0, NumberRange::non_negative()));
+                             return std::make_unique<DirectionalLight>(Vec3f(-normalize(direction)), irradiance);
+                         })
+
+}  // namespace isotrace

@@ -1,0 +1,47 @@
+#pragma once
+// Affine transform as a 4x4 double matrix with its inverse kept alongside (scene input is composed in
+// double so that long chains of steps do not drift).
+#include <array>
+
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+class Transform {
+public:
+    using Matrix = std::array<std::array<double, 4>, 4>;  // row-major, column vectors: p' = M p
+
+    Transform();  // identity
+    // Throws std::invalid_argument when the matrix is singular or not affine.
+    static Transform from_matrix(const Matrix& m);
+    static Transform translate(const Vec3d& offset);
+    static Transform scale(const Vec3d& factors);
+    static Transform rotate(const Vec3d& axis, double degrees);
+    // Camera-to-world for a camera at `eye` looking at `target` (camera looks down -z, y up).
+    static Transform look_at(const Vec3d& eye, const Vec3d& target, const Vec3d& up);
+
+    const Matrix& matrix() const { return m_; }
+    const Matrix& inverse_matrix() const { return inv_; }
+    Transform inverse() const;
+    Transform operator*(const Transform& rhs) const;  // (A * B)(p) = A(B(p))
+
+    Vec3d point(const Vec3d& p) const;
+    Vec3d vector(const Vec3d& v) const;
+    Vec3d normal(const Vec3d& n) const;  // inverse transpose; not normalised
+    Vec3f point(const Vec3f& p) const { return Vec3f(point(Vec3d(p))); }
+    Vec3f vector(const Vec3f& v) const { return Vec3f(vector(Vec3d(v))); }
+    Vec3f normal(const Vec3f& n) const { return Vec3f(normal(Vec3d(n))); }
+
+    bool is_identity() const;
+    // Rotation + uniform scale + translation (angles preserved): returns the scale factor, or 0 if not.
+    double similarity_scale(double tolerance = 1e-9) const;
+    // Determinant of the linear part (negative = handedness flips).
+    double determinant() const;
+
+private:
+    Transform(const Matrix& m, const Matrix& inv) : m_(m), inv_(inv) {}
+    Matrix m_;
+    Matrix inv_;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,35 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "renderer/core/ray.h"
+#include "renderer/math/rgb.h"
+#include "renderer/plugin/registry.h"
+
+namespace isotrace {
+
+class RenderScene;
+class SampleStream;
+
+// What the camera ray saw first, for the AOVs. Integrators fill it from their primary intersection.
+struct PrimaryHitRecord {
+    bool hit = false;
+    Rgb albedo;
+    Vec3f shading_normal;
+    Vec3f position;
+    float depth = 0;
+    std::uint32_t object_id = 0;
+    std::uint32_t primitive_id = 0;
+};
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    // Radiance arriving along `camera_ray` (in the working space).
+    virtual Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
+                         PrimaryHitRecord& primary) const = 0;
+};
+
+Registry<Integrator>& integrator_registry();
+
+}  // namespace isotrace

@@ -1,0 +1,59 @@
+#pragma once
+// Shape: a geometry plugin. It owns its data, builds one Embree geometry, and completes hits with shading
+// data. The scene either bakes an object's transform into the shape (when the shape can represent the
+// transformed result exactly) or places the shape in an Embree instance.
+#include <embree3/rtcore.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+
+#include "renderer/math/transform.h"
+#include "renderer/plugin/registry.h"
+
+namespace isotrace {
+
+// Shading data in the shape's own space (object space when instanced).
+struct LocalShading {
+    Vec3f geometric_normal;       // unit; the shape's orientation convention (outward / counter-clockwise front)
+    Vec3f normal;                 // shading normal, unit length
+    std::array<float, 2> uv{0, 0};
+};
+
+struct Bounds3f {
+    Vec3f lower{1e30f, 1e30f, 1e30f};
+    Vec3f upper{-1e30f, -1e30f, -1e30f};
+    void extend(const Vec3f& p) {
+        lower = min(lower, p);
+        upper = max(upper, p);
+    }
+    bool empty() const { return lower.x > upper.x; }
+};
+
+class Shape {
+public:
+    virtual ~Shape() = default;
+
+    // Name used in statistics tables ("sphere", "triangle_mesh", ...).
+    virtual std::string type_name() const = 0;
+    virtual std::size_t primitive_count() const = 0;
+    virtual Bounds3f bounds() const = 0;
+    // True for user geometries whose callbacks count their intersection tests (see render_counters.h).
+    virtual bool counts_intersection_tests() const { return false; }
+
+    // True when bake(to_world) represents the transformed shape exactly.
+    virtual bool can_bake(const Transform& to_world) const = 0;
+    virtual void bake(const Transform& to_world) = 0;
+
+    // Creates and commits the Embree geometry (called once, after any bake).
+    virtual RTCGeometry create_geometry(RTCDevice device) = 0;
+
+    // Completes a hit found by Embree in this shape's space. `geometric_normal` is Embree's Ng normalised.
+    virtual LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const {
+        return {geometric_normal, geometric_normal, {hit.u, hit.v}};
+    }
+};
+
+Registry<Shape>& shape_registry();
+
+}  // namespace isotrace

@@ -1,0 +1,74 @@
+#include "renderer/sampling/sobol.h"
+
+#include <array>
+#include <bit>
+#include <cassert>
+
+namespace isotrace {
+namespace {
+
+// A Sobol' dimension is defined by a primitive polynomial over GF(2) of degree s,
+//   x^s + a_1 x^(s-1) + ... + a_(s-1) x + 1   (the a_j packed into `inner_coefficients`, a_1 most significant),
+// and s free odd integers m_1..m_s with m_k < 2^k. These rows are dimensions 2..4 of Joe & Kuo's file.
+struct SobolPolynomial {
+    int degree;
+    uint32_t inner_coefficients;
+    std::array<uint32_t, 3> initial_m;
+};
+
+constexpr std::array<SobolPolynomial, kSobolDimensions - 1> kPolynomials = {{
+    {1, 0, {1, 0, 0}},
+    {2, 1, {1, 3, 0}},
+    {3, 1, {1, 3, 1}},
+}};
+
+using GeneratorMatrix = std::array<uint32_t, 32>;  // column k: direction number for index bit k
+
+// The remaining m_k follow from Bratley & Fox's recurrence (as documented by Joe & Kuo):
+//   m_k = 2 a_1 m_(k-1) ^ 4 a_2 m_(k-2) ^ ... ^ 2^(s-1) a_(s-1) m_(k-s+1) ^ 2^s m_(k-s) ^ m_(k-s),
+// and the k-th direction number (1-based) is m_k / 2^k, i.e. m_k << (32 - k) in 0.32 fixed point.
+constexpr GeneratorMatrix generator_from_polynomial(const SobolPolynomial& p) {
+    std::array<uint32_t, 32> m{};
+    for (int k = 0; k < 32; ++k) {
+        if (k < p.degree) {
+            m[k] = p.initial_m[k];
+            continue;
+        }
+        uint32_t next = m[k - p.degree] ^ (m[k - p.degree] << p.degree);
+        for (int j = 1; j < p.degree; ++j) {
+            if ((p.inner_coefficients >> (p.degree - 1 - j)) & 1u) next ^= m[k - j] << j;
+        }
+        m[k] = next;
+    }
+    GeneratorMatrix columns{};
+    for (int k = 0; k < 32; ++k) columns[k] = m[k] << (31 - k);
+    return columns;
+}
+
+// Dimension 0 has no polynomial: all m_k = 1, which is the van der Corput sequence (bit reversal).
+constexpr GeneratorMatrix van_der_corput_generator() {
+    GeneratorMatrix columns{};
+    for (int k = 0; k < 32; ++k) columns[k] = 1u << (31 - k);
+    return columns;
+}
+
+constexpr std::array<GeneratorMatrix, kSobolDimensions> build_generators() {
+    std::array<GeneratorMatrix, kSobolDimensions> generators{};
+    generators[0] = van_der_corput_generator();
+    for (uint32_t d = 1; d < kSobolDimensions; ++d) generators[d] = generator_from_polynomial(kPolynomials[d - 1]);
+    return generators;
+}
+
+constexpr std::array<GeneratorMatrix, kSobolDimensions> kGenerators = build_generators();
+
+}  // namespace
+
+uint32_t sobol_sample(uint32_t index, uint32_t dimension) {
+    assert(dimension < kSobolDimensions);
+    const GeneratorMatrix& columns = kGenerators[dimension];
+    uint32_t value = 0;
+    for (; index != 0; index &= index - 1) value ^= columns[std::countr_zero(index)];
+    return value;
+}
+
+}  // namespace isotrace

@@ -1,0 +1,13 @@
+#pragma once
+// The first dimensions of the 32-bit Sobol' sequence with Joe & Kuo's direction numbers
+// (new-joe-kuo-6.21201), evaluated by random access in natural (not Gray-code) order.
+#include <cstdint>
+
+namespace isotrace {
+
+inline constexpr uint32_t kSobolDimensions = 4;
+
+// Sobol' value of `index` in `dimension` (< kSobolDimensions) as 0.32 fixed point (divide by 2^32 for [0,1)).
+uint32_t sobol_sample(uint32_t index, uint32_t dimension);
+
+}  // namespace isotrace

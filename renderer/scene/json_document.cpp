@@ -1,0 +1,289 @@
+#include "renderer/scene/json_document.h"
+
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace isotrace {
+
+const JsonValue* JsonValue::find(const std::string& key) const {
+    for (const auto& [name, value] : members)
+        if (name == key) return &value;
+    return nullptr;
+}
+
+const char* JsonValue::kind_name(Kind kind) {
+    switch (kind) {
+        case Kind::Null: return "null";
+        case Kind::Bool: return "boolean";
+        case Kind::Number: return "number";
+        case Kind::String: return "string";
+        case Kind::Array: return "array";
+        case Kind::Object: return "object";
+    }
+    return "value";
+}
+
+namespace {
+
+constexpr int kMaxDepth = 256;  // deeper nesting is surely an error and would exhaust the stack
+
+class JsonParser {
+public:
+    JsonParser(const std::string& text, const std::string& file) : text_(text), file_(file) {}
+
+    JsonValue parse_document() {
+        skip_whitespace();
+        JsonValue root = parse_value(0);
+        skip_whitespace();
+        if (pos_ < text_.size()) fail("unexpected text after the end of the JSON document");
+        return root;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& problem) const { throw InputError(here(), "", problem); }
+
+    SourceLocation here() const { return {file_, line_, int(pos_ - line_start_) + 1}; }
+
+    bool at_end() const { return pos_ >= text_.size(); }
+    char peek() const { return at_end() ? '\0' : text_[pos_]; }
+
+    void advance() {
+        if (text_[pos_] == '\n') {
+            ++line_;
+            line_start_ = pos_ + 1;
+        }
+        ++pos_;
+    }
+
+    void skip_whitespace() {
+        while (!at_end() && (peek() == ' ' || peek() == '\t' || peek() == '\n' || peek() == '\r')) advance();
+    }
+
+    void expect(char c, const char* what) {
+        if (peek() != c) fail(std::string("expected ") + what + describe_next());
+        advance();
+    }
+
+    std::string describe_next() const {
+        if (at_end()) return " but the file ended";
+        return std::string(" but found '") + peek() + "'";
+    }
+
+    JsonValue parse_value(int depth) {
+        if (depth > kMaxDepth) fail("JSON nested too deeply");
+        JsonValue value;
+        value.location = here();
+        const char c = peek();
+        if (c == '{') {
+            parse_object(value, depth);
+        } else if (c == '[') {
+            parse_array(value, depth);
+        } else if (c == '"') {
+            value.kind = JsonValue::Kind::String;
+            value.string = parse_string();
+        } else if (c == '-' || (c >= '0' && c <= '9')) {
+            value.kind = JsonValue::Kind::Number;
+            value.number = parse_number();
+        } else if (match_word("true")) {
+            value.kind = JsonValue::Kind::Bool;
+            value.boolean = true;
+        } else if (match_word("false")) {
+            value.kind = JsonValue::Kind::Bool;
+        } else if (match_word("null")) {
+            value.kind = JsonValue::Kind::Null;
+        } else {
+            fail("expected a JSON value" + describe_next());
+        }
+        return value;
+    }
+
+    bool match_word(const char* word) {
+        const std::size_t n = std::char_traits<char>::length(word);
+        if (text_.compare(pos_, n, word) != 0) return false;
+        for (std::size_t i = 0; i < n; ++i) advance();
+        return true;
+    }
+
+    void parse_object(JsonValue& value, int depth) {
+        value.kind = JsonValue::Kind::Object;
+        advance();  // '{'
+        skip_whitespace();
+        if (peek() == '}') {
+            advance();
+            return;
+        }
+        for (;;) {
+            skip_whitespace();
+            if (peek() != '"') fail("expected a quoted key" + describe_next());
+            const SourceLocation key_location = here();
+            std::string key = parse_string();
+            if (value.find(key)) throw InputError(key_location, key, "duplicate key");
+            skip_whitespace();
+            expect(':', "':' after the key");
+            skip_whitespace();
+            value.members.emplace_back(std::move(key), parse_value(depth + 1));
+            skip_whitespace();
+            if (peek() == ',') {
+                advance();
+                continue;
+            }
+            expect('}', "',' or '}'");
+            return;
+        }
+    }
+
+    void parse_array(JsonValue& value, int depth) {
+        value.kind = JsonValue::Kind::Array;
+        advance();  // '['
+        skip_whitespace();
+        if (peek() == ']') {
+            advance();
+            return;
+        }
+        for (;;) {
+            skip_whitespace();
+            value.items.push_back(parse_value(depth + 1));
+            skip_whitespace();
+            if (peek() == ',') {
+                advance();
+                continue;
+            }
+            expect(']', "',' or ']'");
+            return;
+        }
+    }
+
+    double parse_number() {
+        const std::size_t start = pos_;
+        if (peek() == '-') advance();
+        if (peek() == '0') {
+            advance();
+        } else if (peek() >= '1' && peek() <= '9') {
+            while (std::isdigit(static_cast<unsigned char>(peek()))) advance();
+        } else {
+            fail("malformed number");
+        }
+        if (peek() == '.') {
+            advance();
+            if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("malformed number: digit expected after '.'");
+            while (std::isdigit(static_cast<unsigned char>(peek()))) advance();
+        }
+        if (peek() == 'e' || peek() == 'E') {
+            advance();
+            if (peek() == '+' || peek() == '-') advance();
+            if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("malformed number: digit expected in exponent");
+            while (std::isdigit(static_cast<unsigned char>(peek()))) advance();
+        }
+        double result = 0;
+        const auto [end, error] = std::from_chars(text_.data() + start, text_.data() + pos_, result);
+        if (error == std::errc::result_out_of_range || !std::isfinite(result))
+            throw InputError({file_, line_, int(start - line_start_) + 1}, "", "number out of range");
+        (void)end;
+        return result;
+    }
+
+    unsigned parse_hex4() {
+        unsigned code = 0;
+        for (int i = 0; i < 4; ++i) {
+            const char c = peek();
+            unsigned digit;
+            if (c >= '0' && c <= '9') digit = unsigned(c - '0');
+            else if (c >= 'a' && c <= 'f') digit = unsigned(c - 'a' + 10);
+            else if (c >= 'A' && c <= 'F') digit = unsigned(c - 'A' + 10);
+            else fail("malformed \\u escape");
+            code = code * 16 + digit;
+            advance();
+        }
+        return code;
+    }
+
+    static void append_utf8(std::string& out, unsigned code) {
+        if (code < 0x80) {
+            out += char(code);
+        } else if (code < 0x800) {
+            out += char(0xC0 | (code >> 6));
+            out += char(0x80 | (code & 0x3F));
+        } else if (code < 0x10000) {
+            out += char(0xE0 | (code >> 12));
+            out += char(0x80 | ((code >> 6) & 0x3F));
+            out += char(0x80 | (code & 0x3F));
+        } else {
+            out += char(0xF0 | (code >> 18));
+            out += char(0x80 | ((code >> 12) & 0x3F));
+            out += char(0x80 | ((code >> 6) & 0x3F));
+            out += char(0x80 | (code & 0x3F));
+        }
+    }
+
+    std::string parse_string() {
+        advance();  // opening quote
+        std::string out;
+        for (;;) {
+            if (at_end()) fail("unterminated string");
+            const char c = peek();
+            if (c == '"') {
+                advance();
+                return out;
+            }
+            if (static_cast<unsigned char>(c) < 0x20) fail("control character in string (use an escape)");
+            if (c != '\\') {
+                out += c;
+                advance();
+                continue;
+            }
+            advance();
+            const char e = peek();
+            if (at_end()) fail("unterminated string");
+            advance();
+            switch (e) {
+                case '"': out += '"'; break;
+                case '\\': out += '\\'; break;
+                case '/': out += '/'; break;
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'n': out += '\n'; break;
+                case 'r': out += '\r'; break;
+                case 't': out += '\t'; break;
+                case 'u': {
+                    unsigned code = parse_hex4();
+                    if (code >= 0xD800 && code < 0xDC00) {  // surrogate pair
+                        if (!match_word("\\u")) fail("unpaired surrogate in \\u escape");
+                        const unsigned low = parse_hex4();
+                        if (low < 0xDC00 || low > 0xDFFF) fail("invalid low surrogate in \\u escape");
+                        code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
+                    }
+                    append_utf8(out, code);
+                    break;
+                }
+                default: fail(std::string("invalid escape '\\") + e + "'");
+            }
+        }
+    }
+
+    const std::string& text_;
+    const std::string& file_;
+    std::size_t pos_ = 0;
+    std::size_t line_start_ = 0;
+    int line_ = 1;
+};
+
+}  // namespace
+
+JsonValue parse_json(const std::string& text, const std::string& file_name) {
+    return JsonParser(text, file_name).parse_document();
+}
+
+JsonValue parse_json_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError({path, 0, 0}, "", std::string("cannot open file: ") + std::strerror(errno));
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return parse_json(buffer.str(), path);
+}
+
+}  // namespace isotrace

@@ -1,0 +1,42 @@
+#pragma once
+// A JSON tree that remembers where every value starts in its file, so that scene errors can name
+// file:line:column. (nlohmann::json, used elsewhere for output, does not keep value positions.)
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/core/input_error.h"
+
+namespace isotrace {
+
+class JsonValue {
+public:
+    enum class Kind { Null, Bool, Number, String, Array, Object };
+
+    Kind kind = Kind::Null;
+    bool boolean = false;
+    double number = 0;
+    std::string string;
+    std::vector<JsonValue> items;                           // Array
+    std::vector<std::pair<std::string, JsonValue>> members;  // Object, in file order
+    SourceLocation location;                                 // where the value starts
+
+    bool is_object() const { return kind == Kind::Object; }
+    bool is_array() const { return kind == Kind::Array; }
+    bool is_number() const { return kind == Kind::Number; }
+    bool is_string() const { return kind == Kind::String; }
+    bool is_bool() const { return kind == Kind::Bool; }
+    bool is_null() const { return kind == Kind::Null; }
+
+    // Member by key or nullptr (objects only).
+    const JsonValue* find(const std::string& key) const;
+    // "object", "array", ... for messages.
+    static const char* kind_name(Kind kind);
+};
+
+// Parses strict JSON (RFC 8259). Duplicate keys and malformed text throw InputError with the position.
+JsonValue parse_json(const std::string& text, const std::string& file_name);
+JsonValue parse_json_file(const std::string& path);
+
+}  // namespace isotrace

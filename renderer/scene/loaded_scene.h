@@ -1,0 +1,47 @@
+#pragma once
+// Everything a render needs, created from one scene file.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/colour/colour_system.h"
+#include "renderer/film/film.h"
+#include "renderer/plugin/camera.h"
+#include "renderer/plugin/integrator.h"
+#include "renderer/plugin/pixel_filter.h"
+#include "renderer/sampling/sampler.h"
+#include "renderer/scene/render_scene.h"
+
+namespace isotrace {
+
+// Command-line values that replace the scene's.
+struct SceneOverrides {
+    std::optional<int> spp;
+    std::optional<RasterSize> resolution;
+    std::optional<std::uint64_t> seed;
+    std::vector<Aov> extra_aovs;
+};
+
+struct LoadedScene {
+    std::string path;
+    std::string description;
+    std::unique_ptr<ColourSystem> colours;
+    std::unique_ptr<RenderScene> scene;
+    std::unique_ptr<Camera> camera;
+    std::unique_ptr<Integrator> integrator;
+    std::unique_ptr<Sampler> sampler;
+    std::unique_ptr<PixelFilter> filter;
+    FilmSettings film;
+    int spp = 16;
+    std::uint64_t seed = 0;
+    std::string camera_type, integrator_type, sampler_type, filter_type;
+    std::string display, view;  // for display-referred outputs; empty = the config's defaults
+    double parse_seconds = 0;   // reading and validating the file, creating plugins and loading meshes
+};
+
+// Reads and validates the scene and builds its acceleration structures. Throws InputError for bad input.
+std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOverrides& overrides = {});
+
+}  // namespace isotrace

@@ -1,0 +1,170 @@
+#include "renderer/scene/render_scene.h"
+
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "renderer/embree/embree_device.h"
+
+namespace isotrace {
+namespace {
+
+// Secondary rays start this many float ulps of the hit's magnitude away from the surface (see spawn_origin).
+constexpr float kPositionErrorScale = 64.0f * FLT_EPSILON;
+
+void set_instance_transform(RTCGeometry instance, const Transform& to_world) {
+    float row_major[12];
+    const auto& m = to_world.matrix();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 4; ++j) row_major[i * 4 + j] = float(m[i][j]);
+    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, row_major);
+}
+
+RTCRay make_embree_ray(const Ray& ray) {
+    RTCRay r{};
+    r.org_x = ray.origin.x;
+    r.org_y = ray.origin.y;
+    r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x;
+    r.dir_y = ray.direction.y;
+    r.dir_z = ray.direction.z;
+    r.tnear = ray.t_near;
+    r.tfar = ray.t_far;
+    r.time = 0;
+    r.mask = 0xFFFFFFFFu;  // Debian's Embree is built with ray masks on
+    r.flags = 0;
+    r.id = 0;
+    return r;
+}
+
+Vec3f safe_normalize(const Vec3f& v, const Vec3f& fallback) {
+    const float len = length(v);
+    return len > 0 && std::isfinite(len) ? v / len : fallback;
+}
+
+}  // namespace
+
+RenderScene::RenderScene() : scene_(rtcNewScene(embree_device())) { check_embree("creating the scene"); }
+
+RenderScene::~RenderScene() {
+    for (RTCScene child : instance_scenes_) rtcReleaseScene(child);
+    rtcReleaseScene(scene_);
+}
+
+const Material* RenderScene::add_material(const std::string& name, std::unique_ptr<Material> material) {
+    auto& slot = materials_[name];
+    slot = std::move(material);
+    return slot.get();
+}
+
+const Material* RenderScene::find_material(const std::string& name) const {
+    const auto found = materials_.find(name);
+    return found == materials_.end() ? nullptr : found->second.get();
+}
+
+std::vector<std::string> RenderScene::material_names() const {
+    std::vector<std::string> names;
+    for (const auto& [name, material] : materials_) names.push_back(name);
+    return names;
+}
+
+void RenderScene::add_object(SceneObject object) { objects_.push_back(std::move(object)); }
+
+void RenderScene::add_light(std::unique_ptr<Light> light) { lights_.push_back(std::move(light)); }
+
+void RenderScene::commit() {
+    const auto start = std::chrono::steady_clock::now();
+    const std::int64_t bytes_before = embree_bytes_in_use();
+    RTCDevice device = embree_device();
+    for (std::size_t index = 0; index < objects_.size(); ++index) {
+        SceneObject& object = objects_[index];
+        object.counter_slot = counters::geometry_type_slot(object.shape->type_name(), object.shape->counts_intersection_tests());
+        build_statistics_.primitives_by_type[object.shape->type_name()] += object.shape->primitive_count();
+        object.instanced = !object.shape->can_bake(object.to_world);
+        if (!object.instanced) object.shape->bake(object.to_world);
+        RTCGeometry geometry = object.shape->create_geometry(device);
+        check_embree("building object \"" + object.name + "\"");
+        if (object.instanced) {
+            RTCScene child = rtcNewScene(device);
+            instance_scenes_.push_back(child);
+            rtcAttachGeometry(child, geometry);
+            rtcReleaseGeometry(geometry);
+            rtcCommitScene(child);
+            geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(geometry, child);
+            set_instance_transform(geometry, object.to_world);
+            rtcCommitGeometry(geometry);
+            ++build_statistics_.instanced_objects;
+        }
+        const unsigned id = rtcAttachGeometry(scene_, geometry);
+        rtcReleaseGeometry(geometry);
+        if (object_of_geometry_.size() <= id) object_of_geometry_.resize(id + 1);
+        object_of_geometry_[id] = std::uint32_t(index);
+        check_embree("adding object \"" + object.name + "\"");
+    }
+    rtcCommitScene(scene_);
+    check_embree("building the scene BVH");
+    build_statistics_.objects = objects_.size();
+    build_statistics_.embree_bytes = embree_bytes_in_use() - bytes_before;
+    build_statistics_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) const {
+    counters::count_ray(kind);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit query{};
+    query.ray = make_embree_ray(ray);
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &query);
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+    const bool via_instance = query.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+    const std::uint32_t object_index = object_of_geometry_[via_instance ? query.hit.instID[0] : query.hit.geomID];
+    const SceneObject& object = objects_[object_index];
+    counters::count_closest_hit(object.counter_slot);
+
+    SurfaceHit hit;
+    hit.t = query.ray.tfar;
+    hit.position = ray.at(hit.t);
+    hit.object_index = object_index;
+    hit.primitive_id = query.hit.primID;
+    hit.material = object.material;
+    const Vec3f embree_ng = safe_normalize(Vec3f(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z), {0, 0, 1});
+    const LocalShading local = object.shape->shading(query.hit, embree_ng);
+    hit.uv = local.uv;
+    if (object.instanced) {  // Embree reports Ng in the instanced object's space
+        hit.geometric_normal = safe_normalize(object.to_world.normal(local.geometric_normal), local.geometric_normal);
+        hit.shading_normal = safe_normalize(object.to_world.normal(local.normal), hit.geometric_normal);
+    } else {
+        hit.geometric_normal = local.geometric_normal;
+        hit.shading_normal = local.normal;
+    }
+    if (dot(hit.shading_normal, hit.geometric_normal) < 0) hit.shading_normal = -hit.shading_normal;
+    hit.position_error =
+        kPositionErrorScale * (max_component(abs(hit.position)) + hit.t * length(ray.direction));
+    return hit;
+}
+
+bool RenderScene::occluded(const Ray& ray) const {
+    counters::count_ray(RayKind::Shadow);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay query = make_embree_ray(ray);
+    rtcOccluded1(scene_, &context, &query);
+    return query.tfar == -std::numeric_limits<float>::infinity();
+}
+
+Bounds3f RenderScene::bounds() const {
+    RTCBounds b;
+    rtcGetSceneBounds(scene_, &b);
+    Bounds3f result;
+    result.lower = {b.lower_x, b.lower_y, b.lower_z};
+    result.upper = {b.upper_x, b.upper_y, b.upper_z};
+    return result;
+}
+
+}  // namespace isotrace

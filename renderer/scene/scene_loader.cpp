@@ -1,0 +1,179 @@
+#include <chrono>
+#include <cmath>
+
+#include "renderer/plugin/light.h"
+#include "renderer/plugin/material.h"
+#include "renderer/plugin/sampler_registry.h"
+#include "renderer/plugin/shape.h"
+#include "renderer/scene/loaded_scene.h"
+#include "renderer/scene/transform_parser.h"
+
+namespace isotrace {
+namespace {
+
+constexpr int kSceneFormatVersion = 1;
+constexpr int kMaxResolution = 1 << 16;
+
+const JsonValue& empty_object() {
+    static const JsonValue value = [] {
+        JsonValue v;
+        v.kind = JsonValue::Kind::Object;
+        return v;
+    }();
+    return value;
+}
+
+// node[key] if present, else an empty object standing in for "all defaults" (errors then point at `parent`).
+SceneNode object_or_defaults(const SceneNode& parent, const std::string& key) {
+    if (auto child = parent.optional_object(key)) return *child;
+    return SceneNode(empty_object(), parent.child_path(key), std::make_shared<SceneFileContext>(parent.context()));
+}
+
+PixelBounds crop_window(const SceneNode& film, const RasterSize& raster) {
+    PixelBounds bounds{0, 0, raster.width, raster.height};
+    if (!film.has("crop")) return bounds;
+    const std::vector<double> c = film.numbers("crop", 4, NumberRange::unit_interval());
+    if (!(c[0] < c[1]) || !(c[2] < c[3])) film.fail_at("crop", "expected [x_min, x_max, y_min, y_max] with min < max");
+    bounds.x0 = int(std::ceil(raster.width * c[0]));
+    bounds.x1 = std::max(bounds.x0 + 1, int(std::ceil(raster.width * c[1])));
+    bounds.y0 = int(std::ceil(raster.height * c[2]));
+    bounds.y1 = std::max(bounds.y0 + 1, int(std::ceil(raster.height * c[3])));
+    bounds.x1 = std::min(bounds.x1, raster.width);
+    bounds.y1 = std::min(bounds.y1, raster.height);
+    bounds.x0 = std::min(bounds.x0, bounds.x1 - 1);
+    bounds.y0 = std::min(bounds.y0, bounds.y1 - 1);
+    return bounds;
+}
+
+void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedScene& loaded) {
+    const SceneNode film = object_or_defaults(root, "film");
+    RasterSize raster{640, 480};
+    if (film.has("resolution")) {
+        const auto r = film.numbers("resolution", 2, NumberRange::between(1, kMaxResolution));
+        if (r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
+            film.fail_at("resolution", "expected whole pixel counts");
+        raster = {int(r[0]), int(r[1])};
+    }
+    if (overrides.resolution) raster = *overrides.resolution;
+    loaded.film.raster = raster;
+    loaded.film.crop = crop_window(film, raster);
+    loaded.spp = overrides.spp.value_or(film.integer_or("spp", 16, NumberRange::between(1, 1 << 24)));
+    loaded.film.half_float = film.choice_or("exr_pixel", "float", {"float", "half"}) == "half";
+    if (auto aovs = film.optional_value("aovs")) {
+        std::string list;
+        for (const SceneNode& item : aovs->elements()) {
+            if (!item.json().is_string()) item.fail("expected an AOV name");
+            list += item.json().string + ",";
+        }
+        try {
+            loaded.film.aovs = parse_aov_list(list, aovs->path());
+        } catch (const InputError& error) {
+            aovs->fail(error.what());
+        }
+    }
+    for (Aov aov : overrides.extra_aovs)
+        if (std::find(loaded.film.aovs.begin(), loaded.film.aovs.end(), aov) == loaded.film.aovs.end())
+            loaded.film.aovs.push_back(aov);
+    loaded.display = film.string_or("display", "");
+    loaded.view = film.string_or("view", "");
+
+    const SceneNode filter = object_or_defaults(film, "filter");
+    loaded.filter_type = filter.string_or("type", "gaussian");
+    loaded.filter = pixel_filter_registry().create(filter, "gaussian");
+    film.finish();
+}
+
+const Material* resolve_material(const SceneNode& object, RenderScene& scene, std::size_t index) {
+    const auto value = object.optional_value("material");
+    if (!value) object.fail("missing required field \"material\" (a name from \"materials\" or an inline material)");
+    if (value->json().is_object()) {
+        const std::string name = "<inline material of objects[" + std::to_string(index) + "]>";
+        return scene.add_material(name, material_registry().create(*value));
+    }
+    if (!value->json().is_string()) value->fail("expected a material name or an inline material object");
+    const std::string& name = value->json().string;
+    const Material* material = scene.find_material(name);
+    if (!material) {
+        std::string known;
+        for (const auto& n : scene.material_names())
+            if (n.front() != '<') known += (known.empty() ? "" : ", ") + n;
+        value->fail("unknown material \"" + name + "\"" + did_you_mean(name, scene.material_names()) +
+                    (known.empty() ? "; the scene defines no materials" : "; defined: " + known));
+    }
+    return material;
+}
+
+void load_content(const SceneNode& root, RenderScene& scene) {
+    if (auto materials = root.optional_object("materials")) {
+        materials->accept_all_keys();
+        for (const std::string& name : materials->keys())
+            scene.add_material(name, material_registry().create(materials->object(name)));
+    }
+    for (const SceneNode& light : root.object_array("lights")) scene.add_light(light_registry().create(light));
+    const std::vector<SceneNode> objects = root.object_array("objects");
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const SceneNode& node = objects[i];
+        SceneObject object;
+        object.name = node.string_or("name", "objects[" + std::to_string(i) + "]");
+        object.material = resolve_material(node, scene, i);
+        object.to_world = parse_optional_transform(node, "transform");
+        object.shape = shape_registry().create(node.object("shape"));
+        node.finish();
+        scene.add_object(std::move(object));
+    }
+}
+
+}  // namespace
+
+std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOverrides& overrides) {
+    const auto start = std::chrono::steady_clock::now();
+    auto loaded = std::make_unique<LoadedScene>();
+    loaded->path = path;
+    const JsonValue document = parse_json_file(path);
+    auto context = std::make_shared<SceneFileContext>();
+    context->file = path;
+    context->directory = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
+    SceneNode root(document, "", context);
+    if (!document.is_object()) root.fail("a scene file must contain a JSON object");
+
+    const int version = root.integer("isotrace");
+    if (version != kSceneFormatVersion)
+        root.fail_at("isotrace", "unsupported scene format version " + std::to_string(version) + " (this build reads " +
+                                     std::to_string(kSceneFormatVersion) + ")");
+    loaded->description = root.string_or("description", "");
+
+    const SceneNode colour = object_or_defaults(root, "colour");
+    const std::string working_space = colour.string_or("working_space", "ACEScg");
+    try {
+        loaded->colours = std::make_unique<ColourSystem>("", working_space);
+    } catch (const InputError& error) {
+        colour.fail_at("working_space", error.what());
+    }
+    colour.finish();
+    context->colours = loaded->colours.get();
+
+    load_film(root, overrides, *loaded);
+
+    const SceneNode camera = root.object("camera");
+    loaded->camera_type = camera.string_or("type", "");
+    loaded->camera = camera_registry().create(camera, loaded->film.raster);
+
+    const SceneNode sampler = object_or_defaults(root, "sampler");
+    loaded->seed = overrides.seed.value_or(sampler.unsigned_or("seed", 0));
+    loaded->sampler_type = sampler.string_or("type", "sobol");
+    loaded->sampler = sampler_registry().create(sampler, loaded->seed, "sobol");
+
+    const SceneNode integrator = object_or_defaults(root, "integrator");
+    loaded->integrator_type = integrator.string_or("type", "preview");
+    loaded->integrator = integrator_registry().create(integrator, "preview");
+
+    loaded->scene = std::make_unique<RenderScene>();
+    load_content(root, *loaded->scene);
+    root.finish();
+    loaded->parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    loaded->scene->commit();
+    return loaded;
+}
+
+}  // namespace isotrace

@@ -1,0 +1,18 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace isotrace::cli {
+
+// Each sub-command adds itself to the application and returns the function that runs it (exit code).
+using CommandRunner = std::function<int()>;
+
+CommandRunner add_render_command(CLI::App& app);
+CommandRunner add_info_command(CLI::App& app);
+
+// Exit codes shared by all commands.
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;     // internal or system error (I/O, Embree)
+constexpr int kExitBadInput = 2;    // the user's scene, files or arguments are wrong
+constexpr int kExitInterrupted = 130;
+
+}  // namespace isotrace::cli

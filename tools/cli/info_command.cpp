@@ -1,0 +1,73 @@
+#include <cstdio>
+
+#include "renderer/plugin/camera.h"
+#include "renderer/plugin/integrator.h"
+#include "renderer/plugin/light.h"
+#include "renderer/plugin/material.h"
+#include "renderer/plugin/pixel_filter.h"
+#include "renderer/plugin/sampler_registry.h"
+#include "renderer/plugin/shape.h"
+#include "renderer/scene/loaded_scene.h"
+#include "tools/cli/commands.h"
+
+namespace isotrace::cli {
+namespace {
+
+template <class Registry>
+void print_plugins(const Registry& registry) {
+    std::printf("%s types:\n", registry.kind().c_str());
+    for (const auto& [name, entry] : registry.entries()) std::printf("  %-22s %s\n", name.c_str(), entry.summary.c_str());
+}
+
+void print_all_plugins() {
+    print_plugins(shape_registry());
+    print_plugins(material_registry());
+    print_plugins(light_registry());
+    print_plugins(camera_registry());
+    print_plugins(integrator_registry());
+    print_plugins(pixel_filter_registry());
+    print_plugins(sampler_registry());
+}
+
+int run_info(const std::string& path) {
+    const std::unique_ptr<LoadedScene> scene = load_scene(path);
+    const BuildStatistics& build = scene->scene->build_statistics();
+    const Bounds3f bounds = scene->scene->bounds();
+    std::printf("scene        %s%s%s\n", path.c_str(), scene->description.empty() ? "" : " - ",
+                scene->description.c_str());
+    std::printf("film         %dx%d (crop %d..%d x %d..%d), %d spp, %s filter, EXR %s\n", scene->film.raster.width,
+                scene->film.raster.height, scene->film.crop.x0, scene->film.crop.x1, scene->film.crop.y0,
+                scene->film.crop.y1, scene->spp, scene->filter_type.c_str(), scene->film.half_float ? "half" : "float");
+    std::printf("camera       %s\n", scene->camera_type.c_str());
+    std::printf("integrator   %s\n", scene->integrator_type.c_str());
+    std::printf("sampler      %s, seed %llu\n", scene->sampler_type.c_str(), (unsigned long long)scene->seed);
+    std::printf("colour       working space %s, OCIO config %s\n", scene->colours->working_space().c_str(),
+                scene->colours->config_path().c_str());
+    std::printf("objects      %zu (%zu instanced), %zu light(s)\n", build.objects, build.instanced_objects,
+                scene->scene->lights().size());
+    for (const auto& [type, count] : build.primitives_by_type) std::printf("  %-18s %zu primitive(s)\n", type.c_str(), count);
+    std::printf("bounds       [%g %g %g] .. [%g %g %g]\n", bounds.lower.x, bounds.lower.y, bounds.lower.z,
+                bounds.upper.x, bounds.upper.y, bounds.upper.z);
+    std::printf("build        %.3f s, %.1f MiB in Embree\n", build.seconds, double(build.embree_bytes) / (1 << 20));
+    return kExitOk;
+}
+
+}  // namespace
+
+CommandRunner add_info_command(CLI::App& app) {
+    auto path = std::make_shared<std::string>();
+    auto plugins = std::make_shared<bool>(false);
+    CLI::App* command = app.add_subcommand("info", "Validate a scene and print a summary (or list the plugins)");
+    command->add_option("scene", *path, "Scene file (JSON)")->check(CLI::ExistingFile);
+    command->add_flag("--plugins", *plugins, "List every registered plugin type");
+    return [path, plugins] {
+        if (*plugins) {
+            print_all_plugins();
+            return kExitOk;
+        }
+        if (path->empty()) throw CLI::RequiredError("scene");
+        return run_info(*path);
+    };
+}
+
+}  // namespace isotrace::cli
