@@ -13,7 +13,7 @@ class Distribution1D;
 
 struct FilterSample {
     float dx = 0, dy = 0;  // offset from the pixel centre, in pixels
-    float weight = 1;      // filter(dx, dy) / pdf(dx, dy)
+    float weight = 1;      // filter(dx, dy) / pdf(dx, dy), up to a constant (1 when sampled exactly)
 };
 
 class PixelFilter {
@@ -30,7 +30,7 @@ protected:
     void tabulate();
 
 private:
-    float sample_axis(float u, float& weight) const;
+    float sample_axis(float u) const;
     float radius_;
     std::unique_ptr<Distribution1D> table_;
 };

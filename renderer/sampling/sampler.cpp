@@ -14,7 +14,7 @@ float SampleStream::next_1d() {
 
 std::array<float, 2> SampleStream::next_2d() {
     dimension_ += dimension_ & 1u;
-    const std::array<float, 2> pair = {sampler_.sample(key_, dimension_), sampler_.sample(key_, dimension_ + 1)};
+    const std::array<float, 2> pair = sampler_.sample_2d(key_, dimension_);
     dimension_ += 2;
     return pair;
 }

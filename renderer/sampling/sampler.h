@@ -17,6 +17,11 @@ public:
 
     // Value in [0,1) for (pixel, sample index, dimension); a pure function of those and the seed.
     virtual float sample(const PixelSampleKey& key, uint32_t dimension) const = 0;
+    // Dimensions (dimension, dimension + 1) together; equal to two sample() calls, but samplers may share
+    // work between the two (dimension is even).
+    virtual std::array<float, 2> sample_2d(const PixelSampleKey& key, uint32_t dimension) const {
+        return {sample(key, dimension), sample(key, dimension + 1)};
+    }
 
     uint64_t seed() const { return seed_; }
 

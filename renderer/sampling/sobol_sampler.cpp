@@ -6,15 +6,27 @@
 
 namespace isotrace {
 
-float SobolSampler::sample(const PixelSampleKey& key, uint32_t dimension) const {
-    const uint32_t block = dimension / kSobolDimensions;
-    const uint32_t sobol_dimension = dimension % kSobolDimensions;
+SobolSampler::BlockPoint SobolSampler::block_point(const PixelSampleKey& key, uint32_t block) const {
     // One shuffle per block keeps the block's four dimensions a single 4-D Sobol' point; separate blocks
     // are statistically independent (Burley's "padding").
     const uint64_t block_hash = hash_combine(seed(), key.x, key.y, block);
-    const uint32_t shuffled_index = nested_uniform_scramble(key.index, static_cast<uint32_t>(block_hash));
-    const uint32_t scramble_seed = static_cast<uint32_t>(hash_combine(block_hash, sobol_dimension));
-    return uint_to_unit_float(nested_uniform_scramble(sobol_sample(shuffled_index, sobol_dimension), scramble_seed));
+    return {block_hash, nested_uniform_scramble(key.index, static_cast<uint32_t>(block_hash))};
+}
+
+float SobolSampler::scrambled_value(const BlockPoint& point, uint32_t sobol_dimension) {
+    const uint32_t scramble_seed = static_cast<uint32_t>(hash_combine(point.block_hash, sobol_dimension));
+    return uint_to_unit_float(
+        nested_uniform_scramble(sobol_sample(point.shuffled_index, sobol_dimension), scramble_seed));
+}
+
+float SobolSampler::sample(const PixelSampleKey& key, uint32_t dimension) const {
+    return scrambled_value(block_point(key, dimension / kSobolDimensions), dimension % kSobolDimensions);
+}
+
+std::array<float, 2> SobolSampler::sample_2d(const PixelSampleKey& key, uint32_t dimension) const {
+    const BlockPoint point = block_point(key, dimension / kSobolDimensions);  // even dimension: same block
+    const uint32_t first = dimension % kSobolDimensions;
+    return {scrambled_value(point, first), scrambled_value(point, first + 1)};
 }
 
 }  // namespace isotrace

@@ -18,6 +18,15 @@ public:
     using Sampler::Sampler;
 
     float sample(const PixelSampleKey& key, uint32_t dimension) const override;
+    std::array<float, 2> sample_2d(const PixelSampleKey& key, uint32_t dimension) const override;
+
+private:
+    struct BlockPoint {
+        uint64_t block_hash;
+        uint32_t shuffled_index;
+    };
+    BlockPoint block_point(const PixelSampleKey& key, uint32_t block) const;
+    static float scrambled_value(const BlockPoint& point, uint32_t sobol_dimension);
 };
 
 }  // namespace isotrace
