@@ -1,0 +1,37 @@
+#pragma once
+// An RGB image read with OpenImageIO and converted to the working space once, at load time, then looked up
+// with bilinear filtering and repeat wrapping. uv (0, 0) is the image's bottom-left corner.
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/math/rgb.h"
+
+namespace isotrace {
+
+class ColourSystem;
+
+class ImageTexture {
+public:
+    // `colour_space` empty: "srgb_texture" for integer pixel formats (8/16-bit PNG, JPEG, TIFF), the working
+    // space for floating-point formats (EXR, HDR). Throws InputError naming the file on any read problem.
+    static std::shared_ptr<const ImageTexture> load(const std::filesystem::path& path, const std::string& colour_space,
+                                                    const ColourSystem& colours);
+
+    Rgb lookup(std::array<float, 2> uv) const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const std::string& colour_space() const { return colour_space_; }
+
+private:
+    ImageTexture(int width, int height, std::vector<float> rgb, std::string colour_space);
+    Rgb texel(int x, int y) const;
+
+    int width_, height_;
+    std::vector<float> rgb_;  // working space, row 0 = top of the image
+    std::string colour_space_;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,93 @@
+#include "renderer/textures/image_texture.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "renderer/colour/colour_system.h"
+#include "renderer/core/input_error.h"
+
+namespace isotrace {
+namespace {
+
+std::filesystem::path temp_dir() {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("isotrace_texture_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+template <class T>
+std::filesystem::path write_image(const std::string& name, int w, int h, int channels, OIIO::TypeDesc type,
+                                  const std::vector<T>& pixels) {
+    const auto path = temp_dir() / name;
+    auto out = OIIO::ImageOutput::create(path.string());
+    OIIO::ImageSpec spec(w, h, channels, type);
+    EXPECT_TRUE(out->open(path.string(), spec));
+    EXPECT_TRUE(out->write_image(type, pixels.data()));
+    out->close();
+    return path;
+}
+
+TEST(ImageTexture, EightBitImagesAreDecodedFromSrgb) {
+    const ColourSystem colours("", "lin_rec709");
+    // 2x1 image: left texel 128/255, right texel 255.
+    const auto path = write_image<unsigned char>("srgb.png", 2, 1, 3, OIIO::TypeDesc::UINT8, {128, 128, 128, 255, 255, 255});
+    const auto texture = ImageTexture::load(path, "", colours);
+    EXPECT_EQ(texture->colour_space(), "srgb_texture");
+    const float expected = std::pow((128.0f / 255 + 0.055f) / 1.055f, 2.4f);  // the sRGB EOTF
+    const Rgb left = texture->lookup({0.25f, 0.5f});  // texel centre: no blending
+    EXPECT_NEAR(left.r, expected, 1e-5);
+    EXPECT_NEAR(texture->lookup({0.75f, 0.5f}).g, 1.0f, 1e-5);
+    // Halfway between the texel centres the bilinear lookup averages them.
+    EXPECT_NEAR(texture->lookup({0.5f, 0.5f}).b, 0.5f * (expected + 1.0f), 1e-5);
+}
+
+TEST(ImageTexture, FloatImagesDefaultToTheWorkingSpaceAndVRunsUp) {
+    const ColourSystem colours("", "ACEScg");
+    // 1x2 float image: top row red, bottom row green.
+    const auto path = write_image<float>("rows.exr", 1, 2, 3, OIIO::TypeDesc::FLOAT, {1, 0, 0, 0, 1, 0});
+    const auto texture = ImageTexture::load(path, "", colours);
+    EXPECT_EQ(texture->colour_space(), "ACEScg");
+    EXPECT_EQ(texture->lookup({0.5f, 0.75f}), Rgb(1, 0, 0));  // v = 0.75 is the top row's centre
+    EXPECT_EQ(texture->lookup({0.5f, 0.25f}), Rgb(0, 1, 0));
+}
+
+TEST(ImageTexture, ExplicitSpaceIsConvertedToTheWorkingSpace) {
+    const ColourSystem colours("", "ACEScg");
+    const auto path = write_image<float>("white.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {1, 0, 0});
+    const Rgb converted = ImageTexture::load(path, "lin_rec709", colours)->lookup({0.3f, 0.6f});
+    EXPECT_EQ(converted, colours.to_working(Rgb(1, 0, 0), "lin_rec709"));
+    EXPECT_NE(converted, Rgb(1, 0, 0));
+}
+
+TEST(ImageTexture, RepeatsOutsideTheUnitSquare) {
+    const ColourSystem colours("", "ACEScg");
+    const auto path = write_image<float>("ramp.exr", 4, 1, 3, OIIO::TypeDesc::FLOAT,
+                                         {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3});
+    const auto texture = ImageTexture::load(path, "", colours);
+    EXPECT_EQ(texture->lookup({0.375f, 0.5f}), texture->lookup({2.375f, 0.5f}));
+    EXPECT_EQ(texture->lookup({0.375f, 0.5f}), texture->lookup({-0.625f, 0.5f}));
+    // Between the last and first texel the lookup wraps: halfway = (3 + 0) / 2.
+    EXPECT_NEAR(texture->lookup({1.0f, 0.5f}).r, 1.5f, 1e-6);
+}
+
+TEST(ImageTexture, BadFilesNameTheFile) {
+    const ColourSystem colours("", "ACEScg");
+    const auto missing = temp_dir() / "missing.png";
+    try {
+        ImageTexture::load(missing, "", colours);
+        FAIL() << "expected InputError";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("missing.png"), std::string::npos) << error.what();
+    }
+    const auto path = write_image<float>("nan.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {NAN, 0, 0});
+    EXPECT_THROW(ImageTexture::load(path, "", colours), InputError);
+    EXPECT_THROW(ImageTexture::load(write_image<float>("ok.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {0, 0, 0}),
+                                    "no_such_space", colours),
+                 InputError);
+}
+
+}  // namespace
+}  // namespace isotrace
