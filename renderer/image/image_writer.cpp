@@ -24,7 +24,11 @@ void apply_metadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
     for (const auto& [name, value] : metadata.entries) {
         if (const auto* text = std::get_if<std::string>(&value)) spec.attribute(name, *text);
         else if (const auto* real = std::get_if<double>(&value)) spec.attribute(name, float(*real));
-        else spec.attribute(name, int(std::get<std::int64_t>(value)));
+        else if (const auto* integer = std::get_if<std::int64_t>(&value)) spec.attribute(name, int(*integer));
+        else {
+            const auto& floats = std::get<std::vector<float>>(value);
+            spec.attribute(name, OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, int(floats.size())), floats.data());
+        }
     }
 }
 

@@ -15,8 +15,9 @@ namespace isotrace {
 class ColourSystem;
 
 struct ImageMetadata {
-    std::vector<std::pair<std::string, std::variant<std::string, double, std::int64_t>>> entries;
-    void set(const std::string& name, std::variant<std::string, double, std::int64_t> value) {
+    using Value = std::variant<std::string, double, std::int64_t, std::vector<float>>;
+    std::vector<std::pair<std::string, Value>> entries;
+    void set(const std::string& name, Value value) {
         entries.emplace_back(name, std::move(value));
     }
 };

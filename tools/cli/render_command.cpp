@@ -6,6 +6,7 @@
 #include <fstream>
 #include <regex>
 
+#include "renderer/colour/chromaticities.h"
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/render_counters.h"
@@ -67,6 +68,8 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
     m.set("isotrace:partial", std::int64_t(result.partial ? 1 : 0));
     m.set("isotrace:working_space", scene.colours->working_space());
     m.set("isotrace:ocio_config", scene.colours->config_path());
+    if (const auto xy = chromaticities_of(scene.colours->working_space()))
+        m.set("chromaticities", std::vector<float>(xy->begin(), xy->end()));
     return m;
 }
 
