@@ -59,16 +59,39 @@ constexpr std::array<GeneratorMatrix, kSobolDimensions> build_generators() {
     return generators;
 }
 
-constexpr std::array<GeneratorMatrix, kSobolDimensions> kGenerators = build_generators();
+// The matrix-vector product over GF(2) is linear in the index bits, so it splits into one lookup per index
+// byte: table[byte position][byte value] = XOR of the columns that byte selects. 4 KiB per dimension, and
+// four loads instead of a loop over the (after shuffling, about 16) set bits.
+using ByteTables = std::array<std::array<uint32_t, 256>, 4>;
+
+constexpr ByteTables byte_tables(const GeneratorMatrix& columns) {
+    ByteTables tables{};
+    for (int position = 0; position < 4; ++position)
+        for (uint32_t byte = 0; byte < 256; ++byte) {
+            uint32_t value = 0;
+            for (int bit = 0; bit < 8; ++bit)
+                if ((byte >> bit) & 1u) value ^= columns[std::size_t(position * 8 + bit)];
+            tables[std::size_t(position)][byte] = value;
+        }
+    return tables;
+}
+
+constexpr std::array<ByteTables, kSobolDimensions> build_byte_tables() {
+    const std::array<GeneratorMatrix, kSobolDimensions> generators = build_generators();
+    std::array<ByteTables, kSobolDimensions> tables{};
+    for (std::size_t d = 0; d < kSobolDimensions; ++d) tables[d] = byte_tables(generators[d]);
+    return tables;
+}
+
+const std::array<ByteTables, kSobolDimensions> kByteTables = build_byte_tables();
 
 }  // namespace
 
 uint32_t sobol_sample(uint32_t index, uint32_t dimension) {
     assert(dimension < kSobolDimensions);
-    const GeneratorMatrix& columns = kGenerators[dimension];
-    uint32_t value = 0;
-    for (; index != 0; index &= index - 1) value ^= columns[std::countr_zero(index)];
-    return value;
+    const ByteTables& tables = kByteTables[dimension];
+    return tables[0][index & 0xFFu] ^ tables[1][(index >> 8) & 0xFFu] ^ tables[2][(index >> 16) & 0xFFu] ^
+           tables[3][index >> 24];
 }
 
 }  // namespace isotrace
