@@ -38,13 +38,25 @@ Distribution1D::Distribution1D(std::span<const float> weights) : weights_(weight
         cdf_[i + 1] = running / sum;
     }
     cdf_.back() = 1;
+
+    // guide_[k] = last bin whose CDF start is <= k / size(): a search starting there moves only a step or two.
+    guide_.resize(weights_.size());
+    size_t bin = 0;
+    for (size_t k = 0; k < guide_.size(); ++k) {
+        const double start = static_cast<double>(k) / static_cast<double>(guide_.size());
+        while (bin + 1 < weights_.size() && cdf_[bin + 1] <= start) ++bin;
+        guide_[k] = bin;
+    }
 }
 
 size_t Distribution1D::find_bin(float u) const {
     // Last i with cdf_[i] <= u. Since u < 1 = cdf_.back(), cdf_[i + 1] > u, so the bin has positive weight.
-    const auto after = std::upper_bound(cdf_.begin(), cdf_.end(), static_cast<double>(u));
-    const size_t bin = static_cast<size_t>(after - cdf_.begin()) - 1;
-    return std::min(bin, weights_.size() - 1);
+    const double target = static_cast<double>(u);
+    const size_t slot = static_cast<size_t>(std::clamp(target, 0.0, 1.0) * static_cast<double>(guide_.size()));
+    size_t bin = guide_[std::min(slot, guide_.size() - 1)];
+    while (bin > 0 && cdf_[bin] > target) --bin;  // only when rounding put the slot past u
+    while (bin + 1 < weights_.size() && cdf_[bin + 1] <= target) ++bin;
+    return bin;
 }
 
 Distribution1D::ContinuousSample Distribution1D::sample_continuous(float u) const {

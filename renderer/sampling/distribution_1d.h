@@ -38,6 +38,7 @@ private:
 
     std::vector<float> weights_;  // as sampled: all ones when every input weight was zero
     std::vector<double> cdf_;     // size() + 1 entries, cdf_[0] = 0, cdf_.back() = 1
+    std::vector<size_t> guide_;   // size() entries: where find_bin starts for u in [k, k+1) / size()
     double weight_sum_ = 0;       // sum of weights_
     float integral_ = 0;
 };
