@@ -20,6 +20,7 @@ std::string format_message(const SourceLocation& where, const std::string& field
 InputError::InputError(SourceLocation location, std::string field, const std::string& problem)
     : std::runtime_error(format_message(location, field, problem)),
       location_(std::move(location)),
-      field_(std::move(field)) {}
+      field_(std::move(field)),
+      problem_(problem) {}
 
 }  // namespace isotrace

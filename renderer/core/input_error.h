@@ -19,10 +19,13 @@ public:
 
     const SourceLocation& location() const { return location_; }
     const std::string& field() const { return field_; }
+    // The problem alone, without location and field (for re-throwing it at a better place).
+    const std::string& problem() const { return problem_; }
 
 private:
     SourceLocation location_;
     std::string field_;
+    std::string problem_;
 };
 
 }  // namespace isotrace

@@ -65,7 +65,11 @@ Transform Transform::from_matrix(const Matrix& m) {
     Matrix inv;
     if (!invert(m, inv)) throw std::invalid_argument("matrix is singular");
     const Transform t(m, inv);
-    if (!(std::abs(t.determinant()) > 1e-18)) throw std::invalid_argument("matrix is singular");
+    // Singular relative to the size of the columns (Hadamard's bound), so that a regular matrix of small
+    // scale (units of micrometres: determinant 1e-18) is accepted and a nearly flat one of any scale is not.
+    double column_lengths = 1;
+    for (int j = 0; j < 3; ++j) column_lengths *= length(Vec3d(m[0][j], m[1][j], m[2][j]));
+    if (!(std::abs(t.determinant()) > 1e-12 * column_lengths)) throw std::invalid_argument("matrix is singular");
     return t;
 }
 

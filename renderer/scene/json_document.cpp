@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <charconv>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -30,13 +31,15 @@ const char* JsonValue::kind_name(Kind kind) {
 
 namespace {
 
-constexpr int kMaxDepth = 256;  // deeper nesting is surely an error and would exhaust the stack
+constexpr int kMaxDepth = 256;  // nested arrays/objects; deeper is surely an error and would exhaust the stack
 
 class JsonParser {
 public:
     JsonParser(const std::string& text, const std::string& file) : text_(text), file_(file) {}
 
     JsonValue parse_document() {
+        // RFC 8259 section 8.1 lets parsers ignore a UTF-8 byte order mark (some Windows editors write one).
+        if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = line_start_ = 3;
         skip_whitespace();
         JsonValue root = parse_value(0);
         skip_whitespace();
@@ -74,11 +77,13 @@ private:
         return std::string(" but found '") + peek() + "'";
     }
 
+    // `depth` = number of arrays/objects enclosing the value.
     JsonValue parse_value(int depth) {
-        if (depth > kMaxDepth) fail("JSON nested too deeply");
         JsonValue value;
         value.location = here();
         const char c = peek();
+        if ((c == '{' || c == '[') && depth >= kMaxDepth)
+            fail("JSON nested too deeply (more than " + std::to_string(kMaxDepth) + " arrays/objects)");
         if (c == '{') {
             parse_object(value, depth);
         } else if (c == '[') {
@@ -163,6 +168,9 @@ private:
         if (peek() == '-') advance();
         if (peek() == '0') {
             advance();
+            if (std::isdigit(static_cast<unsigned char>(peek())))
+                throw InputError({file_, line_, int(start - line_start_) + 1}, "",
+                                 "malformed number: leading zeros are not allowed");
         } else if (peek() >= '1' && peek() <= '9') {
             while (std::isdigit(static_cast<unsigned char>(peek()))) advance();
         } else {
@@ -221,24 +229,30 @@ private:
     }
 
     std::string parse_string() {
+        // A string that runs to the end of the file or of the line is reported where it starts: that is
+        // where the closing quote is missing.
+        const SourceLocation opening = here();
         advance();  // opening quote
         std::string out;
         for (;;) {
-            if (at_end()) fail("unterminated string");
+            if (at_end()) throw InputError(opening, "", "unterminated string (missing closing '\"')");
             const char c = peek();
             if (c == '"') {
                 advance();
                 return out;
             }
+            if (c == '\n' || c == '\r')
+                throw InputError(opening, "", "unterminated string (line break before the closing '\"')");
             if (static_cast<unsigned char>(c) < 0x20) fail("control character in string (use an escape)");
             if (c != '\\') {
                 out += c;
                 advance();
                 continue;
             }
+            const SourceLocation escape = here();
             advance();
+            if (at_end()) throw InputError(opening, "", "unterminated string (missing closing '\"')");
             const char e = peek();
-            if (at_end()) fail("unterminated string");
             advance();
             switch (e) {
                 case '"': out += '"'; break;
@@ -251,16 +265,19 @@ private:
                 case 't': out += '\t'; break;
                 case 'u': {
                     unsigned code = parse_hex4();
+                    if (code >= 0xDC00 && code <= 0xDFFF)  // a low surrogate must follow a high one
+                        throw InputError(escape, "", "unpaired surrogate in \\u escape");
                     if (code >= 0xD800 && code < 0xDC00) {  // surrogate pair
-                        if (!match_word("\\u")) fail("unpaired surrogate in \\u escape");
+                        if (!match_word("\\u")) throw InputError(escape, "", "unpaired surrogate in \\u escape");
                         const unsigned low = parse_hex4();
-                        if (low < 0xDC00 || low > 0xDFFF) fail("invalid low surrogate in \\u escape");
+                        if (low < 0xDC00 || low > 0xDFFF)
+                            throw InputError(escape, "", "invalid low surrogate in \\u escape");
                         code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
                     }
                     append_utf8(out, code);
                     break;
                 }
-                default: fail(std::string("invalid escape '\\") + e + "'");
+                default: throw InputError(escape, "", std::string("invalid escape '\\") + e + "'");
             }
         }
     }
@@ -279,10 +296,14 @@ JsonValue parse_json(const std::string& text, const std::string& file_name) {
 }
 
 JsonValue parse_json_file(const std::string& path) {
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored))  // opening a directory "succeeds" and reads as empty
+        throw InputError({path, 0, 0}, "", "cannot open file: it is a directory");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError({path, 0, 0}, "", std::string("cannot open file: ") + std::strerror(errno));
     std::ostringstream buffer;
     buffer << in.rdbuf();
+    if (in.bad()) throw InputError({path, 0, 0}, "", "cannot read file");
     return parse_json(buffer.str(), path);
 }
 

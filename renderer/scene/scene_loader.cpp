@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -29,15 +30,23 @@ SceneNode object_or_defaults(const SceneNode& parent, const std::string& key) {
     return SceneNode(empty_object(), parent.child_path(key), std::make_shared<SceneFileContext>(parent.context()));
 }
 
+// First pixel at or after `fraction` of `size` pixels. A product within rounding error of a whole number is
+// that number: 100 * 0.55 is 55.000000000000007 in doubles, and must give 55, not 56.
+int pixel_edge(int size, double fraction) {
+    const double x = size * fraction;
+    const double nearest = std::round(x);
+    return int(std::abs(x - nearest) <= 1e-9 * std::max(1.0, std::abs(x)) ? nearest : std::ceil(x));
+}
+
 PixelBounds crop_window(const SceneNode& film, const RasterSize& raster) {
     PixelBounds bounds{0, 0, raster.width, raster.height};
     if (!film.has("crop")) return bounds;
     const std::vector<double> c = film.numbers("crop", 4, NumberRange::unit_interval());
     if (!(c[0] < c[1]) || !(c[2] < c[3])) film.fail_at("crop", "expected [x_min, x_max, y_min, y_max] with min < max");
-    bounds.x0 = int(std::ceil(raster.width * c[0]));
-    bounds.x1 = std::max(bounds.x0 + 1, int(std::ceil(raster.width * c[1])));
-    bounds.y0 = int(std::ceil(raster.height * c[2]));
-    bounds.y1 = std::max(bounds.y0 + 1, int(std::ceil(raster.height * c[3])));
+    bounds.x0 = pixel_edge(raster.width, c[0]);
+    bounds.x1 = std::max(bounds.x0 + 1, pixel_edge(raster.width, c[1]));
+    bounds.y0 = pixel_edge(raster.height, c[2]);
+    bounds.y1 = std::max(bounds.y0 + 1, pixel_edge(raster.height, c[3]));
     bounds.x1 = std::min(bounds.x1, raster.width);
     bounds.y1 = std::min(bounds.y1, raster.height);
     bounds.x0 = std::min(bounds.x0, bounds.x1 - 1);
@@ -60,15 +69,15 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
     loaded.spp = overrides.spp.value_or(film.integer_or("spp", 16, NumberRange::between(1, 1 << 24)));
     loaded.film.half_float = film.choice_or("exr_pixel", "float", {"float", "half"}) == "half";
     if (auto aovs = film.optional_value("aovs")) {
-        std::string list;
         for (const SceneNode& item : aovs->elements()) {
             if (!item.json().is_string()) item.fail("expected an AOV name");
-            list += item.json().string + ",";
-        }
-        try {
-            loaded.film.aovs = parse_aov_list(list, aovs->path());
-        } catch (const InputError& error) {
-            aovs->fail(error.what());
+            try {  // one name at a time, so that an unknown name is reported where it is written
+                for (Aov aov : parse_aov_list(item.json().string, item.path()))
+                    if (std::find(loaded.film.aovs.begin(), loaded.film.aovs.end(), aov) == loaded.film.aovs.end())
+                        loaded.film.aovs.push_back(aov);
+            } catch (const InputError& error) {
+                item.fail(error.problem());
+            }
         }
     }
     for (Aov aov : overrides.extra_aovs)
@@ -147,7 +156,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     try {
         loaded->colours = std::make_unique<ColourSystem>("", working_space);
     } catch (const InputError& error) {
-        colour.fail_at("working_space", error.what());
+        colour.fail_at("working_space", error.problem());
     }
     colour.finish();
     context->colours = loaded->colours.get();

@@ -1,1 +1,306 @@
-// placeholder: tests are being written
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <set>
+
+#include "renderer/colour/scoped_environment_variable.h"
+#include "renderer/film/aov.h"
+#include "renderer/plugin/shape.h"
+#include "renderer/scene/loaded_scene.h"
+#include "tests/support/scene_files.h"
+
+namespace isotrace {
+namespace {
+
+// A camera line, a material and one sphere: the smallest complete scene. Tests splice their changes in.
+const std::string kCamera =
+    R"(  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},)";
+
+std::string minimal_scene(const std::string& extra_top_level = "") {
+    return "{\n"
+           "  \"isotrace\": 1,\n" +
+           kCamera + "\n" + extra_top_level +
+           "  \"materials\": {\"grey\": {\"type\": \"diffuse\"}},\n"
+           "  \"objects\": [{\"material\": \"grey\", \"shape\": {\"type\": \"sphere\", \"radius\": 1}}]\n"
+           "}\n";
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    return list;
+}
+
+class LoadScene : public ::testing::Test {
+protected:
+    // The shipped OCIO config, whatever $OCIO says in the environment running the tests.
+    ScopedEnvironmentVariable no_ocio_{"OCIO", std::nullopt};
+    testing::TemporaryDirectory dir_{"loader"};
+
+    std::string write(const std::string& text, const std::string& name = "scene.json") {
+        return dir_.write(name, text).string();
+    }
+
+    std::unique_ptr<LoadedScene> load(const std::string& text, const SceneOverrides& overrides = {}) {
+        return load_scene(write(text), overrides);
+    }
+
+    // Loads `text`, which must fail, and checks position, JSON path and the complete message.
+    void expect_error(const std::string& text, int line, int column, const std::string& field,
+                      const std::string& problem, const SceneOverrides& overrides = {}) {
+        const std::string path = write(text);
+        std::string prefix = path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
+        if (!field.empty()) prefix += field + ": ";
+        testing::expect_input_error([&] { load_scene(path, overrides); }, path, line, column, field, prefix + problem);
+    }
+};
+
+TEST_F(LoadScene, MinimalSceneUsesTheDefaults) {
+    const auto loaded = load(minimal_scene());
+    EXPECT_EQ(loaded->film.raster.width, 640);
+    EXPECT_EQ(loaded->film.raster.height, 480);
+    EXPECT_EQ(loaded->film.crop.x0, 0);
+    EXPECT_EQ(loaded->film.crop.y0, 0);
+    EXPECT_EQ(loaded->film.crop.x1, 640);
+    EXPECT_EQ(loaded->film.crop.y1, 480);
+    EXPECT_TRUE(loaded->film.aovs.empty());
+    EXPECT_FALSE(loaded->film.half_float);
+    EXPECT_EQ(loaded->spp, 16);
+    EXPECT_EQ(loaded->seed, 0u);
+    EXPECT_EQ(loaded->camera_type, "perspective");
+    EXPECT_EQ(loaded->filter_type, "gaussian");
+    EXPECT_EQ(loaded->sampler_type, "sobol");
+    EXPECT_EQ(loaded->integrator_type, "preview");
+    EXPECT_EQ(loaded->description, "");
+    EXPECT_EQ(loaded->display, "");
+    EXPECT_EQ(loaded->view, "");
+    ASSERT_NE(loaded->colours, nullptr);
+    EXPECT_EQ(loaded->colours->working_space(), "ACEScg");
+    ASSERT_NE(loaded->camera, nullptr);
+    ASSERT_NE(loaded->filter, nullptr);
+    ASSERT_NE(loaded->sampler, nullptr);
+    ASSERT_NE(loaded->integrator, nullptr);
+    ASSERT_NE(loaded->scene, nullptr);
+
+    ASSERT_EQ(loaded->scene->objects().size(), 1u);
+    const SceneObject& sphere = loaded->scene->objects()[0];
+    EXPECT_EQ(sphere.name, "objects[0]");
+    EXPECT_EQ(sphere.material, loaded->scene->find_material("grey"));
+    EXPECT_NE(sphere.material, nullptr);
+    EXPECT_EQ(loaded->scene->material_names(), std::vector<std::string>{"grey"});
+    // Committed: Embree knows the sphere's bounds.
+    EXPECT_EQ(loaded->scene->build_statistics().objects, 1u);
+    const Bounds3f bounds = loaded->scene->bounds();
+    EXPECT_NEAR(bounds.lower.x, -1.0f, 1e-4f);
+    EXPECT_NEAR(bounds.upper.y, 1.0f, 1e-4f);
+}
+
+TEST_F(LoadScene, SceneSettingsReplaceTheDefaults) {
+    const auto loaded = load(minimal_scene(
+        "  \"description\": \"a test\",\n"
+        "  \"colour\": {\"working_space\": \"lin_rec709\"},\n"
+        "  \"film\": {\"resolution\": [320, 200], \"spp\": 64, \"exr_pixel\": \"half\", \"aovs\": [\"depth\", \"all\"],\n"
+        "           \"filter\": {\"type\": \"box\", \"radius\": 0.5}},\n"
+        "  \"sampler\": {\"type\": \"independent\", \"seed\": 9},\n"
+        "  \"integrator\": {\"type\": \"preview\", \"ambient\": 0.5},\n"));
+    EXPECT_EQ(loaded->description, "a test");
+    EXPECT_EQ(loaded->colours->working_space(), "Linear Rec.709 (sRGB)");
+    EXPECT_EQ(loaded->film.raster.width, 320);
+    EXPECT_EQ(loaded->film.raster.height, 200);
+    EXPECT_EQ(loaded->film.crop.x1, 320);
+    EXPECT_EQ(loaded->film.crop.y1, 200);
+    EXPECT_EQ(loaded->spp, 64);
+    EXPECT_TRUE(loaded->film.half_float);
+    EXPECT_EQ(loaded->filter_type, "box");
+    EXPECT_EQ(loaded->sampler_type, "independent");
+    EXPECT_EQ(loaded->seed, 9u);
+    // "depth" first, then every other AOV once, in table order.
+    ASSERT_EQ(loaded->film.aovs.size(), all_aovs().size());
+    EXPECT_EQ(loaded->film.aovs[0], Aov::Depth);
+    EXPECT_EQ(loaded->film.aovs[1], Aov::Albedo);
+    EXPECT_EQ(std::set<Aov>(loaded->film.aovs.begin(), loaded->film.aovs.end()).size(), all_aovs().size());
+}
+
+TEST_F(LoadScene, CommandLineOverridesWin) {
+    SceneOverrides overrides;
+    overrides.spp = 4;
+    overrides.resolution = RasterSize{32, 16};
+    overrides.seed = 7;
+    overrides.extra_aovs = {Aov::Albedo, Aov::Depth};
+    const auto loaded = load(minimal_scene("  \"film\": {\"resolution\": [320, 200], \"spp\": 64, \"aovs\": [\"depth\", "
+                                           "\"normal\"]},\n  \"sampler\": {\"seed\": 3},\n"),
+                             overrides);
+    EXPECT_EQ(loaded->spp, 4);
+    EXPECT_EQ(loaded->film.raster.width, 32);
+    EXPECT_EQ(loaded->film.raster.height, 16);
+    EXPECT_EQ(loaded->film.crop.x1, 32);  // the crop follows the overridden raster
+    EXPECT_EQ(loaded->film.crop.y1, 16);
+    EXPECT_EQ(loaded->seed, 7u);
+    // The scene's AOVs, then the extra ones not already present.
+    EXPECT_EQ(loaded->film.aovs, (std::vector<Aov>{Aov::Depth, Aov::Normal, Aov::Albedo}));
+}
+
+TEST_F(LoadScene, OverriddenValuesAreStillValidated) {
+    SceneOverrides overrides;
+    overrides.spp = 4;
+    expect_error(minimal_scene("  \"film\": {\"spp\": 0},\n"), 4, 19, "film.spp",
+                 "value 0 out of range: must be in [1, 16777216]", overrides);
+}
+
+TEST_F(LoadScene, CropWindowBecomesPixelBounds) {
+    const auto loaded = load(minimal_scene("  \"film\": {\"resolution\": [100, 50], \"crop\": [0.1, 0.55, 0.25, 1]},\n"));
+    EXPECT_EQ(loaded->film.crop.x0, 10);
+    EXPECT_EQ(loaded->film.crop.x1, 55);
+    EXPECT_EQ(loaded->film.crop.y0, 13);  // ceil(12.5): pixel 12's centre (12.5) lies on the boundary
+    EXPECT_EQ(loaded->film.crop.y1, 50);
+    // A sliver still covers one pixel; a crop at the far edge keeps the last pixel.
+    const auto sliver = load(minimal_scene("  \"film\": {\"resolution\": [100, 50], \"crop\": [0.5, 0.5001, 0.999, 1]},\n"));
+    EXPECT_EQ(sliver->film.crop.x0, 50);
+    EXPECT_EQ(sliver->film.crop.x1, 51);
+    EXPECT_EQ(sliver->film.crop.y0, 49);
+    EXPECT_EQ(sliver->film.crop.y1, 50);
+}
+
+TEST_F(LoadScene, CropErrors) {
+    expect_error(minimal_scene("  \"film\": {\"crop\": [0.6, 0.4, 0, 1]},\n"), 4, 20, "film.crop",
+                 "expected [x_min, x_max, y_min, y_max] with min < max");
+    expect_error(minimal_scene("  \"film\": {\"crop\": [0, 1.5, 0, 1]},\n"), 4, 24, "film.crop[1]",
+                 "value 1.5 out of range: must be in [0, 1]");
+}
+
+TEST_F(LoadScene, UnknownTopLevelKey) {
+    expect_error(minimal_scene("  \"lights_\": [],\n"), 4, 14, "lights_",
+                 "unknown key \"lights_\" (did you mean \"lights\"?); known keys here: camera, colour, description, "
+                 "film, integrator, isotrace, lights, materials, objects, sampler");
+}
+
+TEST_F(LoadScene, UnknownMaterialName) {
+    const std::string text =
+        "{\n"
+        "  \"isotrace\": 1,\n" +
+        kCamera +
+        "\n"
+        "  \"materials\": {\"grey\": {\"type\": \"diffuse\"}, \"red\": {\"type\": \"diffuse\", \"reflectance\": [1, 0, 0]}},\n"
+        "  \"objects\": [\n"
+        "    {\"material\": \"grey\", \"shape\": {\"type\": \"sphere\"}},\n"
+        "    {\"material\": \"gery\", \"shape\": {\"type\": \"sphere\"}}\n"
+        "  ]\n"
+        "}\n";
+    expect_error(text, 7, 18, "objects[1].material", "unknown material \"gery\" (did you mean \"grey\"?); defined: grey, red");
+}
+
+TEST_F(LoadScene, InlineMaterialsAreNotListedAsNames) {
+    const std::string text =
+        "{\n"
+        "  \"isotrace\": 1,\n" +
+        kCamera +
+        "\n"
+        "  \"objects\": [\n"
+        "    {\"material\": {\"type\": \"emissive\", \"radiance\": 2}, \"shape\": {\"type\": \"sphere\"}},\n"
+        "    {\"material\": \"lamp\", \"shape\": {\"type\": \"sphere\"}}\n"
+        "  ]\n"
+        "}\n";
+    expect_error(text, 6, 18, "objects[1].material", "unknown material \"lamp\"; the scene defines no materials");
+}
+
+TEST_F(LoadScene, MissingCamera) {
+    expect_error(
+        "{\n"
+        "  \"isotrace\": 1,\n"
+        "  \"objects\": []\n"
+        "}\n",
+        1, 1, "", "missing required field \"camera\"");
+}
+
+TEST_F(LoadScene, NegativeRadius) {
+    const std::string text =
+        "{\n"
+        "  \"isotrace\": 1,\n" +
+        kCamera +
+        "\n"
+        "  \"materials\": {\"grey\": {\"type\": \"diffuse\"}},\n"
+        "  \"objects\": [\n"
+        "    {\"material\": \"grey\",\n"
+        "     \"shape\": {\"type\": \"sphere\", \"radius\": -2}}\n"
+        "  ]\n"
+        "}\n";
+    expect_error(text, 7, 44, "objects[0].shape.radius", "value -2 out of range: must be > 0");
+}
+
+TEST_F(LoadScene, ZeroResolution) {
+    expect_error(minimal_scene("  \"film\": {\"resolution\": [0, 480]},\n"), 4, 27, "film.resolution[0]",
+                 "value 0 out of range: must be in [1, 65536]");
+    expect_error(minimal_scene("  \"film\": {\"resolution\": [64.5, 480]},\n"), 4, 26, "film.resolution",
+                 "expected whole pixel counts");
+}
+
+TEST_F(LoadScene, WrongFormatVersion) {
+    expect_error("{\n  \"isotrace\": 2,\n" + kCamera + "\n  \"objects\": []\n}\n", 2, 15, "isotrace",
+                 "unsupported scene format version 2 (this build reads 1)");
+    expect_error("{\n" + kCamera + "\n  \"objects\": []\n}\n", 1, 1, "", "missing required field \"isotrace\"");
+    expect_error("[1, 2]", 1, 1, "", "a scene file must contain a JSON object");
+}
+
+TEST_F(LoadScene, UnknownShapeType) {
+    const std::string text =
+        "{\n"
+        "  \"isotrace\": 1,\n" +
+        kCamera +
+        "\n"
+        "  \"materials\": {\"grey\": {\"type\": \"diffuse\"}},\n"
+        "  \"objects\": [{\"material\": \"grey\", \"shape\": {\"type\": \"spehre\"}}]\n"
+        "}\n";
+    expect_error(text, 5, 54, "objects[0].shape.type",
+                 "unknown shape type \"spehre\" (did you mean \"sphere\"?); available: " +
+                     joined(shape_registry().types()));
+}
+
+TEST_F(LoadScene, UnknownAovIsReportedAtItsEntry) {
+    std::vector<std::string> names;
+    for (const AovInfo& info : all_aovs()) names.push_back(info.name);
+    expect_error(minimal_scene("  \"film\": {\"aovs\": [\"albedo\", \"normals\"]},\n"), 4, 31, "film.aovs[1]",
+                 "unknown AOV \"normals\" (did you mean \"normal\"?); available: " + joined(names) + ", all");
+}
+
+TEST_F(LoadScene, UnknownWorkingSpaceIsReportedOnce) {
+    expect_error(minimal_scene("  \"colour\": {\"working_space\": \"ACEScgg\"},\n"), 4, 31, "colour.working_space",
+                 "unknown colour space \"ACEScgg\" (did you mean \"ACEScg\"?)");
+}
+
+TEST_F(LoadScene, MissingFileNamesTheFile) {
+    const std::string path = (dir_ / "absent.json").string();
+    testing::expect_input_error([&] { load_scene(path); }, path, 0, 0, "",
+                                path + ": cannot open file: No such file or directory");
+}
+
+TEST_F(LoadScene, ShippedCornellBox) {
+    const auto loaded = load_scene(ISOTRACE_SCENES_DIR "/cornell_box.json");
+    EXPECT_EQ(loaded->film.raster.width, 512);
+    EXPECT_EQ(loaded->film.raster.height, 512);
+    EXPECT_EQ(loaded->spp, 64);
+    EXPECT_EQ(loaded->camera_type, "perspective");
+    EXPECT_EQ(loaded->integrator_type, "preview");
+    EXPECT_EQ(loaded->scene->material_names(), (std::vector<std::string>{"green", "light", "red", "white"}));
+    ASSERT_EQ(loaded->scene->objects().size(), 8u);
+    EXPECT_EQ(loaded->scene->objects()[0].name, "floor");
+    EXPECT_EQ(loaded->scene->objects()[7].name, "light");
+    EXPECT_EQ(loaded->scene->objects()[7].material, loaded->scene->find_material("light"));
+    EXPECT_EQ(loaded->scene->objects()[3].material, loaded->scene->find_material("green"));
+    EXPECT_EQ(loaded->scene->lights().size(), 1u);
+    // Committed, and the millimetre measurements were scaled to metres.
+    const BuildStatistics& statistics = loaded->scene->build_statistics();
+    EXPECT_EQ(statistics.objects, 8u);
+    EXPECT_EQ(statistics.primitives_by_type.at(loaded->scene->objects()[0].shape->type_name()),
+              std::size_t(5 * 2 + 2 * 10 + 2));
+    const Bounds3f bounds = loaded->scene->bounds();
+    EXPECT_NEAR(bounds.lower.x, 0.0f, 1e-4f);
+    EXPECT_NEAR(bounds.lower.y, 0.0f, 1e-4f);
+    EXPECT_NEAR(bounds.lower.z, 0.0f, 1e-4f);
+    EXPECT_NEAR(bounds.upper.x, 0.556f, 1e-4f);
+    EXPECT_NEAR(bounds.upper.y, 0.5488f, 1e-4f);
+    EXPECT_NEAR(bounds.upper.z, 0.5592f, 1e-4f);
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,12 +1,25 @@
 #include "renderer/scene/scene_node.h"
 
+#include <charconv>
 #include <cmath>
-#include <sstream>
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/did_you_mean.h"
 
 namespace isotrace {
+
+namespace {
+
+// Exact, shortest form of a number for messages: integers in full ("65536", not "6.5536e+04"), other values
+// with as many digits as it takes to tell them apart ("1.00000000001", not "1" beside a limit of 1).
+std::string format_number(double v) {
+    if (v == std::floor(v) && std::abs(v) < 1e16) return std::to_string(static_cast<long long>(v));
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+}
+
+}  // namespace
 
 bool NumberRange::contains(double v) const {
     if (!std::isfinite(v)) return false;
@@ -16,19 +29,13 @@ bool NumberRange::contains(double v) const {
 }
 
 std::string NumberRange::describe() const {
-    std::ostringstream out;
-    out.precision(10);
     const bool has_low = std::isfinite(low), has_high = std::isfinite(high);
-    if (has_low && has_high) {
-        out << "in " << (low_open ? "(" : "[") << low << ", " << high << (high_open ? ")" : "]");
-    } else if (has_low) {
-        out << (low_open ? "> " : ">= ") << low;
-    } else if (has_high) {
-        out << (high_open ? "< " : "<= ") << high;
-    } else {
-        out << "finite";
-    }
-    return out.str();
+    if (has_low && has_high)
+        return std::string("in ") + (low_open ? "(" : "[") + format_number(low) + ", " + format_number(high) +
+               (high_open ? ")" : "]");
+    if (has_low) return (low_open ? "> " : ">= ") + format_number(low);
+    if (has_high) return (high_open ? "< " : "<= ") + format_number(high);
+    return "finite";
 }
 
 SceneNode::SceneNode(const JsonValue& value, std::string path, std::shared_ptr<const SceneFileContext> context)
@@ -110,12 +117,8 @@ void SceneNode::accept_all_keys() const {
 
 double SceneNode::as_number(NumberRange range) const {
     if (!value_->is_number()) fail(std::string("expected a number, found ") + JsonValue::kind_name(value_->kind));
-    if (!range.contains(value_->number)) {
-        std::ostringstream out;
-        out.precision(10);
-        out << "value " << value_->number << " out of range: must be " << range.describe();
-        fail(out.str());
-    }
+    if (!range.contains(value_->number))
+        fail("value " + format_number(value_->number) + " out of range: must be " + range.describe());
     return value_->number;
 }
 
@@ -209,7 +212,7 @@ Rgb SceneNode::as_colour() const {
     const std::string space = string("space");
     finish();
     if (!context_->colours) fail("no colour system available to convert from \"" + space + "\"");
-    SourceLocation where = json.location;
+    SourceLocation where = json.find("space")->location;  // an unknown space is reported where it is written
     where.file = context_->file;
     return context_->colours->to_working({float(v.x), float(v.y), float(v.z)}, space, where, child_path("space"));
 }
