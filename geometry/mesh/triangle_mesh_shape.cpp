@@ -1,6 +1,9 @@
 #include "geometry/mesh/triangle_mesh_shape.h"
 
 #include <cstring>
+#include <sstream>
+#include <string>
+#include <utility>
 
 #include "geometry/mesh/mesh_file.h"
 
@@ -17,6 +20,13 @@ Bounds3f TriangleMeshShape::bounds() const {
 void TriangleMeshShape::bake(const Transform& to_world) {
     for (Vec3f& p : mesh_.positions) p = to_world.point(p);
     for (Vec3f& n : mesh_.normals) n = to_world.normal(n);
+    // A mirroring transform turns counter-clockwise into clockwise: swap two corners so that the front
+    // (and with it the outward side of closed meshes) is preserved. Normals and uvs belong to vertices and
+    // follow them; only the barycentric fallback uv needs to know (see shading()).
+    if (to_world.determinant() < 0) {
+        for (auto& triangle : mesh_.triangles) std::swap(triangle[1], triangle[2]);
+        winding_swapped_ = !winding_swapped_;
+    }
 }
 
 RTCGeometry TriangleMeshShape::create_geometry(RTCDevice device) {
@@ -40,7 +50,7 @@ RTCGeometry TriangleMeshShape::create_geometry(RTCDevice device) {
 
 LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_normal) const {
     LocalShading result;
-    result.geometric_normal = -embree_normal;
+    result.geometric_normal = embree_normal;  // Embree's Ng = (v1-v0)x(v2-v0): the counter-clockwise front
     result.normal = result.geometric_normal;
     const auto& triangle = mesh_.triangles[hit.primID];
     const float w = 1 - hit.u - hit.v;
@@ -55,6 +65,8 @@ LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_n
             result.uv[std::size_t(k)] = mesh_.uvs[triangle[0]][std::size_t(k)] * w +
                                         mesh_.uvs[triangle[1]][std::size_t(k)] * hit.u +
                                         mesh_.uvs[triangle[2]][std::size_t(k)] * hit.v;
+    } else if (winding_swapped_) {
+        result.uv = {hit.v, hit.u};  // barycentrics of the original second and third corners
     } else {
         result.uv = {hit.u, hit.v};
     }
@@ -63,10 +75,18 @@ LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_n
 
 namespace {
 
+std::string format_number(double v) {  // "3", "1.5", "-1" rather than std::to_string's "3.000000"
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
 // Inline meshes: "positions": [[x,y,z], ...], "triangles": [[i,j,k], ...], optional "normals", "uvs".
 TriangleMeshData parse_inline_mesh(const SceneNode& node) {
     TriangleMeshData mesh;
-    for (const SceneNode& p : node.optional_value("positions")->elements()) mesh.positions.push_back(Vec3f(p.as_vec3()));
+    const auto positions = node.optional_value("positions");
+    if (!positions) node.fail("a mesh needs \"file\" or inline \"positions\" and \"triangles\"");
+    for (const SceneNode& p : positions->elements()) mesh.positions.push_back(Vec3f(p.as_vec3()));
     if (auto normals = node.optional_value("normals"))
         for (const SceneNode& n : normals->elements()) mesh.normals.push_back(Vec3f(n.as_vec3()));
     if (auto uvs = node.optional_value("uvs"))
@@ -81,7 +101,7 @@ TriangleMeshData parse_inline_mesh(const SceneNode& node) {
         std::array<std::uint32_t, 3> triangle{};
         for (int k = 0; k < 3; ++k) {
             if (index[k] < 0 || index[k] != std::floor(index[k]) || index[k] >= double(mesh.positions.size()))
-                t.fail("vertex index " + std::to_string(index[k]) + " is not an index into positions (" +
+                t.fail("vertex index " + format_number(index[k]) + " is not an index into positions (" +
                        std::to_string(mesh.positions.size()) + " vertices)");
             triangle[std::size_t(k)] = std::uint32_t(index[k]);
         }

@@ -15,11 +15,12 @@ public:
     bool can_bake(const Transform&) const override { return true; }
     void bake(const Transform& to_world) override;
     RTCGeometry create_geometry(RTCDevice device) override;
-    // Embree's Ng is (v2-v0)x(v1-v0) for our vertex order; we report the counter-clockwise front instead.
+    // Embree's Ng is (v1-v0)x(v2-v0), the counter-clockwise front, which is what we report.
     LocalShading shading(const RTCHit& hit, const Vec3f& embree_normal) const override;
 
 private:
     TriangleMeshData mesh_;
+    bool winding_swapped_ = false;  // bake() reversed every triangle (mirroring transform)
 };
 
 }  // namespace isotrace

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -10,8 +11,10 @@ namespace isotrace {
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& temporary)>& write) {
     std::filesystem::path temporary = target;
-    temporary.replace_filename("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) +
-                               target.extension().string());
+    // Unique per process and per call, so concurrent writers of one target never share a temporary.
+    static std::atomic<unsigned> counter{0};
+    temporary.replace_filename("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) + "-" +
+                               std::to_string(counter++) + target.extension().string());
     try {
         write(temporary);
         std::filesystem::rename(temporary, target);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "renderer/colour/colour_system.h"
@@ -24,7 +25,13 @@ void apply_metadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
     for (const auto& [name, value] : metadata.entries) {
         if (const auto* text = std::get_if<std::string>(&value)) spec.attribute(name, *text);
         else if (const auto* real = std::get_if<double>(&value)) spec.attribute(name, float(*real));
-        else if (const auto* integer = std::get_if<std::int64_t>(&value)) spec.attribute(name, int(*integer));
+        else if (const auto* integer = std::get_if<std::int64_t>(&value)) {
+            // EXR integer attributes are 32-bit: write larger values as text rather than wrapping them.
+            if (*integer >= std::numeric_limits<int>::min() && *integer <= std::numeric_limits<int>::max())
+                spec.attribute(name, int(*integer));
+            else
+                spec.attribute(name, std::to_string(*integer));
+        }
         else {
             const auto& floats = std::get<std::vector<float>>(value);
             spec.attribute(name, OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, int(floats.size())), floats.data());

@@ -1,1 +1,279 @@
-// placeholder: tests are being written
+// Image writers, checked by reading the files back with OpenImageIO: EXR channels, pixel types, windows and
+// metadata; display images against ColourSystem::to_display; failures leave no file; format detection.
+#include "renderer/image/image_writer.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "renderer/colour/colour_system.h"
+#include "renderer/core/input_error.h"
+
+namespace isotrace {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ScratchDirectory {
+public:
+    ScratchDirectory() {
+        std::random_device random;
+        path_ = fs::temp_directory_path() / ("isotrace_image_" + std::to_string(random()) + std::to_string(random()));
+        fs::create_directories(path_);
+    }
+    ~ScratchDirectory() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    const fs::path& path() const { return path_; }
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(path_)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    fs::path path_;
+};
+
+// A 5x3 image with beauty and every kind of AOV channel; values that half floats cannot hold exactly.
+ImageBuffer test_image() {
+    ImageBuffer image;
+    image.width = 5;
+    image.height = 3;
+    image.channels = {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "Z", "P.X", "P.Y", "P.Z",
+                      "objectId", "primitiveId", "sampleCount", "variance.R", "variance.G", "variance.B"};
+    image.pixels.resize(std::size_t(image.width * image.height) * image.channels.size());
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        const std::size_t c = i % image.channels.size();
+        const float base = 0.1234567f * float(i + 1);
+        image.pixels[i] = c == 11 ? float(100003 + i) : c == 12 ? float(70001 + 3 * i) : c == 13 ? 4097.0f : base;
+    }
+    return image;
+}
+
+ImageMetadata test_metadata() {
+    ImageMetadata metadata;
+    metadata.set("isotrace:spp", std::int64_t(64));
+    metadata.set("isotrace:seed", std::string("18446744073709551615"));
+    metadata.set("isotrace:render_seconds", 1.5);
+    metadata.set("isotrace:integrator", std::string("preview"));
+    metadata.set("isotrace:partial", std::int64_t(0));
+    return metadata;
+}
+
+struct ReadBack {
+    OIIO::ImageSpec spec;
+    std::vector<float> pixels;
+};
+
+ReadBack read_image(const fs::path& path) {
+    ReadBack result;
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        ADD_FAILURE() << "cannot open " << path << ": " << OIIO::geterror();
+        return result;
+    }
+    result.spec = in->spec();
+    result.pixels.resize(std::size_t(result.spec.width * result.spec.height * result.spec.nchannels));
+    EXPECT_TRUE(in->read_image(0, 0, 0, result.spec.nchannels, OIIO::TypeDesc::FLOAT, result.pixels.data()))
+        << in->geterror();
+    in->close();
+    return result;
+}
+
+// EXR stores channels sorted by name and readers choose their own order (OIIO: RGBA first, then Z, then the
+// rest), so a file is compared with the buffer channel by channel, by name.
+void expect_same_channels(const ReadBack& back, const ImageBuffer& image, bool exact) {
+    std::vector<std::string> written = image.channels, read = back.spec.channelnames;
+    std::sort(written.begin(), written.end());
+    std::sort(read.begin(), read.end());
+    ASSERT_EQ(read, written);
+    ASSERT_EQ(back.spec.nchannels, int(image.channels.size()));
+    const std::vector<std::string> beauty = {"R", "G", "B", "A"};
+    EXPECT_EQ(std::vector<std::string>(back.spec.channelnames.begin(), back.spec.channelnames.begin() + 4), beauty);
+    const std::size_t n = image.channels.size();
+    for (std::size_t c = 0; c < n; ++c) {
+        const auto found = std::find(back.spec.channelnames.begin(), back.spec.channelnames.end(), image.channels[c]);
+        const std::size_t k = std::size_t(found - back.spec.channelnames.begin());
+        for (std::size_t p = 0; p < std::size_t(image.width * image.height); ++p) {
+            const float original = image.pixels[p * n + c], read_value = back.pixels[p * n + k];
+            if (exact) {
+                EXPECT_EQ(read_value, original) << image.channels[c] << " pixel " << p;
+            } else {
+                EXPECT_NEAR(read_value, original, std::abs(original) * 1e-3) << image.channels[c];  // half: 11 bits
+            }
+        }
+    }
+}
+
+TEST(ImageWriter, ExrKeepsChannelNamesOrderAndFloatValues) {
+    const ScratchDirectory dir;
+    const ImageBuffer image = test_image();
+    const fs::path path = dir.path() / "out.exr";
+    write_exr(path, image, {{5, 3}, 0, 0}, false, test_metadata());
+    const ReadBack back = read_image(path);
+    expect_same_channels(back, image, true);  // bit for bit
+    EXPECT_EQ(back.spec.width, 5);
+    EXPECT_EQ(back.spec.height, 3);
+    EXPECT_EQ(back.spec.alpha_channel, 3);
+    EXPECT_EQ(back.spec.format, OIIO::TypeDesc::FLOAT);
+    for (int c = 0; c < back.spec.nchannels; ++c) EXPECT_EQ(back.spec.channelformat(c), OIIO::TypeDesc::FLOAT);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.exr"});  // no temporary left behind
+}
+
+TEST(ImageWriter, HalfExrKeepsIdsCountsDepthAndPositionsAsFloat) {
+    const ScratchDirectory dir;
+    const ImageBuffer image = test_image();
+    const fs::path path = dir.path() / "half.exr";
+    write_exr(path, image, {{5, 3}, 0, 0}, true, test_metadata());
+    const ReadBack back = read_image(path);
+    expect_same_channels(back, image, false);
+    const std::size_t n = image.channels.size();
+    for (std::size_t c = 0; c < n; ++c) {
+        const std::string& name = image.channels[c];
+        const bool exact = name == "objectId" || name == "primitiveId" || name == "sampleCount" || name == "Z" ||
+                           name.rfind("P.", 0) == 0;
+        const std::size_t k = std::size_t(std::find(back.spec.channelnames.begin(), back.spec.channelnames.end(), name) -
+                                          back.spec.channelnames.begin());
+        ASSERT_LT(k, n) << name;
+        EXPECT_EQ(back.spec.channelformat(int(k)), exact ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF) << name;
+        if (!exact) continue;
+        for (std::size_t p = 0; p < 15; ++p) EXPECT_EQ(back.pixels[p * n + k], image.pixels[p * n + c]) << name;
+    }
+    // Ids beyond half's range really needed the float channel: 100003 is not representable as a half.
+    EXPECT_GT(image.pixels[11], 65504.0f);
+}
+
+TEST(ImageWriter, CropWindowBecomesTheDataWindowInsideTheDisplayWindow) {
+    const ScratchDirectory dir;
+    const ImageBuffer image = test_image();
+    const fs::path path = dir.path() / "crop.exr";
+    write_exr(path, image, {{48, 40}, 7, 11}, false, {});
+    const ReadBack back = read_image(path);
+    EXPECT_EQ(back.spec.x, 7);
+    EXPECT_EQ(back.spec.y, 11);
+    EXPECT_EQ(back.spec.width, 5);
+    EXPECT_EQ(back.spec.height, 3);
+    EXPECT_EQ(back.spec.full_x, 0);
+    EXPECT_EQ(back.spec.full_y, 0);
+    EXPECT_EQ(back.spec.full_width, 48);
+    EXPECT_EQ(back.spec.full_height, 40);
+    expect_same_channels(back, image, true);
+}
+
+TEST(ImageWriter, MetadataAttributesArePresent) {
+    const ScratchDirectory dir;
+    const fs::path path = dir.path() / "meta.exr";
+    ImageMetadata metadata = test_metadata();
+    metadata.set("isotrace:big", std::int64_t(1) << 40);  // beyond a 32-bit attribute
+    write_exr(path, test_image(), {{5, 3}, 0, 0}, false, metadata);
+    const ReadBack back = read_image(path);
+    EXPECT_EQ(back.spec.get_int_attribute("isotrace:spp", -1), 64);
+    EXPECT_EQ(back.spec.get_int_attribute("isotrace:partial", -1), 0);
+    EXPECT_EQ(back.spec.get_string_attribute("isotrace:seed"), "18446744073709551615");
+    EXPECT_EQ(back.spec.get_string_attribute("isotrace:integrator"), "preview");
+    EXPECT_FLOAT_EQ(back.spec.get_float_attribute("isotrace:render_seconds", -1), 1.5f);
+    // A value that does not fit the file's 32-bit integer attribute must not be silently wrapped.
+    const OIIO::ParamValue* big = back.spec.find_attribute("isotrace:big");
+    ASSERT_NE(big, nullptr);
+    EXPECT_EQ(back.spec.get_string_attribute("isotrace:big"), "1099511627776");
+    EXPECT_EQ(back.spec.get_string_attribute("compression"), "zip");
+}
+
+TEST(ImageWriter, DisplayImageMatchesTheColourSystemsDisplayTransform) {
+    const ScratchDirectory dir;
+    const ColourSystem colours("");
+    ImageBuffer image;
+    image.width = 7;
+    image.height = 4;
+    image.channels = {"R", "G", "B", "A", "Z"};
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> value(-0.2f, 3.0f);
+    image.pixels.resize(std::size_t(image.width * image.height) * image.channels.size());
+    for (float& v : image.pixels) v = value(random);
+    image.pixels[0] = std::numeric_limits<float>::quiet_NaN();  // becomes 0, not garbage
+    image.pixels[6] = std::numeric_limits<float>::infinity();
+    for (const auto& [display, view] : {std::pair<std::string, std::string>{"", ""},
+                                        std::pair<std::string, std::string>{"sRGB", "ACES 1.0 - SDR Video"}}) {
+        const fs::path path = dir.path() / ("display" + view.substr(0, 4) + ".png");
+        write_display_image(path, image, colours, display, view, test_metadata());
+        auto in = OIIO::ImageInput::open(path.string());
+        ASSERT_TRUE(in) << OIIO::geterror();
+        const OIIO::ImageSpec spec = in->spec();
+        EXPECT_EQ(spec.width, 7);
+        EXPECT_EQ(spec.height, 4);
+        ASSERT_EQ(spec.nchannels, 3);
+        EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT8);
+        std::vector<unsigned char> bytes(std::size_t(7 * 4 * 3));
+        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, bytes.data()));
+        in->close();
+
+        std::vector<float> rgb(std::size_t(7 * 4 * 3));
+        for (std::size_t p = 0; p < 28; ++p)
+            for (std::size_t c = 0; c < 3; ++c) rgb[p * 3 + c] = image.pixels[p * 5 + c];
+        colours.to_display(rgb.data(), 28, 3, display, view);
+        for (std::size_t i = 0; i < rgb.size(); ++i) {
+            const float v = std::isfinite(rgb[i]) ? std::clamp(rgb[i], 0.0f, 1.0f) : 0.0f;
+            EXPECT_EQ(int(bytes[i]), int(std::lround(v * 255.0f))) << view << " value " << i;
+        }
+    }
+}
+
+TEST(ImageWriter, FailedWriteLeavesNoFile) {
+    const ScratchDirectory dir;
+    const ImageBuffer image = test_image();
+    // Missing directory.
+    const fs::path missing = dir.path() / "no" / "such" / "dir" / "out.exr";
+    EXPECT_ANY_THROW(write_exr(missing, image, {{5, 3}, 0, 0}, false, {}));
+    EXPECT_FALSE(fs::exists(missing));
+    EXPECT_FALSE(fs::exists(dir.path() / "no"));
+    const ColourSystem colours("");
+    EXPECT_ANY_THROW(write_display_image(dir.path() / "no" / "out.png", image, colours, "", "", {}));
+    EXPECT_TRUE(dir.entries().empty());
+
+    // The target is in the way (a directory): the temporary written beside it is removed again.
+    fs::create_directories(dir.path() / "taken.exr" / "child");
+    EXPECT_ANY_THROW(write_exr(dir.path() / "taken.exr", image, {{5, 3}, 0, 0}, false, {}));
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"taken.exr"});
+    EXPECT_TRUE(fs::is_directory(dir.path() / "taken.exr"));
+
+    // An existing good file survives a failed rewrite untouched.
+    const fs::path good = dir.path() / "good.exr";
+    write_exr(good, image, {{5, 3}, 0, 0}, false, {});
+    const auto size = fs::file_size(good);
+    ImageBuffer broken = image;
+    broken.width = 0;  // no pixels: OIIO refuses to open the output
+    EXPECT_ANY_THROW(write_exr(good, broken, {{5, 3}, 0, 0}, false, {}));
+    EXPECT_EQ(fs::file_size(good), size);
+    expect_same_channels(read_image(good), image, true);
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"good.exr", "taken.exr"}));
+}
+
+TEST(ImageWriter, ImageKindFollowsTheExtension) {
+    EXPECT_EQ(image_kind_for("a/b/out.exr"), ImageKind::Exr);
+    EXPECT_EQ(image_kind_for("OUT.EXR"), ImageKind::Exr);
+    for (const char* name : {"x.png", "x.PNG", "x.jpg", "x.jpeg", "x.JPeg", "x.tif", "x.tiff"})
+        EXPECT_EQ(image_kind_for(name), ImageKind::Display) << name;
+    for (const char* name : {"x.bmp", "x", "x.exr.gz", "png", "dir.exr/file"}) {
+        try {
+            image_kind_for(name);
+            ADD_FAILURE() << name << " was accepted";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find(name), std::string::npos) << error.what();
+            EXPECT_NE(std::string(error.what()).find(".exr"), std::string::npos) << error.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace isotrace

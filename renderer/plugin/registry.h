@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,10 @@ public:
 
     explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
+    // Two plugins under one name is a programming error: the second would silently shadow the first.
     void add(const std::string& type, Factory factory, std::string summary) {
-        entries_[type] = Entry{std::move(factory), std::move(summary)};
+        if (!entries_.emplace(type, Entry{std::move(factory), std::move(summary)}).second)
+            throw std::logic_error(kind_ + " type \"" + type + "\" is registered twice");
     }
 
     bool contains(const std::string& type) const { return entries_.count(type) != 0; }

@@ -40,6 +40,8 @@ void render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile,
                 sample.filter_weight = offset.weight;
                 sample.offset_squared = offset.dx * offset.dx + offset.dy * offset.dy;
                 sample.radiance = loaded.integrator->radiance(ray, *loaded.scene, samples, sample.primary);
+                // Integrators do not know the camera: the depth AOV is filled in here from the hit position.
+                if (sample.primary.hit) sample.primary.depth = loaded.camera->view_depth(sample.primary.position);
                 if (!sample.radiance.is_finite()) {  // counted and dropped, so one bad path cannot poison a pixel
                     counters::count_nan_sample();
                     sample.radiance = Rgb();
@@ -92,6 +94,7 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
     const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
     std::atomic<std::int64_t> pixel_samples_done{0};
+    std::atomic<int> completed_spp{0};  // result.completed_spp, readable from the progress thread
     const double budget = options.time_budget_seconds.value_or(0);
     const auto cancelled = [&] { return options.cancel && options.cancel->load(std::memory_order_relaxed); };
 
@@ -105,7 +108,7 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
         if (progress.fraction > 0)
             progress.eta_seconds = progress.elapsed_seconds * (1 - progress.fraction) / progress.fraction;
         progress.rays = counters::totals().total_rays();
-        progress.completed_spp = result.completed_spp;
+        progress.completed_spp = completed_spp.load();
         return progress;
     });
 
@@ -116,8 +119,8 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
         if (options.time_budget_seconds && result.completed_spp > 0) {
             const double per_spp = elapsed() / result.completed_spp;
             const double fits = (budget - elapsed()) / per_spp;
-            if (fits < 1) break;
-            pass_spp = std::min(pass_spp, int(fits));
+            if (!(fits >= 1)) break;
+            pass_spp = int(std::min(double(pass_spp), fits));  // compare as doubles: fits may exceed INT_MAX
         }
         const int first = result.completed_spp, last = first + pass_spp;
         std::atomic<bool> skipped_tile{false};
@@ -141,6 +144,7 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
             break;
         }
         result.completed_spp = last;
+        completed_spp = last;
         if (options.time_budget_seconds && elapsed() >= budget) break;
     }
     result.cancelled = cancelled();

@@ -1,1 +1,414 @@
-// placeholder: tests are being written
+// render_scene(): bit-identical images for any thread count, tile size or time budget; exact sample budgets;
+// cancellation from the progress callback; time budgets; NaN samples counted and dropped; the depth AOV.
+#include "renderer/render/tile_renderer.h"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <random>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "renderer/core/render_counters.h"
+#include "renderer/plugin/integrator.h"
+#include "renderer/scene/loaded_scene.h"
+
+namespace isotrace {
+namespace {
+
+// ---- test-only integrators --------------------------------------------------------------------------------
+
+// Radiance 1 for rays going left, NaN or +inf for rays going right; counts what it returned.
+std::atomic<std::uint64_t> g_bad_samples{0};
+class BadValueIntegrator final : public Integrator {
+public:
+    Rgb radiance(const Ray& ray, const RenderScene&, SampleStream&, PrimaryHitRecord&) const override {
+        if (ray.direction.x <= 0) return Rgb(1.0f);
+        ++g_bad_samples;
+        return ray.direction.y > 0 ? Rgb(std::numeric_limits<float>::quiet_NaN(), 1, 1)
+                                   : Rgb(1, std::numeric_limits<float>::infinity(), 1);
+    }
+};
+
+// Renders black, but once `g_free_calls` calls have been made every further call waits until the render's
+// cancel flag is raised: the first passes complete, and the pass after them is cut short deterministically.
+std::atomic<std::int64_t> g_free_calls{0};
+std::atomic<bool> g_cancel{false};
+class WaitForCancelIntegrator final : public Integrator {
+public:
+    Rgb radiance(const Ray&, const RenderScene&, SampleStream&, PrimaryHitRecord&) const override {
+        if (g_free_calls.fetch_sub(1) <= 0)
+            while (!g_cancel.load()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        return Rgb(0.5f);
+    }
+};
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_bad_values", "test only: NaN/inf radiance for rays going right",
+                         [](const SceneNode&) -> std::unique_ptr<Integrator> {
+                             return std::make_unique<BadValueIntegrator>();
+                         })
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_wait_for_cancel", "test only: blocks until cancelled",
+                         [](const SceneNode&) -> std::unique_ptr<Integrator> {
+                             return std::make_unique<WaitForCancelIntegrator>();
+                         })
+
+namespace {
+
+class SceneFile {
+public:
+    explicit SceneFile(const std::string& json) {
+        std::random_device random;
+        directory_ = std::filesystem::temp_directory_path() / ("isotrace_render_" + std::to_string(random()));
+        std::filesystem::create_directories(directory_);
+        path_ = (directory_ / "scene.json").string();
+        std::ofstream(path_) << json;
+    }
+    ~SceneFile() {
+        std::error_code ignored;
+        std::filesystem::remove_all(directory_, ignored);
+    }
+    const std::string& path() const { return path_; }
+
+private:
+    std::filesystem::path directory_;
+    std::string path_;
+};
+
+// Spheres (baked and instanced), meshes, point and directional lights, an emitter and the preview integrator.
+std::string test_scene(const std::string& film_extra = "", const std::string& integrator = "") {
+    return R"({"isotrace": 1,
+  "film": {"resolution": [48, 40], "spp": 8, "crop": [0.1, 0.9, 0.05, 0.95], "aovs": ["all"],
+           "filter": {"type": "gaussian"})" +
+           film_extra + R"(},
+  "camera": {"type": "perspective", "fov": 50, "look_at": {"eye": [0.3, 1.5, 5], "target": [0, 0.4, 0]}},
+  "sampler": {"type": "sobol", "seed": 7},
+  "integrator": )" +
+           (integrator.empty()
+                ? std::string(R"({"type": "preview", "ambient": 0.3, "ambient_samples": 2, "background": [0.1, 0.2, 0.3]})")
+                : integrator) +
+           R"(,
+  "materials": {
+    "red": {"type": "diffuse", "reflectance": [0.8, 0.2, 0.2]},
+    "grey": {"type": "diffuse", "reflectance": 0.6},
+    "lamp": {"type": "emissive", "radiance": [4, 3, 2]}
+  },
+  "lights": [
+    {"type": "point", "position": [2, 3, 2], "intensity": 12},
+    {"type": "directional", "direction": [-1, -2, -0.5], "irradiance": [1, 0.9, 0.8]}
+  ],
+  "objects": [
+    {"name": "floor", "material": "grey", "shape": {"type": "mesh",
+      "positions": [[-4, 0, -4], [4, 0, -4], [4, 0, 4], [-4, 0, 4]], "triangles": [[0, 2, 1], [0, 3, 2]]}},
+    {"name": "balls", "material": "red", "shape": {"type": "sphere",
+      "spheres": [{"center": [-0.8, 0.5, 0], "radius": 0.5}, {"center": [0.9, 0.35, 0.6], "radius": 0.35}]}},
+    {"name": "egg", "material": "grey", "transform": {"translate": [0.2, 0.9, -1], "scale": [0.3, 0.6, 0.3]},
+      "shape": {"type": "sphere"}},
+    {"name": "box", "material": "lamp", "transform": {"translate": [1.2, 0, -1.2], "rotate": {"axis": [0, 1, 0], "angle": 30}, "scale": 0.5},
+      "shape": {"type": "mesh",
+        "positions": [[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1]],
+        "triangles": [[0,2,3],[0,3,1],[4,5,7],[4,7,6],[0,1,5],[0,5,4],[2,6,7],[2,7,3],[0,4,6],[0,6,2],[1,3,7],[1,7,5]]}}
+  ]})";
+}
+
+RenderResult render_with_threads(const LoadedScene& scene, int threads, RenderOptions options) {
+    tbb::task_arena arena(threads);
+    RenderResult result;
+    arena.execute([&] { result = render_scene(scene, options); });
+    return result;
+}
+
+RenderOptions options_for(const LoadedScene& scene, int tile_size) {
+    RenderOptions options;
+    options.tile_size = tile_size;
+    options.spp = scene.spp;
+    return options;
+}
+
+int channel(const ImageBuffer& image, const std::string& name) {
+    for (std::size_t i = 0; i < image.channels.size(); ++i)
+        if (image.channels[i] == name) return int(i);
+    ADD_FAILURE() << "no channel " << name;
+    return 0;
+}
+
+void expect_bit_identical(const ImageBuffer& a, const ImageBuffer& b, const std::string& what) {
+    ASSERT_EQ(a.width, b.width) << what;
+    ASSERT_EQ(a.height, b.height) << what;
+    ASSERT_EQ(a.channels, b.channels) << what;
+    ASSERT_EQ(a.pixels.size(), b.pixels.size()) << what;
+    EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0) << what;
+}
+
+TEST(TileRenderer, ImagesAreBitIdenticalForAnyThreadCountTileSizeAndBudget) {
+    const SceneFile file(test_scene());
+    const auto scene = load_scene(file.path());
+    ASSERT_EQ(scene->film.crop.x0, 5);
+    ASSERT_EQ(scene->film.crop.x1, 44);
+    ASSERT_EQ(scene->film.crop.y0, 2);
+    ASSERT_EQ(scene->film.crop.y1, 38);
+    ASSERT_EQ(scene->spp, 8);
+    const RenderResult reference = render_with_threads(*scene, 1, options_for(*scene, 32));
+    ASSERT_EQ(reference.completed_spp, 8);
+    const ImageBuffer expected = reference.film->resolve();
+    ASSERT_EQ(expected.width, 39);
+    ASSERT_EQ(expected.height, 36);
+    ASSERT_EQ(expected.channels.size(), 4u + 3 + 3 + 1 + 3 + 1 + 1 + 1 + 3);
+
+    // The image is not trivial: several objects, misses and hits, varying colours.
+    const int object_channel = channel(expected, "objectId");
+    std::set<float> ids;
+    for (std::size_t i = 0; i < std::size_t(expected.width * expected.height); ++i)
+        ids.insert(expected.pixels[i * expected.channels.size() + std::size_t(object_channel)]);
+    EXPECT_GE(ids.size(), 4u);
+
+    for (int threads : {1, 2}) {
+        for (int tile : {1, 7, 32, 64}) {
+            const RenderResult result = render_with_threads(*scene, threads, options_for(*scene, tile));
+            EXPECT_EQ(result.completed_spp, 8);
+            EXPECT_FALSE(result.partial);
+            EXPECT_FALSE(result.cancelled);
+            expect_bit_identical(result.film->resolve(), expected,
+                                 std::to_string(threads) + " threads, tile " + std::to_string(tile));
+        }
+    }
+    // A generous time budget changes how the samples are split into passes, not the image.
+    for (int threads : {1, 2}) {
+        RenderOptions options = options_for(*scene, 7);
+        options.time_budget_seconds = 1000.0;
+        const RenderResult result = render_with_threads(*scene, threads, options);
+        EXPECT_EQ(result.completed_spp, 8);
+        expect_bit_identical(result.film->resolve(), expected, "time budget, " + std::to_string(threads) + " threads");
+    }
+    // A progress callback does not disturb anything either.
+    RenderOptions options = options_for(*scene, 5);
+    std::atomic<int> calls{0};
+    options.on_progress = [&](const RenderProgress&) { ++calls; };
+    expect_bit_identical(render_with_threads(*scene, 2, options).film->resolve(), expected, "with progress");
+}
+
+TEST(TileRenderer, ImagesDependOnTheSeed) {
+    // The determinism test above would pass trivially if nothing were random: a different seed must differ.
+    const SceneFile a(test_scene()), b(test_scene());
+    SceneOverrides other_seed;
+    other_seed.seed = 8;
+    const auto scene_a = load_scene(a.path());
+    const auto scene_b = load_scene(b.path(), other_seed);
+    const ImageBuffer ia = render_with_threads(*scene_a, 2, options_for(*scene_a, 16)).film->resolve();
+    const ImageBuffer ib = render_with_threads(*scene_b, 2, options_for(*scene_b, 16)).film->resolve();
+    ASSERT_EQ(ia.pixels.size(), ib.pixels.size());
+    EXPECT_NE(std::memcmp(ia.pixels.data(), ib.pixels.data(), ia.pixels.size() * sizeof(float)), 0);
+}
+
+TEST(TileRenderer, SampleBudgetIsMetExactly) {
+    for (int spp : {1, 2, 5, 13}) {
+        SceneOverrides overrides;
+        overrides.spp = spp;
+        overrides.resolution = RasterSize{20, 12};
+        const SceneFile file(test_scene());
+        const auto scene = load_scene(file.path(), overrides);
+        for (int threads : {1, 2}) {
+            const RenderResult result = render_with_threads(*scene, threads, options_for(*scene, 3));
+            EXPECT_EQ(result.completed_spp, spp);
+            EXPECT_FALSE(result.partial);
+            // Passes of 1, 1, 2, 4, ... samples, the last one cut to the budget.
+            int passes = 0;
+            for (int done = 0; done < spp; done += std::min(spp - done, std::max(1, done))) ++passes;
+            EXPECT_EQ(result.passes, passes) << spp;
+            const PixelBounds& crop = scene->film.crop;
+            for (int y = crop.y0; y < crop.y1; ++y)
+                for (int x = crop.x0; x < crop.x1; ++x) ASSERT_EQ(result.film->sample_count(x, y), std::uint32_t(spp));
+            ImageBuffer image = result.film->resolve();
+            const int count = channel(image, "sampleCount");
+            for (int y = 0; y < image.height; ++y)
+                for (int x = 0; x < image.width; ++x) ASSERT_EQ(image.pixel(x, y)[count], float(spp));
+        }
+    }
+}
+
+TEST(TileRenderer, CancellingFromTheProgressCallbackStopsMidPass) {
+    SceneOverrides overrides;
+    overrides.spp = 64;
+    overrides.resolution = RasterSize{12, 10};
+    const SceneFile file(test_scene("", R"({"type": "test_wait_for_cancel"})"));
+    const auto scene = load_scene(file.path(), overrides);
+    const std::int64_t pixels = scene->film.crop.area();
+    for (int threads : {1, 2}) {
+        g_cancel = false;
+        g_free_calls = 2 * pixels;  // passes 1 and 2 (one sample each) run freely; pass 3 waits
+        RenderOptions options = options_for(*scene, 2);
+        options.cancel = &g_cancel;
+        std::atomic<int> calls{0};
+        options.on_progress = [&](const RenderProgress& progress) {
+            ++calls;
+            EXPECT_GE(progress.fraction, 0.0);
+            EXPECT_LE(progress.fraction, 1.0);
+            g_cancel = true;
+        };
+        const auto start = std::chrono::steady_clock::now();
+        const RenderResult result = render_with_threads(*scene, threads, options);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_GE(calls.load(), 1);
+        EXPECT_TRUE(result.cancelled);
+        EXPECT_TRUE(result.partial);
+        EXPECT_EQ(result.completed_spp, 2);
+        EXPECT_EQ(result.passes, 3);
+        EXPECT_LT(seconds, 1.5);
+        // Every pixel has the completed samples; the tiles that were running when the flag was raised finished
+        // their share of the interrupted pass (2 more), the rest were skipped.
+        int finished = 0, skipped = 0;
+        const PixelBounds& crop = scene->film.crop;
+        for (int y = crop.y0; y < crop.y1; ++y)
+            for (int x = crop.x0; x < crop.x1; ++x) {
+                const std::uint32_t n = result.film->sample_count(x, y);
+                ASSERT_TRUE(n == 2 || n == 4) << n;
+                (n == 4 ? finished : skipped)++;
+            }
+        EXPECT_GE(finished, 1);
+        EXPECT_LE(finished, 4 * threads);  // at most one 2x2 tile per thread was running
+        EXPECT_GE(skipped, 1);
+    }
+}
+
+TEST(TileRenderer, CancelBeforeTheStartRendersNothing) {
+    SceneOverrides overrides;
+    overrides.resolution = RasterSize{8, 8};
+    const SceneFile file(test_scene());
+    const auto scene = load_scene(file.path(), overrides);
+    std::atomic<bool> cancel{true};
+    RenderOptions options = options_for(*scene, 4);
+    options.cancel = &cancel;
+    const RenderResult result = render_with_threads(*scene, 2, options);
+    EXPECT_TRUE(result.cancelled);
+    EXPECT_FALSE(result.partial);
+    EXPECT_EQ(result.completed_spp, 0);
+    EXPECT_EQ(result.passes, 0);
+    EXPECT_EQ(result.film->sample_count(3, 3), 0u);
+}
+
+TEST(TileRenderer, TimeBudgetStopsEarlyAfterWholePasses) {
+    SceneOverrides overrides;
+    overrides.spp = 1 << 24;
+    overrides.resolution = RasterSize{12, 10};
+    const SceneFile file(test_scene());
+    const auto scene = load_scene(file.path(), overrides);
+    RenderOptions options = options_for(*scene, 4);
+    const double budget = 0.3;
+    options.time_budget_seconds = budget;
+    std::vector<RenderProgress> reports;
+    std::mutex mutex;
+    options.on_progress = [&](const RenderProgress& p) {
+        std::lock_guard lock(mutex);
+        reports.push_back(p);
+    };
+    const RenderResult result = render_with_threads(*scene, 2, options);
+    EXPECT_FALSE(result.cancelled);
+    EXPECT_FALSE(result.partial);
+    EXPECT_GT(result.completed_spp, 1);
+    EXPECT_LT(result.completed_spp, 1 << 24);
+    EXPECT_GT(result.seconds, 0.5 * budget);
+    EXPECT_LT(result.seconds, budget + 0.5);
+    const PixelBounds& crop = scene->film.crop;
+    for (int y = crop.y0; y < crop.y1; ++y)
+        for (int x = crop.x0; x < crop.x1; ++x)
+            ASSERT_EQ(result.film->sample_count(x, y), std::uint32_t(result.completed_spp));
+    std::lock_guard lock(mutex);
+    ASSERT_FALSE(reports.empty());
+    for (const RenderProgress& p : reports) {
+        EXPECT_GE(p.fraction, 0.0);
+        EXPECT_LE(p.fraction, 1.0);
+        EXPECT_GE(p.elapsed_seconds, 0.0);
+    }
+}
+
+TEST(TileRenderer, HugeTimeBudgetIsNoProblem) {
+    SceneOverrides overrides;
+    overrides.spp = 6;
+    overrides.resolution = RasterSize{8, 6};
+    const SceneFile file(test_scene());
+    const auto scene = load_scene(file.path(), overrides);
+    RenderOptions options = options_for(*scene, 4);
+    options.time_budget_seconds = 1e30;  // "fits" would overflow an int
+    const RenderResult result = render_with_threads(*scene, 2, options);
+    EXPECT_EQ(result.completed_spp, 6);
+    EXPECT_EQ(result.film->sample_count(4, 3), 6u);
+}
+
+TEST(TileRenderer, NonFiniteRadianceIsCountedAndDropped) {
+    SceneOverrides overrides;
+    overrides.resolution = RasterSize{16, 12};
+    overrides.spp = 4;
+    const SceneFile file(test_scene("", R"({"type": "test_bad_values"})"));
+    const auto scene = load_scene(file.path(), overrides);
+    const std::uint64_t before = counters::totals().nan_samples;
+    g_bad_samples = 0;
+    const RenderResult result = render_with_threads(*scene, 2, options_for(*scene, 5));
+    const std::uint64_t bad = g_bad_samples.load();
+    EXPECT_GT(bad, 0u);
+    EXPECT_EQ(counters::totals().nan_samples - before, bad);
+    ImageBuffer image = result.film->resolve();
+    const std::size_t stride = image.channels.size();
+    int clean = 0, poisoned = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float* p = image.pixel(x, y);
+            for (std::size_t c = 0; c < stride; ++c)
+                if (image.channels[c] != "variance.R" && image.channels[c] != "variance.G" &&
+                    image.channels[c] != "variance.B" && image.channels[c] != "Z")
+                    ASSERT_TRUE(std::isfinite(p[c])) << image.channels[c] << " at " << x << ", " << y;
+            ASSERT_TRUE(std::isfinite(p[channel(image, "variance.R")]));
+            // Left half: every sample was 1. Right half: every sample was dropped to black.
+            if (p[0] == 1.0f && p[1] == 1.0f && p[2] == 1.0f) ++clean;
+            if (p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f) ++poisoned;
+        }
+    EXPECT_GE(clean, image.width * image.height / 3);
+    EXPECT_GE(poisoned, image.width * image.height / 3);
+}
+
+TEST(TileRenderer, DepthAovIsTheViewDepthOfTheFirstHit) {
+    // A camera looking straight down -z at a large quad in the plane z = 0 from z = 4: depth 4 everywhere.
+    const std::string json = R"({"isotrace": 1,
+  "film": {"resolution": [16, 12], "spp": 4, "aovs": ["depth", "position", "normal", "object_id"]},
+  "camera": {"type": "perspective", "fov": 60, "look_at": {"eye": [0.5, 0.25, 4], "target": [0.5, 0.25, 0]}},
+  "integrator": {"type": "preview", "ambient": 0, "background": 0},
+  "materials": {"m": {"type": "diffuse"}},
+  "objects": [
+    {"material": "m", "shape": {"type": "mesh", "positions": [[-2, -2, 0], [1, -2, 0], [1, 2, 0], [-2, 2, 0]],
+     "triangles": [[0, 1, 2], [0, 2, 3]]}}]})";
+    const SceneFile file(json);
+    const auto scene = load_scene(file.path());
+    ImageBuffer image = render_with_threads(*scene, 2, options_for(*scene, 8)).film->resolve();
+    const int z = channel(image, "Z"), pz = channel(image, "P.Z"), nz = channel(image, "N.Z"), a = channel(image, "A");
+    int hits = 0, misses = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float* p = image.pixel(x, y);
+            if (p[a] == 1.0f) {
+                ++hits;
+                EXPECT_NEAR(p[z], 4.0f, 1e-5f) << x << ", " << y;
+                EXPECT_NEAR(p[pz], 0.0f, 1e-6f);
+                EXPECT_EQ(p[nz], 1.0f);
+                EXPECT_EQ(p[channel(image, "objectId")], 0.0f);
+            } else if (p[a] == 0.0f) {
+                ++misses;
+                EXPECT_EQ(p[z], std::numeric_limits<float>::infinity());
+                EXPECT_EQ(p[channel(image, "objectId")], -1.0f);
+            }
+        }
+    EXPECT_GT(hits, 50);
+    EXPECT_GT(misses, 10);  // the quad ends at x = 1, right of the image centre
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cmath>
 
 #include "renderer/plugin/light.h"
@@ -15,20 +16,22 @@ namespace {
 constexpr int kSceneFormatVersion = 1;
 constexpr int kMaxResolution = 1 << 16;
 
-const JsonValue& empty_object() {
-    static const JsonValue value = [] {
-        JsonValue v;
-        v.kind = JsonValue::Kind::Object;
-        return v;
-    }();
-    return value;
-}
+// Stand-ins for optional sections the file leaves out, so their plugins read defaults through the same
+// code. Each sits at its parent's position, so an error about a default names a real place in the file.
+class DefaultSections {
+public:
+    // parent[key] if present, else an empty object located at `parent`.
+    SceneNode object_or_defaults(const SceneNode& parent, const std::string& key) {
+        if (auto child = parent.optional_object(key)) return *child;
+        JsonValue& stand_in = stand_ins_.emplace_back();
+        stand_in.kind = JsonValue::Kind::Object;
+        stand_in.location = parent.json().location;
+        return SceneNode(stand_in, parent.child_path(key), parent.shared_context());
+    }
 
-// node[key] if present, else an empty object standing in for "all defaults" (errors then point at `parent`).
-SceneNode object_or_defaults(const SceneNode& parent, const std::string& key) {
-    if (auto child = parent.optional_object(key)) return *child;
-    return SceneNode(empty_object(), parent.child_path(key), std::make_shared<SceneFileContext>(parent.context()));
-}
+private:
+    std::deque<JsonValue> stand_ins_;  // deque: references stay valid as it grows
+};
 
 // First pixel at or after `fraction` of `size` pixels. A product within rounding error of a whole number is
 // that number: 100 * 0.55 is 55.000000000000007 in doubles, and must give 55, not 56.
@@ -54,8 +57,8 @@ PixelBounds crop_window(const SceneNode& film, const RasterSize& raster) {
     return bounds;
 }
 
-void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedScene& loaded) {
-    const SceneNode film = object_or_defaults(root, "film");
+void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedScene& loaded, DefaultSections& defaults) {
+    const SceneNode film = defaults.object_or_defaults(root, "film");
     RasterSize raster{640, 480};
     if (film.has("resolution")) {
         const auto r = film.numbers("resolution", 2, NumberRange::between(1, kMaxResolution));
@@ -86,7 +89,7 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
     loaded.display = film.string_or("display", "");
     loaded.view = film.string_or("view", "");
 
-    const SceneNode filter = object_or_defaults(film, "filter");
+    const SceneNode filter = defaults.object_or_defaults(film, "filter");
     loaded.filter_type = filter.string_or("type", "gaussian");
     loaded.filter = pixel_filter_registry().create(filter, "gaussian");
     film.finish();
@@ -144,6 +147,12 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     context->directory = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
     SceneNode root(document, "", context);
     if (!document.is_object()) root.fail("a scene file must contain a JSON object");
+    // Reject misspelt sections before anything slow (mesh loading) happens.
+    for (const char* key : {"isotrace", "description", "colour", "film", "camera", "sampler", "integrator", "materials",
+                            "lights", "objects"})
+        root.optional_value(key);
+    root.finish();
+    DefaultSections defaults;
 
     const int version = root.integer("isotrace");
     if (version != kSceneFormatVersion)
@@ -151,7 +160,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
                                      std::to_string(kSceneFormatVersion) + ")");
     loaded->description = root.string_or("description", "");
 
-    const SceneNode colour = object_or_defaults(root, "colour");
+    const SceneNode colour = defaults.object_or_defaults(root, "colour");
     const std::string working_space = colour.string_or("working_space", "ACEScg");
     try {
         loaded->colours = std::make_unique<ColourSystem>("", working_space);
@@ -161,24 +170,23 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     colour.finish();
     context->colours = loaded->colours.get();
 
-    load_film(root, overrides, *loaded);
+    load_film(root, overrides, *loaded, defaults);
 
     const SceneNode camera = root.object("camera");
     loaded->camera_type = camera.string_or("type", "");
     loaded->camera = camera_registry().create(camera, loaded->film.raster);
 
-    const SceneNode sampler = object_or_defaults(root, "sampler");
+    const SceneNode sampler = defaults.object_or_defaults(root, "sampler");
     loaded->seed = overrides.seed.value_or(sampler.unsigned_or("seed", 0));
     loaded->sampler_type = sampler.string_or("type", "sobol");
     loaded->sampler = sampler_registry().create(sampler, loaded->seed, "sobol");
 
-    const SceneNode integrator = object_or_defaults(root, "integrator");
+    const SceneNode integrator = defaults.object_or_defaults(root, "integrator");
     loaded->integrator_type = integrator.string_or("type", "preview");
     loaded->integrator = integrator_registry().create(integrator, "preview");
 
     loaded->scene = std::make_unique<RenderScene>();
     load_content(root, *loaded->scene);
-    root.finish();
     loaded->parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     loaded->scene->commit();

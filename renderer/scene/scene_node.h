@@ -50,6 +50,7 @@ public:
     const JsonValue& json() const { return *value_; }
     const std::string& path() const { return path_; }
     const SceneFileContext& context() const { return *context_; }
+    const std::shared_ptr<const SceneFileContext>& shared_context() const { return context_; }
 
     bool has(const std::string& key) const;
 
