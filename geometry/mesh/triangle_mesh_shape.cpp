@@ -110,7 +110,7 @@ TriangleMeshData parse_inline_mesh(const SceneNode& node) {
     try {
         mesh.validate(node.context().file);
     } catch (const InputError& error) {
-        node.fail(error.what());
+        node.fail((error.field().empty() ? "" : error.field() + ": ") + error.problem());
     }
     return mesh;
 }

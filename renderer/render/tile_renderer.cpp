@@ -27,9 +27,13 @@ std::vector<PixelBounds> make_tiles(const PixelBounds& area, int tile_size) {
     return tiles;
 }
 
-// Takes samples [first, last) of every pixel of `tile`, in sample order per pixel.
-void render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile, int first, int last) {
+// Takes samples [first, last) of every pixel of `tile`, in sample order per pixel. Checks for cancellation
+// before each row (a tile at high spp may take seconds); returns false if it stopped early.
+template <class CancelCheck>
+bool render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile, int first, int last,
+                 const CancelCheck& cancelled) {
     for (int y = tile.y0; y < tile.y1; ++y) {
+        if (cancelled()) return false;
         for (int x = tile.x0; x < tile.x1; ++x) {
             for (int s = first; s < last; ++s) {
                 SampleStream samples(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), std::uint32_t(s)});
@@ -50,6 +54,7 @@ void render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile,
             }
         }
     }
+    return true;
 }
 
 // Reports progress from its own thread while the render runs.
@@ -129,11 +134,10 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
             [&](const tbb::blocked_range<std::size_t>& range) {
                 enable_flush_to_zero();
                 for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                    if (cancelled()) {
+                    if (!render_tile(loaded, *result.film, tiles[t], first, last, cancelled)) {
                         skipped_tile = true;
                         continue;
                     }
-                    render_tile(loaded, *result.film, tiles[t], first, last);
                     pixel_samples_done += tiles[t].area() * pass_spp;
                 }
             },
