@@ -1,1 +1,136 @@
-// placeholder: tests are being written
+// RenderScene as a whole: mapping hits back to objects when baked and instanced objects mix, build statistics,
+// occlusion agreeing with intersection, and secondary rays leaving a surface without re-hitting it.
+#include "renderer/scene/render_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "geometry/mesh/triangle_mesh_shape.h"
+#include "geometry/sphere/sphere_shape.h"
+
+namespace isotrace {
+namespace {
+
+Ray ray_between(const Vec3f& origin, const Vec3f& direction) {
+    Ray ray;
+    ray.origin = origin;
+    ray.direction = direction;
+    return ray;
+}
+
+std::unique_ptr<Shape> unit_sphere() { return std::make_unique<SphereShape>(std::vector<Sphere>{{{0, 0, 0}, 1}}); }
+
+std::unique_ptr<Shape> floor_quad() {
+    TriangleMeshData mesh;
+    mesh.positions = {{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}};
+    mesh.triangles = {{{0, 2, 1}}, {{0, 3, 2}}};
+    return std::make_unique<TriangleMeshShape>(std::move(mesh));
+}
+
+SceneObject make_object(const std::string& name, std::unique_ptr<Shape> shape, const Transform& to_world,
+                        const Material* material = nullptr) {
+    SceneObject object;
+    object.name = name;
+    object.shape = std::move(shape);
+    object.to_world = to_world;
+    object.material = material;
+    return object;
+}
+
+// Objects 0 (baked sphere), 1 (instanced ellipsoid), 2 (mesh), 3 (baked sphere) in one scene.
+std::unique_ptr<RenderScene> mixed_scene() {
+    auto scene = std::make_unique<RenderScene>();
+    scene->add_object(make_object("left", unit_sphere(), Transform::translate({-3, 1, 0})));
+    scene->add_object(make_object("squashed", unit_sphere(),
+                                  Transform::translate({0, 1, 0}) * Transform::scale({1, 0.5, 1})));
+    scene->add_object(make_object("floor", floor_quad(), Transform()));
+    scene->add_object(make_object("right", unit_sphere(), Transform::translate({3, 1, 0}) * Transform::scale({0.5, 0.5, 0.5})));
+    scene->commit();
+    return scene;
+}
+
+TEST(RenderScene, HitsNameTheirObjectWhetherBakedOrInstanced) {
+    const auto scene = mixed_scene();
+    const Vec3f down(0, -1, 0);
+    const struct {
+        float x;
+        std::uint32_t object;
+        float t;
+    } cases[] = {{-3, 0, 8}, {0, 1, 8.5f}, {3, 3, 8.5f}, {1.5f, 2, 10}};
+    for (const auto& c : cases) {
+        const auto hit = scene->intersect(ray_between({c.x, 10, 0}, down), RayKind::Camera);
+        ASSERT_TRUE(hit) << c.x;
+        EXPECT_EQ(hit->object_index, c.object) << c.x;
+        EXPECT_NEAR(hit->t, c.t, 1e-5) << c.x;
+        EXPECT_NEAR(hit->geometric_normal.y, 1.0f, 1e-5) << c.x;  // tops of spheres, and the floor's front
+    }
+}
+
+TEST(RenderScene, BuildStatisticsCountObjectsPrimitivesAndInstances) {
+    const auto scene = mixed_scene();
+    const BuildStatistics& stats = scene->build_statistics();
+    EXPECT_EQ(stats.objects, 4u);
+    EXPECT_EQ(stats.instanced_objects, 1u);  // only the non-uniformly scaled sphere
+    EXPECT_EQ(stats.primitives_by_type.at("sphere"), 3u);
+    EXPECT_EQ(stats.primitives_by_type.at("triangle_mesh"), 2u);
+    EXPECT_GE(stats.seconds, 0.0);
+    const Bounds3f bounds = scene->bounds();
+    EXPECT_NEAR(bounds.lower.x, -5, 1e-5);
+    EXPECT_NEAR(bounds.upper.x, 5, 1e-5);
+    EXPECT_NEAR(bounds.upper.y, 2, 1e-5);
+}
+
+TEST(RenderScene, MaterialsAreFoundByName) {
+    RenderScene scene;
+    class Grey final : public Material {
+        Rgb albedo(const SurfaceHit&) const override { return Rgb(0.5f); }
+    };
+    const Material* grey = scene.add_material("grey", std::make_unique<Grey>());
+    EXPECT_EQ(scene.find_material("grey"), grey);
+    EXPECT_EQ(scene.find_material("gray"), nullptr);
+    EXPECT_EQ(scene.material_names(), std::vector<std::string>{"grey"});
+    scene.add_object(make_object("ball", unit_sphere(), Transform(), grey));
+    scene.commit();
+    EXPECT_EQ(scene.intersect(ray_between({0, 0, 5}, {0, 0, -1}), RayKind::Camera)->material, grey);
+}
+
+TEST(RenderScene, OcclusionAgreesWithIntersection) {
+    const auto scene = mixed_scene();
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> coordinate(-6, 6);
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3f origin(coordinate(random), 4, coordinate(random));
+        const Vec3f target(coordinate(random), -1, coordinate(random));
+        Ray ray = ray_between(origin, target - origin);
+        ray.t_far = 1.0f;
+        EXPECT_EQ(scene->occluded(ray), scene->intersect(ray, RayKind::Shadow).has_value()) << i;
+    }
+}
+
+TEST(RenderScene, SpawnedRaysDoNotRehitTheirOwnSurface) {
+    // Rays leave points of a large, offset sphere in random directions of the outer hemisphere, including
+    // grazing ones; none may hit the sphere again (a convex surface cannot be re-hit from outside).
+    auto scene = std::make_unique<RenderScene>();
+    scene->add_object(make_object("big", std::make_unique<SphereShape>(std::vector<Sphere>{{{100, 50, -30}, 20}}),
+                                  Transform()));
+    scene->commit();
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> unit(-1, 1);
+    int tested = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Vec3f towards = normalize(Vec3f(unit(random), unit(random), unit(random)));
+        const auto hit = scene->intersect(ray_between(Vec3f(100, 50, -30) + towards * 60.0f, -towards), RayKind::Camera);
+        ASSERT_TRUE(hit);
+        Vec3f direction = normalize(Vec3f(unit(random), unit(random), unit(random)));
+        if (dot(direction, hit->geometric_normal) < 0) direction = -direction;
+        Ray leaving = ray_between(hit->spawn_origin(direction), direction);
+        EXPECT_FALSE(scene->intersect(leaving, RayKind::Secondary)) << i;
+        ++tested;
+    }
+    EXPECT_EQ(tested, 4000);
+}
+
+}  // namespace
+}  // namespace isotrace
