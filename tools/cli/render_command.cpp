@@ -3,6 +3,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 
@@ -94,6 +95,15 @@ void write_text_atomically(const std::string& path, const std::string& text) {
     });
 }
 
+// Rejects an output path whose directory does not exist before any work is done (it would otherwise fail only
+// after the render, with exit code 1).
+void check_output_directory(const std::string& path, const std::string& option) {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code error;
+    if (!parent.empty() && !std::filesystem::is_directory(parent, error))
+        throw InputError({}, option, "the directory \"" + parent.string() + "\" of \"" + path + "\" does not exist");
+}
+
 int run_render(const RenderArguments& args) {
     const bool show_progress = !args.quiet && stderr_is_terminal();
     SceneOverrides overrides;
@@ -101,7 +111,11 @@ int run_render(const RenderArguments& args) {
     overrides.seed = args.seed;
     if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution);
     if (!args.aovs.empty()) overrides.extra_aovs = parse_aov_list(args.aovs, "--aov");
-    for (const std::string& output : args.outputs) image_kind_for(output);  // reject bad names before rendering
+    for (const std::string& output : args.outputs) {  // reject bad names before rendering
+        image_kind_for(output);
+        check_output_directory(output, "--output");
+    }
+    if (!args.stats_json.empty()) check_output_directory(args.stats_json, "--stats-json");
 
     const int threads = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));

@@ -1,0 +1,363 @@
+#!/usr/bin/env bash
+# End-to-end tests of the isotrace command line. CTest runs one case per test:
+#   cli_test.sh <isotrace binary> <source dir> <case>
+# Each case works in its own temporary directory, removed afterwards. Renders are tiny (64x64 or smaller).
+set -euo pipefail
+
+if (($# != 3)); then
+  echo "usage: $0 <isotrace binary> <source dir> <case>" >&2
+  exit 64
+fi
+cli=$1
+source_dir=$2
+case_name=$3
+cd "$source_dir"
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/isotrace-cli-test.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+cornell=scenes/cornell_box.json
+
+# ---- helpers ---------------------------------------------------------------------------------------------
+
+fail() {
+  echo "FAIL [$case_name]: $*" >&2
+  exit 1
+}
+
+# run <stdout file> <stderr file> <command...>: runs the command, sets $status, never fails the script.
+run() {
+  local out=$1 err=$2
+  shift 2
+  echo "+ $*" >&2
+  status=0
+  "$@" >"$out" 2>"$err" || status=$?
+}
+
+show_output() {
+  echo "--- stdout:" >&2
+  cat "$work/stdout" >&2 || true
+  echo "--- stderr:" >&2
+  cat "$work/stderr" >&2 || true
+}
+
+# cli_expect <exit code> <isotrace arguments...>: runs isotrace, captures $work/stdout and $work/stderr.
+cli_expect() {
+  local expected=$1
+  shift
+  run "$work/stdout" "$work/stderr" "$cli" "$@"
+  if ((status != expected)); then
+    show_output
+    fail "isotrace $* exited with $status, expected $expected"
+  fi
+}
+
+# expect_in <file> <fixed string> [what]: the file contains the string.
+expect_in() {
+  if ! grep -qF -- "$2" "$1"; then
+    echo "--- $1:" >&2
+    cat "$1" >&2
+    fail "${3:-$(basename "$1")} does not contain \"$2\""
+  fi
+}
+
+expect_no_file() {
+  [[ ! -e "$1" ]] || fail "$1 exists but should not"
+}
+
+# Fails if a directory holds a leftover temporary output (".<name>.partial-<pid>.<ext>").
+expect_no_partial_files() {
+  local leftovers
+  leftovers=$(find "$1" -name '*.partial*' -print)
+  [[ -z "$leftovers" ]] || fail "leftover temporary files: $leftovers"
+}
+
+render_small() {  # render_small <extra arguments...>: the Cornell box at 64x64, 8 spp.
+  cli_expect 0 render "$cornell" --res 64x64 --spp 8 --quiet "$@"
+}
+
+exr_info() {  # exr_info <exr> <output file>: every attribute and channel name of the image.
+  iinfo -v "$1" >"$2" || fail "iinfo -v $1 failed"
+}
+
+# A small valid scene; the malformed-scene cases change one line of it. Line numbers matter: keep the layout.
+write_base_scene() {  # write_base_scene <path>
+  cat >"$1" <<'JSON'
+{
+  "isotrace": 1,
+  "film": { "resolution": [16, 16], "spp": 1 },
+  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -5], "target": [0, 0, 0], "up": [0, 1, 0] } },
+  "materials": { "grey": { "type": "diffuse", "reflectance": { "rgb": [0.5, 0.5, 0.5], "space": "lin_rec709" } } },
+  "lights": [ { "type": "point", "position": [0, 3, -3], "intensity": { "rgb": [10, 10, 10], "space": "lin_rec709" } } ],
+  "objects": [
+    {
+      "material": "grey",
+      "shape": {
+        "type": "sphere",
+        "radius": 1
+      }
+    }
+  ]
+}
+JSON
+}
+
+# bad_scene <line number> <replacement line or "" to keep> <expected line> <expected JSON path> [<expected text>]
+# Writes the base scene with one line replaced, renders it, and checks exit code 2, "scene.json:LINE:" and the
+# JSON path on stderr, and that neither the output nor a temporary file was left behind.
+bad_scene() {
+  local line=$1 replacement=$2 expected_line=$3 path=$4 text=${5:-}
+  local dir="$work/scene"
+  mkdir -p "$dir"
+  write_base_scene "$dir/base.json"
+  awk -v n="$line" -v r="$replacement" 'NR == n && r != "" { print r; next } { print }' "$dir/base.json" \
+    >"$dir/scene.json"
+  rm "$dir/base.json"
+  check_bad_scene "$dir" "$expected_line" "$path" "$text"
+}
+
+check_bad_scene() {  # check_bad_scene <dir with scene.json> <expected line> <expected JSON path> [<expected text>]
+  local dir=$1 expected_line=$2 path=$3 text=${4:-}
+  cli_expect 2 render "$dir/scene.json" -o "$dir/out.exr" -o "$dir/out.png" --quiet
+  sed 's/^/  stderr: /' "$work/stderr" >&2
+  expect_in "$work/stderr" "$dir/scene.json:$expected_line:" stderr
+  [[ -z "$path" ]] || expect_in "$work/stderr" "$path" stderr
+  [[ -z "$text" ]] || expect_in "$work/stderr" "$text" stderr
+  expect_no_file "$dir/out.exr"
+  expect_no_file "$dir/out.png"
+  expect_no_partial_files "$dir"
+}
+
+# ---- cases -----------------------------------------------------------------------------------------------
+
+case_version() {
+  cli_expect 0 --version
+  expect_in "$work/stdout" "isotrace 0.1.0" stdout
+}
+
+case_help() {
+  cli_expect 0 --help
+  for text in --help --version render info; do expect_in "$work/stdout" "$text" "--help output"; done
+}
+
+case_render_help() {
+  cli_expect 0 render --help
+  for option in --output --spp --res --threads --seed --aov --stats-json --time --tile-size --quiet; do
+    expect_in "$work/stdout" "$option" "render --help output"
+  done
+}
+
+case_info_help() {
+  cli_expect 0 info --help
+  expect_in "$work/stdout" "--plugins" "info --help output"
+}
+
+case_no_subcommand() {
+  cli_expect 2
+  [[ -s "$work/stderr" || -s "$work/stdout" ]] || fail "no usage message"
+}
+
+case_determinism_threads() {
+  render_small --threads 1 -o "$work/a.exr"
+  render_small --threads 2 -o "$work/b.exr"
+  run "$work/stdout" "$work/stderr" idiff -fail 0 -warn 0 "$work/a.exr" "$work/b.exr"
+  ((status == 0)) || { show_output; fail "images rendered with 1 and 2 threads differ"; }
+}
+
+case_determinism_tile_size() {
+  render_small --threads 2 --tile-size 32 -o "$work/a.exr"
+  render_small --threads 2 --tile-size 7 -o "$work/b.exr"
+  run "$work/stdout" "$work/stderr" idiff -fail 0 -warn 0 "$work/a.exr" "$work/b.exr"
+  ((status == 0)) || { show_output; fail "images rendered with tile sizes 32 and 7 differ"; }
+}
+
+case_stats_json() {
+  render_small --threads 2 -o "$work/a.exr" --stats-json "$work/s.json"
+  python3 - "$work/s.json" <<'PY' || fail "statistics JSON is incomplete"
+import json, sys
+with open(sys.argv[1]) as f:
+    stats = json.load(f)
+problems = []
+for key in ["rays_total", "render_seconds", "build_seconds", "mrays_per_second", "threads", "spp",
+            "nan_samples", "geometry"]:
+    if key not in stats:
+        problems.append("missing key " + key)
+if stats.get("threads") != 2: problems.append("threads is %r, expected 2" % stats.get("threads"))
+if stats.get("spp") != 8: problems.append("spp is %r, expected 8" % stats.get("spp"))
+if not stats.get("rays_total", 0) > 0: problems.append("rays_total is not positive")
+geometry = stats.get("geometry")
+if not isinstance(geometry, dict) or not geometry:
+    problems.append("geometry is not a non-empty object")
+else:
+    for name, row in geometry.items():
+        for key in ["intersection_tests", "closest_hits"]:
+            if key not in row: problems.append("geometry.%s has no %s" % (name, key))
+for p in problems: print("stats:", p, file=sys.stderr)
+if problems:
+    print(json.dumps(stats, indent=2), file=sys.stderr)
+    sys.exit(1)
+PY
+}
+
+case_exr_metadata() {
+  render_small -o "$work/a.exr" --seed 7
+  exr_info "$work/a.exr" "$work/info"
+  for key in isotrace:spp isotrace:seed isotrace:integrator isotrace:version isotrace:render_seconds \
+    isotrace:rays isotrace:scene isotrace:partial; do
+    expect_in "$work/info" "$key" "EXR metadata"
+  done
+  grep -Eq 'isotrace:spp: *8$' "$work/info" || fail "isotrace:spp is not 8"
+  grep -Eq 'isotrace:seed: *"?7"?$' "$work/info" || fail "isotrace:seed is not 7"
+  grep -Eq 'isotrace:version: *"0\.1\.0"' "$work/info" || fail "isotrace:version is not 0.1.0"
+  grep -Eq 'isotrace:partial: *0$' "$work/info" || fail "isotrace:partial is not 0"
+}
+
+case_exr_aovs() {
+  render_small -o "$work/plain.exr"
+  exr_info "$work/plain.exr" "$work/plain_info"
+  if grep -q "albedo.R" "$work/plain_info"; then fail "AOV channels written without --aov"; fi
+  render_small -o "$work/a.exr" --aov all
+  exr_info "$work/a.exr" "$work/info"
+  for channel in R G B A albedo.R albedo.G albedo.B N.X N.Y N.Z Z P.X P.Y P.Z objectId primitiveId sampleCount \
+    variance.R variance.G variance.B; do
+    grep -Eq "channel list:.*(^|[ ,])$channel([ ,(]|$)" "$work/info" ||
+      { cat "$work/info" >&2; fail "channel $channel missing with --aov all"; }
+  done
+  render_small -o "$work/d.exr" --aov depth,normal
+  exr_info "$work/d.exr" "$work/d_info"
+  grep -Eq "channel list:.*N\.X.*Z" "$work/d_info" || fail "--aov depth,normal did not add N and Z"
+  if grep -q "albedo.R" "$work/d_info"; then fail "--aov depth,normal added albedo"; fi
+}
+
+case_valid_minimal_scene() {  # the base of the malformed-scene cases renders
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/scene.json"
+  cli_expect 0 render "$work/scene/scene.json" -o "$work/scene/out.exr" -o "$work/scene/out.png" --quiet
+  [[ -s "$work/scene/out.exr" && -s "$work/scene/out.png" ]] || fail "outputs missing"
+  expect_no_partial_files "$work/scene"
+}
+
+case_bad_scene_truncated() {
+  local dir="$work/scene"
+  mkdir -p "$dir"
+  write_base_scene "$dir/base.json"
+  # Keep lines 1-11 and the start of line 12 ('        "radius"'): the document ends inside objects[0].shape.
+  { head -n 11 "$dir/base.json"; printf '        "radius"'; } >"$dir/scene.json"
+  rm "$dir/base.json"
+  check_bad_scene "$dir" 12 ""
+}
+
+case_bad_scene_wrong_type() {
+  bad_scene 12 '        "radius": "big"' 12 "objects[0].shape.radius"
+}
+
+case_bad_scene_negative_radius() {
+  bad_scene 12 '        "radius": -1' 12 "objects[0].shape.radius"
+}
+
+case_bad_scene_zero_resolution() {
+  bad_scene 3 '  "film": { "resolution": [0, 16], "spp": 1 },' 3 "film.resolution"
+}
+
+case_bad_scene_unknown_key() {
+  bad_scene 12 '        "radius": 1, "raduis": 2' 12 "objects[0].shape.raduis"
+}
+
+case_bad_scene_missing_mesh() {
+  local dir="$work/scene"
+  mkdir -p "$dir"
+  write_base_scene "$dir/base.json"
+  awk 'NR == 11 { print "        \"type\": \"mesh\","; next }
+       NR == 12 { print "        \"file\": \"no_such_mesh.obj\""; next } { print }' "$dir/base.json" >"$dir/scene.json"
+  rm "$dir/base.json"
+  check_bad_scene "$dir" 12 "objects[0].shape.file" "no_such_mesh.obj"
+}
+
+case_bad_scene_unknown_shape() {
+  bad_scene 11 '        "type": "sphear",' 11 "objects[0].shape.type" "sphear"
+}
+
+case_info_scene() {
+  cli_expect 0 info "$cornell"
+  grep -Eq '^objects +[0-9]+' "$work/stdout" || { show_output; fail "info does not print the object count"; }
+}
+
+case_info_plugins() {
+  cli_expect 0 info --plugins
+  grep -Eq '^ +sphere ' "$work/stdout" || { show_output; fail "info --plugins does not list sphere"; }
+  grep -Eq '^ +mesh ' "$work/stdout" || { show_output; fail "info --plugins does not list mesh"; }
+}
+
+case_bad_resolution() {
+  cli_expect 2 render "$cornell" --res 0x5 -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "--res" stderr
+  expect_no_file "$work/a.exr"
+  cli_expect 2 render "$cornell" --res 64 -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "WIDTHxHEIGHT" stderr
+  expect_no_file "$work/a.exr"
+}
+
+case_bad_aov() {
+  cli_expect 2 render "$cornell" --res 16x16 --aov bogus -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" 'unknown AOV "bogus"' stderr
+  expect_no_file "$work/a.exr"
+}
+
+case_bad_output_format() {
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 -o "$work/out.exr" -o "$work/out.bmp" --quiet
+  expect_in "$work/stderr" "out.bmp" stderr
+  expect_no_file "$work/out.bmp"
+  expect_no_file "$work/out.exr"
+  expect_no_partial_files "$work"
+}
+
+case_missing_output_directory() {  # rejected before rendering, as bad input
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 -o "$work/no_such_dir/a.exr" --quiet
+  expect_in "$work/stderr" "no_such_dir" stderr
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 -o "$work/a.exr" --stats-json "$work/no_such_dir/s.json" --quiet
+  expect_in "$work/stderr" "--stats-json" stderr
+  expect_no_file "$work/a.exr"
+}
+
+case_interrupt() {
+  local pid waited=0
+  # Without --quiet isotrace prints "... loaded in ..." just before it starts rendering (and handles SIGINT).
+  "$cli" render "$cornell" --res 64x64 --spp 100000 --threads 2 -o "$work/a.exr" >"$work/stdout" 2>"$work/stderr" &
+  pid=$!
+  until grep -q "loaded in" "$work/stderr"; do
+    kill -0 "$pid" 2>/dev/null || { show_output; fail "isotrace ended before rendering"; }
+    ((waited++ < 300)) || { kill -KILL "$pid"; fail "scene did not load within 30 s"; }
+    sleep 0.1
+  done
+  sleep 1
+  kill -INT "$pid"
+  # A render stops at the next tile; give it 20 s before calling it hung.
+  waited=0
+  while kill -0 "$pid" 2>/dev/null; do
+    ((waited++ < 200)) || { kill -KILL "$pid"; show_output; fail "isotrace did not stop within 20 s of SIGINT"; }
+    sleep 0.1
+  done
+  status=0
+  wait "$pid" || status=$?
+  ((status == 130)) || { show_output; fail "exit code $status after SIGINT, expected 130"; }
+  expect_in "$work/stderr" "interrupted" stderr
+  [[ -s "$work/a.exr" ]] || fail "no image written after SIGINT"
+  expect_no_partial_files "$work"
+  exr_info "$work/a.exr" "$work/info"
+  local spp partial
+  spp=$(sed -n 's/.*isotrace:spp: *\([0-9]*\).*/\1/p' "$work/info")
+  partial=$(sed -n 's/.*isotrace:partial: *\([0-9]*\).*/\1/p' "$work/info")
+  [[ -n "$spp" && -n "$partial" ]] || { cat "$work/info" >&2; fail "isotrace:spp or isotrace:partial missing"; }
+  echo "interrupted render: isotrace:spp $spp, isotrace:partial $partial" >&2
+  ((spp < 100000)) || fail "isotrace:spp is $spp after an interrupted render"
+  ((partial == 1 || spp > 0)) || fail "neither a partial image nor a completed pass (spp $spp, partial $partial)"
+}
+
+# ---- dispatch --------------------------------------------------------------------------------------------
+
+if [[ $(type -t "case_$case_name") != function ]]; then
+  echo "unknown case \"$case_name\"; cases:" >&2
+  declare -F | sed -n 's/^declare -f case_/  /p' >&2
+  exit 64
+fi
+"case_$case_name"
+echo "PASS [$case_name]"
