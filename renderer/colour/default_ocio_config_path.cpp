@@ -1,24 +1,36 @@
 #include "renderer/colour/default_ocio_config_path.h"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
 #include <filesystem>
 
-#if !defined(ISOTRACE_SOURCE_CONFIG_DIR) || !defined(ISOTRACE_INSTALL_CONFIG_DIR)
-#error "the build must define ISOTRACE_SOURCE_CONFIG_DIR and ISOTRACE_INSTALL_CONFIG_DIR"
+#if !defined(ISOTRACE_SOURCE_CONFIG_DIR) || !defined(ISOTRACE_LIBRARY_TO_CONFIG_DIR)
+#error "the build must define ISOTRACE_SOURCE_CONFIG_DIR and ISOTRACE_LIBRARY_TO_CONFIG_DIR"
 #endif
 
 namespace isotrace {
+namespace {
+
+// The config installed beside this library (<prefix>/lib -> <prefix>/share/isotrace/config), found from the
+// library's own location so that an installed tree works wherever it is moved.
+std::filesystem::path installed_config() {
+    Dl_info info{};
+    if (!dladdr(reinterpret_cast<void*>(&default_ocio_config_path), &info) || !info.dli_fname) return {};
+    return std::filesystem::path(info.dli_fname).parent_path() / ISOTRACE_LIBRARY_TO_CONFIG_DIR / "ocio" /
+           "isotrace.ocio";
+}
+
+}  // namespace
 
 std::string default_ocio_config_path() {
     if (const char* from_environment = std::getenv("OCIO"); from_environment && *from_environment)
         return from_environment;
-
-    const std::filesystem::path in_source_tree =
-        std::filesystem::path(ISOTRACE_SOURCE_CONFIG_DIR) / "ocio" / "isotrace.ocio";
-    std::error_code ignored;  // an unreadable source tree just means "use the installed config"
-    if (std::filesystem::is_regular_file(in_source_tree, ignored)) return in_source_tree.string();
-
-    return (std::filesystem::path(ISOTRACE_INSTALL_CONFIG_DIR) / "ocio" / "isotrace.ocio").string();
+    std::error_code ignored;  // an unreadable candidate just means "try the next one"
+    const std::filesystem::path installed = installed_config();
+    if (!installed.empty() && std::filesystem::is_regular_file(installed, ignored))
+        return installed.lexically_normal().string();
+    return (std::filesystem::path(ISOTRACE_SOURCE_CONFIG_DIR) / "ocio" / "isotrace.ocio").string();
 }
 
 }  // namespace isotrace

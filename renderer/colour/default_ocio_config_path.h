@@ -4,8 +4,9 @@
 
 namespace isotrace {
 
-// $OCIO if set and non-empty (the convention every OCIO application follows); otherwise the config
-// in the source tree when it exists (running from a build directory); otherwise the installed one.
+// $OCIO if set and non-empty (the convention every OCIO application follows); otherwise the config installed
+// beside the library (found relative to the loaded libisotrace, so installs are relocatable); otherwise the
+// config in the source tree (running from a build directory).
 std::string default_ocio_config_path();
 
 }  // namespace isotrace
