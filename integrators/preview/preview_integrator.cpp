@@ -13,6 +13,7 @@ Rgb PreviewIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene,
     const std::optional<SurfaceHit> found = scene.intersect(camera_ray, RayKind::Camera);
     if (!found) return settings_.background;
     SurfaceHit hit = *found;
+    const Rgb emitted = hit.material->emission(hit, -normalize(camera_ray.direction));
     // Two-sided shading: turn the normals towards the viewer.
     if (dot(hit.geometric_normal, camera_ray.direction) > 0) {
         hit.geometric_normal = -hit.geometric_normal;
@@ -26,7 +27,7 @@ Rgb PreviewIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene,
     primary.object_id = hit.object_index;
     primary.primitive_id = hit.primitive_id;
 
-    Rgb result = hit.material->emission(hit);
+    Rgb result = emitted;
     if (albedo.is_black()) return result;
 
     Rgb direct;

@@ -1,20 +1,32 @@
 #pragma once
-// Material: surface appearance. The preview integrator needs albedo and emission; the BSDF interface of the
-// path tracer extends this class.
+// Material: surface appearance. At a hit it provides the BSDF (allocated in the caller's scratch arena), the
+// albedo for the AOV and previews, and emitted radiance.
 #include "renderer/math/rgb.h"
+#include "renderer/math/vec3.h"
 #include "renderer/plugin/registry.h"
 
 namespace isotrace {
 
 struct SurfaceHit;
+class Bsdf;
+class ScratchArena;
 
 class Material {
 public:
     virtual ~Material() = default;
-    // Directional-hemispherical reflectance for the albedo AOV and diffuse previews.
+    // Directional-hemispherical reflectance, for the albedo AOV and diffuse previews.
     virtual Rgb albedo(const SurfaceHit& hit) const = 0;
-    // Radiance emitted towards the viewer (zero for non-emitters).
-    virtual Rgb emission(const SurfaceHit&) const { return {}; }
+    // Radiance emitted from `hit` towards `towards_viewer` (unit, pointing away from the surface).
+    virtual Rgb emission(const SurfaceHit& hit, const Vec3f& towards_viewer) const {
+        (void)hit, (void)towards_viewer;
+        return {};
+    }
+    virtual bool is_emissive() const { return false; }
+    // The scattering function at `hit`, or nullptr when the surface absorbs everything (pure emitters).
+    virtual const Bsdf* bsdf(const SurfaceHit& hit, ScratchArena& arena) const {
+        (void)hit, (void)arena;
+        return nullptr;
+    }
 };
 
 Registry<Material>& material_registry();

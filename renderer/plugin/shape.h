@@ -30,6 +30,13 @@ struct Bounds3f {
     bool empty() const { return lower.x > upper.x; }
 };
 
+// A point drawn on a shape's surface, for area lights.
+struct SurfaceSample {
+    Vec3f position;
+    Vec3f normal;        // unit geometric normal (the front / outward side)
+    float pdf_area = 0;  // density per unit area
+};
+
 class Shape {
 public:
     virtual ~Shape() = default;
@@ -47,6 +54,15 @@ public:
 
     // Creates and commits the Embree geometry (called once, after any bake).
     virtual RTCGeometry create_geometry(RTCDevice device) = 0;
+
+    // Area lights: shapes that can draw points uniformly by area over their (baked) surface say so here.
+    // Shapes that cannot (implicit surfaces) may still be emissive; they are then found by BSDF sampling only.
+    virtual bool supports_surface_sampling() const { return false; }
+    virtual SurfaceSample sample_surface(std::array<float, 2> u) const {
+        (void)u;
+        return {};
+    }
+    virtual float surface_area() const { return 0; }
 
     // Completes a hit found by Embree in this shape's space. `geometric_normal` is Embree's Ng normalised.
     virtual LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const {
