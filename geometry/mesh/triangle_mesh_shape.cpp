@@ -1,15 +1,54 @@
 #include "geometry/mesh/triangle_mesh_shape.h"
 
+#include <algorithm>
 #include <cstring>
 #include <sstream>
 #include <string>
 #include <utility>
 
 #include "geometry/mesh/mesh_file.h"
+#include "renderer/sampling/warps.h"
 
 namespace isotrace {
 
-TriangleMeshShape::TriangleMeshShape(TriangleMeshData mesh) : mesh_(std::move(mesh)) {}
+TriangleMeshShape::TriangleMeshShape(TriangleMeshData mesh) : mesh_(std::move(mesh)) { build_area_distribution(); }
+
+void TriangleMeshShape::build_area_distribution() {
+    area_distribution_.reset();
+    total_area_ = 0;
+    if (mesh_.triangles.empty()) return;
+    std::vector<float> areas;
+    areas.reserve(mesh_.triangles.size());
+    for (const auto& triangle : mesh_.triangles) {
+        const Vec3d p0(mesh_.positions[triangle[0]]);
+        const Vec3d p1(mesh_.positions[triangle[1]]);
+        const Vec3d p2(mesh_.positions[triangle[2]]);
+        const double area = 0.5 * length(cross(p1 - p0, p2 - p0));
+        areas.push_back(std::isfinite(area) ? float(area) : 0.0f);
+        total_area_ += areas.back();  // the sum of what the distribution samples, so pdf_area matches it
+    }
+    area_distribution_.emplace(areas);
+}
+
+SurfaceSample TriangleMeshShape::sample_surface(std::array<float, 2> u) const {
+    if (!(total_area_ > 0)) return {};
+    const Distribution1D::ContinuousSample pick = area_distribution_->sample_continuous(u[0]);
+    // Where u[0] fell inside the picked triangle's share of [0,1), rescaled to [0,1). Its resolution is that
+    // of u[0] divided by the triangle's probability (coarse only for meshes of millions of triangles).
+    const double within = double(pick.x) * double(area_distribution_->size()) - double(pick.bin);
+    const float u0 = std::clamp(float(within), 0.0f, 0x1.fffffep-1f);
+    const auto [b0, b1] = square_to_uniform_triangle({u0, u[1]});
+    const auto& triangle = mesh_.triangles[pick.bin];
+    const Vec3f& p0 = mesh_.positions[triangle[0]];
+    const Vec3f& p1 = mesh_.positions[triangle[1]];
+    const Vec3f& p2 = mesh_.positions[triangle[2]];
+    SurfaceSample sample;
+    sample.position = p0 * b0 + p1 * b1 + p2 * (1 - b0 - b1);
+    // (v1-v0)x(v2-v0): Embree's Ng, the counter-clockwise front that shading() reports.
+    sample.normal = Vec3f(normalize(cross(Vec3d(p1) - Vec3d(p0), Vec3d(p2) - Vec3d(p0))));
+    sample.pdf_area = float(1.0 / total_area_);
+    return sample;
+}
 
 Bounds3f TriangleMeshShape::bounds() const {
     Bounds3f b;
@@ -27,6 +66,7 @@ void TriangleMeshShape::bake(const Transform& to_world) {
         for (auto& triangle : mesh_.triangles) std::swap(triangle[1], triangle[2]);
         winding_swapped_ = !winding_swapped_;
     }
+    build_area_distribution();
 }
 
 RTCGeometry TriangleMeshShape::create_geometry(RTCDevice device) {

@@ -1,11 +1,13 @@
 #include "geometry/sphere/sphere_shape.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
 #include "geometry/sphere/sphere_intersection.h"
 #include "renderer/core/render_counters.h"
+#include "renderer/sampling/warps.h"
 
 namespace isotrace {
 namespace {
@@ -19,7 +21,35 @@ std::optional<double> nearest_root(const SphereRoots& roots, double t_near, doub
 
 }  // namespace
 
-SphereShape::SphereShape(std::vector<Sphere> spheres) : spheres_(std::move(spheres)) {}
+SphereShape::SphereShape(std::vector<Sphere> spheres) : spheres_(std::move(spheres)) { build_area_distribution(); }
+
+void SphereShape::build_area_distribution() {
+    area_distribution_.reset();
+    total_area_ = 0;
+    if (spheres_.empty()) return;
+    std::vector<float> areas;
+    areas.reserve(spheres_.size());
+    for (const Sphere& s : spheres_) {
+        const double area = 4 * std::numbers::pi * s.radius * s.radius;
+        areas.push_back(std::isfinite(area) ? float(area) : 0.0f);
+        total_area_ += areas.back();
+    }
+    area_distribution_.emplace(areas);
+}
+
+SurfaceSample SphereShape::sample_surface(std::array<float, 2> u) const {
+    if (!(total_area_ > 0)) return {};
+    const Distribution1D::ContinuousSample pick = area_distribution_->sample_continuous(u[0]);
+    const double within = double(pick.x) * double(area_distribution_->size()) - double(pick.bin);
+    const float u0 = std::clamp(float(within), 0.0f, 0x1.fffffep-1f);
+    const Sphere& s = spheres_[pick.bin];
+    const Vec3f direction = square_to_uniform_sphere({u0, u[1]});
+    SurfaceSample sample;
+    sample.position = Vec3f(s.centre + Vec3d(direction) * s.radius);
+    sample.normal = direction;
+    sample.pdf_area = float(1.0 / total_area_);
+    return sample;
+}
 
 Bounds3f SphereShape::bounds() const {
     Bounds3f b;
@@ -36,6 +66,7 @@ void SphereShape::bake(const Transform& to_world) {
         s.centre = to_world.point(s.centre);
         s.radius *= scale;
     }
+    build_area_distribution();
 }
 
 RTCGeometry SphereShape::create_geometry(RTCDevice device) {

@@ -2,9 +2,11 @@
 // Analytic spheres as one Embree user geometry (one primitive per sphere). This is the pattern every
 // implicit primitive follows: per-primitive bounds, intersect/occluded callbacks that accept a root only in
 // (t_near, t_far) and count their tests for the statistics.
+#include <optional>
 #include <vector>
 
 #include "renderer/plugin/shape.h"
+#include "renderer/sampling/distribution_1d.h"
 
 namespace isotrace {
 
@@ -26,14 +28,25 @@ public:
     RTCGeometry create_geometry(RTCDevice device) override;
     LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const override;
 
+    // Uniform by area over all spheres (for area lights): a sphere is picked in proportion to its area, u[0]
+    // is rescaled within its share, and the point is uniform on it with the outward normal. The area table is
+    // built by the constructor and again by bake(), before rendering, so sampling only reads it.
+    bool supports_surface_sampling() const override { return total_area_ > 0; }
+    SurfaceSample sample_surface(std::array<float, 2> u) const override;
+    float surface_area() const override { return float(total_area_); }
+
     const std::vector<Sphere>& spheres() const { return spheres_; }
 
 private:
+    void build_area_distribution();
+
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);
     static void occluded_callback(const RTCOccludedFunctionNArguments* args);
 
     std::vector<Sphere> spheres_;
+    std::optional<Distribution1D> area_distribution_;  // over spheres, by area
+    double total_area_ = 0;
     int counter_slot_ = 0;
 };
 

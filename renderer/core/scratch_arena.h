@@ -4,7 +4,6 @@
 #include <cstddef>
 #include <memory>
 #include <new>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -14,10 +13,10 @@ class ScratchArena {
 public:
     explicit ScratchArena(std::size_t bytes = 16 * 1024) : storage_(bytes) {}
 
-    // Objects must be trivially destructible: reset() reuses the memory without running destructors.
+    // reset() reuses the memory without running destructors: only for types whose destructor has no effect
+    // (BSDFs hold values and references, never owned resources).
     template <class T, class... Args>
     T* make(Args&&... args) {
-        static_assert(std::is_trivially_destructible_v<T>, "arena objects are never destroyed");
         std::size_t offset = (used_ + alignof(T) - 1) / alignof(T) * alignof(T);
         if (offset + sizeof(T) > storage_.size()) throw std::bad_alloc();
         used_ = offset + sizeof(T);

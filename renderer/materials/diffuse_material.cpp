@@ -1,6 +1,10 @@
-// Lambertian reflector. The reflectance may be an image texture.
+// Lambertian reflector, optionally also emitting (a glowing diffuse surface). The reflectance may be an image
+// texture.
 #include <algorithm>
 
+#include "renderer/bsdf/lambert_bsdf.h"
+#include "renderer/core/scratch_arena.h"
+#include "renderer/materials/emission_profile.h"
 #include "renderer/plugin/material.h"
 #include "renderer/textures/colour_source.h"
 
@@ -9,15 +13,24 @@ namespace {
 
 class DiffuseMaterial final : public Material {
 public:
-    explicit DiffuseMaterial(ColourSource reflectance) : reflectance_(std::move(reflectance)) {}
+    DiffuseMaterial(ColourSource reflectance, const EmissionProfile& emission)
+        : reflectance_(std::move(reflectance)), emission_(emission) {}
 
     Rgb albedo(const SurfaceHit& hit) const override {
         const Rgb r = reflectance_.evaluate(hit);  // textures may stray outside [0, 1]: keep energy conserved
         return {std::clamp(r.r, 0.0f, 1.0f), std::clamp(r.g, 0.0f, 1.0f), std::clamp(r.b, 0.0f, 1.0f)};
     }
+    Rgb emission(const SurfaceHit& hit, const Vec3f& towards_viewer) const override {
+        return emission_.towards(hit, towards_viewer);
+    }
+    bool is_emissive() const override { return emission_.emits(); }
+    const Bsdf* bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
+        return arena.make<LambertBsdf>(albedo(hit));
+    }
 
 private:
     ColourSource reflectance_;
+    EmissionProfile emission_;
 };
 
 std::unique_ptr<Material> create(const SceneNode& node) {
@@ -25,12 +38,13 @@ std::unique_ptr<Material> create(const SceneNode& node) {
     const Rgb r = reflectance.scale();
     if (reflectance.is_constant() && (r.r < 0 || r.g < 0 || r.b < 0 || r.max() > 1))
         node.fail_at("reflectance", "each reflectance component must lie in [0, 1] (energy conservation)");
-    return std::make_unique<DiffuseMaterial>(std::move(reflectance));
+    return std::make_unique<DiffuseMaterial>(std::move(reflectance),
+                                             parse_emission(node, "emission", false, "two_sided_emission"));
 }
 
 }  // namespace
 
 ISOTRACE_REGISTER_PLUGIN(material_registry, "diffuse",
-                         "Lambertian; reflectance (colour or {texture, space, scale}, default 0.5)", create)
+                         "Lambertian; reflectance (colour or {texture, space, scale}, 0.5), emission (colour, 0), two_sided_emission", create)
 
 }  // namespace isotrace

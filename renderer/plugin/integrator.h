@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "renderer/core/ray.h"
@@ -28,6 +29,8 @@ public:
     // Radiance arriving along `camera_ray` (in the working space).
     virtual Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                          PrimaryHitRecord& primary) const = 0;
+    // Settings worth recording in the image metadata ("isotrace:integrator:<key>").
+    virtual std::map<std::string, std::string> settings() const { return {}; }
 };
 
 Registry<Integrator>& integrator_registry();

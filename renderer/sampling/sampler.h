@@ -17,10 +17,14 @@ public:
 
     // Value in [0,1) for (pixel, sample index, dimension); a pure function of those and the seed.
     virtual float sample(const PixelSampleKey& key, uint32_t dimension) const = 0;
-    // Dimensions (dimension, dimension + 1) together; equal to two sample() calls, but samplers may share
-    // work between the two (dimension is even).
-    virtual std::array<float, 2> sample_2d(const PixelSampleKey& key, uint32_t dimension) const {
-        return {sample(key, dimension), sample(key, dimension + 1)};
+    // Dimensions 4 * block .. 4 * block + 3 together: equal to four sample() calls, but samplers may share
+    // work between them (the Sobol' sampler shuffles the index once per block).
+    static constexpr uint32_t kBlockDimensions = 4;
+    using Block = std::array<float, kBlockDimensions>;
+    virtual Block sample_block(const PixelSampleKey& key, uint32_t block) const {
+        Block values;
+        for (uint32_t i = 0; i < kBlockDimensions; ++i) values[i] = sample(key, block * kBlockDimensions + i);
+        return values;
     }
 
     uint64_t seed() const { return seed_; }
@@ -29,8 +33,9 @@ private:
     uint64_t seed_;
 };
 
-// Hands out consecutive dimensions for one pixel sample; the dimension counter is its only state.
-// The sampler must outlive the stream.
+// Hands out consecutive dimensions for one pixel sample. Values are fetched a block of four dimensions at a
+// time and cached; the values themselves depend only on (pixel, index, dimension, seed). The sampler must
+// outlive the stream.
 class SampleStream {
 public:
     SampleStream(const Sampler& sampler, PixelSampleKey key);
@@ -43,9 +48,13 @@ public:
     uint32_t dimension() const { return dimension_; }
 
 private:
+    float value(uint32_t dimension);
+
     const Sampler& sampler_;
     PixelSampleKey key_;
     uint32_t dimension_ = 0;
+    uint32_t cached_block_ = UINT32_MAX;
+    Sampler::Block cache_{};
 };
 
 }  // namespace isotrace

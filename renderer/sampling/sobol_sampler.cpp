@@ -23,10 +23,12 @@ float SobolSampler::sample(const PixelSampleKey& key, uint32_t dimension) const 
     return scrambled_value(block_point(key, dimension / kSobolDimensions), dimension % kSobolDimensions);
 }
 
-std::array<float, 2> SobolSampler::sample_2d(const PixelSampleKey& key, uint32_t dimension) const {
-    const BlockPoint point = block_point(key, dimension / kSobolDimensions);  // even dimension: same block
-    const uint32_t first = dimension % kSobolDimensions;
-    return {scrambled_value(point, first), scrambled_value(point, first + 1)};
+Sampler::Block SobolSampler::sample_block(const PixelSampleKey& key, uint32_t block) const {
+    static_assert(kBlockDimensions == kSobolDimensions);
+    const BlockPoint point = block_point(key, block);
+    Block values;
+    for (uint32_t d = 0; d < kSobolDimensions; ++d) values[d] = scrambled_value(point, d);
+    return values;
 }
 
 }  // namespace isotrace

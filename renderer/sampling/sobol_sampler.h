@@ -18,7 +18,7 @@ public:
     using Sampler::Sampler;
 
     float sample(const PixelSampleKey& key, uint32_t dimension) const override;
-    std::array<float, 2> sample_2d(const PixelSampleKey& key, uint32_t dimension) const override;
+    Block sample_block(const PixelSampleKey& key, uint32_t block) const override;
 
 private:
     struct BlockPoint {

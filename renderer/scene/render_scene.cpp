@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "renderer/embree/embree_device.h"
+#include "renderer/lights/area_light.h"
 
 namespace isotrace {
 namespace {
@@ -106,6 +107,7 @@ void RenderScene::commit() {
     }
     rtcCommitScene(scene_);
     check_embree("building the scene BVH");
+    build_lights();
     build_statistics_.objects = objects_.size();
     build_statistics_.embree_bytes = embree_bytes_in_use() - bytes_before;
     build_statistics_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -156,6 +158,42 @@ bool RenderScene::occluded(const Ray& ray) const {
     RTCRay query = make_embree_ray(ray);
     rtcOccluded1(scene_, &context, &query);
     return query.tfar == -std::numeric_limits<float>::infinity();
+}
+
+void RenderScene::build_lights() {
+    for (SceneObject& object : objects_) {
+        if (!object.material || !object.material->is_emissive()) continue;
+        if (object.instanced || !object.shape->supports_surface_sampling()) {
+            ++build_statistics_.unsampled_emitters;
+            continue;
+        }
+        lights_.push_back(std::make_unique<AreaLight>(*object.shape, *object.material));
+        object.area_light = lights_.back().get();
+        ++build_statistics_.area_lights;
+    }
+    const Bounds3f scene_bounds = bounds();
+    std::vector<float> powers;
+    for (const auto& light : lights_) {
+        light->preprocess(scene_bounds);
+        all_lights_.push_back(light.get());
+        if (light->is_infinite()) infinite_lights_.push_back(light.get());
+        powers.push_back(std::max(0.0f, light->power()));
+    }
+    if (powers.empty()) return;
+    light_distribution_ = std::make_unique<Distribution1D>(powers);
+    for (std::size_t i = 0; i < all_lights_.size(); ++i)
+        light_probabilities_[all_lights_[i]] = light_distribution_->probability(i);
+}
+
+LightChoice RenderScene::choose_light(float u) const {
+    if (!light_distribution_) return {};
+    const Distribution1D::DiscreteSample pick = light_distribution_->sample_discrete(u);
+    return {all_lights_[pick.index], pick.probability};
+}
+
+float RenderScene::light_probability(const Light* light) const {
+    const auto found = light_probabilities_.find(light);
+    return found == light_probabilities_.end() ? 0.0f : found->second;
 }
 
 Bounds3f RenderScene::bounds() const {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "renderer/core/ray.h"
@@ -15,6 +16,7 @@
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
 #include "renderer/plugin/shape.h"
+#include "renderer/sampling/distribution_1d.h"
 #include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
@@ -26,6 +28,7 @@ struct SceneObject {
     Transform to_world;
     bool instanced = false;  // true: shape in object space inside an Embree instance
     int counter_slot = 0;
+    const Light* area_light = nullptr;  // set when the object emits and its surface can be sampled
 };
 
 struct BuildStatistics {
@@ -34,6 +37,16 @@ struct BuildStatistics {
     std::size_t instanced_objects = 0;
     std::map<std::string, std::size_t> primitives_by_type;
     std::int64_t embree_bytes = 0;
+    std::size_t area_lights = 0;
+    // Emissive objects that light sampling cannot reach (instanced, or shapes without surface sampling):
+    // they still emit when BSDF sampling hits them.
+    std::size_t unsampled_emitters = 0;
+};
+
+// One light chosen for next-event estimation, with the probability of choosing it.
+struct LightChoice {
+    const Light* light = nullptr;
+    float probability = 0;
 };
 
 class RenderScene {
@@ -56,6 +69,12 @@ public:
     std::optional<SurfaceHit> intersect(const Ray& ray, RayKind kind) const;
     bool occluded(const Ray& ray) const;
 
+    // Lights in proportion to their power (all lights: scene-file lights and area lights).
+    LightChoice choose_light(float u) const;
+    float light_probability(const Light* light) const;
+    const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
+    const std::vector<const Light*>& all_lights() const { return all_lights_; }
+
     const std::vector<SceneObject>& objects() const { return objects_; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
     const BuildStatistics& build_statistics() const { return build_statistics_; }
@@ -67,8 +86,14 @@ private:
     std::vector<SceneObject> objects_;
     std::vector<std::uint32_t> object_of_geometry_;  // top-level geometry id -> object index
     std::map<std::string, std::unique_ptr<Material>> materials_;
-    std::vector<std::unique_ptr<Light>> lights_;
+    std::vector<std::unique_ptr<Light>> lights_;  // scene-file lights, then area lights
+    std::vector<const Light*> all_lights_;
+    std::vector<const Light*> infinite_lights_;
+    std::unique_ptr<Distribution1D> light_distribution_;
+    std::unordered_map<const Light*, float> light_probabilities_;
     BuildStatistics build_statistics_;
+
+    void build_lights();
 };
 
 }  // namespace isotrace

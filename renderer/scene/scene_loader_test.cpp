@@ -280,14 +280,17 @@ TEST_F(LoadScene, ShippedCornellBox) {
     EXPECT_EQ(loaded->film.raster.height, 512);
     EXPECT_EQ(loaded->spp, 64);
     EXPECT_EQ(loaded->camera_type, "perspective");
-    EXPECT_EQ(loaded->integrator_type, "preview");
+    EXPECT_EQ(loaded->integrator_type, "path");
     EXPECT_EQ(loaded->scene->material_names(), (std::vector<std::string>{"green", "light", "red", "white"}));
     ASSERT_EQ(loaded->scene->objects().size(), 8u);
     EXPECT_EQ(loaded->scene->objects()[0].name, "floor");
     EXPECT_EQ(loaded->scene->objects()[7].name, "light");
     EXPECT_EQ(loaded->scene->objects()[7].material, loaded->scene->find_material("light"));
     EXPECT_EQ(loaded->scene->objects()[3].material, loaded->scene->find_material("green"));
+    // The only light is the ceiling lamp, an area light made from the emissive quad.
     EXPECT_EQ(loaded->scene->lights().size(), 1u);
+    EXPECT_EQ(loaded->scene->objects()[7].area_light, loaded->scene->lights()[0].get());
+    EXPECT_EQ(loaded->scene->build_statistics().area_lights, 1u);
     // Committed, and the millimetre measurements were scaled to metres.
     const BuildStatistics& statistics = loaded->scene->build_statistics();
     EXPECT_EQ(statistics.objects, 8u);

@@ -21,13 +21,14 @@ public:
                                                     const ColourSystem& colours);
 
     Rgb lookup(std::array<float, 2> uv) const;
+    // One texel in the working space; row y = 0 is the top of the image; x and y wrap around (repeat).
+    Rgb texel(int x, int y) const;
     int width() const { return width_; }
     int height() const { return height_; }
     const std::string& colour_space() const { return colour_space_; }
 
 private:
     ImageTexture(int width, int height, std::vector<float> rgb, std::string colour_space);
-    Rgb texel(int x, int y) const;
 
     int width_, height_;
     std::vector<float> rgb_;  // working space, row 0 = top of the image

@@ -62,6 +62,7 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
     m.set("isotrace:spp", std::int64_t(result.completed_spp));
     m.set("isotrace:seed", std::to_string(scene.seed));
     m.set("isotrace:integrator", scene.integrator_type);
+    for (const auto& [key, value] : scene.integrator->settings()) m.set("isotrace:integrator:" + key, value);
     m.set("isotrace:sampler", scene.sampler_type);
     m.set("isotrace:pixel_filter", scene.filter_type);
     m.set("isotrace:render_seconds", result.seconds);

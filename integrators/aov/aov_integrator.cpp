@@ -1,0 +1,72 @@
+// Debug integrator: shows one property of the first hit as a colour — the shading normal (mapped to
+// [0, 1]), the hit distance, the albedo, the uv coordinates, or the object id (a stable pseudo-random colour).
+// Misses are black. Usable on its own, for example to check geometry before lighting a scene.
+#include <cmath>
+#include <limits>
+
+#include "renderer/plugin/integrator.h"
+#include "renderer/plugin/material.h"
+#include "renderer/sampling/hash.h"
+#include "renderer/scene/render_scene.h"
+
+namespace isotrace {
+namespace {
+
+enum class Shown { Normal, Distance, Albedo, Uv, ObjectId };
+
+Rgb id_colour(std::uint32_t id) {
+    const std::uint64_t h = mix64(id + 1);
+    return {0.2f + 0.8f * float(h & 0xFF) / 255.0f, 0.2f + 0.8f * float((h >> 8) & 0xFF) / 255.0f,
+            0.2f + 0.8f * float((h >> 16) & 0xFF) / 255.0f};
+}
+
+class AovIntegrator final : public Integrator {
+public:
+    explicit AovIntegrator(Shown shown) : shown_(shown) {}
+
+    Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream&, PrimaryHitRecord& primary) const override {
+        const std::optional<SurfaceHit> hit = scene.intersect(camera_ray, RayKind::Camera);
+        if (!hit) return {};
+        primary.hit = true;
+        primary.albedo = hit->material ? hit->material->albedo(*hit) : Rgb();
+        primary.shading_normal = hit->shading_normal;
+        primary.position = hit->position;
+        primary.object_id = hit->object_index;
+        primary.primitive_id = hit->primitive_id;
+        switch (shown_) {
+            case Shown::Normal: {
+                const Vec3f n = hit->shading_normal * 0.5f + Vec3f(0.5f, 0.5f, 0.5f);
+                return {n.x, n.y, n.z};
+            }
+            case Shown::Distance: return Rgb(hit->t * length(camera_ray.direction));
+            case Shown::Albedo: return primary.albedo;
+            case Shown::Uv: return {hit->uv[0], hit->uv[1], 0};
+            case Shown::ObjectId: return id_colour(hit->object_index);
+        }
+        return {};
+    }
+    std::map<std::string, std::string> settings() const override {
+        static const char* names[] = {"normal", "distance", "albedo", "uv", "object_id"};
+        return {{"aov", names[int(shown_)]}};
+    }
+
+private:
+    Shown shown_;
+};
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "aov",
+                         "debug view of the first hit; aov: normal (default), distance, albedo, uv, object_id",
+                         [](const SceneNode& node) -> std::unique_ptr<Integrator> {
+                             const std::string aov =
+                                 node.choice_or("aov", "normal", {"normal", "distance", "albedo", "uv", "object_id"});
+                             const Shown shown = aov == "normal"     ? Shown::Normal
+                                                 : aov == "distance" ? Shown::Distance
+                                                 : aov == "albedo"   ? Shown::Albedo
+                                                 : aov == "uv"       ? Shown::Uv
+                                                                     : Shown::ObjectId;
+                             return std::make_unique<AovIntegrator>(shown);
+                         })
+
+}  // namespace isotrace

@@ -1,0 +1,190 @@
+#include "integrators/path/path_integrator.h"
+
+#include <cmath>
+#include <limits>
+
+#include "renderer/bsdf/bsdf.h"
+#include "renderer/core/scratch_arena.h"
+#include "renderer/plugin/material.h"
+#include "renderer/sampling/sampler.h"
+#include "renderer/scene/render_scene.h"
+
+namespace isotrace {
+namespace {
+
+float power_heuristic(float pdf_a, float pdf_b) {
+    const float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
+    return a + b > 0 ? a / (a + b) : 0.0f;
+}
+
+// World <-> local shading frame (z = shading normal).
+struct ShadingFrame {
+    Vec3f tangent, bitangent, normal;
+    explicit ShadingFrame(const Vec3f& n) : normal(n) { orthonormal_basis(n, tangent, bitangent); }
+    Vec3f to_local(const Vec3f& w) const { return {dot(w, tangent), dot(w, bitangent), dot(w, normal)}; }
+    Vec3f to_world(const Vec3f& w) const { return tangent * w.x + bitangent * w.y + normal * w.z; }
+};
+
+// Shading normals bend the hemisphere: a direction the BSDF treats as above the surface may be below the true
+// (geometric) surface, which would leak light through it. Accept a direction only when both normals agree.
+bool sides_agree(const Vec3f& world_direction, const Vec3f& geometric_normal, float local_z) {
+    return dot(world_direction, geometric_normal) * local_z > 0;
+}
+
+class Contributions {
+public:
+    Contributions(Rgb& total, float clamp) : total_(total), clamp_(clamp) {}
+    void add(const Rgb& value) {
+        const float peak = value.max();
+        total_ += clamp_ > 0 && peak > clamp_ ? value * (clamp_ / peak) : value;
+    }
+
+private:
+    Rgb& total_;
+    float clamp_;
+};
+
+}  // namespace
+
+Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
+                             PrimaryHitRecord& primary) const {
+    thread_local ScratchArena arena;
+    arena.reset();
+    Rgb result;
+    Contributions contributions(result, settings_.clamp);
+    Rgb throughput(1.0f);
+    float eta_scale = 1;  // undoes the radiance scaling of refraction for Russian roulette
+    Ray ray = camera_ray;
+    ray.direction = normalize(ray.direction);  // hit.t is then a distance (needed for light pdfs)
+    bool previous_was_delta = true;             // camera rays and delta bounces: no MIS on emitter hits
+    float previous_pdf = 0;
+    Vec3f previous_point = ray.origin;
+
+    for (int depth = 0;; ++depth) {
+        const std::optional<SurfaceHit> found = scene.intersect(ray, depth == 0 ? RayKind::Camera : RayKind::Secondary);
+        if (!found) {
+            for (const Light* light : scene.infinite_lights()) {
+                const Rgb emitted = light->escaped_radiance(ray.direction);
+                if (emitted.is_black()) continue;
+                const float weight =
+                    previous_was_delta
+                        ? 1.0f
+                        : power_heuristic(previous_pdf, scene.light_probability(light) *
+                                                            light->pdf(previous_point, ray.direction,
+                                                                       std::numeric_limits<float>::infinity(), {}));
+                contributions.add(throughput * emitted * weight);
+            }
+            break;
+        }
+        const SurfaceHit& hit = *found;
+        const Vec3f towards_viewer = -ray.direction;
+        if (depth == 0) {
+            primary.hit = true;
+            primary.albedo = hit.material->albedo(hit);
+            primary.shading_normal = hit.shading_normal;
+            primary.position = hit.position;
+            primary.object_id = hit.object_index;
+            primary.primitive_id = hit.primitive_id;
+        }
+
+        const Rgb emitted = hit.material->emission(hit, towards_viewer);
+        if (!emitted.is_black()) {
+            float weight = 1;
+            const Light* area_light = scene.objects()[hit.object_index].area_light;
+            if (!previous_was_delta && area_light) {
+                const float light_pdf = scene.light_probability(area_light) *
+                                        area_light->pdf(previous_point, ray.direction, hit.t, hit.geometric_normal);
+                weight = power_heuristic(previous_pdf, light_pdf);
+            }
+            contributions.add(throughput * emitted * weight);
+        }
+        if (depth >= settings_.max_depth) break;
+        const Bsdf* bsdf = hit.material->bsdf(hit, arena);
+        if (!bsdf) break;
+
+        const ShadingFrame frame(hit.shading_normal);
+        const Vec3f wo = frame.to_local(towards_viewer);
+
+        // Next-event estimation: one light, chosen in proportion to power. Dimensions are drawn even when unused
+        // so that every bounce consumes the same dimensions.
+        const float u_light = samples.next_1d();
+        const std::array<float, 2> u_light_point = samples.next_2d();
+        if (!bsdf->is_fully_delta()) {
+            const LightChoice choice = scene.choose_light(u_light);
+            if (choice.light) {
+                const LightSample light = choice.light->sample(hit.position, u_light_point);
+                const Vec3f wi = frame.to_local(light.direction);
+                if (light.pdf > 0 && !light.radiance.is_black()) {
+                    const Rgb f = bsdf->eval(wo, wi) * std::abs(wi.z);
+                    if (!f.is_black() && sides_agree(light.direction, hit.geometric_normal, wi.z)) {
+                        const float t_far = std::isinf(light.distance) ? light.distance : light.distance * (1 - 1e-4f);
+                        const Ray shadow{hit.spawn_origin(light.direction), light.direction, 0, t_far};
+                        if (!scene.occluded(shadow)) {
+                            const float light_pdf = choice.probability * light.pdf;
+                            const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf->pdf(wo, wi));
+                            contributions.add(throughput * f * light.radiance * (weight / light_pdf));
+                        }
+                    }
+                }
+            }
+        }
+
+        // Continue the path by sampling the BSDF.
+        const float u_lobe = samples.next_1d();
+        const std::optional<BsdfSample> scattered = bsdf->sample(wo, u_lobe, samples.next_2d());
+        if (!scattered || scattered->pdf <= 0 || scattered->weight.is_black()) break;
+        const Vec3f direction = normalize(frame.to_world(scattered->wi));
+        if (!sides_agree(direction, hit.geometric_normal, scattered->wi.z)) break;
+        throughput *= scattered->weight;
+        if (scattered->is_transmission) eta_scale *= scattered->eta * scattered->eta;
+        previous_was_delta = scattered->is_delta;
+        previous_pdf = scattered->pdf;
+        previous_point = hit.position;
+        ray = Ray{hit.spawn_origin(direction), direction, 0, std::numeric_limits<float>::infinity()};
+
+        const float u_roulette = samples.next_1d();
+        if (depth + 1 >= settings_.russian_roulette_depth) {
+            const float survival = std::min(1.0f, throughput.max() * eta_scale);
+            if (!(u_roulette < survival)) break;
+            throughput *= 1.0f / survival;
+        }
+    }
+    return result;
+}
+
+std::map<std::string, std::string> PathIntegrator::settings() const {
+    return {{"max_depth", std::to_string(settings_.max_depth)},
+            {"russian_roulette_depth", std::to_string(settings_.russian_roulette_depth)},
+            {"clamp", settings_.clamp > 0 ? std::to_string(settings_.clamp) : "off"}};
+}
+
+namespace {
+
+PathSettings parse_settings(const SceneNode& node) {
+    PathSettings settings;
+    settings.max_depth = node.integer_or("max_depth", settings.max_depth, NumberRange::between(1, 1024));
+    settings.russian_roulette_depth =
+        node.integer_or("russian_roulette_depth", settings.russian_roulette_depth, NumberRange::between(1, 1024));
+    settings.clamp = float(node.number_or("clamp", 0.0, NumberRange::non_negative()));
+    return settings;
+}
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "path",
+                         "path tracing with NEE + MIS; max_depth (16), russian_roulette_depth (4), clamp (0 = off)",
+                         [](const SceneNode& node) -> std::unique_ptr<Integrator> {
+                             return std::make_unique<PathIntegrator>(parse_settings(node));
+                         })
+
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "direct",
+                         "direct lighting only (emission + one bounce of NEE and BSDF sampling with MIS); clamp",
+                         [](const SceneNode& node) -> std::unique_ptr<Integrator> {
+                             PathSettings settings;
+                             settings.max_depth = 1;
+                             settings.russian_roulette_depth = 1024;
+                             settings.clamp = float(node.number_or("clamp", 0.0, NumberRange::non_negative()));
+                             return std::make_unique<PathIntegrator>(settings);
+                         })
+
+}  // namespace isotrace

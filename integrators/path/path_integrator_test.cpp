@@ -1,0 +1,173 @@
+// Known answers for the path tracer: white furnaces, a glowing sphere seen from inside, direct lighting from a
+// small area light against the closed-form irradiance, and the 1/spp fall of the squared error.
+#include "integrators/path/path_integrator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "renderer/render/tile_renderer.h"
+#include "renderer/scene/loaded_scene.h"
+#include "tests/support/scene_files.h"
+
+namespace isotrace {
+namespace {
+
+using testing::TemporaryDirectory;
+
+// Renders `scene_text` and returns the beauty RGB (3 floats per pixel) and alpha.
+struct Rendered {
+    std::vector<float> rgb;
+    std::vector<float> alpha;
+};
+
+Rendered render_text(const std::string& scene_text, int spp, std::uint64_t seed = 0) {
+    TemporaryDirectory directory("path_integrator");
+    const auto path = directory.write("scene.json", scene_text);
+    SceneOverrides overrides;
+    overrides.spp = spp;
+    overrides.seed = seed;
+    const auto scene = load_scene(path.string(), overrides);
+    RenderOptions options;
+    options.spp = scene->spp;
+    const ImageBuffer image = render_scene(*scene, options).film->resolve();
+    Rendered result;
+    const std::size_t stride = image.channels.size();
+    for (std::size_t i = 0; i < image.pixels.size() / stride; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) result.rgb.push_back(image.pixels[i * stride + c]);
+        result.alpha.push_back(image.pixels[i * stride + 3]);
+    }
+    return result;
+}
+
+std::string furnace_scene(double albedo, const std::string& integrator) {
+    return R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [12, 12], "filter": {"type": "box"}},
+      "camera": {"type": "perspective", "fov": 30, "look_at": {"eye": [0, 0, 6], "target": [0, 0, 0]}},
+      "sampler": {"type": "independent"},
+      "integrator": )" + integrator + R"(,
+      "materials": {"m": {"type": "diffuse", "reflectance": )" + std::to_string(albedo) + R"(}},
+      "lights": [{"type": "environment", "radiance": 1}],
+      "objects": [{"material": "m", "shape": {"type": "sphere", "radius": 1}}]})";
+}
+
+// A convex diffuse object in a uniform environment of radiance 1: every reflected ray escapes, so each pixel
+// sees albedo * 1 where it hits the sphere and 1 where it sees the environment.
+TEST(PathIntegrator, WhiteFurnaceGivesOneEverywhere) {
+    const Rendered image = render_text(furnace_scene(1.0, R"({"type": "path", "max_depth": 32})"), 64);
+    double sum = 0;
+    for (float v : image.rgb) {
+        EXPECT_NEAR(v, 1.0f, 0.1f);
+        sum += v;
+    }
+    EXPECT_NEAR(sum / double(image.rgb.size()), 1.0, 0.01);
+}
+
+TEST(PathIntegrator, HalfAlbedoSphereInAUniformEnvironmentGivesItsAlbedo) {
+    const Rendered image = render_text(furnace_scene(0.5, R"({"type": "path"})"), 64);
+    double hit_sum = 0;
+    int hits = 0;
+    for (std::size_t p = 0; p < image.alpha.size(); ++p) {
+        if (image.alpha[p] == 1.0f) {
+            for (int c = 0; c < 3; ++c) hit_sum += image.rgb[p * 3 + std::size_t(c)];
+            hits += 3;
+        } else if (image.alpha[p] == 0.0f) {
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(image.rgb[p * 3 + std::size_t(c)], 1.0f);
+        }
+    }
+    ASSERT_GT(hits, 30);
+    EXPECT_NEAR(hit_sum / hits, 0.5, 0.01);
+}
+
+// Inside a closed sphere of albedo 0.5 glowing with Le = 0.5: L = Le + 0.5 L, so L = 1 in every direction.
+TEST(PathIntegrator, ViewerInsideAGlowingDiffuseSphereSeesOne) {
+    const std::string scene = R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [8, 8], "filter": {"type": "box"}},
+      "camera": {"type": "perspective", "fov": 90, "look_at": {"eye": [0.1, 0.2, 0.3], "target": [1, 0, 0]}},
+      "sampler": {"type": "independent"},
+      "integrator": {"type": "path", "max_depth": 64},
+      "materials": {"glow": {"type": "diffuse", "reflectance": 0.5, "emission": 0.5, "two_sided_emission": true}},
+      "objects": [{"material": "glow", "shape": {"type": "sphere", "radius": 2}}]})";
+    const Rendered image = render_text(scene, 64);
+    double sum = 0;
+    for (float v : image.rgb) sum += v;
+    EXPECT_NEAR(sum / double(image.rgb.size()), 1.0, 0.01);
+}
+
+// Irradiance at a point under the centre of a parallel square light (half side c, height h, radiance L), from the
+// form factor of a rectangle with one corner above the point, times four quadrants.
+double square_light_irradiance(double radiance, double c, double h) {
+    const double x = c / h, y = c / h;
+    const double corner = (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) +
+                           y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y))) /
+                          (2 * std::numbers::pi);
+    return std::numbers::pi * radiance * 4 * corner;
+}
+
+TEST(DirectIntegrator, SmallAreaLightMatchesClosedFormIrradiance) {
+    const double radiance = 10, half_side = 0.25, height = 1, albedo = 0.8;
+    // Orthographic camera looking straight down at the centre of the floor; light square faces down.
+    const std::string scene = R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [1, 1], "filter": {"type": "box", "radius": 0.001}},
+      "camera": {"type": "orthographic", "width": 0.0001, "look_at": {"eye": [0, 0.5, 0], "target": [0, 0, 0], "up": [0, 0, -1]}},
+      "sampler": {"type": "sobol"},
+      "integrator": {"type": "direct"},
+      "materials": {"floor": {"type": "diffuse", "reflectance": 0.8},
+                    "lamp": {"type": "emissive", "radiance": 10}},
+      "objects": [
+        {"material": "floor", "shape": {"type": "mesh", "positions": [[-5, 0, -5], [-5, 0, 5], [5, 0, 5], [5, 0, -5]],
+                                       "triangles": [[0, 1, 2], [0, 2, 3]]}},
+        {"material": "lamp", "shape": {"type": "mesh",
+            "positions": [[-0.25, 1, -0.25], [0.25, 1, -0.25], [0.25, 1, 0.25], [-0.25, 1, 0.25]],
+            "triangles": [[0, 1, 2], [0, 2, 3]]}}]})";
+    const Rendered image = render_text(scene, 4096);
+    const double expected = albedo / std::numbers::pi * square_light_irradiance(radiance, half_side, height);
+    EXPECT_NEAR(image.rgb[0], expected, 0.005 * expected);
+    EXPECT_NEAR(image.rgb[1], expected, 0.005 * expected);
+}
+
+// Mean squared error against a high-spp reference falls as 1/spp for independent sampling: the log-log slope
+// over 4..64 spp, averaged over seeds, is close to -1.
+TEST(PathIntegrator, SquaredErrorFallsAsOneOverSpp) {
+    const std::string scene = R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [6, 6], "filter": {"type": "box"}},
+      "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 1, 5], "target": [0, 0.5, 0]}},
+      "sampler": {"type": "independent"},
+      "integrator": {"type": "path", "max_depth": 4},
+      "materials": {"m": {"type": "diffuse", "reflectance": 0.7}, "lamp": {"type": "emissive", "radiance": 4}},
+      "objects": [
+        {"material": "m", "shape": {"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5}},
+        {"material": "m", "shape": {"type": "mesh", "positions": [[-5, 0, -5], [-5, 0, 5], [5, 0, 5], [5, 0, -5]],
+                                   "triangles": [[0, 1, 2], [0, 2, 3]]}},
+        {"material": "lamp", "shape": {"type": "mesh", "positions": [[-1, 3, -1], [1, 3, -1], [1, 3, 1], [-1, 3, 1]],
+                                      "triangles": [[0, 1, 2], [0, 2, 3]]}}]})";
+    const Rendered reference = render_text(scene, 4096, 999);
+    std::vector<double> log_spp, log_error;
+    for (int spp : {4, 16, 64}) {
+        double mse = 0;
+        const int seeds = 6;
+        for (int seed = 0; seed < seeds; ++seed) {
+            const Rendered image = render_text(scene, spp, std::uint64_t(seed));
+            for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+                const double d = image.rgb[i] - reference.rgb[i];
+                mse += d * d;
+            }
+        }
+        log_spp.push_back(std::log(double(spp)));
+        log_error.push_back(std::log(mse / seeds));
+    }
+    // Least-squares slope.
+    const double mx = (log_spp[0] + log_spp[1] + log_spp[2]) / 3, my = (log_error[0] + log_error[1] + log_error[2]) / 3;
+    double sxy = 0, sxx = 0;
+    for (int i = 0; i < 3; ++i) {
+        sxy += (log_spp[std::size_t(i)] - mx) * (log_error[std::size_t(i)] - my);
+        sxx += (log_spp[std::size_t(i)] - mx) * (log_spp[std::size_t(i)] - mx);
+    }
+    EXPECT_NEAR(sxy / sxx, -1.0, 0.2);
+}
+
+}  // namespace
+}  // namespace isotrace

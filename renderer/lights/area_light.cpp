@@ -1,0 +1,63 @@
+#include "renderer/lights/area_light.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "renderer/scene/surface_hit.h"
+
+namespace isotrace {
+namespace {
+
+SurfaceHit hit_at(const SurfaceSample& s, const Material& material, float t) {
+    SurfaceHit hit;
+    hit.t = t;
+    hit.position = s.position;
+    hit.geometric_normal = s.normal;
+    hit.shading_normal = s.normal;
+    hit.material = &material;
+    return hit;
+}
+
+}  // namespace
+
+AreaLight::AreaLight(const Shape& shape, const Material& material)
+    : shape_(shape), material_(material) {
+    if (!(shape.surface_area() > 0)) return;
+    // Probe the emission on both sides of one surface point, looking straight at it.
+    const SurfaceSample probe = shape.sample_surface({0.5f, 0.5f});
+    pdf_area_ = probe.pdf_area;  // uniform by area: the same everywhere
+    const float area = shape.surface_area();
+    const SurfaceHit hit = hit_at(probe, material, 0);
+    const float front = material.emission(hit, probe.normal).max();
+    const float back = material.emission(hit, -probe.normal).max();
+    power_ = std::numbers::pi_v<float> * area * (std::max(0.0f, front) + std::max(0.0f, back));
+}
+
+LightSample AreaLight::sample(const Vec3f& point, std::array<float, 2> u) const {
+    const SurfaceSample s = shape_.sample_surface(u);
+    if (!(s.pdf_area > 0)) return {};
+    const Vec3f offset = s.position - point;
+    const float distance_squared = dot(offset, offset);
+    if (!(distance_squared > 0)) return {};
+    const float distance = std::sqrt(distance_squared);
+    const Vec3f direction = offset / distance;
+    const float cos_light = std::abs(dot(s.normal, direction));
+    if (!(cos_light > 0)) return {};
+    LightSample result;
+    result.direction = direction;
+    result.distance = distance;
+    result.pdf = s.pdf_area * distance_squared / cos_light;
+    if (!std::isfinite(result.pdf)) return {};
+    result.radiance = material_.emission(hit_at(s, material_, distance), -direction);
+    return result;
+}
+
+float AreaLight::pdf(const Vec3f&, const Vec3f& direction, float distance, const Vec3f& light_normal) const {
+    const float cos_light = std::abs(dot(light_normal, direction));
+    if (!(cos_light > 0) || !(pdf_area_ > 0)) return 0;
+    const float pdf = pdf_area_ * (distance * distance) / cos_light;
+    return std::isfinite(pdf) ? pdf : 0.0f;
+}
+
+}  // namespace isotrace

@@ -1,0 +1,42 @@
+#pragma once
+// AreaLight: an emissive object whose (world-space, baked) shape can draw points uniformly by area. The scene
+// makes one per such object; it is not a registry plugin.
+//
+// sample() draws a point on the surface and converts the area density to solid angle at the shading point:
+// pdf = pdf_area * distance^2 / |cos_light|. The radiance is the material's emission at that point towards the
+// shading point. A one-sided emitter seen from behind therefore yields radiance 0 while the pdf stays the
+// geometric density above (so pdf() needs no knowledge of the material and always equals sample()'s pdf);
+// integrators should skip the shadow ray of a black sample. pdf 0 is returned only when no sample exists
+// (the point lies on the light, or the sampled point is seen exactly edge-on).
+//
+// The emission is probed with a SurfaceHit holding position, geometric and shading normal (both the sampled
+// normal), t = distance and the material; uv is not known to SurfaceSample and is left at (0, 0).
+#include "renderer/plugin/light.h"
+#include "renderer/plugin/material.h"
+#include "renderer/plugin/shape.h"
+
+namespace isotrace {
+
+class AreaLight final : public Light {
+public:
+    // `shape` is in world space (baked) and supports_surface_sampling(); `material` is emissive. Both must
+    // outlive the light.
+    AreaLight(const Shape& shape, const Material& material);
+
+    LightSample sample(const Vec3f& point, std::array<float, 2> u) const override;
+    float pdf(const Vec3f& point, const Vec3f& direction, float distance, const Vec3f& light_normal) const override;
+    // pi * area * (max channel of the front emission + max channel of the back emission), probed at one
+    // surface point: a Lambertian one-sided emitter of radiance L emits pi * A * L.
+    float power() const override { return power_; }
+
+    const Shape& shape() const { return shape_; }
+    const Material& material() const { return material_; }
+
+private:
+    const Shape& shape_;
+    const Material& material_;
+    float pdf_area_ = 0;  // 1 / area
+    float power_ = 0;
+};
+
+}  // namespace isotrace

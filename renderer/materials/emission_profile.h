@@ -1,0 +1,24 @@
+#pragma once
+// Emitted radiance of a surface: uniform over directions (Lambertian emitter), from the front side only (the
+// geometric normal's side: counter-clockwise triangles, the outside of spheres) unless two-sided.
+#include "renderer/math/rgb.h"
+#include "renderer/scene/scene_node.h"
+#include "renderer/scene/surface_hit.h"
+
+namespace isotrace {
+
+struct EmissionProfile {
+    Rgb radiance;
+    bool two_sided = false;
+
+    Rgb towards(const SurfaceHit& hit, const Vec3f& towards_viewer) const {
+        return two_sided || dot(hit.geometric_normal, towards_viewer) > 0 ? radiance : Rgb();
+    }
+    bool emits() const { return !radiance.is_black(); }
+};
+
+// Reads the radiance colour node[radiance_key] (absent = black unless required) and node[two_sided_key].
+EmissionProfile parse_emission(const SceneNode& node, const std::string& radiance_key, bool required,
+                               const std::string& two_sided_key);
+
+}  // namespace isotrace
