@@ -171,3 +171,44 @@ TEST(PathIntegrator, SquaredErrorFallsAsOneOverSpp) {
 
 }  // namespace
 }  // namespace isotrace
+
+namespace isotrace {
+namespace {
+
+// Far from the origin, every point of a sunlit plane must receive the full direct light: no shadow acne from
+// shadow rays re-hitting the plane they leave. A thin slab above a second plane must keep it fully dark: no
+// light leaks through a 1 mm wall.
+TEST(DirectIntegrator, NoShadowAcneFarFromTheOriginAndNoLeaksThroughThinWalls) {
+    const std::string scene = R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [16, 16], "filter": {"type": "box"}},
+      "camera": {"type": "orthographic", "width": 20, "look_at": {"eye": [1000, 50, -2000], "target": [1000, 0, -2000], "up": [0, 0, -1]}},
+      "integrator": {"type": "direct"},
+      "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+      "lights": [{"type": "directional", "direction": [-1, -2, 0.5], "irradiance": 3}],
+      "objects": [{"material": "m", "shape": {"type": "mesh",
+        "positions": [[980, 0, -2020], [980, 0, -1980], [1020, 0, -1980], [1020, 0, -2020]],
+        "triangles": [[0, 1, 2], [0, 2, 3]]}}]})";
+    const Rendered lit = render_text(scene, 4);
+    const Vec3f to_light = normalize(Vec3f(1, 2, -0.5f));
+    const float expected = 0.5f / float(std::numbers::pi) * 3.0f * to_light.y;
+    for (float v : lit.rgb) EXPECT_NEAR(v, expected, 1e-5f * expected);
+
+    // A floor under a much larger 1 mm slab whose top is in the sun: every path below stays in the dark.
+    const std::string slab = R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [16, 16], "filter": {"type": "box"}},
+      "camera": {"type": "orthographic", "width": 4, "look_at": {"eye": [0, 0.5, 0], "target": [0, 0, 0], "up": [0, 0, -1]}},
+      "integrator": {"type": "path", "max_depth": 4},
+      "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+      "lights": [{"type": "directional", "direction": [0.3, -1, 0.2], "irradiance": 3}],
+      "objects": [
+        {"material": "m", "shape": {"type": "mesh", "positions": [[-10, 0, -10], [-10, 0, 10], [10, 0, 10], [10, 0, -10]],
+                                   "triangles": [[0, 1, 2], [0, 2, 3]]}},
+        {"material": "m", "shape": {"type": "mesh", "positions": [[-50, 1, -50], [-50, 1, 50], [50, 1, 50], [50, 1, -50],
+                                                                 [-50, 1.001, -50], [-50, 1.001, 50], [50, 1.001, 50], [50, 1.001, -50]],
+                                   "triangles": [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7]]}}]})";
+    const Rendered shaded = render_text(slab, 4);
+    for (float v : shaded.rgb) EXPECT_EQ(v, 0.0f);
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,5 +1,6 @@
 // Distant light (sun-like): parallel light arriving from one direction with a given irradiance.
 #include <limits>
+#include <numbers>
 
 #include "renderer/plugin/light.h"
 
@@ -14,11 +15,16 @@ public:
     LightSample sample(const Vec3f&, std::array<float, 2>) const override {
         return {irradiance_, towards_light_, std::numeric_limits<float>::infinity(), 1.0f, true};
     }
-    float power() const override { return irradiance_.max(); }
+    // The light crossing the scene's bounding disk.
+    float power() const override {
+        return float(std::numbers::pi) * scene_radius_ * scene_radius_ * irradiance_.max();
+    }
+    void preprocess(const Bounds3f& scene_bounds) override { scene_radius_ = scene_bounds.bounding_radius(); }
 
 private:
     Vec3f towards_light_;
     Rgb irradiance_;
+    float scene_radius_ = 0;
 };
 
 }  // namespace

@@ -132,7 +132,7 @@ float EnvironmentLight::pdf(const Vec3f&, const Vec3f& direction, float, const V
 float EnvironmentLight::power() const { return kPi * scene_radius_ * scene_radius_ * average_.max(); }
 
 void EnvironmentLight::preprocess(const Bounds3f& scene_bounds) {
-    scene_radius_ = scene_bounds.empty() ? 0.0f : 0.5f * length(scene_bounds.upper - scene_bounds.lower);
+    scene_radius_ = scene_bounds.bounding_radius();
 }
 
 namespace {

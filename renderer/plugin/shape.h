@@ -28,6 +28,8 @@ struct Bounds3f {
         upper = max(upper, p);
     }
     bool empty() const { return lower.x > upper.x; }
+    // Radius of the sphere around the box (0 when empty): how far lights at infinity must reach.
+    float bounding_radius() const { return empty() ? 0.0f : 0.5f * length(upper - lower); }
 };
 
 // A point drawn on a shape's surface, for area lights.
