@@ -181,7 +181,7 @@ namespace {
 TEST(DirectIntegrator, NoShadowAcneFarFromTheOriginAndNoLeaksThroughThinWalls) {
     const std::string scene = R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
       "film": {"resolution": [16, 16], "filter": {"type": "box"}},
-      "camera": {"type": "orthographic", "width": 20, "look_at": {"eye": [1000, 50, -2000], "target": [1000, 0, -2000], "up": [0, 0, -1]}},
+      "camera": {"type": "perspective", "fov": 30, "look_at": {"eye": [1000.37, 31.3, -1990.77], "target": [1000.1, 0, -2000.3]}},
       "integrator": {"type": "direct"},
       "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
       "lights": [{"type": "directional", "direction": [-1, -2, 0.5], "irradiance": 3}],
