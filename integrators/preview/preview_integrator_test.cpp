@@ -6,38 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <numbers>
-#include <random>
 #include <string>
 
 #include "renderer/sampling/independent_sampler.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tests/support/scene_files.h"
 
 namespace isotrace {
 namespace {
 
-class SceneFile {
-public:
-    explicit SceneFile(const std::string& json) {
-        std::random_device random;
-        directory_ = std::filesystem::temp_directory_path() / ("isotrace_preview_" + std::to_string(random()));
-        std::filesystem::create_directories(directory_);
-        path_ = (directory_ / "scene.json").string();
-        std::ofstream(path_) << json;
-    }
-    ~SceneFile() {
-        std::error_code ignored;
-        std::filesystem::remove_all(directory_, ignored);
-    }
-    const std::string& path() const { return path_; }
-
-private:
-    std::filesystem::path directory_;
-    std::string path_;
-};
+using testing::SceneFile;
 
 // A 40 x 40 floor at y = 0 whose front faces +y, plus whatever else the test adds.
 std::string scene_json(const std::string& integrator, const std::string& material, const std::string& lights,

@@ -9,11 +9,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <mutex>
-#include <random>
 #include <set>
 #include <string>
 #include <thread>
@@ -22,6 +19,7 @@
 #include "renderer/core/render_counters.h"
 #include "renderer/plugin/integrator.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tests/support/scene_files.h"
 
 namespace isotrace {
 namespace {
@@ -66,25 +64,7 @@ ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_wait_for_cancel", "test only
 
 namespace {
 
-class SceneFile {
-public:
-    explicit SceneFile(const std::string& json) {
-        std::random_device random;
-        directory_ = std::filesystem::temp_directory_path() / ("isotrace_render_" + std::to_string(random()));
-        std::filesystem::create_directories(directory_);
-        path_ = (directory_ / "scene.json").string();
-        std::ofstream(path_) << json;
-    }
-    ~SceneFile() {
-        std::error_code ignored;
-        std::filesystem::remove_all(directory_, ignored);
-    }
-    const std::string& path() const { return path_; }
-
-private:
-    std::filesystem::path directory_;
-    std::string path_;
-};
+using testing::SceneFile;
 
 // Spheres (baked and instanced), meshes, point and directional lights, an emitter and the preview integrator.
 std::string test_scene(const std::string& film_extra = "", const std::string& integrator = "") {

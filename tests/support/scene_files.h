@@ -32,6 +32,18 @@ private:
     std::filesystem::path path_;
 };
 
+// A scene (or any JSON) file in a temporary directory of its own, removed with the object.
+class SceneFile {
+public:
+    explicit SceneFile(const std::string& json, const std::string& label = "scene")
+        : directory_(label), path_(directory_.write("scene.json", json).string()) {}
+    const std::string& path() const { return path_; }
+
+private:
+    TemporaryDirectory directory_;
+    std::string path_;
+};
+
 // Reads a whole file (binary); throws std::runtime_error when it cannot be opened.
 std::string read_file(const std::filesystem::path& path);
 
