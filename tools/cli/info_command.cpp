@@ -43,8 +43,11 @@ int run_info(const std::string& path) {
     std::printf("sampler      %s, seed %llu\n", scene->sampler_type.c_str(), (unsigned long long)scene->seed);
     std::printf("colour       working space %s, OCIO config %s\n", scene->colours->working_space().c_str(),
                 scene->colours->config_path().c_str());
-    std::printf("objects      %zu (%zu instanced), %zu light(s)\n", build.objects, build.instanced_objects,
-                scene->scene->lights().size());
+    std::printf("objects      %zu (%zu instanced), %zu light(s) of which %zu area light(s)\n", build.objects,
+                build.instanced_objects, scene->scene->lights().size(), build.area_lights);
+    if (build.unsampled_emitters > 0)
+        std::printf("             %zu emissive object(s) not reachable by light sampling (found by BSDF sampling only)\n",
+                    build.unsampled_emitters);
     for (const auto& [type, count] : build.primitives_by_type) std::printf("  %-18s %zu primitive(s)\n", type.c_str(), count);
     std::printf("bounds       [%g %g %g] .. [%g %g %g]\n", bounds.lower.x, bounds.lower.y, bounds.lower.z,
                 bounds.upper.x, bounds.upper.y, bounds.upper.z);
