@@ -14,7 +14,10 @@ SobolSampler::BlockPoint SobolSampler::block_point(const PixelSampleKey& key, ui
 }
 
 float SobolSampler::scrambled_value(const BlockPoint& point, uint32_t sobol_dimension) {
-    const uint32_t scramble_seed = static_cast<uint32_t>(hash_combine(point.block_hash, sobol_dimension));
+    // The four dimensions of a block need independent scrambles, not strong hashing of a fresh key: one 32-bit
+    // finaliser round over the block hash and the dimension is enough and costs a fraction of hash_combine.
+    const uint32_t scramble_seed =
+        mix32(static_cast<uint32_t>(point.block_hash >> 32) ^ (sobol_dimension + 1) * 0x9e3779b9u);
     return uint_to_unit_float(
         nested_uniform_scramble(sobol_sample(point.shuffled_index, sobol_dimension), scramble_seed));
 }
