@@ -105,10 +105,15 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         const ShadingFrame frame(hit.shading_normal);
         const Vec3f wo = frame.to_local(towards_viewer);
 
-        // Next-event estimation: one light, chosen in proportion to power. Dimensions are drawn even when unused
-        // so that every bounce consumes the same dimensions.
-        const float u_light = samples.next_1d();
+        // Every bounce draws the same eight dimensions (two Sobol' blocks), used or not: the light point and
+        // the BSDF direction each get a stratified pair, the three choices share the rest.
         const std::array<float, 2> u_light_point = samples.next_2d();
+        const float u_light = samples.next_1d();
+        const float u_lobe = samples.next_1d();
+        const std::array<float, 2> u_direction = samples.next_2d();
+        const float u_roulette = samples.next_1d();
+
+        // Next-event estimation: one light, chosen in proportion to power.
         if (!bsdf->is_fully_delta()) {
             const LightChoice choice = scene.choose_light(u_light);
             if (choice.light) {
@@ -130,8 +135,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         }
 
         // Continue the path by sampling the BSDF.
-        const float u_lobe = samples.next_1d();
-        const std::optional<BsdfSample> scattered = bsdf->sample(wo, u_lobe, samples.next_2d());
+        const std::optional<BsdfSample> scattered = bsdf->sample(wo, u_lobe, u_direction);
         if (!scattered || scattered->pdf <= 0 || scattered->weight.is_black()) break;
         const Vec3f direction = normalize(frame.to_world(scattered->wi));
         if (!sides_agree(direction, hit.geometric_normal, scattered->wi.z)) break;
@@ -142,7 +146,6 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         previous_point = hit.position;
         ray = Ray{hit.spawn_origin(direction), direction, 0, std::numeric_limits<float>::infinity()};
 
-        const float u_roulette = samples.next_1d();
         if (depth + 1 >= settings_.russian_roulette_depth) {
             const float survival = std::min(1.0f, throughput.max() * eta_scale);
             if (!(u_roulette < survival)) break;
