@@ -7,6 +7,7 @@
 
 #include "geometry/sphere/sphere_intersection.h"
 #include "renderer/core/render_counters.h"
+#include "renderer/embree/user_geometry.h"
 #include "renderer/sampling/warps.h"
 
 namespace isotrace {
@@ -84,46 +85,26 @@ RTCGeometry SphereShape::create_geometry(RTCDevice device) {
 void SphereShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
     const auto* self = static_cast<const SphereShape*>(args->geometryUserPtr);
     const Sphere& s = self->spheres_[args->primID];
-    // Round outwards so float bounds still contain the double-precision sphere.
-    const auto down = [](double v) { return std::nextafter(float(v), -std::numeric_limits<float>::infinity()); };
-    const auto up = [](double v) { return std::nextafter(float(v), std::numeric_limits<float>::infinity()); };
-    args->bounds_o->lower_x = down(s.centre.x - s.radius);
-    args->bounds_o->lower_y = down(s.centre.y - s.radius);
-    args->bounds_o->lower_z = down(s.centre.z - s.radius);
-    args->bounds_o->upper_x = up(s.centre.x + s.radius);
-    args->bounds_o->upper_y = up(s.centre.y + s.radius);
-    args->bounds_o->upper_z = up(s.centre.z + s.radius);
+    const Vec3d extent(s.radius, s.radius, s.radius);
+    user_geometry::store_bounds(args->bounds_o, s.centre - extent, s.centre + extent);
 }
 
 void SphereShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const SphereShape*>(args->geometryUserPtr);
     const Sphere& s = self->spheres_[args->primID];
-    RTCRayHitN* rayhit = args->rayhit;
-    RTCRayN* rays = RTCRayHitN_RayN(rayhit, args->N);
-    RTCHitN* hits = RTCRayHitN_HitN(rayhit, args->N);
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
         counters::count_test(self->counter_slot_);
-        const Vec3d origin(RTCRayN_org_x(rays, args->N, i), RTCRayN_org_y(rays, args->N, i),
-                           RTCRayN_org_z(rays, args->N, i));
-        const Vec3d direction(RTCRayN_dir_x(rays, args->N, i), RTCRayN_dir_y(rays, args->N, i),
-                              RTCRayN_dir_z(rays, args->N, i));
+        const Vec3d origin = user_geometry::ray_origin(rays, args->N, i);
+        const Vec3d direction = user_geometry::ray_direction(rays, args->N, i);
         const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
         if (!roots) continue;
         float& t_far = RTCRayN_tfar(rays, args->N, i);
         const auto t = nearest_root(*roots, RTCRayN_tnear(rays, args->N, i), t_far);
         if (!t) continue;
         counters::count_candidate_hit(self->counter_slot_);
-        const Vec3d normal = origin + direction * *t - s.centre;
-        t_far = float(*t);
-        RTCHitN_Ng_x(hits, args->N, i) = float(normal.x);
-        RTCHitN_Ng_y(hits, args->N, i) = float(normal.y);
-        RTCHitN_Ng_z(hits, args->N, i) = float(normal.z);
-        RTCHitN_u(hits, args->N, i) = 0;  // uv derived from the normal in shading()
-        RTCHitN_v(hits, args->N, i) = 0;
-        RTCHitN_primID(hits, args->N, i) = args->primID;
-        RTCHitN_geomID(hits, args->N, i) = args->geomID;
-        RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+        user_geometry::store_hit(args, i, float(*t), origin + direction * *t - s.centre);  // uv: see shading()
     }
 }
 
@@ -134,10 +115,8 @@ void SphereShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
         counters::count_test(self->counter_slot_);
-        const Vec3d origin(RTCRayN_org_x(rays, args->N, i), RTCRayN_org_y(rays, args->N, i),
-                           RTCRayN_org_z(rays, args->N, i));
-        const Vec3d direction(RTCRayN_dir_x(rays, args->N, i), RTCRayN_dir_y(rays, args->N, i),
-                              RTCRayN_dir_z(rays, args->N, i));
+        const Vec3d origin = user_geometry::ray_origin(rays, args->N, i);
+        const Vec3d direction = user_geometry::ray_direction(rays, args->N, i);
         const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
         float& t_far = RTCRayN_tfar(rays, args->N, i);
         if (!roots || !nearest_root(*roots, RTCRayN_tnear(rays, args->N, i), t_far)) continue;

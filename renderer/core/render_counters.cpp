@@ -11,6 +11,7 @@ namespace isotrace::counters {
 namespace {
 
 constexpr int kMaxGeometryTypes = 64;
+constexpr int kMaxNamedCounters = 64;
 
 // Relaxed atomics written only by the owning thread: plain loads/stores in machine code, yet the progress
 // display may read them mid-render without a data race.
@@ -23,12 +24,14 @@ struct ThreadBlock {
     Counter rays[3] = {0, 0, 0};
     Counter nan_samples{0};
     std::array<std::array<Counter, 3>, kMaxGeometryTypes> geometry{};  // tests, candidates, closest
+    std::array<Counter, kMaxNamedCounters> named{};
 
     void clear() {
         for (auto& c : rays) c.store(0, std::memory_order_relaxed);
         nan_samples.store(0, std::memory_order_relaxed);
         for (auto& type : geometry)
             for (auto& c : type) c.store(0, std::memory_order_relaxed);
+        for (auto& c : named) c.store(0, std::memory_order_relaxed);
     }
 };
 
@@ -37,6 +40,7 @@ struct Registry {
     std::vector<std::unique_ptr<ThreadBlock>> blocks;  // owned here so counts survive thread exit
     std::vector<std::string> type_names;
     std::vector<bool> type_counts_tests;
+    std::vector<std::string> counter_names;
 };
 
 Registry& registry() {
@@ -67,6 +71,21 @@ int geometry_type_slot(const std::string& type_name, bool counts_tests) {
     return int(r.type_names.size() - 1);
 }
 
+int named_counter_slot(const std::string& name) {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    for (std::size_t i = 0; i < r.counter_names.size(); ++i)
+        if (r.counter_names[i] == name) return int(i);
+    if (r.counter_names.size() == kMaxNamedCounters) throw std::logic_error("too many named counters");
+    r.counter_names.push_back(name);
+    return int(r.counter_names.size() - 1);
+}
+
+void add_to_named(int slot, std::uint64_t amount) {
+    Counter& counter = local_block().named[std::size_t(slot)];
+    counter.store(counter.load(std::memory_order_relaxed) + amount, std::memory_order_relaxed);
+}
+
 void count_ray(RayKind kind) { bump(local_block().rays[int(kind)]); }
 void count_test(int slot) { bump(local_block().geometry[std::size_t(slot)][0]); }
 void count_candidate_hit(int slot) { bump(local_block().geometry[std::size_t(slot)][1]); }
@@ -92,6 +111,11 @@ CounterTotals totals() {
             counts.closest_hits += read(block->geometry[slot][2]);
         }
         result.geometry[r.type_names[slot]] = counts;
+    }
+    for (std::size_t slot = 0; slot < r.counter_names.size(); ++slot) {
+        std::uint64_t sum = 0;
+        for (const auto& block : r.blocks) sum += read(block->named[slot]);
+        result.named[r.counter_names[slot]] = sum;
     }
     return result;
 }

@@ -20,6 +20,7 @@ struct CounterTotals {
     std::uint64_t camera_rays = 0, secondary_rays = 0, shadow_rays = 0;
     std::uint64_t nan_samples = 0;  // radiance samples that were NaN/Inf and were discarded
     std::map<std::string, GeometryTypeCounts> geometry;
+    std::map<std::string, std::uint64_t> named;  // plugin-specific work counters ("blobs.pieces", ...)
     std::uint64_t total_rays() const { return camera_rays + secondary_rays + shadow_rays; }
 };
 
@@ -33,6 +34,10 @@ void count_test(int slot);
 void count_candidate_hit(int slot);
 void count_closest_hit(int slot);
 void count_nan_sample();
+
+// Plugin-specific counters: register a name once, then add to its slot from any thread.
+int named_counter_slot(const std::string& name);
+void add_to_named(int slot, std::uint64_t amount);
 
 CounterTotals totals();
 void reset();

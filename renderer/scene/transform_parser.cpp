@@ -14,7 +14,7 @@ Transform checked(const SceneNode& node, const std::function<Transform()>& make)
     }
 }
 
-Transform parse_rotation(const SceneNode& rotate) {
+Transform rotation_of(const SceneNode& rotate) {
     if (rotate.json().is_array()) {
         const Vec3d degrees = rotate.as_vec3();
         return Transform::rotate({0, 0, 1}, degrees.z) * Transform::rotate({0, 1, 0}, degrees.y) *
@@ -44,13 +44,15 @@ Transform parse_step(const SceneNode& step) {
     }
     Transform result;
     if (auto translate = step.optional_value("translate")) result = Transform::translate(translate->as_vec3());
-    if (auto rotate = step.optional_value("rotate")) result = result * parse_rotation(*rotate);
+    if (auto rotate = step.optional_value("rotate")) result = result * rotation_of(*rotate);
     if (auto scale = step.optional_value("scale")) result = result * parse_scale(*scale);
     step.finish();
     return result;
 }
 
 }  // namespace
+
+Transform parse_rotation(const SceneNode& rotate) { return rotation_of(rotate); }
 
 Transform parse_transform(const SceneNode& value) {
     if (!value.json().is_array()) return parse_step(value);

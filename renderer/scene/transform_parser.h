@@ -11,6 +11,9 @@ namespace isotrace {
 // "rotate" is {"axis": [x,y,z], "angle": degrees} or [rx, ry, rz] degrees (about x, then y, then z).
 Transform parse_transform(const SceneNode& value);
 
+// A "rotate" value alone: {"axis": [x, y, z], "angle": degrees} or [rx, ry, rz].
+Transform parse_rotation(const SceneNode& rotate);
+
 // parse_transform(node["key"]) or identity when absent.
 Transform parse_optional_transform(const SceneNode& parent, const std::string& key);
 

@@ -47,6 +47,7 @@ nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& r
         geometry[type] = row;
     }
     stats["geometry"] = geometry;
+    stats["counters"] = counts.named;
     return stats;
 }
 
@@ -77,6 +78,12 @@ std::string format_statistics(const nlohmann::json& s) {
                       row["primitives"].get<unsigned long long>(), number_or_dash(row["intersection_tests"]).c_str(),
                       number_or_dash(row["candidate_hits"]).c_str(), row["closest_hits"].get<unsigned long long>());
         out << line;
+    }
+    if (!s["counters"].empty()) {
+        out << "  counters ";
+        for (const auto& [name, value] : s["counters"].items())
+            out << " " << name << " " << value.get<unsigned long long>();
+        out << "\n";
     }
     return out.str();
 }
