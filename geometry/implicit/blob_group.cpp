@@ -1,0 +1,332 @@
+#include "geometry/implicit/blob_group.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "geometry/implicit/metacube_ray_slices.h"
+#include "geometry/polynomial/monotone_root_finder.h"
+
+namespace isotrace {
+namespace {
+
+// One element's view of the ray during a query.
+struct ActiveElement {
+    const Metacube* element;
+    MetacubeRaySlices slices;
+};
+
+// The element's piece containing t (pieces are contiguous and sorted), or nullptr outside its support.
+const RegionPiece* piece_at(const MetacubeRaySlices& slices, double t) {
+    if (t < slices.t_in() || t > slices.t_out()) return nullptr;
+    for (const RegionPiece& piece : slices.pieces())
+        if (t <= piece.t_end) return &piece;
+    return &slices.pieces().back();
+}
+
+// t values in (a, b) where the quadratic q (about q.t_ref) equals level, appended to `out`.
+void add_level_crossings(const QuadraticAbout& q, double level, double a, double b, std::vector<double>& out) {
+    const double c = q.c0 - level;
+    double roots[2];
+    int count = 0;
+    if (q.c2 == 0) {
+        if (q.c1 != 0) roots[count++] = q.t_ref - c / q.c1;
+    } else {
+        const double discriminant = q.c1 * q.c1 - 4 * q.c2 * c;
+        if (discriminant < 0) return;
+        const double k = -0.5 * (q.c1 + std::copysign(std::sqrt(discriminant), q.c1));  // cancellation-free pair
+        if (k != 0) roots[count++] = q.t_ref + c / k;
+        roots[count++] = q.t_ref + k / q.c2;
+    }
+    for (int i = 0; i < count; ++i)
+        if (roots[i] > a && roots[i] < b) out.push_back(roots[i]);
+}
+
+// ∑ coefficients[k]·q(u)^k as a polynomial in u.
+Polynomial compose_with_quadratic(const FieldPiece& piece, const Polynomial& q) {
+    Polynomial result{piece.coefficients[std::size_t(piece.degree)]};
+    for (int k = piece.degree - 1; k >= 0; --k) result = result * q + Polynomial{piece.coefficients[std::size_t(k)]};
+    return result;
+}
+
+// Does the segment o + t·d, t in [a, b], meet the box? (Slab test; cheap rejection before exact slicing.)
+bool segment_meets_box(const WorldBounds& box, const Vec3d& origin, const Vec3d& direction, double a, double b) {
+    for (int k = 0; k < 3; ++k) {
+        if (direction[k] == 0) {
+            if (origin[k] < box.lower[k] || origin[k] > box.upper[k]) return false;
+            continue;
+        }
+        const double inverse = 1.0 / direction[k];
+        double t0 = (box.lower[k] - origin[k]) * inverse, t1 = (box.upper[k] - origin[k]) * inverse;
+        if (t0 > t1) std::swap(t0, t1);
+        a = std::max(a, t0);
+        b = std::min(b, t1);
+        if (a > b) return false;
+    }
+    return true;
+}
+
+thread_local std::vector<ActiveElement> t_active;
+thread_local std::vector<double> t_breaks;
+
+}  // namespace
+
+BlobGroup::BlobGroup(std::vector<Metacube> elements, std::unique_ptr<const FieldFunction> kernel, double threshold)
+    : elements_(std::move(elements)), kernel_(std::move(kernel)), threshold_(threshold) {
+    validate_threshold(threshold_);
+    build_neighbours();
+}
+
+void BlobGroup::build_neighbours() {
+    // Sweep and prune along x over the support bounds.
+    const std::size_t n = elements_.size();
+    std::vector<WorldBounds> bounds(n);
+    for (std::size_t i = 0; i < n; ++i) bounds[i] = elements_[i].support_bounds();
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return bounds[a].lower.x < bounds[b].lower.x; });
+    neighbours_.assign(n, {});
+    for (std::size_t k = 0; k < n; ++k) {
+        const WorldBounds& a = bounds[order[k]];
+        for (std::size_t m = k + 1; m < n && bounds[order[m]].lower.x <= a.upper.x; ++m) {
+            const WorldBounds& b = bounds[order[m]];
+            if (b.lower.y > a.upper.y || a.lower.y > b.upper.y || b.lower.z > a.upper.z || a.lower.z > b.upper.z) continue;
+            neighbours_[order[k]].push_back(order[m]);
+            neighbours_[order[m]].push_back(order[k]);
+        }
+    }
+    for (auto& list : neighbours_) {
+        std::sort(list.begin(), list.end());
+        list.shrink_to_fit();
+    }
+}
+
+void BlobGroup::bake(const Transform& similarity, double scale) {
+    for (Metacube& element : elements_) {
+        OrientedBox box = element.skeleton();
+        box.centre = similarity.point(box.centre);
+        for (Vec3d& axis : box.axes) axis = normalize(similarity.vector(axis));
+        box.half_size = box.half_size * scale;
+        element = Metacube(box, element.radius() * scale, element.weight());
+    }
+    build_neighbours();
+}
+
+double BlobGroup::field(std::size_t index, const Vec3d& point) const {
+    double sum = elements_[index].field(*kernel_, point);
+    for (std::uint32_t j : neighbours_[index]) sum += elements_[j].field(*kernel_, point);
+    return sum;
+}
+
+Vec3d BlobGroup::gradient(std::size_t index, const Vec3d& point) const {
+    Vec3d sum = elements_[index].field_gradient(*kernel_, point);
+    for (std::uint32_t j : neighbours_[index]) sum += elements_[j].field_gradient(*kernel_, point);
+    return sum;
+}
+
+Vec3d BlobGroup::normal(std::size_t index, const Vec3d& point) const {
+    const Vec3d g = gradient(index, point);
+    const double len = length(g);
+    if (len > 0 && std::isfinite(len)) return -g / len;
+    // Only hard cubes (step fields) meet here: take the face of the nearest hard-cube boundary.
+    double best = std::numeric_limits<double>::infinity();
+    Vec3d result(0, 0, 1);
+    const auto consider = [&](const Metacube& element) {
+        if (!element.is_hard_cube()) return;
+        const OrientedBox& box = element.skeleton();
+        const Vec3d p = box.to_local(point);
+        for (int axis = 0; axis < 3; ++axis) {
+            const double gap = std::abs(std::abs(p[axis]) - box.half_size[axis]);
+            if (gap < best) {
+                best = gap;
+                Vec3d local(0, 0, 0);
+                local[axis] = p[axis] >= 0 ? 1 : -1;
+                result = box.to_world_vector(local);
+            }
+        }
+    };
+    consider(elements_[index]);
+    for (std::uint32_t j : neighbours_[index]) consider(elements_[j]);
+    return result;
+}
+
+std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& origin, const Vec3d& direction,
+                                                double t_min, double t_max, BlobQueryWork& work) const {
+    const auto own = MetacubeRaySlices::slice(elements_[index], origin, direction);
+    if (!own) return std::nullopt;
+    const double a = std::max(own->t_in(), t_min), b = std::min(own->t_out(), t_max);
+    if (!(a < b)) return std::nullopt;
+
+    // Gather every element active somewhere in [a, b] and every breakpoint inside it.
+    std::vector<ActiveElement>& active = t_active;
+    std::vector<double>& breaks = t_breaks;
+    active.clear();
+    breaks.clear();
+    const auto include = [&](const Metacube& element, const MetacubeRaySlices& slices) {
+        if (slices.t_out() <= a || slices.t_in() >= b) return;
+        active.push_back({&element, slices});
+        for (const RegionPiece& piece : slices.pieces()) {
+            for (double t : {piece.t_begin, piece.t_end})
+                if (t > a && t < b) breaks.push_back(t);
+            if (element.is_hard_cube()) continue;
+            // Kernel piece boundaries (Nishimura's r = R/3) are breakpoints too.
+            const FieldPieces kernel_pieces = kernel_->pieces(element.radius());
+            for (int k = 1; k < kernel_pieces.count; ++k)
+                add_level_crossings(slices.distance_squared(piece, piece.t_begin), kernel_pieces.pieces[std::size_t(k)].r2_begin,
+                                    std::max(a, piece.t_begin), std::min(b, piece.t_end), breaks);
+        }
+    };
+    include(elements_[index], *own);
+    for (std::uint32_t j : neighbours_[index]) {
+        // Widen by a relative margin: the box test must never reject an element the exact slicing would keep.
+        const double margin = 1e-9 * (1 + std::max(std::abs(a), std::abs(b)));
+        if (!segment_meets_box(elements_[j].support_bounds(), origin, direction, a - margin, b + margin)) continue;
+        if (const auto slices = MetacubeRaySlices::slice(elements_[j], origin, direction)) include(elements_[j], *slices);
+    }
+    breaks.push_back(a);
+    breaks.push_back(b);
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+
+    // F − T on one piece [s0, s1], as a polynomial in u = t − s0 when every active kernel piece is polynomial.
+    const auto field_at = [&](double t) {
+        double sum = -threshold_;
+        for (const ActiveElement& e : active) {
+            const RegionPiece* piece = piece_at(e.slices, t);
+            if (!piece) continue;
+            if (e.element->is_hard_cube()) {
+                if (piece->region == std::array<int, 3>{0, 0, 0}) sum += e.element->weight();
+                continue;
+            }
+            sum += e.element->weight() * kernel_->value(e.slices.distance_squared(*piece, t)(t), e.element->radius());
+        }
+        return sum;
+    };
+
+    // The field just before the interval, so that a hard cube's step at its very entry counts as a crossing.
+    double previous_end_value = a > t_min ? field_at(a - 1e-12 * (1 + std::abs(a))) : std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t p = 0; p + 1 < breaks.size(); ++p) {
+        const double s0 = breaks[p], s1 = breaks[p + 1];
+        if (!(s1 > s0)) continue;
+        ++work.pieces;
+        const double middle = 0.5 * (s0 + s1);
+        // Every kernel is non-increasing in r²: the field on the piece lies between its values at the largest
+        // and smallest r² of each element. If T is out of that range, there is no crossing (and no step at s0
+        // matters either, as both sides of s0 lie on the same side of T only if the bounds say so).
+        double low = -threshold_, high = -threshold_;
+        for (const ActiveElement& e : active) {
+            const RegionPiece* piece = piece_at(e.slices, middle);
+            if (!piece) continue;
+            const double w = e.element->weight();
+            if (e.element->is_hard_cube()) {
+                if (piece->region == std::array<int, 3>{0, 0, 0}) low += w, high += w;
+                continue;
+            }
+            const QuadraticAbout q = e.slices.distance_squared(*piece, s0);
+            const double vertex = q.c2 > 0 ? std::clamp(s0 - q.c1 / (2 * q.c2), s0, s1) : s0;
+            const double q_min = std::max(0.0, std::min({q(s0), q(s1), q(vertex)}));
+            const double q_max = std::max(q(s0), q(s1));
+            const double f_high = w * kernel_->value(q_min, e.element->radius());
+            const double f_low = w * kernel_->value(q_max, e.element->radius());
+            low += std::min(f_low, f_high);
+            high += std::max(f_low, f_high);
+        }
+        const double slack = 1e-12 * (std::abs(low) + std::abs(high) + threshold_);
+        if (high < -slack || low > slack) {
+            const bool step_at_start = std::isfinite(previous_end_value) && (previous_end_value < 0) != (low < 0) && s0 > t_min;
+            if (step_at_start) {
+                ++work.roots;
+                return s0;
+            }
+            previous_end_value = low;  // same sign as the whole piece
+            continue;
+        }
+        Polynomial sum{-threshold_};
+        bool polynomial = true;
+        double lipschitz = 0;  // bound on |dF/dt| over the piece, for the non-polynomial search
+        for (const ActiveElement& e : active) {
+            const RegionPiece* piece = piece_at(e.slices, middle);
+            if (!piece) continue;
+            if (e.element->is_hard_cube()) {
+                if (piece->region == std::array<int, 3>{0, 0, 0}) sum += Polynomial{e.element->weight()};
+                continue;
+            }
+            const QuadraticAbout q = e.slices.distance_squared(*piece, s0);
+            const double r2_middle = q(middle);
+            const FieldPieces kernel_pieces = kernel_->pieces(e.element->radius());
+            const FieldPiece* kernel_piece = nullptr;
+            for (const FieldPiece& kp : kernel_pieces.span())
+                if (r2_middle >= kp.r2_begin && r2_middle <= kp.r2_end) kernel_piece = &kp;
+            if (!kernel_piece) continue;  // beyond the support on this piece
+            if (kernel_piece->is_polynomial) {
+                sum += e.element->weight() * compose_with_quadratic(*kernel_piece, Polynomial{q.c0, q.c1, q.c2});
+            } else {
+                polynomial = false;
+            }
+            // |d/dt w f(q(t))| ≤ |w| · max|f'| · max|q'|; f is convex non-increasing in r², so max|f'| is at min q.
+            const double vertex = q.c2 > 0 ? std::clamp(s0 - q.c1 / (2 * q.c2), s0, s1) : s0;
+            const double q_min = std::max(0.0, std::min({q(s0), q(s1), q(vertex)}));
+            const double slope = std::max(std::abs(q.c1), std::abs(q.c1 + 2 * q.c2 * (s1 - s0)));
+            lipschitz += std::abs(e.element->weight()) * std::abs(kernel_->derivative(q_min, e.element->radius())) * slope;
+        }
+
+        // A step (hard cube boundary) across the breakpoint is a crossing at the breakpoint itself.
+        const double start_value = polynomial ? sum.evaluate(0) : field_at(s0 + 0.5 * (s1 - s0) * 1e-12);
+        if (std::isfinite(previous_end_value) && (previous_end_value < 0) != (start_value < 0) && s0 > t_min) {
+            ++work.roots;
+            return s0;
+        }
+
+        std::optional<double> root;
+        if (polynomial) {
+            ++work.polynomial_solves;
+            if (const auto found = first_root(sum, 0, s1 - s0)) {
+                const double t = s0 + found->t;
+                if (!found->tangent && t > t_min && t < t_max) root = t;
+            }
+            previous_end_value = sum.evaluate(s1 - s0);
+        } else {
+            ++work.lipschitz_searches;
+            // Subdivide until a sign change brackets a root, or the Lipschitz bound proves there is none.
+            struct Span {
+                double lo, hi, f_lo, f_hi;
+            };
+            Span stack[64];
+            int top = 0;
+            stack[top++] = {s0, s1, field_at(s0), field_at(s1)};
+            while (top > 0 && !root) {
+                const Span span = stack[--top];
+                if ((span.f_lo < 0) != (span.f_hi < 0)) {
+                    double lo = span.lo, hi = span.hi, f_lo = span.f_lo;
+                    for (int i = 0; i < 200 && hi - lo > 1e-13 * (1 + std::abs(hi)); ++i) {
+                        const double mid = 0.5 * (lo + hi);
+                        const double f_mid = field_at(mid);
+                        if ((f_mid < 0) == (f_lo < 0)) {
+                            lo = mid;
+                            f_lo = f_mid;
+                        } else {
+                            hi = mid;
+                        }
+                    }
+                    if (hi > t_min && hi < t_max) root = hi;
+                    continue;
+                }
+                if (std::abs(span.f_lo) + std::abs(span.f_hi) > lipschitz * (span.hi - span.lo)) continue;
+                if (top + 2 > 64 || span.hi - span.lo < 1e-13 * (1 + std::abs(span.hi))) continue;
+                const double mid = 0.5 * (span.lo + span.hi);
+                const double f_mid = field_at(mid);
+                stack[top++] = {mid, span.hi, f_mid, span.f_hi};  // the nearer half is searched first
+                stack[top++] = {span.lo, mid, span.f_lo, f_mid};
+            }
+            previous_end_value = field_at(s1);
+        }
+        if (root) {
+            ++work.roots;
+            return root;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace isotrace

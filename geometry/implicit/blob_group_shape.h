@@ -1,0 +1,34 @@
+#pragma once
+// The "blobs" shape: a BlobGroup as one Embree user geometry, one primitive per element, bounds = the element's
+// support. Each element's intersect callback reports the first crossing of the summed field within its own
+// support; Embree's shrinking t_far makes the nearest of them the hit.
+#include "geometry/implicit/blob_group.h"
+#include "renderer/plugin/shape.h"
+
+namespace isotrace {
+
+class BlobGroupShape final : public Shape {
+public:
+    explicit BlobGroupShape(BlobGroup group);
+
+    std::string type_name() const override { return "blobs"; }
+    std::size_t primitive_count() const override { return group_.elements().size(); }
+    Bounds3f bounds() const override;
+    bool counts_intersection_tests() const override { return true; }
+    bool can_bake(const Transform& to_world) const override { return to_world.similarity_scale() > 0; }
+    void bake(const Transform& to_world) override { group_.bake(to_world, to_world.similarity_scale()); }
+    RTCGeometry create_geometry(RTCDevice device) override;
+
+    const BlobGroup& group() const { return group_; }
+
+private:
+    static void bounds_callback(const RTCBoundsFunctionArguments* args);
+    static void intersect_callback(const RTCIntersectFunctionNArguments* args);
+    static void occluded_callback(const RTCOccludedFunctionNArguments* args);
+
+    BlobGroup group_;
+    int counter_slot_ = 0;
+    int pieces_slot_ = 0, solves_slot_ = 0, searches_slot_ = 0, roots_slot_ = 0;
+};
+
+}  // namespace isotrace

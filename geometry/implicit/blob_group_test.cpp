@@ -1,0 +1,255 @@
+// BlobGroup ray queries against closed forms: a lone element of every kernel is a sphere (metaball) or a
+// rounded box (metacube) of the kernel's iso-radius; rays from inside report the exit; blended pairs agree with
+// a dense-sampling reference.
+#include "geometry/implicit/blob_group.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "geometry/sphere/sphere_intersection.h"
+
+namespace isotrace {
+namespace {
+
+BlobGroup lone(const Metacube& element, const std::string& kernel, double threshold = 0.5) {
+    return BlobGroup({element}, make_field_function(kernel, 4.0), threshold);
+}
+
+TEST(BlobGroup, LoneMetaballOfEveryKernelIsASphereOfTheIsoRadius) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (const std::string_view name : field_function_names()) {
+        const std::string kernel(name);
+        const Vec3d centre(0.3, -0.2, 0.5);
+        const double radius = 1.3, weight = 1.0;
+        const BlobGroup group = lone(Metacube::metaball(centre, radius, weight), kernel);
+        const double iso = *group.kernel().iso_radius(radius, weight, 0.5);
+        int hits = 0;
+        for (int i = 0; i < 500; ++i) {
+            const Vec3d origin = centre + normalize(Vec3d(unit(random), unit(random), unit(random))) * 4.0;
+            // Aim near the centre, some rays grazing (offsets up to 1.05 * iso), direction not unit length.
+            const Vec3d aim = centre + Vec3d(unit(random), unit(random), unit(random)) * (0.6 * iso);
+            const Vec3d direction = (aim - origin) * 0.37;
+            const auto expected = intersect_sphere(origin, direction, centre, iso);
+            BlobQueryWork work;
+            const auto t = group.first_crossing(0, origin, direction, 0, 1e30, work);
+            ASSERT_EQ(t.has_value(), expected.has_value()) << kernel << " ray " << i;
+            if (!t) continue;
+            ++hits;
+            EXPECT_NEAR(*t, expected->t0, 1e-5 * expected->t0) << kernel << " ray " << i;
+            const Vec3d p = origin + direction * *t;
+            const Vec3d n = group.normal(0, p);
+            EXPECT_NEAR(dot(n, normalize(p - centre)), 1.0, 1e-4) << kernel;
+        }
+        EXPECT_GT(hits, 300) << kernel;
+    }
+}
+
+TEST(BlobGroup, RayStartingInsideReportsTheExit) {
+    const BlobGroup group = lone(Metacube::metaball({0, 0, 0}, 1.0, 1.0), "kim");
+    const double iso = *group.kernel().iso_radius(1.0, 1.0, 0.5);
+    BlobQueryWork work;
+    const auto t = group.first_crossing(0, {0.1, 0, 0}, {1, 0, 0}, 0, 1e30, work);
+    ASSERT_TRUE(t);
+    EXPECT_NEAR(*t, iso - 0.1, 1e-9);
+}
+
+}  // namespace
+}  // namespace isotrace
+
+#include "renderer/scene/loaded_scene.h"
+#include "tests/support/scene_files.h"
+
+namespace isotrace {
+namespace {
+
+// Dense sampling of the total field along the ray, then bisection: slow, simple and independent of the
+// piecewise-polynomial machinery.
+std::optional<double> reference_crossing(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction,
+                                         double t_max, double step) {
+    const auto total = [&](double t) {
+        double sum = -group.threshold();
+        const Vec3d p = origin + direction * t;
+        for (const Metacube& element : group.elements()) sum += element.field(group.kernel(), p);
+        return sum;
+    };
+    double previous_t = 0, previous = total(0);
+    for (double t = step; t <= t_max; t += step) {
+        const double value = total(t);
+        if ((value < 0) != (previous < 0)) {
+            double lo = previous_t, hi = t;
+            for (int i = 0; i < 80; ++i) {
+                const double mid = 0.5 * (lo + hi);
+                if ((total(mid) < 0) == (previous < 0)) lo = mid;
+                else hi = mid;
+            }
+            return 0.5 * (lo + hi);
+        }
+        previous_t = t;
+        previous = value;
+    }
+    return std::nullopt;
+}
+
+// The nearest crossing over all elements, as Embree finds it (each element's query shrinks t_far).
+std::optional<double> nearest_crossing(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction) {
+    std::optional<double> best;
+    BlobQueryWork work;
+    for (std::size_t i = 0; i < group.elements().size(); ++i)
+        if (const auto t = group.first_crossing(i, origin, direction, 0, best.value_or(1e30), work)) best = t;
+    return best;
+}
+
+BlobGroup random_group(int count, std::uint32_t seed, const std::string& kernel) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> position(-1.5, 1.5), radius(0.35, 0.7), half(0.0, 0.25), weight(0.7, 1.3);
+    std::vector<Metacube> elements;
+    for (int i = 0; i < count; ++i) {
+        OrientedBox box;
+        box.centre = {position(random), position(random), position(random)};
+        const double d = i % 3 == 0 ? half(random) : 0.0;  // a third are metacubes
+        box.half_size = {d, d * 0.7, d * 1.2};
+        elements.emplace_back(box, radius(random), weight(random));
+    }
+    return BlobGroup(std::move(elements), make_field_function(kernel, 4.0), 0.5);
+}
+
+// A 100-element group seen through a grid of parallel rays: the hit mask is identical to the brute-force
+// reference and every depth agrees to 1e-4.
+TEST(BlobGroup, HundredElementImageMatchesBruteForceReference) {
+    for (const std::string kernel : {"kim", "wyvill", "nishimura"}) {
+        const BlobGroup group = random_group(100, 5, kernel);
+        int hits = 0;
+        for (int row = 0; row < 16; ++row)
+            for (int column = 0; column < 16; ++column) {
+                const Vec3d origin(-2.4 + 4.8 * (column + 0.5) / 16, -2.4 + 4.8 * (row + 0.5) / 16, 5.0);
+                const Vec3d direction(0.05, 0.02, -1.0);
+                const auto ours = nearest_crossing(group, origin, direction);
+                const auto reference = reference_crossing(group, origin, direction, 10.0, 3e-3);
+                ASSERT_EQ(ours.has_value(), reference.has_value()) << kernel << " " << row << "," << column;
+                if (!ours) continue;
+                ++hits;
+                EXPECT_NEAR(*ours, *reference, 1e-4) << kernel << " " << row << "," << column;
+            }
+        EXPECT_GT(hits, 50) << kernel;
+    }
+}
+
+// Rays that start inside cross the surface an odd number of times before leaving the group.
+TEST(BlobGroup, RaysFromInsideCrossAnOddNumberOfTimes) {
+    const BlobGroup group = random_group(40, 9, "kim");
+    std::mt19937 random(2);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int tested = 0;
+    for (const Metacube& element : group.elements()) {
+        const Vec3d origin = element.skeleton().centre;
+        double inside = -group.threshold();
+        for (const Metacube& e : group.elements()) inside += e.field(group.kernel(), origin);
+        if (inside <= 0) continue;  // carved or too weak here
+        const Vec3d direction = normalize(Vec3d(unit(random), unit(random), unit(random)));
+        int crossings = 0;
+        double t = 0;
+        while (const auto next = [&] {
+            std::optional<double> best;
+            BlobQueryWork work;
+            for (std::size_t i = 0; i < group.elements().size(); ++i)
+                if (const auto c = group.first_crossing(i, origin, direction, t, best.value_or(1e30), work)) best = c;
+            return best;
+        }()) {
+            ++crossings;
+            t = *next + 1e-9;
+        }
+        EXPECT_EQ(crossings % 2, 1);
+        ++tested;
+    }
+    EXPECT_GT(tested, 20);
+}
+
+// Two metaballs at the distance where their necks just join: the crossing along the axis through the neck is
+// found exactly where the closed form says.
+TEST(BlobGroup, TwoBallNeckNearTheTopologyChange) {
+    // Kim kernel, R = 1, w = 1: at the midpoint the field is 2 (1 − s²)³ with s = half the distance; the neck
+    // closes when that equals T.
+    const double threshold = 0.5;
+    const double s_join = std::sqrt(1 - std::cbrt(threshold / 2));
+    for (const double factor : {0.999, 1.001}) {
+        const double half = s_join * factor;
+        const BlobGroup group({Metacube::metaball({-half, 0, 0}, 1, 1), Metacube::metaball({half, 0, 0}, 1, 1)},
+                              make_field_function("kim", 4.0), threshold);
+        // A ray along y through the midpoint hits the neck only when it is closed (factor < 1).
+        const auto t = nearest_crossing(group, {0, -3, 0}, {0, 1, 0});
+        EXPECT_EQ(t.has_value(), factor < 1) << factor;
+        const auto reference = reference_crossing(group, {0, -3, 0}, {0, 1, 0}, 6, 1e-4);
+        EXPECT_EQ(t.has_value(), reference.has_value());
+        if (t && reference) {
+            EXPECT_NEAR(*t, *reference, 1e-6);
+        }
+    }
+}
+
+// A similarity transform is baked into the elements; a non-uniform scale puts the group in an Embree instance,
+// where a lone metaball must become the exact ellipsoid.
+TEST(BlobGroup, InstancedAndBakedGroupsAgree) {
+    const std::string elements = R"([{"center": [0, 0, 0], "radius": 1}, {"center": [0.8, 0.2, 0], "radius": 0.9, "half_size": 0.2}])";
+    const auto scene_with = [&](const std::string& transform) {
+        return R"({"isotrace": 1, "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
+          "materials": {"m": {"type": "diffuse"}},
+          "objects": [{"material": "m", "transform": )" + transform +
+               R"(, "shape": {"type": "blobs", "elements": )" + elements + R"(}}]})";
+    };
+    testing::SceneFile baked(scene_with(R"({"translate": [0.3, 0, 0], "scale": 2})"));
+    const auto loaded = load_scene(baked.path());
+    EXPECT_EQ(loaded->scene->build_statistics().instanced_objects, 0u);
+    testing::SceneFile stretched(R"({"isotrace": 1, "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
+          "materials": {"m": {"type": "diffuse"}},
+          "objects": [{"material": "m", "transform": {"scale": [2, 1, 1]},
+                       "shape": {"type": "blobs", "elements": [{"center": [0, 0, 0], "radius": 1}]}}]})");
+    const auto instanced = load_scene(stretched.path());
+    EXPECT_EQ(instanced->scene->build_statistics().instanced_objects, 1u);
+    const double iso = std::sqrt(1 - std::cbrt(0.5));
+    Ray ray;
+    ray.origin = {-5, 0.1f, 0};
+    ray.direction = {1, 0, 0};
+    const auto hit = instanced->scene->intersect(ray, RayKind::Camera);
+    ASSERT_TRUE(hit);
+    // (x / 2)² + y² = iso² on the ellipsoid
+    EXPECT_NEAR(hit->t, 5 - 2 * std::sqrt(iso * iso - 0.01), 1e-4);
+    // The baked group: ray along x through its centre hits the first element's sphere scaled by 2.
+    ray.origin = {-5, 0, 0};
+    const auto baked_hit = loaded->scene->intersect(ray, RayKind::Camera);
+    ASSERT_TRUE(baked_hit);
+    EXPECT_NEAR(baked_hit->geometric_normal.x, -1.0f, 1e-4f);
+}
+
+TEST(BlobGroup, BadElementsAndThresholdsAreReported) {
+    const auto load = [](const std::string& shape) {
+        testing::SceneFile file(R"({"isotrace": 1, "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
+          "materials": {"m": {"type": "diffuse"}}, "objects": [{"material": "m", "shape": )" + shape + "}]}");
+        return load_scene(file.path());
+    };
+    const auto message_of = [&](const std::string& shape) {
+        try {
+            load(shape);
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message_of(R"({"type": "blobs", "elements": [{"center": [0, 0, 0], "radius": 1}, {"center": [0, 0, 0], "radius": -1}]})")
+                  .find("elements[1].radius"),
+              std::string::npos);
+    EXPECT_NE(message_of(R"({"type": "blobs", "elements": [{"center": [0, 0, 0], "radius": 0}]})").find("elements[0]"),
+              std::string::npos);
+    EXPECT_NE(message_of(R"({"type": "blobs", "threshold": 0, "elements": [{"center": [0, 0, 0], "radius": 1}]})")
+                  .find("threshold"),
+              std::string::npos);
+    EXPECT_NE(message_of(R"({"type": "blobs", "field": "kimm", "elements": [{"center": [0, 0, 0], "radius": 1}]})")
+                  .find("did you mean \"kim\""),
+              std::string::npos);
+    EXPECT_NE(message_of(R"({"type": "blobs"})").find("needs"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,0 +1,17 @@
+#pragma once
+// Kim's sextic (Kim & Kim 1996), the kernel the MetaCube paper renders with: f = (1 − x)³, x = r²/R².
+// A cubic in r² (degree 6 in t along a ray); C² at r = R.
+#include "geometry/implicit/field_function.h"
+
+namespace isotrace {
+
+class KimSextic final : public FieldFunction {
+public:
+    std::string_view name() const override { return "kim"; }
+    double unit_value(double x) const override;
+    double unit_derivative(double x) const override;
+    std::span<const FieldPiece> unit_pieces() const override;
+    double unit_iso_level(double level) const override;
+};
+
+}  // namespace isotrace

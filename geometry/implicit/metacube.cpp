@@ -1,0 +1,89 @@
+#include "geometry/implicit/metacube.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "geometry/implicit/parameter_check.h"
+
+namespace isotrace {
+namespace {
+
+// Scene rotations are composed in double, so their axes are orthonormal to ~1e-15; anything worse is a mistake.
+constexpr double kOrthonormalityTolerance = 1e-9;
+
+bool is_orthonormal(const std::array<Vec3d, 3>& axes) {
+    for (int i = 0; i < 3; ++i) {
+        if (!is_finite(axes[i])) return false;
+        for (int j = i; j < 3; ++j)
+            if (std::abs(dot(axes[i], axes[j]) - (i == j ? 1 : 0)) > kOrthonormalityTolerance) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+Vec3d OrientedBox::to_local(const Vec3d& world_point) const { return to_local_vector(world_point - centre); }
+
+Vec3d OrientedBox::to_local_vector(const Vec3d& world_vector) const {
+    return {dot(axes[0], world_vector), dot(axes[1], world_vector), dot(axes[2], world_vector)};
+}
+
+Vec3d OrientedBox::to_world_vector(const Vec3d& local_vector) const {
+    return axes[0] * local_vector.x + axes[1] * local_vector.y + axes[2] * local_vector.z;
+}
+
+Metacube::Metacube(const OrientedBox& skeleton, double radius, double weight)
+    : skeleton_(skeleton), radius_(radius), weight_(weight) {
+    require_components(skeleton.centre, [](double c) { return std::isfinite(c); }, "centre", "must be finite");
+    if (!is_orthonormal(skeleton.axes))
+        throw std::invalid_argument("rotation: the local axes must be finite and orthonormal");
+    require_components(skeleton.half_size, [](double d) { return std::isfinite(d) && d >= 0; }, "half_size",
+                       "every component must be finite and >= 0");
+    require_parameter(std::isfinite(radius) && radius >= 0, "radius", "must be finite and >= 0", radius);
+    require_parameter(std::isfinite(weight), "weight", "must be finite", weight);
+    const Vec3d& d = skeleton.half_size;
+    require_parameter(radius > 0 || (d.x > 0 && d.y > 0 && d.z > 0), "radius",
+                      "may be 0 (a hard cube) only when every half_size is > 0", radius);
+}
+
+Metacube Metacube::metaball(const Vec3d& centre, double radius, double weight) {
+    OrientedBox point;
+    point.centre = centre;
+    return Metacube(point, radius, weight);
+}
+
+Vec3d Metacube::offset_beyond_box(const Vec3d& world_point) const {
+    const Vec3d p = skeleton_.to_local(world_point);
+    Vec3d offset;
+    for (int k = 0; k < 3; ++k) offset[k] = std::copysign(std::max(0.0, std::abs(p[k]) - skeleton_.half_size[k]), p[k]);
+    return offset;
+}
+
+double Metacube::distance_squared(const Vec3d& point) const {
+    const Vec3d offset = offset_beyond_box(point);
+    return dot(offset, offset);
+}
+
+double Metacube::field(const FieldFunction& kernel, const Vec3d& point) const {
+    const double r2 = distance_squared(point);
+    if (is_hard_cube()) return r2 == 0 ? weight_ : 0;
+    return weight_ * kernel.value(r2, radius_);
+}
+
+Vec3d Metacube::field_gradient(const FieldFunction& kernel, const Vec3d& point) const {
+    if (is_hard_cube()) return {};
+    const Vec3d offset = offset_beyond_box(point);
+    const double slope = weight_ * kernel.derivative(dot(offset, offset), radius_);
+    return skeleton_.to_world_vector(offset * (2 * slope));
+}
+
+// The support is the box swept by a ball of radius R: per world axis j the box reaches Σₖ |axes[k]ⱼ|·dₖ from
+// the centre, and the ball adds R whatever the rotation.
+WorldBounds Metacube::support_bounds() const {
+    Vec3d reach{radius_, radius_, radius_};
+    for (int k = 0; k < 3; ++k) reach += abs(skeleton_.axes[k]) * skeleton_.half_size[k];
+    return {skeleton_.centre - reach, skeleton_.centre + reach};
+}
+
+}  // namespace isotrace

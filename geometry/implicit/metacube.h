@@ -1,0 +1,70 @@
+#pragma once
+// A skeletal element of a blob group: the metacube M = (C, d, R, w) of Kim & Kim 2000, with two extensions
+// beyond the paper: the box may be rotated (a local frame) and non-uniform (half-sizes dx, dy, dz).
+//
+// Its field at P is w·f(dist²), dist = the Euclidean distance from P to the solid box (the skeleton). In the
+// box's local coordinates p, dist² = Σₖ max(0, |pₖ| − dₖ)²; this one formula is the paper's face, edge and
+// vertex regions (one, two or three axes with |pₖ| > dₖ) and is 0 inside the box. Special cases:
+//   - d = 0: a metaball (dist = |P − C|). Use Metacube::metaball.
+//   - R = 0: a hard cube, the paper's limit. Its field is w on the closed box and 0 outside (the limit of
+//     w·f(dist²/R²) as R → 0), a step with no gradient: the intersector treats it as the exact box skeleton()
+//     and takes normals from the box faces. Every half-size must then be > 0 (a flat box would be invisible).
+//   - w < 0: carving (negative density), allowed.
+#include <array>
+
+#include "geometry/implicit/field_function.h"
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+// A solid box with orthonormal local axes (world directions; a reflection is harmless, the box is symmetric).
+struct OrientedBox {
+    Vec3d centre;
+    std::array<Vec3d, 3> axes = {Vec3d{1, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0, 0, 1}};
+    Vec3d half_size;
+
+    // Coordinates of a world point along the axes, relative to the centre.
+    Vec3d to_local(const Vec3d& world_point) const;
+    Vec3d to_local_vector(const Vec3d& world_vector) const;
+    Vec3d to_world_vector(const Vec3d& local_vector) const;
+};
+
+// An axis-aligned world box, lower ≤ upper.
+struct WorldBounds {
+    Vec3d lower, upper;
+};
+
+class Metacube {
+public:
+    // Throws std::invalid_argument naming the field at fault: "centre" (not finite), "rotation" (axes not finite
+    // and orthonormal), "half_size" (not finite and ≥ 0), "radius" (not finite and ≥ 0, or 0 with a half-size 0),
+    // "weight" (not finite).
+    Metacube(const OrientedBox& skeleton, double radius, double weight);
+    static Metacube metaball(const Vec3d& centre, double radius, double weight);
+
+    const OrientedBox& skeleton() const { return skeleton_; }
+    double radius() const { return radius_; }
+    double weight() const { return weight_; }
+    bool is_hard_cube() const { return radius_ == 0; }
+
+    // Squared distance from a world point to the solid box.
+    double distance_squared(const Vec3d& point) const;
+    // w·f(dist²), or for a hard cube w on the closed box and 0 outside.
+    double field(const FieldFunction& kernel, const Vec3d& point) const;
+    // ∇(w·f(dist²)) = w·f'(dist²)·∇dist²; the surface normal of a blob group is −Σ of these. Zero for a hard
+    // cube (see above) and wherever dist ≥ R.
+    Vec3d field_gradient(const FieldFunction& kernel, const Vec3d& point) const;
+    // The tight world bounds of the support {dist ≤ R} (the per-primitive bounds for Embree).
+    WorldBounds support_bounds() const;
+
+private:
+    // Per local axis, the signed amount by which p lies beyond the box's slab (0 inside the slab): its squared
+    // length is dist² and twice it is ∇dist² in local coordinates.
+    Vec3d offset_beyond_box(const Vec3d& world_point) const;
+
+    OrientedBox skeleton_;
+    double radius_;
+    double weight_;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,136 @@
+#include "geometry/implicit/metacube_ray_slices.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace isotrace {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The part of [begin, end] where the convex quadratic q is ≤ level, if any.
+std::optional<std::pair<double, double>> where_at_most(const QuadraticAbout& q, double level, double begin,
+                                                       double end) {
+    const double c = q.c0 - level;
+    double low = -kInfinity, high = kInfinity;  // roots of c2·s² + c1·s + c in s = t − t_ref
+    if (q.c2 == 0) {
+        // No axis that contributes to dist² moves along the ray (then c1 = 0 too): q is constant.
+        if (c > 0) return std::nullopt;
+    } else {
+        const double discriminant = q.c1 * q.c1 - 4 * q.c2 * c;
+        if (discriminant < 0) return std::nullopt;
+        // The two roots without cancellation: m/c2 and c/m.
+        const double m = -0.5 * (q.c1 + std::copysign(std::sqrt(discriminant), q.c1));
+        if (m == 0) {
+            low = high = 0;  // c1 = c = 0: a double root at t_ref
+        } else {
+            low = std::min(m / q.c2, c / m);
+            high = std::max(m / q.c2, c / m);
+        }
+    }
+    const double from = std::max(begin, q.t_ref + low), to = std::min(end, q.t_ref + high);
+    if (from > to) return std::nullopt;
+    return std::pair{from, to};
+}
+
+}  // namespace
+
+std::optional<MetacubeRaySlices> MetacubeRaySlices::slice(const Metacube& element, const Vec3d& origin,
+                                                          const Vec3d& direction) {
+    MetacubeRaySlices slices;
+    const OrientedBox& box = element.skeleton();
+    const Vec3d o = box.to_local(origin), v = box.to_local_vector(direction), d = box.half_size;
+    slices.local_origin_ = o;
+    slices.local_direction_ = v;
+    slices.half_size_ = d;
+    const double radius = element.radius();
+
+    // The box grown by R contains the support: clip the line to it first (slab test).
+    double t0 = -kInfinity, t1 = kInfinity;
+    for (int k = 0; k < 3; ++k) {
+        const double reach = d[k] + radius;
+        if (v[k] == 0) {
+            if (std::abs(o[k]) > reach) return std::nullopt;
+            continue;
+        }
+        const double a = (-reach - o[k]) / v[k], b = (reach - o[k]) / v[k];
+        t0 = std::max(t0, std::min(a, b));
+        t1 = std::min(t1, std::max(a, b));
+    }
+    if (!(t0 < t1) || !std::isfinite(t0) || !std::isfinite(t1)) return std::nullopt;
+
+    // Breakpoints: crossings of the face planes pₖ = ±dₖ (an axis with dₖ = 0 has no slab, so no change of form).
+    // At most eight cuts: inserting each in order keeps them sorted.
+    std::array<double, 8> cuts{};
+    int cut_count = 0;
+    auto add_cut = [&](double t) {
+        int i = cut_count++;
+        for (; i > 0 && cuts[i - 1] > t; --i) cuts[i] = cuts[i - 1];
+        cuts[i] = t;
+    };
+    add_cut(t0);
+    add_cut(t1);
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0 || v[k] == 0) continue;
+        for (const double plane : {-d[k], d[k]}) {
+            const double t = (plane - o[k]) / v[k];
+            if (t0 < t && t < t1) add_cut(t);
+        }
+    }
+
+    // Regions between the cuts, then the exact support: the first and last t where dist² ≤ R² (one interval by
+    // convexity, so the union of the per-piece solutions is its hull).
+    double t_in = kInfinity, t_out = -kInfinity;
+    for (int i = 0; i + 1 < cut_count; ++i) {
+        RegionPiece piece{cuts[i], cuts[i + 1], {}};
+        if (!(piece.t_begin < piece.t_end)) continue;
+        piece.region = slices.region_at(0.5 * (piece.t_begin + piece.t_end));
+        const auto inside =
+            where_at_most(slices.distance_squared(piece, piece.t_begin), radius * radius, piece.t_begin, piece.t_end);
+        if (inside) {
+            t_in = std::min(t_in, inside->first);
+            t_out = std::max(t_out, inside->second);
+        }
+        slices.pieces_[slices.count_++] = piece;
+    }
+    if (!(t_in < t_out)) return std::nullopt;
+
+    int kept = 0;
+    for (int i = 0; i < slices.count_; ++i) {
+        RegionPiece piece = slices.pieces_[i];
+        piece.t_begin = std::max(piece.t_begin, t_in);
+        piece.t_end = std::min(piece.t_end, t_out);
+        if (piece.t_begin < piece.t_end) slices.pieces_[kept++] = piece;
+    }
+    slices.count_ = kept;
+    return slices;
+}
+
+std::array<int, 3> MetacubeRaySlices::region_at(double t) const {
+    std::array<int, 3> region{};
+    for (int k = 0; k < 3; ++k) {
+        const double p = local_origin_[k] + local_direction_[k] * t;
+        if (half_size_[k] == 0 || p > half_size_[k]) region[k] = 1;
+        else if (p < -half_size_[k]) region[k] = -1;
+    }
+    return region;
+}
+
+// On the piece, dist² = Σ over the axes with Uₖ ≠ 0 of (pₖ(t) − Uₖ·dₖ)², each term a square of a linear function
+// of t; expanding it about t_ref keeps its offset aₖ small.
+QuadraticAbout MetacubeRaySlices::distance_squared(const RegionPiece& piece, double t_ref) const {
+    QuadraticAbout q{t_ref};
+    for (int k = 0; k < 3; ++k) {
+        if (piece.region[k] == 0) continue;
+        const double v = local_direction_[k];
+        const double a = local_origin_[k] + v * t_ref - piece.region[k] * half_size_[k];
+        q.c0 += a * a;
+        q.c1 += 2 * a * v;
+        q.c2 += v * v;
+    }
+    return q;
+}
+
+}  // namespace isotrace

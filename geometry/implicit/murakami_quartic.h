@@ -1,0 +1,17 @@
+#pragma once
+// Murakami's quartic (Murakami & Ichihara 1987): f = (1 − x)², x = r²/R². A quadratic in r² (degree 4 in t
+// along a ray); C¹ at r = R.
+#include "geometry/implicit/field_function.h"
+
+namespace isotrace {
+
+class MurakamiQuartic final : public FieldFunction {
+public:
+    std::string_view name() const override { return "murakami"; }
+    double unit_value(double x) const override;
+    double unit_derivative(double x) const override;
+    std::span<const FieldPiece> unit_pieces() const override;
+    double unit_iso_level(double level) const override;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,18 @@
+#pragma once
+// Wyvill's soft-object sextic (Wyvill, McPheeters & Wyvill 1986): f = 1 − 22/9·x + 17/9·x² − 4/9·x³ with
+// x = r²/R², which factors as (1 − x)²·(9 − 4x)/9; f(R/2) = 1/2. A cubic in r² (degree 6 in t along a ray);
+// C¹ at r = R.
+#include "geometry/implicit/field_function.h"
+
+namespace isotrace {
+
+class WyvillSextic final : public FieldFunction {
+public:
+    std::string_view name() const override { return "wyvill"; }
+    double unit_value(double x) const override;
+    double unit_derivative(double x) const override;
+    std::span<const FieldPiece> unit_pieces() const override;
+    double unit_iso_level(double level) const override;
+};
+
+}  // namespace isotrace

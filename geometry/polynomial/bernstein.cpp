@@ -1,0 +1,49 @@
+#include "geometry/polynomial/bernstein.h"
+
+#include <cmath>
+#include <limits>
+
+namespace isotrace {
+namespace {
+
+constexpr auto kBinomials = [] {
+    std::array<std::array<double, kMaxPolynomialDegree + 1>, kMaxPolynomialDegree + 1> table{};
+    for (int n = 0; n <= kMaxPolynomialDegree; ++n) {
+        table[n][0] = 1;
+        for (int k = 1; k <= n; ++k) table[n][k] = table[n - 1][k - 1] + (k < n ? table[n - 1][k] : 0);
+    }
+    return table;
+}();
+
+}  // namespace
+
+BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval) {
+    const int n = on_unit_interval.degree();
+    // Each value is a sum of k+1 products with rounded weights; 2n+4 ulps of the absolute sum covers it.
+    const double relative_error = (2 * n + 4) * std::numeric_limits<double>::epsilon();
+    BernsteinCoefficients result;
+    result.degree = n;
+    for (int k = 0; k <= n; ++k) {
+        double value = 0, magnitude = 0;
+        for (int i = 0; i <= k; ++i) {
+            const double term = kBinomials[k][i] / kBinomials[n][i] * on_unit_interval[i];
+            value += term;
+            magnitude += std::abs(term);
+        }
+        result.values[k] = value;
+        result.error_bounds[k] = relative_error * magnitude;
+    }
+    return result;
+}
+
+bool bernstein_has_sign_change(const Polynomial& on_unit_interval) {
+    const BernsteinCoefficients bernstein = to_bernstein(on_unit_interval);
+    const bool positive = bernstein.values[0] > 0;
+    for (int k = 0; k <= bernstein.degree; ++k) {
+        if (std::abs(bernstein.values[k]) <= bernstein.error_bounds[k]) return true;
+        if ((bernstein.values[k] > 0) != positive) return true;
+    }
+    return false;
+}
+
+}  // namespace isotrace

@@ -1,0 +1,26 @@
+#pragma once
+// Bernstein form on [0,1] and the conservative "no root here" test built on it: a polynomial is a convex
+// combination of its Bernstein coefficients on [0,1], so if they all share one strict sign so does the polynomial.
+#include <array>
+
+#include "geometry/polynomial/polynomial.h"
+
+namespace isotrace {
+
+struct BernsteinCoefficients {
+    int degree = 0;
+    std::array<double, kMaxPolynomialDegree + 1> values{};
+    // Bound on the rounding error of each value: a coefficient whose |value| is not above it has no trusted sign.
+    std::array<double, kMaxPolynomialDegree + 1> error_bounds{};
+};
+
+// bₖ = Σᵢ₌₀ᵏ C(k,i)/C(n,i)·aᵢ for the polynomial Σ aᵢuⁱ of degree n. The weights are ≤ 1 and exact ratios of
+// small integers, so the conversion is well conditioned for the degrees used here (≤ kMaxPolynomialDegree).
+BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval);
+
+// False only when every Bernstein coefficient on [0,1] is certainly non-zero (beyond its rounding bound) and all
+// have the same sign: then the polynomial has no root in the closed interval [0,1] and the piece can be skipped.
+// True means "may have a root", including coefficients that are zero or too small to trust.
+bool bernstein_has_sign_change(const Polynomial& on_unit_interval);
+
+}  // namespace isotrace

@@ -1,0 +1,89 @@
+// Bernstein conversion on [0,1] and the conservative skip test: it must never skip an interval holding a root.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "geometry/polynomial/bernstein.h"
+#include "geometry/polynomial/polynomial_test_support.h"
+
+namespace isotrace {
+namespace {
+
+TEST(PolynomialBernstein, ConvertsKnownPolynomials) {
+    const BernsteinCoefficients square = to_bernstein(Polynomial{0, 0, 1});  // u² = B₂,₂
+    EXPECT_EQ(square.degree, 2);
+    EXPECT_EQ(square.values[0], 0);
+    EXPECT_EQ(square.values[1], 0);
+    EXPECT_EQ(square.values[2], 1);
+    const BernsteinCoefficients line = to_bernstein(Polynomial{2, -4});  // 2 − 4u: control points 2, −2
+    EXPECT_EQ(line.values[0], 2);
+    EXPECT_EQ(line.values[1], -2);
+    // The end coefficients are the values at the ends, for any polynomial.
+    std::mt19937_64 random(3);
+    for (int degree = 1; degree <= kMaxPolynomialDegree; ++degree) {
+        const Polynomial p = random_polynomial(random, degree).polynomial;
+        const BernsteinCoefficients b = to_bernstein(p);
+        EXPECT_NEAR(b.values[0], p.evaluate(0), 1e-14);
+        EXPECT_NEAR(b.values[degree], p.evaluate(1), 1e-12);
+    }
+}
+
+TEST(PolynomialBernstein, SkipsOnlyWhenEveryCoefficientHasTheSameStrictSign) {
+    EXPECT_FALSE(bernstein_has_sign_change(Polynomial{1, -1, 1}));  // 1 − u + u² > 0
+    EXPECT_FALSE(bernstein_has_sign_change(-1e30 * Polynomial{1, -1, 1}));
+    EXPECT_FALSE(bernstein_has_sign_change(1e-30 * Polynomial::from_roots(std::vector<double>{-0.5, 1.5, 2})));
+    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0.5})));
+    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0.5, 0.5})));  // tangent
+    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0, 3})));  // root at 0
+    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{-2, 1})));  // root at 1
+    EXPECT_TRUE(bernstein_has_sign_change(Polynomial{}));
+    // Conservative: no root in [0,1] but the control polygon crosses zero.
+    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0.5, 0.5}) + Polynomial{0.01}));
+}
+
+// Property: over many random polynomials, every one with a root in [0,1] (known by construction, including roots
+// just inside the ends, double roots, and pieces reparametrised from other intervals) is kept.
+TEST(PolynomialBernstein, NeverSkipsAnIntervalContainingARoot) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    int kept = 0, skipped = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const int degree = 1 + trial % kMaxPolynomialDegree;
+        RandomPolynomial r = random_polynomial(random, degree, -1, 2, 0);
+        switch (trial % 4) {
+        case 0: break;
+        case 1: {  // a root just inside an end
+            if (degree == kMaxPolynomialDegree) break;
+            const double root = uniform(random) < 0.5 ? 1e-13 * uniform(random) : 1 - 1e-13 * uniform(random);
+            r.polynomial = r.polynomial * Polynomial{-root, 1};
+            r.real_roots.push_back(root);
+            break;
+        }
+        case 2: {  // a double root
+            if (degree + 2 > kMaxPolynomialDegree) break;
+            const double root = uniform(random);
+            r.polynomial = r.polynomial * Polynomial::from_roots(std::vector<double>{root, root});
+            r.real_roots.push_back(root);
+            break;
+        }
+        case 3: {  // the same polynomial seen on [a, b] ⊃ its roots, mapped onto [0,1]
+            const double a = -1 + uniform(random), b = a + 0.5 + 2 * uniform(random);
+            r.polynomial = r.polynomial.compose_linear(a, b - a);
+            for (double& root : r.real_roots) root = (root - a) / (b - a);
+            // Mapping rounds the roots by a few ulps: keep only those clearly inside or outside.
+            std::erase_if(r.real_roots, [](double u) { return std::abs(u) < 1e-9 || std::abs(u - 1) < 1e-9; });
+            break;
+        }
+        }
+        r.polynomial = r.polynomial * std::pow(10.0, 60 * uniform(random) - 30);
+        const bool has_root = !roots_inside(r.real_roots, 0, 1).empty();
+        const bool may_have_root = bernstein_has_sign_change(r.polynomial);
+        EXPECT_TRUE(may_have_root || !has_root) << "trial " << trial;
+        (may_have_root ? kept : skipped)++;
+    }
+    EXPECT_GT(skipped, 2000);  // the test is worth having: it does skip
+}
+
+}  // namespace
+}  // namespace isotrace

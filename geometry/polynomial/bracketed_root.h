@@ -1,0 +1,14 @@
+#pragma once
+// Refines a root inside a bracket where the polynomial changes sign: Newton steps while they stay inside the
+// (shrinking) bracket and make progress, bisection otherwise. Always converges; quadratically when Newton works.
+#include "geometry/polynomial/polynomial.h"
+#include "geometry/polynomial/polynomial_root.h"
+
+namespace isotrace {
+
+// Requires lo < hi and value_at_lo, value_at_hi non-zero with opposite signs. Returns t ∈ [lo, hi] with
+// p(t) = 0 or within tolerance.width_at(t) of a sign change of p.
+double refine_bracketed_root(const Polynomial& p, double lo, double hi, double value_at_lo, double value_at_hi,
+                             const RootTolerance& tolerance);
+
+}  // namespace isotrace
