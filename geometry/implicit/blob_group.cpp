@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "geometry/implicit/metacube_ray_slices.h"
 #include "geometry/polynomial/monotone_root_finder.h"
@@ -79,26 +78,53 @@ BlobGroup::BlobGroup(std::vector<Metacube> elements, std::unique_ptr<const Field
 }
 
 void BlobGroup::build_neighbours() {
-    // Sweep and prune along x over the support bounds.
+    // Uniform grid with cells at least as large as any support box: two supports can overlap only if the cells
+    // of their lower corners are adjacent, so each element looks at 27 cells instead of the whole group.
     const std::size_t n = elements_.size();
     std::vector<WorldBounds> bounds(n);
-    for (std::size_t i = 0; i < n; ++i) bounds[i] = elements_[i].support_bounds();
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return bounds[a].lower.x < bounds[b].lower.x; });
-    neighbours_.assign(n, {});
-    for (std::size_t k = 0; k < n; ++k) {
-        const WorldBounds& a = bounds[order[k]];
-        for (std::size_t m = k + 1; m < n && bounds[order[m]].lower.x <= a.upper.x; ++m) {
-            const WorldBounds& b = bounds[order[m]];
-            if (b.lower.y > a.upper.y || a.lower.y > b.upper.y || b.lower.z > a.upper.z || a.lower.z > b.upper.z) continue;
-            neighbours_[order[k]].push_back(order[m]);
-            neighbours_[order[m]].push_back(order[k]);
-        }
+    Vec3d lowest(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                 std::numeric_limits<double>::infinity());
+    double cell = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        bounds[i] = elements_[i].support_bounds();
+        lowest = min(lowest, bounds[i].lower);
+        cell = std::max(cell, max_component(bounds[i].upper - bounds[i].lower));
     }
-    for (auto& list : neighbours_) {
-        std::sort(list.begin(), list.end());
-        list.shrink_to_fit();
+    neighbours_.assign(n, {});
+    if (n < 2) return;
+    cell = std::max(cell, 1e-300);
+    const auto cell_of = [&](const Vec3d& p) {
+        std::array<std::int64_t, 3> c{};
+        for (int k = 0; k < 3; ++k) c[std::size_t(k)] = std::int64_t(std::floor((p[k] - lowest[k]) / cell));
+        return c;
+    };
+    const auto key_of = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+        return (std::uint64_t(x & 0x1FFFFF) << 42) | (std::uint64_t(y & 0x1FFFFF) << 21) | std::uint64_t(z & 0x1FFFFF);
+    };
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto c = cell_of(bounds[i].lower);
+        keyed[i] = {key_of(c[0], c[1], c[2]), std::uint32_t(i)};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    const auto overlap = [&](const WorldBounds& a, const WorldBounds& b) {
+        for (int k = 0; k < 3; ++k)
+            if (a.lower[k] > b.upper[k] || b.lower[k] > a.upper[k]) return false;
+        return true;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto c = cell_of(bounds[i].lower);
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    if (c[0] + dx < 0 || c[1] + dy < 0 || c[2] + dz < 0) continue;
+                    const std::uint64_t key = key_of(c[0] + dx, c[1] + dy, c[2] + dz);
+                    auto it = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(key, std::uint32_t(0)));
+                    for (; it != keyed.end() && it->first == key; ++it)
+                        if (it->second != i && overlap(bounds[i], bounds[it->second])) neighbours_[i].push_back(it->second);
+                }
+        std::sort(neighbours_[i].begin(), neighbours_[i].end());
+        neighbours_[i].shrink_to_fit();
     }
 }
 
@@ -111,6 +137,12 @@ void BlobGroup::bake(const Transform& similarity, double scale) {
         element = Metacube(box, element.radius() * scale, element.weight());
     }
     build_neighbours();
+}
+
+std::size_t BlobGroup::memory_bytes() const {
+    std::size_t bytes = elements_.capacity() * sizeof(Metacube) + neighbours_.capacity() * sizeof(neighbours_[0]);
+    for (const auto& list : neighbours_) bytes += list.capacity() * sizeof(std::uint32_t);
+    return bytes;
 }
 
 double BlobGroup::field(std::size_t index, const Vec3d& point) const {

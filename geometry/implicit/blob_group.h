@@ -36,6 +36,7 @@ public:
     const FieldFunction& kernel() const { return *kernel_; }
     double threshold() const { return threshold_; }
     const std::vector<std::uint32_t>& neighbours(std::size_t index) const { return neighbours_[index]; }
+    std::size_t memory_bytes() const;
 
     // The first t in (t_min, t_max) within element `index`'s support where F changes sign along o + t·d.
     std::optional<double> first_crossing(std::size_t index, const Vec3d& origin, const Vec3d& direction, double t_min,

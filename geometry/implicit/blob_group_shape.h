@@ -13,10 +13,13 @@ public:
 
     std::string type_name() const override { return "blobs"; }
     std::size_t primitive_count() const override { return group_.elements().size(); }
+    std::size_t memory_bytes() const override { return group_.memory_bytes(); }
     Bounds3f bounds() const override;
     bool counts_intersection_tests() const override { return true; }
     bool can_bake(const Transform& to_world) const override { return to_world.similarity_scale() > 0; }
-    void bake(const Transform& to_world) override { group_.bake(to_world, to_world.similarity_scale()); }
+    void bake(const Transform& to_world) override {
+        if (!to_world.is_identity()) group_.bake(to_world, to_world.similarity_scale());
+    }
     RTCGeometry create_geometry(RTCDevice device) override;
 
     const BlobGroup& group() const { return group_; }

@@ -46,6 +46,8 @@ public:
     // Name used in statistics tables ("sphere", "triangle_mesh", ...).
     virtual std::string type_name() const = 0;
     virtual std::size_t primitive_count() const = 0;
+    // Memory the shape keeps for rendering, besides what Embree holds (for the build statistics).
+    virtual std::size_t memory_bytes() const { return 0; }
     virtual Bounds3f bounds() const = 0;
     // True for user geometries whose callbacks count their intersection tests (see render_counters.h).
     virtual bool counts_intersection_tests() const { return false; }

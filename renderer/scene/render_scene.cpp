@@ -83,6 +83,7 @@ void RenderScene::commit() {
         SceneObject& object = objects_[index];
         object.counter_slot = counters::geometry_type_slot(object.shape->type_name(), object.shape->counts_intersection_tests());
         build_statistics_.primitives_by_type[object.shape->type_name()] += object.shape->primitive_count();
+        build_statistics_.shape_bytes += object.shape->memory_bytes();
         object.instanced = !object.shape->can_bake(object.to_world);
         if (!object.instanced) object.shape->bake(object.to_world);
         RTCGeometry geometry = object.shape->create_geometry(device);

@@ -37,6 +37,7 @@ struct BuildStatistics {
     std::size_t instanced_objects = 0;
     std::map<std::string, std::size_t> primitives_by_type;
     std::int64_t embree_bytes = 0;
+    std::size_t shape_bytes = 0;  // what the shapes keep besides Embree's buffers and BVHs
     std::size_t area_lights = 0;
     // Emissive objects that light sampling cannot reach (instanced, or shapes without surface sampling):
     // they still emit when BSDF sampling hits them.

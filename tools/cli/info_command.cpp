@@ -51,7 +51,8 @@ int run_info(const std::string& path) {
     for (const auto& [type, count] : build.primitives_by_type) std::printf("  %-18s %zu primitive(s)\n", type.c_str(), count);
     std::printf("bounds       [%g %g %g] .. [%g %g %g]\n", bounds.lower.x, bounds.lower.y, bounds.lower.z,
                 bounds.upper.x, bounds.upper.y, bounds.upper.z);
-    std::printf("build        %.3f s, %.1f MiB in Embree\n", build.seconds, double(build.embree_bytes) / (1 << 20));
+    std::printf("build        %.3f s, %.1f MiB in Embree, %.1f MiB in shapes\n", build.seconds,
+                double(build.embree_bytes) / (1 << 20), double(build.shape_bytes) / (1 << 20));
     return kExitOk;
 }
 

@@ -37,6 +37,7 @@ nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& r
     stats["objects"] = build.objects;
     stats["instanced_objects"] = build.instanced_objects;
     stats["embree_bytes"] = build.embree_bytes;
+    stats["shape_bytes"] = build.shape_bytes;
     nlohmann::json geometry = nlohmann::json::object();
     for (const auto& [type, c] : counts.geometry) {
         nlohmann::json row;
