@@ -1,6 +1,7 @@
 #include "geometry/implicit/blob_group.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -66,13 +67,55 @@ bool segment_meets_box(const WorldBounds& box, const Vec3d& origin, const Vec3d&
     return true;
 }
 
+// Embree asks each element overlapping a ray in turn, and each query slices the same neighbours along the same
+// line. Slices do not depend on t_near/t_far, so one thread-local table per ray keeps them: the table is keyed
+// by (group, origin, direction) and forgotten by bumping a generation number when the ray changes.
+class SliceCache {
+public:
+    std::optional<MetacubeRaySlices> get(const BlobGroup& group, std::uint32_t element, const Vec3d& origin,
+                                         const Vec3d& direction) {
+        if (group.identity() != group_ || !(origin == origin_) || !(direction == direction_)) {
+            group_ = group.identity();
+            origin_ = origin;
+            direction_ = direction;
+            ++generation_;
+        }
+        std::size_t slot = (element * 2654435761u) & (kSlots - 1);
+        for (int probe = 0; probe < 8; ++probe, slot = (slot + 1) & (kSlots - 1)) {
+            Entry& entry = table_[slot];
+            if (entry.generation == generation_ && entry.element == element) return entry.slices;
+            if (entry.generation != generation_) {
+                entry.generation = generation_;
+                entry.element = element;
+                entry.slices = MetacubeRaySlices::slice(group.elements()[element], origin, direction);
+                return entry.slices;
+            }
+        }
+        return MetacubeRaySlices::slice(group.elements()[element], origin, direction);  // table crowded
+    }
+
+private:
+    static constexpr std::size_t kSlots = 256;
+    struct Entry {
+        std::uint64_t generation = 0;
+        std::uint32_t element = 0;
+        std::optional<MetacubeRaySlices> slices;
+    };
+    std::uint64_t group_ = 0;
+    Vec3d origin_, direction_;
+    std::uint64_t generation_ = 1;
+    std::array<Entry, kSlots> table_{};
+};
+
+thread_local SliceCache t_slice_cache;
+std::atomic<std::uint64_t> g_next_identity{1};
 thread_local std::vector<ActiveElement> t_active;
 thread_local std::vector<double> t_breaks;
 
 }  // namespace
 
 BlobGroup::BlobGroup(std::vector<Metacube> elements, std::unique_ptr<const FieldFunction> kernel, double threshold)
-    : elements_(std::move(elements)), kernel_(std::move(kernel)), threshold_(threshold) {
+    : elements_(std::move(elements)), kernel_(std::move(kernel)), threshold_(threshold), identity_(g_next_identity++) {
     validate_threshold(threshold_);
     build_neighbours();
 }
@@ -136,6 +179,7 @@ void BlobGroup::bake(const Transform& similarity, double scale) {
         box.half_size = box.half_size * scale;
         element = Metacube(box, element.radius() * scale, element.weight());
     }
+    identity_ = g_next_identity++;
     build_neighbours();
 }
 
@@ -185,7 +229,7 @@ Vec3d BlobGroup::normal(std::size_t index, const Vec3d& point) const {
 
 std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& origin, const Vec3d& direction,
                                                 double t_min, double t_max, BlobQueryWork& work) const {
-    const auto own = MetacubeRaySlices::slice(elements_[index], origin, direction);
+    const auto own = t_slice_cache.get(*this, std::uint32_t(index), origin, direction);
     if (!own) return std::nullopt;
     const double a = std::max(own->t_in(), t_min), b = std::min(own->t_out(), t_max);
     if (!(a < b)) return std::nullopt;
@@ -198,12 +242,12 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
     const auto include = [&](const Metacube& element, const MetacubeRaySlices& slices) {
         if (slices.t_out() <= a || slices.t_in() >= b) return;
         active.push_back({&element, slices});
+        // Kernel piece boundaries (Nishimura's r = R/3) are breakpoints too.
+        const FieldPieces kernel_pieces =
+            element.is_hard_cube() || kernel_->unit_pieces().size() < 2 ? FieldPieces{} : kernel_->pieces(element.radius());
         for (const RegionPiece& piece : slices.pieces()) {
             for (double t : {piece.t_begin, piece.t_end})
                 if (t > a && t < b) breaks.push_back(t);
-            if (element.is_hard_cube()) continue;
-            // Kernel piece boundaries (Nishimura's r = R/3) are breakpoints too.
-            const FieldPieces kernel_pieces = kernel_->pieces(element.radius());
             for (int k = 1; k < kernel_pieces.count; ++k)
                 add_level_crossings(slices.distance_squared(piece, piece.t_begin), kernel_pieces.pieces[std::size_t(k)].r2_begin,
                                     std::max(a, piece.t_begin), std::min(b, piece.t_end), breaks);
@@ -214,7 +258,7 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
         // Widen by a relative margin: the box test must never reject an element the exact slicing would keep.
         const double margin = 1e-9 * (1 + std::max(std::abs(a), std::abs(b)));
         if (!segment_meets_box(elements_[j].support_bounds(), origin, direction, a - margin, b + margin)) continue;
-        if (const auto slices = MetacubeRaySlices::slice(elements_[j], origin, direction)) include(elements_[j], *slices);
+        if (const auto slices = t_slice_cache.get(*this, j, origin, direction)) include(elements_[j], *slices);
     }
     breaks.push_back(a);
     breaks.push_back(b);

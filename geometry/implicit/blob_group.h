@@ -37,6 +37,7 @@ public:
     double threshold() const { return threshold_; }
     const std::vector<std::uint32_t>& neighbours(std::size_t index) const { return neighbours_[index]; }
     std::size_t memory_bytes() const;
+    std::uint64_t identity() const { return identity_; }
 
     // The first t in (t_min, t_max) within element `index`'s support where F changes sign along o + t·d.
     std::optional<double> first_crossing(std::size_t index, const Vec3d& origin, const Vec3d& direction, double t_min,
@@ -61,6 +62,7 @@ private:
     std::unique_ptr<const FieldFunction> kernel_;
     double threshold_;
     std::vector<std::vector<std::uint32_t>> neighbours_;
+    std::uint64_t identity_;  // unique per group and per geometry change, for the per-ray slice cache
 };
 
 }  // namespace isotrace
