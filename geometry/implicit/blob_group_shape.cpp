@@ -29,14 +29,8 @@ RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {
     solves_slot_ = counters::named_counter_slot("blobs.polynomial_solves");
     searches_slot_ = counters::named_counter_slot("blobs.lipschitz_searches");
     roots_slot_ = counters::named_counter_slot("blobs.roots");
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(group_.elements().size()));
-    rtcSetGeometryUserData(geometry, this);  // the bounds callback ignores its own userPtr in Embree 3.13.5
-    rtcSetGeometryBoundsFunction(geometry, bounds_callback, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, intersect_callback);
-    rtcSetGeometryOccludedFunction(geometry, occluded_callback);
-    rtcCommitGeometry(geometry);
-    return geometry;
+    return user_geometry::create(device, this, unsigned(group_.elements().size()), bounds_callback,
+                                 intersect_callback, occluded_callback);
 }
 
 void BlobGroupShape::bounds_callback(const RTCBoundsFunctionArguments* args) {

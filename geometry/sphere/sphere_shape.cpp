@@ -72,14 +72,8 @@ void SphereShape::bake(const Transform& to_world) {
 
 RTCGeometry SphereShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(spheres_.size()));
-    rtcSetGeometryUserData(geometry, this);  // the bounds callback ignores its own userPtr in Embree 3.13.5
-    rtcSetGeometryBoundsFunction(geometry, bounds_callback, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, intersect_callback);
-    rtcSetGeometryOccludedFunction(geometry, occluded_callback);
-    rtcCommitGeometry(geometry);
-    return geometry;
+    return user_geometry::create(device, this, unsigned(spheres_.size()), bounds_callback, intersect_callback,
+                                 occluded_callback);
 }
 
 void SphereShape::bounds_callback(const RTCBoundsFunctionArguments* args) {

@@ -29,6 +29,20 @@ inline void store_bounds(RTCBounds* out, const Vec3d& lower, const Vec3d& upper)
     out->upper_z = std::nextafter(float(upper.z), kInfinity);
 }
 
+// A committed user geometry of `primitive_count` primitives whose callbacks find their shape in
+// args->geometryUserPtr (the bounds callback's own userPtr is ignored by Embree 3.13.5).
+inline RTCGeometry create(RTCDevice device, void* shape, unsigned primitive_count, RTCBoundsFunction bounds,
+                          RTCIntersectFunctionN intersect, RTCOccludedFunctionN occluded) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, primitive_count);
+    rtcSetGeometryUserData(geometry, shape);
+    rtcSetGeometryBoundsFunction(geometry, bounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, intersect);
+    rtcSetGeometryOccludedFunction(geometry, occluded);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
 // Accepts a hit at distance t (the caller checked t_near < t < t_far) with geometric normal `normal`.
 inline void store_hit(const RTCIntersectFunctionNArguments* args, unsigned i, float t, const Vec3d& normal) {
     RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
