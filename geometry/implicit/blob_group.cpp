@@ -43,6 +43,16 @@ void add_level_crossings(const QuadraticAbout& q, double level, double a, double
         if (roots[i] > a && roots[i] < b) out.push_back(roots[i]);
 }
 
+// Smallest and largest value of the quadratic q on [s0, s1] (q is a squared distance: never below 0).
+struct Range {
+    double low, high;
+};
+Range quadratic_range(const QuadraticAbout& q, double s0, double s1) {
+    const double at_s0 = q(s0), at_s1 = q(s1);
+    const double vertex = q.c2 > 0 ? std::clamp(q.t_ref - q.c1 / (2 * q.c2), s0, s1) : s0;
+    return {std::max(0.0, std::min({at_s0, at_s1, q(vertex)})), std::max(at_s0, at_s1)};
+}
+
 // ∑ coefficients[k]·q(u)^k as a polynomial in u.
 Polynomial compose_with_quadratic(const FieldPiece& piece, const Polynomial& q) {
     Polynomial result{piece.coefficients[std::size_t(piece.degree)]};
@@ -287,9 +297,9 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
         if (!(s1 > s0)) continue;
         ++work.pieces;
         const double middle = 0.5 * (s0 + s1);
-        // Every kernel is non-increasing in r²: the field on the piece lies between its values at the largest
-        // and smallest r² of each element. If T is out of that range, there is no crossing (and no step at s0
-        // matters either, as both sides of s0 lie on the same side of T only if the bounds say so).
+        // Every kernel is non-increasing in r², so each element's field on the piece lies between its values at
+        // the piece's largest and smallest r². When the summed bounds exclude T the piece has no crossing; only a
+        // step at s0 (a hard cube's boundary) can still be one.
         double low = -threshold_, high = -threshold_;
         for (const ActiveElement& e : active) {
             const RegionPiece* piece = piece_at(e.slices, middle);
@@ -299,19 +309,15 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
                 if (piece->region == std::array<int, 3>{0, 0, 0}) low += w, high += w;
                 continue;
             }
-            const QuadraticAbout q = e.slices.distance_squared(*piece, s0);
-            const double vertex = q.c2 > 0 ? std::clamp(s0 - q.c1 / (2 * q.c2), s0, s1) : s0;
-            const double q_min = std::max(0.0, std::min({q(s0), q(s1), q(vertex)}));
-            const double q_max = std::max(q(s0), q(s1));
-            const double f_high = w * kernel_->value(q_min, e.element->radius());
-            const double f_low = w * kernel_->value(q_max, e.element->radius());
+            const Range r2 = quadratic_range(e.slices.distance_squared(*piece, s0), s0, s1);
+            const double f_high = w * kernel_->value(r2.low, e.element->radius());
+            const double f_low = w * kernel_->value(r2.high, e.element->radius());
             low += std::min(f_low, f_high);
             high += std::max(f_low, f_high);
         }
         const double slack = 1e-12 * (std::abs(low) + std::abs(high) + threshold_);
         if (high < -slack || low > slack) {
-            const bool step_at_start = std::isfinite(previous_end_value) && (previous_end_value < 0) != (low < 0) && s0 > t_min;
-            if (step_at_start) {
+            if (std::isfinite(previous_end_value) && (previous_end_value < 0) != (low < 0) && s0 > t_min) {
                 ++work.roots;
                 return s0;
             }
@@ -341,10 +347,9 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
                 polynomial = false;
             }
             // |d/dt w f(q(t))| ≤ |w| · max|f'| · max|q'|; f is convex non-increasing in r², so max|f'| is at min q.
-            const double vertex = q.c2 > 0 ? std::clamp(s0 - q.c1 / (2 * q.c2), s0, s1) : s0;
-            const double q_min = std::max(0.0, std::min({q(s0), q(s1), q(vertex)}));
             const double slope = std::max(std::abs(q.c1), std::abs(q.c1 + 2 * q.c2 * (s1 - s0)));
-            lipschitz += std::abs(e.element->weight()) * std::abs(kernel_->derivative(q_min, e.element->radius())) * slope;
+            lipschitz += std::abs(e.element->weight()) *
+                         std::abs(kernel_->derivative(quadratic_range(q, s0, s1).low, e.element->radius())) * slope;
         }
 
         // A step (hard cube boundary) across the breakpoint is a crossing at the breakpoint itself.
