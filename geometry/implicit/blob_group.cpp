@@ -15,6 +15,7 @@ namespace {
 struct ActiveElement {
     const Metacube* element;
     MetacubeRaySlices slices;
+    const RegionPiece* current = nullptr;  // the element's piece on the ray piece being examined
 };
 
 // The element's piece containing t (pieces are contiguous and sorted), or nullptr outside its support.
@@ -60,21 +61,14 @@ Polynomial compose_with_quadratic(const FieldPiece& piece, const Polynomial& q) 
     return result;
 }
 
-// Does the segment o + t·d, t in [a, b], meet the box? (Slab test; cheap rejection before exact slicing.)
-bool segment_meets_box(const WorldBounds& box, const Vec3d& origin, const Vec3d& direction, double a, double b) {
-    for (int k = 0; k < 3; ++k) {
-        if (direction[k] == 0) {
-            if (origin[k] < box.lower[k] || origin[k] > box.upper[k]) return false;
-            continue;
-        }
-        const double inverse = 1.0 / direction[k];
-        double t0 = (box.lower[k] - origin[k]) * inverse, t1 = (box.upper[k] - origin[k]) * inverse;
-        if (t0 > t1) std::swap(t0, t1);
-        a = std::max(a, t0);
-        b = std::min(b, t1);
-        if (a > b) return false;
-    }
-    return true;
+// Can the segment o + t·d, t in [a, b], reach the element's support? Tested against the sphere around it
+// (centre, R + |half-size|): a few multiplications, a cheap rejection before exact slicing.
+bool segment_may_meet(const Metacube& element, const Vec3d& origin, const Vec3d& direction, double a, double b) {
+    const Vec3d to_centre = element.skeleton().centre - origin;
+    const double t = std::clamp(dot(to_centre, direction) / dot(direction, direction), a, b);
+    const double reach = element.radius() + length(element.skeleton().half_size);
+    const Vec3d gap = to_centre - direction * t;
+    return dot(gap, gap) <= reach * reach * (1 + 1e-9);
 }
 
 // Embree asks each element overlapping a ray in turn, and each query slices the same neighbours along the same
@@ -251,7 +245,7 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
     breaks.clear();
     const auto include = [&](const Metacube& element, const MetacubeRaySlices& slices) {
         if (slices.t_out() <= a || slices.t_in() >= b) return;
-        active.push_back({&element, slices});
+        active.push_back({&element, slices, nullptr});
         // Kernel piece boundaries (Nishimura's r = R/3) are breakpoints too.
         const FieldPieces kernel_pieces =
             element.is_hard_cube() || kernel_->unit_pieces().size() < 2 ? FieldPieces{} : kernel_->pieces(element.radius());
@@ -265,9 +259,7 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
     };
     include(elements_[index], *own);
     for (std::uint32_t j : neighbours_[index]) {
-        // Widen by a relative margin: the box test must never reject an element the exact slicing would keep.
-        const double margin = 1e-9 * (1 + std::max(std::abs(a), std::abs(b)));
-        if (!segment_meets_box(elements_[j].support_bounds(), origin, direction, a - margin, b + margin)) continue;
+        if (!segment_may_meet(elements_[j], origin, direction, a, b)) continue;
         if (const auto slices = t_slice_cache.get(*this, j, origin, direction)) include(elements_[j], *slices);
     }
     breaks.push_back(a);
@@ -301,8 +293,9 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
         // the piece's largest and smallest r². When the summed bounds exclude T the piece has no crossing; only a
         // step at s0 (a hard cube's boundary) can still be one.
         double low = -threshold_, high = -threshold_;
-        for (const ActiveElement& e : active) {
-            const RegionPiece* piece = piece_at(e.slices, middle);
+        for (ActiveElement& e : active) {
+            e.current = piece_at(e.slices, middle);
+            const RegionPiece* piece = e.current;
             if (!piece) continue;
             const double w = e.element->weight();
             if (e.element->is_hard_cube()) {
@@ -328,7 +321,7 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
         bool polynomial = true;
         double lipschitz = 0;  // bound on |dF/dt| over the piece, for the non-polynomial search
         for (const ActiveElement& e : active) {
-            const RegionPiece* piece = piece_at(e.slices, middle);
+            const RegionPiece* piece = e.current;
             if (!piece) continue;
             if (e.element->is_hard_cube()) {
                 if (piece->region == std::array<int, 3>{0, 0, 0}) sum += Polynomial{e.element->weight()};
