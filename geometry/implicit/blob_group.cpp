@@ -154,10 +154,17 @@ void BlobGroup::build_neighbours() {
         keyed[i] = {key_of(c[0], c[1], c[2]), std::uint32_t(i)};
     }
     std::sort(keyed.begin(), keyed.end());
-    const auto overlap = [&](const WorldBounds& a, const WorldBounds& b) {
+    // Supports overlap only if both their boxes and their bounding spheres (centre, R + |half-size|) do; for
+    // metaballs the sphere test is exact and drops the box corners, about half of the box-only candidates.
+    const auto reach = [&](std::size_t i) {
+        return elements_[i].radius() + length(elements_[i].skeleton().half_size);
+    };
+    const auto overlap = [&](std::size_t i, std::size_t j) {
         for (int k = 0; k < 3; ++k)
-            if (a.lower[k] > b.upper[k] || b.lower[k] > a.upper[k]) return false;
-        return true;
+            if (bounds[i].lower[k] > bounds[j].upper[k] || bounds[j].lower[k] > bounds[i].upper[k]) return false;
+        const Vec3d between = elements_[i].skeleton().centre - elements_[j].skeleton().centre;
+        const double limit = reach(i) + reach(j);
+        return dot(between, between) <= limit * limit * (1 + 1e-9);
     };
     for (std::size_t i = 0; i < n; ++i) {
         const auto c = cell_of(bounds[i].lower);
@@ -168,7 +175,7 @@ void BlobGroup::build_neighbours() {
                     const std::uint64_t key = key_of(c[0] + dx, c[1] + dy, c[2] + dz);
                     auto it = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(key, std::uint32_t(0)));
                     for (; it != keyed.end() && it->first == key; ++it)
-                        if (it->second != i && overlap(bounds[i], bounds[it->second])) neighbours_[i].push_back(it->second);
+                        if (it->second != i && overlap(i, it->second)) neighbours_[i].push_back(it->second);
                 }
         std::sort(neighbours_[i].begin(), neighbours_[i].end());
         neighbours_[i].shrink_to_fit();
