@@ -19,7 +19,7 @@ constexpr float kEta = 1.5f;
 constexpr std::size_t kSamples = 100000;
 const double kSignificance = test_support::sidak_significance(0.01, std::size(kAlphas) * std::size(kViewAngles));
 
-Vec3f view_at(double theta) { return direction_from_degrees(theta, 30); }
+using test_support::view_at;
 
 std::string test_name(const testing::TestParamInfo<std::tuple<float, double>>& info) {
     const auto& [alpha, theta] = info.param;

@@ -13,22 +13,17 @@ namespace {
 
 using test_support::direction_from_degrees;
 
-struct Roughness {
-    float alpha_x, alpha_y;
-};
-const Roughness kRoughnesses[] = {{0.05f, 0.05f}, {0.3f, 0.3f}, {0.8f, 0.8f}, {0.1f, 0.6f}};
+using test_support::kRoughnesses;
+using test_support::Roughness;
+using test_support::view_at;
 const double kViewAngles[] = {0, 30, 60, 85};
 constexpr std::size_t kSamples = 100000;
 const double kSignificance = test_support::sidak_significance(0.01, std::size(kRoughnesses) * std::size(kViewAngles));
 const ComplexIor kGold = *find_conductor_preset("Au");
 const ComplexIor kPerfectMirror{Rgb(1.0f), Rgb(1e4f)};  // k -> infinity: F -> 1 at every angle
 
-Vec3f view_at(double theta) { return direction_from_degrees(theta, 30); }
-
 std::string test_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info) {
-    const auto& [r, theta] = info.param;
-    return "alpha" + std::to_string(int(r.alpha_x * 100)) + "x" + std::to_string(int(r.alpha_y * 100)) + "_theta" +
-           std::to_string(int(theta));
+    return test_support::roughness_and_view_name(std::get<0>(info.param), std::get<1>(info.param));
 }
 
 class RoughConductorSampling : public testing::TestWithParam<std::tuple<Roughness, double>> {};

@@ -12,10 +12,9 @@ namespace {
 
 using test_support::direction_from_degrees;
 
-struct Roughness {
-    float alpha_x, alpha_y;
-};
-const Roughness kRoughnesses[] = {{0.05f, 0.05f}, {0.3f, 0.3f}, {0.8f, 0.8f}, {0.1f, 0.6f}};
+using test_support::kRoughnesses;
+using test_support::Roughness;
+using test_support::view_at;
 // Above 90 degrees wo is inside the glass: 150 (30 from the inward normal) still refracts out, 120 (60) is
 // beyond the critical angle of 41.8 degrees for a smooth interface, so both regimes are covered.
 const double kViewAngles[] = {0, 30, 60, 85, 150, 120};
@@ -23,12 +22,8 @@ constexpr float kEta = 1.5f;
 constexpr std::size_t kSamples = 100000;
 const double kSignificance = test_support::sidak_significance(0.01, std::size(kRoughnesses) * std::size(kViewAngles));
 
-Vec3f view_at(double theta) { return direction_from_degrees(theta, 30); }
-
 std::string test_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info) {
-    const auto& [r, theta] = info.param;
-    return "alpha" + std::to_string(int(r.alpha_x * 100)) + "x" + std::to_string(int(r.alpha_y * 100)) + "_theta" +
-           std::to_string(int(theta));
+    return test_support::roughness_and_view_name(std::get<0>(info.param), std::get<1>(info.param));
 }
 
 class RoughDielectricSampling : public testing::TestWithParam<std::tuple<Roughness, double>> {};

@@ -13,15 +13,12 @@ using test_support::BsdfRandom;
 using test_support::direction_from_degrees;
 using test_support::sphere_integral;
 
-struct Roughness {
-    float alpha_x, alpha_y;
-};
-const Roughness kRoughnesses[] = {{0.05f, 0.05f}, {0.3f, 0.3f}, {0.8f, 0.8f}, {0.1f, 0.6f}};
+using test_support::kRoughnesses;
+using test_support::Roughness;
+using test_support::view_at;
 const double kViewAngles[] = {0, 30, 60, 85};  // degrees from the normal, at azimuth 30 degrees
 constexpr std::size_t kSamples = 100000;
 const double kSignificance = test_support::sidak_significance(0.01, 4 * 4);
-
-Vec3f view_at(double theta) { return direction_from_degrees(theta, 30); }
 
 TEST(Ggx, RoughnessMapsToItsSquare) {
     EXPECT_FLOAT_EQ(roughness_to_alpha(0.5f), 0.25f);
@@ -45,9 +42,7 @@ TEST(Ggx, MaskingIsTheSameFromBothSides) {
 }
 
 std::string test_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info) {
-    const auto& [r, theta] = info.param;
-    return "alpha" + std::to_string(int(r.alpha_x * 100)) + "x" + std::to_string(int(r.alpha_y * 100)) + "_theta" +
-           std::to_string(int(theta));
+    return test_support::roughness_and_view_name(std::get<0>(info.param), std::get<1>(info.param));
 }
 
 class GgxVisibleNormalSampling : public testing::TestWithParam<std::tuple<Roughness, double>> {};

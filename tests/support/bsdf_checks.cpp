@@ -182,4 +182,9 @@ std::size_t count_bad_samples(const Bsdf& bsdf, const Vec3f& wo, std::size_t sam
     return bad;
 }
 
+std::string roughness_and_view_name(const Roughness& roughness, double theta) {
+    return "alpha" + std::to_string(int(roughness.alpha_x * 100)) + "x" + std::to_string(int(roughness.alpha_y * 100)) +
+           "_theta" + std::to_string(int(theta));
+}
+
 }  // namespace isotrace::test_support

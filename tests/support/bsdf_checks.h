@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "renderer/bsdf/bsdf.h"
 #include "tests/support/chi_square.h"
@@ -12,6 +13,16 @@ namespace isotrace::test_support {
 
 // The unit direction at polar angle theta (from +z) and azimuth phi, in degrees.
 Vec3f direction_from_degrees(double theta, double phi = 0);
+
+// The roughness grid and viewing directions the microfacet sampling tests share.
+struct Roughness {
+    float alpha_x, alpha_y;
+};
+inline constexpr Roughness kRoughnesses[] = {{0.05f, 0.05f}, {0.3f, 0.3f}, {0.8f, 0.8f}, {0.1f, 0.6f}};
+// wo at polar angle theta (degrees from the normal) and azimuth 30 degrees.
+inline Vec3f view_at(double theta) { return direction_from_degrees(theta, 30); }
+// Parameterised-test name such as "alpha10x60_theta85".
+std::string roughness_and_view_name(const Roughness& roughness, double theta);
 
 // The random numbers of the i-th BSDF sample: independent and deterministic (the chi-square test assumes
 // independent samples).
