@@ -27,12 +27,7 @@ public:
     Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream&, PrimaryHitRecord& primary) const override {
         const std::optional<SurfaceHit> hit = scene.intersect(camera_ray, RayKind::Camera);
         if (!hit) return {};
-        primary.hit = true;
-        primary.albedo = hit->material ? hit->material->albedo(*hit) : Rgb();
-        primary.shading_normal = hit->shading_normal;
-        primary.position = hit->position;
-        primary.object_id = hit->object_index;
-        primary.primitive_id = hit->primitive_id;
+        primary.record(*hit, hit->material ? hit->material->albedo(*hit) : Rgb());
         switch (shown_) {
             case Shown::Normal: {
                 const Vec3f n = hit->shading_normal * 0.5f + Vec3f(0.5f, 0.5f, 0.5f);

@@ -78,14 +78,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         }
         const SurfaceHit& hit = *found;
         const Vec3f towards_viewer = -ray.direction;
-        if (depth == 0) {
-            primary.hit = true;
-            primary.albedo = hit.material->albedo(hit);
-            primary.shading_normal = hit.shading_normal;
-            primary.position = hit.position;
-            primary.object_id = hit.object_index;
-            primary.primitive_id = hit.primitive_id;
-        }
+        if (depth == 0) primary.record(hit, hit.material->albedo(hit));
 
         const Rgb emitted = hit.material->emission(hit, towards_viewer);
         if (!emitted.is_black()) {

@@ -20,12 +20,7 @@ Rgb PreviewIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene,
         hit.shading_normal = -hit.shading_normal;
     }
     const Rgb albedo = hit.material->albedo(hit);
-    primary.hit = true;
-    primary.albedo = albedo;
-    primary.shading_normal = hit.shading_normal;
-    primary.position = hit.position;
-    primary.object_id = hit.object_index;
-    primary.primitive_id = hit.primitive_id;
+    primary.record(hit, albedo);
 
     Rgb result = emitted;
     if (albedo.is_black()) return result;

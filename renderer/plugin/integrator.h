@@ -6,6 +6,7 @@
 #include "renderer/core/ray.h"
 #include "renderer/math/rgb.h"
 #include "renderer/plugin/registry.h"
+#include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
 
@@ -21,6 +22,16 @@ struct PrimaryHitRecord {
     float depth = 0;
     std::uint32_t object_id = 0;
     std::uint32_t primitive_id = 0;
+
+    // Records `hit` (seen first) with the material's albedo there.
+    void record(const SurfaceHit& hit, const Rgb& surface_albedo) {
+        this->hit = true;
+        albedo = surface_albedo;
+        shading_normal = hit.shading_normal;
+        position = hit.position;
+        object_id = hit.object_index;
+        primitive_id = hit.primitive_id;
+    }
 };
 
 class Integrator {
