@@ -1,6 +1,5 @@
 // Lambertian reflector, optionally also emitting (a glowing diffuse surface). The reflectance may be an image
 // texture.
-#include <algorithm>
 
 #include "renderer/bsdf/lambert_bsdf.h"
 #include "renderer/core/scratch_arena.h"
@@ -16,10 +15,7 @@ public:
     DiffuseMaterial(ColourSource reflectance, const EmissionProfile& emission)
         : reflectance_(std::move(reflectance)), emission_(emission) {}
 
-    Rgb albedo(const SurfaceHit& hit) const override {
-        const Rgb r = reflectance_.evaluate(hit);  // textures may stray outside [0, 1]: keep energy conserved
-        return {std::clamp(r.r, 0.0f, 1.0f), std::clamp(r.g, 0.0f, 1.0f), std::clamp(r.b, 0.0f, 1.0f)};
-    }
+    Rgb albedo(const SurfaceHit& hit) const override { return reflectance_.evaluate_reflectance(hit); }
     Rgb emission(const SurfaceHit& hit, const Vec3f& towards_viewer) const override {
         return emission_.towards(hit, towards_viewer);
     }
@@ -34,10 +30,7 @@ private:
 };
 
 std::unique_ptr<Material> create(const SceneNode& node) {
-    ColourSource reflectance = parse_colour_source(node, "reflectance", Rgb(0.5f));
-    const Rgb r = reflectance.scale();
-    if (reflectance.is_constant() && (r.r < 0 || r.g < 0 || r.b < 0 || r.max() > 1))
-        node.fail_at("reflectance", "each reflectance component must lie in [0, 1] (energy conservation)");
+    ColourSource reflectance = parse_reflectance(node, "reflectance", Rgb(0.5f));
     return std::make_unique<DiffuseMaterial>(std::move(reflectance),
                                              parse_emission(node, "emission", false, "two_sided_emission"));
 }

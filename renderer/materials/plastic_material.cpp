@@ -13,10 +13,7 @@ class PlasticMaterial final : public Material {
 public:
     PlasticMaterial(ColourSource reflectance, float ior, float alpha)
         : reflectance_(std::move(reflectance)), coating_(ior, alpha) {}
-    Rgb albedo(const SurfaceHit& hit) const override {
-        const Rgb r = reflectance_.evaluate(hit);
-        return {std::clamp(r.r, 0.0f, 1.0f), std::clamp(r.g, 0.0f, 1.0f), std::clamp(r.b, 0.0f, 1.0f)};
-    }
+    Rgb albedo(const SurfaceHit& hit) const override { return reflectance_.evaluate_reflectance(hit); }
     const Bsdf* bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
         return arena.make<CoatedDiffuseBsdf>(coating_, albedo(hit));
     }
@@ -31,10 +28,7 @@ private:
 ISOTRACE_REGISTER_PLUGIN(material_registry, "plastic",
                          "coated diffuse; reflectance (colour or texture, 0.5), ior (1.5), roughness (0 = smooth)",
                          [](const SceneNode& node) -> std::unique_ptr<Material> {
-                             ColourSource reflectance = parse_colour_source(node, "reflectance", Rgb(0.5f));
-                             const Rgb r = reflectance.scale();
-                             if (reflectance.is_constant() && (r.r < 0 || r.g < 0 || r.b < 0 || r.max() > 1))
-                                 node.fail_at("reflectance", "each reflectance component must lie in [0, 1]");
+                             ColourSource reflectance = parse_reflectance(node, "reflectance", Rgb(0.5f));
                              const double ior = node.number_or("ior", 1.5, {1.0, 10.0, true, false});
                              const MicrofacetAlphas alphas = parse_roughness(node, 0.0);
                              if (alphas.x != alphas.y) node.fail_at("roughness_v", "plastic coatings are isotropic");
