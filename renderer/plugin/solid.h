@@ -1,0 +1,53 @@
+#pragma once
+// Solid: a shape that encloses a volume, so constructive solid geometry can combine it (Roth's ray
+// classification: every solid reports the spans of a ray that lie inside it, and CSG combines the span lists per
+// operator). A shape that is a solid derives from both Shape and Solid; CSG finds it with dynamic_cast.
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+// One end of an inside span.
+struct BoundaryPoint {
+    static constexpr std::uint32_t kCut = std::numeric_limits<std::uint32_t>::max();
+
+    double t = 0;
+    Vec3d normal{0, 0, 1};        // outward unit normal in the shape's space (meaningless for a cut end)
+    std::uint32_t primitive = 0;  // the shape's primitive (element, triangle, ...) the point lies on; kCut when
+                                  // the span was cut at the query range instead of ending on the surface
+    std::uint32_t part = 0;       // for composite solids (CSG): which leaf surface the point lies on
+
+    bool on_surface() const { return primitive != kCut; }
+};
+
+// origin + t·direction is inside the solid for t in (enter.t, exit.t).
+struct InsideSpan {
+    BoundaryPoint enter, exit;
+};
+
+class Solid {
+public:
+    virtual ~Solid() = default;
+
+    // Empty when the shape really encloses a volume; otherwise why not (e.g. a mesh with boundary edges), for the
+    // error that rejects it as a CSG operand.
+    virtual std::string solid_problem() const { return {}; }
+
+    // Called once, after any bake and before the first inside_spans, by the CSG shape that owns the solid (a
+    // mesh builds its own Embree scene here, say).
+    virtual void prepare_span_queries(RTCDevice device) { (void)device; }
+
+    // Appends to `spans`, in increasing t, the spans of origin + t·direction (direction not necessarily unit
+    // length) that lie inside the solid, clipped to [t_min, t_max]: disjoint, non-empty, ends on the surface
+    // except where clipped (BoundaryPoint::kCut). Thread-safe.
+    virtual void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                              std::vector<InsideSpan>& spans) const = 0;
+};
+
+}  // namespace isotrace
