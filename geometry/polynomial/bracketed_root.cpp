@@ -11,13 +11,14 @@ constexpr int kMaxIterations = 2100;
 }  // namespace
 
 double refine_bracketed_root(const Polynomial& p, double lo, double hi, double value_at_lo, double value_at_hi,
-                             const RootTolerance& tolerance) {
+                             const RootTolerance& tolerance, RootFinderWork* work) {
     const bool rising = value_at_lo < 0;
     // The secant through the bracket is a better first guess than the midpoint on monotone pieces.
     double t = lo + (hi - lo) * (value_at_lo / (value_at_lo - value_at_hi));
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     double step_before_last = hi - lo, last_step = hi - lo;
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+        if (work) ++work->iterations;
         const auto [value, slope] = p.evaluate_with_derivative(t);
         if (value == 0) return t;
         ((value < 0) == rising ? lo : hi) = t;

@@ -7,8 +7,8 @@
 namespace isotrace {
 
 // Requires lo < hi and value_at_lo, value_at_hi non-zero with opposite signs. Returns t ∈ [lo, hi] with
-// p(t) = 0 or within tolerance.width_at(t) of a sign change of p.
+// p(t) = 0 or within tolerance.width_at(t) of a sign change of p. Adds its steps to `work` when given.
 double refine_bracketed_root(const Polynomial& p, double lo, double hi, double value_at_lo, double value_at_hi,
-                             const RootTolerance& tolerance);
+                             const RootTolerance& tolerance, RootFinderWork* work = nullptr);
 
 }  // namespace isotrace

@@ -45,7 +45,7 @@ PolynomialRoots quadratic_roots_inside(const Polynomial& quadratic, double a, do
 // p is monotone. Stops after the first root when only_first is set.
 PolynomialRoots roots_between_critical_points(const Polynomial& p, double a, double b,
                                               const PolynomialRoots& critical_points, const RootTolerance& tolerance,
-                                              bool only_first) {
+                                              bool only_first, RootFinderWork* work) {
     PolynomialRoots roots;
     const double cheap_bound = interval_error_bound(p, a, b);
     Sample previous = sample(p, a, cheap_bound);
@@ -57,7 +57,7 @@ PolynomialRoots roots_between_critical_points(const Polynomial& p, double a, dou
         const bool at_critical_point = i < critical_points.size();
         const Sample current = sample(p, at_critical_point ? critical_points[i].t : b, cheap_bound);
         if (!previous.near_zero && !current.near_zero && (previous.value < 0) != (current.value < 0)) {
-            roots.add({refine_bracketed_root(p, previous.t, current.t, previous.value, current.value, tolerance)},
+            roots.add({refine_bracketed_root(p, previous.t, current.t, previous.value, current.value, tolerance, work)},
                       tolerance);
             if (only_first) return roots;
         }
@@ -71,7 +71,7 @@ PolynomialRoots roots_between_critical_points(const Polynomial& p, double a, dou
 }
 
 PolynomialRoots find_roots(const Polynomial& input, double a, double b, const RootTolerance& tolerance,
-                           bool only_first) {
+                           bool only_first, RootFinderWork* work) {
     const Polynomial p = input.without_negligible_leading_terms(a, b);
     const int degree = p.degree();
     if (degree == 0) return {};
@@ -87,20 +87,22 @@ PolynomialRoots find_roots(const Polynomial& input, double a, double b, const Ro
         k = degree - 3;
     }
     for (; k > 0; --k)
-        critical_points = roots_between_critical_points(derivatives[k], a, b, critical_points, tolerance, false);
-    return roots_between_critical_points(p, a, b, critical_points, tolerance, only_first);
+        critical_points = roots_between_critical_points(derivatives[k], a, b, critical_points, tolerance, false, work);
+    return roots_between_critical_points(p, a, b, critical_points, tolerance, only_first, work);
 }
 
 }  // namespace
 
-std::optional<PolynomialRoot> first_root(const Polynomial& p, double a, double b, const RootTolerance& tolerance) {
-    const PolynomialRoots roots = find_roots(p, a, b, tolerance, true);
+std::optional<PolynomialRoot> first_root(const Polynomial& p, double a, double b, const RootTolerance& tolerance,
+                                         RootFinderWork* work) {
+    const PolynomialRoots roots = find_roots(p, a, b, tolerance, true, work);
     if (roots.empty()) return std::nullopt;
     return roots[0];
 }
 
-PolynomialRoots all_roots(const Polynomial& p, double a, double b, const RootTolerance& tolerance) {
-    return find_roots(p, a, b, tolerance, false);
+PolynomialRoots all_roots(const Polynomial& p, double a, double b, const RootTolerance& tolerance,
+                          RootFinderWork* work) {
+    return find_roots(p, a, b, tolerance, false, work);
 }
 
 }  // namespace isotrace

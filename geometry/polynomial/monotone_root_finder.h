@@ -19,10 +19,12 @@
 
 namespace isotrace {
 
-// The smallest root in [a, b] (a ≤ b), or nothing.
-std::optional<PolynomialRoot> first_root(const Polynomial& p, double a, double b, const RootTolerance& tolerance = {});
+// The smallest root in [a, b] (a ≤ b), or nothing. Refinement steps are added to `work` when given.
+std::optional<PolynomialRoot> first_root(const Polynomial& p, double a, double b, const RootTolerance& tolerance = {},
+                                         RootFinderWork* work = nullptr);
 
 // All roots in [a, b] (a ≤ b), ascending.
-PolynomialRoots all_roots(const Polynomial& p, double a, double b, const RootTolerance& tolerance = {});
+PolynomialRoots all_roots(const Polynomial& p, double a, double b, const RootTolerance& tolerance = {},
+                          RootFinderWork* work = nullptr);
 
 }  // namespace isotrace

@@ -2,6 +2,7 @@
 // The vocabulary shared by the root finders: how precisely to locate a root, and what is reported.
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "geometry/polynomial/polynomial.h"
 
@@ -13,6 +14,11 @@ struct RootTolerance {
     double absolute = 1e-13;
     double relative = 1e-13;
     double width_at(double t) const { return absolute + relative * std::abs(t); }
+};
+
+// Work done by a root finder, for statistics: its refinement steps (Newton or bisection), summed over calls.
+struct RootFinderWork {
+    std::uint64_t iterations = 0;
 };
 
 struct PolynomialRoot {

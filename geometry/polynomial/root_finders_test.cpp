@@ -147,7 +147,11 @@ TEST_P(RootFinderTest, RandomCoefficientsAgreeWithTheOracle) {
 
 INSTANTIATE_TEST_SUITE_P(PolynomialRootFinders, RootFinderTest,
                          ::testing::Values(NamedRootFinder{"Sturm", &sturm_roots},
-                                           NamedRootFinder{"Monotone", &all_roots}),
+                                           NamedRootFinder{"Monotone",
+                                                           [](const Polynomial& p, double a, double b,
+                                                              const RootTolerance& tolerance) {
+                                                               return all_roots(p, a, b, tolerance);
+                                                           }}),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace
