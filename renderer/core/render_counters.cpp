@@ -11,7 +11,8 @@ namespace isotrace::counters {
 namespace {
 
 constexpr int kMaxGeometryTypes = 64;
-constexpr int kMaxNamedCounters = 64;
+constexpr int kMaxNamedCounters = 1024;  // per-object counters of large scenes share the last slot
+constexpr const char* kOverflowCounter = "counters.overflow";
 
 // Relaxed atomics written only by the owning thread: plain loads/stores in machine code, yet the progress
 // display may read them mid-render without a data race.
@@ -76,7 +77,9 @@ int named_counter_slot(const std::string& name) {
     std::lock_guard lock(r.mutex);
     for (std::size_t i = 0; i < r.counter_names.size(); ++i)
         if (r.counter_names[i] == name) return int(i);
-    if (r.counter_names.size() == kMaxNamedCounters) throw std::logic_error("too many named counters");
+    // Full: every further name adds to one overflow counter rather than failing the render.
+    if (r.counter_names.size() + 1 == kMaxNamedCounters) r.counter_names.push_back(kOverflowCounter);
+    if (r.counter_names.size() == kMaxNamedCounters) return kMaxNamedCounters - 1;
     r.counter_names.push_back(name);
     return int(r.counter_names.size() - 1);
 }

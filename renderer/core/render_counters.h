@@ -35,7 +35,8 @@ void count_candidate_hit(int slot);
 void count_closest_hit(int slot);
 void count_nan_sample();
 
-// Plugin-specific counters: register a name once, then add to its slot from any thread.
+// Plugin-specific counters: register a name once, then add to its slot from any thread. Names beyond the table's
+// 1023 share the slot "counters.overflow".
 int named_counter_slot(const std::string& name);
 void add_to_named(int slot, std::uint64_t amount);
 

@@ -45,6 +45,9 @@ public:
 
     // Name used in statistics tables ("sphere", "triangle_mesh", ...).
     virtual std::string type_name() const = 0;
+    // The scene object's name, given before create_geometry, for shapes that keep statistics per object.
+    void set_object_name(std::string name) { object_name_ = std::move(name); }
+    const std::string& object_name() const { return object_name_; }
     virtual std::size_t primitive_count() const = 0;
     // Memory the shape keeps for rendering, besides what Embree holds (for the build statistics).
     virtual std::size_t memory_bytes() const { return 0; }
@@ -72,6 +75,9 @@ public:
     virtual LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const {
         return {geometric_normal, geometric_normal, {hit.u, hit.v}};
     }
+
+private:
+    std::string object_name_;
 };
 
 Registry<Shape>& shape_registry();

@@ -86,6 +86,7 @@ void RenderScene::commit() {
         build_statistics_.shape_bytes += object.shape->memory_bytes();
         object.instanced = !object.shape->can_bake(object.to_world);
         if (!object.instanced) object.shape->bake(object.to_world);
+        object.shape->set_object_name(object.name);
         RTCGeometry geometry = object.shape->create_geometry(device);
         check_embree("building object \"" + object.name + "\"");
         if (object.instanced) {

@@ -80,12 +80,20 @@ std::string format_statistics(const nlohmann::json& s) {
                       number_or_dash(row["candidate_hits"]).c_str(), row["closest_hits"].get<unsigned long long>());
         out << line;
     }
-    if (!s["counters"].empty()) {
-        out << "  counters ";
-        for (const auto& [name, value] : s["counters"].items())
-            out << " " << name << " " << value.get<unsigned long long>();
-        out << "\n";
+    // Named counters "owner.what" (owner: a geometry type, or a type and object as in "blobs[cloud]"): one line
+    // per owner.
+    std::string owner_on_line;
+    for (const auto& [name, value] : s["counters"].items()) {
+        const std::size_t dot = name.rfind('.');
+        const std::string owner = dot == std::string::npos ? name : name.substr(0, dot);
+        const std::string what = dot == std::string::npos ? "count" : name.substr(dot + 1);
+        if (owner != owner_on_line) {
+            out << (owner_on_line.empty() ? "  counters  " : "\n            ") << owner << ":";
+            owner_on_line = owner;
+        }
+        out << " " << what << " " << value.get<unsigned long long>();
     }
+    if (!owner_on_line.empty()) out << "\n";
     return out.str();
 }
 
