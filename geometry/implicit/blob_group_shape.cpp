@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/user_geometry.h"
@@ -23,12 +24,33 @@ Bounds3f BlobGroupShape::bounds() const {
     return b;
 }
 
-RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {
+void BlobGroupShape::register_counters() {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
-    pieces_slot_ = counters::named_counter_slot("blobs.pieces");
-    solves_slot_ = counters::named_counter_slot("blobs.polynomial_solves");
-    searches_slot_ = counters::named_counter_slot("blobs.lipschitz_searches");
-    roots_slot_ = counters::named_counter_slot("blobs.roots");
+    const auto slots = [](const std::string& prefix) {
+        return WorkSlots{counters::named_counter_slot(prefix + ".pieces"),
+                         counters::named_counter_slot(prefix + ".pieces_skipped_by_bounds"),
+                         counters::named_counter_slot(prefix + ".polynomial_solves"),
+                         counters::named_counter_slot(prefix + ".lipschitz_searches"),
+                         counters::named_counter_slot(prefix + ".root_iterations"),
+                         counters::named_counter_slot(prefix + ".roots")};
+    };
+    all_groups_ = slots(type_name());
+    this_group_ = slots(type_name() + "[" + (object_name().empty() ? "unnamed" : object_name()) + "]");
+}
+
+void BlobGroupShape::count_work(const BlobQueryWork& work) const {
+    for (const WorkSlots& slots : {all_groups_, this_group_}) {
+        counters::add_to_named(slots.pieces, work.pieces);
+        counters::add_to_named(slots.skipped, work.skipped_pieces);
+        counters::add_to_named(slots.solves, work.polynomial_solves);
+        counters::add_to_named(slots.searches, work.lipschitz_searches);
+        counters::add_to_named(slots.iterations, work.root_iterations);
+        counters::add_to_named(slots.roots, work.roots);
+    }
+}
+
+RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {
+    register_counters();
     return user_geometry::create(device, this, unsigned(group_.elements().size()), bounds_callback,
                                  intersect_callback, occluded_callback);
 }
@@ -50,13 +72,10 @@ void BlobGroupShape::intersect_callback(const RTCIntersectFunctionNArguments* ar
         BlobQueryWork work;
         const auto t = self->group_.first_crossing(args->primID, origin, direction, RTCRayN_tnear(rays, args->N, i),
                                                    t_far, work);
-        counters::add_to_named(self->pieces_slot_, work.pieces);
-        counters::add_to_named(self->solves_slot_, work.polynomial_solves);
-        counters::add_to_named(self->searches_slot_, work.lipschitz_searches);
-        counters::add_to_named(self->roots_slot_, work.roots);
+        self->count_work(work);
         if (!t || !(float(*t) < t_far)) continue;
         counters::count_candidate_hit(self->counter_slot_);
-        user_geometry::store_hit(args, i, float(*t), self->group_.normal(args->primID, origin + direction * *t));
+        user_geometry::store_hit(args, i, float(*t), self->group_.normal(origin + direction * *t));
     }
 }
 
@@ -71,11 +90,34 @@ void BlobGroupShape::occluded_callback(const RTCOccludedFunctionNArguments* args
         const auto t = self->group_.first_crossing(args->primID, ray_origin(rays, args->N, i),
                                                    ray_direction(rays, args->N, i), RTCRayN_tnear(rays, args->N, i),
                                                    t_far, work);
-        counters::add_to_named(self->pieces_slot_, work.pieces);
+        self->count_work(work);
         if (!t) continue;
         counters::count_candidate_hit(self->counter_slot_);
         t_far = -std::numeric_limits<float>::infinity();
     }
+}
+
+void BlobGroupShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                  std::vector<InsideSpan>& spans) const {
+    thread_local std::vector<FieldCrossing> crossings;
+    crossings.clear();
+    BlobQueryWork work;
+    const int sign_at_start = group_.crossings(origin, direction, t_min, t_max, crossings, work);
+    count_work(work);
+    // Crossings alternate in direction (each one flips the field's sign), so spans pair entries with exits.
+    std::optional<BoundaryPoint> entry;
+    if (sign_at_start > 0) entry = BoundaryPoint{t_min, {0, 0, 1}, BoundaryPoint::kCut};
+    for (const FieldCrossing& crossing : crossings) {
+        const BoundaryPoint point{crossing.t, group_.normal(origin + direction * crossing.t),
+                                  crossing.element};
+        if (crossing.entering) {
+            if (!entry) entry = point;
+        } else if (entry) {
+            spans.push_back({*entry, point});
+            entry.reset();
+        }
+    }
+    if (entry) spans.push_back({*entry, BoundaryPoint{t_max, {0, 0, 1}, BoundaryPoint::kCut}});
 }
 
 }  // namespace isotrace

@@ -1,13 +1,15 @@
 #pragma once
 // The "blobs" shape: a BlobGroup as one Embree user geometry, one primitive per element, bounds = the element's
 // support. Each element's intersect callback reports the first crossing of the summed field within its own
-// support; Embree's shrinking t_far makes the nearest of them the hit.
+// support; Embree's shrinking t_far makes the nearest of them the hit. As a CSG operand the group is a solid:
+// inside is where the summed field exceeds the threshold.
 #include "geometry/implicit/blob_group.h"
 #include "renderer/plugin/shape.h"
+#include "renderer/plugin/solid.h"
 
 namespace isotrace {
 
-class BlobGroupShape final : public Shape {
+class BlobGroupShape final : public Shape, public Solid {
 public:
     explicit BlobGroupShape(BlobGroup group);
 
@@ -22,16 +24,26 @@ public:
     }
     RTCGeometry create_geometry(RTCDevice device) override;
 
+    void prepare_span_queries(RTCDevice) override { register_counters(); }
+    void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                      std::vector<InsideSpan>& spans) const override;
+
     const BlobGroup& group() const { return group_; }
 
 private:
+    void register_counters();
+    void count_work(const BlobQueryWork& work) const;
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);
     static void occluded_callback(const RTCOccludedFunctionNArguments* args);
 
     BlobGroup group_;
     int counter_slot_ = 0;
-    int pieces_slot_ = 0, solves_slot_ = 0, searches_slot_ = 0, roots_slot_ = 0;
+    // Work counters for all blob groups ("blobs.pieces", ...) and for this one ("blobs[name].pieces", ...).
+    struct WorkSlots {
+        int pieces, skipped, solves, searches, iterations, roots;
+    };
+    WorkSlots all_groups_{}, this_group_{};
 };
 
 }  // namespace isotrace

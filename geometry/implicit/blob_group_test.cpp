@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/implicit/implicit_test_support.h"
 #include "geometry/sphere/sphere_intersection.h"
 
 namespace isotrace {
@@ -40,7 +41,7 @@ TEST(BlobGroup, LoneMetaballOfEveryKernelIsASphereOfTheIsoRadius) {
             ++hits;
             EXPECT_NEAR(*t, expected->t0, 1e-5 * expected->t0) << kernel << " ray " << i;
             const Vec3d p = origin + direction * *t;
-            const Vec3d n = group.normal(0, p);
+            const Vec3d n = group.normal(p);
             EXPECT_NEAR(dot(n, normalize(p - centre)), 1.0, 1e-4) << kernel;
         }
         EXPECT_GT(hits, 300) << kernel;
@@ -102,25 +103,11 @@ std::optional<double> nearest_crossing(const BlobGroup& group, const Vec3d& orig
     return best;
 }
 
-BlobGroup random_group(int count, std::uint32_t seed, const std::string& kernel) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> position(-1.5, 1.5), radius(0.35, 0.7), half(0.0, 0.25), weight(0.7, 1.3);
-    std::vector<Metacube> elements;
-    for (int i = 0; i < count; ++i) {
-        OrientedBox box;
-        box.centre = {position(random), position(random), position(random)};
-        const double d = i % 3 == 0 ? half(random) : 0.0;  // a third are metacubes
-        box.half_size = {d, d * 0.7, d * 1.2};
-        elements.emplace_back(box, radius(random), weight(random));
-    }
-    return BlobGroup(std::move(elements), make_field_function(kernel, 4.0), 0.5);
-}
-
 // A 100-element group seen through a grid of parallel rays: the hit mask is identical to the brute-force
 // reference and every depth agrees to 1e-4.
 TEST(BlobGroup, HundredElementImageMatchesBruteForceReference) {
     for (const std::string kernel : {"kim", "wyvill", "nishimura"}) {
-        const BlobGroup group = random_group(100, 5, kernel);
+        const BlobGroup group = random_blob_group(100, 5, kernel);
         int hits = 0;
         for (int row = 0; row < 16; ++row)
             for (int column = 0; column < 16; ++column) {
@@ -139,7 +126,7 @@ TEST(BlobGroup, HundredElementImageMatchesBruteForceReference) {
 
 // Rays that start inside cross the surface an odd number of times before leaving the group.
 TEST(BlobGroup, RaysFromInsideCrossAnOddNumberOfTimes) {
-    const BlobGroup group = random_group(40, 9, "kim");
+    const BlobGroup group = random_blob_group(40, 9, "kim");
     std::mt19937 random(2);
     std::uniform_real_distribution<double> unit(-1, 1);
     int tested = 0;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/implicit/blob_group.h"
 #include "geometry/implicit/metacube.h"
 
 namespace isotrace {
@@ -46,6 +47,23 @@ inline Metacube random_metacube(std::mt19937_64& rng) {
     box.axes = random_axes(rng);
     for (int k = 0; k < 3; ++k) box.half_size[k] = u(rng) < 0.15 ? 0 : 1.5 * u(rng);
     return Metacube(box, 0.1 + 1.9 * u(rng), u(rng) < 0.2 ? -1.0 : 1.0);
+}
+
+// `count` elements in a 3 m cube, a third of them metacubes (non-uniform half-sizes up to 0.3), radii 0.35–0.7,
+// weights 0.7–1.3; every `carving_every`-th element (when > 0) carves with weight −0.5. Threshold 0.5.
+inline BlobGroup random_blob_group(int count, std::uint32_t seed, const std::string& kernel, int carving_every = 0) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> position(-1.5, 1.5), radius(0.35, 0.7), half(0.0, 0.25), weight(0.7, 1.3);
+    std::vector<Metacube> elements;
+    for (int i = 0; i < count; ++i) {
+        OrientedBox box;
+        box.centre = {position(random), position(random), position(random)};
+        const double d = i % 3 == 0 ? half(random) : 0.0;
+        box.half_size = {d, d * 0.7, d * 1.2};
+        const double r = radius(random), w = weight(random);
+        elements.emplace_back(box, r, carving_every > 0 && i % carving_every == 0 ? -0.5 : w);
+    }
+    return BlobGroup(std::move(elements), make_field_function(kernel, 4.0), 0.5);
 }
 
 }  // namespace isotrace
