@@ -1,0 +1,107 @@
+#include "geometry/superquadric/bend.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace isotrace {
+
+Bend::Bend(double curvature, double direction, double centre, Interval region)
+    : curvature_(curvature),
+      radius_(1 / curvature),
+      centre_(centre),
+      region_(region),
+      angle_lo_(curvature * (region.lo - centre)),
+      angle_hi_(curvature * (region.hi - centre)),
+      angle_middle_(0.5 * (angle_lo_ + angle_hi_)),
+      u_(std::cos(direction), std::sin(direction), 0),
+      v_(-std::sin(direction), std::cos(direction), 0) {}
+
+double Bend::region_angle(double z) const { return curvature_ * (std::clamp(z, region_.lo, region_.hi) - centre_); }
+
+Vec3d Bend::forward(const Vec3d& p) const {
+    const double s = dot(p, u_), w = dot(p, v_);
+    const double theta = region_angle(p.z);
+    const double beyond = p.z - std::clamp(p.z, region_.lo, region_.hi);
+    const double arm = radius_ - s, c = std::cos(theta), sn = std::sin(theta);
+    return from_frame(radius_ - arm * c + beyond * sn, w, centre_ + arm * sn + beyond * c);
+}
+
+Vec3d Bend::inverse(const Vec3d& q) const {
+    const double a = dot(q, u_) - radius_, b = q.z - centre_;
+    const double cm = std::cos(angle_middle_), sm = std::sin(angle_middle_);
+    const double relative = std::atan2(b * cm + a * sm, -a * cm + b * sm);
+    const double theta = std::clamp(angle_middle_ + relative, angle_lo_, angle_hi_);
+    const double c = std::cos(theta), sn = std::sin(theta);
+    const double arm = -a * c + b * sn, beyond = a * sn + b * c;
+    return from_frame(radius_ - arm, dot(q, v_), centre_ + theta / curvature_ + beyond);
+}
+
+Jacobian Bend::jacobian(const Vec3d& p) const {
+    const double theta = region_angle(p.z), c = std::cos(theta), sn = std::sin(theta);
+    const bool in_region = region_.contains(p.z);
+    // Columns in the frame: ∂/∂s, ∂/∂w, ∂/∂z of (S, W, Z).
+    const double along = in_region ? (radius_ - dot(p, u_)) * curvature_ : 1;
+    const Vec3d d_ds = from_frame(c, 0, -sn), d_dw = v_, d_dz = from_frame(along * sn, 0, along * c);
+    // ∂s/∂(x, y) = (u.x, u.y), ∂w/∂(x, y) = (v.x, v.y).
+    return {{d_ds * u_.x + d_dw * v_.x, d_ds * u_.y + d_dw * v_.y, d_dz}};
+}
+
+Bend::FrameBox Bend::to_frame(const IntervalBox& box) const {
+    return {box.x * u_.x + box.y * u_.y, box.x * v_.x + box.y * v_.y, box.z};
+}
+
+IntervalBox Bend::from_frame(const FrameBox& box) const {
+    return {box.s * u_.x + box.w * v_.x, box.s * u_.y + box.w * v_.y, box.z};
+}
+
+IntervalBox Bend::forward_box(const IntervalBox& box) const {
+    const FrameBox f = to_frame(box);
+    const Interval theta = {region_angle(f.z.lo), region_angle(f.z.hi)};
+    const auto beyond_at = [&](double z) { return z - std::clamp(z, region_.lo, region_.hi); };
+    const Interval beyond = {beyond_at(f.z.lo), beyond_at(f.z.hi)};  // non-decreasing in z
+    const Interval arm = Interval::point(radius_) - f.s;
+    const Interval c = cos_range(theta), sn = sin_range(theta);
+    return from_frame({Interval::point(radius_) - arm * c + beyond * sn, f.w, arm * sn + beyond * c + centre_});
+}
+
+IntervalBox Bend::inverse_box(const IntervalBox& box) const {
+    const FrameBox f = to_frame(box);
+    const Interval a = f.s + (-radius_), b = f.z + (-centre_);
+    // The angles about the centre that the box covers, relative to the region's middle angle: from its corners,
+    // unless it contains the centre or straddles the opposite direction (then every angle).
+    const double cm = std::cos(angle_middle_), sm = std::sin(angle_middle_);
+    Interval relative{std::numbers::pi, -std::numbers::pi};
+    for (const double ca : {a.lo, a.hi})
+        for (const double cb : {b.lo, b.hi}) {
+            const double angle = std::atan2(cb * cm + ca * sm, -ca * cm + cb * sm);
+            relative = {std::min(relative.lo, angle), std::max(relative.hi, angle)};
+        }
+    if ((a.contains(0) && b.contains(0)) || relative.width() >= std::numbers::pi)
+        relative = {-std::numbers::pi, std::numbers::pi};
+    const Interval theta = {std::clamp(angle_middle_ + relative.lo, angle_lo_, angle_hi_),
+                            std::clamp(angle_middle_ + relative.hi, angle_lo_, angle_hi_)};
+    const Interval c = cos_range(theta), sn = sin_range(theta);
+    const Interval arm = b * sn - a * c, beyond = a * sn + b * c;
+    return from_frame({Interval::point(radius_) - arm, f.w, theta * (1 / curvature_) + beyond + centre_});
+}
+
+std::string Bend::problem(const IntervalBox& input) const {
+    std::ostringstream message;
+    const double reach = to_frame(input).s.hi * curvature_;
+    if (reach > kMaxCurvatureTimesExtent) {
+        message << "bend: curvature times the object's extent toward the bend is " << reach
+                << "; it must stay below " << kMaxCurvatureTimesExtent
+                << " (the object would fold through the bend's centre, where the inverse is singular)";
+        return message.str();
+    }
+    const double degrees = (angle_hi_ - angle_lo_) * 180 / std::numbers::pi;
+    if (degrees > 180) {
+        message << "bend: the region bends through " << degrees << " degrees; at most 180 are supported";
+        return message.str();
+    }
+    return {};
+}
+
+}  // namespace isotrace
