@@ -40,8 +40,10 @@ private:
     IntervalBox from_frame(const FrameBox& box) const;
     Vec3d from_frame(double s, double w, double z) const { return u_ * s + v_ * w + Vec3d(0, 0, z); }
     double region_angle(double z) const;
+    // (1 − cos θ)/k = 2·sin²(θ/2)/k over an interval of angles, without cancellation.
+    Interval versine_over_curvature(Interval theta) const;
 
-    double curvature_, radius_, centre_;
+    double curvature_, centre_;
     Interval region_;
     double angle_lo_, angle_hi_, angle_middle_;
     Vec3d u_, v_;

@@ -82,7 +82,9 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
     while (top > 0) {
         const Segment s = stack[--top];
         const bool sign_change = inside(s.g_lo) != inside(s.g_hi);
-        const bool narrow = s.hi - s.lo <= resolution || top >= kMaxDepth - 1;
+        const double mid = 0.5 * (s.lo + s.hi);
+        const bool narrow =
+            s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
         if (sign_change && narrow) {
             ++work.crossings;
             const double t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
@@ -94,8 +96,6 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
             const Interval range = bound(s.lo, s.hi);
             if (range.lo >= 0 || range.hi < 0 || narrow) continue;
         }
-        const double mid = 0.5 * (s.lo + s.hi);
-        if (!(mid > s.lo && mid < s.hi)) continue;
         const double g_mid = value(mid);
         ++work.evaluations;
         stack[top++] = {mid, s.hi, g_mid, s.g_hi};  // the far half waits below the near one

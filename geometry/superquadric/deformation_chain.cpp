@@ -17,15 +17,30 @@ IntervalBox widened(IntervalBox box) {
 
 }  // namespace
 
-DeformationChain::DeformationChain(const IntervalBox& undeformed_box) : boxes_{widened(undeformed_box)} {}
+DeformationChain::DeformationChain(const Superellipsoid& shape) : shape_(shape), boxes_{widened(shape.bounding_box())} {}
 
 void DeformationChain::append(const Deformation& stage) {
     if (stages_.size() >= std::size_t(kMaxStages))
         throw std::invalid_argument("at most " + std::to_string(kMaxStages) + " deformations are supported");
     const std::string problem = std::visit([&](const auto& s) { return s.problem(boxes_.back()); }, stage);
     if (!problem.empty()) throw std::invalid_argument(problem);
-    boxes_.push_back(widened(std::visit([&](const auto& s) { return s.forward_box(boxes_.back()); }, stage)));
     stages_.push_back(stage);
+    compute_stage_boxes();
+}
+
+void DeformationChain::compute_stage_boxes() {
+    constexpr int kCellsPerAxis = 8;
+    std::vector<IntervalBox> cells = shape_.surface_cells(kCellsPerAxis);
+    boxes_.resize(1);
+    for (const Deformation& stage : stages_) {
+        IntervalBox box = std::visit([&](const auto& s) { return s.forward_box(cells[0]); }, stage);
+        for (IntervalBox& cell : cells) {
+            cell = std::visit([&](const auto& s) { return s.forward_box(cell); }, stage);
+            box.extend(cell.lower());
+            box.extend(cell.upper());
+        }
+        boxes_.push_back(widened(box));
+    }
 }
 
 Vec3d DeformationChain::forward(const Vec3d& p) const {

@@ -2,7 +2,8 @@
 // Barr's global deformations composed in the paper's order X' = TR·BE·TW·TA·X (eq. 6): the stages are applied
 // to the undeformed superquadric first to last, the placement (TR) afterwards. Each stage knows its inverse
 // (eq. 7), its Jacobian, and how boxes map through it both ways; the chain keeps a conservative bounding box of
-// the object after every stage. Those stage boxes do two jobs: they bound the deformed object for Embree, and a
+// the object after every stage: the union of the superellipsoid's surface cells carried through the stages by
+// interval arithmetic (small cells keep the wrapping effect of interval rotations small). Those stage boxes do two jobs: they bound the deformed object for Embree, and a
 // point outside one of them is outside the object, which keeps the inverses away from their singularities (a
 // taper's zero scale, a bend's centre).
 #include <array>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "geometry/superquadric/bend.h"
+#include "geometry/superquadric/superellipsoid.h"
 #include "geometry/superquadric/taper.h"
 #include "geometry/superquadric/twist.h"
 
@@ -24,7 +26,7 @@ public:
     // Points of every stage: path[0] undeformed, path[k] after stage k.
     using Path = std::array<Vec3d, kMaxStages + 1>;
 
-    explicit DeformationChain(const IntervalBox& undeformed_box);
+    explicit DeformationChain(const Superellipsoid& shape);
 
     // Appends a stage. Throws std::invalid_argument (the stage's problem) when its inverse is not valid over the
     // object as deformed so far, or when the chain is full.
@@ -51,6 +53,10 @@ private:
     // when `check_boxes`, and records every stage's point in `path`.
     bool walk_inverse(const Vec3d& q, bool check_boxes, Path& path) const;
 
+    // Recomputes boxes_ for the current stages (at construction only, so the cells need not be kept).
+    void compute_stage_boxes();
+
+    Superellipsoid shape_;
     std::vector<Deformation> stages_;
     std::vector<IntervalBox> boxes_;  // boxes_[k] bounds the object after k stages, widened slightly
 };

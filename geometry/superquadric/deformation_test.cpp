@@ -16,6 +16,15 @@ using superquadric_test::random_deformations;
 
 const Vec3d kRadii(0.8, 0.5, 1.5);
 
+// A random point of the solid superellipsoid (by rejection from its box).
+Vec3d random_point_of(std::mt19937& random, const Superellipsoid& shape) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (;;) {
+        const Vec3d p(shape.radii.x * unit(random), shape.radii.y * unit(random), shape.radii.z * unit(random));
+        if (shape.gauge(p) <= 1) return p;
+    }
+}
+
 Vec3d random_point_in(std::mt19937& random, const IntervalBox& box) {
     std::uniform_real_distribution<double> unit(0, 1);
     return {box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
@@ -33,10 +42,10 @@ TEST(SuperquadricDeformation, InversesUndoTheForwardMaps) {
     std::mt19937 random(11);
     const Superellipsoid shape{kRadii, 1, 1};
     for (const Deformation& stage : single_stages()) {
-        DeformationChain chain(shape.bounding_box());
+        DeformationChain chain(shape);
         chain.append(stage);
         for (int i = 0; i < 500; ++i) {
-            const Vec3d p = random_point_in(random, shape.bounding_box());
+            const Vec3d p = random_point_of(random, shape);
             const Vec3d q = chain.forward(p);
             ASSERT_TRUE(chain.deformed_box().contains(q));
             const auto back = chain.inverse(q);
@@ -45,10 +54,10 @@ TEST(SuperquadricDeformation, InversesUndoTheForwardMaps) {
         }
     }
     for (int c = 0; c < 20; ++c) {
-        DeformationChain chain(shape.bounding_box());
+        DeformationChain chain(shape);
         for (const Deformation& stage : random_deformations(random, kRadii)) chain.append(stage);
         for (int i = 0; i < 200; ++i) {
-            const Vec3d p = random_point_in(random, shape.bounding_box());
+            const Vec3d p = random_point_of(random, shape);
             const auto back = chain.inverse(chain.forward(p));
             ASSERT_TRUE(back);
             EXPECT_NEAR(length(*back - p), 0, 1e-11);
@@ -116,7 +125,7 @@ TEST(SuperquadricDeformation, BoxesMapConservativelyBothWays) {
 }
 
 std::string problem_of(const Deformation& stage) {
-    DeformationChain chain(Superellipsoid{kRadii, 1, 1}.bounding_box());
+    DeformationChain chain(Superellipsoid{kRadii, 1, 1});
     try {
         chain.append(stage);
     } catch (const std::invalid_argument& error) {
@@ -136,7 +145,7 @@ TEST(SuperquadricDeformation, SingularInversesAreRefused) {
     EXPECT_EQ(problem_of(Bend(1.9, 1.5707963267948966, 0, {-0.1, 0.1})), "");
     // More than 180 degrees over the region.
     EXPECT_NE(problem_of(Bend(1.1, 0, 0, {-1.5, 1.5})).find("180"), std::string::npos);
-    DeformationChain chain(Superellipsoid{kRadii, 1, 1}.bounding_box());
+    DeformationChain chain(Superellipsoid{kRadii, 1, 1});
     for (int i = 0; i < DeformationChain::kMaxStages; ++i) chain.append(Twist(0.1, kRadii.z));
     EXPECT_THROW(chain.append(Twist(0.1, kRadii.z)), std::invalid_argument);
 }

@@ -70,6 +70,18 @@ Polynomial Superellipsoid::polynomial_along(const Vec3d& origin, const Vec3d& di
     return sum;
 }
 
+std::vector<IntervalBox> Superellipsoid::surface_cells(int per_axis) const {
+    std::vector<IntervalBox> cells;
+    const auto edge = [&](int k, int i) { return radii[k] * (2.0 * i / per_axis - 1); };
+    for (int i = 0; i < per_axis; ++i)
+        for (int j = 0; j < per_axis; ++j)
+            for (int l = 0; l < per_axis; ++l) {
+                const IntervalBox cell{{edge(0, i), edge(0, i + 1)}, {edge(1, j), edge(1, j + 1)}, {edge(2, l), edge(2, l + 1)}};
+                if (gauge_range({cell.x.magnitude(), cell.y.magnitude(), cell.z.magnitude()}).contains(1)) cells.push_back(cell);
+            }
+    return cells;
+}
+
 Vec3d Superellipsoid::surface_point(double eta, double omega) const {
     const double ce = signed_power(std::cos(eta), north_south);
     return {radii.x * ce * signed_power(std::cos(omega), east_west),

@@ -6,6 +6,8 @@
 // u = |x|/a1, v = |y|/a2, w = |z|/a3. G < 1 exactly where F < 1, but G is homogeneous of degree 1 (so it grows
 // like distance, never overflows, and stays well scaled for root refinement) and it is non-decreasing in each of
 // u, v, w, so its range over a box of magnitudes is given by the box's two extreme corners.
+#include <vector>
+
 #include "geometry/polynomial/polynomial.h"
 #include "geometry/superquadric/interval.h"
 #include "renderer/math/vec3.h"
@@ -38,6 +40,10 @@ struct Superellipsoid {
 
     // The paper's parametric surface (eq. 1) with signed powers: η ∈ [−π/2, π/2] latitude, ω ∈ [−π, π].
     Vec3d surface_point(double eta, double omega) const;
+
+    // The cells of a per_axis³ grid over the bounding box that the surface passes through (the gauge's range
+    // over the cell contains 1): a deformed object's bounds are the union of its deformed surface cells.
+    std::vector<IntervalBox> surface_cells(int per_axis) const;
 
     IntervalBox bounding_box() const {
         return {{-radii.x, radii.x}, {-radii.y, radii.y}, {-radii.z, radii.z}};

@@ -100,9 +100,11 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (deformation_.empty()) {
         for (int k = 0; k < 3; ++k) {
             const double t = -o[k] / d[k];
-            if (t > t0 && t < t1) cuts[count++] = t;
+            if (!(t > t0 && t < t1)) continue;
+            int at = count++;  // insertion keeps the cuts in order
+            for (; at > 1 && cuts[at - 1] > t; --at) cuts[at] = cuts[at - 1];
+            cuts[at] = t;
         }
-        std::sort(cuts + 1, cuts + count);
     }
     cuts[count++] = t1;
     double g_start = value(t0);

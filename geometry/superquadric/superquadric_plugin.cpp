@@ -66,7 +66,7 @@ Superquadric parse_superquadric(const SceneNode& node) {
     Transform placement = Transform::translate(node.vec3_or("center", {0, 0, 0}));
     if (const auto rotate = node.optional_value("rotate")) placement = placement * parse_rotation(*rotate);
 
-    DeformationChain chain(shape.bounding_box());
+    DeformationChain chain(shape);
     for (const SceneNode& entry : node.object_array("deform")) {
         const Deformation stage = parse_deformation(entry, shape.radii.z, chain.deformed_box());
         entry.finish();

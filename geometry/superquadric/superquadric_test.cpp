@@ -56,10 +56,8 @@ void expect_ellipsoid_hits(const Superquadric& s, const Vec3d& radii, const char
         SuperquadricWork work;
         const auto t = s.first_crossing(ray.origin, ray.direction, 0, 1e30, work);
         if (roots && (*roots)[1] - (*roots)[0] < 1e-6 * std::abs((*roots)[1])) continue;  // grazing: either answer
-        const std::optional<double> expected = !roots          ? std::nullopt
-                                               : (*roots)[0] >= 0 ? std::optional<double>((*roots)[0])
-                                               : (*roots)[1] >= 0 ? std::optional<double>((*roots)[1])
-                                                                  : std::nullopt;
+        std::optional<double> expected;
+        if (roots && (*roots)[1] >= 0) expected = (*roots)[0] >= 0 ? (*roots)[0] : (*roots)[1];
         ASSERT_EQ(t.has_value(), expected.has_value()) << what << " ray " << i;
         if (!t) continue;
         ++hits;
@@ -132,7 +130,7 @@ TEST(SuperquadricIntersection, EpsilonTwoIsTheOctahedron) {
             EXPECT_NEAR(dot(n, Vec3d(std::copysign(1.0, p.x), std::copysign(1.0, p.y), std::copysign(1.0, p.z))),
                         std::sqrt(3.0), 1e-9);
         }
-        EXPECT_GT(hits, 1500);
+        EXPECT_GT(hits, 1200);
     }
 }
 

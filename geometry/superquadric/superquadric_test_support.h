@@ -11,7 +11,7 @@ namespace isotrace::superquadric_test {
 inline Superquadric make_superquadric(const Vec3d& radii, double north_south, double east_west,
                                       const std::vector<Deformation>& stages = {}, const Transform& placement = {}) {
     const Superellipsoid shape{radii, north_south, east_west};
-    DeformationChain chain(shape.bounding_box());
+    DeformationChain chain(shape);
     for (const Deformation& stage : stages) chain.append(stage);
     return Superquadric(shape, std::move(chain), placement);
 }
