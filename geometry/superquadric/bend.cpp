@@ -14,6 +14,8 @@ Bend::Bend(double curvature, double direction, double centre, Interval region)
       angle_lo_(curvature * (region.lo - centre)),
       angle_hi_(curvature * (region.hi - centre)),
       angle_middle_(0.5 * (angle_lo_ + angle_hi_)),
+      cos_middle_(std::cos(angle_middle_)),
+      sin_middle_(std::sin(angle_middle_)),
       u_(std::cos(direction), std::sin(direction), 0),
       v_(-std::sin(direction), std::cos(direction), 0) {}
 
@@ -34,7 +36,7 @@ Vec3d Bend::inverse(const Vec3d& q) const {
     const double s_in = dot(q, u_), z_in = q.z - centre_;
     // The angle about the bend centre, (k·S − 1, k·(Z − z0)) scaled by k, relative to the region's middle angle.
     const double a = curvature_ * s_in - 1, b = curvature_ * z_in;
-    const double cm = std::cos(angle_middle_), sm = std::sin(angle_middle_);
+    const double cm = cos_middle_, sm = sin_middle_;
     const double relative = std::atan2(b * cm + a * sm, -a * cm + b * sm);
     const double theta = std::clamp(angle_middle_ + relative, angle_lo_, angle_hi_);
     const double c = std::cos(theta), sn = std::sin(theta), half = std::sin(0.5 * theta);
@@ -81,7 +83,7 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
     const Interval a = f.s * curvature_ + (-1.0), b = z_in * curvature_;
     // The angles about the centre that the box covers, relative to the region's middle angle: from its corners,
     // unless it contains the centre or straddles the opposite direction (then every angle).
-    const double cm = std::cos(angle_middle_), sm = std::sin(angle_middle_);
+    const double cm = cos_middle_, sm = sin_middle_;
     Interval relative{std::numbers::pi, -std::numbers::pi};
     for (const double ca : {a.lo, a.hi})
         for (const double cb : {b.lo, b.hi}) {

@@ -46,6 +46,7 @@ private:
     double curvature_, centre_;
     Interval region_;
     double angle_lo_, angle_hi_, angle_middle_;
+    double cos_middle_, sin_middle_;
     Vec3d u_, v_;
 };
 

@@ -6,7 +6,9 @@
 // (so no earlier pair of crossings hides in it), then refined by the Illinois variant of regula falsi with
 // bisection steps whenever it stalls. A sub-segment narrower than `resolution` whose bound still straddles zero
 // without a sign change at its ends is a grazing contact (two crossings closer than the resolution, or none)
-// and is not reported — the project's rule for tangent contacts (docs/decisions.md).
+// and is not reported — the project's rule for tangent contacts (docs/decisions.md). When the caller knows that
+// {g < 0} meets the ray in one interval (a convex solid), a sign change brackets exactly one crossing and is
+// refined at once.
 #include <cmath>
 #include <cstdint>
 
@@ -69,7 +71,7 @@ double refine(double lo, double hi, double g_lo, double g_hi, const Value& value
 // Visits the crossings of g in [t0, t1] in increasing t; g0 = g(t0), g1 = g(t1). `bound(a, b)` returns an
 // Interval containing g over [a, b]; `visit(Crossing)` returns false to stop. Returns false when stopped.
 template <class Value, class Bound, class Visit>
-bool search_crossings(double t0, double t1, double g0, double g1, double resolution, const Value& value,
+bool search_crossings(double t0, double t1, double g0, double g1, double resolution, bool convex, const Value& value,
                       const Bound& bound, CrossingSearchWork& work, Visit&& visit) {
     using crossing_search_detail::inside;
     struct Segment {
@@ -85,7 +87,7 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         const double mid = 0.5 * (s.lo + s.hi);
         const bool narrow =
             s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
-        if (sign_change && narrow) {
+        if (sign_change && (narrow || convex)) {
             ++work.crossings;
             const double t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
             if (!visit(Crossing{t, inside(s.g_hi)})) return false;

@@ -33,6 +33,9 @@ public:
     void append(const Deformation& stage);
 
     bool empty() const { return stages_.empty(); }
+    std::size_t heap_bytes() const {
+        return stages_.capacity() * sizeof(Deformation) + boxes_.capacity() * sizeof(IntervalBox);
+    }
     std::size_t size() const { return stages_.size(); }
     const IntervalBox& undeformed_box() const { return boxes_.front(); }
     const IntervalBox& deformed_box() const { return boxes_.back(); }

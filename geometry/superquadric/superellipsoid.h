@@ -23,6 +23,8 @@ struct Superellipsoid {
     static constexpr double kMinExponent = 0.02, kMaxExponent = 4;
 
     double gauge(const Vec3d& p) const;
+    // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
+    bool is_convex() const { return north_south <= 2 && east_west <= 2; }
     // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative).
     Interval gauge_range(const IntervalBox& magnitudes) const;
     // The paper's F = G^(2/ε1) (may overflow to +inf far away; the intersector never uses it).

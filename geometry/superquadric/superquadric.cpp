@@ -107,10 +107,12 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         }
     }
     cuts[count++] = t1;
+    const bool convex = deformation_.empty() && shape_.is_convex();
     double g_start = value(t0);
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
-        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, value, bound, work.search, visit))
+        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, work.search,
+                              visit))
             return;
         g_start = g_end;
     }

@@ -14,6 +14,12 @@ using user_geometry::ray_origin;
 SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
     : superquadrics_(std::move(superquadrics)) {}
 
+std::size_t SuperquadricShape::memory_bytes() const {
+    std::size_t bytes = superquadrics_.capacity() * sizeof(Superquadric);
+    for (const Superquadric& s : superquadrics_) bytes += s.deformation().heap_bytes();
+    return bytes;
+}
+
 Bounds3f SuperquadricShape::bounds() const {
     Bounds3f b;
     for (const Superquadric& s : superquadrics_) {

@@ -16,7 +16,7 @@ public:
 
     std::string type_name() const override { return "superquadric"; }
     std::size_t primitive_count() const override { return superquadrics_.size(); }
-    std::size_t memory_bytes() const override { return superquadrics_.capacity() * sizeof(Superquadric); }
+    std::size_t memory_bytes() const override;
     Bounds3f bounds() const override;
     bool counts_intersection_tests() const override { return true; }
     // Similarities keep the tolerances (relative to the object's size) meaningful; other maps are instanced.
