@@ -1,0 +1,121 @@
+#include "geometry/superquadric/bend.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace isotrace {
+
+Bend::Bend(double curvature, double direction, double centre, Interval region)
+    : curvature_(curvature),
+      centre_(centre),
+      region_(region),
+      angle_lo_(curvature * (region.lo - centre)),
+      angle_hi_(curvature * (region.hi - centre)),
+      angle_middle_(0.5 * (angle_lo_ + angle_hi_)),
+      cos_middle_(std::cos(angle_middle_)),
+      sin_middle_(std::sin(angle_middle_)),
+      u_(std::cos(direction), std::sin(direction), 0),
+      v_(-std::sin(direction), std::cos(direction), 0) {}
+
+double Bend::region_angle(double z) const { return curvature_ * (std::clamp(z, region_.lo, region_.hi) - centre_); }
+
+// The formulas are arranged so that nothing of size R = 1/k is formed: R − (R − s)·cos θ becomes
+// s·cos θ + 2·sin²(θ/2)/k, and R·sin θ is sin θ/k (≈ z − z0), so a slight bend stays as exact as no bend.
+Vec3d Bend::forward(const Vec3d& p) const {
+    const double s = dot(p, u_), w = dot(p, v_);
+    const double theta = region_angle(p.z);
+    const double beyond = p.z - std::clamp(p.z, region_.lo, region_.hi);
+    const double c = std::cos(theta), sn = std::sin(theta), half = std::sin(0.5 * theta);
+    return from_frame(2 * half * half / curvature_ + s * c + beyond * sn, w,
+                      centre_ + sn / curvature_ - s * sn + beyond * c);
+}
+
+Vec3d Bend::inverse(const Vec3d& q) const {
+    const double s_in = dot(q, u_), z_in = q.z - centre_;
+    // The angle about the bend centre, (k·S − 1, k·(Z − z0)) scaled by k, relative to the region's middle angle.
+    const double a = curvature_ * s_in - 1, b = curvature_ * z_in;
+    const double cm = cos_middle_, sm = sin_middle_;
+    const double relative = std::atan2(b * cm + a * sm, -a * cm + b * sm);
+    const double theta = std::clamp(angle_middle_ + relative, angle_lo_, angle_hi_);
+    const double c = std::cos(theta), sn = std::sin(theta), half = std::sin(0.5 * theta);
+    return from_frame(2 * half * half / curvature_ + s_in * c - z_in * sn, dot(q, v_),
+                      centre_ + (theta - sn) / curvature_ + s_in * sn + z_in * c);
+}
+
+Jacobian Bend::jacobian(const Vec3d& p) const {
+    const double theta = region_angle(p.z), c = std::cos(theta), sn = std::sin(theta);
+    const bool in_region = region_.contains(p.z);
+    // Columns in the frame: ∂/∂s, ∂/∂w, ∂/∂z of (S, W, Z).
+    const double along = in_region ? 1 - dot(p, u_) * curvature_ : 1;  // (R − s)·k
+    const Vec3d d_ds = from_frame(c, 0, -sn), d_dw = v_, d_dz = from_frame(along * sn, 0, along * c);
+    // ∂s/∂(x, y) = (u.x, u.y), ∂w/∂(x, y) = (v.x, v.y).
+    return {{d_ds * u_.x + d_dw * v_.x, d_ds * u_.y + d_dw * v_.y, d_dz}};
+}
+
+Bend::FrameBox Bend::to_frame(const IntervalBox& box) const {
+    return {box.x * u_.x + box.y * u_.y, box.x * v_.x + box.y * v_.y, box.z};
+}
+
+IntervalBox Bend::from_frame(const FrameBox& box) const {
+    return {box.s * u_.x + box.w * v_.x, box.s * u_.y + box.w * v_.y, box.z};
+}
+
+Interval Bend::versine_over_curvature(Interval theta) const {
+    const Interval half = sin_range(theta * 0.5).magnitude();
+    return Interval{half.lo * half.lo, half.hi * half.hi} * (2 / curvature_);
+}
+
+IntervalBox Bend::forward_box(const IntervalBox& box) const {
+    const FrameBox f = to_frame(box);
+    const Interval theta = {region_angle(f.z.lo), region_angle(f.z.hi)};
+    const auto beyond_at = [&](double z) { return z - std::clamp(z, region_.lo, region_.hi); };
+    const Interval beyond = {beyond_at(f.z.lo), beyond_at(f.z.hi)};  // non-decreasing in z
+    const Interval c = cos_range(theta), sn = sin_range(theta);
+    return from_frame({versine_over_curvature(theta) + f.s * c + beyond * sn, f.w,
+                       sn * (1 / curvature_) - f.s * sn + beyond * c + centre_});
+}
+
+IntervalBox Bend::inverse_box(const IntervalBox& box) const {
+    const FrameBox f = to_frame(box);
+    const Interval z_in = f.z + (-centre_);
+    const Interval a = f.s * curvature_ + (-1.0), b = z_in * curvature_;
+    // The angles about the centre that the box covers, relative to the region's middle angle: from its corners,
+    // unless it contains the centre or straddles the opposite direction (then every angle).
+    const double cm = cos_middle_, sm = sin_middle_;
+    Interval relative{std::numbers::pi, -std::numbers::pi};
+    for (const double ca : {a.lo, a.hi})
+        for (const double cb : {b.lo, b.hi}) {
+            const double angle = std::atan2(cb * cm + ca * sm, -ca * cm + cb * sm);
+            relative = {std::min(relative.lo, angle), std::max(relative.hi, angle)};
+        }
+    if ((a.contains(0) && b.contains(0)) || relative.width() >= std::numbers::pi)
+        relative = {-std::numbers::pi, std::numbers::pi};
+    const Interval theta = {std::clamp(angle_middle_ + relative.lo, angle_lo_, angle_hi_),
+                            std::clamp(angle_middle_ + relative.hi, angle_lo_, angle_hi_)};
+    const Interval c = cos_range(theta), sn = sin_range(theta);
+    // θ − sin θ is non-decreasing.
+    const Interval arc_excess = Interval{theta.lo - std::sin(theta.lo), theta.hi - std::sin(theta.hi)} * (1 / curvature_);
+    return from_frame({versine_over_curvature(theta) + f.s * c - z_in * sn, f.w,
+                       arc_excess + f.s * sn + z_in * c + centre_});
+}
+
+std::string Bend::problem(const IntervalBox& input) const {
+    std::ostringstream message;
+    const double reach = to_frame(input).s.hi * curvature_;
+    if (reach > kMaxCurvatureTimesExtent) {
+        message << "bend: curvature times the object's extent toward the bend is " << reach
+                << "; it must stay below " << kMaxCurvatureTimesExtent
+                << " (the object would fold through the bend's centre, where the inverse is singular)";
+        return message.str();
+    }
+    const double degrees = (angle_hi_ - angle_lo_) * 180 / std::numbers::pi;
+    if (degrees > 180) {
+        message << "bend: the region bends through " << degrees << " degrees; at most 180 are supported";
+        return message.str();
+    }
+    return {};
+}
+
+}  // namespace isotrace

@@ -1,0 +1,53 @@
+#pragma once
+// Barr's bend ("Global and local deformations of solid primitives", 1984), with the z axis as the bent axis as in
+// the paper's Fig. 1(d) (whose eq. 5 is garbled). In the bend frame — s along the bend direction
+// u = (cos α, sin α, 0), w along v = (−sin α, cos α, 0), and z — the segment z ∈ [z_lo, z_hi] of the axis is
+// wrapped onto a circle of radius R = 1/k whose centre is at (s, z) = (R, z0):
+//   ẑ = clamp(z, z_lo, z_hi),  θ = k·(ẑ − z0),
+//   S = R − (R − s)·cos θ + (z − ẑ)·sin θ,   Z = z0 + (R − s)·sin θ + (z − ẑ)·cos θ,   W = w.
+// Outside the region the object continues along the tangent. The inverse is closed-form (Barr): the angle of
+// the point about the centre, clamped to the region's angles, gives θ; projecting onto the rotated axes gives
+// R − s and z − ẑ. It is a true inverse over the object when k·s < 1 everywhere on it (no point folds through
+// the centre) and the region's total angle is at most 180° (the angle is read within ±180° of the middle one).
+#include <string>
+
+#include "geometry/superquadric/interval.h"
+#include "geometry/superquadric/jacobian.h"
+
+namespace isotrace {
+
+class Bend {
+public:
+    // Largest k·s allowed over the object, and the largest total bend angle.
+    static constexpr double kMaxCurvatureTimesExtent = 0.999;
+
+    // curvature > 0 (a negative curvature is the same bend in the opposite direction); direction α in radians;
+    // the region's ends z_lo < z_hi.
+    Bend(double curvature, double direction, double centre, Interval region);
+
+    Vec3d forward(const Vec3d& p) const;
+    Vec3d inverse(const Vec3d& q) const;
+    Jacobian jacobian(const Vec3d& p) const;
+    IntervalBox forward_box(const IntervalBox& box) const;
+    IntervalBox inverse_box(const IntervalBox& box) const;
+    std::string problem(const IntervalBox& input) const;
+
+private:
+    struct FrameBox {
+        Interval s, w, z;
+    };
+    FrameBox to_frame(const IntervalBox& box) const;
+    IntervalBox from_frame(const FrameBox& box) const;
+    Vec3d from_frame(double s, double w, double z) const { return u_ * s + v_ * w + Vec3d(0, 0, z); }
+    double region_angle(double z) const;
+    // (1 − cos θ)/k = 2·sin²(θ/2)/k over an interval of angles, without cancellation.
+    Interval versine_over_curvature(Interval theta) const;
+
+    double curvature_, centre_;
+    Interval region_;
+    double angle_lo_, angle_hi_, angle_middle_;
+    double cos_middle_, sin_middle_;
+    Vec3d u_, v_;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,109 @@
+#pragma once
+// A guaranteed search for the sign changes of a function g(t) along a ray segment, given a point evaluator and an
+// interval bound of g over any sub-segment (interval arithmetic). Sub-segments are visited nearest first: a
+// sub-segment whose end values differ in sign holds a crossing; one whose bound excludes zero holds none and is
+// dropped; the others are halved. A crossing bracket is halved further until it is no wider than `resolution`
+// (so no earlier pair of crossings hides in it), then refined by the Illinois variant of regula falsi with
+// bisection steps whenever it stalls. A sub-segment narrower than `resolution` whose bound still straddles zero
+// without a sign change at its ends is a grazing contact (two crossings closer than the resolution, or none)
+// and is not reported — the project's rule for tangent contacts (docs/decisions.md). When the caller knows that
+// {g < 0} meets the ray in one interval (a convex solid), a sign change brackets exactly one crossing and is
+// refined at once.
+#include <cmath>
+#include <cstdint>
+
+#include "geometry/superquadric/interval.h"
+
+namespace isotrace {
+
+struct Crossing {
+    double t;
+    bool entering;  // g goes from ≥ 0 (outside) to < 0 (inside)
+};
+
+struct CrossingSearchWork {
+    std::uint64_t interval_bounds = 0;
+    std::uint64_t evaluations = 0;
+    std::uint64_t crossings = 0;
+};
+
+namespace crossing_search_detail {
+
+inline bool inside(double g) { return g < 0; }
+
+// A crossing in [lo, hi], whose end values differ in sign, located to a few ulps of t (Illinois: when the same
+// end is replaced twice in a row the other end's value is halved; a bisection step whenever the bracket has not
+// halved in three steps).
+template <class Value>
+double refine(double lo, double hi, double g_lo, double g_hi, const Value& value, CrossingSearchWork& work) {
+    const double floor = 1e-15 * (hi - lo);
+    double width_at_last_halving = hi - lo;
+    int steps_since_halving = 0, last_replaced = 0;  // -1: lo, +1: hi
+    for (int i = 0; i < 200; ++i) {
+        if (hi - lo <= 4e-16 * std::max(std::abs(lo), std::abs(hi)) + floor) break;
+        double t = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+        if (!(t > lo && t < hi) || steps_since_halving >= 3) t = 0.5 * (lo + hi);
+        const double g = value(t);
+        ++work.evaluations;
+        if (inside(g) == inside(g_lo)) {
+            lo = t;
+            g_lo = g;
+            if (last_replaced == -1) g_hi *= 0.5;
+            last_replaced = -1;
+        } else {
+            hi = t;
+            g_hi = g;
+            if (last_replaced == 1) g_lo *= 0.5;
+            last_replaced = 1;
+        }
+        if (hi - lo <= 0.5 * width_at_last_halving) {
+            width_at_last_halving = hi - lo;
+            steps_since_halving = 0;
+        } else {
+            ++steps_since_halving;
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+}  // namespace crossing_search_detail
+
+// Visits the crossings of g in [t0, t1] in increasing t; g0 = g(t0), g1 = g(t1). `bound(a, b)` returns an
+// Interval containing g over [a, b]; `visit(Crossing)` returns false to stop. Returns false when stopped.
+template <class Value, class Bound, class Visit>
+bool search_crossings(double t0, double t1, double g0, double g1, double resolution, bool convex, const Value& value,
+                      const Bound& bound, CrossingSearchWork& work, Visit&& visit) {
+    using crossing_search_detail::inside;
+    struct Segment {
+        double lo, hi, g_lo, g_hi;
+    };
+    constexpr int kMaxDepth = 96;
+    Segment stack[kMaxDepth + 1];
+    int top = 0;
+    stack[top++] = {t0, t1, g0, g1};
+    while (top > 0) {
+        const Segment s = stack[--top];
+        const bool sign_change = inside(s.g_lo) != inside(s.g_hi);
+        const double mid = 0.5 * (s.lo + s.hi);
+        const bool narrow =
+            s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
+        if (sign_change && (narrow || convex)) {
+            ++work.crossings;
+            const double t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
+            if (!visit(Crossing{t, inside(s.g_hi)})) return false;
+            continue;
+        }
+        if (!sign_change) {
+            ++work.interval_bounds;
+            const Interval range = bound(s.lo, s.hi);
+            if (range.lo >= 0 || range.hi < 0 || narrow) continue;
+        }
+        const double g_mid = value(mid);
+        ++work.evaluations;
+        stack[top++] = {mid, s.hi, g_mid, s.g_hi};  // the far half waits below the near one
+        stack[top++] = {s.lo, mid, s.g_lo, g_mid};
+    }
+    return true;
+}
+
+}  // namespace isotrace

@@ -1,0 +1,81 @@
+// The guaranteed crossing search on functions with known roots: a pair of close crossings hidden inside a
+// sign-change bracket is still found first, every crossing is visited in order with its direction, a convex
+// caller's bracket is refined at once, and visiting stops when asked.
+#include "geometry/superquadric/crossing_search.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace isotrace {
+namespace {
+
+// g(t) = −(t − r0)(t − r1)(t − r2): positive (outside) before r0, with an exact interval extension.
+struct Cubic {
+    double r0, r1, r2;
+    double operator()(double t) const { return -(t - r0) * (t - r1) * (t - r2); }
+    Interval bound(double a, double b) const {
+        const Interval t{a, b};
+        const Interval product = (t + (-r0)) * (t + (-r1)) * (t + (-r2));
+        return {-product.hi, -product.lo};
+    }
+};
+
+std::vector<Crossing> all_crossings(const Cubic& g, double t0, double t1, double resolution, bool convex = false) {
+    std::vector<Crossing> found;
+    CrossingSearchWork work;
+    search_crossings(t0, t1, g(t0), g(t1), resolution, convex, g, [&](double a, double b) { return g.bound(a, b); },
+                     work, [&](const Crossing& c) {
+                         found.push_back(c);
+                         return true;
+                     });
+    return found;
+}
+
+TEST(SuperquadricCrossingSearch, ACloseEarlyPairInsideASignChangeIsFoundFirst) {
+    // The ends differ in sign because of the last root; the first two are 1e-6 apart, far above the resolution.
+    const Cubic g{0.3, 0.300001, 0.7};
+    const std::vector<Crossing> found = all_crossings(g, 0, 1, 1e-8);
+    ASSERT_EQ(found.size(), 3u);
+    EXPECT_NEAR(found[0].t, 0.3, 1e-14);
+    EXPECT_NEAR(found[1].t, 0.300001, 1e-14);
+    EXPECT_NEAR(found[2].t, 0.7, 1e-14);
+    EXPECT_TRUE(found[0].entering);
+    EXPECT_FALSE(found[1].entering);
+    EXPECT_TRUE(found[2].entering);
+}
+
+TEST(SuperquadricCrossingSearch, TheConvexShortcutRefinesTheBracketItIsGiven) {
+    // Told (wrongly, on purpose) that the function is convex, the search trusts the sign change of the ends and
+    // reports one crossing: this is why the shortcut is only taken for convex solids.
+    const Cubic g{0.3, 0.300001, 0.7};
+    const std::vector<Crossing> found = all_crossings(g, 0, 1, 1e-8, true);
+    ASSERT_EQ(found.size(), 1u);
+    // A convex case: one entry at 0.25 of a parabola that stays negative up to t = 1.
+    const Cubic parabola_like{0.25, 2, 3};  // negative on (0.25, 2)
+    const std::vector<Crossing> entry = all_crossings(parabola_like, 0, 1, 1e-8, true);
+    ASSERT_EQ(entry.size(), 1u);
+    EXPECT_NEAR(entry[0].t, 0.25, 1e-14);
+}
+
+TEST(SuperquadricCrossingSearch, PairsCloserThanTheResolutionMayBeTakenForAGrazingContact) {
+    // Both ends outside, two crossings 1e-10 apart: below a resolution of 1e-6 the pair is a grazing contact.
+    const Cubic g{0.4, 0.4 + 1e-10, 5};
+    EXPECT_TRUE(all_crossings(g, 0, 1, 1e-6).empty());
+    // With a finer resolution it is found.
+    EXPECT_EQ(all_crossings(g, 0, 1, 1e-12).size(), 2u);
+}
+
+TEST(SuperquadricCrossingSearch, VisitingStopsWhenAsked) {
+    const Cubic g{0.2, 0.5, 0.8};
+    int visits = 0;
+    CrossingSearchWork work;
+    const bool finished = search_crossings(0, 1, g(0), g(1), 1e-9, false, g, [&](double a, double b) { return g.bound(a, b); },
+                                           work, [&](const Crossing&) { return ++visits < 2; });
+    EXPECT_FALSE(finished);
+    EXPECT_EQ(visits, 2);
+    EXPECT_GT(work.interval_bounds, 0u);
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,0 +1,92 @@
+#include "geometry/superquadric/deformation_chain.h"
+
+#include <stdexcept>
+
+namespace isotrace {
+namespace {
+
+// Widens every side by a small fraction of the box's size, so that the surface lies strictly inside the box
+// (a superellipsoid touches its box at the axis ends) and rounding in the bounds cannot cut it.
+IntervalBox widened(IntervalBox box) {
+    double size = 0;
+    for (int k = 0; k < 3; ++k) size = std::max({size, std::abs(box[k].lo), std::abs(box[k].hi)});
+    const double margin = 1e-9 * size;
+    for (int k = 0; k < 3; ++k) box[k] = {box[k].lo - margin, box[k].hi + margin};
+    return box;
+}
+
+}  // namespace
+
+DeformationChain::DeformationChain(const Superellipsoid& shape) : shape_(shape), boxes_{widened(shape.bounding_box())} {}
+
+void DeformationChain::append(const Deformation& stage) {
+    if (stages_.size() >= std::size_t(kMaxStages))
+        throw std::invalid_argument("at most " + std::to_string(kMaxStages) + " deformations are supported");
+    const std::string problem = std::visit([&](const auto& s) { return s.problem(boxes_.back()); }, stage);
+    if (!problem.empty()) throw std::invalid_argument(problem);
+    stages_.push_back(stage);
+    compute_stage_boxes();
+}
+
+void DeformationChain::compute_stage_boxes() {
+    constexpr int kCellsPerAxis = 8;
+    std::vector<IntervalBox> cells = shape_.surface_cells(kCellsPerAxis);
+    boxes_.resize(1);
+    for (const Deformation& stage : stages_) {
+        IntervalBox box = std::visit([&](const auto& s) { return s.forward_box(cells[0]); }, stage);
+        for (IntervalBox& cell : cells) {
+            cell = std::visit([&](const auto& s) { return s.forward_box(cell); }, stage);
+            box.extend(cell.lower());
+            box.extend(cell.upper());
+        }
+        boxes_.push_back(widened(box));
+    }
+}
+
+Vec3d DeformationChain::forward(const Vec3d& p) const {
+    Vec3d q = p;
+    for (const Deformation& stage : stages_) q = std::visit([&](const auto& s) { return s.forward(q); }, stage);
+    return q;
+}
+
+bool DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, Path& path) const {
+    path[stages_.size()] = q;
+    for (std::size_t k = stages_.size(); k > 0; --k) {
+        if (check_boxes && !boxes_[k].contains(path[k])) return false;
+        path[k - 1] = std::visit([&](const auto& s) { return s.inverse(path[k]); }, stages_[k - 1]);
+    }
+    return !check_boxes || boxes_[0].contains(path[0]);
+}
+
+std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q) const {
+    Path path;
+    if (!walk_inverse(q, true, path)) return std::nullopt;
+    return path[0];
+}
+
+DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
+    Path path;
+    walk_inverse(q, false, path);
+    return path;
+}
+
+std::optional<IntervalBox> DeformationChain::inverse_box(IntervalBox box, bool& clipped) const {
+    clipped = false;
+    for (std::size_t k = stages_.size() + 1; k > 0; --k) {
+        const IntervalBox before = box;
+        if (!clip_box(box, boxes_[k - 1])) return std::nullopt;
+        clipped = clipped || before.lower() != box.lower() || before.upper() != box.upper();
+        if (k > 1) box = std::visit([&](const auto& s) { return s.inverse_box(box); }, stages_[k - 2]);
+    }
+    return box;
+}
+
+Vec3d DeformationChain::deform_normal(const Path& path, const Vec3d& undeformed_normal) const {
+    Vec3d n = undeformed_normal;
+    for (std::size_t k = 0; k < stages_.size(); ++k) {
+        n = normalize(std::visit([&](const auto& s) { return s.jacobian(path[k]); }, stages_[k]).transform_normal(n));
+    }
+    return n;
+}
+
+}  // namespace isotrace

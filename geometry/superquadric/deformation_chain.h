@@ -1,0 +1,67 @@
+#pragma once
+// Barr's global deformations composed in the paper's order X' = TR·BE·TW·TA·X (eq. 6): the stages are applied
+// to the undeformed superquadric first to last, the placement (TR) afterwards. Each stage knows its inverse
+// (eq. 7), its Jacobian, and how boxes map through it both ways; the chain keeps a conservative bounding box of
+// the object after every stage: the union of the superellipsoid's surface cells carried through the stages by
+// interval arithmetic (small cells keep the wrapping effect of interval rotations small). Those stage boxes do two jobs: they bound the deformed object for Embree, and a
+// point outside one of them is outside the object, which keeps the inverses away from their singularities (a
+// taper's zero scale, a bend's centre).
+#include <array>
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "geometry/superquadric/bend.h"
+#include "geometry/superquadric/superellipsoid.h"
+#include "geometry/superquadric/taper.h"
+#include "geometry/superquadric/twist.h"
+
+namespace isotrace {
+
+using Deformation = std::variant<Taper, Twist, Bend>;
+
+class DeformationChain {
+public:
+    static constexpr int kMaxStages = 16;
+    // Points of every stage: path[0] undeformed, path[k] after stage k.
+    using Path = std::array<Vec3d, kMaxStages + 1>;
+
+    explicit DeformationChain(const Superellipsoid& shape);
+
+    // Appends a stage. Throws std::invalid_argument (the stage's problem) when its inverse is not valid over the
+    // object as deformed so far, or when the chain is full.
+    void append(const Deformation& stage);
+
+    bool empty() const { return stages_.empty(); }
+    std::size_t heap_bytes() const {
+        return stages_.capacity() * sizeof(Deformation) + boxes_.capacity() * sizeof(IntervalBox);
+    }
+    std::size_t size() const { return stages_.size(); }
+    const IntervalBox& undeformed_box() const { return boxes_.front(); }
+    const IntervalBox& deformed_box() const { return boxes_.back(); }
+
+    Vec3d forward(const Vec3d& p) const;
+    // The undeformed point of q, or nothing when q lies outside a stage box (then it is outside the object).
+    std::optional<Vec3d> inverse(const Vec3d& q) const;
+    // The point at every stage of the inverse of q, without the stage-box checks (for normals at surface points).
+    Path inverse_path(const Vec3d& q) const;
+    // A box bounding the undeformed points of the part of `box` that lies inside every stage box, or nothing when
+    // no part does. `clipped` tells whether some of `box` was cut away (those points are outside the object).
+    std::optional<IntervalBox> inverse_box(IntervalBox box, bool& clipped) const;
+    // The outward normal at path[size()] from the undeformed normal at path[0] (unit length).
+    Vec3d deform_normal(const Path& path, const Vec3d& undeformed_normal) const;
+
+private:
+    // The shared inverse walk: stops (returning false) at the first stage box that does not contain the point
+    // when `check_boxes`, and records every stage's point in `path`.
+    bool walk_inverse(const Vec3d& q, bool check_boxes, Path& path) const;
+
+    // Recomputes boxes_ for the current stages (at construction only, so the cells need not be kept).
+    void compute_stage_boxes();
+
+    Superellipsoid shape_;
+    std::vector<Deformation> stages_;
+    std::vector<IntervalBox> boxes_;  // boxes_[k] bounds the object after k stages, widened slightly
+};
+
+}  // namespace isotrace

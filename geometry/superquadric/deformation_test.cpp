@@ -1,0 +1,183 @@
+// Barr's deformations one by one and chained: inverses undo the forward maps, Jacobians match finite differences,
+// boxes map conservatively both ways, invalid parameters are refused, and the twist keeps the z axis.
+#include "geometry/superquadric/deformation_chain.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "geometry/superquadric/superquadric_test_support.h"
+
+namespace isotrace {
+namespace {
+
+using superquadric_test::random_deformations;
+
+const Vec3d kRadii(0.8, 0.5, 1.5);
+
+// A random point of the solid superellipsoid (by rejection from its box).
+Vec3d random_point_of(std::mt19937& random, const Superellipsoid& shape) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (;;) {
+        const Vec3d p(shape.radii.x * unit(random), shape.radii.y * unit(random), shape.radii.z * unit(random));
+        if (shape.gauge(p) <= 1) return p;
+    }
+}
+
+Vec3d random_point_in(std::mt19937& random, const IntervalBox& box) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    return {box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
+            box.z.lo + box.z.width() * unit(random)};
+}
+
+// Every single stage kind, at strengths that are valid over the radii box, including a bend region shorter than
+// the object (tangent continuation beyond it) and a negative-direction bend.
+std::vector<Deformation> single_stages() {
+    return {Taper(0.7, -0.5, kRadii.z), Twist(1.2, kRadii.z), Bend(0.4, 0.3, 0.2, {-1.5, 1.5}),
+            Bend(0.6, 2.5, -0.2, {-0.5, 0.8}), Taper(-0.9, 2, kRadii.z)};
+}
+
+TEST(SuperquadricDeformation, InversesUndoTheForwardMaps) {
+    std::mt19937 random(11);
+    const Superellipsoid shape{kRadii, 1, 1};
+    for (const Deformation& stage : single_stages()) {
+        DeformationChain chain(shape);
+        chain.append(stage);
+        for (int i = 0; i < 500; ++i) {
+            const Vec3d p = random_point_of(random, shape);
+            const Vec3d q = chain.forward(p);
+            ASSERT_TRUE(chain.deformed_box().contains(q));
+            const auto back = chain.inverse(q);
+            ASSERT_TRUE(back);
+            EXPECT_NEAR(length(*back - p), 0, 1e-12) << "stage " << stage.index();
+        }
+    }
+    for (int c = 0; c < 20; ++c) {
+        DeformationChain chain(shape);
+        for (const Deformation& stage : random_deformations(random, kRadii)) chain.append(stage);
+        for (int i = 0; i < 200; ++i) {
+            const Vec3d p = random_point_of(random, shape);
+            const auto back = chain.inverse(chain.forward(p));
+            ASSERT_TRUE(back);
+            EXPECT_NEAR(length(*back - p), 0, 1e-11);
+        }
+    }
+}
+
+TEST(SuperquadricDeformation, JacobiansMatchFiniteDifferences) {
+    std::mt19937 random(12);
+    const IntervalBox box = Superellipsoid{kRadii, 1, 1}.bounding_box();
+    for (const Deformation& stage : single_stages()) {
+        for (int i = 0; i < 200; ++i) {
+            const Vec3d p = random_point_in(random, box);
+            const Jacobian j = std::visit([&](const auto& s) { return s.jacobian(p); }, stage);
+            for (int k = 0; k < 3; ++k) {
+                Vec3d a = p, b = p;
+                const double h = 1e-6;
+                a[k] -= h;
+                b[k] += h;
+                const auto f = [&](const Vec3d& x) { return std::visit([&](const auto& s) { return s.forward(x); }, stage); };
+                const Vec3d expected = (f(b) - f(a)) / (2 * h);
+                // The bend's region ends are kinks of the z derivative: skip points next to them.
+                if (stage.index() == 2 && k == 2 && std::abs(std::abs(p.z) - 1.5) < 2 * h) continue;
+                if (stage.index() == 2 && k == 2 && (std::abs(p.z + 0.5) < 2 * h || std::abs(p.z - 0.8) < 2 * h)) continue;
+                EXPECT_NEAR(length(j.column[k] - expected), 0, 1e-6) << "stage " << stage.index() << " column " << k;
+            }
+        }
+    }
+}
+
+TEST(SuperquadricDeformation, BoxesMapConservativelyBothWays) {
+    std::mt19937 random(13);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const IntervalBox box = Superellipsoid{kRadii, 1, 1}.bounding_box();
+    for (const Deformation& stage : single_stages()) {
+        const auto forward = [&](const Vec3d& x) { return std::visit([&](const auto& s) { return s.forward(x); }, stage); };
+        const auto inverse = [&](const Vec3d& x) { return std::visit([&](const auto& s) { return s.inverse(x); }, stage); };
+        for (int i = 0; i < 300; ++i) {
+            // A random sub-box of the object's box and points in it.
+            IntervalBox sub = IntervalBox::point(random_point_in(random, box));
+            sub.extend(random_point_in(random, box));
+            const IntervalBox image = std::visit([&](const auto& s) { return s.forward_box(sub); }, stage);
+            IntervalBox deformed_sub = IntervalBox::point(forward(sub.lower()));
+            for (int k = 0; k < 50; ++k) {
+                const Vec3d p = random_point_in(random, sub);
+                const Vec3d q = forward(p);
+                deformed_sub.extend(q);
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_GE(q[a], image[a].lo - 1e-12);
+                    EXPECT_LE(q[a], image[a].hi + 1e-12);
+                }
+            }
+            // Inverse: a box around deformed points bounds their preimages.
+            const IntervalBox preimage = std::visit([&](const auto& s) { return s.inverse_box(deformed_sub); }, stage);
+            for (int k = 0; k < 50; ++k) {
+                const Vec3d q = random_point_in(random, deformed_sub);
+                const Vec3d p = inverse(q);
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_GE(p[a], preimage[a].lo - 1e-12) << "stage " << stage.index();
+                    EXPECT_LE(p[a], preimage[a].hi + 1e-12) << "stage " << stage.index();
+                }
+            }
+        }
+    }
+}
+
+std::string problem_of(const Deformation& stage) {
+    DeformationChain chain(Superellipsoid{kRadii, 1, 1});
+    try {
+        chain.append(stage);
+    } catch (const std::invalid_argument& error) {
+        return error.what();
+    }
+    return {};
+}
+
+TEST(SuperquadricDeformation, SingularInversesAreRefused) {
+    EXPECT_EQ(problem_of(Taper(-0.98, 0, kRadii.z)), "");
+    EXPECT_NE(problem_of(Taper(-1, 0, kRadii.z)).find("taper"), std::string::npos);
+    EXPECT_NE(problem_of(Taper(0, -1.5, kRadii.z)).find("cross-section scale"), std::string::npos);
+    // k times the lateral extent (0.8 toward +x) must stay below 1.
+    EXPECT_EQ(problem_of(Bend(1.2, 0, 0, {-0.1, 0.1})), "");
+    EXPECT_NE(problem_of(Bend(1.3, 0, 0, {-0.1, 0.1})).find("fold through"), std::string::npos);
+    // Toward +y the extent is 0.5.
+    EXPECT_EQ(problem_of(Bend(1.9, 1.5707963267948966, 0, {-0.1, 0.1})), "");
+    // More than 180 degrees over the region.
+    EXPECT_NE(problem_of(Bend(1.1, 0, 0, {-1.5, 1.5})).find("180"), std::string::npos);
+    DeformationChain chain(Superellipsoid{kRadii, 1, 1});
+    for (int i = 0; i < DeformationChain::kMaxStages; ++i) chain.append(Twist(0.1, kRadii.z));
+    EXPECT_THROW(chain.append(Twist(0.1, kRadii.z)), std::invalid_argument);
+}
+
+TEST(SuperquadricDeformation, TwistKeepsTheAxisAndTaperKeepsTheBottom) {
+    const Twist twist(2.0, kRadii.z);
+    for (double z : {-1.5, -0.3, 0.0, 1.5}) EXPECT_EQ(twist.forward({0, 0, z}), Vec3d(0, 0, z));
+    // The top turns by rate · 2 · a3.
+    const Vec3d top = twist.forward({1, 0, kRadii.z});
+    EXPECT_NEAR(std::atan2(top.y, top.x), std::remainder(2.0 * 2 * kRadii.z, 2 * 3.141592653589793), 1e-12);
+    const Taper taper(0.5, -0.25, kRadii.z);
+    EXPECT_EQ(taper.forward({0.3, 0.2, -kRadii.z}), Vec3d(0.3, 0.2, -kRadii.z));
+    const Vec3d scaled = taper.forward({0.4, 0.4, kRadii.z});
+    EXPECT_NEAR(scaled.x, 0.4 * 1.5, 1e-15);
+    EXPECT_NEAR(scaled.y, 0.4 * 0.75, 1e-15);
+}
+
+TEST(SuperquadricDeformation, BendWrapsTheAxisOntoACircle) {
+    // Curvature 0.5 toward +x about z0 = 0: the axis point at height z goes to the circle of radius 2 about (2, 0).
+    const Bend bend(0.5, 0, 0, {-1.5, 1.5});
+    for (double z : {-1.5, -0.7, 0.0, 0.4, 1.5}) {
+        const Vec3d q = bend.forward({0, 0, z});
+        EXPECT_NEAR(std::hypot(q.x - 2, q.z), 2.0, 1e-12);
+        EXPECT_NEAR(std::atan2(q.z, 2 - q.x), 0.5 * z, 1e-12);  // arc length is preserved on the axis
+        EXPECT_EQ(q.y, 0);
+    }
+    // Beyond the region the object continues along the tangent.
+    const Bend short_region(0.5, 0, 0, {-0.5, 0.5});
+    const Vec3d end = short_region.forward({0, 0, 0.5}), beyond = short_region.forward({0, 0, 1.5});
+    EXPECT_NEAR(length(beyond - end), 1.0, 1e-12);
+    EXPECT_NEAR(dot(normalize(beyond - end), Vec3d(std::sin(0.25), 0, std::cos(0.25))), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,0 +1,86 @@
+#pragma once
+// Closed intervals of doubles and the few operations the superquadric's inverse deformations need, so that the
+// range of the inside-outside function over a stretch of ray can be bounded (interval arithmetic, Moore 1966).
+// Computed in round-to-nearest: a bound may be off by a few ulps, which can only matter for contacts at the
+// rounding level (see docs/decisions.md).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+struct Interval {
+    double lo = 0, hi = 0;
+
+    static Interval point(double v) { return {v, v}; }
+    static Interval spanning(double a, double b) { return {std::min(a, b), std::max(a, b)}; }
+    bool contains(double v) const { return lo <= v && v <= hi; }
+    double width() const { return hi - lo; }
+    // The interval of |v| for v in this interval.
+    Interval magnitude() const {
+        if (lo >= 0) return *this;
+        if (hi <= 0) return {-hi, -lo};
+        return {0, std::max(-lo, hi)};
+    }
+};
+
+inline Interval operator+(Interval a, Interval b) { return {a.lo + b.lo, a.hi + b.hi}; }
+inline Interval operator-(Interval a, Interval b) { return {a.lo - b.hi, a.hi - b.lo}; }
+inline Interval operator+(Interval a, double b) { return {a.lo + b, a.hi + b}; }
+inline Interval operator*(Interval a, double s) { return Interval::spanning(a.lo * s, a.hi * s); }
+inline Interval operator*(Interval a, Interval b) {
+    const double p[] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
+}
+// Requires b.lo > 0 (the callers divide by strictly positive taper factors).
+inline Interval divide_by_positive(Interval a, Interval b) {
+    return {a.lo >= 0 ? a.lo / b.hi : a.lo / b.lo, a.hi >= 0 ? a.hi / b.lo : a.hi / b.hi};
+}
+
+// Range of cos over [θlo, θhi]: the end values, widened to ±1 where a multiple of π lies inside.
+inline Interval cos_range(Interval angle) {
+    constexpr double pi = std::numbers::pi;
+    if (angle.width() >= 2 * pi) return {-1, 1};
+    Interval r = Interval::spanning(std::cos(angle.lo), std::cos(angle.hi));
+    // Smallest multiple of π not below lo; even multiples are maxima, odd ones minima.
+    for (double k = std::ceil(angle.lo / pi); k * pi <= angle.hi; ++k) {
+        if (std::fmod(std::abs(k), 2.0) == 0) r.hi = 1;
+        else r.lo = -1;
+    }
+    return r;
+}
+
+inline Interval sin_range(Interval angle) {
+    return cos_range({angle.lo - std::numbers::pi / 2, angle.hi - std::numbers::pi / 2});
+}
+
+struct IntervalBox {
+    Interval x, y, z;
+
+    static IntervalBox point(const Vec3d& p) { return {Interval::point(p.x), Interval::point(p.y), Interval::point(p.z)}; }
+    Interval& operator[](int k) { return k == 0 ? x : (k == 1 ? y : z); }
+    const Interval& operator[](int k) const { return k == 0 ? x : (k == 1 ? y : z); }
+    Vec3d lower() const { return {x.lo, y.lo, z.lo}; }
+    Vec3d upper() const { return {x.hi, y.hi, z.hi}; }
+    bool contains(const Vec3d& p) const { return x.contains(p.x) && y.contains(p.y) && z.contains(p.z); }
+    void extend(const Vec3d& p) {
+        for (int k = 0; k < 3; ++k) {
+            (*this)[k].lo = std::min((*this)[k].lo, p[k]);
+            (*this)[k].hi = std::max((*this)[k].hi, p[k]);
+        }
+    }
+};
+
+// The part of `box` inside `clip`; false when they do not overlap.
+inline bool clip_box(IntervalBox& box, const IntervalBox& clip) {
+    for (int k = 0; k < 3; ++k) {
+        box[k].lo = std::max(box[k].lo, clip[k].lo);
+        box[k].hi = std::min(box[k].hi, clip[k].hi);
+        if (box[k].lo > box[k].hi) return false;
+    }
+    return true;
+}
+
+}  // namespace isotrace

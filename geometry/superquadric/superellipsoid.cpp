@@ -1,0 +1,111 @@
+#include "geometry/superquadric/superellipsoid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace isotrace {
+namespace {
+
+// r^p for r in [0, 1]: exponents that are small whole numbers (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) by
+// repeated squaring, which is several times cheaper than pow, the intersector's hottest call.
+double unit_power(double r, double p) {
+    if (p == std::floor(p) && p <= 64) {
+        double result = 1, base = r;
+        for (int n = int(p); n > 0; n >>= 1, base *= base)
+            if (n & 1) result *= base;
+        return result;
+    }
+    return std::pow(r, p);
+}
+
+// s^(1/p) for s in [1, 2], with the roots that have a cheap exact form.
+double root(double s, double p) {
+    if (p == 1) return s;
+    if (p == 2) return std::sqrt(s);
+    if (p == 4) return std::sqrt(std::sqrt(s));
+    return std::pow(s, 1 / p);
+}
+
+// (a^p + b^p)^(1/p) for a, b ≥ 0, scaled by the larger so that neither overflows nor underflows matter.
+double p_norm(double a, double b, double p) {
+    const double larger = std::max(a, b), smaller = std::min(a, b);
+    if (larger == 0 || std::isinf(larger)) return larger;
+    return larger * root(1 + unit_power(smaller / larger, p), p);
+}
+
+double signed_power(double base, double exponent) { return std::copysign(std::pow(std::abs(base), exponent), base); }
+
+}  // namespace
+
+double Superellipsoid::gauge(const Vec3d& p) const {
+    const double horizontal = p_norm(std::abs(p.x) / radii.x, std::abs(p.y) / radii.y, 2 / east_west);
+    return p_norm(horizontal, std::abs(p.z) / radii.z, 2 / north_south);
+}
+
+Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {
+    return {gauge(magnitudes.lower()), gauge(magnitudes.upper())};
+}
+
+double Superellipsoid::inside_outside(const Vec3d& p) const { return std::pow(gauge(p), 2 / north_south); }
+
+Vec3d Superellipsoid::normal(const Vec3d& p) const {
+    const double p1 = 2 / north_south, p2 = 2 / east_west;
+    const Vec3d scaled(std::abs(p.x) / radii.x, std::abs(p.y) / radii.y, std::abs(p.z) / radii.z);
+    const double size = max_component(scaled);
+    if (size == 0) return {0, 0, 1};
+    // ∂G/∂u = (h/G)^(p1−1)·(u/h)^(p2−1), ∂G/∂w = (w/G)^(p1−1), h = ‖(u, v)‖_p2. Magnitudes are floored at a tiny
+    // fraction of the point's size, which turns the limits at the coordinate planes (0, 1 or ∞ per component)
+    // into finite logarithms; the components are then compared in log space so none overflows.
+    const double floor = size * 1e-200;
+    const double u = std::max(scaled.x, floor), v = std::max(scaled.y, floor), w = std::max(scaled.z, floor);
+    const double h = p_norm(u, v, p2), g = p_norm(h, w, p1);
+    const double horizontal = (p1 - 1) * std::log(h / g);
+    const double log_x = horizontal + (p2 - 1) * std::log(u / h) - std::log(radii.x);
+    const double log_y = horizontal + (p2 - 1) * std::log(v / h) - std::log(radii.y);
+    const double log_z = (p1 - 1) * std::log(w / g) - std::log(radii.z);
+    const double largest = std::max({log_x, log_y, log_z});
+    const auto sign = [](double c) { return c < 0 ? -1.0 : 1.0; };
+    return normalize(Vec3d(sign(p.x) * std::exp(log_x - largest), sign(p.y) * std::exp(log_y - largest),
+                           sign(p.z) * std::exp(log_z - largest)));
+}
+
+int Superellipsoid::polynomial_degree() const {
+    if (north_south != east_west) return 0;
+    const double n = 2 / north_south;
+    const double rounded = std::round(n);
+    if (std::abs(n - rounded) > 1e-12 * n || int(rounded) % 2 != 0 || rounded > kMaxPolynomialDegree) return 0;
+    return int(rounded);
+}
+
+Polynomial Superellipsoid::polynomial_along(const Vec3d& origin, const Vec3d& direction) const {
+    const int n = polynomial_degree();
+    Polynomial sum{-1};
+    for (int k = 0; k < 3; ++k) {
+        const Polynomial coordinate{origin[k] / radii[k], direction[k] / radii[k]};
+        const Polynomial square = coordinate * coordinate;
+        Polynomial power = square;
+        for (int i = 2; i < n; i += 2) power = power * square;
+        sum += power;
+    }
+    return sum;
+}
+
+std::vector<IntervalBox> Superellipsoid::surface_cells(int per_axis) const {
+    std::vector<IntervalBox> cells;
+    const auto edge = [&](int k, int i) { return radii[k] * (2.0 * i / per_axis - 1); };
+    for (int i = 0; i < per_axis; ++i)
+        for (int j = 0; j < per_axis; ++j)
+            for (int l = 0; l < per_axis; ++l) {
+                const IntervalBox cell{{edge(0, i), edge(0, i + 1)}, {edge(1, j), edge(1, j + 1)}, {edge(2, l), edge(2, l + 1)}};
+                if (gauge_range({cell.x.magnitude(), cell.y.magnitude(), cell.z.magnitude()}).contains(1)) cells.push_back(cell);
+            }
+    return cells;
+}
+
+Vec3d Superellipsoid::surface_point(double eta, double omega) const {
+    const double ce = signed_power(std::cos(eta), north_south);
+    return {radii.x * ce * signed_power(std::cos(omega), east_west),
+            radii.y * ce * signed_power(std::sin(omega), east_west), radii.z * signed_power(std::sin(eta), north_south)};
+}
+
+}  // namespace isotrace

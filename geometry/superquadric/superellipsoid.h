@@ -1,0 +1,55 @@
+#pragma once
+// The undeformed superquadric (superellipsoid) in its own frame: semi-axes a1, a2, a3 and the exponents ε1
+// (north–south, along z) and ε2 (east–west, in the xy plane). Its inside–outside function is
+//   F = ((x/a1)^(2/ε2) + (y/a2)^(2/ε2))^(ε2/ε1) + (z/a3)^(2/ε1),  F < 1 inside.
+// Everything here works with the gauge G = F^(ε1/2) instead: a nested p-norm ‖(‖(u, v)‖_{2/ε2}, w)‖_{2/ε1} of
+// u = |x|/a1, v = |y|/a2, w = |z|/a3. G < 1 exactly where F < 1, but G is homogeneous of degree 1 (so it grows
+// like distance, never overflows, and stays well scaled for root refinement) and it is non-decreasing in each of
+// u, v, w, so its range over a box of magnitudes is given by the box's two extreme corners.
+#include <vector>
+
+#include "geometry/polynomial/polynomial.h"
+#include "geometry/superquadric/interval.h"
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+struct Superellipsoid {
+    Vec3d radii{1, 1, 1};
+    double north_south = 1;  // ε1
+    double east_west = 1;    // ε2
+
+    // The supported exponent range (thinner or more pinched shapes are outside the tested tolerance).
+    static constexpr double kMinExponent = 0.02, kMaxExponent = 4;
+
+    double gauge(const Vec3d& p) const;
+    // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
+    bool is_convex() const { return north_south <= 2 && east_west <= 2; }
+    // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative).
+    Interval gauge_range(const IntervalBox& magnitudes) const;
+    // The paper's F = G^(2/ε1) (may overflow to +inf far away; the intersector never uses it).
+    double inside_outside(const Vec3d& p) const;
+
+    // Outward unit normal (direction of ∇F). On the coordinate planes, where F has creases or cusps for
+    // exponents ≥ 2, it is the limit from the positive side; at the poles of a pinched shape it is ±z.
+    Vec3d normal(const Vec3d& p) const;
+
+    // n when ε1 = ε2 = 2/n with n even (n ≤ kMaxPolynomialDegree): then F = Σ (xᵢ/aᵢ)ⁿ is a polynomial along a
+    // ray and needs neither abs() nor splitting. 0 otherwise.
+    int polynomial_degree() const;
+    // F − 1 along origin + t·direction (requires polynomial_degree() > 0).
+    Polynomial polynomial_along(const Vec3d& origin, const Vec3d& direction) const;
+
+    // The paper's parametric surface (eq. 1) with signed powers: η ∈ [−π/2, π/2] latitude, ω ∈ [−π, π].
+    Vec3d surface_point(double eta, double omega) const;
+
+    // The cells of a per_axis³ grid over the bounding box that the surface passes through (the gauge's range
+    // over the cell contains 1): a deformed object's bounds are the union of its deformed surface cells.
+    std::vector<IntervalBox> surface_cells(int per_axis) const;
+
+    IntervalBox bounding_box() const {
+        return {{-radii.x, radii.x}, {-radii.y, radii.y}, {-radii.z, radii.z}};
+    }
+};
+
+}  // namespace isotrace

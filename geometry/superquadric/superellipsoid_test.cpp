@@ -1,0 +1,134 @@
+// The superellipsoid alone: the gauge against the paper's inside-outside function, overflow safety, the
+// parametric surface, normals against finite differences and at the coordinate planes, the polynomial cases.
+#include "geometry/superquadric/superellipsoid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace isotrace {
+namespace {
+
+double direct_inside_outside(const Superellipsoid& s, const Vec3d& p) {
+    const double a = std::pow(std::abs(p.x) / s.radii.x, 2 / s.east_west) +
+                     std::pow(std::abs(p.y) / s.radii.y, 2 / s.east_west);
+    return std::pow(a, s.east_west / s.north_south) + std::pow(std::abs(p.z) / s.radii.z, 2 / s.north_south);
+}
+
+TEST(SuperquadricSuperellipsoid, GaugeIsTheInsideOutsideFunctionToThePowerEpsilonOverTwo) {
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> unit(-1, 1), exponent(0.1, 4);
+    for (int i = 0; i < 2000; ++i) {
+        const Superellipsoid s{{1 + unit(random) * 0.5, 1.5 + unit(random), 0.8 + 0.5 * unit(random)}, exponent(random),
+                               exponent(random)};
+        const Vec3d p(1.5 * unit(random), 2 * unit(random), unit(random));
+        const double expected = direct_inside_outside(s, p);
+        EXPECT_NEAR(s.inside_outside(p), expected, 1e-12 * expected) << i;
+        EXPECT_EQ(s.gauge(p) < 1, expected < 1) << i;
+    }
+}
+
+TEST(SuperquadricSuperellipsoid, GaugeIsFiniteFarAwayOnThePlanesAndHomogeneous) {
+    for (double e1 : {0.02, 0.5, 1.0, 2.0, 4.0})
+        for (double e2 : {0.02, 1.0, 4.0}) {
+            const Superellipsoid s{{1, 2, 3}, e1, e2};
+            for (const Vec3d& p : {Vec3d(1e300, 1e300, 1e300), Vec3d(0, 0, 1e300), Vec3d(1e-300, 0, 0), Vec3d(0, 0, 0),
+                                   Vec3d(0, 2, 0), Vec3d(-1e200, 0, 1e-200)}) {
+                const double g = s.gauge(p);
+                EXPECT_TRUE(std::isfinite(g)) << e1 << " " << e2;
+                EXPECT_GE(g, 0);
+            }
+            // Degree 1: G(λp) = λ G(p), even where F = G^(2/ε1) itself would overflow.
+            const Vec3d p(0.3, -0.7, 1.1);
+            EXPECT_NEAR(s.gauge(p * 1e250), 1e250 * s.gauge(p), 1e-12 * 1e250 * s.gauge(p));
+            EXPECT_NEAR(s.gauge(Vec3d(0, 2, 0)), 1.0, 1e-15);
+            EXPECT_NEAR(s.gauge(Vec3d(0, 0, -3)), 1.0, 1e-15);
+        }
+}
+
+TEST(SuperquadricSuperellipsoid, ParametricSurfacePointsHaveUnitGaugeAndTheGaugeRangeBoundsIt) {
+    std::mt19937 random(2);
+    std::uniform_real_distribution<double> eta(-1.5707963, 1.5707963), omega(-3.14159265, 3.14159265), exponent(0.02, 4);
+    for (int i = 0; i < 3000; ++i) {
+        const Superellipsoid s{{0.5, 1.5, 2}, exponent(random), exponent(random)};
+        const Vec3d p = s.surface_point(eta(random), omega(random));
+        EXPECT_NEAR(s.gauge(p), 1.0, 1e-12) << i;
+        const IntervalBox around{{std::abs(p.x) * 0.9, std::abs(p.x) * 1.1}, {std::abs(p.y) * 0.9, std::abs(p.y)},
+                                 {std::abs(p.z), std::abs(p.z) * 1.2}};
+        const Interval range = s.gauge_range(around);
+        EXPECT_LE(range.lo, 1.0 + 1e-12);
+        EXPECT_GE(range.hi, 1.0 - 1e-12);
+    }
+}
+
+Vec3d finite_difference_gradient(const Superellipsoid& s, const Vec3d& p, double h) {
+    Vec3d g;
+    for (int k = 0; k < 3; ++k) {
+        Vec3d a = p, b = p;
+        a[k] -= h;
+        b[k] += h;
+        g[k] = (s.gauge(b) - s.gauge(a)) / (2 * h);
+    }
+    return g;
+}
+
+TEST(SuperquadricSuperellipsoid, NormalsFollowTheGradient) {
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> eta(-1.4, 1.4), omega(-3.0, 3.0), exponent(0.1, 4);
+    int checked = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Superellipsoid s{{1, 0.7, 1.3}, exponent(random), exponent(random)};
+        const Vec3d p = s.surface_point(eta(random), omega(random));
+        // Stay away from the planes, where the gradient may be unbounded.
+        if (std::min({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) < 0.05) continue;
+        const Vec3d expected = normalize(finite_difference_gradient(s, p, 1e-7));
+        const Vec3d n = s.normal(p);
+        EXPECT_NEAR(length(n), 1.0, 1e-12);
+        EXPECT_GT(dot(n, expected), 1 - 1e-6) << i << " e " << s.north_south << " " << s.east_west;
+        ++checked;
+    }
+    EXPECT_GT(checked, 500);
+}
+
+TEST(SuperquadricSuperellipsoid, NormalsOnTheCoordinatePlanesAreTheLimits) {
+    for (double e1 : {0.02, 0.5, 1.0, 2.0, 3.0, 4.0})
+        for (double e2 : {0.02, 0.5, 1.0, 2.0, 3.0, 4.0}) {
+            const Superellipsoid s{{1, 2, 3}, e1, e2};
+            for (const Vec3d& p : {Vec3d(1, 0, 0), Vec3d(0, 2, 0), Vec3d(0, 0, 3), Vec3d(0, 0, -3),
+                                   s.surface_point(0.7, 1.5707963267948966), s.surface_point(0, 0.6)}) {
+                const Vec3d n = s.normal(p);
+                ASSERT_TRUE(is_finite(n)) << e1 << " " << e2;
+                EXPECT_NEAR(length(n), 1.0, 1e-12);
+                EXPECT_GT(dot(n, p), 0) << "outward at " << p.x << " " << p.y << " " << p.z;
+            }
+            // The axis ends of a shape that is smooth there (exponents < 2) have the axis as normal.
+            if (e1 < 2 && e2 < 2) {
+                EXPECT_NEAR(s.normal({1, 0, 0}).x, 1.0, 1e-12);
+                EXPECT_NEAR(s.normal({0, 0, -3}).z, -1.0, 1e-12);
+            }
+        }
+    // The ellipsoid's normal on x = 0 has no x component; the octahedron's is the face normal of the x > 0 side.
+    const Vec3d on_plane(0, 1, 1.5);
+    EXPECT_NEAR((Superellipsoid{{1, 2, 3}, 1, 1}).normal(on_plane * (1 / std::sqrt(0.5))).x, 0.0, 1e-15);
+    const Vec3d face = Superellipsoid{{1, 1, 1}, 2, 2}.normal({0, 0.5, 0.5});
+    EXPECT_NEAR(dot(face, normalize(Vec3d(1, 1, 1))), 1.0, 1e-12);
+}
+
+TEST(SuperquadricSuperellipsoid, PolynomialCasesAreExactlyTheEvenPowers) {
+    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 1, 1}).polynomial_degree(), 2);
+    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.5, 0.5}).polynomial_degree(), 4);
+    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.25, 0.25}).polynomial_degree(), 8);
+    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.2, 0.2}).polynomial_degree(), 10);
+    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 2, 2}).polynomial_degree(), 0);    // |x| + |y| + |z|: not polynomial
+    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 1, 0.5}).polynomial_degree(), 0);  // mixed exponents
+    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.1, 0.1}).polynomial_degree(), 0);  // degree 20 is too high
+    // The polynomial is F − 1 along the ray.
+    const Superellipsoid s({1, 2, 0.5}, 0.5, 0.5);
+    const Vec3d o(0.3, -1, 0.2), d(0.1, 0.4, -0.3);
+    const Polynomial p = s.polynomial_along(o, d);
+    for (double t : {-1.0, 0.0, 0.7, 2.5}) EXPECT_NEAR(p.evaluate(t), s.inside_outside(o + d * t) - 1, 1e-12);
+}
+
+}  // namespace
+}  // namespace isotrace

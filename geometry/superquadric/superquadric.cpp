@@ -1,0 +1,139 @@
+#include "geometry/superquadric/superquadric.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "geometry/polynomial/monotone_root_finder.h"
+
+namespace isotrace {
+namespace {
+
+// The part of [t0, t1] where origin + t·direction lies in `box` (slab test); false when empty.
+bool clip_to_box(const IntervalBox& box, const Vec3d& origin, const Vec3d& direction, double& t0, double& t1) {
+    for (int k = 0; k < 3; ++k) {
+        if (direction[k] == 0) {
+            if (!box[k].contains(origin[k])) return false;
+            continue;
+        }
+        double a = (box[k].lo - origin[k]) / direction[k], b = (box[k].hi - origin[k]) / direction[k];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+    }
+    return t0 <= t1;
+}
+
+double largest_extent(const IntervalBox& box) {
+    return std::max({box.x.width(), box.y.width(), box.z.width()});
+}
+
+}  // namespace
+
+Superquadric::Superquadric(Superellipsoid shape, DeformationChain deformation, Transform placement)
+    : shape_(shape), deformation_(std::move(deformation)), placement_(placement) {}
+
+IntervalBox Superquadric::bounds() const {
+    const IntervalBox& local = deformation_.deformed_box();
+    IntervalBox box = IntervalBox::point(placement_.point(local.lower()));
+    for (int corner = 1; corner < 8; ++corner) {
+        const Vec3d p((corner & 1 ? local.x.hi : local.x.lo), (corner & 2 ? local.y.hi : local.y.lo),
+                      (corner & 4 ? local.z.hi : local.z.lo));
+        box.extend(placement_.point(p));
+    }
+    return box;
+}
+
+double Superquadric::local_field(const Vec3d& local) const {
+    const std::optional<Vec3d> undeformed = deformation_.inverse(local);
+    return undeformed ? shape_.gauge(*undeformed) - 1 : 1;  // outside a stage box is outside the object
+}
+
+double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse().point(point)); }
+
+Vec3d Superquadric::normal(const Vec3d& point) const {
+    const DeformationChain::Path path = deformation_.inverse_path(placement_.inverse().point(point));
+    const Vec3d local = deformation_.deform_normal(path, shape_.normal(path[0]));
+    return normalize(placement_.normal(local));
+}
+
+Vec3d Superquadric::surface_point(double eta, double omega) const {
+    return placement_.point(deformation_.forward(shape_.surface_point(eta, omega)));
+}
+
+template <class Visit>
+void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                          SuperquadricWork& work, Visit&& visit) const {
+    const Transform& to_local = placement_.inverse();
+    const Vec3d o = to_local.point(origin), d = to_local.vector(direction);
+    double t0 = t_min, t1 = t_max;
+    if (!clip_to_box(deformation_.deformed_box(), o, d, t0, t1)) return;
+
+    if (deformation_.empty() && shape_.polynomial_degree() > 0) {
+        ++work.polynomial_solves;
+        const Polynomial p = shape_.polynomial_along(o + d * t0, d);  // in u = t − t0, for precision
+        const Polynomial slope = p.derivative();
+        for (const PolynomialRoot& root : all_roots(p, 0, t1 - t0)) {
+            const double s = slope.evaluate(root.t);
+            if (root.tangent || s == 0) continue;  // grazing contacts are misses (docs/decisions.md)
+            if (!visit(Crossing{t0 + root.t, s < 0})) return;
+        }
+        return;
+    }
+
+    const auto value = [&](double t) { return local_field(o + d * t); };
+    const auto bound = [&](double a, double b) {
+        IntervalBox box = IntervalBox::point(o + d * a);
+        box.extend(o + d * b);
+        bool clipped = false;
+        const std::optional<IntervalBox> undeformed = deformation_.inverse_box(box, clipped);
+        if (!undeformed) return Interval{1, 1};
+        const Interval gauge =
+            shape_.gauge_range({undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
+        return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
+    };
+    const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
+
+    // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
+    // linear and the bound is exact.
+    double cuts[5] = {t0};
+    int count = 1;
+    if (deformation_.empty()) {
+        for (int k = 0; k < 3; ++k) {
+            const double t = -o[k] / d[k];
+            if (!(t > t0 && t < t1)) continue;
+            int at = count++;  // insertion keeps the cuts in order
+            for (; at > 1 && cuts[at - 1] > t; --at) cuts[at] = cuts[at - 1];
+            cuts[at] = t;
+        }
+    }
+    cuts[count++] = t1;
+    const bool convex = deformation_.empty() && shape_.is_convex();
+    double g_start = value(t0);
+    for (int i = 0; i + 1 < count; ++i) {
+        const double g_end = value(cuts[i + 1]);
+        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, work.search,
+                              visit))
+            return;
+        g_start = g_end;
+    }
+}
+
+std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
+                                                   double t_max, SuperquadricWork& work) const {
+    std::optional<double> first;
+    search(origin, direction, t_min, t_max, work, [&](const Crossing& c) {
+        first = c.t;
+        return false;
+    });
+    return first;
+}
+
+void Superquadric::crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                             std::vector<Crossing>& out, SuperquadricWork& work) const {
+    search(origin, direction, t_min, t_max, work, [&](const Crossing& c) {
+        out.push_back(c);
+        return true;
+    });
+}
+
+}  // namespace isotrace

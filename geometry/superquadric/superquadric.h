@@ -1,0 +1,67 @@
+#pragma once
+// One superquadric primitive: a superellipsoid, its chain of Barr deformations, and its placement (the paper's
+// TR: local frame → the shape's space). Rays are intersected in the local deformed frame, where the placement
+// keeps t unchanged, and the surface is found as the sign changes of g = G(D⁻¹(p(t))) − 1 along the ray
+// (G the superellipsoid's gauge, D the deformation chain):
+// - undeformed with ε1 = ε2 = 2/n, n even: F − 1 is a polynomial in t, solved by the monotone-interval finder;
+// - otherwise: the ray is cut at the local coordinate planes when undeformed (where F changes form), then each
+//   piece is searched by interval subdivision (crossing_search.h) with bounds from the deformation chain's
+//   interval inverse and the gauge's monotonicity in |x|, |y|, |z|.
+#include <optional>
+#include <vector>
+
+#include "geometry/superquadric/crossing_search.h"
+#include "geometry/superquadric/deformation_chain.h"
+#include "geometry/superquadric/superellipsoid.h"
+#include "renderer/math/transform.h"
+
+namespace isotrace {
+
+struct SuperquadricWork {
+    CrossingSearchWork search;
+    std::uint64_t polynomial_solves = 0;
+};
+
+class Superquadric {
+public:
+    // Crossings closer together than this fraction of the object's size may be taken for a grazing contact.
+    static constexpr double kRelativeResolution = 1e-7;
+
+    Superquadric(Superellipsoid shape, DeformationChain deformation, Transform placement);
+
+    const Superellipsoid& shape() const { return shape_; }
+    const DeformationChain& deformation() const { return deformation_; }
+    const Transform& placement() const { return placement_; }
+    // Places the object by `to_world` after its current placement.
+    void transform(const Transform& to_world) { placement_ = to_world * placement_; }
+
+    // Axis-aligned box around the placed, deformed object (conservative).
+    IntervalBox bounds() const;
+    // G(D⁻¹(p)) − 1 at a point of the shape's space: negative inside, 0 on the surface.
+    double field(const Vec3d& point) const;
+    // Outward unit normal at a surface point of the shape's space: J⁻ᵀ·∇F carried through the chain, then the
+    // placement's inverse transpose.
+    Vec3d normal(const Vec3d& point) const;
+    // A point of the surface from the paper's parametric form (eq. 1), deformed and placed.
+    Vec3d surface_point(double eta, double omega) const;
+
+    // The first crossing of origin + t·direction with the surface for t in [t_min, t_max].
+    std::optional<double> first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                         SuperquadricWork& work) const;
+    // All crossings in [t_min, t_max], in increasing t, appended to `out`.
+    void crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                   std::vector<Crossing>& out, SuperquadricWork& work) const;
+
+private:
+    // Visits the crossings in [t_min, t_max] in order until visit(Crossing) returns false.
+    template <class Visit>
+    void search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, SuperquadricWork& work,
+                Visit&& visit) const;
+    double local_field(const Vec3d& local) const;
+
+    Superellipsoid shape_;
+    DeformationChain deformation_;
+    Transform placement_;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,142 @@
+#include "geometry/superquadric/superquadric_shape.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "renderer/core/render_counters.h"
+#include "renderer/embree/user_geometry.h"
+
+namespace isotrace {
+
+using user_geometry::ray_direction;
+using user_geometry::ray_origin;
+
+SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
+    : superquadrics_(std::move(superquadrics)) {}
+
+std::size_t SuperquadricShape::memory_bytes() const {
+    std::size_t bytes = superquadrics_.capacity() * sizeof(Superquadric);
+    for (const Superquadric& s : superquadrics_) bytes += s.deformation().heap_bytes();
+    return bytes;
+}
+
+Bounds3f SuperquadricShape::bounds() const {
+    Bounds3f b;
+    for (const Superquadric& s : superquadrics_) {
+        const IntervalBox box = s.bounds();
+        b.extend(Vec3f(box.lower()));
+        b.extend(Vec3f(box.upper()));
+    }
+    return b;
+}
+
+void SuperquadricShape::bake(const Transform& to_world) {
+    if (to_world.is_identity()) return;
+    for (Superquadric& s : superquadrics_) s.transform(to_world);
+}
+
+RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
+    counter_slot_ = counters::geometry_type_slot(type_name(), true);
+    bounds_slot_ = counters::named_counter_slot("superquadric.interval_bounds");
+    evaluations_slot_ = counters::named_counter_slot("superquadric.evaluations");
+    polynomial_slot_ = counters::named_counter_slot("superquadric.polynomial_solves");
+    return user_geometry::create(device, this, unsigned(superquadrics_.size()), bounds_callback, intersect_callback,
+                                 occluded_callback);
+}
+
+void SuperquadricShape::record_work(const SuperquadricWork& work) const {
+    counters::add_to_named(bounds_slot_, work.search.interval_bounds);
+    counters::add_to_named(evaluations_slot_, work.search.evaluations);
+    counters::add_to_named(polynomial_slot_, work.polynomial_solves);
+}
+
+void SuperquadricShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
+    const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
+    const IntervalBox box = self->superquadrics_[args->primID].bounds();
+    user_geometry::store_bounds(args->bounds_o, box.lower(), box.upper());
+}
+
+void SuperquadricShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
+    const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
+    const Superquadric& s = self->superquadrics_[args->primID];
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        counters::count_test(self->counter_slot_);
+        const Vec3d origin = ray_origin(rays, args->N, i), direction = ray_direction(rays, args->N, i);
+        const double t_near = RTCRayN_tnear(rays, args->N, i);
+        float& t_far = RTCRayN_tfar(rays, args->N, i);
+        SuperquadricWork work;
+        const auto t = s.first_crossing(origin, direction, t_near, t_far, work);
+        self->record_work(work);
+        if (!t || !(*t > t_near) || !(float(*t) < t_far)) continue;
+        counters::count_candidate_hit(self->counter_slot_);
+        user_geometry::store_hit(args, i, float(*t), s.normal(origin + direction * *t));
+    }
+}
+
+void SuperquadricShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
+    const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
+    const Superquadric& s = self->superquadrics_[args->primID];
+    RTCRayN* rays = args->ray;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        counters::count_test(self->counter_slot_);
+        const double t_near = RTCRayN_tnear(rays, args->N, i);
+        float& t_far = RTCRayN_tfar(rays, args->N, i);
+        SuperquadricWork work;
+        const auto t = s.first_crossing(ray_origin(rays, args->N, i), ray_direction(rays, args->N, i), t_near, t_far,
+                                        work);
+        self->record_work(work);
+        if (!t || !(*t > t_near) || !(float(*t) < t_far)) continue;
+        counters::count_candidate_hit(self->counter_slot_);
+        t_far = -std::numeric_limits<float>::infinity();
+    }
+}
+
+void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin, const Vec3d& direction,
+                                        double t_min, double t_max, std::vector<InsideSpan>& spans) const {
+    const Superquadric& s = superquadrics_[index];
+    thread_local std::vector<Crossing> found;
+    found.clear();
+    SuperquadricWork work;
+    s.crossings(origin, direction, t_min, t_max, found, work);
+    const auto surface_point = [&](double t) {
+        return BoundaryPoint{t, s.normal(origin + direction * t), index, 0};
+    };
+    const auto cut = [](double t) { return BoundaryPoint{t, {0, 0, 1}, BoundaryPoint::kCut, 0}; };
+    std::optional<BoundaryPoint> open;
+    if (s.field(origin + direction * t_min) < 0) open = cut(t_min);
+    for (const Crossing& c : found) {
+        if (c.entering && !open) {
+            open = surface_point(c.t);
+        } else if (!c.entering && open) {
+            if (c.t > open->t) spans.push_back({*open, surface_point(c.t)});
+            open.reset();
+        }
+    }
+    if (open && t_max > open->t) spans.push_back({*open, cut(t_max)});
+}
+
+void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                     std::vector<InsideSpan>& spans) const {
+    if (superquadrics_.size() == 1) {
+        primitive_spans(0, origin, direction, t_min, t_max, spans);
+        return;
+    }
+    // The union of the superquadrics' spans: sorted by entry, overlapping spans merged.
+    thread_local std::vector<InsideSpan> all;
+    all.clear();
+    for (std::uint32_t i = 0; i < superquadrics_.size(); ++i) primitive_spans(i, origin, direction, t_min, t_max, all);
+    std::sort(all.begin(), all.end(), [](const InsideSpan& a, const InsideSpan& b) { return a.enter.t < b.enter.t; });
+    const std::size_t first = spans.size();
+    for (const InsideSpan& span : all) {
+        if (spans.size() > first && span.enter.t <= spans.back().exit.t) {
+            if (span.exit.t > spans.back().exit.t) spans.back().exit = span.exit;
+        } else {
+            spans.push_back(span);
+        }
+    }
+}
+
+}  // namespace isotrace

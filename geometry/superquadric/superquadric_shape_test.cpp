@@ -1,0 +1,266 @@
+// The "superquadric" shape through Embree and as a Solid: inside spans against closed forms and dense sampling,
+// instanced versus baked placements, counters, and the scene plugin's format and errors.
+#include "geometry/superquadric/superquadric_shape.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "geometry/mesh/mesh_test_support.h"
+#include "geometry/superquadric/superquadric_test_support.h"
+#include "renderer/core/render_counters.h"
+#include "renderer/scene/json_document.h"
+#include "renderer/scene/render_scene.h"
+#include "renderer/scene/scene_node.h"
+
+namespace isotrace {
+namespace {
+
+using superquadric_test::make_superquadric;
+using superquadric_test::random_deformations;
+
+std::vector<InsideSpan> spans_of(const SuperquadricShape& shape, const Vec3d& o, const Vec3d& d, double t_min,
+                                 double t_max) {
+    std::vector<InsideSpan> spans;
+    shape.inside_spans(o, d, t_min, t_max, spans);
+    return spans;
+}
+
+TEST(SuperquadricSpans, ARayThroughAnEllipsoidGivesOneSpanWithTheClosedFormEnds) {
+    const Vec3d radii(2, 1, 0.5);
+    for (const Superquadric& s : {make_superquadric(radii, 1, 1), make_superquadric(radii, 1, 1, {Twist(0, radii.z)})}) {
+        const SuperquadricShape shape({s});
+        // Along x through (0, 0.6, 0.3): x² / 4 = 1 − 0.36 − 0.36, so x = ±2·sqrt(0.28).
+        const double half = 2 * std::sqrt(0.28);
+        const auto spans = spans_of(shape, {-5, 0.6, 0.3}, {2, 0, 0}, 0, 100);
+        ASSERT_EQ(spans.size(), 1u);
+        EXPECT_NEAR(spans[0].enter.t, (5 - half) / 2, 1e-12);
+        EXPECT_NEAR(spans[0].exit.t, (5 + half) / 2, 1e-12);
+        EXPECT_EQ(spans[0].enter.primitive, 0u);
+        EXPECT_TRUE(spans[0].exit.on_surface());
+        EXPECT_LT(spans[0].enter.normal.x, 0);
+        EXPECT_GT(spans[0].exit.normal.x, 0);
+        // From inside: the span starts with a cut at t_min.
+        const auto inside = spans_of(shape, {0, 0.6, 0.3}, {1, 0, 0}, 0.1, 100);
+        ASSERT_EQ(inside.size(), 1u);
+        EXPECT_FALSE(inside[0].enter.on_surface());
+        EXPECT_EQ(inside[0].enter.t, 0.1);
+        EXPECT_NEAR(inside[0].exit.t, half, 1e-12);
+        // Cut at t_max too, and nothing outside the range.
+        const auto cut = spans_of(shape, {-5, 0.6, 0.3}, {1, 0, 0}, 0, 5);
+        ASSERT_EQ(cut.size(), 1u);
+        EXPECT_TRUE(cut[0].enter.on_surface());
+        EXPECT_EQ(cut[0].exit.primitive, BoundaryPoint::kCut);
+        EXPECT_EQ(cut[0].exit.t, 5);
+        EXPECT_TRUE(spans_of(shape, {-5, 0.6, 0.3}, {1, 0, 0}, 0, 1).empty());
+        EXPECT_TRUE(spans_of(shape, {-5, 0.6, 0.6}, {1, 0, 0}, 0, 100).empty());
+    }
+}
+
+// Inside per the spans versus the field's sign, at sample points away from the span ends.
+void expect_spans_match_sampling(const SuperquadricShape& shape, const Vec3d& o, const Vec3d& d, double t_max,
+                                 const std::string& what) {
+    const auto spans = spans_of(shape, o, d, 0, t_max);
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+        EXPECT_LT(spans[i].enter.t, spans[i].exit.t) << what;
+        if (i > 0) {
+            EXPECT_LT(spans[i - 1].exit.t, spans[i].enter.t) << what;
+        }
+    }
+    constexpr int samples = 3000;
+    for (int k = 0; k <= samples; ++k) {
+        const double t = t_max * k / samples;
+        bool near_end = false, in_span = false;
+        for (const InsideSpan& span : spans) {
+            near_end = near_end || std::abs(t - span.enter.t) < 1e-6 * t_max || std::abs(t - span.exit.t) < 1e-6 * t_max;
+            in_span = in_span || (t > span.enter.t && t < span.exit.t);
+        }
+        if (near_end) continue;
+        bool inside_any = false;
+        for (const Superquadric& s : shape.superquadrics()) inside_any = inside_any || s.field(o + d * t) < 0;
+        ASSERT_EQ(in_span, inside_any) << what << " at t = " << t;
+    }
+}
+
+TEST(SuperquadricSpans, PinchedStarsGiveTheSpansThatDenseSamplingSees) {
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> unit(-1, 1), star(3, 4);
+    int several = 0;
+    for (int shape_index = 0; shape_index < 30; ++shape_index) {
+        const Vec3d radii(1, 1.2, 0.9);
+        std::vector<Deformation> stages;
+        if (shape_index % 2) stages = random_deformations(random, radii);
+        const SuperquadricShape shape({make_superquadric(radii, star(random), star(random), stages)});
+        for (int i = 0; i < 30; ++i) {
+            // Rays close to the star's arms cross them several times.
+            const Vec3d o(unit(random) * 0.3, unit(random) * 0.3, 4);
+            const Vec3d d = Vec3d(unit(random) * 0.2, unit(random) * 0.2, -1) - Vec3d(0, 0, 0);
+            const Vec3d sideways(5 * unit(random), 5 * unit(random), unit(random) * 0.4);
+            const Vec3d side_origin = sideways;
+            const Vec3d side_direction = Vec3d(unit(random) * 0.3, unit(random) * 0.3, unit(random) * 0.1) - sideways * 0.2;
+            expect_spans_match_sampling(shape, o, d, 8, "down " + std::to_string(shape_index));
+            expect_spans_match_sampling(shape, side_origin, side_direction, 10, "side " + std::to_string(shape_index));
+            if (spans_of(shape, side_origin, side_direction, 0, 10).size() > 1) ++several;
+        }
+    }
+    EXPECT_GT(several, 10);  // the test does see multi-span rays
+}
+
+TEST(SuperquadricSpans, SeveralSuperquadricsGiveTheirUnion) {
+    const SuperquadricShape shape({make_superquadric({1, 1, 1}, 1, 1),
+                                   make_superquadric({1, 1, 1}, 1, 1, {}, Transform::translate({1.5, 0, 0})),
+                                   make_superquadric({0.5, 0.5, 0.5}, 0.3, 0.3, {}, Transform::translate({5, 0, 0}))});
+    const auto spans = spans_of(shape, {-3, 0, 0}, {1, 0, 0}, 0, 20);
+    ASSERT_EQ(spans.size(), 2u);
+    EXPECT_NEAR(spans[0].enter.t, 2, 1e-12);
+    EXPECT_NEAR(spans[0].exit.t, 5.5, 1e-12);
+    EXPECT_EQ(spans[0].enter.primitive, 0u);
+    EXPECT_EQ(spans[0].exit.primitive, 1u);
+    EXPECT_NEAR(spans[1].enter.t, 7.5, 1e-12);
+    EXPECT_EQ(spans[1].exit.primitive, 2u);
+    expect_spans_match_sampling(shape, {-3, 0.2, 0.1}, {1, 0.01, 0}, 20, "union");
+}
+
+Ray make_ray(const Vec3d& o, const Vec3d& d) {
+    Ray ray;
+    ray.origin = Vec3f(o);
+    ray.direction = Vec3f(d);
+    return ray;
+}
+
+std::unique_ptr<RenderScene> scene_with(Superquadric s, const Transform& to_world) {
+    auto scene = std::make_unique<RenderScene>();
+    SceneObject object;
+    object.shape = std::make_unique<SuperquadricShape>(std::vector<Superquadric>{std::move(s)});
+    object.to_world = to_world;
+    scene->add_object(std::move(object));
+    scene->commit();
+    return scene;
+}
+
+TEST(SuperquadricShape, InstancedAndBakedPlacementsGiveTheSameHits) {
+    const Vec3d radii(0.6, 0.8, 1.2);
+    std::mt19937 random(32);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const std::vector<Deformation> stages = random_deformations(random, radii);
+    const Transform shear = Transform::translate({0.5, 0, -1}) * Transform::rotate({0, 1, 1}, 25) *
+                            Transform::scale({1, 2.5, 0.7});  // not a similarity: instanced
+    const Transform similarity = Transform::translate({0.5, 0, -1}) * Transform::rotate({0, 1, 1}, 25) *
+                                 Transform::scale({1.7, 1.7, 1.7});
+    for (const Transform& to_world : {shear, similarity}) {
+        const auto scene = scene_with(make_superquadric(radii, 0.4, 2.6, stages), to_world);
+        EXPECT_EQ(scene->objects()[0].instanced, to_world.similarity_scale() == 0);
+        // The reference holds the same map as its own placement and is queried directly in double.
+        const Superquadric reference = make_superquadric(radii, 0.4, 2.6, stages, to_world);
+        int hits = 0;
+        for (int i = 0; i < 400; ++i) {
+            const Vec3d o = Vec3d(Vec3f(Vec3d(unit(random), unit(random), unit(random)) * 7.0));
+            const Vec3d d = Vec3d(Vec3f(to_world.point(Vec3d(unit(random), unit(random), unit(random)) * 0.8) - o));
+            const auto hit = scene->intersect(make_ray(o, d), RayKind::Camera);
+            SuperquadricWork work;
+            const auto expected = reference.first_crossing(o, d, 0, 1e30, work);
+            if (hit.has_value() != expected.has_value()) {
+                // Only grazing rays may disagree, through the float ray and transforms.
+                const double t = hit ? hit->t : *expected;
+                EXPECT_LT(std::abs(reference.field(o + d * t)), 1e-3) << i;
+                continue;
+            }
+            if (!hit) continue;
+            ++hits;
+            EXPECT_NEAR(hit->t, *expected, 1e-5 * *expected) << i;
+            EXPECT_GT(dot(Vec3d(hit->geometric_normal), reference.normal(o + d * *expected)), 1 - 1e-4) << i;
+            EXPECT_EQ(hit->primitive_id, 0u);
+        }
+        EXPECT_GT(hits, 200);
+    }
+}
+
+TEST(SuperquadricShape, CountersRecordTestsAndRootFinderWork) {
+    const auto scene = scene_with(make_superquadric({1, 1, 1}, 0.7, 1.4, {Twist(1, 1)}), Transform::translate({0, 0, 5}));
+    const auto count = [](const CounterTotals& t) {
+        const auto found = t.geometry.find("superquadric");
+        return found == t.geometry.end() ? GeometryTypeCounts{} : found->second;
+    };
+    const CounterTotals before = counters::totals();
+    ASSERT_TRUE(scene->intersect(make_ray({0, 0, 0}, {0, 0, 1}), RayKind::Camera));
+    ASSERT_TRUE(scene->occluded(make_ray({0, 0, 0}, {0, 0, 1})));
+    const CounterTotals after = counters::totals();
+    EXPECT_TRUE(count(after).counts_tests);
+    EXPECT_GE(count(after).tests, count(before).tests + 2);
+    EXPECT_GE(count(after).candidate_hits, count(before).candidate_hits + 2);
+    EXPECT_GT(after.named.at("superquadric.evaluations"), before.named.count("superquadric.evaluations")
+                                                              ? before.named.at("superquadric.evaluations")
+                                                              : 0);
+}
+
+// ---- scene format ----------------------------------------------------------------------------------------
+
+// The "superquadric" plugin's shape for a JSON shape object, as the scene loader would create it.
+std::unique_ptr<Shape> create_shape(const std::string& json) {
+    const JsonValue value = parse_json(json, "shape.json");
+    auto context = std::make_shared<SceneFileContext>();
+    context->file = "shape.json";
+    return shape_registry().create(SceneNode(value, "shape", context));
+}
+
+TEST(SuperquadricScene, ReadsSingleAndListFormsWithDeformations) {
+    std::unique_ptr<Shape> shape = create_shape(R"({"type": "superquadric",
+        "superquadrics": [
+          {"radii": [0.5, 0.5, 1], "exponents": [0.2, 1], "center": [3, 0, 0]},
+          {"radii": [0.5, 0.5, 1], "exponents": [1, 1], "rotate": {"axis": [1, 0, 0], "angle": 90},
+           "deform": [{"taper": [-0.5, 0.2]}, {"twist": 90}, {"bend": {"curvature": -0.4, "direction": 30}}]}]})");
+    const auto& superquadrics = dynamic_cast<const SuperquadricShape&>(*shape).superquadrics();
+    ASSERT_EQ(superquadrics.size(), 2u);
+    EXPECT_EQ(superquadrics[0].shape().north_south, 0.2);
+    EXPECT_EQ(superquadrics[1].deformation().size(), 3u);
+    auto scene = std::make_unique<RenderScene>();
+    SceneObject object;
+    object.shape = std::move(shape);
+    scene->add_object(std::move(object));
+    scene->commit();
+    // The first one is a cylinder-like superquadric of height 2 centred at x = 3: a ray down onto it hits z = 1.
+    const auto hit = scene->intersect(make_ray({3, 0, 10}, {0, 0, -1}), RayKind::Camera);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 9.0f, 1e-5f);
+    EXPECT_EQ(hit->primitive_id, 0u);
+    // The second is turned by 90 degrees about x, which takes its axis to the y axis.
+    const auto side = scene->intersect(make_ray({0.01, -10, 0}, {0, 1, 0}), RayKind::Camera);
+    ASSERT_TRUE(side);
+    EXPECT_EQ(side->primitive_id, 1u);
+    const std::unique_ptr<Shape> single = create_shape(R"({"type": "superquadric", "radii": [1, 2, 3]})");
+    EXPECT_EQ(dynamic_cast<const SuperquadricShape&>(*single).superquadrics()[0].shape().radii, Vec3d(1, 2, 3));
+}
+
+void expect_error(const std::string& shape, const std::vector<std::string>& parts) {
+    SCOPED_TRACE(shape);
+    const std::string message = mesh_test::input_error_message([&] { create_shape(shape); });
+    for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << message;
+}
+
+TEST(SuperquadricScene, BadParametersAreInputErrorsNamingTheField) {
+    expect_error(R"({"type": "superquadric", "radii": [1, 0, 1]})", {"shape.radii"});
+    expect_error(R"({"type": "superquadric", "radii": [1, -2, 1]})", {"shape.radii"});
+    expect_error(R"({"type": "superquadric", "exponents": [0, 1]})", {"shape.exponents"});
+    expect_error(R"({"type": "superquadric", "exponents": [1, 4.5]})", {"shape.exponents"});
+    expect_error(R"({"type": "superquadric", "exponents": [1, 1e999]})", {"shape.json"});
+    expect_error(R"({"type": "superquadric", "deform": [{"taper": -1.2}]})",
+                 {"shape.deform[0]", "taper", "cross-section scale"});
+    expect_error(R"({"type": "superquadric", "deform": [{"twist": 30}, {"bend": {"curvature": 1.5}}]})",
+                 {"shape.deform[1]", "bend", "fold through"});
+    expect_error(R"({"type": "superquadric", "deform": [{"bend": {"curvature": 0}}]})",
+                 {"shape.deform[0].bend.curvature"});
+    expect_error(R"({"type": "superquadric", "deform": [{"bend": {"curvature": 0.5, "region": [1, -1]}}]})",
+                 {"deform[0].bend.region"});
+    expect_error(R"({"type": "superquadric", "deform": [{"twist": 30, "taper": 1}]})", {"deform[0]", "one of"});
+    expect_error(R"({"type": "superquadric", "deform": [{"twits": 30}]})", {"deform[0]", "twits"});
+    expect_error(R"({"type": "superquadric", "radii": [1, 1, 1], "superquadrics": [{}]})", {"shape.radii", "not both"});
+    expect_error(R"({"type": "superquadric", "superquadrics": []})", {"shape.superquadrics", "empty"});
+    expect_error(R"({"type": "superquadric", "superquadrics": [{"radius": 1}]})", {"superquadrics[0]", "radius"});
+    expect_error(R"({"type": "superquadric", "center": [2e18, 0, 0]})", {"1e18"});
+}
+
+}  // namespace
+}  // namespace isotrace

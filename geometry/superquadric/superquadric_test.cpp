@@ -1,0 +1,337 @@
+// Ray queries of single superquadrics against closed forms (ellipsoid, octahedron, the box limit), the
+// first-crossing guarantee on random deformed shapes (every hit is on the surface, no earlier sign change),
+// identities of the deformations, normals against finite differences, and conservative bounds.
+#include "geometry/superquadric/superquadric.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <random>
+
+#include "geometry/superquadric/superquadric_test_support.h"
+
+namespace isotrace {
+namespace {
+
+using superquadric_test::make_superquadric;
+using superquadric_test::random_deformations;
+using superquadric_test::sampled_crossings;
+
+// Roots of |(o + t d) / a| = 1 in long double (the ellipsoid as a unit sphere in scaled coordinates).
+std::optional<std::array<double, 2>> ellipsoid_roots(const Vec3d& radii, const Vec3d& o, const Vec3d& d) {
+    long double a = 0, b = 0, c = -1;
+    for (int k = 0; k < 3; ++k) {
+        const long double oo = (long double)o[k] / radii[k], dd = (long double)d[k] / radii[k];
+        a += dd * dd;
+        b += oo * dd;
+        c += oo * oo;
+    }
+    const long double disc = b * b - a * c;
+    if (disc < 0) return std::nullopt;
+    const long double root = std::sqrt(disc);
+    return std::array<double, 2>{double((-b - root) / a), double((-b + root) / a)};
+}
+
+struct RandomRay {
+    Vec3d origin, direction;
+};
+
+// Rays from a shell around the object toward random points near it (some miss, some graze), and rays from inside.
+RandomRay random_ray(std::mt19937& random, const Vec3d& radii, bool from_inside) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const Vec3d target(unit(random) * radii.x * 1.2, unit(random) * radii.y * 1.2, unit(random) * radii.z * 1.2);
+    Vec3d origin(unit(random), unit(random), unit(random));
+    origin = from_inside ? origin * 0.3 * std::min({radii.x, radii.y, radii.z}) : normalize(origin) * 6.0;
+    Vec3d direction = from_inside ? Vec3d(unit(random), unit(random), unit(random)) : target - origin;
+    return {origin, direction * (0.5 + std::abs(unit(random)))};  // not unit length on purpose
+}
+
+void expect_ellipsoid_hits(const Superquadric& s, const Vec3d& radii, const char* what) {
+    std::mt19937 random(21);
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const RandomRay ray = random_ray(random, radii, i % 4 == 0);
+        const auto roots = ellipsoid_roots(radii, ray.origin, ray.direction);
+        SuperquadricWork work;
+        const auto t = s.first_crossing(ray.origin, ray.direction, 0, 1e30, work);
+        if (roots && (*roots)[1] - (*roots)[0] < 1e-6 * std::abs((*roots)[1])) continue;  // grazing: either answer
+        std::optional<double> expected;
+        if (roots && (*roots)[1] >= 0) expected = (*roots)[0] >= 0 ? (*roots)[0] : (*roots)[1];
+        ASSERT_EQ(t.has_value(), expected.has_value()) << what << " ray " << i;
+        if (!t) continue;
+        ++hits;
+        // The chord's conditioning limits any method: the root moves by rounding / |slope|.
+        const double chord = (*roots)[1] - (*roots)[0];
+        EXPECT_NEAR(*t, *expected, 1e-9 * std::abs(*expected) + 1e-12 * std::abs(*expected) * *expected / chord)
+            << what << " ray " << i;
+        const Vec3d p = ray.origin + ray.direction * *expected;
+        const Vec3d n = normalize(Vec3d(p.x / (radii.x * radii.x), p.y / (radii.y * radii.y), p.z / (radii.z * radii.z)));
+        EXPECT_GT(dot(s.normal(ray.origin + ray.direction * *t), n), 1 - 1e-9) << what << " ray " << i;
+    }
+    EXPECT_GT(hits, 1500) << what;
+}
+
+TEST(SuperquadricIntersection, EpsilonOneIsTheEllipsoid) {
+    const Vec3d radii(0.7, 1.3, 2.1);
+    expect_ellipsoid_hits(make_superquadric(radii, 1, 1), radii, "polynomial path");
+    // An identity twist sends the same shape through the interval search.
+    expect_ellipsoid_hits(make_superquadric(radii, 1, 1, {Twist(0, radii.z)}), radii, "interval search");
+    expect_ellipsoid_hits(make_superquadric(radii, 1, 1, {Taper(0, 0, radii.z)}), radii, "identity taper");
+}
+
+TEST(SuperquadricIntersection, GrazingRaysHitOnlyWhenTheyCross) {
+    // Unit sphere, rays along x at heights 1 - δ (two crossings 2·sqrt(2δ) apart) and 1 + δ (none).
+    for (const Superquadric& s : {make_superquadric({1, 1, 1}, 1, 1), make_superquadric({1, 1, 1}, 1, 1, {Twist(0, 1)})}) {
+        for (double delta : {1e-3, 1e-6, 1e-9}) {
+            SuperquadricWork work;
+            const auto inside = s.first_crossing({-3, 0, 1 - delta}, {1, 0, 0}, 0, 10, work);
+            ASSERT_TRUE(inside) << delta;
+            EXPECT_NEAR(*inside, 3 - std::sqrt(2 * delta - delta * delta), 1e-7);
+            EXPECT_FALSE(s.first_crossing({-3, 0, 1 + delta}, {1, 0, 0}, 0, 10, work)) << delta;
+        }
+    }
+}
+
+// The first t ≥ 0 with |x| + |y| + |z| = 1: f is convex and piecewise linear in t, linear between the ray's
+// crossings of the coordinate planes, so each piece is solved exactly.
+std::optional<double> octahedron_hit(const Vec3d& o, const Vec3d& d) {
+    std::vector<double> cuts{0};
+    for (int k = 0; k < 3; ++k)
+        if (d[k] != 0 && -o[k] / d[k] > 0) cuts.push_back(-o[k] / d[k]);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.push_back(1e6);
+    const auto f = [&](double t) { return std::abs(o.x + t * d.x) + std::abs(o.y + t * d.y) + std::abs(o.z + t * d.z) - 1; };
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const double a = cuts[i], b = cuts[i + 1], fa = f(a), fb = f(b);
+        if ((fa < 0) != (fb < 0)) return a + (b - a) * fa / (fa - fb);
+    }
+    return std::nullopt;
+}
+
+TEST(SuperquadricIntersection, EpsilonTwoIsTheOctahedron) {
+    for (const Superquadric& s : {make_superquadric({1, 1, 1}, 2, 2), make_superquadric({1, 1, 1}, 2, 2, {Twist(0, 1)})}) {
+        std::mt19937 random(22);
+        int hits = 0;
+        for (int i = 0; i < 3000; ++i) {
+            const RandomRay ray = random_ray(random, {1, 1, 1}, i % 4 == 0);
+            const auto expected = octahedron_hit(ray.origin, ray.direction);
+            SuperquadricWork work;
+            const auto t = s.first_crossing(ray.origin, ray.direction, 0, 1e30, work);
+            // Rays through an edge or vertex within the search resolution may count as grazing.
+            const Vec3d p = expected ? ray.origin + ray.direction * *expected : Vec3d();
+            const double edge = std::min({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+            if (expected && edge < 1e-6) continue;
+            ASSERT_EQ(t.has_value(), expected.has_value()) << i;
+            if (!t) continue;
+            ++hits;
+            EXPECT_NEAR(*t, *expected, 1e-10 * *expected) << i;
+            const Vec3d n = s.normal(p);
+            EXPECT_NEAR(dot(n, Vec3d(std::copysign(1.0, p.x), std::copysign(1.0, p.y), std::copysign(1.0, p.z))),
+                        std::sqrt(3.0), 1e-9);
+        }
+        EXPECT_GT(hits, 1200);
+    }
+}
+
+// Slab entry of a box of half-sizes h (or the exit, from inside): t ≥ 0.
+std::optional<double> box_hit(const Vec3d& h, const Vec3d& o, const Vec3d& d) {
+    double t0 = -1e300, t1 = 1e300;
+    for (int k = 0; k < 3; ++k) {
+        double a = (-h[k] - o[k]) / d[k], b = (h[k] - o[k]) / d[k];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+    }
+    if (t0 > t1 || t1 < 0) return std::nullopt;
+    return t0 >= 0 ? t0 : t1;
+}
+
+TEST(SuperquadricIntersection, SmallEpsilonApproachesTheBox) {
+    // For ε1 = ε2 = ε the surface lies between the box and the box shrunk by 3^(−ε/2) (G ≤ 3^(ε/2)·max|xᵢ/aᵢ|), so
+    // every entry is bracketed by the two boxes' entries: 1.1 % of the size at ε = 0.02.
+    const double e = 0.02, shrink = std::pow(3.0, -e / 2);
+    const Vec3d radii(1, 0.6, 1.4);
+    const Superquadric s = make_superquadric(radii, e, e);
+    std::mt19937 random(23);
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const RandomRay ray = random_ray(random, radii, false);
+        const auto outer = box_hit(radii, ray.origin, ray.direction);
+        const auto inner = box_hit(radii * shrink, ray.origin, ray.direction);
+        SuperquadricWork work;
+        const auto t = s.first_crossing(ray.origin, ray.direction, 0, 1e30, work);
+        if (inner) {
+            ASSERT_TRUE(t) << i;
+            EXPECT_GE(*t, *outer * (1 - 1e-12)) << i;
+            EXPECT_LE(*t, *inner * (1 + 1e-12)) << i;
+            ++hits;
+        }
+        if (!outer) {
+            EXPECT_FALSE(t) << i;
+        }
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(SuperquadricIntersection, EveryHitIsTheFirstSignChangeOnRandomDeformedShapes) {
+    std::mt19937 random(24);
+    std::uniform_real_distribution<double> exponent(0.1, 4), size(0.4, 1.5);
+    int hits = 0;
+    for (int shape = 0; shape < 40; ++shape) {
+        const Vec3d radii(size(random), size(random), size(random));
+        const Superquadric s = make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii));
+        for (int i = 0; i < 40; ++i) {
+            const RandomRay ray = random_ray(random, radii, i % 5 == 0);
+            SuperquadricWork work;
+            const auto t = s.first_crossing(ray.origin, ray.direction, 0, 20, work);
+            const double t_end = t ? *t : 20;
+            // No sign change before the hit (beyond the resolution), found by dense sampling.
+            const std::vector<double> earlier = sampled_crossings(s, ray.origin, ray.direction, 0, t_end, 4000);
+            const double resolution = 1e-6 * t_end;
+            for (double c : earlier) EXPECT_GT(c, t_end - resolution - t_end / 4000) << "shape " << shape << " ray " << i;
+            if (!t) continue;
+            ++hits;
+            const Vec3d p = ray.origin + ray.direction * *t;
+            // The field changes sign across the hit, and the hit is on the surface.
+            EXPECT_NEAR(s.field(p), 0, 1e-9) << "shape " << shape << " ray " << i;
+            EXPECT_NE(s.field(ray.origin + ray.direction * (*t * (1 - 1e-9))) < 0,
+                      s.field(ray.origin + ray.direction * (*t * (1 + 1e-9))) < 0);
+        }
+    }
+    EXPECT_GT(hits, 500);
+}
+
+TEST(SuperquadricIntersection, PlacementIsAppliedAndTIsPreserved) {
+    const Transform placement = Transform::translate({1, -2, 0.5}) * Transform::rotate({1, 2, 3}, 40) *
+                                Transform::scale({1.5, 1.5, 1.5});
+    const Vec3d radii(0.5, 0.7, 1.1);
+    const Superquadric local = make_superquadric(radii, 0.6, 1.7, {Taper(0.3, 0.2, radii.z), Twist(0.8, radii.z)});
+    const Superquadric placed = make_superquadric(radii, 0.6, 1.7, {Taper(0.3, 0.2, radii.z), Twist(0.8, radii.z)}, placement);
+    std::mt19937 random(25);
+    for (int i = 0; i < 300; ++i) {
+        const RandomRay ray = random_ray(random, radii, i % 3 == 0);
+        SuperquadricWork work;
+        const auto a = local.first_crossing(ray.origin, ray.direction, 0, 100, work);
+        const auto b = placed.first_crossing(placement.point(ray.origin), placement.vector(ray.direction), 0, 100, work);
+        ASSERT_EQ(a.has_value(), b.has_value()) << i;
+        if (!a) continue;
+        EXPECT_NEAR(*a, *b, 1e-9 * *a);
+        const Vec3d n_local = local.normal(ray.origin + ray.direction * *a);
+        const Vec3d n_placed = placed.normal(placement.point(ray.origin + ray.direction * *a));
+        EXPECT_GT(dot(normalize(placement.normal(n_local)), n_placed), 1 - 1e-9);
+    }
+}
+
+TEST(SuperquadricIntersection, TwistLeavesTheAxisRayUnchanged) {
+    const Vec3d radii(0.6, 0.9, 1.2);
+    for (double e1 : {0.3, 1.0, 2.5})
+        for (double e2 : {0.3, 1.0, 2.5}) {
+            const Superquadric plain = make_superquadric(radii, e1, e2);
+            const Superquadric twisted = make_superquadric(radii, e1, e2, {Twist(2.5, radii.z)});
+            for (const Vec3d& d : {Vec3d(0, 0, -1), Vec3d(0, 0, 1)}) {
+                SuperquadricWork work;
+                const Vec3d o = d * -5.0;
+                const auto a = plain.first_crossing(o, d, 0, 10, work), b = twisted.first_crossing(o, d, 0, 10, work);
+                ASSERT_TRUE(a && b);
+                EXPECT_NEAR(*a, 5 - radii.z, 1e-12);
+                EXPECT_NEAR(*b, *a, 1e-12);
+            }
+        }
+}
+
+TEST(SuperquadricIntersection, IdentityDeformationsEqualTheUndeformedShape) {
+    std::mt19937 random(26);
+    const Vec3d radii(0.8, 0.5, 1.1);
+    for (double e : {0.3, 0.5, 1.3, 3.0}) {
+        const Superquadric plain = make_superquadric(radii, e, 0.8);
+        const Superquadric identity =
+            make_superquadric(radii, e, 0.8, {Taper(0, 0, radii.z), Twist(0, radii.z), Bend(1e-12, 0.4, 0, {-1.1, 1.1})});
+        for (int i = 0; i < 500; ++i) {
+            const RandomRay ray = random_ray(random, radii, i % 4 == 0);
+            SuperquadricWork work;
+            const auto a = plain.first_crossing(ray.origin, ray.direction, 0, 100, work);
+            const auto b = identity.first_crossing(ray.origin, ray.direction, 0, 100, work);
+            if (a.has_value() != b.has_value()) {
+                // Only a ray grazing within the resolution may differ.
+                const double t = a ? *a : *b;
+                EXPECT_LT(std::abs(plain.field(ray.origin + ray.direction * t)), 1e-6) << i;
+                continue;
+            }
+            if (!a) continue;
+            EXPECT_NEAR(*a, *b, 1e-9 * *a) << "e " << e << " ray " << i;
+            const Vec3d p = ray.origin + ray.direction * *a;
+            EXPECT_GT(dot(plain.normal(p), identity.normal(p)), 1 - 1e-6) << "e " << e << " ray " << i;
+        }
+    }
+}
+
+TEST(SuperquadricIntersection, NormalsMatchFiniteDifferencesOfTheDeformedField) {
+    std::mt19937 random(27);
+    std::uniform_real_distribution<double> exponent(0.3, 1.8), eta(-1.3, 1.3), omega(-3.1, 3.1);
+    int checked = 0;
+    for (int shape = 0; shape < 30; ++shape) {
+        const Vec3d radii(0.9, 0.6, 1.2);
+        const Superquadric s = make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii));
+        for (int i = 0; i < 30; ++i) {
+            const double e = eta(random), w = omega(random);
+            const Vec3d undeformed = s.shape().surface_point(e, w);
+            if (std::min({std::abs(undeformed.x), std::abs(undeformed.y), std::abs(undeformed.z)}) < 0.05) continue;
+            const Vec3d p = s.surface_point(e, w);
+            Vec3d gradient;
+            const double h = 1e-6;
+            for (int k = 0; k < 3; ++k) {
+                Vec3d a = p, b = p;
+                a[k] -= h;
+                b[k] += h;
+                gradient[k] = (s.field(b) - s.field(a)) / (2 * h);
+            }
+            EXPECT_GT(dot(s.normal(p), normalize(gradient)), 1 - 1e-5) << shape << " " << i;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 400);
+}
+
+TEST(SuperquadricBounds, ContainSampledSurfacePointsOfRandomDeformations) {
+    std::mt19937 random(28);
+    std::uniform_real_distribution<double> exponent(0.02, 4), size(0.3, 2), eta(-1.5707963, 1.5707963),
+        omega(-3.14159265, 3.14159265);
+    for (int shape = 0; shape < 100; ++shape) {
+        const Vec3d radii(size(random), size(random), size(random));
+        const Transform placement = Transform::translate({size(random), -size(random), 0}) * Transform::rotate({1, 1, 0}, 30);
+        const Superquadric s =
+            make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii), placement);
+        const IntervalBox bounds = s.bounds();
+        Vec3d lowest = bounds.upper(), highest = bounds.lower();
+        for (int i = 0; i < 2000; ++i) {
+            const Vec3d p = s.surface_point(eta(random), omega(random));
+            ASSERT_TRUE(bounds.contains(p)) << shape << " " << i;
+            lowest = min(lowest, p);
+            highest = max(highest, p);
+        }
+        // And they are reasonably tight: within the object's size of the sampled extent on every side.
+        const double size_of = length(highest - lowest);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_LT(lowest[k] - bounds[k].lo, size_of) << shape;
+            EXPECT_LT(bounds[k].hi - highest[k], size_of) << shape;
+        }
+    }
+}
+
+TEST(SuperquadricIntersection, FarAwayRaysAndRaysAlongThePlanesStayFinite) {
+    for (double e : {0.02, 1.0, 2.0, 4.0}) {
+        const Superquadric s = make_superquadric({1, 1, 1}, e, e);
+        SuperquadricWork work;
+        const auto far = s.first_crossing({0, 0, 1e15}, {0, 0, -1}, 0, 1e30, work);
+        ASSERT_TRUE(far) << e;
+        EXPECT_NEAR(*far, 1e15 - 1, 1);
+        const auto along_plane = s.first_crossing({-5, 0, 0}, {1, 0, 0}, 0, 100, work);
+        ASSERT_TRUE(along_plane) << e;
+        EXPECT_NEAR(*along_plane, 4, 1e-12);
+        EXPECT_TRUE(is_finite(s.normal({1, 0, 0})));
+    }
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,0 +1,49 @@
+#pragma once
+// Test helpers for the superquadric: building one from parameters, random deformation chains, and a dense
+// sampling oracle for sign changes of the field along a ray.
+#include <random>
+#include <vector>
+
+#include "geometry/superquadric/superquadric.h"
+
+namespace isotrace::superquadric_test {
+
+inline Superquadric make_superquadric(const Vec3d& radii, double north_south, double east_west,
+                                      const std::vector<Deformation>& stages = {}, const Transform& placement = {}) {
+    const Superellipsoid shape{radii, north_south, east_west};
+    DeformationChain chain(shape);
+    for (const Deformation& stage : stages) chain.append(stage);
+    return Superquadric(shape, std::move(chain), placement);
+}
+
+// A taper, a twist and a bend of random moderate strength (all valid over the object), in the paper's order.
+inline std::vector<Deformation> random_deformations(std::mt19937& random, const Vec3d& radii) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const double a3 = radii.z;
+    std::vector<Deformation> stages;
+    stages.push_back(Taper(0.6 * unit(random), 0.6 * unit(random), a3));
+    stages.push_back(Twist(1.5 * unit(random) / a3, a3));
+    // Curvature kept well inside the validity limit (k · lateral extent < 1).
+    const double lateral = 1.7 * std::max(radii.x, radii.y);
+    stages.push_back(Bend(0.5 * (0.2 + 0.8 * std::abs(unit(random))) / std::max(lateral, a3),
+                          3.14159 * unit(random), 0.3 * a3 * unit(random), {-a3, a3}));
+    return stages;
+}
+
+// Sign changes of the field along origin + t·direction on [t0, t1] by dense sampling (the crossings' midpoints).
+inline std::vector<double> sampled_crossings(const Superquadric& s, const Vec3d& origin, const Vec3d& direction,
+                                             double t0, double t1, int samples = 20000) {
+    std::vector<double> found;
+    double previous_t = t0;
+    bool previous_inside = s.field(origin + direction * t0) < 0;
+    for (int i = 1; i <= samples; ++i) {
+        const double t = t0 + (t1 - t0) * i / samples;
+        const bool inside = s.field(origin + direction * t) < 0;
+        if (inside != previous_inside) found.push_back(0.5 * (previous_t + t));
+        previous_t = t;
+        previous_inside = inside;
+    }
+    return found;
+}
+
+}  // namespace isotrace::superquadric_test

@@ -1,0 +1,43 @@
+#include "geometry/superquadric/taper.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace isotrace {
+
+Taper::Taper(double x_rate, double y_rate, double half_height)
+    : x_rate_(x_rate), y_rate_(y_rate), half_height_(half_height) {}
+
+Vec3d Taper::forward(const Vec3d& p) const { return {scale(x_rate_, p.z) * p.x, scale(y_rate_, p.z) * p.y, p.z}; }
+
+Vec3d Taper::inverse(const Vec3d& q) const { return {q.x / scale(x_rate_, q.z), q.y / scale(y_rate_, q.z), q.z}; }
+
+Jacobian Taper::jacobian(const Vec3d& p) const {
+    const double slope = 1 / (2 * half_height_);
+    return {{{scale(x_rate_, p.z), 0, 0},
+             {0, scale(y_rate_, p.z), 0},
+             {x_rate_ * slope * p.x, y_rate_ * slope * p.y, 1}}};
+}
+
+IntervalBox Taper::forward_box(const IntervalBox& box) const {
+    return {box.x * scale(x_rate_, box.z), box.y * scale(y_rate_, box.z), box.z};
+}
+
+IntervalBox Taper::inverse_box(const IntervalBox& box) const {
+    return {divide_by_positive(box.x, scale(x_rate_, box.z)), divide_by_positive(box.y, scale(y_rate_, box.z)), box.z};
+}
+
+std::string Taper::problem(const IntervalBox& input) const {
+    for (const double rate : {x_rate_, y_rate_}) {
+        const Interval s = scale(rate, input.z);
+        if (s.lo >= kMinScale) continue;
+        const double z = scale(rate, input.z.lo) < scale(rate, input.z.hi) ? input.z.lo : input.z.hi;
+        std::ostringstream message;
+        message << "taper: the cross-section scale falls to " << s.lo << " at z = " << z << "; it must stay >= "
+                << kMinScale << " over the object";
+        return message.str();
+    }
+    return {};
+}
+
+}  // namespace isotrace

@@ -1,0 +1,38 @@
+#pragma once
+// Barr's linear taper along z (the paper's eq. 3, with separate rates for x and y as in Barr 1984):
+//   X = fx(z)·x,  Y = fy(z)·y,  Z = z,  f(z) = 1 + rate·(z + a3)/(2·a3),
+// so the cross-section keeps its size at the bottom (z = −a3) and is scaled by 1 + rate at the top (z = a3).
+#include <string>
+
+#include "geometry/superquadric/interval.h"
+#include "geometry/superquadric/jacobian.h"
+
+namespace isotrace {
+
+class Taper {
+public:
+    // The cross-section scale must stay at least this large over the object (the inverse divides by it).
+    static constexpr double kMinScale = 0.01;
+
+    Taper(double x_rate, double y_rate, double half_height);
+
+    Vec3d forward(const Vec3d& p) const;
+    // Requires the scale factors at q.z to be positive (true inside the chain's stage box).
+    Vec3d inverse(const Vec3d& q) const;
+    Jacobian jacobian(const Vec3d& p) const;
+    IntervalBox forward_box(const IntervalBox& box) const;
+    IntervalBox inverse_box(const IntervalBox& box) const;
+    // Why the taper cannot be applied to points of `input` (empty when it can).
+    std::string problem(const IntervalBox& input) const;
+
+    double x_rate() const { return x_rate_; }
+    double y_rate() const { return y_rate_; }
+
+private:
+    double scale(double rate, double z) const { return 1 + rate * (z + half_height_) / (2 * half_height_); }
+    Interval scale(double rate, Interval z) const { return Interval::spanning(scale(rate, z.lo), scale(rate, z.hi)); }
+
+    double x_rate_, y_rate_, half_height_;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,28 @@
+#include "geometry/superquadric/twist.h"
+
+#include <cmath>
+
+namespace isotrace {
+
+Vec3d Twist::rotate(const Vec3d& p, double theta) {
+    const double c = std::cos(theta), s = std::sin(theta);
+    return {p.x * c - p.y * s, p.x * s + p.y * c, p.z};
+}
+
+Jacobian Twist::jacobian(const Vec3d& p) const {
+    const double theta = angle(p.z), c = std::cos(theta), s = std::sin(theta);
+    const Vec3d q = rotate(p, theta);
+    return {{{c, s, 0}, {-s, c, 0}, {-rate_ * q.y, rate_ * q.x, 1}}};
+}
+
+IntervalBox Twist::rotate_box(const IntervalBox& box, double sign) const {
+    const Interval theta = Interval::spanning(sign * angle(box.z.lo), sign * angle(box.z.hi));
+    const Interval c = cos_range(theta), s = sin_range(theta);
+    const double reach = std::hypot(std::max(-box.x.lo, box.x.hi), std::max(-box.y.lo, box.y.hi));
+    const auto within_reach = [reach](Interval v) {
+        return Interval{std::max(v.lo, -reach), std::min(v.hi, reach)};
+    };
+    return {within_reach(box.x * c - box.y * s), within_reach(box.x * s + box.y * c), box.z};
+}
+
+}  // namespace isotrace
