@@ -1,6 +1,7 @@
 #include "geometry/csg/csg_shape.h"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "geometry/csg/transformed_bounds.h"
@@ -24,6 +25,39 @@ void map_normals(std::vector<InsideSpan>& spans, const Transform& to_csg) {
         for (BoundaryPoint* end : {&span.enter, &span.exit})
             if (end->on_surface()) end->normal = normalize(to_csg.normal(end->normal));
 }
+
+// Buffers for one query on one thread. inside_spans recurses into nested trees, so every nesting level has its
+// own; they are kept between rays, so a query allocates nothing once they have grown.
+struct SpanScratch {
+    std::vector<InsideSpan> operand_spans;
+    std::vector<SpanEvent> events;
+};
+
+class ScratchLevel {
+public:
+    ScratchLevel() {
+        if (levels().size() == depth()) levels().push_back(std::make_unique<SpanScratch>());
+        scratch_ = levels()[depth()++].get();
+        scratch_->events.clear();
+    }
+    ~ScratchLevel() { --depth(); }
+    ScratchLevel(const ScratchLevel&) = delete;
+    ScratchLevel& operator=(const ScratchLevel&) = delete;
+
+    SpanScratch& operator*() const { return *scratch_; }
+
+private:
+    static std::vector<std::unique_ptr<SpanScratch>>& levels() {
+        thread_local std::vector<std::unique_ptr<SpanScratch>> per_thread;
+        return per_thread;
+    }
+    static std::size_t& depth() {
+        thread_local std::size_t per_thread = 0;
+        return per_thread;
+    }
+
+    SpanScratch* scratch_;
+};
 
 }  // namespace
 
@@ -118,8 +152,9 @@ std::vector<MaterialReference> CsgShape::part_materials() const {
 
 void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                             std::vector<InsideSpan>& spans) const {
-    std::vector<InsideSpan> operand_spans;
-    std::vector<SpanEvent> events;
+    const ScratchLevel level;
+    std::vector<InsideSpan>& operand_spans = (*level).operand_spans;
+    std::vector<SpanEvent>& events = (*level).events;
     const bool narrows = operation_ != CsgOperation::Union;  // the result lies within the first child's spans
     for (std::uint32_t i = 0; i < operands_.size(); ++i) {
         const Operand& operand = operands_[i];
