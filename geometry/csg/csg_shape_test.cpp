@@ -277,6 +277,27 @@ TEST(CsgShape, BakedObjectTransformEqualsTheTransformedTree) {
     EXPECT_GT(expect_same_hits(*placed, *world, 19), 300);
 }
 
+// A sphere set is one solid, the union of its spheres: overlapping spheres merge, each end keeps its sphere.
+TEST(CsgShape, ASphereListIsTheUnionOfItsSpheres) {
+    const SphereShape spheres({{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}, {{5, 0, 0}, 0.5}});
+    std::vector<InsideSpan> spans;
+    spheres.inside_spans({-5, 0, 0}, {1, 0, 0}, 0, 100, spans);
+    ASSERT_EQ(spans.size(), 2u);
+    EXPECT_DOUBLE_EQ(spans[0].enter.t, 4);
+    EXPECT_EQ(spans[0].enter.primitive, 0u);
+    EXPECT_DOUBLE_EQ(spans[0].exit.t, 7.5);
+    EXPECT_EQ(spans[0].exit.primitive, 1u);
+    EXPECT_DOUBLE_EQ(spans[1].enter.t, 9.5);
+    EXPECT_EQ(spans[1].exit.primitive, 2u);
+    const auto scene = scene_of(csg(CsgOperation::Difference, child(box({0, 0, 0}, {10, 0.25, 0.25})),
+                                    child(std::make_unique<SphereShape>(spheres))));
+    const auto hits = hit_sequence(*scene, make_ray({-15, 0, 0}, {1, 0, 0}));
+    // The bar x in [-10, 10] with the merged pair (x in [-1, 2.5]) and the small sphere (x in [4.5, 5.5]) cut out.
+    const float expected[] = {5, 14, 17.5, 19.5, 20.5, 25};
+    ASSERT_EQ(hits.size(), 6u);
+    for (std::size_t i = 0; i < 6; ++i) EXPECT_NEAR(hits[i].t, expected[i], 1e-5) << "hit " << i;
+}
+
 TEST(CsgShape, BoundsFollowTheOperator) {
     const auto make = [](CsgOperation operation) {
         return csg(operation, child(box({0, 0, 0}, {1, 1, 1})), child(box({1.5, 0, 0}, {1, 0.5, 0.5})));
