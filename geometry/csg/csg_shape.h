@@ -26,8 +26,8 @@ struct CsgChild {
 
 class CsgShape final : public Shape, public Solid {
 public:
-    // Every child's shape must be a Solid whose solid_problem() is empty (the scene plugin reports those errors
-    // at the child); throws std::invalid_argument otherwise, and for an empty list.
+    // Throws std::invalid_argument for an empty list or a child that is not a Solid. Whether a child really
+    // encloses a volume (solid_problem()) is the caller's to check: the scene plugin reports it at the child.
     CsgShape(CsgOperation operation, std::vector<CsgChild> children);
 
     std::string type_name() const override { return "csg"; }
