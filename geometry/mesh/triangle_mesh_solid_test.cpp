@@ -121,5 +121,34 @@ TEST(TriangleMeshSolid, MeshChildInACsgMatchesTheBoxChild) {
     EXPECT_GT(hits, 500);
 }
 
+// Rays leaving a CSG surface from SurfaceHit::spawn_origin, onwards and reflected back, do not find the surface
+// they left again: the mesh child's crossings (float queries) are as precise as the offset assumes.
+TEST(TriangleMeshSolid, RaysSpawnedFromCsgSurfacesDoNotHitThemAgain) {
+    const auto scene = csg_test::scene_of(csg_test::csg(
+        CsgOperation::Difference, csg_test::child(csg_test::box({0, 0, 0}, {1.2, 1.2, 1.2})),
+        csg_test::child(std::make_unique<TriangleMeshShape>(cube()), Transform::rotate({1, 1, 0}, 30) *
+                                                                         Transform::scale({0.6, 0.6, 2})),
+        csg_test::child(csg_test::sphere({1, 1, 1}, 0.8))));
+    std::mt19937 random(25);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int spawned = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3d o = normalize(Vec3d(unit(random), unit(random), unit(random))) * 5.0;
+        const Vec3d d = Vec3d(unit(random), unit(random), unit(random)) - o;
+        const auto hit = scene->intersect(csg_test::make_ray(o, d), RayKind::Camera);
+        if (!hit) continue;
+        const Vec3f onwards = normalize(Vec3f(d));
+        const Vec3f back = onwards - hit->geometric_normal * (2 * dot(onwards, hit->geometric_normal));
+        for (const Vec3f& direction : {onwards, back}) {
+            const auto next = scene->intersect(csg_test::make_ray(Vec3d(hit->spawn_origin(direction)),
+                                                                  Vec3d(direction)),
+                                               RayKind::Secondary);
+            if (next) EXPECT_GT(next->t, 1e-3f) << "ray " << i << " found the surface it left";
+            ++spawned;
+        }
+    }
+    EXPECT_GT(spawned, 1000);
+}
+
 }  // namespace
 }  // namespace isotrace
