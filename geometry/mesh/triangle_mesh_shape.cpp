@@ -6,7 +6,10 @@
 #include <string>
 #include <utility>
 
+#include "geometry/csg/inside_span_list.h"
+#include "geometry/mesh/mesh_closedness.h"
 #include "geometry/mesh/mesh_file.h"
+#include "geometry/mesh/mesh_inside_spans.h"
 #include "renderer/sampling/warps.h"
 
 namespace isotrace {
@@ -86,6 +89,60 @@ RTCGeometry TriangleMeshShape::create_geometry(RTCDevice device) {
     std::memcpy(indices, mesh_.triangles.data(), mesh_.triangles.size() * sizeof(mesh_.triangles[0]));
     rtcCommitGeometry(geometry);
     return geometry;
+}
+
+std::string TriangleMeshShape::solid_problem() const {
+    const std::string problem = closed_mesh_problem(mesh_);
+    return problem.empty() ? problem : type_name() + " " + problem;
+}
+
+void TriangleMeshShape::prepare_span_queries(RTCDevice device) {
+    crossing_scene_ = std::make_unique<MeshCrossingScene>(device, create_geometry(device));
+    span_bounds_ = bounds();
+    // Enlarged so that a line in a face of the bounding box still counts as passing through it.
+    const Vec3f margin = (span_bounds_.upper - span_bounds_.lower) * 1e-4f + Vec3f(1e-30f, 1e-30f, 1e-30f);
+    span_bounds_.lower -= margin;
+    span_bounds_.upper += margin;
+}
+
+namespace {
+
+// The parameter range in which origin + t·direction lies inside `box`, if any.
+std::optional<std::array<double, 2>> line_range_in_box(const Bounds3f& box, const Vec3d& origin,
+                                                       const Vec3d& direction) {
+    double t0 = -INFINITY, t1 = INFINITY;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lower = box.lower[axis], upper = box.upper[axis];
+        if (direction[axis] == 0) {
+            if (origin[axis] < lower || origin[axis] > upper) return std::nullopt;
+            continue;
+        }
+        const double a = (lower - origin[axis]) / direction[axis], b = (upper - origin[axis]) / direction[axis];
+        t0 = std::max(t0, std::min(a, b));
+        t1 = std::min(t1, std::max(a, b));
+    }
+    if (!(t0 < t1)) return std::nullopt;
+    return std::array<double, 2>{t0, t1};
+}
+
+}  // namespace
+
+void TriangleMeshShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                     std::vector<InsideSpan>& spans) const {
+    const auto range = line_range_in_box(span_bounds_, origin, direction);
+    if (!range || (*range)[1] < t_min || (*range)[0] > t_max) return;
+    // The query starts where the line enters the bounds (outside the mesh), so crossing directions alone tell
+    // inside from outside, also for rays that start inside.
+    const double start = (*range)[0];
+    thread_local std::vector<MeshCrossing> crossings;
+    thread_local std::vector<InsideSpan> unclipped;
+    crossings.clear();
+    unclipped.clear();
+    crossing_scene_->crossings(origin + direction * start, direction, (*range)[1] - start, crossings);
+    for (MeshCrossing& crossing : crossings) crossing.t += start;
+    // Crossings closer than a millionth of the chord are one event (float precision of the query is ~1e-7).
+    mesh_inside_spans(crossings, direction, 1e-6 * ((*range)[1] - start), unclipped);
+    for (const InsideSpan& span : unclipped) append_clipped_span(span, t_min, t_max, spans);
 }
 
 LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_normal) const {

@@ -1,14 +1,19 @@
 #pragma once
-// Triangle mesh traced natively by Embree. Object transforms are always baked into the vertices.
+// Triangle mesh traced natively by Embree. Object transforms are always baked into the vertices. A closed,
+// outward-facing mesh is also a Solid for CSG; its inside spans come from a private Embree scene that lists every
+// crossing of a ray.
+#include <memory>
 #include <optional>
 
+#include "geometry/mesh/mesh_crossing_scene.h"
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "renderer/plugin/shape.h"
+#include "renderer/plugin/solid.h"
 #include "renderer/sampling/distribution_1d.h"
 
 namespace isotrace {
 
-class TriangleMeshShape final : public Shape {
+class TriangleMeshShape final : public Shape, public Solid {
 public:
     explicit TriangleMeshShape(TriangleMeshData mesh);
 
@@ -29,6 +34,14 @@ public:
     SurfaceSample sample_surface(std::array<float, 2> u) const override;
     float surface_area() const override { return float(total_area_); }
 
+    // "triangle_mesh has 6 boundary edges (e.g. 3–7)" and the like (see closed_mesh_problem), or empty.
+    std::string solid_problem() const override;
+    void prepare_span_queries(RTCDevice device) override;
+    void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                      std::vector<InsideSpan>& spans) const override;
+
+    const TriangleMeshData& data() const { return mesh_; }
+
 private:
     // The area table follows the vertices: built by the constructor and again by bake(), both before
     // rendering starts, so sampling only reads it (thread-safe).
@@ -38,6 +51,8 @@ private:
     std::optional<Distribution1D> area_distribution_;  // over triangles, by area
     double total_area_ = 0;
     bool winding_swapped_ = false;  // bake() reversed every triangle (mirroring transform)
+    std::unique_ptr<MeshCrossingScene> crossing_scene_;  // built by prepare_span_queries
+    Bounds3f span_bounds_;                               // the vertices' bounds, enlarged a little, at that time
 };
 
 }  // namespace isotrace

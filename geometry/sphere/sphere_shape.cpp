@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "geometry/csg/inside_span_list.h"
+#include "geometry/csg/span_combination.h"
 #include "geometry/sphere/sphere_intersection.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/user_geometry.h"
@@ -117,6 +119,30 @@ void SphereShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
         counters::count_candidate_hit(self->counter_slot_);
         t_far = -std::numeric_limits<float>::infinity();
     }
+}
+
+std::optional<InsideSpan> SphereShape::span_of(std::uint32_t index, const Vec3d& origin, const Vec3d& direction) const {
+    const Sphere& s = spheres_[index];
+    const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
+    if (!roots || !(roots->t0 < roots->t1)) return std::nullopt;  // a tangent line touches without entering
+    const auto end = [&](double t) { return BoundaryPoint{t, normalize(origin + direction * t - s.centre), index, 0}; };
+    return InsideSpan{end(roots->t0), end(roots->t1)};
+}
+
+void SphereShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                               std::vector<InsideSpan>& spans) const {
+    if (spheres_.size() == 1) {
+        if (const auto span = span_of(0, origin, direction)) append_clipped_span(*span, t_min, t_max, spans);
+        return;
+    }
+    std::vector<SpanEvent> events;
+    std::vector<InsideSpan> clipped;
+    for (std::uint32_t k = 0; k < spheres_.size(); ++k) {
+        clipped.clear();
+        if (const auto span = span_of(k, origin, direction)) append_clipped_span(*span, t_min, t_max, clipped);
+        append_span_events(k, 0, clipped, events);
+    }
+    combine_span_events(CsgOperation::Union, std::uint32_t(spheres_.size()), events, spans);
 }
 
 LocalShading SphereShape::shading(const RTCHit&, const Vec3f& geometric_normal) const {

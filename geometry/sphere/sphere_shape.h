@@ -1,11 +1,12 @@
 #pragma once
 // Analytic spheres as one Embree user geometry (one primitive per sphere). This is the pattern every
 // implicit primitive follows: per-primitive bounds, intersect/occluded callbacks that accept a root only in
-// (t_near, t_far) and count their tests for the statistics.
+// (t_near, t_far) and count their tests for the statistics. As a Solid (for CSG) a set of spheres is their union.
 #include <optional>
 #include <vector>
 
 #include "renderer/plugin/shape.h"
+#include "renderer/plugin/solid.h"
 #include "renderer/sampling/distribution_1d.h"
 
 namespace isotrace {
@@ -15,7 +16,7 @@ struct Sphere {
     double radius = 1;
 };
 
-class SphereShape final : public Shape {
+class SphereShape final : public Shape, public Solid {
 public:
     explicit SphereShape(std::vector<Sphere> spheres);
 
@@ -37,8 +38,14 @@ public:
 
     const std::vector<Sphere>& spheres() const { return spheres_; }
 
+    // Closed form per sphere; overlapping spheres of one set merge (their union is the solid).
+    void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                      std::vector<InsideSpan>& spans) const override;
+
 private:
     void build_area_distribution();
+    // The span of the line inside sphere `index` (unclipped), unless the line misses or only touches it.
+    std::optional<InsideSpan> span_of(std::uint32_t index, const Vec3d& origin, const Vec3d& direction) const;
 
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);

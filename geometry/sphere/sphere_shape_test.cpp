@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/csg/csg_test_support.h"
 #include "geometry/mesh/mesh_test_support.h"
 #include "geometry/sphere/sphere_intersection.h"
 #include "geometry/sphere/sphere_shape.h"
@@ -55,20 +56,8 @@ std::unique_ptr<RenderScene> sphere_scene(std::vector<Sphere> spheres, const Tra
     return scene;
 }
 
-Ray make_ray(const Vec3d& o, const Vec3d& d, float t_near = 0, float t_far = INFINITY) {
-    Ray ray;
-    ray.origin = Vec3f(o);
-    ray.direction = Vec3f(d);
-    ray.t_near = t_near;
-    ray.t_far = t_far;
-    return ray;
-}
-
-void expect_vec_near(const Vec3f& actual, const Vec3d& expected, double tolerance, const std::string& what) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance) << what;
-    EXPECT_NEAR(actual.y, expected.y, tolerance) << what;
-    EXPECT_NEAR(actual.z, expected.z, tolerance) << what;
-}
+using csg_test::make_ray;
+using csg_test::expect_near;
 
 TEST(SphereShape, RandomRaysHitAtTheClosedFormDistanceWithRadialNormals) {
     const Vec3d centre(0.75, -1.25, 2.5);
@@ -96,9 +85,9 @@ TEST(SphereShape, RandomRaysHitAtTheClosedFormDistanceWithRadialNormals) {
         EXPECT_NEAR(hit->t, *expected, 1e-5 * *expected) << "ray " << i;
         const Vec3d p = o + d * *expected;
         const Vec3d n = (p - centre) / radius;
-        expect_vec_near(hit->geometric_normal, n, 1e-5, "geometric normal, ray " + std::to_string(i));
-        expect_vec_near(hit->shading_normal, n, 1e-5, "shading normal, ray " + std::to_string(i));
-        expect_vec_near(hit->position, p, 1e-5 * (1 + length(p)), "position, ray " + std::to_string(i));
+        expect_near(hit->geometric_normal, n, 1e-5, "geometric normal, ray " + std::to_string(i));
+        expect_near(hit->shading_normal, n, 1e-5, "shading normal, ray " + std::to_string(i));
+        expect_near(hit->position, p, 1e-5 * (1 + length(p)), "position, ray " + std::to_string(i));
         EXPECT_LE(hit->position_error, 1e-3f);
         EXPECT_EQ(hit->object_index, 0u);
         EXPECT_EQ(hit->primitive_id, 0u);
@@ -161,14 +150,14 @@ TEST(SphereShape, RayStartingInsideReportsTheExitWithTheOutwardNormal) {
         ASSERT_TRUE(hit) << "ray " << i;
         EXPECT_NEAR(hit->t, *expected, 1e-5 * *expected);
         const Vec3d n = (o + d * *expected - centre) / radius;
-        expect_vec_near(hit->geometric_normal, n, 1e-5, "exit normal");
+        expect_near(hit->geometric_normal, n, 1e-5, "exit normal");
         EXPECT_GT(dot(hit->geometric_normal, Vec3f(d)), 0.0f) << "the normal stays outward on the exit";
     }
     // From the centre: exactly the radius along a unit direction.
     const auto from_centre = scene->intersect(make_ray(centre, {0, 1, 0}), RayKind::Camera);
     ASSERT_TRUE(from_centre);
     EXPECT_FLOAT_EQ(from_centre->t, 2.5f);
-    expect_vec_near(from_centre->geometric_normal, {0, 1, 0}, 1e-6, "normal from the centre");
+    expect_near(from_centre->geometric_normal, {0, 1, 0}, 1e-6, "normal from the centre");
 }
 
 TEST(SphereShape, OnlyRootsInsideTheSegmentAreReported) {
@@ -292,7 +281,7 @@ TEST(SphereShape, SimilarityTransformsAreBakedIntoCentreAndRadius) {
     const auto expected = reference_hit(Vec3d(Vec3f(o)), d, c0, 2.5);
     ASSERT_TRUE(expected);
     EXPECT_NEAR(hit->t, *expected, 1e-5 * *expected);
-    expect_vec_near(hit->geometric_normal, (Vec3d(Vec3f(o)) + d * *expected - c0) / 2.5, 1e-5, "baked normal");
+    expect_near(hit->geometric_normal, (Vec3d(Vec3f(o)) + d * *expected - c0) / 2.5, 1e-5, "baked normal");
 }
 
 TEST(SphereShape, MirroringSimilarityIsBakedAndNormalsStayOutward) {
@@ -303,7 +292,7 @@ TEST(SphereShape, MirroringSimilarityIsBakedAndNormalsStayOutward) {
     const auto hit = scene->intersect(make_ray({-2, 0, 0}, {0, 0, 1}), RayKind::Camera);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit->t, 2.0f);
-    expect_vec_near(hit->geometric_normal, {0, 0, -1}, 1e-6, "mirrored normal");
+    expect_near(hit->geometric_normal, {0, 0, -1}, 1e-6, "mirrored normal");
 }
 
 TEST(SphereShape, NonUniformScaleIsInstancedAndHitsTheEllipsoidExactly) {
@@ -331,8 +320,8 @@ TEST(SphereShape, NonUniformScaleIsInstancedAndHitsTheEllipsoidExactly) {
         EXPECT_NEAR(hit->t, *expected, 1e-5 * *expected) << "ray " << i;
         // World normal: inverse transpose of the object-space normal (the local point itself).
         const Vec3d n = normalize(to_world.normal(oo + od * *expected));
-        expect_vec_near(hit->geometric_normal, n, 1e-5, "ellipsoid normal, ray " + std::to_string(i));
-        expect_vec_near(hit->shading_normal, n, 1e-5, "ellipsoid shading normal");
+        expect_near(hit->geometric_normal, n, 1e-5, "ellipsoid normal, ray " + std::to_string(i));
+        expect_near(hit->shading_normal, n, 1e-5, "ellipsoid shading normal");
         EXPECT_TRUE(scene->occluded(make_ray(o, d)));
     }
     EXPECT_GT(hits, 400);
@@ -341,7 +330,7 @@ TEST(SphereShape, NonUniformScaleIsInstancedAndHitsTheEllipsoidExactly) {
     const auto top = scene->intersect(make_ray(centre + Vec3d(0, 0, 10), {0, 0, -1}), RayKind::Camera);
     ASSERT_TRUE(top);
     EXPECT_NEAR(top->t, 7.0, 1e-5 * 7);
-    expect_vec_near(top->geometric_normal, {0, 0, 1}, 1e-5, "pole normal");
+    expect_near(top->geometric_normal, {0, 0, 1}, 1e-5, "pole normal");
 }
 
 TEST(SphereShape, CountersRecordTestsAndCandidateHits) {

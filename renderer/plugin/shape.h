@@ -6,8 +6,11 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
+#include "renderer/core/input_error.h"
 #include "renderer/math/transform.h"
 #include "renderer/plugin/registry.h"
 
@@ -18,6 +21,15 @@ struct LocalShading {
     Vec3f geometric_normal;       // unit; the shape's orientation convention (outward / counter-clockwise front)
     Vec3f normal;                 // shading normal, unit length
     std::array<float, 2> uv{0, 0};
+    std::uint32_t part = 0;       // composite shapes: the part hit, an index into Shape::part_materials()
+};
+
+// The material a part of a composite shape names (a CSG child's "material"), and where the name is written, so
+// that the scene loader can resolve it and report an unknown name at its place in the file.
+struct MaterialReference {
+    std::string name;  // empty: the part has none of its own and shows the object's material
+    SourceLocation location;
+    std::string field;  // JSON path of the name
 };
 
 struct Bounds3f {
@@ -75,6 +87,10 @@ public:
     virtual LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const {
         return {geometric_normal, geometric_normal, {hit.u, hit.v}};
     }
+
+    // Composite shapes whose parts may carry their own materials: one entry per part (LocalShading::part).
+    // Empty for shapes of one part, which show the object's material.
+    virtual std::vector<MaterialReference> part_materials() const { return {}; }
 
 private:
     std::string object_name_;

@@ -345,8 +345,9 @@ TEST(TileRenderer, NonFiniteRadianceIsCountedAndDropped) {
             const float* p = image.pixel(x, y);
             for (std::size_t c = 0; c < stride; ++c)
                 if (image.channels[c] != "variance.R" && image.channels[c] != "variance.G" &&
-                    image.channels[c] != "variance.B" && image.channels[c] != "Z")
+                    image.channels[c] != "variance.B" && image.channels[c] != "Z") {
                     ASSERT_TRUE(std::isfinite(p[c])) << image.channels[c] << " at " << x << ", " << y;
+                }
             ASSERT_TRUE(std::isfinite(p[channel(image, "variance.R")]));
             // Left half: every sample was 1. Right half: every sample was dropped to black.
             if (p[0] == 1.0f && p[1] == 1.0f && p[2] == 1.0f) ++clean;

@@ -136,9 +136,9 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     hit.position = ray.at(hit.t);
     hit.object_index = object_index;
     hit.primitive_id = query.hit.primID;
-    hit.material = object.material;
     const Vec3f embree_ng = safe_normalize(Vec3f(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z), {0, 0, 1});
     const LocalShading local = object.shape->shading(query.hit, embree_ng);
+    hit.material = object.material_of_part(local.part);
     hit.uv = local.uv;
     if (object.instanced) {  // Embree reports Ng in the instanced object's space
         hit.geometric_normal = safe_normalize(object.to_world.normal(local.geometric_normal), local.geometric_normal);

@@ -25,10 +25,15 @@ struct SceneObject {
     std::string name;
     std::unique_ptr<Shape> shape;
     const Material* material = nullptr;
+    std::vector<const Material*> part_materials;  // per Shape::part_materials() entry; null: `material`
     Transform to_world;
     bool instanced = false;  // true: shape in object space inside an Embree instance
     int counter_slot = 0;
     const Light* area_light = nullptr;  // set when the object emits and its surface can be sampled
+
+    const Material* material_of_part(std::uint32_t part) const {
+        return part < part_materials.size() && part_materials[part] ? part_materials[part] : material;
+    }
 };
 
 struct BuildStatistics {

@@ -95,6 +95,14 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
     film.finish();
 }
 
+std::string unknown_material_problem(const std::string& name, const RenderScene& scene) {
+    std::string known;
+    for (const auto& n : scene.material_names())
+        if (n.front() != '<') known += (known.empty() ? "" : ", ") + n;
+    return "unknown material \"" + name + "\"" + did_you_mean(name, scene.material_names()) +
+           (known.empty() ? "; the scene defines no materials" : "; defined: " + known);
+}
+
 const Material* resolve_material(const SceneNode& object, RenderScene& scene, std::size_t index) {
     const auto value = object.optional_value("material");
     if (!value) object.fail("missing required field \"material\" (a name from \"materials\" or an inline material)");
@@ -105,14 +113,20 @@ const Material* resolve_material(const SceneNode& object, RenderScene& scene, st
     if (!value->json().is_string()) value->fail("expected a material name or an inline material object");
     const std::string& name = value->json().string;
     const Material* material = scene.find_material(name);
-    if (!material) {
-        std::string known;
-        for (const auto& n : scene.material_names())
-            if (n.front() != '<') known += (known.empty() ? "" : ", ") + n;
-        value->fail("unknown material \"" + name + "\"" + did_you_mean(name, scene.material_names()) +
-                    (known.empty() ? "; the scene defines no materials" : "; defined: " + known));
-    }
+    if (!material) value->fail(unknown_material_problem(name, scene));
     return material;
+}
+
+// The materials the parts of a composite shape name (null where a part names none).
+std::vector<const Material*> resolve_part_materials(const Shape& shape, const RenderScene& scene) {
+    std::vector<const Material*> materials;
+    for (const MaterialReference& reference : shape.part_materials()) {
+        const Material* material = reference.name.empty() ? nullptr : scene.find_material(reference.name);
+        if (!reference.name.empty() && !material)
+            throw InputError(reference.location, reference.field, unknown_material_problem(reference.name, scene));
+        materials.push_back(material);
+    }
+    return materials;
 }
 
 void load_content(const SceneNode& root, RenderScene& scene) {
@@ -130,6 +144,7 @@ void load_content(const SceneNode& root, RenderScene& scene) {
         object.material = resolve_material(node, scene, i);
         object.to_world = parse_optional_transform(node, "transform");
         object.shape = shape_registry().create(node.object("shape"));
+        object.part_materials = resolve_part_materials(*object.shape, scene);
         node.finish();
         scene.add_object(std::move(object));
     }

@@ -1,0 +1,183 @@
+#include "geometry/csg/csg_shape.h"
+
+#include <algorithm>
+#include <memory>
+#include <stdexcept>
+
+#include "geometry/csg/transformed_bounds.h"
+#include "renderer/core/render_counters.h"
+
+namespace isotrace {
+namespace {
+
+Bounds3f intersect_bounds(const Bounds3f& a, const Bounds3f& b) {
+    Bounds3f result;
+    result.lower = max(a.lower, b.lower);
+    result.upper = min(a.upper, b.upper);
+    if (result.lower.x > result.upper.x || result.lower.y > result.upper.y || result.lower.z > result.upper.z)
+        return {};  // the canonical empty box (Bounds3f::empty() looks at x only)
+    return result;
+}
+
+// Normals of surface ends from a child's space to the CSG's (cut ends carry none).
+void map_normals(std::vector<InsideSpan>& spans, const Transform& to_csg) {
+    for (InsideSpan& span : spans)
+        for (BoundaryPoint* end : {&span.enter, &span.exit})
+            if (end->on_surface()) end->normal = normalize(to_csg.normal(end->normal));
+}
+
+// Buffers for one query on one thread. inside_spans recurses into nested trees, so every nesting level has its
+// own; they are kept between rays, so a query allocates nothing once they have grown.
+struct SpanScratch {
+    std::vector<InsideSpan> operand_spans;
+    std::vector<SpanEvent> events;
+};
+
+class ScratchLevel {
+public:
+    ScratchLevel() {
+        if (levels().size() == depth()) levels().push_back(std::make_unique<SpanScratch>());
+        scratch_ = levels()[depth()++].get();
+        scratch_->events.clear();
+    }
+    ~ScratchLevel() { --depth(); }
+    ScratchLevel(const ScratchLevel&) = delete;
+    ScratchLevel& operator=(const ScratchLevel&) = delete;
+
+    SpanScratch& operator*() const { return *scratch_; }
+
+private:
+    static std::vector<std::unique_ptr<SpanScratch>>& levels() {
+        thread_local std::vector<std::unique_ptr<SpanScratch>> per_thread;
+        return per_thread;
+    }
+    static std::size_t& depth() {
+        thread_local std::size_t per_thread = 0;
+        return per_thread;
+    }
+
+    SpanScratch* scratch_;
+};
+
+}  // namespace
+
+CsgShape::CsgShape(CsgOperation operation, std::vector<CsgChild> children) : operation_(operation) {
+    if (children.empty()) throw std::invalid_argument("a CSG needs at least one child");
+    for (CsgChild& child : children) {
+        Operand operand;
+        operand.solid = dynamic_cast<Solid*>(child.shape.get());
+        if (!operand.solid) throw std::invalid_argument("CSG child \"" + child.shape->type_name() + "\" is not a solid");
+        operand.part_count = std::uint32_t(std::max<std::size_t>(1, child.shape->part_materials().size()));
+        operand.first_part = part_count_;
+        part_count_ += operand.part_count;
+        operand.material = std::move(child.material);
+        operand.shape = std::move(child.shape);
+        place(operand, child.to_csg);
+        operands_.push_back(std::move(operand));
+    }
+    span_combinations_slot_ = counters::named_counter_slot("csg.span_combinations");
+    span_events_slot_ = counters::named_counter_slot("csg.span_events");
+}
+
+void CsgShape::place(Operand& operand, const Transform& to_csg) {
+    // A child that kept an earlier placement is still in its own space: compose, and try to bake the whole.
+    const Transform placement = operand.to_csg ? to_csg * *operand.to_csg : to_csg;
+    if (operand.shape->can_bake(placement)) {
+        operand.shape->bake(placement);
+        operand.to_csg.reset();
+        operand.from_csg.reset();
+    } else {
+        operand.to_csg = placement;
+        operand.from_csg = placement.inverse();
+    }
+}
+
+void CsgShape::bake(const Transform& to_world) {
+    for (Operand& operand : operands_) place(operand, to_world);
+}
+
+std::size_t CsgShape::transformed_child_count() const {
+    return std::size_t(std::count_if(operands_.begin(), operands_.end(), [](const Operand& o) { return o.to_csg.has_value(); }));
+}
+
+std::size_t CsgShape::memory_bytes() const {
+    std::size_t bytes = operands_.capacity() * sizeof(Operand);
+    for (const Operand& operand : operands_) bytes += operand.shape->memory_bytes();
+    return bytes;
+}
+
+Bounds3f CsgShape::operand_bounds(const Operand& operand) const {
+    const Bounds3f own = operand.shape->bounds();
+    if (!operand.to_csg || own.empty()) return own;
+    return transformed_bounds(Vec3d(own.lower), Vec3d(own.upper), *operand.to_csg);
+}
+
+Bounds3f CsgShape::bounds() const {
+    Bounds3f result = operand_bounds(operands_.front());
+    if (operation_ == CsgOperation::Difference) return result;  // nothing outside the first child survives
+    for (std::size_t i = 1; i < operands_.size(); ++i) {
+        const Bounds3f b = operand_bounds(operands_[i]);
+        if (operation_ == CsgOperation::Intersection) {
+            result = intersect_bounds(result, b);
+        } else if (!b.empty()) {
+            result.extend(b.lower);
+            result.extend(b.upper);
+        }
+    }
+    return result;
+}
+
+void CsgShape::prepare_span_queries(RTCDevice device) {
+    for (Operand& operand : operands_) operand.solid->prepare_span_queries(device);
+}
+
+RTCGeometry CsgShape::create_geometry(RTCDevice device) {
+    prepare_span_queries(device);
+    return geometry_.create(device, *this, counters::geometry_type_slot(type_name(), true), bounds());
+}
+
+LocalShading CsgShape::shading(const RTCHit& hit, const Vec3f& geometric_normal) const {
+    return {geometric_normal, geometric_normal, {0, 0}, hit.primID};  // primID: the part (SolidUserGeometry)
+}
+
+std::vector<MaterialReference> CsgShape::part_materials() const {
+    std::vector<MaterialReference> parts;
+    for (const Operand& operand : operands_) {
+        const std::vector<MaterialReference> inner = operand.shape->part_materials();
+        if (inner.empty()) parts.push_back(operand.material);
+        for (const MaterialReference& part : inner) parts.push_back(part.name.empty() ? operand.material : part);
+    }
+    return parts;
+}
+
+void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                            std::vector<InsideSpan>& spans) const {
+    const ScratchLevel level;
+    std::vector<InsideSpan>& operand_spans = (*level).operand_spans;
+    std::vector<SpanEvent>& events = (*level).events;
+    const bool narrows = operation_ != CsgOperation::Union;  // the result lies within the first child's spans
+    for (std::uint32_t i = 0; i < operands_.size(); ++i) {
+        const Operand& operand = operands_[i];
+        operand_spans.clear();
+        if (operand.from_csg) {
+            operand.solid->inside_spans(operand.from_csg->point(origin), operand.from_csg->vector(direction), t_min,
+                                        t_max, operand_spans);
+            map_normals(operand_spans, *operand.to_csg);
+        } else {
+            operand.solid->inside_spans(origin, direction, t_min, t_max, operand_spans);
+        }
+        const bool bounds_result = operation_ == CsgOperation::Intersection || i == 0;
+        if (narrows && bounds_result) {
+            if (operand_spans.empty()) return;
+            // Later children only matter where this one is inside.
+            t_min = std::max(t_min, operand_spans.front().enter.t);
+            t_max = std::min(t_max, operand_spans.back().exit.t);
+        }
+        append_span_events(i, operand.first_part, operand_spans, events);
+    }
+    counters::add_to_named(span_combinations_slot_, 1);
+    counters::add_to_named(span_events_slot_, events.size());
+    combine_span_events(operation_, std::uint32_t(operands_.size()), events, spans);
+}
+
+}  // namespace isotrace

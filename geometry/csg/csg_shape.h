@@ -1,0 +1,75 @@
+#pragma once
+// Constructive solid geometry traced exactly: one Embree primitive per CSG tree, whose intersect callback asks
+// every child for its inside spans along the ray and combines them by Roth's classification
+// (span_combination.h). The shape is itself a Solid, so trees nest.
+//
+// Parts: every leaf solid of the tree is a part, numbered depth-first; a hit's part (LocalShading::part, carried
+// in Embree's primID) names the leaf surface that bounds the result there, and with it the child's material.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "geometry/csg/solid_user_geometry.h"
+#include "geometry/csg/span_combination.h"
+#include "renderer/plugin/shape.h"
+#include "renderer/plugin/solid.h"
+
+namespace isotrace {
+
+// A child as the scene describes it: a shape that is a closed solid, its placement in the CSG's space, and the
+// material its surfaces show (empty name: the parent's).
+struct CsgChild {
+    std::unique_ptr<Shape> shape;
+    Transform to_csg;
+    MaterialReference material;
+};
+
+class CsgShape final : public Shape, public Solid {
+public:
+    // Throws std::invalid_argument for an empty list or a child that is not a Solid. Whether a child really
+    // encloses a volume (solid_problem()) is the caller's to check: the scene plugin reports it at the child.
+    CsgShape(CsgOperation operation, std::vector<CsgChild> children);
+
+    std::string type_name() const override { return "csg"; }
+    std::size_t primitive_count() const override { return 1; }
+    std::size_t memory_bytes() const override;
+    Bounds3f bounds() const override;
+    bool counts_intersection_tests() const override { return true; }
+    // Always: children bake the transform when they can and keep it (mapping rays) when they cannot.
+    bool can_bake(const Transform&) const override { return true; }
+    void bake(const Transform& to_world) override;
+    RTCGeometry create_geometry(RTCDevice device) override;
+    LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const override;
+    std::vector<MaterialReference> part_materials() const override;
+
+    void prepare_span_queries(RTCDevice device) override;
+    void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                      std::vector<InsideSpan>& spans) const override;
+
+    CsgOperation operation() const { return operation_; }
+    // Children whose transform could not be baked into them (they see rays mapped into their own space).
+    std::size_t transformed_child_count() const;
+
+private:
+    struct Operand {
+        std::unique_ptr<Shape> shape;
+        Solid* solid = nullptr;                // the same object as `shape`
+        std::optional<Transform> to_csg;       // set when the child cannot bake its placement
+        std::optional<Transform> from_csg;     // its inverse
+        MaterialReference material;
+        std::uint32_t first_part = 0;
+        std::uint32_t part_count = 1;
+    };
+
+    void place(Operand& operand, const Transform& to_csg);
+    Bounds3f operand_bounds(const Operand& operand) const;
+
+    CsgOperation operation_;
+    std::vector<Operand> operands_;
+    std::uint32_t part_count_ = 0;
+    SolidUserGeometry geometry_;
+    int span_combinations_slot_ = 0;
+    int span_events_slot_ = 0;
+};
+
+}  // namespace isotrace

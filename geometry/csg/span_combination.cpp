@@ -1,0 +1,87 @@
+#include "geometry/csg/span_combination.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace isotrace {
+namespace {
+
+// Which operands the ray is inside at some t; each operand contributes at most one span there.
+struct Membership {
+    std::uint32_t inside_count = 0;
+    bool inside_first = false;
+
+    void apply(const SpanEvent& event) {
+        if (event.enters) {
+            ++inside_count;
+        } else {
+            --inside_count;
+        }
+        if (event.operand == 0) inside_first = event.enters;
+    }
+
+    bool inside(CsgOperation operation, std::uint32_t operand_count) const {
+        switch (operation) {
+            case CsgOperation::Union: return inside_count > 0;
+            case CsgOperation::Intersection: return inside_count == operand_count;
+            case CsgOperation::Difference: return inside_first && inside_count == 1;
+        }
+        return false;
+    }
+};
+
+bool subtracted(CsgOperation operation, std::uint32_t operand) {
+    return operation == CsgOperation::Difference && operand > 0;
+}
+
+}  // namespace
+
+void append_span_events(std::uint32_t operand, std::uint32_t part_offset, const std::vector<InsideSpan>& spans,
+                        std::vector<SpanEvent>& events) {
+    for (const InsideSpan& span : spans) {
+        SpanEvent enter{span.enter, operand, true}, exit{span.exit, operand, false};
+        enter.point.part += part_offset;
+        exit.point.part += part_offset;
+        events.push_back(enter);
+        events.push_back(exit);
+    }
+}
+
+void combine_span_events(CsgOperation operation, std::uint32_t operand_count, std::vector<SpanEvent>& events,
+                         std::vector<InsideSpan>& result) {
+    // Ties in t are broken by operand, then exits first, so the chosen boundary does not depend on sort order.
+    std::sort(events.begin(), events.end(), [](const SpanEvent& a, const SpanEvent& b) {
+        return std::tie(a.point.t, a.operand, a.enters) < std::tie(b.point.t, b.operand, b.enters);
+    });
+    Membership membership;
+    bool inside = false;
+    BoundaryPoint enter;
+    for (std::size_t first = 0; first < events.size();) {
+        const double simultaneous = events[first].point.t + kCoincidentRelative * std::abs(events[first].point.t);
+        std::size_t end = first;
+        for (; end < events.size() && events[end].point.t <= simultaneous; ++end) membership.apply(events[end]);
+        const bool now_inside = membership.inside(operation, operand_count);
+        if (now_inside != inside) {
+            // The event that moves the result the same way: an operand entering (or a subtracted one exiting)
+            // when the result is entered, the opposite when it is left. The operators are monotone in each
+            // operand, so the group holds one.
+            for (std::size_t k = first; k < end; ++k) {
+                const SpanEvent& event = events[k];
+                if ((event.enters != subtracted(operation, event.operand)) != now_inside) continue;
+                BoundaryPoint point = event.point;
+                if (subtracted(operation, event.operand)) point.normal = -point.normal;
+                if (now_inside) {
+                    enter = point;
+                } else {
+                    result.push_back({enter, point});
+                }
+                break;
+            }
+            inside = now_inside;
+        }
+        first = end;
+    }
+}
+
+}  // namespace isotrace

@@ -1,0 +1,34 @@
+#pragma once
+// A private Embree scene holding a mesh's triangles whose filter rejects every hit after recording it, so one
+// traversal lists every crossing of a ray with the surface (for the mesh's inside spans).
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+struct MeshCrossing {
+    double t = 0;
+    Vec3d normal;  // the triangle's front normal (counter-clockwise), not normalised
+    std::uint32_t triangle = 0;
+};
+
+class MeshCrossingScene {
+public:
+    // Takes over `triangles`, a committed triangle geometry.
+    MeshCrossingScene(RTCDevice device, RTCGeometry triangles);
+    ~MeshCrossingScene();
+    MeshCrossingScene(const MeshCrossingScene&) = delete;
+    MeshCrossingScene& operator=(const MeshCrossingScene&) = delete;
+
+    // Appends every crossing of origin + t·direction with t in [0, t_far], in no particular order. Thread-safe.
+    void crossings(const Vec3d& origin, const Vec3d& direction, double t_far, std::vector<MeshCrossing>& out) const;
+
+private:
+    RTCScene scene_ = nullptr;
+};
+
+}  // namespace isotrace
