@@ -1,0 +1,97 @@
+#include "tools/cli/blob_benchmark.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "geometry/implicit/blob_group_shape.h"
+#include "geometry/mesh/triangle_mesh_shape.h"
+#include "geometry/polygonize/blob_polygonizer.h"
+#include "geometry/polygonize/mesh_topology.h"
+#include "renderer/core/input_error.h"
+
+namespace isotrace::cli {
+namespace {
+
+TracedScene trace(const LoadedScene& scene, const BlobBenchmarkSettings& settings, const std::string& label,
+                  const std::function<void(const std::string&)>& log) {
+    TracedScene traced;
+    const BuildStatistics& build = scene.scene->build_statistics();
+    traced.build_seconds = build.seconds;
+    traced.embree_bytes = build.embree_bytes;
+    traced.shape_bytes = build.shape_bytes;
+    for (int threads : settings.threads) {
+        log(label + ": " + std::to_string(settings.repeats) + " run(s) on " + std::to_string(threads) + " thread(s)");
+        traced.timings.push_back(time_primary_rays(scene, threads, settings.repeats));
+    }
+    return traced;
+}
+
+// Replaces every blob group by its tessellation as the scene loads, timing the polygoniser.
+std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_groups(
+    const BlobBenchmarkSettings& settings, const std::string& scene, TessellationSummary& summary) {
+    return [&settings, scene, &summary](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
+        const auto* blobs = dynamic_cast<const BlobGroupShape*>(shape.get());
+        if (!blobs) return shape;
+        const BlobGroup& group = blobs->group();
+        const double cell = settings.cell_size.value_or(cell_size_for_smallest_element(group, settings.cells_per_radius));
+        const auto start = std::chrono::steady_clock::now();
+        TriangleMeshData mesh;
+        try {
+            mesh = polygonize(group, {cell});
+        } catch (const std::invalid_argument& error) {
+            throw InputError({}, "--cell-size", scene + ": " + error.what());
+        }
+        summary.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (mesh.triangles.empty()) throw InputError({}, scene, "a blob group has no surface to tessellate");
+        summary.cell_size = summary.triangles == 0 ? cell : std::min(summary.cell_size, cell);
+        summary.triangles += mesh.triangles.size();
+        summary.vertices += mesh.positions.size();
+        summary.closed = summary.closed && is_closed_and_consistently_oriented(mesh);
+        return std::make_unique<TriangleMeshShape>(std::move(mesh));
+    };
+}
+
+void compare_images(const DepthMap& direct, const DepthMap& tessellated, SceneBenchmark& result) {
+    std::size_t agree = 0;
+    std::vector<double> differences;
+    for (std::size_t i = 0; i < direct.depth.size(); ++i) {
+        const bool hit_direct = std::isfinite(direct.depth[i]), hit_tessellated = std::isfinite(tessellated.depth[i]);
+        if (hit_direct == hit_tessellated) ++agree;
+        if (hit_direct && hit_tessellated) differences.push_back(std::abs(direct.depth[i] - tessellated.depth[i]));
+    }
+    result.pixel_agreement = direct.depth.empty() ? 1.0 : double(agree) / double(direct.depth.size());
+    result.median_depth_difference = median(std::move(differences));
+}
+
+}  // namespace
+
+std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& settings,
+                                               const std::function<void(const std::string&)>& log) {
+    std::vector<SceneBenchmark> results;
+    for (const std::string& path : settings.scenes) {
+        SceneBenchmark result;
+        result.scene = path;
+        SceneOverrides overrides;
+        overrides.resolution = settings.resolution;
+        {
+            log(path + ": loading");
+            const std::unique_ptr<LoadedScene> scene = load_scene(path, overrides);
+            const auto& primitives = scene->scene->build_statistics().primitives_by_type;
+            const auto blobs = primitives.find("blobs");
+            if (blobs == primitives.end() || blobs->second == 0)
+                throw InputError({}, path, "the scene has no blob group to benchmark");
+            result.elements = blobs->second;
+            result.direct = trace(*scene, settings, path + " direct", log);
+        }
+        log(path + ": loading and tessellating");
+        overrides.replace_shape = tessellate_blob_groups(settings, path, result.tessellation);
+        const std::unique_ptr<LoadedScene> scene = load_scene(path, overrides);
+        result.tessellated = trace(*scene, settings, path + " tessellated", log);
+        compare_images(result.direct.timings.front().depth, result.tessellated.timings.front().depth, result);
+        results.push_back(std::move(result));
+    }
+    return results;
+}
+
+}  // namespace isotrace::cli

@@ -1,0 +1,51 @@
+#pragma once
+// The blob-group benchmark of issue 4, in one process and one run: every scene is traced twice with primary
+// rays only, once directly (blob groups as Embree user geometry) and once with every blob group replaced by its
+// tessellation (geometry/polygonize) traced natively by Embree as triangles, on each thread count.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tools/cli/ray_cast_timing.h"
+
+namespace isotrace::cli {
+
+struct BlobBenchmarkSettings {
+    std::vector<std::string> scenes;
+    std::vector<int> threads;
+    int repeats = 3;
+    std::optional<RasterSize> resolution;  // default: each scene's own
+    std::optional<double> cell_size;       // tessellation lattice spacing in world units; default from below
+    double cells_per_radius = 4;           // lattice cells across the smallest element's field radius
+};
+
+// One way of tracing a scene: build cost and ray timings per thread count.
+struct TracedScene {
+    double build_seconds = 0;
+    std::int64_t embree_bytes = 0;
+    std::size_t shape_bytes = 0;
+    std::vector<RayCastTiming> timings;  // in the order of the settings' thread counts
+};
+
+struct TessellationSummary {
+    double cell_size = 0;
+    double seconds = 0;
+    std::size_t triangles = 0, vertices = 0;
+    bool closed = true;  // every mesh closed and consistently oriented
+};
+
+struct SceneBenchmark {
+    std::string scene;
+    std::size_t elements = 0;
+    TracedScene direct, tessellated;
+    TessellationSummary tessellation;
+    double pixel_agreement = 0;          // fraction of pixels where both hit or both miss
+    double median_depth_difference = 0;  // |direct − tessellated| view depth over pixels both hit, world units
+};
+
+// Throws InputError when a scene holds no blob group. `log` receives one line per step.
+std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& settings,
+                                               const std::function<void(const std::string&)>& log);
+
+}  // namespace isotrace::cli
