@@ -13,6 +13,7 @@ namespace isotrace {
 
 class BlobFieldGrid {
 public:
+    // Keeps a reference: the group must outlive the grid.
     explicit BlobFieldGrid(const BlobGroup& group);
 
     // Σ wᵢ·fᵢ(P): the surface is where it equals group.threshold(), the inside where it is larger.

@@ -23,13 +23,22 @@ nlohmann::json traced_json(const TracedScene& traced) {
     nlohmann::json runs = nlohmann::json::array();
     for (const RayCastTiming& timing : traced.timings)
         runs.push_back({{"threads", timing.threads},
-                        {"median_seconds", timing.median_seconds},
+                        {"median_seconds", timing.median_seconds()},
+                        {"seconds", timing.seconds},
                         {"mrays_per_second", timing.mrays_per_second()},
                         {"ns_per_ray", timing.nanoseconds_per_ray()}});
     return {{"build_seconds", traced.build_seconds},
             {"embree_bytes", traced.embree_bytes},
             {"shape_bytes", traced.shape_bytes},
             {"runs", runs}};
+}
+
+// The median over runs of numerator[i] / denominator[i]: runs i of both took turns on the same machine state.
+double median_ratio(const std::vector<double>& numerator, const std::vector<double>& denominator) {
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < numerator.size() && i < denominator.size(); ++i)
+        ratios.push_back(numerator[i] / denominator[i]);
+    return median(std::move(ratios));
 }
 
 // printf into a std::string.
@@ -60,7 +69,7 @@ nlohmann::json benchmark_json(const BlobBenchmarkSettings& settings, const std::
         tessellated["closed"] = r.tessellation.closed;
         for (std::size_t i = 0; i < r.tessellated.timings.size(); ++i)
             tessellated["runs"][i]["direct_over_tessellated"] =
-                r.direct.timings[i].median_seconds / r.tessellated.timings[i].median_seconds;
+                median_ratio(r.direct.timings[i].seconds, r.tessellated.timings[i].seconds);
         scenes.push_back({{"scene", r.scene},
                           {"elements", r.elements},
                           {"rays", r.direct.timings.front().rays()},

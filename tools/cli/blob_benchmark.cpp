@@ -13,17 +13,12 @@
 namespace isotrace::cli {
 namespace {
 
-TracedScene trace(const LoadedScene& scene, const BlobBenchmarkSettings& settings, const std::string& label,
-                  const std::function<void(const std::string&)>& log) {
-    TracedScene traced;
+TracedScene build_of(const LoadedScene& scene) {
     const BuildStatistics& build = scene.scene->build_statistics();
+    TracedScene traced;
     traced.build_seconds = build.seconds;
     traced.embree_bytes = build.embree_bytes;
     traced.shape_bytes = build.shape_bytes;
-    for (int threads : settings.threads) {
-        log(label + ": " + std::to_string(settings.repeats) + " run(s) on " + std::to_string(threads) + " thread(s)");
-        traced.timings.push_back(time_primary_rays(scene, threads, settings.repeats));
-    }
     return traced;
 }
 
@@ -74,20 +69,26 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         result.scene = path;
         SceneOverrides overrides;
         overrides.resolution = settings.resolution;
-        {
-            log(path + ": loading");
-            const std::unique_ptr<LoadedScene> scene = load_scene(path, overrides);
-            const auto& primitives = scene->scene->build_statistics().primitives_by_type;
-            const auto blobs = primitives.find("blobs");
-            if (blobs == primitives.end() || blobs->second == 0)
-                throw InputError({}, path, "the scene has no blob group to benchmark");
-            result.elements = blobs->second;
-            result.direct = trace(*scene, settings, path + " direct", log);
-        }
-        log(path + ": loading and tessellating");
+        log(path + ": loading");
+        const std::unique_ptr<LoadedScene> direct = load_scene(path, overrides);
+        const auto& primitives = direct->scene->build_statistics().primitives_by_type;
+        const auto blobs = primitives.find("blobs");
+        if (blobs == primitives.end() || blobs->second == 0)
+            throw InputError({}, path, "the scene has no blob group to benchmark");
+        result.elements = blobs->second;
+        log(path + ": loading again and tessellating");
         overrides.replace_shape = tessellate_blob_groups(settings, path, result.tessellation);
-        const std::unique_ptr<LoadedScene> scene = load_scene(path, overrides);
-        result.tessellated = trace(*scene, settings, path + " tessellated", log);
+        const std::unique_ptr<LoadedScene> tessellated = load_scene(path, overrides);
+        result.direct = build_of(*direct);
+        result.tessellated = build_of(*tessellated);
+        for (int threads : settings.threads) {
+            log(path + ": " + std::to_string(settings.repeats) + " run(s) each on " + std::to_string(threads) +
+                " thread(s)");
+            std::vector<RayCastTiming> timings = time_primary_rays({direct.get(), tessellated.get()}, threads,
+                                                                   settings.repeats);
+            result.direct.timings.push_back(std::move(timings[0]));
+            result.tessellated.timings.push_back(std::move(timings[1]));
+        }
         compare_images(result.direct.timings.front().depth, result.tessellated.timings.front().depth, result);
         results.push_back(std::move(result));
     }

@@ -1,7 +1,7 @@
 #pragma once
-// The blob-group benchmark of issue 4, in one process and one run: every scene is traced twice with primary
-// rays only, once directly (blob groups as Embree user geometry) and once with every blob group replaced by its
-// tessellation (geometry/polygonize) traced natively by Embree as triangles, on each thread count.
+// The blob-group benchmark of issue 4, in one process and one run: every scene is loaded twice and traced with
+// primary rays only, directly (blob groups as Embree user geometry) and with every blob group replaced by its
+// tessellation (geometry/polygonize) traced natively by Embree as triangles, taking turns, on each thread count.
 #include <functional>
 #include <optional>
 #include <string>
@@ -20,7 +20,8 @@ struct BlobBenchmarkSettings {
     double cells_per_radius = 4;           // lattice cells across the smallest element's field radius
 };
 
-// One way of tracing a scene: build cost and ray timings per thread count.
+// One way of tracing a scene: build cost and ray timings per thread count (the runs of the direct and the
+// tessellated scene alternate, so their i-th runs saw the same machine).
 struct TracedScene {
     double build_seconds = 0;
     std::int64_t embree_bytes = 0;

@@ -14,18 +14,20 @@ double median(std::vector<double> values) {
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-RayCastTiming time_primary_rays(const LoadedScene& scene, int threads, int repeats) {
-    RayCastTiming timing;
-    timing.threads = threads;
+double RayCastTiming::median_seconds() const { return median(seconds); }
+
+std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats) {
+    std::vector<RayCastTiming> timings(scenes.size());
+    for (RayCastTiming& timing : timings) timing.threads = threads;
     tbb::task_arena arena(threads);
-    std::vector<double> seconds;
-    for (int run = 0; run < repeats; ++run) {
-        const auto start = std::chrono::steady_clock::now();
-        timing.depth = arena.execute([&] { return render_depth_map(scene); });
-        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    timing.median_seconds = median(seconds);
-    return timing;
+    for (int run = 0; run < repeats; ++run)
+        for (std::size_t i = 0; i < scenes.size(); ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            timings[i].depth = arena.execute([&] { return render_depth_map(*scenes[i]); });
+            timings[i].seconds.push_back(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+    return timings;
 }
 
 }  // namespace isotrace::cli
