@@ -352,6 +352,20 @@ case_interrupt() {
   ((partial == 1 || spp > 0)) || fail "neither a partial image nor a completed pass (spp $spp, partial $partial)"
 }
 
+# Two blended balls and a lone one seen from 6 m, 24x16 pixels: the smallest scene with a blob group.
+write_blob_scene() {  # write_blob_scene <path>
+  cat >"$1" <<'JSON'
+{
+  "isotrace": 1,
+  "film": { "resolution": [24, 16], "spp": 1 },
+  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0] } },
+  "materials": { "grey": { "type": "diffuse" } },
+  "objects": [ { "material": "grey", "shape": { "type": "blobs", "elements": [
+    { "center": [-0.4, 0, 0], "radius": 1 }, { "center": [0.4, 0, 0], "radius": 1 }, { "center": [0, 1.4, 0], "radius": 0.8 } ] } } ]
+}
+JSON
+}
+
 case_depth_help() {
   cli_expect 0 depth --help
   for option in --output --near --far --exr --res --threads --quiet; do
@@ -405,17 +419,8 @@ case_bench_help() {
   done
 }
 
-case_bench_small_scene() {  # two blended balls and a lone one, a 24x16 ray grid: the whole pipeline in seconds
-  cat >"$work/blobs.json" <<'JSON'
-{
-  "isotrace": 1,
-  "film": { "resolution": [24, 16], "spp": 1 },
-  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0] } },
-  "materials": { "grey": { "type": "diffuse" } },
-  "objects": [ { "material": "grey", "shape": { "type": "blobs", "elements": [
-    { "center": [-0.4, 0, 0], "radius": 1 }, { "center": [0.4, 0, 0], "radius": 1 }, { "center": [0, 1.4, 0], "radius": 0.8 } ] } } ]
-}
-JSON
+case_bench_small_scene() {  # the whole pipeline in seconds
+  write_blob_scene "$work/blobs.json"
   cli_expect 0 bench "$work/blobs.json" --threads 1 2 --repeats 1 --resolution scene --json "$work/bench.json"
   for text in "Direct" "Tessellated" "direct/tess" "blobs"; do expect_in "$work/stdout" "$text" "bench table"; done
   python3 - "$work/bench.json" <<'PY' || fail "bench JSON is incomplete or wrong"
@@ -438,6 +443,31 @@ PY
   expect_in "$work/stderr" "cell" stderr
   cli_expect 2 bench "$work/no_such_scene.json"
   expect_in "$work/stderr" "no_such_scene.json" stderr
+}
+
+case_polygonize_obj() {
+  write_blob_scene "$work/blobs.json"
+  cli_expect 0 polygonize "$work/blobs.json" -o "$work/blobs.obj" --cells-per-radius 6
+  expect_in "$work/stderr" "triangles" stderr
+  local vertices normals faces
+  vertices=$(grep -c '^v ' "$work/blobs.obj")
+  normals=$(grep -c '^vn ' "$work/blobs.obj")
+  faces=$(grep -c '^f ' "$work/blobs.obj")
+  ((vertices > 100 && normals == vertices && faces > vertices)) ||
+    fail "unexpected OBJ counts: $vertices v, $normals vn, $faces f"
+  # The mesh loads back as a scene mesh with every triangle.
+  python3 - "$work/blobs.json" "$work/mesh.json" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+scene["objects"][0]["shape"] = {"type": "mesh", "file": "blobs.obj"}
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+  cli_expect 0 info "$work/mesh.json"
+  grep -Eq "triangle_mesh +$faces primitive" "$work/stdout" || { show_output; fail "info does not list $faces triangles"; }
+  cli_expect 2 polygonize "$work/blobs.json" -o "$work/blobs.ply"
+  expect_in "$work/stderr" ".obj" stderr
+  cli_expect 2 polygonize "$work/mesh.json" -o "$work/again.obj"
+  expect_in "$work/stderr" "no blob group" stderr
 }
 
 # ---- dispatch --------------------------------------------------------------------------------------------

@@ -16,8 +16,7 @@ struct BenchArguments {
     std::vector<int> threads = {1, 2};
     int repeats = 3;
     std::string resolution = "320x180";
-    std::optional<double> cell_size;
-    double cells_per_radius = 4;
+    TessellationOptions tessellation;
     std::string json;
     bool quiet = false;
 };
@@ -31,8 +30,7 @@ int run_bench(const BenchArguments& args) {
     settings.threads = args.threads;
     settings.repeats = args.repeats;
     if (args.resolution != "scene") settings.resolution = parse_resolution(args.resolution, "--resolution");
-    settings.cell_size = args.cell_size;
-    settings.cells_per_radius = args.cells_per_radius;
+    settings.tessellation = args.tessellation;
     if (!args.json.empty()) check_output_directory(args.json, "--json");
 
     const bool show_progress = !args.quiet && stderr_is_terminal();
@@ -60,12 +58,7 @@ CommandRunner add_bench_command(CLI::App& app) {
         ->check(CLI::Range(1, 1000));
     command->add_option("--resolution", args->resolution, "WIDTHxHEIGHT of the ray grid, or \"scene\"")
         ->capture_default_str();
-    command->add_option("--cell-size", args->cell_size, "Tessellation cell size in world units")
-        ->check(CLI::PositiveNumber);
-    command->add_option("--cells-per-radius", args->cells_per_radius,
-                        "Tessellation cells across the smallest element's radius (when --cell-size is not given)")
-        ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+    args->tessellation.add_to(*command);
     command->add_option("--json", args->json, "Also write the results as JSON to this file");
     command->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
     return [args] { return run_bench(*args); };

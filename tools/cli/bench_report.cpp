@@ -80,13 +80,14 @@ nlohmann::json benchmark_json(const BlobBenchmarkSettings& settings, const std::
     }
     nlohmann::json report = {{"repeats", settings.repeats},
                              {"threads", settings.threads},
-                             {"cells_per_radius", settings.cells_per_radius},
+                             {"cells_per_radius", settings.tessellation.cells_per_radius},
                              {"machine", {{"cores", std::thread::hardware_concurrency()}, {"cpu", cpu_model()}}},
                              {"scenes", scenes}};
     report["resolution"] = settings.resolution
                                ? nlohmann::json::array({settings.resolution->width, settings.resolution->height})
                                : nlohmann::json();
-    report["cell_size"] = settings.cell_size ? nlohmann::json(*settings.cell_size) : nlohmann::json();
+    report["cell_size"] =
+        settings.tessellation.cell_size ? nlohmann::json(*settings.tessellation.cell_size) : nlohmann::json();
     return report;
 }
 

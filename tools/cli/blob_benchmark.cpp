@@ -6,7 +6,6 @@
 
 #include "geometry/implicit/blob_group_shape.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
-#include "geometry/polygonize/blob_polygonizer.h"
 #include "geometry/polygonize/mesh_topology.h"
 #include "renderer/core/input_error.h"
 
@@ -29,14 +28,9 @@ std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_gr
         const auto* blobs = dynamic_cast<const BlobGroupShape*>(shape.get());
         if (!blobs) return shape;
         const BlobGroup& group = blobs->group();
-        const double cell = settings.cell_size.value_or(cell_size_for_smallest_element(group, settings.cells_per_radius));
+        const double cell = settings.tessellation.cell_size_for(group);
         const auto start = std::chrono::steady_clock::now();
-        TriangleMeshData mesh;
-        try {
-            mesh = polygonize(group, {cell});
-        } catch (const std::invalid_argument& error) {
-            throw InputError({}, "--cell-size", scene + ": " + error.what());
-        }
+        TriangleMeshData mesh = tessellate(group, cell, scene);
         summary.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (mesh.triangles.empty()) throw InputError({}, scene, "a blob group has no surface to tessellate");
         summary.cell_size = summary.triangles == 0 ? cell : std::min(summary.cell_size, cell);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tools/cli/ray_cast_timing.h"
+#include "tools/cli/tessellation_options.h"
 
 namespace isotrace::cli {
 
@@ -16,8 +17,7 @@ struct BlobBenchmarkSettings {
     std::vector<int> threads;
     int repeats = 3;
     std::optional<RasterSize> resolution;  // default: each scene's own
-    std::optional<double> cell_size;       // tessellation lattice spacing in world units; default from below
-    double cells_per_radius = 4;           // lattice cells across the smallest element's field radius
+    TessellationOptions tessellation;
 };
 
 // One way of tracing a scene: build cost and ray timings per thread count (the runs of the direct and the

@@ -1,5 +1,6 @@
 #include "tools/cli/command_helpers.h"
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -26,6 +27,13 @@ void check_output_directory(const std::string& path, const std::string& option) 
     std::error_code error;
     if (!parent.empty() && !std::filesystem::is_directory(parent, error))
         throw InputError({}, option, "the directory \"" + parent.string() + "\" of \"" + path + "\" does not exist");
+}
+
+void check_output_file(const std::string& path, const std::string& extension, const std::string& option) {
+    std::string actual = std::filesystem::path(path).extension().string();
+    for (char& c : actual) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (actual != extension) throw InputError({}, option, "\"" + path + "\" must end in " + extension);
+    check_output_directory(path, option);
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {

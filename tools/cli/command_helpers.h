@@ -13,6 +13,9 @@ RasterSize parse_resolution(const std::string& text, const std::string& option);
 // after the render, with exit code 1).
 void check_output_directory(const std::string& path, const std::string& option);
 
+// Both checks before any work: the path ends in `extension` (".png"; any letter case) and its directory exists.
+void check_output_file(const std::string& path, const std::string& extension, const std::string& option);
+
 // Writes a text file atomically (see renderer/core/atomic_file.h).
 void write_text_atomically(const std::string& path, const std::string& text);
 

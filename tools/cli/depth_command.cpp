@@ -2,7 +2,6 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -27,14 +26,6 @@ struct DepthArguments {
     int threads = 0;
     bool quiet = false;
 };
-
-void check_extension(const std::string& path, const std::string& extension, const std::string& option) {
-    std::string actual = std::filesystem::path(path).extension().string();
-    for (char& c : actual) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (actual != extension)
-        throw InputError({}, option, "\"" + path + "\" must end in " + extension);
-    check_output_directory(path, option);
-}
 
 // The mapping's ends: the user's, else the nearest and farthest hit.
 DepthRange choose_range(const DepthArguments& args, const DepthMap& map) {
@@ -66,8 +57,8 @@ ImageMetadata make_metadata(const DepthArguments& args, const DepthRange& range)
 }
 
 int run_depth(const DepthArguments& args) {
-    check_extension(args.output, ".png", "--output");
-    if (!args.exr.empty()) check_extension(args.exr, ".exr", "--exr");
+    check_output_file(args.output, ".png", "--output");
+    if (!args.exr.empty()) check_output_file(args.exr, ".exr", "--exr");
     if (args.near && args.far && !(*args.near < *args.far))
         throw InputError({}, "--far", "must be greater than --near");
     SceneOverrides overrides;
