@@ -47,6 +47,21 @@ TEST(DepthMap, PlaneFacingTheCameraIsAtItsDistanceInEveryPixel) {
     EXPECT_NEAR(map.at(0, 0), 4.0f, 1e-5f);  // a corner pixel, the most oblique ray
 }
 
+// A placement transform that scales (here by 2) must not change the depth: it is in world units.
+TEST(DepthMap, ScaledCameraTransformStillGivesWorldUnits) {
+    const std::string json = R"({"isotrace": 1,
+  "film": {"resolution": [8, 8], "spp": 1},
+  "camera": {"type": "perspective", "fov": 30, "transform": {"translate": [0, 0, 4], "scale": 2}},
+  "materials": {"m": {"type": "diffuse"}},
+  "objects": [
+    {"material": "m", "shape": {"type": "mesh", "positions": [[-9, -9, 0], [9, -9, 0], [9, 9, 0], [-9, 9, 0]],
+     "triangles": [[0, 1, 2], [0, 2, 3]]}}]})";
+    const SceneFile file(json);
+    const auto scene = load_scene(file.path());
+    const DepthMap map = render_depth_map(*scene);
+    for (float depth : map.depth) EXPECT_NEAR(depth, 4.0f, 1e-5f);
+}
+
 // Seen obliquely, the depth is (P − eye)·forward for the hit point P on the plane z = 0.
 TEST(DepthMap, ObliquePlaneDepthIsTheDistanceAlongTheViewingAxis) {
     const Vec3d eye(0.3, -1.0, 3.0), target(-0.2, 0.4, 0.0);

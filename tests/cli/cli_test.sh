@@ -136,7 +136,7 @@ case_version() {
 
 case_help() {
   cli_expect 0 --help
-  for text in --help --version render info; do expect_in "$work/stdout" "$text" "--help output"; done
+  for text in --help --version render info depth bench polygonize; do expect_in "$work/stdout" "$text" "--help output"; done
 }
 
 case_render_help() {
