@@ -71,12 +71,19 @@ Lattice make_lattice(const BlobGroup& group, double cell_size) {
     return lattice;
 }
 
-// The bricks that overlap some element's support box, sorted by key.
+// The bricks that overlap some element's support box, sorted by key. Throws std::invalid_argument when a cell
+// size far too small for the supports would list more bricks than memory can hold.
 std::vector<std::uint64_t> active_bricks(const BlobGroup& group, const Lattice& lattice) {
+    constexpr double kMaxBrickEntries = double(1 << 26);  // 512 MiB of keys
     std::vector<std::uint64_t> bricks;
     for (const Metacube& element : group.elements()) {
         const WorldBounds b = element.support_bounds();
         const LatticePoint lo = lattice.cell_of(b.lower), hi = lattice.cell_of(b.upper);
+        double entries = 1;
+        for (int k = 0; k < 3; ++k) entries *= double(hi[k] / kBrickCells - lo[k] / kBrickCells + 1);
+        if (double(bricks.size()) + entries > kMaxBrickEntries)
+            throw std::invalid_argument("cell_size: " + std::to_string(lattice.cell) +
+                                        " is too small for these elements (more than 2^26 bricks of 8^3 cells)");
         for (std::int64_t z = lo[2] / kBrickCells; z <= hi[2] / kBrickCells; ++z)
             for (std::int64_t y = lo[1] / kBrickCells; y <= hi[1] / kBrickCells; ++y)
                 for (std::int64_t x = lo[0] / kBrickCells; x <= hi[0] / kBrickCells; ++x) bricks.push_back(pack({x, y, z}));

@@ -21,8 +21,8 @@ struct PolygonizeSettings {
 // radius R of a metaball). Throws std::invalid_argument for cells_per_radius that is not finite and > 0.
 double cell_size_for_smallest_element(const BlobGroup& group, double cells_per_radius);
 
-// Throws std::invalid_argument ("cell_size: ...") for a cell size that is not finite and > 0 or that needs more
-// than 2^20 lattice cells along an axis. The mesh has no triangles when the field never exceeds the threshold.
+// Throws std::invalid_argument ("cell_size: ...") for a cell size that is not finite and > 0, that needs more
+// than 2^20 lattice cells along an axis, or that would sample more than 2^26 bricks of 8³ cells. The mesh has no triangles when the field never exceeds the threshold.
 TriangleMeshData polygonize(const BlobGroup& group, const PolygonizeSettings& settings);
 
 }  // namespace isotrace

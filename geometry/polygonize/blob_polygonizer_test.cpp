@@ -128,6 +128,10 @@ TEST(Polygonizer, RejectsBadCellSizes) {
     for (double bad : {0.0, -1.0, std::nan(""), 1e-9})
         expect_invalid_naming([&] { polygonize(group, {bad}); }, "cell_size");
     expect_invalid_naming([&] { cell_size_for_smallest_element(group, 0); }, "cells_per_radius");
+    // Within the per-axis limit, but a billion bricks for a crowd of large elements.
+    std::vector<Metacube> crowd;
+    for (int i = 0; i < 100; ++i) crowd.push_back(Metacube::metaball({0.01 * i, 0, 0}, 1, 1));
+    expect_invalid_naming([&] { polygonize(make_group(std::move(crowd)), {2e-5}); }, "cell_size");
 }
 
 }  // namespace
