@@ -64,7 +64,7 @@ void write_exr(const std::filesystem::path& path, const ImageBuffer& image, cons
     const int channel_count = int(image.channels.size());
     OIIO::ImageSpec spec(image.width, image.height, channel_count, half_float ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
     spec.channelnames = image.channels;
-    spec.alpha_channel = 3;
+    spec.alpha_channel = image.channels.size() > 3 && image.channels[3] == "A" ? 3 : -1;  // a lone Z has none
     spec.x = window.x;
     spec.y = window.y;
     spec.full_x = 0;
@@ -103,6 +103,16 @@ void write_display_image(const std::filesystem::path& path, const ImageBuffer& i
     apply_metadata(spec, metadata);
     spec.attribute("oiio:ColorSpace", "sRGB");
     write_with_oiio(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+}
+
+void write_grey8_image(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& pixels,
+                       const ImageMetadata& metadata) {
+    if (pixels.size() != std::size_t(width) * std::size_t(height))
+        throw std::logic_error("write_grey8_image: pixel count does not match the size");
+    OIIO::ImageSpec spec(width, height, 1, OIIO::TypeDesc::UINT8);
+    spec.channelnames = {"Y"};
+    apply_metadata(spec, metadata);
+    write_with_oiio(path, spec, OIIO::TypeDesc::UINT8, pixels.data());
 }
 
 }  // namespace isotrace

@@ -36,6 +36,10 @@ ImageKind image_kind_for(const std::filesystem::path& path);
 void write_exr(const std::filesystem::path& path, const ImageBuffer& image, const ImageWindow& window,
                bool half_float, const ImageMetadata& metadata);
 
+// An 8-bit single-channel image written as is, without colour transform (range images), atomically.
+void write_grey8_image(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& pixels,
+                       const ImageMetadata& metadata);
+
 void write_display_image(const std::filesystem::path& path, const ImageBuffer& image, const ColourSystem& colours,
                          const std::string& display, const std::string& view, const ImageMetadata& metadata);
 

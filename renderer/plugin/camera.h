@@ -16,21 +16,22 @@ struct RasterSize {
 class Camera {
 public:
     explicit Camera(const Transform& camera_to_world)
-        : camera_to_world_(camera_to_world), world_to_camera_(camera_to_world.inverse()) {}
+        : camera_to_world_(camera_to_world),
+          eye_(camera_to_world.point(Vec3d(0, 0, 0))),
+          forward_(normalize(camera_to_world.vector(Vec3d(0, 0, -1)))) {}
     virtual ~Camera() = default;
 
     // Ray through raster position (x right, y down, in pixels of the full raster) with lens sample u.
     virtual Ray generate_ray(float raster_x, float raster_y, std::array<float, 2> lens_u) const = 0;
 
-    // Distance of a world point in front of the camera along its viewing axis (the depth AOV).
-    float view_depth(const Vec3f& world_point) const {
-        return float(-world_to_camera_.point(Vec3d(world_point)).z);
-    }
+    // Distance of a world point in front of the camera along its viewing axis (the depth AOV), in world units
+    // also when the placement transform scales (camera-space −z would then be in camera units).
+    float view_depth(const Vec3f& world_point) const { return float(dot(Vec3d(world_point) - eye_, forward_)); }
     const Transform& camera_to_world() const { return camera_to_world_; }
 
 private:
     Transform camera_to_world_;
-    Transform world_to_camera_;
+    Vec3d eye_, forward_;  // camera origin and unit viewing direction in the world
 };
 
 Registry<Camera, const RasterSize&>& camera_registry();

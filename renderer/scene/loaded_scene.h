@@ -1,6 +1,7 @@
 #pragma once
 // Everything a render needs, created from one scene file.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,9 @@ struct SceneOverrides {
     std::optional<RasterSize> resolution;
     std::optional<std::uint64_t> seed;
     std::vector<Aov> extra_aovs;
+    // Called with every shape as it is created, before the scene is committed; returns the shape to use in its
+    // place (the object's transform and material stay). isotrace bench traces blob groups as their tessellation.
+    std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> replace_shape;
 };
 
 struct LoadedScene {

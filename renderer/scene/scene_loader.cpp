@@ -129,7 +129,7 @@ std::vector<const Material*> resolve_part_materials(const Shape& shape, const Re
     return materials;
 }
 
-void load_content(const SceneNode& root, RenderScene& scene) {
+void load_content(const SceneNode& root, const SceneOverrides& overrides, RenderScene& scene) {
     if (auto materials = root.optional_object("materials")) {
         materials->accept_all_keys();
         for (const std::string& name : materials->keys())
@@ -144,6 +144,7 @@ void load_content(const SceneNode& root, RenderScene& scene) {
         object.material = resolve_material(node, scene, i);
         object.to_world = parse_optional_transform(node, "transform");
         object.shape = shape_registry().create(node.object("shape"));
+        if (overrides.replace_shape) object.shape = overrides.replace_shape(std::move(object.shape));
         object.part_materials = resolve_part_materials(*object.shape, scene);
         node.finish();
         scene.add_object(std::move(object));
@@ -201,7 +202,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     loaded->integrator = integrator_registry().create(integrator, "preview");
 
     loaded->scene = std::make_unique<RenderScene>();
-    load_content(root, *loaded->scene);
+    load_content(root, overrides, *loaded->scene);
     loaded->parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     loaded->scene->commit();

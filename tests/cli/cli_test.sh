@@ -136,7 +136,7 @@ case_version() {
 
 case_help() {
   cli_expect 0 --help
-  for text in --help --version render info; do expect_in "$work/stdout" "$text" "--help output"; done
+  for text in --help --version render info depth bench polygonize; do expect_in "$work/stdout" "$text" "--help output"; done
 }
 
 case_render_help() {
@@ -350,6 +350,124 @@ case_interrupt() {
   echo "interrupted render: isotrace:spp $spp, isotrace:partial $partial" >&2
   ((spp < 100000)) || fail "isotrace:spp is $spp after an interrupted render"
   ((partial == 1 || spp > 0)) || fail "neither a partial image nor a completed pass (spp $spp, partial $partial)"
+}
+
+# Two blended balls and a lone one seen from 6 m, 24x16 pixels: the smallest scene with a blob group.
+write_blob_scene() {  # write_blob_scene <path>
+  cat >"$1" <<'JSON'
+{
+  "isotrace": 1,
+  "film": { "resolution": [24, 16], "spp": 1 },
+  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0] } },
+  "materials": { "grey": { "type": "diffuse" } },
+  "objects": [ { "material": "grey", "shape": { "type": "blobs", "elements": [
+    { "center": [-0.4, 0, 0], "radius": 1 }, { "center": [0.4, 0, 0], "radius": 1 }, { "center": [0, 1.4, 0], "radius": 0.8 } ] } } ]
+}
+JSON
+}
+
+case_depth_help() {
+  cli_expect 0 depth --help
+  for option in --output --near --far --exr --res --threads --quiet; do
+    expect_in "$work/stdout" "$option" "depth --help output"
+  done
+}
+
+# pixel_values <image>: one grey value (0..255) per line, row by row.
+pixel_values() {
+  oiiotool --dumpdata "$1" | sed -n 's/^ *Pixel ([0-9]*, *[0-9]*): *\([0-9]*\) .*/\1/p'
+}
+
+case_depth_range_image() {  # the base scene: a unit sphere 5 m in front of the camera, background around it
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/scene.json"
+  cli_expect 0 depth "$work/scene/scene.json" -o "$work/range.png" --exr "$work/z.exr" --res 32x32
+  [[ -s "$work/range.png" && -s "$work/z.exr" ]] || fail "outputs missing"
+  expect_no_partial_files "$work"
+  iinfo -v "$work/range.png" >"$work/info" || fail "iinfo failed"
+  expect_in "$work/info" "32 x   32, 1 channel, uint8 png" "range image info"
+  pixel_values "$work/range.png" >"$work/values"
+  (($(wc -l <"$work/values") == 1024)) || { head "$work/values" >&2; fail "expected 1024 pixel values"; }
+  (($(sort -n "$work/values" | tail -1) == 255)) || fail "the nearest hit is not 255"
+  (($(sort -n "$work/values" | head -1) == 0)) || fail "the farthest hit or background is not 0"
+  (($(grep -cx 0 "$work/values") > 100)) || fail "no background (0) around the sphere"
+  (($(awk '$1 > 0 && $1 < 255' "$work/values" | wc -l) > 50)) || fail "no grey levels between near and far"
+  # The sphere's nearest point is 4 m away: with --near 2 --far 6.5 it is floor((6.5 - 4) * 256 / 4.5) = 142.
+  cli_expect 0 depth "$work/scene/scene.json" -o "$work/fixed.png" --res 31x31 --near 2 --far 6.5 --quiet
+  pixel_values "$work/fixed.png" >"$work/fixed_values"
+  (($(sort -n "$work/fixed_values" | tail -1) == 142)) || fail "the nearest point (depth 4) is not 142 for 2..6.5"
+  exr_info "$work/z.exr" "$work/z_info"
+  grep -Eq "channel list: *Z" "$work/z_info" || fail "the EXR has no Z channel"
+}
+
+case_depth_bad_input() {
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/scene.json"
+  cli_expect 2 depth "$work/scene/scene.json" -o "$work/range.png" --near 5 --far 2
+  expect_in "$work/stderr" "--far" stderr
+  cli_expect 2 depth "$work/scene/scene.json" -o "$work/range.jpg"
+  expect_in "$work/stderr" ".png" stderr
+  cli_expect 2 depth "$work/scene/scene.json" -o "$work/no_such_dir/range.png"
+  expect_in "$work/stderr" "no_such_dir" stderr
+  expect_no_file "$work/range.png"
+}
+
+case_bench_help() {
+  cli_expect 0 bench --help
+  for option in --threads --repeats --resolution --cell-size --cells-per-radius --json --quiet; do
+    expect_in "$work/stdout" "$option" "bench --help output"
+  done
+}
+
+case_bench_small_scene() {  # the whole pipeline in seconds
+  write_blob_scene "$work/blobs.json"
+  cli_expect 0 bench "$work/blobs.json" --threads 1 2 --repeats 1 --resolution scene --json "$work/bench.json"
+  for text in "Direct" "Tessellated" "direct/tess" "blobs"; do expect_in "$work/stdout" "$text" "bench table"; done
+  python3 - "$work/bench.json" <<'PY' || fail "bench JSON is incomplete or wrong"
+import json, sys
+report = json.load(open(sys.argv[1]))
+scene = report["scenes"][0]
+problems = []
+if scene["elements"] != 3: problems.append("elements %r" % scene["elements"])
+if scene["rays"] != 24 * 16: problems.append("rays %r" % scene["rays"])
+if [r["threads"] for r in scene["direct"]["runs"]] != [1, 2]: problems.append("direct thread counts")
+t = scene["tessellated"]
+if not t["triangles"] > 100: problems.append("triangles %r" % t["triangles"])
+if not t["closed"]: problems.append("tessellation not closed")
+if not all(r["direct_over_tessellated"] > 0 for r in t["runs"]): problems.append("ratio")
+if not scene["pixel_agreement"] > 0.95: problems.append("pixel agreement %r" % scene["pixel_agreement"])
+for p in problems: print("bench:", p, file=sys.stderr)
+sys.exit(1 if problems else 0)
+PY
+  cli_expect 2 bench "$work/blobs.json" --cell-size 1e-9 --repeats 1 --resolution scene
+  expect_in "$work/stderr" "cell" stderr
+  cli_expect 2 bench "$work/no_such_scene.json"
+  expect_in "$work/stderr" "no_such_scene.json" stderr
+}
+
+case_polygonize_obj() {
+  write_blob_scene "$work/blobs.json"
+  cli_expect 0 polygonize "$work/blobs.json" -o "$work/blobs.obj" --cells-per-radius 6
+  expect_in "$work/stderr" "triangles" stderr
+  local vertices normals faces
+  vertices=$(grep -c '^v ' "$work/blobs.obj")
+  normals=$(grep -c '^vn ' "$work/blobs.obj")
+  faces=$(grep -c '^f ' "$work/blobs.obj")
+  ((vertices > 100 && normals == vertices && faces > vertices)) ||
+    fail "unexpected OBJ counts: $vertices v, $normals vn, $faces f"
+  # The mesh loads back as a scene mesh with every triangle.
+  python3 - "$work/blobs.json" "$work/mesh.json" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+scene["objects"][0]["shape"] = {"type": "mesh", "file": "blobs.obj"}
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+  cli_expect 0 info "$work/mesh.json"
+  grep -Eq "triangle_mesh +$faces primitive" "$work/stdout" || { show_output; fail "info does not list $faces triangles"; }
+  cli_expect 2 polygonize "$work/blobs.json" -o "$work/blobs.ply"
+  expect_in "$work/stderr" ".obj" stderr
+  cli_expect 2 polygonize "$work/mesh.json" -o "$work/again.obj"
+  expect_in "$work/stderr" "no blob group" stderr
 }
 
 # ---- dispatch --------------------------------------------------------------------------------------------

@@ -8,6 +8,9 @@ using CommandRunner = std::function<int()>;
 
 CommandRunner add_render_command(CLI::App& app);
 CommandRunner add_info_command(CLI::App& app);
+CommandRunner add_depth_command(CLI::App& app);
+CommandRunner add_bench_command(CLI::App& app);
+CommandRunner add_polygonize_command(CLI::App& app);
 
 // Exit codes shared by all commands.
 constexpr int kExitOk = 0;

@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const CommandRunner render = add_render_command(app);
     const CommandRunner info = add_info_command(app);
+    const CommandRunner depth = add_depth_command(app);
+    const CommandRunner bench = add_bench_command(app);
+    const CommandRunner polygonize = add_polygonize_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -21,6 +24,9 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("depth")) return depth();
+        if (app.got_subcommand("bench")) return bench();
+        if (app.got_subcommand("polygonize")) return polygonize();
         return info();
     } catch (const isotrace::InputError& error) {
         std::fprintf(stderr, "isotrace: error: %s\n", error.what());

@@ -4,17 +4,15 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <regex>
 
 #include "renderer/colour/chromaticities.h"
-#include "renderer/core/atomic_file.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/core/version.h"
 #include "renderer/image/image_writer.h"
 #include "renderer/render/tile_renderer.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/progress_bar.h"
 #include "tools/cli/render_statistics.h"
@@ -42,17 +40,6 @@ struct RenderArguments {
     int tile_size = 32;
     bool quiet = false;
 };
-
-RasterSize parse_resolution(const std::string& text) {
-    static const std::regex pattern(R"((\d{1,5})[xX](\d{1,5}))");
-    std::smatch match;
-    if (!std::regex_match(text, match, pattern))
-        throw InputError({}, "--res", "expected WIDTHxHEIGHT (for example 640x480), got \"" + text + "\"");
-    const RasterSize size{std::stoi(match[1]), std::stoi(match[2])};
-    if (size.width < 1 || size.height < 1 || size.width > 65536 || size.height > 65536)
-        throw InputError({}, "--res", "each side must be between 1 and 65536 pixels");
-    return size;
-}
 
 ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result, std::uint64_t rays) {
     ImageMetadata m;
@@ -88,29 +75,12 @@ void write_outputs(const RenderArguments& args, const LoadedScene& scene, const 
     }
 }
 
-void write_text_atomically(const std::string& path, const std::string& text) {
-    write_atomically(path, [&](const std::filesystem::path& temporary) {
-        std::ofstream out(temporary);
-        out << text;
-        if (!out.flush()) throw std::runtime_error("cannot write " + path);
-    });
-}
-
-// Rejects an output path whose directory does not exist before any work is done (it would otherwise fail only
-// after the render, with exit code 1).
-void check_output_directory(const std::string& path, const std::string& option) {
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    std::error_code error;
-    if (!parent.empty() && !std::filesystem::is_directory(parent, error))
-        throw InputError({}, option, "the directory \"" + parent.string() + "\" of \"" + path + "\" does not exist");
-}
-
 int run_render(const RenderArguments& args) {
     const bool show_progress = !args.quiet && stderr_is_terminal();
     SceneOverrides overrides;
     overrides.spp = args.spp;
     overrides.seed = args.seed;
-    if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution);
+    if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
     if (!args.aovs.empty()) overrides.extra_aovs = parse_aov_list(args.aovs, "--aov");
     for (const std::string& output : args.outputs) {  // reject bad names before rendering
         image_kind_for(output);

@@ -1,0 +1,33 @@
+#include "renderer/image/range_image.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace isotrace {
+
+std::optional<DepthRange> depth_range_of_hits(const DepthMap& map) {
+    std::optional<DepthRange> range;
+    for (float d : map.depth) {
+        if (!std::isfinite(d)) continue;
+        if (!range) range = DepthRange{d, d};
+        range->near = std::min(range->near, d);
+        range->far = std::max(range->far, d);
+    }
+    return range;
+}
+
+std::uint8_t range_grey_level(float depth, const DepthRange& range) {
+    if (!std::isfinite(depth)) return 0;
+    if (!(range.far > range.near)) return 255;
+    const double g = (double(range.far) - double(depth)) * 256.0 / (double(range.far) - double(range.near));
+    return std::uint8_t(std::clamp(std::floor(g), 0.0, 255.0));
+}
+
+std::vector<std::uint8_t> range_image(const DepthMap& map, const DepthRange& range) {
+    std::vector<std::uint8_t> grey(map.depth.size());
+    std::transform(map.depth.begin(), map.depth.end(), grey.begin(),
+                   [&](float d) { return range_grey_level(d, range); });
+    return grey;
+}
+
+}  // namespace isotrace

@@ -1,0 +1,32 @@
+#pragma once
+// Range images after Kim et al. (seed 003, eq. 11): depth mapped to 256 grey levels,
+// g = (Z − Zmin)·256 / (Zmax − Zmin), clamped to 0..255.
+//
+// The paper's Z is the z coordinate of the surface points in OpenGL's eye convention (z grows towards the viewer;
+// the seed text has no figures, so this reading is ours): larger Z is nearer, and near is bright. We measure the
+// view depth d (distance along the viewing axis, growing away from the camera), so Z = −d and
+//     g = (d_far − d)·256 / (d_far − d_near):
+// the near depth maps to 255 (white), the far depth to 0 (black). Pixels that hit nothing are 0, like the far
+// plane: the background is black.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "renderer/render/depth_map.h"
+
+namespace isotrace {
+
+struct DepthRange {
+    float near = 0, far = 1;  // view depths mapped to grey 255 and 0
+};
+
+// The smallest and largest depth over the pixels that hit something; std::nullopt if none did.
+std::optional<DepthRange> depth_range_of_hits(const DepthMap& map);
+
+// Grey level of one depth; no hit (+inf) gives 0. A range with far == near maps every hit to 255.
+std::uint8_t range_grey_level(float depth, const DepthRange& range);
+
+// The whole map as 8-bit grey, row-major over map.window.
+std::vector<std::uint8_t> range_image(const DepthMap& map, const DepthRange& range);
+
+}  // namespace isotrace

@@ -1,0 +1,150 @@
+#include "tools/cli/bench_report.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace isotrace::cli {
+namespace {
+
+std::string cpu_model() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(cpuinfo, line))
+        if (line.rfind("model name", 0) == 0) {
+            const std::size_t colon = line.find(':');
+            return colon == std::string::npos ? line : line.substr(line.find_first_not_of(' ', colon + 1));
+        }
+    return "unknown";
+}
+
+nlohmann::json traced_json(const TracedScene& traced) {
+    nlohmann::json runs = nlohmann::json::array();
+    for (const RayCastTiming& timing : traced.timings)
+        runs.push_back({{"threads", timing.threads},
+                        {"median_seconds", timing.median_seconds()},
+                        {"seconds", timing.seconds},
+                        {"mrays_per_second", timing.mrays_per_second()},
+                        {"ns_per_ray", timing.nanoseconds_per_ray()}});
+    return {{"build_seconds", traced.build_seconds},
+            {"embree_bytes", traced.embree_bytes},
+            {"shape_bytes", traced.shape_bytes},
+            {"runs", runs}};
+}
+
+// The median over runs of numerator[i] / denominator[i]: runs i of both took turns on the same machine state.
+double median_ratio(const std::vector<double>& numerator, const std::vector<double>& denominator) {
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < numerator.size() && i < denominator.size(); ++i)
+        ratios.push_back(numerator[i] / denominator[i]);
+    return median(std::move(ratios));
+}
+
+// printf into a std::string.
+template <class... Args>
+std::string format(const char* pattern, Args... args) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, pattern, args...);
+    return buffer;
+}
+
+std::string scene_name(const nlohmann::json& scene) {
+    return std::filesystem::path(scene["scene"].get<std::string>()).stem().string();
+}
+
+}  // namespace
+
+nlohmann::json benchmark_json(const BlobBenchmarkSettings& settings, const std::vector<SceneBenchmark>& results) {
+    nlohmann::json scenes = nlohmann::json::array();
+    for (const SceneBenchmark& r : results) {
+        nlohmann::json direct = traced_json(r.direct), tessellated = traced_json(r.tessellated);
+        direct["bytes_per_element"] = double(r.direct.shape_bytes + std::size_t(r.direct.embree_bytes)) / double(r.elements);
+        tessellated["bytes_per_triangle"] =
+            double(r.tessellated.shape_bytes + std::size_t(r.tessellated.embree_bytes)) / double(r.tessellation.triangles);
+        tessellated["cell_size"] = r.tessellation.cell_size;
+        tessellated["tessellation_seconds"] = r.tessellation.seconds;
+        tessellated["triangles"] = r.tessellation.triangles;
+        tessellated["vertices"] = r.tessellation.vertices;
+        tessellated["closed"] = r.tessellation.closed;
+        for (std::size_t i = 0; i < r.tessellated.timings.size(); ++i)
+            tessellated["runs"][i]["direct_over_tessellated"] =
+                median_ratio(r.direct.timings[i].seconds, r.tessellated.timings[i].seconds);
+        scenes.push_back({{"scene", r.scene},
+                          {"elements", r.elements},
+                          {"rays", r.direct.timings.front().rays()},
+                          {"direct", direct},
+                          {"tessellated", tessellated},
+                          {"pixel_agreement", r.pixel_agreement},
+                          {"median_depth_difference", r.median_depth_difference}});
+    }
+    nlohmann::json report = {{"repeats", settings.repeats},
+                             {"threads", settings.threads},
+                             {"cells_per_radius", settings.tessellation.cells_per_radius},
+                             {"machine", {{"cores", std::thread::hardware_concurrency()}, {"cpu", cpu_model()}}},
+                             {"scenes", scenes}};
+    report["resolution"] = settings.resolution
+                               ? nlohmann::json::array({settings.resolution->width, settings.resolution->height})
+                               : nlohmann::json();
+    report["cell_size"] =
+        settings.tessellation.cell_size ? nlohmann::json(*settings.tessellation.cell_size) : nlohmann::json();
+    return report;
+}
+
+std::string benchmark_table(const nlohmann::json& report) {
+    std::string out = format("Primary rays, one per pixel centre; medians of %d run(s); %u cores, %s\n\n",
+                             report["repeats"].get<int>(), report["machine"]["cores"].get<unsigned>(),
+                             report["machine"]["cpu"].get<std::string>().c_str());
+    out += "Direct: blob groups as Embree user geometry\n";
+    out += format("%-12s %9s %9s %9s %12s %8s %9s %10s\n", "scene", "elements", "rays", "build ms", "bytes/elem",
+                  "threads", "Mrays/s", "ns/ray");
+    for (const auto& s : report["scenes"]) {
+        const auto& d = s["direct"];
+        bool first = true;
+        for (const auto& run : d["runs"]) {
+            if (first)
+                out += format("%-12s %9zu %9zu %9.1f %12.0f", scene_name(s).c_str(), s["elements"].get<std::size_t>(),
+                              s["rays"].get<std::size_t>(), d["build_seconds"].get<double>() * 1e3,
+                              d["bytes_per_element"].get<double>());
+            else
+                out += format("%-12s %9s %9s %9s %12s", "", "", "", "", "");
+            out += format(" %8d %9.3f %10.0f\n", run["threads"].get<int>(), run["mrays_per_second"].get<double>(),
+                          run["ns_per_ray"].get<double>());
+            first = false;
+        }
+    }
+    out += "\nTessellated: the polygoniser's mesh traced natively by Embree (same camera, same rays)\n";
+    out += format("%-12s %8s %10s %8s %9s %10s %8s %9s %8s %11s %8s %11s\n", "scene", "cell", "triangles", "tess s",
+                  "build ms", "bytes/tri", "threads", "Mrays/s", "ns/ray", "direct/tess", "agree %",
+                  "depth diff");
+    for (const auto& s : report["scenes"]) {
+        const auto& t = s["tessellated"];
+        bool first = true;
+        for (const auto& run : t["runs"]) {
+            if (first)
+                out += format("%-12s %8.4f %10zu %8.2f %9.1f %10.0f", scene_name(s).c_str(), t["cell_size"].get<double>(),
+                              t["triangles"].get<std::size_t>(), t["tessellation_seconds"].get<double>(),
+                              t["build_seconds"].get<double>() * 1e3, t["bytes_per_triangle"].get<double>());
+            else
+                out += format("%-12s %8s %10s %8s %9s %10s", "", "", "", "", "", "");
+            out += format(" %8d %9.3f %8.0f %10.1fx", run["threads"].get<int>(), run["mrays_per_second"].get<double>(),
+                          run["ns_per_ray"].get<double>(), run["direct_over_tessellated"].get<double>());
+            out += first ? format(" %8.2f %11.2g\n", 100 * s["pixel_agreement"].get<double>(),
+                                  s["median_depth_difference"].get<double>())
+                         : std::string("\n");
+            first = false;
+        }
+        if (!t["closed"].get<bool>()) out += "  warning: the tessellation is not closed and consistently oriented\n";
+    }
+    const auto& scenes = report["scenes"];
+    if (scenes.size() > 1) {
+        const double first = scenes.front()["direct"]["runs"][0]["ns_per_ray"].get<double>();
+        const double last = scenes.back()["direct"]["runs"][0]["ns_per_ray"].get<double>();
+        out += format("\nTime per ray (direct, %d thread(s)) from %s to %s: %.2fx\n",
+                      scenes.front()["direct"]["runs"][0]["threads"].get<int>(), scene_name(scenes.front()).c_str(),
+                      scene_name(scenes.back()).c_str(), last / first);
+    }
+    return out;
+}
+
+}  // namespace isotrace::cli

@@ -1,0 +1,92 @@
+#include "tools/cli/blob_benchmark.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "geometry/implicit/blob_group_shape.h"
+#include "geometry/mesh/triangle_mesh_shape.h"
+#include "geometry/polygonize/mesh_topology.h"
+#include "renderer/core/input_error.h"
+
+namespace isotrace::cli {
+namespace {
+
+TracedScene build_of(const LoadedScene& scene) {
+    const BuildStatistics& build = scene.scene->build_statistics();
+    TracedScene traced;
+    traced.build_seconds = build.seconds;
+    traced.embree_bytes = build.embree_bytes;
+    traced.shape_bytes = build.shape_bytes;
+    return traced;
+}
+
+// Replaces every blob group by its tessellation as the scene loads, timing the polygoniser.
+std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_groups(
+    const BlobBenchmarkSettings& settings, const std::string& scene, TessellationSummary& summary) {
+    return [&settings, scene, &summary](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
+        const auto* blobs = dynamic_cast<const BlobGroupShape*>(shape.get());
+        if (!blobs) return shape;
+        const BlobGroup& group = blobs->group();
+        const double cell = settings.tessellation.cell_size_for(group);
+        const auto start = std::chrono::steady_clock::now();
+        TriangleMeshData mesh = tessellate(group, cell, scene);
+        summary.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (mesh.triangles.empty()) throw InputError({}, scene, "a blob group has no surface to tessellate");
+        summary.cell_size = summary.triangles == 0 ? cell : std::min(summary.cell_size, cell);
+        summary.triangles += mesh.triangles.size();
+        summary.vertices += mesh.positions.size();
+        summary.closed = summary.closed && is_closed_and_consistently_oriented(mesh);
+        return std::make_unique<TriangleMeshShape>(std::move(mesh));
+    };
+}
+
+void compare_images(const DepthMap& direct, const DepthMap& tessellated, SceneBenchmark& result) {
+    std::size_t agree = 0;
+    std::vector<double> differences;
+    for (std::size_t i = 0; i < direct.depth.size(); ++i) {
+        const bool hit_direct = std::isfinite(direct.depth[i]), hit_tessellated = std::isfinite(tessellated.depth[i]);
+        if (hit_direct == hit_tessellated) ++agree;
+        if (hit_direct && hit_tessellated) differences.push_back(std::abs(direct.depth[i] - tessellated.depth[i]));
+    }
+    result.pixel_agreement = direct.depth.empty() ? 1.0 : double(agree) / double(direct.depth.size());
+    result.median_depth_difference = median(std::move(differences));
+}
+
+}  // namespace
+
+std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& settings,
+                                               const std::function<void(const std::string&)>& log) {
+    std::vector<SceneBenchmark> results;
+    for (const std::string& path : settings.scenes) {
+        SceneBenchmark result;
+        result.scene = path;
+        SceneOverrides overrides;
+        overrides.resolution = settings.resolution;
+        log(path + ": loading");
+        const std::unique_ptr<LoadedScene> direct = load_scene(path, overrides);
+        const auto& primitives = direct->scene->build_statistics().primitives_by_type;
+        const auto blobs = primitives.find("blobs");
+        if (blobs == primitives.end() || blobs->second == 0)
+            throw InputError({}, path, "the scene has no blob group to benchmark");
+        result.elements = blobs->second;
+        log(path + ": loading again and tessellating");
+        overrides.replace_shape = tessellate_blob_groups(settings, path, result.tessellation);
+        const std::unique_ptr<LoadedScene> tessellated = load_scene(path, overrides);
+        result.direct = build_of(*direct);
+        result.tessellated = build_of(*tessellated);
+        for (int threads : settings.threads) {
+            log(path + ": " + std::to_string(settings.repeats) + " run(s) each on " + std::to_string(threads) +
+                " thread(s)");
+            std::vector<RayCastTiming> timings = time_primary_rays({direct.get(), tessellated.get()}, threads,
+                                                                   settings.repeats);
+            result.direct.timings.push_back(std::move(timings[0]));
+            result.tessellated.timings.push_back(std::move(timings[1]));
+        }
+        compare_images(result.direct.timings.front().depth, result.tessellated.timings.front().depth, result);
+        results.push_back(std::move(result));
+    }
+    return results;
+}
+
+}  // namespace isotrace::cli

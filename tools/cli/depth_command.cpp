@@ -1,0 +1,108 @@
+// isotrace depth: the paper's range image (seed 003, eq. 11) of a scene, as an 8-bit grey PNG.
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "renderer/core/input_error.h"
+#include "renderer/core/version.h"
+#include "renderer/image/image_writer.h"
+#include "renderer/image/range_image.h"
+#include "renderer/render/depth_map.h"
+#include "tools/cli/command_helpers.h"
+#include "tools/cli/commands.h"
+
+namespace isotrace::cli {
+namespace {
+
+struct DepthArguments {
+    std::string scene;
+    std::string output;
+    std::string exr;
+    std::optional<double> near, far;
+    std::string resolution;
+    int threads = 0;
+    bool quiet = false;
+};
+
+// The mapping's ends: the user's, else the nearest and farthest hit.
+DepthRange choose_range(const DepthArguments& args, const DepthMap& map) {
+    const std::optional<DepthRange> hits = depth_range_of_hits(map);
+    DepthRange range = hits.value_or(DepthRange{});
+    if (args.near) range.near = float(*args.near);
+    if (args.far) range.far = float(*args.far);
+    if (!(range.near <= range.far))
+        throw InputError({}, args.far ? "--far" : "--near",
+                         "the near depth " + std::to_string(range.near) + " lies beyond the far depth " +
+                             std::to_string(range.far));
+    return range;
+}
+
+std::string format_depth(float depth) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(depth));
+    return text;
+}
+
+ImageMetadata make_metadata(const DepthArguments& args, const DepthRange& range) {
+    ImageMetadata metadata;
+    metadata.set("Software", std::string("isotrace ") + kIsotraceVersion);
+    metadata.set("isotrace:scene", args.scene);
+    // Text, because PNG keeps only text attributes.
+    metadata.set("isotrace:depth_near", format_depth(range.near));
+    metadata.set("isotrace:depth_far", format_depth(range.far));
+    return metadata;
+}
+
+int run_depth(const DepthArguments& args) {
+    check_output_file(args.output, ".png", "--output");
+    if (!args.exr.empty()) check_output_file(args.exr, ".exr", "--exr");
+    if (args.near && args.far && !(*args.near < *args.far))
+        throw InputError({}, "--far", "must be greater than --near");
+    SceneOverrides overrides;
+    if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
+
+    const int threads = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    const std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
+    const DepthMap map = render_depth_map(*scene);
+    const DepthRange range = choose_range(args, map);
+    const ImageMetadata metadata = make_metadata(args, range);
+
+    write_grey8_image(args.output, map.window.width(), map.window.height(), range_image(map, range), metadata);
+    if (!args.exr.empty()) {
+        ImageBuffer raw{map.window.width(), map.window.height(), {"Z"}, map.depth};
+        write_exr(args.exr, raw, {scene->film.raster, map.window.x0, map.window.y0}, false, metadata);
+    }
+    if (!args.quiet) {
+        std::size_t hits = 0;
+        for (float d : map.depth) hits += std::isfinite(d) ? 1 : 0;
+        std::fprintf(stderr, "isotrace: %s: %dx%d, %zu of %zu pixels hit, grey 255 at depth %g, 0 at depth %g\n",
+                     args.scene.c_str(), map.window.width(), map.window.height(), hits, map.depth.size(),
+                     double(range.near), double(range.far));
+        std::fprintf(stderr, "wrote %s\n", args.output.c_str());
+        if (!args.exr.empty()) std::fprintf(stderr, "wrote %s\n", args.exr.c_str());
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+CommandRunner add_depth_command(CLI::App& app) {
+    auto args = std::make_shared<DepthArguments>();
+    CLI::App* command = app.add_subcommand(
+        "depth", "Write a range image: view depth as 256 grey levels, near = white (255), far and background = black");
+    command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+    command->add_option("-o,--output", args->output, "Range image, 8-bit grey PNG")->required();
+    command->add_option("--near", args->near, "Depth mapped to grey 255 (default: the nearest hit)");
+    command->add_option("--far", args->far, "Depth mapped to grey 0 (default: the farthest hit)");
+    command->add_option("--exr", args->exr, "Also write the raw view depth Z (world units, inf = no hit) as EXR");
+    command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
+    command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
+    command->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
+    return [args] { return run_depth(*args); };
+}
+
+}  // namespace isotrace::cli
