@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "geometry/csg/transformed_bounds.h"
 #include "renderer/core/render_counters.h"
@@ -128,7 +129,11 @@ Bounds3f CsgShape::bounds() const {
 }
 
 void CsgShape::prepare_span_queries(RTCDevice device) {
-    for (Operand& operand : operands_) operand.solid->prepare_span_queries(device);
+    for (std::size_t i = 0; i < operands_.size(); ++i) {
+        // Children that keep statistics per object report under "<object>/<child index>".
+        operands_[i].shape->set_object_name(object_name() + "/" + std::to_string(i));
+        operands_[i].solid->prepare_span_queries(device);
+    }
 }
 
 RTCGeometry CsgShape::create_geometry(RTCDevice device) {
