@@ -17,9 +17,11 @@ std::optional<DepthRange> depth_range_of_hits(const DepthMap& map) {
 }
 
 std::uint8_t range_grey_level(float depth, const DepthRange& range) {
-    if (!std::isfinite(depth)) return 0;
-    if (!(range.far > range.near)) return 255;
-    const double g = (double(range.far) - double(depth)) * 256.0 / (double(range.far) - double(range.near));
+    const std::uint8_t near_level = range.near_is_bright ? 255 : 0, far_level = 255 - near_level;
+    if (!std::isfinite(depth)) return far_level;
+    if (!(range.far > range.near)) return near_level;
+    const double numerator = range.near_is_bright ? double(range.far) - double(depth) : double(depth) - double(range.near);
+    const double g = numerator * 256.0 / (double(range.far) - double(range.near));
     return std::uint8_t(std::clamp(std::floor(g), 0.0, 255.0));
 }
 

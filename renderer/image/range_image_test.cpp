@@ -25,6 +25,17 @@ TEST(DepthRangeImage, RangeOfHitsIgnoresMisses) {
     EXPECT_FALSE(depth_range_of_hits(map_of({DepthMap::kNoHit, DepthMap::kNoHit})));
 }
 
+// The other reading of eq. 11 (Z as the depth itself): near black, far and background white.
+TEST(DepthRangeImage, NearDarkMapsNearTo0AndFarTo255) {
+    const DepthRange range{2.0f, 6.0f, false};
+    EXPECT_EQ(range_grey_level(2.0f, range), 0);
+    EXPECT_EQ(range_grey_level(6.0f, range), 255);  // g = 256 clamps to 255
+    EXPECT_EQ(range_grey_level(4.0f, range), 128);  // (4 − 2)·256/4
+    EXPECT_EQ(range_grey_level(3.0f, range), 64);
+    EXPECT_EQ(range_grey_level(DepthMap::kNoHit, range), 255);
+    EXPECT_EQ(range_grey_level(3.0f, DepthRange{3.0f, 3.0f, false}), 0);
+}
+
 TEST(DepthRangeImage, MapsNearTo255AndFarTo0) {
     const DepthRange range{2.0f, 6.0f};
     EXPECT_EQ(range_grey_level(2.0f, range), 255);  // g = 256 clamps to 255

@@ -368,7 +368,7 @@ JSON
 
 case_depth_help() {
   cli_expect 0 depth --help
-  for option in --output --near --far --exr --res --threads --quiet; do
+  for option in --output --near --far --near-dark --exr --res --threads --quiet; do
     expect_in "$work/stdout" "$option" "depth --help output"
   done
 }
@@ -396,6 +396,11 @@ case_depth_range_image() {  # the base scene: a unit sphere 5 m in front of the 
   cli_expect 0 depth "$work/scene/scene.json" -o "$work/fixed.png" --res 31x31 --near 2 --far 6.5 --quiet
   pixel_values "$work/fixed.png" >"$work/fixed_values"
   (($(sort -n "$work/fixed_values" | tail -1) == 142)) || fail "the nearest point (depth 4) is not 142 for 2..6.5"
+  # --near-dark: the same point is floor((4 - 2) * 256 / 4.5) = 113, the lowest level; the background is 255.
+  cli_expect 0 depth "$work/scene/scene.json" -o "$work/dark.png" --res 31x31 --near 2 --far 6.5 --near-dark --quiet
+  pixel_values "$work/dark.png" >"$work/dark_values"
+  (($(sort -n "$work/dark_values" | head -1) == 113)) || fail "the nearest point (depth 4) is not 113 with --near-dark"
+  (($(grep -cx 255 "$work/dark_values") > 100)) || fail "no white background with --near-dark"
   exr_info "$work/z.exr" "$work/z_info"
   grep -Eq "channel list: *Z" "$work/z_info" || fail "the EXR has no Z channel"
 }

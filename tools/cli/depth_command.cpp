@@ -24,6 +24,7 @@ struct DepthArguments {
     std::optional<double> near, far;
     std::string resolution;
     int threads = 0;
+    bool near_dark = false;
     bool quiet = false;
 };
 
@@ -33,6 +34,7 @@ DepthRange choose_range(const DepthArguments& args, const DepthMap& map) {
     DepthRange range = hits.value_or(DepthRange{});
     if (args.near) range.near = float(*args.near);
     if (args.far) range.far = float(*args.far);
+    range.near_is_bright = !args.near_dark;
     if (!(range.near <= range.far))
         throw InputError({}, args.far ? "--far" : "--near",
                          "the near depth " + std::to_string(range.near) + " lies beyond the far depth " +
@@ -53,6 +55,7 @@ ImageMetadata make_metadata(const DepthArguments& args, const DepthRange& range)
     // Text, because PNG keeps only text attributes.
     metadata.set("isotrace:depth_near", format_depth(range.near));
     metadata.set("isotrace:depth_far", format_depth(range.far));
+    metadata.set("isotrace:depth_near_grey", range.near_is_bright ? "255" : "0");
     return metadata;
 }
 
@@ -98,6 +101,8 @@ CommandRunner add_depth_command(CLI::App& app) {
     command->add_option("-o,--output", args->output, "Range image, 8-bit grey PNG")->required();
     command->add_option("--near", args->near, "Depth mapped to grey 255 (default: the nearest hit)");
     command->add_option("--far", args->far, "Depth mapped to grey 0 (default: the farthest hit)");
+    command->add_flag("--near-dark", args->near_dark,
+                      "Read eq. 11's Z as the depth: near = black (0), far and background = white (255)");
     command->add_option("--exr", args->exr, "Also write the raw view depth Z (world units, inf = no hit) as EXR");
     command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
     command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
