@@ -16,7 +16,9 @@ namespace {
 inline bool segment_may_meet(const Metacube& element, const Vec3d& origin, const Vec3d& direction, double a, double b) {
     const Vec3d to_centre = element.skeleton().centre - origin;
     const double t = std::clamp(dot(to_centre, direction) / dot(direction, direction), a, b);
-    const double reach = element.radius() + length(element.skeleton().half_size);
+    const Vec3d& half_size = element.skeleton().half_size;
+    const double half_size2 = dot(half_size, half_size);  // 0 for metaballs: no square root needed
+    const double reach = element.radius() + (half_size2 > 0 ? std::sqrt(half_size2) : 0.0);
     const Vec3d gap = to_centre - direction * t;
     return dot(gap, gap) <= reach * reach * (1 + 1e-9);
 }

@@ -39,6 +39,7 @@ void BlobGroupShape::register_counters() {
 }
 
 void BlobGroupShape::count_work(const BlobQueryWork& work) const {
+    if (work.pieces == 0 && work.roots == 0) return;  // most queries find their stretch settled already
     for (const WorkSlots& slots : {all_groups_, this_group_}) {
         counters::add_to_named(slots.pieces, work.pieces);
         counters::add_to_named(slots.skipped, work.skipped_pieces);

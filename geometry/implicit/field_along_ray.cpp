@@ -89,12 +89,14 @@ void FieldAlongRay::add(std::uint32_t index, const Metacube& element, const Meta
     e.index = index;
     e.element = &element;
     e.slices = &slices;
-    if (!element.is_hard_cube()) e.kernel_pieces = kernel_->pieces(element.radius());
+    // The kernel's pieces are needed for breakpoints only by multi-piece kernels (Nishimura's r = R/3); others
+    // get them when a piece is solved (most pieces are skipped by their bounds).
+    const bool multi_piece = !element.is_hard_cube() && kernel_->unit_pieces().size() > 1;
+    if (multi_piece) e.kernel_pieces = kernel_->pieces(element.radius());
     for (const RegionPiece& piece : slices.pieces()) {
         for (double t : {piece.t_begin, piece.t_end})
             if (t > a_ && t < b_) breaks_.push_back(t);
-        // Kernel piece boundaries (Nishimura's r = R/3) are breakpoints too.
-        for (int k = 1; k < e.kernel_pieces.count; ++k)
+        for (int k = 1; multi_piece && k < e.kernel_pieces.count; ++k)
             add_level_crossings(slices.distance_squared(piece, piece.t_begin),
                                 e.kernel_pieces.pieces[std::size_t(k)].r2_begin, std::max(a_, piece.t_begin),
                                 std::min(b_, piece.t_end), breaks_);
@@ -187,12 +189,13 @@ FieldAlongRay::Stop FieldAlongRay::crossings(double t_min, double t_max, int sig
         Polynomial sum{-threshold_};
         bool polynomial = true;
         double lipschitz = 0;  // bound on |dF/dt| over the piece, for the non-polynomial search
-        for (const Active& e : active_) {
+        for (Active& e : active_) {
             if (!e.current) continue;
             if (e.element->is_hard_cube()) {
                 if (e.current->region == kInsideBox) sum += Polynomial{e.element->weight()};
                 continue;
             }
+            if (e.kernel_pieces.count == 0) e.kernel_pieces = kernel_->pieces(e.element->radius());
             const QuadraticAbout q = e.slices->distance_squared(*e.current, s0);
             const double r2_middle = q(middle);
             const FieldPiece* kernel_piece = nullptr;
