@@ -10,14 +10,13 @@
 namespace isotrace {
 namespace {
 
-// The first surface point of `solid` on the segment (t_near, t_far) of ray `i`.
-std::optional<BoundaryPoint> first_crossing(const Solid& solid, RTCRayN* rays, unsigned n, unsigned i) {
-    const double t_near = RTCRayN_tnear(rays, n, i), t_far = RTCRayN_tfar(rays, n, i);
+// The first surface point of `solid` on the segment (t_near, t_far) of the ray o + t·d.
+std::optional<BoundaryPoint> first_crossing(const Solid& solid, const Vec3d& origin, const Vec3d& direction,
+                                            double t_near, double t_far) {
     if (!(t_near < t_far)) return std::nullopt;
     thread_local std::vector<InsideSpan> spans;  // reused: no allocation per ray once warm
     spans.clear();
-    solid.inside_spans(user_geometry::ray_origin(rays, n, i), user_geometry::ray_direction(rays, n, i), t_near, t_far,
-                       spans);
+    solid.inside_spans(origin, direction, t_near, t_far, spans);
     return first_surface_crossing(spans, t_near, t_far);
 }
 
@@ -38,27 +37,26 @@ void SolidUserGeometry::bounds_callback(const RTCBoundsFunctionArguments* args) 
 
 void SolidUserGeometry::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const SolidUserGeometry*>(args->geometryUserPtr);
-    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        const auto hit = first_crossing(*self->solid_, rays, args->N, i);
-        if (!hit) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        user_geometry::store_hit(args, i, float(hit->t), hit->normal);
-        RTCHitN_primID(RTCRayHitN_HitN(args->rayhit, args->N), args->N, i) = hit->part;
-    }
+    std::optional<BoundaryPoint> found;  // the hit of the ray being handled
+    user_geometry::intersect_rays(
+        args, self->counter_slot_,
+        [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) -> std::optional<double> {
+            found = first_crossing(*self->solid_, origin, direction, t_near, t_far);
+            if (!found) return std::nullopt;
+            return found->t;
+        },
+        [&](unsigned i, const Vec3d&, const Vec3d&, double t) {
+            user_geometry::store_hit(args, i, float(t), found->normal);
+            RTCHitN_primID(RTCRayHitN_HitN(args->rayhit, args->N), args->N, i) = found->part;
+        });
 }
 
 void SolidUserGeometry::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* self = static_cast<const SolidUserGeometry*>(args->geometryUserPtr);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        if (!first_crossing(*self->solid_, args->ray, args->N, i)) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
-    }
+    user_geometry::occlude_rays(args, self->counter_slot_,
+                                [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+                                    return first_crossing(*self->solid_, origin, direction, t_near, t_far).has_value();
+                                });
 }
 
 }  // namespace isotrace

@@ -9,9 +9,6 @@
 
 namespace isotrace {
 
-using user_geometry::ray_direction;
-using user_geometry::ray_origin;
-
 BlobGroupShape::BlobGroupShape(BlobGroup group) : group_(std::move(group)) {}
 
 Bounds3f BlobGroupShape::bounds() const {
@@ -62,40 +59,34 @@ void BlobGroupShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
     user_geometry::store_bounds(args->bounds_o, support.lower, support.upper);
 }
 
+std::optional<double> BlobGroupShape::first_hit(std::uint32_t element, const Vec3d& origin, const Vec3d& direction,
+                                                double t_near, float t_far) const {
+    BlobQueryWork work;
+    const auto t = group_.first_crossing(element, origin, direction, t_near, t_far, work);
+    count_work(work);
+    return t;
+}
+
 void BlobGroupShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const BlobGroupShape*>(args->geometryUserPtr);
-    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        const Vec3d origin = ray_origin(rays, args->N, i), direction = ray_direction(rays, args->N, i);
-        float& t_far = RTCRayN_tfar(rays, args->N, i);
-        BlobQueryWork work;
-        const auto t = self->group_.first_crossing(args->primID, origin, direction, RTCRayN_tnear(rays, args->N, i),
-                                                   t_far, work);
-        self->count_work(work);
-        if (!t || !(float(*t) < t_far)) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        user_geometry::store_hit(args, i, float(*t), self->group_.normal(origin + direction * *t));
-    }
+    user_geometry::intersect_rays(
+        args, self->counter_slot_,
+        [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) -> std::optional<double> {
+            const auto t = self->first_hit(args->primID, origin, direction, t_near, t_far);
+            if (!t || !(float(*t) < t_far)) return std::nullopt;
+            return t;
+        },
+        [&](unsigned i, const Vec3d& origin, const Vec3d& direction, double t) {
+            user_geometry::store_hit(args, i, float(t), self->group_.normal(origin + direction * t));
+        });
 }
 
 void BlobGroupShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* self = static_cast<const BlobGroupShape*>(args->geometryUserPtr);
-    RTCRayN* rays = args->ray;
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        float& t_far = RTCRayN_tfar(rays, args->N, i);
-        BlobQueryWork work;
-        const auto t = self->group_.first_crossing(args->primID, ray_origin(rays, args->N, i),
-                                                   ray_direction(rays, args->N, i), RTCRayN_tnear(rays, args->N, i),
-                                                   t_far, work);
-        self->count_work(work);
-        if (!t) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        t_far = -std::numeric_limits<float>::infinity();
-    }
+    user_geometry::occlude_rays(args, self->counter_slot_,
+                                [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+                                    return self->first_hit(args->primID, origin, direction, t_near, t_far);
+                                });
 }
 
 void BlobGroupShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,

@@ -33,6 +33,9 @@ public:
 private:
     void register_counters();
     void count_work(const BlobQueryWork& work) const;
+    // Element `element`'s first crossing in (t_near, t_far), its work counted.
+    std::optional<double> first_hit(std::uint32_t element, const Vec3d& origin, const Vec3d& direction, double t_near,
+                                    float t_far) const;
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);
     static void occluded_callback(const RTCOccludedFunctionNArguments* args);

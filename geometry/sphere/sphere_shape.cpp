@@ -22,6 +22,14 @@ std::optional<double> nearest_root(const SphereRoots& roots, double t_near, doub
     return std::nullopt;
 }
 
+// The nearest root of sphere `s` in (t_near, t_far), if any.
+std::optional<double> first_hit(const Sphere& s, const Vec3d& origin, const Vec3d& direction, double t_near,
+                                float t_far) {
+    const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
+    if (!roots) return std::nullopt;
+    return nearest_root(*roots, t_near, t_far);
+}
+
 }  // namespace
 
 SphereShape::SphereShape(std::vector<Sphere> spheres) : spheres_(std::move(spheres)) { build_area_distribution(); }
@@ -88,37 +96,23 @@ void SphereShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
 void SphereShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const SphereShape*>(args->geometryUserPtr);
     const Sphere& s = self->spheres_[args->primID];
-    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        const Vec3d origin = user_geometry::ray_origin(rays, args->N, i);
-        const Vec3d direction = user_geometry::ray_direction(rays, args->N, i);
-        const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
-        if (!roots) continue;
-        float& t_far = RTCRayN_tfar(rays, args->N, i);
-        const auto t = nearest_root(*roots, RTCRayN_tnear(rays, args->N, i), t_far);
-        if (!t) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        user_geometry::store_hit(args, i, float(*t), origin + direction * *t - s.centre);  // uv: see shading()
-    }
+    user_geometry::intersect_rays(
+        args, self->counter_slot_,
+        [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+            return first_hit(s, origin, direction, t_near, t_far);
+        },
+        [&](unsigned i, const Vec3d& origin, const Vec3d& direction, double t) {
+            user_geometry::store_hit(args, i, float(t), origin + direction * t - s.centre);  // uv: see shading()
+        });
 }
 
 void SphereShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* self = static_cast<const SphereShape*>(args->geometryUserPtr);
     const Sphere& s = self->spheres_[args->primID];
-    RTCRayN* rays = args->ray;
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        const Vec3d origin = user_geometry::ray_origin(rays, args->N, i);
-        const Vec3d direction = user_geometry::ray_direction(rays, args->N, i);
-        const auto roots = intersect_sphere(origin, direction, s.centre, s.radius);
-        float& t_far = RTCRayN_tfar(rays, args->N, i);
-        if (!roots || !nearest_root(*roots, RTCRayN_tnear(rays, args->N, i), t_far)) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        t_far = -std::numeric_limits<float>::infinity();
-    }
+    user_geometry::occlude_rays(args, self->counter_slot_,
+                                [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+                                    return first_hit(s, origin, direction, t_near, t_far);
+                                });
 }
 
 std::optional<InsideSpan> SphereShape::span_of(std::uint32_t index, const Vec3d& origin, const Vec3d& direction) const {

@@ -8,9 +8,6 @@
 
 namespace isotrace {
 
-using user_geometry::ray_direction;
-using user_geometry::ray_origin;
-
 SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
     : superquadrics_(std::move(superquadrics)) {}
 
@@ -56,42 +53,34 @@ void SuperquadricShape::bounds_callback(const RTCBoundsFunctionArguments* args) 
     user_geometry::store_bounds(args->bounds_o, box.lower(), box.upper());
 }
 
+std::optional<double> SuperquadricShape::first_hit(std::uint32_t index, const Vec3d& origin, const Vec3d& direction,
+                                                   double t_near, float t_far) const {
+    SuperquadricWork work;
+    const auto t = superquadrics_[index].first_crossing(origin, direction, t_near, t_far, work);
+    record_work(work);
+    if (!t || !(*t > t_near) || !(float(*t) < t_far)) return std::nullopt;
+    return t;
+}
+
 void SuperquadricShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
-    const Superquadric& s = self->superquadrics_[args->primID];
-    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        const Vec3d origin = ray_origin(rays, args->N, i), direction = ray_direction(rays, args->N, i);
-        const double t_near = RTCRayN_tnear(rays, args->N, i);
-        float& t_far = RTCRayN_tfar(rays, args->N, i);
-        SuperquadricWork work;
-        const auto t = s.first_crossing(origin, direction, t_near, t_far, work);
-        self->record_work(work);
-        if (!t || !(*t > t_near) || !(float(*t) < t_far)) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        user_geometry::store_hit(args, i, float(*t), s.normal(origin + direction * *t));
-    }
+    user_geometry::intersect_rays(
+        args, self->counter_slot_,
+        [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+            return self->first_hit(args->primID, origin, direction, t_near, t_far);
+        },
+        [&](unsigned i, const Vec3d& origin, const Vec3d& direction, double t) {
+            const Superquadric& s = self->superquadrics_[args->primID];
+            user_geometry::store_hit(args, i, float(t), s.normal(origin + direction * t));
+        });
 }
 
 void SuperquadricShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
-    const Superquadric& s = self->superquadrics_[args->primID];
-    RTCRayN* rays = args->ray;
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        counters::count_test(self->counter_slot_);
-        const double t_near = RTCRayN_tnear(rays, args->N, i);
-        float& t_far = RTCRayN_tfar(rays, args->N, i);
-        SuperquadricWork work;
-        const auto t = s.first_crossing(ray_origin(rays, args->N, i), ray_direction(rays, args->N, i), t_near, t_far,
-                                        work);
-        self->record_work(work);
-        if (!t || !(*t > t_near) || !(float(*t) < t_far)) continue;
-        counters::count_candidate_hit(self->counter_slot_);
-        t_far = -std::numeric_limits<float>::infinity();
-    }
+    user_geometry::occlude_rays(args, self->counter_slot_,
+                                [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+                                    return self->first_hit(args->primID, origin, direction, t_near, t_far);
+                                });
 }
 
 void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin, const Vec3d& direction,

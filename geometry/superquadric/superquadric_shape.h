@@ -2,6 +2,7 @@
 // The "superquadric" shape: a set of (deformed) superquadrics as one Embree user geometry, one primitive per
 // superquadric with the bound of its deformed box. It is also a Solid, so CSG can combine superquadrics: the
 // inside spans are the union of the superquadrics' own spans.
+#include <optional>
 #include <vector>
 
 #include "geometry/superquadric/superquadric.h"
@@ -34,6 +35,9 @@ private:
     void primitive_spans(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_min,
                          double t_max, std::vector<InsideSpan>& spans) const;
     void record_work(const SuperquadricWork& work) const;
+    // Superquadric `index`'s first crossing in (t_near, t_far), its work recorded.
+    std::optional<double> first_hit(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
+                                    float t_far) const;
 
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);

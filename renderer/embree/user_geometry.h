@@ -5,7 +5,9 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
+#include "renderer/core/render_counters.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace::user_geometry {
@@ -56,6 +58,42 @@ inline void store_hit(const RTCIntersectFunctionNArguments* args, unsigned i, fl
     RTCHitN_primID(hits, args->N, i) = args->primID;
     RTCHitN_geomID(hits, args->N, i) = args->geomID;
     RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+}
+
+// The loop of an intersect callback: for every active ray i of the packet, count an intersection test and ask
+// first_hit(origin, direction, t_near, t_far) for the primitive's hit distance (std::optional<double>, already
+// checked against the ray's interval as the shape needs); for a hit, count a candidate and call
+// record(i, origin, direction, t), which stores it (store_hit).
+template <class FirstHit, class Record>
+void intersect_rays(const RTCIntersectFunctionNArguments* args, int counter_slot, FirstHit&& first_hit,
+                    Record&& record) {
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        counters::count_test(counter_slot);
+        const Vec3d origin = ray_origin(rays, args->N, i), direction = ray_direction(rays, args->N, i);
+        const std::optional<double> t =
+            first_hit(origin, direction, double(RTCRayN_tnear(rays, args->N, i)), RTCRayN_tfar(rays, args->N, i));
+        if (!t) continue;
+        counters::count_candidate_hit(counter_slot);
+        record(i, origin, direction, *t);
+    }
+}
+
+// The loop of an occluded callback, with first_hit as above: a hit occludes the ray (t_far = −∞).
+template <class FirstHit>
+void occlude_rays(const RTCOccludedFunctionNArguments* args, int counter_slot, FirstHit&& first_hit) {
+    RTCRayN* rays = args->ray;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        counters::count_test(counter_slot);
+        float& t_far = RTCRayN_tfar(rays, args->N, i);
+        if (!first_hit(ray_origin(rays, args->N, i), ray_direction(rays, args->N, i),
+                       double(RTCRayN_tnear(rays, args->N, i)), t_far))
+            continue;
+        counters::count_candidate_hit(counter_slot);
+        t_far = -std::numeric_limits<float>::infinity();
+    }
 }
 
 }  // namespace isotrace::user_geometry
