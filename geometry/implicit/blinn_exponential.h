@@ -1,6 +1,6 @@
 #pragma once
 // Blinn's exponential "blobby" kernel (Blinn 1982), e^(−a·r²), truncated to the element's field radius R so that
-// every kernel has the same finite support (bounds, neighbour lists and ray pieces all rely on it).
+// every kernel has the same finite support (bounds, the element hierarchy and ray pieces all rely on it).
 //
 // Truncation: with x = r²/R² and a dimensionless sharpness a (Blinn's own a is a/R²), the kernel is
 //   f = (e^(−a·x) − e^(−a)) / (1 − e^(−a))

@@ -139,13 +139,17 @@ std::optional<double> BlobGroup::first_crossing(std::size_t index, const Vec3d& 
 
 int BlobGroup::crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                          std::vector<FieldCrossing>& out, BlobQueryWork& work) const {
-    std::vector<std::uint32_t> near;
+    // Per-thread buffers: CSG asks this for every ray that meets its bounds. (Embree's element queries and this
+    // never run inside one another, so sharing t_field is safe.)
+    thread_local std::vector<std::uint32_t> near;
+    thread_local std::vector<MetacubeRaySlices> slices;
+    near.clear();
+    slices.clear();
     bvh_.for_each_near_segment(origin, direction, t_min, t_max, [&](std::uint32_t i) {
         if (segment_may_meet(elements_[i], origin, direction, t_min, t_max)) near.push_back(i);
     });
-    std::vector<MetacubeRaySlices> slices;
-    slices.reserve(near.size());  // FieldAlongRay keeps pointers to them
-    FieldAlongRay field;
+    slices.reserve(near.size());  // FieldAlongRay keeps pointers to them: no reallocation below
+    FieldAlongRay& field = t_field;
     field.reset(*kernel_, threshold_, t_min, t_max);
     for (std::uint32_t i : near)
         if (auto s = MetacubeRaySlices::slice(elements_[i], origin, direction)) {

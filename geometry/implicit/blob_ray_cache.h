@@ -1,6 +1,6 @@
 #pragma once
 // What one thread has learnt about the ray it is tracing through a blob group. Embree asks every element whose
-// bounds the ray meets, one after another, and each query would otherwise slice the same neighbours along the
+// bounds the ray meets, one after another, and each query would otherwise slice the same nearby elements along the
 // same line and search the same stretches of it again. Two things carry over between those queries:
 //   - each element's slices along the line (they depend on neither t_near nor t_far), and
 //   - "settled" stretches: where a query has proven that the field keeps one sign, later queries start after them.

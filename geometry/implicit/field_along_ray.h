@@ -32,7 +32,7 @@ struct BlobQueryWork {
 struct FieldCrossing {
     double t = 0;
     bool entering = false;
-    std::uint32_t element = 0;  // an element whose support contains the crossing (its neighbours see the field)
+    std::uint32_t element = 0;  // an element whose support contains the crossing (the hit's primitive)
 };
 
 class FieldAlongRay {
