@@ -22,10 +22,6 @@ const double kSignificance = test_support::sidak_significance(0.01, std::size(kR
 const ComplexIor kGold = *find_conductor_preset("Au");
 const ComplexIor kPerfectMirror{Rgb(1.0f), Rgb(1e4f)};  // k -> infinity: F -> 1 at every angle
 
-std::string test_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info) {
-    return test_support::roughness_and_view_name(std::get<0>(info.param), std::get<1>(info.param));
-}
-
 class RoughConductorSampling : public testing::TestWithParam<std::tuple<Roughness, double>> {};
 
 TEST_P(RoughConductorSampling, MatchesPdf) {
@@ -38,7 +34,8 @@ TEST_P(RoughConductorSampling, MatchesPdf) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RoughnessAndView, RoughConductorSampling,
-                         testing::Combine(testing::ValuesIn(kRoughnesses), testing::ValuesIn(kViewAngles)), test_name);
+                         testing::Combine(testing::ValuesIn(kRoughnesses), testing::ValuesIn(kViewAngles)),
+                         test_support::roughness_and_view_name);
 
 TEST(ConductorBsdf, PdfMassIsTheShareReflectedAboveTheHorizon) {
     // At normal incidence the visible normals are distributed as D(m) m.z, whose share with tan^2(theta_m) <= t

@@ -22,10 +22,6 @@ constexpr float kEta = 1.5f;
 constexpr std::size_t kSamples = 100000;
 const double kSignificance = test_support::sidak_significance(0.01, std::size(kRoughnesses) * std::size(kViewAngles));
 
-std::string test_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info) {
-    return test_support::roughness_and_view_name(std::get<0>(info.param), std::get<1>(info.param));
-}
-
 class RoughDielectricSampling : public testing::TestWithParam<std::tuple<Roughness, double>> {};
 
 TEST_P(RoughDielectricSampling, MatchesPdf) {
@@ -39,7 +35,8 @@ TEST_P(RoughDielectricSampling, MatchesPdf) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RoughnessAndView, RoughDielectricSampling,
-                         testing::Combine(testing::ValuesIn(kRoughnesses), testing::ValuesIn(kViewAngles)), test_name);
+                         testing::Combine(testing::ValuesIn(kRoughnesses), testing::ValuesIn(kViewAngles)),
+                         test_support::roughness_and_view_name);
 
 TEST(DielectricBsdf, WrongPdfIsRejected) {
     // Proves the test can fail: samples refracted with IOR 1.5 judged against the density for IOR 1.33.

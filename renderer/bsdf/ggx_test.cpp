@@ -41,10 +41,6 @@ TEST(Ggx, MaskingIsTheSameFromBothSides) {
     EXPECT_LE(ggx.g2(w, view_at(30)), std::min(ggx.g1(w), ggx.g1(view_at(30))));
 }
 
-std::string test_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info) {
-    return test_support::roughness_and_view_name(std::get<0>(info.param), std::get<1>(info.param));
-}
-
 class GgxVisibleNormalSampling : public testing::TestWithParam<std::tuple<Roughness, double>> {};
 
 TEST_P(GgxVisibleNormalSampling, MatchesPdf) {
@@ -62,7 +58,7 @@ TEST_P(GgxVisibleNormalSampling, MatchesPdf) {
 
 INSTANTIATE_TEST_SUITE_P(RoughnessAndView, GgxVisibleNormalSampling,
                          testing::Combine(testing::ValuesIn(kRoughnesses), testing::ValuesIn(kViewAngles)),
-                         test_name);
+                         test_support::roughness_and_view_name);
 
 TEST(Ggx, WrongVisibleNormalPdfIsRejected) {
     // Proves the sampling test can fail: the plain distribution of normals D(m) m.z, i.e. the pdf without the

@@ -79,7 +79,9 @@ TEST(LambertBsdf, DegenerateDirectionsGiveNothingOrFiniteValues) {
         for (std::size_t i = 0; i < 1000; ++i) {
             const auto r = test_support::bsdf_random(i);
             const std::optional<BsdfSample> s = bsdf.sample(wo, r.u_lobe, r.u);
-            if (s) ASSERT_TRUE(s->weight.is_finite() && is_finite(s->wi));
+            if (s) {
+                ASSERT_TRUE(s->weight.is_finite() && is_finite(s->wi));
+            }
         }
     }
 }

@@ -182,7 +182,8 @@ std::size_t count_bad_samples(const Bsdf& bsdf, const Vec3f& wo, std::size_t sam
     return bad;
 }
 
-std::string roughness_and_view_name(const Roughness& roughness, double theta) {
+std::string roughness_and_view_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info) {
+    const auto& [roughness, theta] = info.param;
     return "alpha" + std::to_string(int(roughness.alpha_x * 100)) + "x" + std::to_string(int(roughness.alpha_y * 100)) +
            "_theta" + std::to_string(int(theta));
 }

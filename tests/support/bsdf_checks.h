@@ -5,6 +5,9 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <tuple>
+
+#include <gtest/gtest.h>
 
 #include "renderer/bsdf/bsdf.h"
 #include "tests/support/chi_square.h"
@@ -21,8 +24,8 @@ struct Roughness {
 inline constexpr Roughness kRoughnesses[] = {{0.05f, 0.05f}, {0.3f, 0.3f}, {0.8f, 0.8f}, {0.1f, 0.6f}};
 // wo at polar angle theta (degrees from the normal) and azimuth 30 degrees.
 inline Vec3f view_at(double theta) { return direction_from_degrees(theta, 30); }
-// Parameterised-test name such as "alpha10x60_theta85".
-std::string roughness_and_view_name(const Roughness& roughness, double theta);
+// Name of a test parameterised by (roughness, view angle), such as "alpha10x60_theta85".
+std::string roughness_and_view_name(const testing::TestParamInfo<std::tuple<Roughness, double>>& info);
 
 // The random numbers of the i-th BSDF sample: independent and deterministic (the chi-square test assumes
 // independent samples).
