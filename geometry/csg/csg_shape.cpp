@@ -141,7 +141,7 @@ RTCGeometry CsgShape::create_geometry(RTCDevice device) {
     return geometry_.create(device, *this, counters::geometry_type_slot(type_name(), true), bounds());
 }
 
-LocalShading CsgShape::shading(const RTCHit& hit, const Vec3f& geometric_normal) const {
+LocalShading CsgShape::shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d&) const {
     return {geometric_normal, geometric_normal, {0, 0}, hit.primID};  // primID: the part (SolidUserGeometry)
 }
 

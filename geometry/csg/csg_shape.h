@@ -39,7 +39,7 @@ public:
     bool can_bake(const Transform&) const override { return true; }
     void bake(const Transform& to_world) override;
     RTCGeometry create_geometry(RTCDevice device) override;
-    LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const override;
+    LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d& point) const override;
     std::vector<MaterialReference> part_materials() const override;
 
     void prepare_span_queries(RTCDevice device) override;

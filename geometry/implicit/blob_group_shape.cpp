@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "geometry/csg/inside_span_list.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/user_geometry.h"
 
@@ -36,7 +37,7 @@ void BlobGroupShape::register_counters() {
 }
 
 void BlobGroupShape::count_work(const BlobQueryWork& work) const {
-    if (work.pieces == 0 && work.roots == 0) return;  // most queries find their stretch settled already
+    if (work.pieces == 0 && work.roots == 0) return;
     for (const WorkSlots& slots : {all_groups_, this_group_}) {
         counters::add_to_named(slots.pieces, work.pieces);
         counters::add_to_named(slots.skipped, work.skipped_pieces);
@@ -49,22 +50,28 @@ void BlobGroupShape::count_work(const BlobQueryWork& work) const {
 
 RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {
     register_counters();
-    return user_geometry::create(device, this, unsigned(group_.elements().size()), bounds_callback,
+    return user_geometry::create(device, this, unsigned(group_.cells().cells().size()), bounds_callback,
                                  intersect_callback, occluded_callback);
 }
 
 void BlobGroupShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
     const auto* self = static_cast<const BlobGroupShape*>(args->geometryUserPtr);
-    const WorldBounds support = self->group_.elements()[args->primID].support_bounds();
-    user_geometry::store_bounds(args->bounds_o, support.lower, support.upper);
+    const BlobCells::Cell& cell = self->group_.cells().cells()[args->primID];
+    user_geometry::store_bounds(args->bounds_o, cell.lower, cell.upper);
 }
 
-std::optional<double> BlobGroupShape::first_hit(std::uint32_t element, const Vec3d& origin, const Vec3d& direction,
+std::optional<double> BlobGroupShape::first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
                                                 double t_near, float t_far) const {
     BlobQueryWork work;
-    const auto t = group_.first_crossing(element, origin, direction, t_near, t_far, work);
+    const auto crossing = group_.first_crossing_in_cell(cell, origin, direction, t_near, t_far, work);
     count_work(work);
-    return t;
+    if (!crossing) return std::nullopt;
+    return crossing->t;
+}
+
+LocalShading BlobGroupShape::shading(const RTCHit& hit, const Vec3f&, const Vec3d& point) const {
+    const Vec3f normal(group_.normal_in_cell(hit.primID, point));
+    return {normal, normal};
 }
 
 void BlobGroupShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
@@ -76,8 +83,8 @@ void BlobGroupShape::intersect_callback(const RTCIntersectFunctionNArguments* ar
             if (!t || !(float(*t) < t_far)) return std::nullopt;
             return t;
         },
-        [&](unsigned i, const Vec3d& origin, const Vec3d& direction, double t) {
-            user_geometry::store_hit(args, i, float(t), self->group_.normal(origin + direction * t));
+        [&](unsigned i, const Vec3d&, const Vec3d&, double t) {
+            user_geometry::store_hit(args, i, float(t), {0, 0, 1});  // the normal comes with shading()
         });
 }
 
@@ -91,25 +98,16 @@ void BlobGroupShape::occluded_callback(const RTCOccludedFunctionNArguments* args
 
 void BlobGroupShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                                   std::vector<InsideSpan>& spans) const {
-    thread_local std::vector<FieldCrossing> crossings;
-    crossings.clear();
+    std::vector<FieldCrossing> crossings;
     BlobQueryWork work;
     const int sign_at_start = group_.crossings(origin, direction, t_min, t_max, crossings, work);
     count_work(work);
-    // Crossings alternate in direction (each one flips the field's sign), so spans pair entries with exits.
-    std::optional<BoundaryPoint> entry;
-    if (sign_at_start > 0) entry = BoundaryPoint{t_min, {0, 0, 1}, BoundaryPoint::kCut};
-    for (const FieldCrossing& crossing : crossings) {
-        const BoundaryPoint point{crossing.t, group_.normal(origin + direction * crossing.t),
-                                  crossing.element};
-        if (crossing.entering) {
-            if (!entry) entry = point;
-        } else if (entry) {
-            spans.push_back({*entry, point});
-            entry.reset();
-        }
-    }
-    if (entry) spans.push_back({*entry, BoundaryPoint{t_max, {0, 0, 1}, BoundaryPoint::kCut}});
+    append_spans_from_crossings(
+        std::span<const FieldCrossing>(crossings), sign_at_start > 0, t_min, t_max,
+        [&](const FieldCrossing& c) {
+            return BoundaryPoint{c.t, group_.normal(origin + direction * c.t), c.element, 0};
+        },
+        spans);
 }
 
 }  // namespace isotrace

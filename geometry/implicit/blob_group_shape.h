@@ -1,8 +1,9 @@
 #pragma once
-// The "blobs" shape: a BlobGroup as one Embree user geometry, one primitive per element, bounds = the element's
-// support. Each element's intersect callback reports the first crossing of the summed field within its own
-// support; Embree's shrinking t_far makes the nearest of them the hit. As a CSG operand the group is a solid:
-// inside is where the summed field exceeds the threshold.
+// The "blobs" shape: a BlobGroup as one Embree user geometry, one primitive per cell (blob_cells.h), bounds =
+// the cell's box. A cell's intersect callback reports the first crossing of the summed field within the cell;
+// cells are disjoint, so Embree's shrinking t_far makes the nearest of them the hit and culls the cells behind
+// it. Normals are computed for the accepted hit only (shading). As a CSG operand the group is a solid: inside is
+// where the summed field exceeds the threshold.
 #include "geometry/implicit/blob_group.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/plugin/solid.h"
@@ -14,6 +15,7 @@ public:
     explicit BlobGroupShape(BlobGroup group);
 
     std::string type_name() const override { return "blobs"; }
+    // Elements, as the user counts them (Embree sees the cells: blob_cells.h).
     std::size_t primitive_count() const override { return group_.elements().size(); }
     std::size_t memory_bytes() const override { return group_.memory_bytes(); }
     Bounds3f bounds() const override;
@@ -23,6 +25,7 @@ public:
         if (!to_world.is_identity()) group_.bake(to_world, to_world.similarity_scale());
     }
     RTCGeometry create_geometry(RTCDevice device) override;
+    LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d& point) const override;
 
     void prepare_span_queries(RTCDevice) override { register_counters(); }
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
@@ -33,8 +36,8 @@ public:
 private:
     void register_counters();
     void count_work(const BlobQueryWork& work) const;
-    // Element `element`'s first crossing in (t_near, t_far), its work counted.
-    std::optional<double> first_hit(std::uint32_t element, const Vec3d& origin, const Vec3d& direction, double t_near,
+    // The first crossing in (t_near, t_far) within cell `cell`, its work counted.
+    std::optional<double> first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near,
                                     float t_far) const;
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);

@@ -115,13 +115,13 @@ TEST(BlobGroupSolid, SpansOfARandomGroupMatchDenseSampling) {
     EXPECT_GT(spans_seen, 30);
 }
 
-// Embree asks the elements in its own order while t_far shrinks; the per-ray cache of settled stretches must not
-// make the nearest hit depend on that order.
-TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfElementQueries) {
+// Embree asks the cells in its own order while t_far shrinks: the nearest hit must not depend on that order, and
+// must be the first of all crossings.
+TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfCellQueries) {
     const BlobGroup group = random_blob_group(80, 12, "wyvill", 7);
     std::mt19937 random(7);
     std::uniform_real_distribution<double> unit(-1, 1);
-    std::vector<std::size_t> order(group.elements().size());
+    std::vector<std::uint32_t> order(group.cells().cells().size());
     std::iota(order.begin(), order.end(), 0);
     int hits = 0;
     for (int ray = 0; ray < 120; ++ray) {
@@ -134,8 +134,9 @@ TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfElementQueries) {
         for (int trial = 0; trial < 4; ++trial) {
             std::shuffle(order.begin(), order.end(), random);
             std::optional<double> best;
-            for (std::size_t i : order)
-                if (const auto t = group.first_crossing(i, origin, direction, 0, best.value_or(1e30), work)) best = t;
+            for (std::uint32_t cell : order)
+                if (const auto c = group.first_crossing_in_cell(cell, origin, direction, 0, best.value_or(1e30), work))
+                    best = c->t;
             ASSERT_EQ(best.has_value(), expected.has_value()) << "ray " << ray << " trial " << trial;
             if (best) {
                 EXPECT_NEAR(*best, *expected, 1e-9) << "ray " << ray << " trial " << trial;

@@ -18,6 +18,13 @@ BlobGroup lone(const Metacube& element, const std::string& kernel, double thresh
     return BlobGroup({element}, make_field_function(kernel, 4.0), threshold);
 }
 
+std::optional<double> first_t(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction, double t_min,
+                              double t_max) {
+    BlobQueryWork work;
+    const auto crossing = group.first_crossing(origin, direction, t_min, t_max, work);
+    return crossing ? std::optional(crossing->t) : std::nullopt;
+}
+
 TEST(BlobGroup, LoneMetaballOfEveryKernelIsASphereOfTheIsoRadius) {
     std::mt19937 random(11);
     std::uniform_real_distribution<double> unit(-1, 1);
@@ -34,8 +41,7 @@ TEST(BlobGroup, LoneMetaballOfEveryKernelIsASphereOfTheIsoRadius) {
             const Vec3d aim = centre + Vec3d(unit(random), unit(random), unit(random)) * (0.6 * iso);
             const Vec3d direction = (aim - origin) * 0.37;
             const auto expected = intersect_sphere(origin, direction, centre, iso);
-            BlobQueryWork work;
-            const auto t = group.first_crossing(0, origin, direction, 0, 1e30, work);
+            const auto t = first_t(group, origin, direction, 0, 1e30);
             ASSERT_EQ(t.has_value(), expected.has_value()) << kernel << " ray " << i;
             if (!t) continue;
             ++hits;
@@ -51,8 +57,7 @@ TEST(BlobGroup, LoneMetaballOfEveryKernelIsASphereOfTheIsoRadius) {
 TEST(BlobGroup, RayStartingInsideReportsTheExit) {
     const BlobGroup group = lone(Metacube::metaball({0, 0, 0}, 1.0, 1.0), "kim");
     const double iso = *group.kernel().iso_radius(1.0, 1.0, 0.5);
-    BlobQueryWork work;
-    const auto t = group.first_crossing(0, {0.1, 0, 0}, {1, 0, 0}, 0, 1e30, work);
+    const auto t = first_t(group, {0.1, 0, 0}, {1, 0, 0}, 0, 1e30);
     ASSERT_TRUE(t);
     EXPECT_NEAR(*t, iso - 0.1, 1e-9);
 }
@@ -94,12 +99,13 @@ std::optional<double> reference_crossing(const BlobGroup& group, const Vec3d& or
     return std::nullopt;
 }
 
-// The nearest crossing over all elements, as Embree finds it (each element's query shrinks t_far).
+// The nearest crossing over all cells, as Embree finds it (each cell's query shrinks t_far).
 std::optional<double> nearest_crossing(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction) {
     std::optional<double> best;
     BlobQueryWork work;
-    for (std::size_t i = 0; i < group.elements().size(); ++i)
-        if (const auto t = group.first_crossing(i, origin, direction, 0, best.value_or(1e30), work)) best = t;
+    for (std::uint32_t cell = 0; cell < group.cells().cells().size(); ++cell)
+        if (const auto c = group.first_crossing_in_cell(cell, origin, direction, 0, best.value_or(1e30), work))
+            best = c->t;
     return best;
 }
 
@@ -138,13 +144,7 @@ TEST(BlobGroup, RaysFromInsideCrossAnOddNumberOfTimes) {
         const Vec3d direction = normalize(Vec3d(unit(random), unit(random), unit(random)));
         int crossings = 0;
         double t = 0;
-        while (const auto next = [&] {
-            std::optional<double> best;
-            BlobQueryWork work;
-            for (std::size_t i = 0; i < group.elements().size(); ++i)
-                if (const auto c = group.first_crossing(i, origin, direction, t, best.value_or(1e30), work)) best = c;
-            return best;
-        }()) {
+        while (const auto next = first_t(group, origin, direction, t, 1e30)) {
             ++crossings;
             t = *next + 1e-9;
         }

@@ -5,6 +5,10 @@
 #include <limits>
 #include <utility>
 
+#include "geometry/polynomial/quadratic_roots.h"
+#include "geometry/sphere/sphere_intersection.h"
+#include "renderer/math/line_box_clip.h"
+
 namespace isotrace {
 namespace {
 
@@ -13,22 +17,15 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The part of [begin, end] where the convex quadratic q is ≤ level, if any.
 std::optional<std::pair<double, double>> where_at_most(const QuadraticAbout& q, double level, double begin,
                                                        double end) {
-    const double c = q.c0 - level;
     double low = -kInfinity, high = kInfinity;  // roots of c2·s² + c1·s + c in s = t − t_ref
     if (q.c2 == 0) {
         // No axis that contributes to dist² moves along the ray (then c1 = 0 too): q is constant.
-        if (c > 0) return std::nullopt;
+        if (q.c0 > level) return std::nullopt;
     } else {
-        const double discriminant = q.c1 * q.c1 - 4 * q.c2 * c;
-        if (discriminant < 0) return std::nullopt;
-        // The two roots without cancellation: m/c2 and c/m.
-        const double m = -0.5 * (q.c1 + std::copysign(std::sqrt(discriminant), q.c1));
-        if (m == 0) {
-            low = high = 0;  // c1 = c = 0: a double root at t_ref
-        } else {
-            low = std::min(m / q.c2, c / m);
-            high = std::max(m / q.c2, c / m);
-        }
+        const QuadraticRoots roots = quadratic_roots(q.c2, q.c1, q.c0 - level);
+        if (roots.count == 0) return std::nullopt;
+        low = roots.roots[0];
+        high = roots.roots[roots.count - 1];
     }
     const double from = std::max(begin, q.t_ref + low), to = std::min(end, q.t_ref + high);
     if (from > to) return std::nullopt;
@@ -41,25 +38,29 @@ std::optional<MetacubeRaySlices> MetacubeRaySlices::slice(const Metacube& elemen
                                                           const Vec3d& direction) {
     MetacubeRaySlices slices;
     const OrientedBox& box = element.skeleton();
+    if (box.half_size == Vec3d(0, 0, 0)) {
+        // A metaball: one piece, between the roots of the support sphere; distances need no rotation.
+        const auto roots = intersect_sphere(origin, direction, box.centre, element.radius());
+        if (!roots || !(roots->t0 < roots->t1)) return std::nullopt;
+        slices.local_origin_ = origin - box.centre;
+        slices.local_direction_ = direction;
+        slices.half_size_ = box.half_size;
+        slices.pieces_[0] = {roots->t0, roots->t1, {1, 1, 1}};
+        slices.count_ = 1;
+        return slices;
+    }
     const Vec3d o = box.to_local(origin), v = box.to_local_vector(direction), d = box.half_size;
     slices.local_origin_ = o;
     slices.local_direction_ = v;
     slices.half_size_ = d;
     const double radius = element.radius();
 
-    // The box grown by R contains the support: clip the line to it first (slab test).
-    double t0 = -kInfinity, t1 = kInfinity;
-    for (int k = 0; k < 3; ++k) {
-        const double reach = d[k] + radius;
-        if (v[k] == 0) {
-            if (std::abs(o[k]) > reach) return std::nullopt;
-            continue;
-        }
-        const double a = (-reach - o[k]) / v[k], b = (reach - o[k]) / v[k];
-        t0 = std::max(t0, std::min(a, b));
-        t1 = std::min(t1, std::max(a, b));
-    }
-    if (!(t0 < t1) || !std::isfinite(t0) || !std::isfinite(t1)) return std::nullopt;
+    // The box grown by R contains the support: clip the line to it first.
+    const Vec3d reach = d + Vec3d(radius, radius, radius);
+    const auto clip = clip_line_to_box(-reach, reach, o, v, -kInfinity, kInfinity);
+    if (!clip || !(clip->t_enter < clip->t_exit) || !std::isfinite(clip->t_enter) || !std::isfinite(clip->t_exit))
+        return std::nullopt;
+    const double t0 = clip->t_enter, t1 = clip->t_exit;
 
     // Breakpoints: crossings of the face planes pₖ = ±dₖ (an axis with dₖ = 0 has no slab, so no change of form).
     // At most eight cuts: inserting each in order keeps them sorted.

@@ -145,7 +145,7 @@ void TriangleMeshShape::inside_spans(const Vec3d& origin, const Vec3d& direction
     for (const InsideSpan& span : unclipped) append_clipped_span(span, t_min, t_max, spans);
 }
 
-LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_normal) const {
+LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_normal, const Vec3d&) const {
     LocalShading result;
     result.geometric_normal = embree_normal;  // Embree's Ng = (v1-v0)x(v2-v0): the counter-clockwise front
     result.normal = result.geometric_normal;

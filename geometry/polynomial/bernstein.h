@@ -20,7 +20,9 @@ BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval);
 
 // False only when every Bernstein coefficient on [0,1] is certainly non-zero (beyond its rounding bound) and all
 // have the same sign: then the polynomial has no root in the closed interval [0,1] and the piece can be skipped.
-// True means "may have a root", including coefficients that are zero or too small to trust.
-bool bernstein_has_sign_change(const Polynomial& on_unit_interval);
+// True means "may have a root", including coefficients that are zero or too small to trust. `coefficient_error`
+// bounds Σᵢ|Δaᵢ|, the error the caller's coefficients already carry (it bounds each Bernstein value's error too,
+// as the conversion weights are ≤ 1).
+bool bernstein_has_sign_change(const Polynomial& on_unit_interval, double coefficient_error = 0);
 
 }  // namespace isotrace

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "geometry/polynomial/bracketed_root.h"
+#include "geometry/polynomial/quadratic_roots.h"
 
 namespace isotrace {
 namespace {
@@ -30,14 +31,9 @@ double interval_error_bound(const Polynomial& p, double a, double b) {
 PolynomialRoots quadratic_roots_inside(const Polynomial& quadratic, double a, double b,
                                        const RootTolerance& tolerance) {
     PolynomialRoots roots;
-    const double c = quadratic[0], b1 = quadratic[1], a2 = quadratic[2];
-    const double discriminant = b1 * b1 - 4 * a2 * c;
-    if (discriminant < 0) return roots;
-    const double q = -0.5 * (b1 + std::copysign(std::sqrt(discriminant), b1));
-    double r0 = q / a2, r1 = q != 0 ? c / q : r0;
-    if (r0 > r1) std::swap(r0, r1);
-    for (double r : {r0, r1})
-        if (r > a && r < b) roots.add({r}, tolerance);
+    const QuadraticRoots solved = quadratic_roots(quadratic[2], quadratic[1], quadratic[0]);
+    for (int i = 0; i < solved.count; ++i)
+        if (solved.roots[i] > a && solved.roots[i] < b) roots.add({solved.roots[i]}, tolerance);
     return roots;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "geometry/polynomial/quadratic_roots.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
@@ -17,18 +18,14 @@ inline std::optional<SphereRoots> intersect_sphere(const Vec3d& origin, const Ve
                                                    double radius) {
     const Vec3d f = origin - centre;
     const double a = dot(direction, direction);
-    const double b = -dot(f, direction);  // half of the usual -b
+    const double half_b = dot(f, direction);
     // |f - (f.d/a) d|^2 is the squared distance from the centre to the line, computed without cancellation.
-    const Vec3d to_line = f + direction * (b / a);
-    const double discriminant = a * (radius * radius - dot(to_line, to_line));
-    if (discriminant < 0) return std::nullopt;
-    const double root = std::sqrt(discriminant);
-    const double c = dot(f, f) - radius * radius;
-    const double q = b + std::copysign(root, b);
-    double t0 = c / q, t1 = q / a;
-    if (q == 0) t0 = t1 = 0;  // origin at the centre's projection and on the sphere
-    if (t0 > t1) std::swap(t0, t1);
-    return SphereRoots{t0, t1};
+    const Vec3d to_line = f - direction * (half_b / a);
+    const double quarter_discriminant = a * (radius * radius - dot(to_line, to_line));
+    const QuadraticRoots roots = quadratic_roots_with_discriminant(a, 2 * half_b, dot(f, f) - radius * radius,
+                                                                   4 * quarter_discriminant);
+    if (roots.count == 0) return std::nullopt;
+    return SphereRoots{roots.roots[0], roots.roots[roots.count - 1]};
 }
 
 }  // namespace isotrace

@@ -139,7 +139,7 @@ void SphereShape::inside_spans(const Vec3d& origin, const Vec3d& direction, doub
     combine_span_events(CsgOperation::Union, std::uint32_t(spheres_.size()), events, spans);
 }
 
-LocalShading SphereShape::shading(const RTCHit&, const Vec3f& geometric_normal) const {
+LocalShading SphereShape::shading(const RTCHit&, const Vec3f& geometric_normal, const Vec3d&) const {
     // Spherical coordinates of the normal, y up: u around the axis, v from the top (0) to the bottom (1).
     const float u = 0.5f + std::atan2(geometric_normal.x, geometric_normal.z) * float(0.5 * std::numbers::inv_pi);
     const float v = std::acos(std::clamp(geometric_normal.y, -1.0f, 1.0f)) * float(std::numbers::inv_pi);

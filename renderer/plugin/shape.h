@@ -83,8 +83,11 @@ public:
     }
     virtual float surface_area() const { return 0; }
 
-    // Completes a hit found by Embree in this shape's space. `geometric_normal` is Embree's Ng normalised.
-    virtual LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal) const {
+    // Completes a hit found by Embree in this shape's space: `geometric_normal` is Embree's Ng normalised and
+    // `point` the hit position. Only the accepted hit is completed, so shapes whose normals cost work (implicit
+    // surfaces) compute them here instead of for every candidate hit.
+    virtual LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d& point) const {
+        (void)point;
         return {geometric_normal, geometric_normal, {hit.u, hit.v}};
     }
 

@@ -137,7 +137,10 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     hit.object_index = object_index;
     hit.primitive_id = query.hit.primID;
     const Vec3f embree_ng = safe_normalize(Vec3f(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z), {0, 0, 1});
-    const LocalShading local = object.shape->shading(query.hit, embree_ng);
+    // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
+    const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(hit.t);
+    const Vec3d local_point = object.instanced ? object.to_world.inverse().point(world_point) : world_point;
+    const LocalShading local = object.shape->shading(query.hit, embree_ng, local_point);
     hit.material = object.material_of_part(local.part);
     hit.uv = local.uv;
     if (object.instanced) {  // Embree reports Ng in the instanced object's space

@@ -1,0 +1,126 @@
+#include "geometry/implicit/blob_cells.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace isotrace {
+namespace {
+
+// A cell stops splitting when it lists at most this many elements...
+constexpr std::size_t kLeafElements = 8;
+// ...or when its longest side is at most this many mean support radii of its elements: smaller cells would list
+// nearly the same elements again (supports overlap), costing memory for little less work per ray.
+constexpr double kSmallestCellInRadii = 1.0;
+
+// Support radius: R plus the half-diagonal of the skeleton box.
+double reach(const Metacube& element) { return element.radius() + length(element.skeleton().half_size); }
+
+// Does the element's support reach into the closed box? Exact for metaballs (distance from the centre to the box
+// ≤ R); the support's bounding box for metacubes (a few extra elements in corner cells, never a missing one).
+bool support_meets(const Metacube& element, const WorldBounds& box) {
+    const WorldBounds support = element.support_bounds();
+    for (int k = 0; k < 3; ++k)
+        if (support.lower[k] > box.upper[k] || support.upper[k] < box.lower[k]) return false;
+    if (element.skeleton().half_size != Vec3d(0, 0, 0)) return true;
+    const Vec3d& c = element.skeleton().centre;
+    const Vec3d gap = max(max(box.lower - c, c - box.upper), Vec3d(0, 0, 0));
+    return dot(gap, gap) <= element.radius() * element.radius();
+}
+
+int longest_axis(const Vec3d& extent) {
+    return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+}
+
+}  // namespace
+
+void BlobCells::build(std::span<const Metacube> elements) {
+    nodes_.clear();
+    cells_.clear();
+    element_ids_.clear();
+    if (elements.empty()) return;
+    WorldBounds root = elements[0].support_bounds();
+    for (const Metacube& element : elements) {
+        const WorldBounds b = element.support_bounds();
+        root = {min(root.lower, b.lower), max(root.upper, b.upper)};
+    }
+    std::vector<std::uint32_t> all(elements.size());
+    std::iota(all.begin(), all.end(), 0u);
+    nodes_.emplace_back();
+    build_node(elements, 0, root, all, 0);
+    nodes_.shrink_to_fit();
+    cells_.shrink_to_fit();
+    element_ids_.shrink_to_fit();
+}
+
+void BlobCells::build_node(std::span<const Metacube> elements, std::uint32_t node, const WorldBounds& box,
+                           const std::vector<std::uint32_t>& ids, int depth) {
+    const Vec3d extent = box.upper - box.lower;
+    const int axis = longest_axis(extent);
+    double mean_reach = 0;
+    for (std::uint32_t id : ids) mean_reach += reach(elements[id]);
+    mean_reach /= double(std::max<std::size_t>(ids.size(), 1));
+
+    std::vector<std::uint32_t> below, above;
+    WorldBounds below_box = box, above_box = box;
+    const double split = 0.5 * (box.lower[axis] + box.upper[axis]);
+    const bool may_split = ids.size() > kLeafElements && extent[axis] > kSmallestCellInRadii * mean_reach &&
+                           depth < kMaxDepth && split > box.lower[axis] && split < box.upper[axis];
+    if (may_split) {
+        below_box.upper[axis] = above_box.lower[axis] = split;
+        for (std::uint32_t id : ids) {
+            if (support_meets(elements[id], below_box)) below.push_back(id);
+            if (support_meets(elements[id], above_box)) above.push_back(id);
+        }
+    }
+    // Coincident or nested supports: when no element is left behind by either side, splitting only duplicates.
+    if (!may_split || (below.size() == ids.size() && above.size() == ids.size())) {
+        if (ids.empty()) return;  // the node stays an empty leaf
+        Cell cell;
+        cell.lower = box.upper;
+        cell.upper = box.lower;
+        for (std::uint32_t id : ids) {
+            const WorldBounds support = elements[id].support_bounds();
+            cell.lower = min(cell.lower, support.lower);
+            cell.upper = max(cell.upper, support.upper);
+        }
+        cell.lower = max(cell.lower, box.lower);  // shrunk to what its elements reach, inside its kd cell
+        cell.upper = min(cell.upper, box.upper);
+        cell.first = std::uint32_t(element_ids_.size());
+        cell.count = std::uint32_t(ids.size());
+        element_ids_.insert(element_ids_.end(), ids.begin(), ids.end());
+        nodes_[node].child = std::uint32_t(cells_.size());
+        cells_.push_back(cell);
+        return;
+    }
+    const std::uint32_t child = std::uint32_t(nodes_.size());
+    nodes_[node].axis = std::uint32_t(axis);
+    nodes_[node].split = split;
+    nodes_[node].child = child;
+    nodes_.emplace_back();
+    nodes_.emplace_back();
+    build_node(elements, child, below_box, below, depth + 1);
+    build_node(elements, child + 1, above_box, above, depth + 1);
+}
+
+std::size_t BlobCells::memory_bytes() const {
+    return nodes_.capacity() * sizeof(Node) + cells_.capacity() * sizeof(Cell) +
+           element_ids_.capacity() * sizeof(std::uint32_t);
+}
+
+std::span<const std::uint32_t> BlobCells::elements_near(const Vec3d& p) const {
+    if (nodes_.empty()) return {};
+    std::uint32_t index = 0;
+    while (nodes_[index].axis != 3) {
+        const Node& node = nodes_[index];
+        index = node.child + (p[int(node.axis)] <= node.split ? 0 : 1);
+    }
+    const std::uint32_t cell = nodes_[index].child;
+    if (cell == kNoCell) return {};
+    const Cell& c = cells_[cell];
+    for (int k = 0; k < 3; ++k)
+        if (p[k] < c.lower[k] || p[k] > c.upper[k]) return {};
+    return elements_of(c);
+}
+
+}  // namespace isotrace

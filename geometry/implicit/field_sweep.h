@@ -1,0 +1,514 @@
+#pragma once
+// The summed field F(t) = Σ wᵢ·fᵢ(dist²ᵢ(o + t·d)) − T of a blob group along one stretch [t_begin, t_end] of a
+// ray (one cell's part of it, blob_cells.h), swept once from front to back:
+//   1. the cell's elements whose bounding sphere the stretch meets become candidates, ordered by entry;
+//   2. a candidate joins the sweep when the sweep reaches its entry: it is cut into pieces on which its field is
+//      one closed form (metacube region pieces, metacube_ray_slices.h; kernel pieces such as Nishimura's r = R/3);
+//   3. between consecutive events (an entry, an exit, a piece boundary) F is a polynomial in t when every kernel
+//      piece is one. The sum is kept up to date by adding an element's polynomial when it starts to count and
+//      subtracting it when it stops, and recomposed from scratch before any solve and every kRecomposeEvery
+//      updates, so rounding drift never decides anything (the skip test allows for the drift bound);
+//   4. each piece is first tested by its Bernstein coefficients (all of one sign beyond rounding and drift: no
+//      crossing), and only the others are solved (monotone_root_finder.h), or searched with a Lipschitz bound
+//      when a non-polynomial kernel piece (Blinn, Nishimura's outer piece) is present;
+//   5. crossings are reported in increasing t; the caller's `report` decides whether the sweep goes on (a
+//      nearest-hit or shadow query stops at the first, CSG takes them all).
+// F > 0 is inside. Every crossing is a sign change of F: a tangent touch (a double root) is not one.
+//
+// Kernel is the concrete FieldFunction class, so that its calls inline (no virtual call per evaluation).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "geometry/implicit/field_function.h"
+#include "geometry/implicit/metacube.h"
+#include "geometry/implicit/metacube_ray_slices.h"
+#include "geometry/polynomial/bernstein.h"
+#include "geometry/polynomial/monotone_root_finder.h"
+#include "geometry/polynomial/quadratic_roots.h"
+#include "renderer/core/inline_vector.h"
+
+namespace isotrace {
+
+// Work done by ray queries, for the statistics.
+struct BlobQueryWork {
+    std::uint64_t pieces = 0;             // ray pieces examined
+    std::uint64_t skipped_pieces = 0;     // of which the Bernstein or interval bound proved free of crossings
+    std::uint64_t polynomial_solves = 0;
+    std::uint64_t lipschitz_searches = 0;
+    std::uint64_t root_iterations = 0;  // Newton/bisection steps of the polynomial solves and Lipschitz searches
+    std::uint64_t roots = 0;            // crossings reported
+
+    BlobQueryWork& operator+=(const BlobQueryWork& other) {
+        pieces += other.pieces;
+        skipped_pieces += other.skipped_pieces;
+        polynomial_solves += other.polynomial_solves;
+        lipschitz_searches += other.lipschitz_searches;
+        root_iterations += other.root_iterations;
+        roots += other.roots;
+        return *this;
+    }
+};
+
+// A sign change of F: entering the surface (F becomes > 0) or leaving it.
+struct FieldCrossing {
+    double t = 0;
+    bool entering = false;
+    std::uint32_t element = 0;  // an element whose support contains the crossing
+};
+
+// The stretch of a ray one sweep examines.
+struct SweepStretch {
+    Vec3d origin, direction;  // direction need not be unit length
+    double t_begin = 0, t_end = 0;  // the part swept (a cell's part of the ray)
+    double t_min = 0, t_max = 0;    // crossings are reported only inside (t_min, t_max)
+};
+
+namespace field_sweep_detail {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+constexpr int kRecomposeEvery = 16;
+constexpr double kUnset = std::numeric_limits<double>::infinity();
+
+inline int sign_of(double value) { return value > 0 ? 1 : -1; }
+
+// w·Σₖ βₖ·qᵏ as a polynomial in s, for a kernel piece Σₖ βₖ·(r²)ᵏ and r²(s) = q(s) (Horner on coefficients).
+inline Polynomial compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
+    std::array<double, kMaxPolynomialDegree + 1> acc{};
+    acc[0] = piece.coefficients[std::size_t(piece.degree)];
+    std::size_t degree = 0;
+    for (int k = piece.degree - 1; k >= 0; --k) {
+        std::array<double, kMaxPolynomialDegree + 1> next{};
+        for (std::size_t i = 0; i <= degree; ++i) {
+            next[i] += acc[i] * q.c0;
+            next[i + 1] += acc[i] * q.c1;
+            next[i + 2] += acc[i] * q.c2;
+        }
+        next[0] += piece.coefficients[std::size_t(k)];
+        acc = next;
+        degree += 2;
+    }
+    for (std::size_t i = 0; i <= degree; ++i) acc[i] *= weight;
+    return Polynomial(std::span<const double>(acc.data(), degree + 1));
+}
+
+// Smallest and largest value of the quadratic q (a squared distance, never below 0) on [s0, s1].
+struct Range {
+    double low, high;
+};
+inline Range quadratic_range(const QuadraticAbout& q, double s0, double s1) {
+    const double at_s0 = q(s0), at_s1 = q(s1);
+    const double vertex = q.c2 > 0 ? std::clamp(q.t_ref - q.c1 / (2 * q.c2), s0, s1) : s0;
+    return {std::max(0.0, std::min({at_s0, at_s1, q(vertex)})), std::max(at_s0, at_s1)};
+}
+
+// Σ |cᵢ|·xⁱ: bounds |p(s)| for |s| ≤ x, and the effect of coefficient errors.
+inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c, double x) {
+    double m = 0;
+    for (int i = kMaxPolynomialDegree; i >= 0; --i) m = m * x + std::abs(c[std::size_t(i)]);
+    return m;
+}
+
+}  // namespace field_sweep_detail
+
+template <class Kernel>
+class FieldSweep {
+public:
+    FieldSweep(const Kernel& kernel, double threshold, std::span<const Metacube> elements)
+        : kernel_(kernel), threshold_(threshold), elements_(elements), unit_pieces_(kernel.unit_pieces()) {}
+
+    // Sweeps `stretch` over the field of the elements `candidates` (every element whose support may reach the
+    // stretch must be among them). Calls report(crossing) for each crossing in increasing t; report returns
+    // true to stop. `work` collects the statistics.
+    template <class Report>
+    void run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch, BlobQueryWork& work,
+             Report&& report);
+
+private:
+    // An element whose bounding sphere the stretch meets, waiting for the sweep to reach its entry.
+    struct Candidate {
+        double t_enter;  // bounding-sphere entry (the support's entry for a metaball)
+        std::uint32_t index;
+    };
+    // An element the sweep has reached. Before its support it does not count; from there its pieces follow each
+    // other until the support ends.
+    struct Active {
+        Active(std::uint32_t index, const MetacubeRaySlices& slices) : index(index), slices(slices) {}
+        std::uint32_t index;
+        MetacubeRaySlices slices;
+        int region = -1;                           // current region piece, −1 before the support
+        const FieldPiece* kernel_piece = nullptr;  // nullptr: not counting on the current piece
+        double next_event = 0;                     // where its current piece ends (kUnset: never again)
+        Polynomial contribution;                   // its term of the sum on the current piece (polynomial pieces)
+        QuadraticAbout q;                          // dist² on the current piece, in s = t − t_ref_
+    };
+
+    void gather(std::span<const std::uint32_t> candidates, const SweepStretch& stretch);
+    // Joins every candidate whose entry is ≤ t, each brought to its piece at t.
+    void join_until(double t, const SweepStretch& stretch);
+    // Brings element `a` to the piece that starts at t (it counts from there on), updating the sum.
+    void enter_piece(Active& a, double t);
+    void add_to_sum(const Polynomial& p, double sign);
+    // The sum from the counting elements' terms, without drift; drops elements that are done.
+    void recompose();
+    // F at t from the counting elements (the polynomial sum plus the non-polynomial pieces).
+    double value(double t) const;
+    double hard_cube_step_before(double t) const;
+    // The kernel on x = r²/R², zero beyond the support (rounding can put a support end a hair past x = 1).
+    double unit_value(double x) const { return x < 1 ? kernel_.unit_value(x) : 0; }
+    double unit_derivative(double x) const { return x < 1 ? kernel_.unit_derivative(x) : 0; }
+
+    const Kernel& kernel_;
+    double threshold_;
+    std::span<const Metacube> elements_;
+    std::span<const FieldPiece> unit_pieces_;
+    double t_ref_ = 0;  // the sum is a polynomial in s = t − t_ref_
+
+    InlineVector<Candidate, 64> candidates_;  // by entry
+    std::size_t next_candidate_ = 0;
+    InlineVector<Active, 24> joined_;
+    Polynomial sum_;                                          // Σ contributions − T, in s
+    std::array<double, kMaxPolynomialDegree + 1> drift_{};  // Σ |coefficients| of the updates since recompose
+    int updates_ = 0;
+    int non_polynomial_ = 0;  // counting elements whose current kernel piece is not a polynomial
+};
+
+template <class Kernel>
+void FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, const SweepStretch& stretch) {
+    candidates_.clear();
+    next_candidate_ = 0;
+    const Vec3d& o = stretch.origin;
+    const Vec3d& d = stretch.direction;
+    const double dd = dot(d, d);
+    for (std::uint32_t index : candidates) {
+        // The element's support lies in the sphere of radius R + |half-size| about its centre: entry and exit of
+        // the line through that sphere (exact for metaballs, whose support is the sphere).
+        const Metacube& element = elements_[index];
+        const Vec3d& half = element.skeleton().half_size;
+        const double half2 = dot(half, half);
+        const double reach = element.radius() + (half2 > 0 ? std::sqrt(half2) : 0.0);
+        const Vec3d f = o - element.skeleton().centre;
+        const double half_b = dot(f, d);
+        const Vec3d to_line = f - d * (half_b / dd);
+        const double quarter_discriminant = dd * (reach * reach - dot(to_line, to_line));
+        if (!(quarter_discriminant > 0)) continue;
+        const QuadraticRoots roots =
+            quadratic_roots_with_discriminant(dd, 2 * half_b, dot(f, f) - reach * reach, 4 * quarter_discriminant);
+        const double t_in = roots.roots[0], t_out = roots.roots[roots.count - 1];
+        if (!(t_out > stretch.t_begin && t_in < stretch.t_end)) continue;
+        candidates_.push_back({t_in, index});
+    }
+    std::sort(candidates_.begin(), candidates_.end(), [](const Candidate& x, const Candidate& y) {
+        return x.t_enter < y.t_enter || (x.t_enter == y.t_enter && x.index < y.index);
+    });
+}
+
+template <class Kernel>
+void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch) {
+    while (next_candidate_ < candidates_.size() && candidates_[next_candidate_].t_enter <= t) {
+        const std::uint32_t index = candidates_[next_candidate_++].index;
+        const auto slices = MetacubeRaySlices::slice(elements_[index], stretch.origin, stretch.direction);
+        if (!slices || slices->t_out() <= t) continue;
+        enter_piece(joined_.push_back(Active(index, *slices)), t);
+    }
+}
+
+template <class Kernel>
+void FieldSweep<Kernel>::add_to_sum(const Polynomial& p, double sign) {
+    if (sign > 0) {
+        sum_ += p;
+    } else {
+        sum_ -= p;
+    }
+    for (int i = 0; i <= p.degree(); ++i) drift_[std::size_t(i)] += std::abs(p[i]);
+    ++updates_;
+}
+
+template <class Kernel>
+void FieldSweep<Kernel>::recompose() {
+    sum_ = Polynomial{-threshold_};
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < joined_.size(); ++i) {
+        if (joined_[i].next_event == field_sweep_detail::kUnset) continue;
+        if (kept != i) joined_[kept] = joined_[i];
+        const Active& a = joined_[kept++];
+        if (a.kernel_piece && a.kernel_piece->is_polynomial) sum_ += a.contribution;
+    }
+    joined_.truncate(kept);
+    drift_ = {};
+    for (int i = 0; i <= sum_.degree(); ++i) drift_[std::size_t(i)] = std::abs(sum_[i]);
+    updates_ = 0;
+}
+
+template <class Kernel>
+void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
+    const Metacube& element = elements_[a.index];
+    // Leave the previous piece.
+    if (a.kernel_piece) {
+        if (a.kernel_piece->is_polynomial) {
+            add_to_sum(a.contribution, -1);
+        } else {
+            --non_polynomial_;
+        }
+        a.kernel_piece = nullptr;
+    }
+    const MetacubeRaySlices& slices = a.slices;
+    const auto pieces = slices.pieces();
+    if (t >= slices.t_out()) {
+        a.next_event = field_sweep_detail::kUnset;
+        return;
+    }
+    if (t < slices.t_in()) {  // not yet inside its support
+        a.region = -1;
+        a.next_event = slices.t_in();
+        return;
+    }
+    if (a.region < 0) a.region = 0;
+    while (a.region + 1 < int(pieces.size()) && pieces[std::size_t(a.region)].t_end <= t) ++a.region;
+    const RegionPiece& region = pieces[std::size_t(a.region)];
+    a.next_event = region.t_end;
+    a.q = slices.distance_squared(region, t_ref_);
+    const double radius = element.radius();
+    if (element.is_hard_cube()) {
+        // A hard cube counts w inside its box (the region piece with U = 0) and nothing elsewhere.
+        static constexpr FieldPiece kConstant{0, 0, true, 0, {1, 0, 0, 0}};
+        if (region.region == std::array<int, 3>{0, 0, 0}) {
+            a.kernel_piece = &kConstant;
+            a.contribution = Polynomial{element.weight()};
+            add_to_sum(a.contribution, 1);
+        }
+        return;
+    }
+    // Kernel piece boundaries (levels of r²) split the region piece further.
+    const double radius2 = radius * radius;
+    for (std::size_t k = 1; k < unit_pieces_.size(); ++k) {
+        const double level = unit_pieces_[k].r2_begin * radius2;
+        const QuadraticRoots roots = quadratic_roots(a.q.c2, a.q.c1, a.q.c0 - level);
+        for (int r = 0; r < roots.count; ++r) {
+            const double crossing = t_ref_ + roots.roots[r];
+            if (crossing > t && crossing < a.next_event) a.next_event = crossing;
+        }
+    }
+    const double r2_middle = a.q(0.5 * (t + a.next_event));
+    for (const FieldPiece& unit : unit_pieces_)
+        if (r2_middle >= unit.r2_begin * radius2 && r2_middle <= unit.r2_end * radius2) a.kernel_piece = &unit;
+    if (!a.kernel_piece) return;  // beyond the support on this piece (rounding at its ends)
+    if (!a.kernel_piece->is_polynomial) {
+        ++non_polynomial_;
+        return;
+    }
+    // The unit piece is in x = r²/R²: scale its coefficients to powers of r².
+    FieldPiece scaled = *a.kernel_piece;
+    double power = 1;
+    for (int k = 0; k <= scaled.degree; ++k, power *= radius2) scaled.coefficients[std::size_t(k)] /= power;
+    a.contribution = field_sweep_detail::compose_with_quadratic(scaled, element.weight(), a.q);
+    add_to_sum(a.contribution, 1);
+}
+
+template <class Kernel>
+double FieldSweep<Kernel>::value(double t) const {
+    double sum = sum_.evaluate(t - t_ref_);
+    if (non_polynomial_ == 0) return sum;
+    for (const Active& a : joined_) {
+        if (!a.kernel_piece || a.kernel_piece->is_polynomial) continue;
+        const Metacube& element = elements_[a.index];
+        const double radius = element.radius();
+        sum += element.weight() * unit_value(a.q(t) / (radius * radius));
+    }
+    return sum;
+}
+
+// The hard cubes' share of F just before t minus just after it: a hard cube's closed box counts at its faces,
+// so entering one is a step up at t itself and leaving one a step down just after it.
+template <class Kernel>
+double FieldSweep<Kernel>::hard_cube_step_before(double t) const {
+    double step = 0;
+    for (const Active& a : joined_) {
+        const Metacube& element = elements_[a.index];
+        if (!element.is_hard_cube()) continue;
+        const bool inside_after = a.kernel_piece != nullptr;
+        const bool inside_before = a.slices.t_in() < t && t <= a.slices.t_out();
+        step += element.weight() * ((inside_before ? 1 : 0) - (inside_after ? 1 : 0));
+    }
+    return step;
+}
+
+template <class Kernel>
+template <class Report>
+void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch,
+                             BlobQueryWork& work, Report&& report) {
+    using namespace field_sweep_detail;
+    gather(candidates, stretch);
+    joined_.clear();
+    non_polynomial_ = 0;
+    t_ref_ = stretch.t_begin;
+    sum_ = Polynomial{-threshold_};
+    drift_ = {};
+    drift_[0] = threshold_;
+    updates_ = 0;
+
+    // Reports a crossing at t from sign `before` to the other; true when the sweep must stop.
+    std::uint32_t witness = 0;
+    const auto crossing = [&](double t, int before) {
+        if (!(t > stretch.t_min && t < stretch.t_max)) return false;
+        ++work.roots;
+        return report(FieldCrossing{t, before < 0, witness});
+    };
+
+    double t0 = stretch.t_begin;
+    join_until(t0, stretch);
+    int previous_sign = sign_of(value(t0) + hard_cube_step_before(t0));
+    while (t0 < stretch.t_end) {
+        // The piece [t0, t1] ends at the next event.
+        double t1 = stretch.t_end;
+        if (next_candidate_ < candidates_.size()) t1 = std::min(t1, candidates_[next_candidate_].t_enter);
+        for (const Active& a : joined_) {
+            t1 = std::min(t1, a.next_event);
+            if (a.kernel_piece) witness = a.index;
+        }
+        if (t1 > t0) {
+            ++work.pieces;
+            const double s0 = t0 - t_ref_, width = t1 - t0;
+            bool solve = true;
+            int start_sign = 0;
+            if (non_polynomial_ == 0) {
+                // Bernstein test on the sum as it stands, allowing for its drift since the last recompose.
+                const Polynomial on_piece = sum_.compose_linear(s0, width);
+                // The shift to the piece rounds too: 2·degree + 2 operations per coefficient.
+                const double drift = 4 * kEpsilon * (updates_ + 2 * sum_.degree() + 2) *
+                                     magnitude_at(drift_, std::abs(s0) + width);
+                start_sign = sign_of(on_piece[0]);
+                solve = bernstein_has_sign_change(on_piece, drift);
+            } else {
+                // Interval bound: each non-polynomial kernel is monotone in r², the polynomial part is bounded by
+                // its Bernstein hull.
+                const BernsteinCoefficients hull = to_bernstein(sum_.compose_linear(s0, width));
+                double low = *std::min_element(hull.values.begin(), hull.values.begin() + hull.degree + 1);
+                double high = *std::max_element(hull.values.begin(), hull.values.begin() + hull.degree + 1);
+                for (const Active& a : joined_) {
+                    if (!a.kernel_piece || a.kernel_piece->is_polynomial) continue;
+                    const Metacube& element = elements_[a.index];
+                    const double radius2 = element.radius() * element.radius();
+                    const Range r2 = quadratic_range(a.q, t0, t1);
+                    const double f_high = element.weight() * unit_value(r2.low / radius2);
+                    const double f_low = element.weight() * unit_value(r2.high / radius2);
+                    low += std::min(f_low, f_high);
+                    high += std::max(f_low, f_high);
+                }
+                const double slack = 1e-12 * (std::abs(low) + std::abs(high) + threshold_);
+                solve = !(high < -slack || low > slack);
+                start_sign = sign_of(low);
+            }
+            if (!solve) {
+                ++work.skipped_pieces;
+                // Only a step (a hard cube's face) at t0 can be a crossing here.
+                if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
+                previous_sign = start_sign;
+            } else if (non_polynomial_ == 0) {
+                ++work.polynomial_solves;
+                if (updates_ > 0) recompose();
+                const Polynomial on_piece = sum_.compose_linear(s0, width);
+                // A start within rounding of zero is a root at t0 the previous piece already ended on: no step.
+                if (!on_piece.is_zero_within_rounding(0)) {
+                    const int sign_at_start = sign_of(on_piece[0]);
+                    if (sign_at_start != previous_sign && crossing(t0, previous_sign)) return;
+                    previous_sign = sign_at_start;
+                }
+                // Roots in order; a tangent root touches without crossing, and a root whose direction repeats the
+                // last sign change is the piece-start step found again.
+                RootFinderWork root_work;
+                for (double from = 0; from <= 1;) {
+                    const auto root = first_root(on_piece, from, 1, {}, &root_work);
+                    if (!root) break;
+                    from = root->t + 1e-12;
+                    if (root->tangent) continue;
+                    const int after = on_piece.evaluate_with_derivative(root->t).derivative > 0 ? 1 : -1;
+                    if (after == previous_sign) continue;
+                    const int before = previous_sign;
+                    previous_sign = after;
+                    if (crossing(t0 + root->t * width, before)) {
+                        work.root_iterations += root_work.iterations;
+                        return;
+                    }
+                }
+                work.root_iterations += root_work.iterations;
+                if (!on_piece.is_zero_within_rounding(1)) previous_sign = sign_of(on_piece.evaluate(1));
+            } else {
+                ++work.lipschitz_searches;
+                const int sign_at_start = sign_of(value(t0 + width * 1e-12));
+                if (sign_at_start != previous_sign && crossing(t0, previous_sign)) return;
+                previous_sign = sign_at_start;
+                // |dF/dt| on the piece: the polynomial part's derivative hull, plus per non-polynomial element
+                // |w|·max|f'|·max|q'| (f is convex non-increasing in r², so max|f'| is at the smallest r²).
+                const BernsteinCoefficients slope_hull =
+                    to_bernstein(sum_.compose_linear(s0, width).derivative());
+                double lipschitz = 0;
+                for (int k = 0; k <= slope_hull.degree; ++k)
+                    lipschitz = std::max(lipschitz, std::abs(slope_hull.values[std::size_t(k)]));
+                lipschitz /= width;
+                for (const Active& a : joined_) {
+                    if (!a.kernel_piece || a.kernel_piece->is_polynomial) continue;
+                    const Metacube& element = elements_[a.index];
+                    const double radius2 = element.radius() * element.radius();
+                    const double slope =
+                        std::max(std::abs(a.q.c1 + 2 * a.q.c2 * s0), std::abs(a.q.c1 + 2 * a.q.c2 * (s0 + width)));
+                    lipschitz += std::abs(element.weight()) *
+                                 std::abs(unit_derivative(quadratic_range(a.q, t0, t1).low / radius2) /
+                                          radius2) *
+                                 slope;
+                }
+                // Subdivide until a sign change brackets a root or the bound proves there is none; nearer halves
+                // first, so crossings come out in increasing t.
+                struct Span {
+                    double lo, hi, f_lo, f_hi;
+                };
+                Span stack[64];
+                int top = 0;
+                stack[top++] = {t0, t1, value(t0), value(t1)};
+                while (top > 0) {
+                    const Span span = stack[--top];
+                    if ((span.f_lo < 0) != (span.f_hi < 0)) {
+                        double lo = span.lo, hi = span.hi, f_lo = span.f_lo;
+                        for (int i = 0; i < 200 && hi - lo > 1e-13 * (1 + std::abs(hi)); ++i) {
+                            ++work.root_iterations;
+                            const double mid = 0.5 * (lo + hi);
+                            const double f_mid = value(mid);
+                            if ((f_mid < 0) == (f_lo < 0)) {
+                                lo = mid;
+                                f_lo = f_mid;
+                            } else {
+                                hi = mid;
+                            }
+                        }
+                        const int before = sign_of(span.f_lo);
+                        previous_sign = -before;
+                        if (crossing(hi, before)) return;
+                        continue;
+                    }
+                    if (std::abs(span.f_lo) + std::abs(span.f_hi) > lipschitz * (span.hi - span.lo)) continue;
+                    if (top + 2 > 64 || span.hi - span.lo < 1e-13 * (1 + std::abs(span.hi))) continue;
+                    ++work.root_iterations;
+                    const double mid = 0.5 * (span.lo + span.hi);
+                    const double f_mid = value(mid);
+                    stack[top++] = {mid, span.hi, f_mid, span.f_hi};
+                    stack[top++] = {span.lo, mid, span.f_lo, f_mid};
+                }
+                previous_sign = sign_of(value(t1));
+            }
+        }
+        if (t1 >= stretch.t_end) return;
+        // Events at t1: pieces that end there move on (exits leave the sum), then newcomers join.
+        for (Active& a : joined_)
+            if (a.next_event <= t1) enter_piece(a, t1);
+        join_until(t1, stretch);
+        if (updates_ >= kRecomposeEvery) recompose();
+        t0 = t1;
+    }
+}
+
+}  // namespace isotrace
