@@ -8,10 +8,10 @@ namespace isotrace {
 namespace {
 
 // A cell stops splitting when it lists at most this many elements...
-constexpr std::size_t kLeafElements = 8;
+constexpr std::size_t kLeafElements = 16;
 // ...or when its longest side is at most this many mean support radii of its elements: smaller cells would list
 // nearly the same elements again (supports overlap), costing memory for little less work per ray.
-constexpr double kSmallestCellInRadii = 1.0;
+constexpr double kSmallestCellInRadii = 2.0;
 
 // Support radius: R plus the half-diagonal of the skeleton box.
 double reach(const Metacube& element) { return element.radius() + length(element.skeleton().half_size); }

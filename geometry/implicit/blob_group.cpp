@@ -23,6 +23,12 @@ BlobGroup::BlobGroup(std::vector<Metacube> elements, std::unique_ptr<const Field
     else if (name == "wyvill") kernel_kind_ = KernelKind::Wyvill;
     else if (name == "kim") kernel_kind_ = KernelKind::Kim;
     else throw std::invalid_argument("field: unknown field function \"" + std::string(name) + "\"");
+    build_index();
+}
+
+void BlobGroup::build_index() {
+    spheres_.resize(elements_.size());
+    for (std::size_t i = 0; i < elements_.size(); ++i) spheres_[i] = BoundingSphere::of(elements_[i]);
     cells_.build(elements_);
 }
 
@@ -46,11 +52,12 @@ void BlobGroup::bake(const Transform& similarity, double scale) {
         box.half_size = box.half_size * scale;
         element = Metacube(box, element.radius() * scale, element.weight());
     }
-    cells_.build(elements_);
+    build_index();
 }
 
 std::size_t BlobGroup::memory_bytes() const {
-    return sizeof(*this) + elements_.capacity() * sizeof(Metacube) + cells_.memory_bytes();
+    return sizeof(*this) + elements_.capacity() * sizeof(Metacube) + spheres_.capacity() * sizeof(BoundingSphere) +
+           cells_.memory_bytes();
 }
 
 template <class Report>
@@ -62,7 +69,8 @@ void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d&
     if (!clip || !std::isfinite(clip->t_enter) || !std::isfinite(clip->t_exit)) return;
     const SweepStretch stretch{origin, direction, clip->t_enter, clip->t_exit, t_min, t_max};
     with_kernel([&](const auto& kernel) {
-        FieldSweep sweep(kernel, threshold_, std::span<const Metacube>(elements_));
+        FieldSweep sweep(kernel, threshold_, std::span<const Metacube>(elements_),
+                         std::span<const BoundingSphere>(spheres_));
         sweep.run(cells_.elements_of(cell), stretch, work, report);
     });
 }

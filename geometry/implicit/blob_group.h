@@ -55,6 +55,7 @@ public:
     void bake(const Transform& similarity, double scale);
 
 private:
+    void build_index();
     enum class KernelKind { Blinn, Nishimura, Murakami, Wyvill, Kim };
     // Calls f with the kernel as its concrete class, so that the sweep's kernel calls are direct.
     template <class F>
@@ -69,6 +70,7 @@ private:
     std::unique_ptr<const FieldFunction> kernel_;
     KernelKind kernel_kind_;
     double threshold_;
+    std::vector<BoundingSphere> spheres_;  // per element, for the sweep's first test
     BlobCells cells_;
 };
 

@@ -25,7 +25,10 @@ Bounds3f BlobGroupShape::bounds() const {
 void BlobGroupShape::register_counters() {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
     const auto slots = [](const std::string& prefix) {
-        return WorkSlots{counters::named_counter_slot(prefix + ".pieces"),
+        return WorkSlots{counters::named_counter_slot(prefix + ".cell_queries"),
+                         counters::named_counter_slot(prefix + ".candidates"),
+                         counters::named_counter_slot(prefix + ".elements_joined"),
+                         counters::named_counter_slot(prefix + ".pieces"),
                          counters::named_counter_slot(prefix + ".pieces_skipped_by_bounds"),
                          counters::named_counter_slot(prefix + ".polynomial_solves"),
                          counters::named_counter_slot(prefix + ".lipschitz_searches"),
@@ -37,8 +40,11 @@ void BlobGroupShape::register_counters() {
 }
 
 void BlobGroupShape::count_work(const BlobQueryWork& work) const {
-    if (work.pieces == 0 && work.roots == 0) return;
+    if (work.queries == 0) return;
     for (const WorkSlots& slots : {all_groups_, this_group_}) {
+        counters::add_to_named(slots.queries, work.queries);
+        counters::add_to_named(slots.candidates, work.candidates);
+        counters::add_to_named(slots.joined, work.joined);
         counters::add_to_named(slots.pieces, work.pieces);
         counters::add_to_named(slots.skipped, work.skipped_pieces);
         counters::add_to_named(slots.solves, work.polynomial_solves);

@@ -47,7 +47,7 @@ private:
     int counter_slot_ = 0;
     // Work counters for all blob groups ("blobs.pieces", ...) and for this one ("blobs[name].pieces", ...).
     struct WorkSlots {
-        int pieces, skipped, solves, searches, iterations, roots;
+        int queries, candidates, joined, pieces, skipped, solves, searches, iterations, roots;
     };
     WorkSlots all_groups_{}, this_group_{};
 };

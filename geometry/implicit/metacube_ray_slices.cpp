@@ -36,19 +36,13 @@ std::optional<std::pair<double, double>> where_at_most(const QuadraticAbout& q, 
 
 std::optional<MetacubeRaySlices> MetacubeRaySlices::slice(const Metacube& element, const Vec3d& origin,
                                                           const Vec3d& direction) {
-    MetacubeRaySlices slices;
     const OrientedBox& box = element.skeleton();
     if (box.half_size == Vec3d(0, 0, 0)) {
-        // A metaball: one piece, between the roots of the support sphere; distances need no rotation.
         const auto roots = intersect_sphere(origin, direction, box.centre, element.radius());
         if (!roots || !(roots->t0 < roots->t1)) return std::nullopt;
-        slices.local_origin_ = origin - box.centre;
-        slices.local_direction_ = direction;
-        slices.half_size_ = box.half_size;
-        slices.pieces_[0] = {roots->t0, roots->t1, {1, 1, 1}};
-        slices.count_ = 1;
-        return slices;
+        return metaball(origin, direction, box.centre, roots->t0, roots->t1);
     }
+    MetacubeRaySlices slices;
     const Vec3d o = box.to_local(origin), v = box.to_local_vector(direction), d = box.half_size;
     slices.local_origin_ = o;
     slices.local_direction_ = v;
@@ -106,6 +100,18 @@ std::optional<MetacubeRaySlices> MetacubeRaySlices::slice(const Metacube& elemen
         if (piece.t_begin < piece.t_end) slices.pieces_[kept++] = piece;
     }
     slices.count_ = kept;
+    return slices;
+}
+
+// One piece between the support sphere's roots; distances need no rotation (the box has no extent).
+MetacubeRaySlices MetacubeRaySlices::metaball(const Vec3d& origin, const Vec3d& direction, const Vec3d& centre,
+                                              double t_in, double t_out) {
+    MetacubeRaySlices slices;
+    slices.local_origin_ = origin - centre;
+    slices.local_direction_ = direction;
+    slices.half_size_ = {0, 0, 0};
+    slices.pieces_[0] = {t_in, t_out, {1, 1, 1}};
+    slices.count_ = 1;
     return slices;
 }
 

@@ -47,6 +47,9 @@ public:
     // misses the support (or only touches it). A zero direction misses.
     static std::optional<MetacubeRaySlices> slice(const Metacube& element, const Vec3d& origin,
                                                   const Vec3d& direction);
+    // A metaball's single piece, when the roots t_in < t_out of its support sphere are known already.
+    static MetacubeRaySlices metaball(const Vec3d& origin, const Vec3d& direction, const Vec3d& centre, double t_in,
+                                      double t_out);
 
     // The support interval: dist(o + t·dir) ≤ R exactly for t in [t_in, t_out] (up to rounding).
     double t_in() const { return pieces_[0].t_begin; }
@@ -61,7 +64,7 @@ private:
     std::array<int, 3> region_at(double t) const;
 
     Vec3d local_origin_, local_direction_, half_size_;
-    std::array<RegionPiece, kMaxPieces> pieces_{};
+    std::array<RegionPiece, kMaxPieces> pieces_;  // [0, count_) are set; the rest is never read
     int count_ = 0;
 };
 

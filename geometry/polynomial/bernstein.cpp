@@ -6,12 +6,23 @@
 namespace isotrace {
 namespace {
 
+constexpr int kSize = kMaxPolynomialDegree + 1;
+
 constexpr auto kBinomials = [] {
-    std::array<std::array<double, kMaxPolynomialDegree + 1>, kMaxPolynomialDegree + 1> table{};
+    std::array<std::array<double, kSize>, kSize> table{};
     for (int n = 0; n <= kMaxPolynomialDegree; ++n) {
         table[n][0] = 1;
         for (int k = 1; k <= n; ++k) table[n][k] = table[n - 1][k - 1] + (k < n ? table[n - 1][k] : 0);
     }
+    return table;
+}();
+
+// The conversion weights C(k,i)/C(n,i) per degree n, computed once (the skip test runs for every ray piece).
+constexpr auto kWeights = [] {
+    std::array<std::array<std::array<double, kSize>, kSize>, kSize> table{};
+    for (int n = 0; n <= kMaxPolynomialDegree; ++n)
+        for (int k = 0; k <= n; ++k)
+            for (int i = 0; i <= k; ++i) table[n][k][i] = kBinomials[k][i] / kBinomials[n][i];
     return table;
 }();
 
@@ -26,7 +37,7 @@ BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval) {
     for (int k = 0; k <= n; ++k) {
         double value = 0, magnitude = 0;
         for (int i = 0; i <= k; ++i) {
-            const double term = kBinomials[k][i] / kBinomials[n][i] * on_unit_interval[i];
+            const double term = kWeights[n][k][i] * on_unit_interval[i];
             value += term;
             magnitude += std::abs(term);
         }

@@ -7,6 +7,7 @@
 #include <new>
 #include <memory>
 #include <type_traits>
+#include <utility>
 
 namespace isotrace {
 
@@ -31,11 +32,13 @@ public:
     T& back() { return data_[size_ - 1]; }
 
     void clear() { size_ = 0; }
-    // Appends a copy of `value` and returns it.
-    T& push_back(const T& value) {
+    // Appends T(args...) built in place and returns it.
+    template <class... Args>
+    T& emplace_back(Args&&... args) {
         if (size_ == capacity_) grow();
-        return *new (data_ + size_++) T(value);
+        return *new (data_ + size_++) T(std::forward<Args>(args)...);
     }
+    T& push_back(const T& value) { return emplace_back(value); }
     // Keeps the first `count` elements.
     void truncate(std::size_t count) {
         if (count < size_) size_ = count;
