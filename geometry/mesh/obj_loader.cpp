@@ -11,6 +11,7 @@
 #include "geometry/mesh/fan_triangulation.h"
 #include "geometry/mesh/file_contents.h"
 #include "geometry/mesh/mesh_index_problem.h"
+#include "geometry/mesh/obj_syntax_check.h"
 #include "renderer/core/input_error.h"
 
 namespace isotrace {
@@ -142,7 +143,9 @@ TriangleMeshData load_obj(const std::string& path) {
     config.vertex_color = false;
     tinyobj::ObjReader reader;
     // Parsing from memory keeps tinyobjloader from looking for .mtl files we do not use.
-    if (!reader.ParseFromString(read_file_contents(path), "", config)) {
+    const std::string text = read_file_contents(path);
+    check_obj_syntax(text, path);
+    if (!reader.ParseFromString(text, "", config)) {
         throw InputError({path, line_in_parser_message(reader.Error())}, "", trimmed(reader.Error()));
     }
     TriangleMeshData mesh = ObjMeshBuilder(path, reader.GetAttrib(), reader.GetShapes()).build();

@@ -212,9 +212,19 @@ TriangleMeshData parse_inline_mesh(const SceneNode& node) {
     return mesh;
 }
 
+// A problem inside the mesh file is reported with the scene line that names the file, then the file's own line.
+TriangleMeshData load_referenced_file(const SceneNode& node) {
+    const std::string path = node.file_path("file").string();
+    try {
+        return load_mesh_file(path);
+    } catch (const InputError& error) {
+        node.fail_at("file", error.what());
+    }
+}
+
 std::unique_ptr<Shape> create(const SceneNode& node) {
     if (node.has("file") && node.has("positions")) node.fail("give either \"file\" or inline \"positions\", not both");
-    TriangleMeshData mesh = node.has("file") ? load_mesh_file(node.file_path("file").string()) : parse_inline_mesh(node);
+    TriangleMeshData mesh = node.has("file") ? load_referenced_file(node) : parse_inline_mesh(node);
     mesh.remove_degenerate_triangles();
     if (mesh.triangles.empty()) node.fail("the mesh has no triangles of non-zero area");
     return std::make_unique<TriangleMeshShape>(std::move(mesh));

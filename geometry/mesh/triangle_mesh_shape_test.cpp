@@ -320,5 +320,15 @@ TEST(TriangleMeshShapeScene, MissingPartsAreInputErrors) {
     }
 }
 
+// A mesh file's own error used to name only the mesh file, not where the scene refers to it.
+TEST(TriangleMeshShapeScene, ErrorInsideTheMeshFileNamesTheSceneLineThatReferencesIt) {
+    ScratchDirectory dir;
+    const std::string obj = dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+    const std::string path = dir.write("scene.json", scene_json(R"({"type": "mesh", "file": ")" + obj + "\"}"));
+    const std::string message = input_error_message([&] { load_scene(path); });
+    EXPECT_EQ(message.rfind(path + ":", 0), 0u) << message;  // the scene file first
+    EXPECT_NE(message.find("objects[0].shape.file: " + obj + ":3: v line: \"nan\""), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace isotrace

@@ -11,6 +11,7 @@ namespace isotrace {
 namespace {
 
 constexpr double kDegrees = std::numbers::pi / 180;
+constexpr double kMaxTwistDegrees = 3600;  // ten turns end to end
 
 Deformation parse_bend(const SceneNode& bend, const IntervalBox& deformed_so_far) {
     double curvature = bend.number("curvature");
@@ -45,7 +46,12 @@ Deformation parse_deformation(const SceneNode& entry, double half_height, const 
         const std::vector<double> rates = entry.numbers("taper", 2);
         return Taper(rates[0], rates[1], half_height);
     }
-    if (entry.has("twist")) return Twist(entry.number("twist") * kDegrees / (2 * half_height), half_height);
+    // The crossing search subdivides until each cell turns by little: its work grows with the number of turns, so
+    // the total twist is bounded (1e9 degrees never finished and ignored Ctrl-C).
+    if (entry.has("twist"))
+        return Twist(entry.number("twist", NumberRange::between(-kMaxTwistDegrees, kMaxTwistDegrees)) * kDegrees /
+                         (2 * half_height),
+                     half_height);
     if (entry.has("bend")) return parse_bend(entry.object("bend"), deformed_so_far);
     entry.finish();  // names the unknown key, with a suggestion
     entry.fail("unknown deformation");

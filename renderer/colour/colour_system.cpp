@@ -3,6 +3,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "renderer/colour/cpu_processor_cache.h"
@@ -150,8 +151,24 @@ struct ColourSystem::State {
 ColourSystem::ColourSystem(const std::string& config_path, const std::string& working_space)
     : state_(std::make_unique<State>()) {
     state_->config_path = config_path.empty() ? default_ocio_config_path() : config_path;
-    state_->config = load_config(state_->config_path);
+    try {
+        state_->config = load_config(state_->config_path);
+    } catch (const InputError& error) {
+        const char* from_environment = std::getenv("OCIO");
+        if (config_path.empty() && from_environment && state_->config_path == from_environment)
+            throw InputError(error.location(), "$OCIO", error.problem());  // say where the path came from
+        throw;
+    }
     state_->working_space = state_->canonical_space(working_space, {}, "working_space");
+    // Rendering sums and scales radiance: that is only right in a scene-linear space. Configs without encodings
+    // cannot be checked and are trusted.
+    OCIO::ConstColorSpaceRcPtr space = state_->config->getColorSpace(state_->working_space.c_str());
+    const std::string encoding = space->getEncoding();
+    if (space->isData() || (!encoding.empty() && encoding != "scene-linear"))
+        throw InputError({}, "working_space",
+                         "the working space must be scene-linear, but \"" + state_->working_space + "\" is " +
+                             (space->isData() ? std::string("a data space") : "encoded \"" + encoding + "\"") +
+                             "; choose ACEScg, ACES2065-1 or lin_rec709");
 }
 
 ColourSystem::~ColourSystem() = default;

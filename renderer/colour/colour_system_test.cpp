@@ -137,7 +137,9 @@ TEST(ColourSystem, AliasesResolveToCanonicalNames) {
                                                                       {"aces2065_1", "ACES2065-1"},
                                                                       {"raw", "Raw"}};
     for (const auto& [alias, canonical] : aliases) {
-        EXPECT_EQ(ColourSystem(config, alias).working_space(), canonical) << alias;
+        if (alias != "srgb_texture" && alias != "srgb" && alias != "raw") {  // not scene-linear: no working space
+            EXPECT_EQ(ColourSystem(config, alias).working_space(), canonical) << alias;
+        }
         const ColourSystem colour(config);
         expect_rgb_near(colour.to_working(Rgb(0.2f, 0.5f, 0.8f), alias),
                         colour.to_working(Rgb(0.2f, 0.5f, 0.8f), canonical), 0.0f);
@@ -268,6 +270,29 @@ TEST(ColourSystem, UnknownWorkingSpaceSuggestsTheClosestName) {
         EXPECT_EQ(error.field(), "working_space");
         EXPECT_NE(std::string(error.what()).find("did you mean \"ACEScg\"?"), std::string::npos)
             << error.what();
+    }
+}
+
+TEST(ColourSystem, WorkingSpaceThatIsNotSceneLinearIsRejected) {
+    for (const std::string space : {"srgb_texture", "ACEScct", "Raw", "sRGB - Display"}) {
+        try {
+            ColourSystem(shipped_config(), space);
+            FAIL() << "expected InputError for " << space;
+        } catch (const InputError& error) {
+            EXPECT_EQ(error.field(), "working_space");
+            EXPECT_NE(std::string(error.what()).find("must be scene-linear"), std::string::npos) << error.what();
+        }
+    }
+}
+
+TEST(ColourSystem, UnloadableConfigFromTheOcioVariableSaysItCameFromThere) {
+    const ScopedEnvironmentVariable ocio("OCIO", std::string("/nonexistent/from_env.ocio"));
+    try {
+        ColourSystem("", "ACEScg");
+        FAIL() << "expected InputError";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.field(), "$OCIO");
+        EXPECT_NE(std::string(error.what()).find("/nonexistent/from_env.ocio"), std::string::npos) << error.what();
     }
 }
 

@@ -1,13 +1,20 @@
 #pragma once
 #include <filesystem>
-#include <functional>
+#include <string_view>
 
 namespace isotrace {
 
-// Calls write(temporary) with a sibling path of `target` that keeps its extension (image writers choose the
-// format by extension), then renames it over `target`. If write throws, the temporary is removed and
-// `target` is untouched, so a failure never leaves a truncated file under the requested name.
-void write_atomically(const std::filesystem::path& target,
-                      const std::function<void(const std::filesystem::path& temporary)>& write);
+// Writes `bytes` to `target` so that the target is afterwards either the complete new file or untouched.
+// The bytes go to a new hidden sibling with a random name (".<stem>.partial-<random><ext>"), created with
+// O_CREAT|O_EXCL|O_NOFOLLOW so that no planted file or symlink is ever opened or followed; they are flushed to
+// disk and the sibling is renamed over the target (rename replaces a symlink at `target`, never its referent).
+// Any failure — disk full (ENOSPC), a file-size limit (EFBIG), an unwritable directory — removes the sibling
+// and throws std::runtime_error naming the target and the reason.
+void write_file_atomically(const std::filesystem::path& target, std::string_view bytes);
+
+// Checks before any long work that write_file_atomically(target, ...) can succeed as far as permissions go: the
+// target is not a directory and a file can be created beside it (found by creating and removing an empty probe,
+// which also catches read-only file systems and ACLs, even for root). Throws std::runtime_error saying why not.
+void check_atomically_writable(const std::filesystem::path& target);
 
 }  // namespace isotrace

@@ -32,7 +32,9 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 }  // namespace
 
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates) {
-    if (word.empty()) return "";
+    // The edit distance costs |word| x |candidate|: no suggestion for words no one types by hand.
+    constexpr std::size_t kMaxWordLength = 256;
+    if (word.empty() || word.size() > kMaxWordLength) return "";
     // About one typo per three characters; beyond that a suggestion is more confusing than helpful.
     const std::size_t max_distance = std::max<std::size_t>(1, word.size() / 3);
     const std::string lower_word = lowercase(word);
@@ -40,6 +42,9 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
     const std::string* best = nullptr;
     std::size_t best_distance = max_distance + 1;
     for (const std::string& candidate : candidates) {
+        // The distance is at least the difference in length: skip the computation when that is already too far.
+        const std::size_t length_gap = std::max(word.size(), candidate.size()) - std::min(word.size(), candidate.size());
+        if (length_gap >= best_distance) continue;
         const std::size_t distance = edit_distance(lower_word, lowercase(candidate));
         if (distance < best_distance) {
             best = &candidate;

@@ -38,5 +38,13 @@ TEST(DidYouMean, ToleratesMoreTyposInLongerWords) {
     EXPECT_EQ(did_you_mean("Rxx", kNames), "");  // two edits in a three-letter word is a different word
 }
 
+TEST(DidYouMean, LongWordsAndFarCandidatesCostNoQuadraticWork) {
+    const std::string long_word(1 << 16, 'a');
+    std::vector<std::string> candidates(100, std::string(1 << 16, 'b'));
+    candidates.push_back("radius");
+    EXPECT_EQ(did_you_mean(long_word, candidates), "");  // would be 100 * 4e9 steps without the bounds
+    EXPECT_EQ(did_you_mean("raduis", candidates), " (did you mean \"radius\"?)");
+}
+
 }  // namespace
 }  // namespace isotrace

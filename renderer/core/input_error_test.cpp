@@ -12,6 +12,12 @@ TEST(InputError, NamesFileLineColumnFieldAndProblem) {
     EXPECT_STREQ(error.what(), "scenes/box.json:12:7: objects[1].shape.radius: must be > 0");
 }
 
+TEST(InputError, NulAndControlBytesAreSpelledOutSoTheMessageIsNotCutShort) {
+    const InputError error({"a.json", 1, 2}, std::string("objects.ke\0y", 12), std::string("unknown key \"ke\0y\"\x1b!", 20));
+    EXPECT_STREQ(error.what(), "a.json:1:2: objects.ke\\x00y: unknown key \"ke\\x00y\"\\x1b!");
+    EXPECT_EQ(error.problem(), std::string("unknown key \"ke\0y\"\x1b!", 20));  // raw, for re-throwing
+}
+
 TEST(InputError, KeepsLocationAndFieldForCallers) {
     const InputError error({"a.json", 3, 4}, "film.spp", "bad");
     EXPECT_EQ(error.location().file, "a.json");

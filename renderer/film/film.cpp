@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "renderer/core/memory_budget.h"
+
 namespace isotrace {
 namespace {
 
@@ -12,6 +14,14 @@ bool needs_hit_data(const std::vector<Aov>& aovs) {
 }
 
 }  // namespace
+
+std::uint64_t Film::memory_bytes(const FilmSettings& settings) {
+    std::uint64_t channels = 4;
+    for (Aov aov : settings.aovs) channels += aov_info(aov).channels.size();
+    const std::uint64_t per_pixel = sizeof(Accumulator) + (needs_hit_data(settings.aovs) ? sizeof(AovAccumulator) : 0) +
+                                    2 * channels * sizeof(float);
+    return saturating_product({std::uint64_t(settings.crop.area()), per_pixel});
+}
 
 Film::Film(FilmSettings settings) : settings_(std::move(settings)) {
     beauty_.resize(std::size_t(settings_.crop.area()));

@@ -47,6 +47,10 @@ class Film {
 public:
     explicit Film(FilmSettings settings);
 
+    // Bytes a film with these settings holds while rendering and writing: the accumulators, the resolved
+    // image and, at most, one encoded copy of it (image writers encode in memory before writing).
+    static std::uint64_t memory_bytes(const FilmSettings& settings);
+
     const FilmSettings& settings() const { return settings_; }
     const PixelBounds& bounds() const { return settings_.crop; }
 

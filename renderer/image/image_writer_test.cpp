@@ -229,6 +229,32 @@ TEST(ImageWriter, DisplayImageMatchesTheColourSystemsDisplayTransform) {
     }
 }
 
+// PNG, JPEG and TIFF carried no isotrace:partial/spp/render_seconds, so an interrupted render could not be told
+// from a finished one. (TIFFs encoded through an OIIO memory proxy lose their size tags: they must read back.)
+TEST(ImageWriter, DisplayImagesOfEveryFormatCarryTheRenderMetadata) {
+    const ScratchDirectory dir;
+    const ColourSystem colours("");
+    ImageMetadata metadata = test_metadata();
+    metadata.set("isotrace:partial", std::int64_t(1));
+    for (const std::string format : {"png", "jpg", "tif"}) {
+        const fs::path path = dir.path() / ("meta." + format);
+        write_display_image(path, test_image(), colours, "", "", metadata);
+        auto in = OIIO::ImageInput::open(path.string());
+        ASSERT_TRUE(in) << format << ": " << OIIO::geterror();
+        const OIIO::ImageSpec spec = in->spec();
+        EXPECT_EQ(spec.width, 5) << format;
+        EXPECT_EQ(spec.height, 3) << format;
+        const std::string description = spec.get_string_attribute("ImageDescription");
+        for (const char* entry : {"isotrace:partial=1", "isotrace:spp=64", "isotrace:render_seconds=1.5",
+                                  "isotrace:seed=18446744073709551615"})
+            EXPECT_NE(description.find(entry), std::string::npos) << format << ": " << description;
+        if (format == "png") {  // text chunks keep every entry under its own name
+            EXPECT_EQ(spec.get_string_attribute("isotrace:partial"), "1");
+            EXPECT_EQ(spec.get_string_attribute("isotrace:spp"), "64");
+        }
+    }
+}
+
 TEST(ImageWriter, FailedWriteLeavesNoFile) {
     const ScratchDirectory dir;
     const ImageBuffer image = test_image();

@@ -36,6 +36,8 @@ ISOTRACE_REGISTER_PLUGIN(light_registry, "directional",
                              if (!(length(direction) > 0)) node.fail_at("direction", "direction must not be zero");
                              const Rgb irradiance = node.colour_or("irradiance", Rgb(1.0f)) *
                                                     float(node.number_or("scale", 1.0, NumberRange::non_negative()));
+                             if (irradiance.r < 0 || irradiance.g < 0 || irradiance.b < 0)
+                                 node.fail_at("irradiance", "irradiance must not be negative");
                              return std::make_unique<DirectionalLight>(Vec3f(-normalize(direction)), irradiance);
                          })
 

@@ -158,7 +158,7 @@ std::unique_ptr<Light> create(const SceneNode& node) {
     if (!node.context().colours) node.fail("no colour system available to read \"" + file.string() + "\"");
     std::shared_ptr<const ImageTexture> map;
     try {
-        map = ImageTexture::load(file, space, *node.context().colours);
+        map = ImageTexture::load(file, space, *node.context().colours, *node.context().memory);
     } catch (const InputError& error) {
         node.fail_at("file", error.what());
     }

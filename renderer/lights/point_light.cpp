@@ -30,6 +30,8 @@ ISOTRACE_REGISTER_PLUGIN(light_registry, "point", "point light; position, intens
                              const Vec3d position = node.vec3("position");
                              const Rgb intensity = node.colour_or("intensity", Rgb(1.0f)) *
                                                    float(node.number_or("scale", 1.0, NumberRange::non_negative()));
+                             if (intensity.r < 0 || intensity.g < 0 || intensity.b < 0)
+                                 node.fail_at("intensity", "intensity must not be negative");
                              return std::make_unique<PointLight>(Vec3f(position), intensity);
                          })
 

@@ -49,6 +49,8 @@ std::unique_ptr<Light> create(const SceneNode& node) {
     if (inner > outer) node.fail_at("falloff_start", "falloff_start must not exceed cone_angle");
     const Rgb intensity = node.colour_or("intensity", Rgb(1.0f)) *
                           float(node.number_or("scale", 1.0, NumberRange::non_negative()));
+    if (intensity.r < 0 || intensity.g < 0 || intensity.b < 0)
+        node.fail_at("intensity", "intensity must not be negative");
     const auto cos_degrees = [](double degrees) { return float(std::cos(degrees * std::numbers::pi / 180.0)); };
     return std::make_unique<SpotLight>(Vec3f(position), Vec3f(normalize(axis)), intensity, cos_degrees(outer),
                                        cos_degrees(inner));

@@ -1,5 +1,6 @@
 #include "renderer/math/transform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -50,6 +51,18 @@ bool invert(const Matrix& m, Matrix& inverse) {
         }
     }
     return true;
+}
+
+// Scaled by the largest entry so that entries of 1e-200 or 1e200 neither underflow nor overflow when squared.
+double frobenius_norm_3x3(const Matrix& m) {
+    double largest = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) largest = std::max(largest, std::abs(m[i][j]));
+    if (!(largest > 0) || !std::isfinite(largest)) return largest;
+    double sum = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) sum += (m[i][j] / largest) * (m[i][j] / largest);
+    return largest * std::sqrt(sum);
 }
 
 }  // namespace
@@ -169,5 +182,11 @@ double Transform::similarity_scale(double tolerance) const {
         }
     return std::sqrt(s2);
 }
+
+double Transform::linear_norm() const { return frobenius_norm_3x3(m_); }
+
+double Transform::inverse_linear_norm() const { return frobenius_norm_3x3(inv_); }
+
+double Transform::condition_number() const { return linear_norm() * inverse_linear_norm(); }
 
 }  // namespace isotrace

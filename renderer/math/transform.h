@@ -37,6 +37,12 @@ public:
     double similarity_scale(double tolerance = 1e-9) const;
     // Determinant of the linear part (negative = handedness flips).
     double determinant() const;
+    // Condition number of the linear part A in the Frobenius norm, |A| |A^-1| (between 1 and 3 times the
+    // 2-norm one): how much relative precision a ray loses when it is carried into object space.
+    double condition_number() const;
+    // Frobenius norms of the linear part and of its inverse: how large and how small the transform makes things.
+    double linear_norm() const;
+    double inverse_linear_norm() const;
 
 private:
     Transform(const Matrix& m, const Matrix& inv) : m_(m), inv_(inv) {}

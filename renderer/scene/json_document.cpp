@@ -1,5 +1,7 @@
 #include "renderer/scene/json_document.h"
 
+#include "renderer/core/memory_budget.h"
+
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -7,11 +9,16 @@
 #include <filesystem>
 #include <cmath>
 #include <fstream>
-#include <sstream>
+#include <memory>
 
 namespace isotrace {
 
 const JsonValue* JsonValue::find(const std::string& key) const {
+    if (key_index && key_index->size() == members.size()) {  // the size check guards against later edits
+        const auto found = key_index->find(key);
+        return found != key_index->end() && members[found->second].first == key ? &members[found->second].second
+                                                                                : nullptr;
+    }
     for (const auto& [name, value] : members)
         if (name == key) return &value;
     return nullptr;
@@ -32,6 +39,7 @@ const char* JsonValue::kind_name(Kind kind) {
 namespace {
 
 constexpr int kMaxDepth = 256;  // nested arrays/objects; deeper is surely an error and would exhaust the stack
+constexpr std::size_t kIndexedObjectSize = 16;  // objects with more keys get a key_index
 
 class JsonParser {
 public:
@@ -122,12 +130,14 @@ private:
             advance();
             return;
         }
+        // Duplicates are found through the index (a linear search per key is quadratic in the key count).
+        auto index = std::make_shared<std::unordered_map<std::string, std::size_t>>();
         for (;;) {
             skip_whitespace();
             if (peek() != '"') fail("expected a quoted key" + describe_next());
             const SourceLocation key_location = here();
             std::string key = parse_string();
-            if (value.find(key)) throw InputError(key_location, key, "duplicate key");
+            if (!index->emplace(key, value.members.size()).second) throw InputError(key_location, key, "duplicate key");
             skip_whitespace();
             expect(':', "':' after the key");
             skip_whitespace();
@@ -138,6 +148,7 @@ private:
                 continue;
             }
             expect('}', "',' or '}'");
+            if (value.members.size() > kIndexedObjectSize) value.key_index = std::move(index);
             return;
         }
     }
@@ -295,16 +306,24 @@ JsonValue parse_json(const std::string& text, const std::string& file_name) {
     return JsonParser(text, file_name).parse_document();
 }
 
-JsonValue parse_json_file(const std::string& path) {
+JsonValue parse_json_file(const std::string& path, std::uint64_t max_bytes) {
     std::error_code ignored;
     if (std::filesystem::is_directory(path, ignored))  // opening a directory "succeeds" and reads as empty
         throw InputError({path, 0, 0}, "", "cannot open file: it is a directory");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError({path, 0, 0}, "", std::string("cannot open file: ") + std::strerror(errno));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
+    std::string text;
+    char chunk[1 << 16];
+    while (in) {  // in chunks, never more than max_bytes + one chunk: the size of a device or pipe is unknown
+        in.read(chunk, sizeof chunk);
+        text.append(chunk, std::size_t(in.gcount()));
+        if (text.size() > max_bytes)
+            throw InputError({path, 0, 0}, "",
+                             "the file is larger than the limit of " + format_bytes(max_bytes) +
+                                 " for scene files (isotrace render --max-scene-size raises it)");
+    }
     if (in.bad()) throw InputError({path, 0, 0}, "", "cannot read file");
-    return parse_json(buffer.str(), path);
+    return parse_json(text, path);
 }
 
 }  // namespace isotrace

@@ -1,8 +1,10 @@
 #pragma once
 // A JSON tree that remembers where every value starts in its file, so that scene errors can name
 // file:line:column. (nlohmann::json, used elsewhere for output, does not keep value positions.)
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -21,6 +23,9 @@ public:
     std::vector<JsonValue> items;                           // Array
     std::vector<std::pair<std::string, JsonValue>> members;  // Object, in file order
     SourceLocation location;                                 // where the value starts
+    // Key -> position in `members`, built by the parser for large objects so that lookups stay O(1) (a
+    // million-key "materials" map would otherwise cost a million linear searches).
+    std::shared_ptr<const std::unordered_map<std::string, std::size_t>> key_index;
 
     bool is_object() const { return kind == Kind::Object; }
     bool is_array() const { return kind == Kind::Array; }
@@ -35,8 +40,12 @@ public:
     static const char* kind_name(Kind kind);
 };
 
+// Scene files larger than this are refused unless the caller allows more (isotrace render --max-scene-size).
+constexpr std::uint64_t kDefaultMaxJsonFileBytes = std::uint64_t(64) << 20;
+
 // Parses strict JSON (RFC 8259). Duplicate keys and malformed text throw InputError with the position.
 JsonValue parse_json(const std::string& text, const std::string& file_name);
-JsonValue parse_json_file(const std::string& path);
+// Reads at most `max_bytes` (a path such as /dev/zero never ends) and parses the text.
+JsonValue parse_json_file(const std::string& path, std::uint64_t max_bytes = kDefaultMaxJsonFileBytes);
 
 }  // namespace isotrace

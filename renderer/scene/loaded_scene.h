@@ -13,6 +13,7 @@
 #include "renderer/plugin/integrator.h"
 #include "renderer/plugin/pixel_filter.h"
 #include "renderer/sampling/sampler.h"
+#include "renderer/scene/json_document.h"
 #include "renderer/scene/render_scene.h"
 
 namespace isotrace {
@@ -23,6 +24,10 @@ struct SceneOverrides {
     std::optional<RasterSize> resolution;
     std::optional<std::uint64_t> seed;
     std::vector<Aov> extra_aovs;
+    // Memory limit for the estimates charged before large allocations (film, textures, generated elements);
+    // unset = MemoryBudget's default, 80 % of physical memory.
+    std::optional<std::uint64_t> max_memory_bytes;
+    std::uint64_t max_scene_file_bytes = kDefaultMaxJsonFileBytes;
     // Called with every shape as it is created, before the scene is committed; returns the shape to use in its
     // place (the object's transform and material stay). isotrace bench traces blob groups as their tessellation.
     std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> replace_shape;

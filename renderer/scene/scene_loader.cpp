@@ -2,6 +2,7 @@
 #include <chrono>
 #include <deque>
 #include <cmath>
+#include <cstdio>
 
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
@@ -15,6 +16,7 @@ namespace {
 
 constexpr int kSceneFormatVersion = 1;
 constexpr int kMaxResolution = 1 << 16;
+constexpr float kMaxLightPower = 1e30f;
 
 // Stand-ins for optional sections the file leaves out, so their plugins read defaults through the same
 // code. Each sits at its parent's position, so an error about a default names a real place in the file.
@@ -86,8 +88,24 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
     for (Aov aov : overrides.extra_aovs)
         if (std::find(loaded.film.aovs.begin(), loaded.film.aovs.end(), aov) == loaded.film.aovs.end())
             loaded.film.aovs.push_back(aov);
+    try {
+        film.context().memory->charge(Film::memory_bytes(loaded.film),
+                                      "a film of " + std::to_string(loaded.film.crop.width()) + "x" +
+                                          std::to_string(loaded.film.crop.height()) + " pixels with " +
+                                          std::to_string(loaded.film.aovs.size()) + " AOV(s)");
+    } catch (const InputError& error) {
+        if (overrides.resolution) throw InputError({}, "--res", error.problem());
+        film.fail_at("resolution", error.problem());
+    }
     loaded.display = film.string_or("display", "");
     loaded.view = film.string_or("view", "");
+    try {  // a dry run: an unknown display or view would otherwise surface only when writing, after the render
+        float probe[3] = {0, 0, 0};
+        loaded.colours->to_display(probe, 1, 3, loaded.display, loaded.view);
+    } catch (const InputError& error) {
+        if (error.field() == "display" || error.field() == "view") film.fail_at(error.field(), error.problem());
+        throw;
+    }
 
     const SceneNode filter = defaults.object_or_defaults(film, "filter");
     loaded.filter_type = filter.string_or("type", "gaussian");
@@ -135,7 +153,16 @@ void load_content(const SceneNode& root, const SceneOverrides& overrides, Render
         for (const std::string& name : materials->keys())
             scene.add_material(name, material_registry().create(materials->object(name)));
     }
-    for (const SceneNode& light : root.object_array("lights")) scene.add_light(light_registry().create(light));
+    for (const SceneNode& light : root.object_array("lights")) {
+        std::unique_ptr<Light> created = light_registry().create(light);
+        // Light selection sums the powers in float: keep each well inside its range (1e38 overflowed it).
+        if (!(created->power() <= kMaxLightPower)) {
+            char power[32];
+            std::snprintf(power, sizeof power, "%.3g", double(created->power()));
+            light.fail(std::string("the light's power (") + power + ") exceeds the supported maximum of 1e30");
+        }
+        scene.add_light(std::move(created));
+    }
     const std::vector<SceneNode> objects = root.object_array("objects");
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const SceneNode& node = objects[i];
@@ -157,8 +184,9 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     const auto start = std::chrono::steady_clock::now();
     auto loaded = std::make_unique<LoadedScene>();
     loaded->path = path;
-    const JsonValue document = parse_json_file(path);
+    const JsonValue document = parse_json_file(path, overrides.max_scene_file_bytes);
     auto context = std::make_shared<SceneFileContext>();
+    if (overrides.max_memory_bytes) context->memory = std::make_shared<MemoryBudget>(*overrides.max_memory_bytes);
     context->file = path;
     context->directory = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
     SceneNode root(document, "", context);
@@ -181,6 +209,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     try {
         loaded->colours = std::make_unique<ColourSystem>("", working_space);
     } catch (const InputError& error) {
+        if (error.field() != "working_space") throw;  // a broken config is not the scene's fault
         colour.fail_at("working_space", error.problem());
     }
     colour.finish();

@@ -48,7 +48,10 @@ const JsonValue* SceneNode::lookup(const std::string& key) const {
     return value_->is_object() ? value_->find(key) : nullptr;
 }
 
-bool SceneNode::has(const std::string& key) const { return value_->is_object() && value_->find(key) != nullptr; }
+bool SceneNode::has(const std::string& key) const {
+    asked_keys_.insert(key);  // a key a plugin asks about is one it knows: finish() lists it
+    return value_->is_object() && value_->find(key) != nullptr;
+}
 
 const JsonValue& SceneNode::require(const std::string& key) const {
     if (!value_->is_object()) fail("expected an object, found " + std::string(JsonValue::kind_name(value_->kind)));
@@ -234,7 +237,11 @@ std::filesystem::path SceneNode::file_path(const std::string& key) const {
 
 void SceneNode::finish() const {
     if (!value_->is_object()) return;
-    std::vector<std::string> known(read_keys_.begin(), read_keys_.end());
+    // The plugin's whole parameter set as far as this node saw it: keys read, and keys asked about with has()
+    // (optional keys such as "crop" are only asked about when the file leaves them out).
+    std::set<std::string> known_set = read_keys_;
+    known_set.insert(asked_keys_.begin(), asked_keys_.end());
+    const std::vector<std::string> known(known_set.begin(), known_set.end());
     for (const auto& [key, value] : value_->members) {
         if (read_keys_.count(key)) continue;
         std::string expected;

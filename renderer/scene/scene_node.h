@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/core/memory_budget.h"
 #include "renderer/math/rgb.h"
 #include "renderer/math/vec3.h"
 #include "renderer/scene/json_document.h"
@@ -24,6 +25,7 @@ struct SceneFileContext {
     std::string file;                   // as the user named it (used in messages)
     std::filesystem::path directory;    // external files resolve relative to this
     const ColourSystem* colours = nullptr;
+    std::shared_ptr<MemoryBudget> memory = std::make_shared<MemoryBudget>();  // large allocations are charged here
 };
 
 // Accepted range of a number; open ends exclude the bound.
@@ -52,6 +54,7 @@ public:
     const SceneFileContext& context() const { return *context_; }
     const std::shared_ptr<const SceneFileContext>& shared_context() const { return context_; }
 
+    // Whether the key is present. Asking does not count as reading the key, but finish() lists it as known.
     bool has(const std::string& key) const;
 
     // Sub-objects and arrays of objects.
@@ -111,6 +114,7 @@ private:
     std::string path_;
     std::shared_ptr<const SceneFileContext> context_;
     mutable std::set<std::string> read_keys_;
+    mutable std::set<std::string> asked_keys_;  // by has(): known, though not necessarily read
 };
 
 }  // namespace isotrace

@@ -332,5 +332,19 @@ TEST(SceneNode, FinishAcceptsReadAndAcceptedKeys) {
     EXPECT_THROW(asked.root().finish(), InputError);
 }
 
+// The hint listed only keys read so far: an optional key the plugin merely asked about (film "crop") was missing.
+TEST(SceneNode, UnknownKeyHintListsKeysAskedAboutToo) {
+    const Scene scene(R"({"a": 1, "crpo": [0, 1, 0, 1]})");
+    scene.root().number("a");
+    EXPECT_FALSE(scene.root().has("crop"));
+    try {
+        scene.root().finish();
+        FAIL() << "expected InputError";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("(did you mean \"crop\"?); known keys here: a, crop"), std::string::npos)
+            << error.what();
+    }
+}
+
 }  // namespace
 }  // namespace isotrace

@@ -1,17 +1,43 @@
 #include "renderer/scene/transform_parser.h"
 
+#include <cstdio>
 #include <functional>
 #include <stdexcept>
 
 namespace isotrace {
 namespace {
 
+// Rays reach object space in float arithmetic: an ill-conditioned transform (very unequal scales, a nearly flat
+// matrix) or an extreme overall scale leaves them inaccurate or non-finite (Embree then asserts). The bounds and
+// why: docs/decisions.md, "Ill-conditioned transforms".
+constexpr double kMaxConditionNumber = 1e6;
+constexpr double kMaxScale = 1e12;  // Frobenius norm of the linear part and of its inverse
+
+std::string shortest(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+void check_conditioning(const SceneNode& node, const Transform& t) {
+    if (!(t.condition_number() <= kMaxConditionNumber))
+        node.fail("the transform is ill-conditioned (condition number " + shortest(t.condition_number()) +
+                  ", at most 1e6 is supported): its scales are too unequal or its matrix is nearly flat");
+    if (!(t.linear_norm() <= kMaxScale) || !(t.inverse_linear_norm() <= kMaxScale))
+        node.fail("the transform scales by " +
+                  shortest(t.linear_norm() > kMaxScale ? t.linear_norm() : 1 / t.inverse_linear_norm()) +
+                  ", outside the supported range [1e-12, 1e12]");
+}
+
 Transform checked(const SceneNode& node, const std::function<Transform()>& make) {
+    Transform t;
     try {
-        return make();
+        t = make();
     } catch (const std::invalid_argument& error) {
         node.fail(error.what());
     }
+    check_conditioning(node, t);
+    return t;
 }
 
 Transform rotation_of(const SceneNode& rotate) {
@@ -55,9 +81,10 @@ Transform parse_step(const SceneNode& step) {
 Transform parse_rotation(const SceneNode& rotate) { return rotation_of(rotate); }
 
 Transform parse_transform(const SceneNode& value) {
-    if (!value.json().is_array()) return parse_step(value);
+    if (!value.json().is_array()) return checked(value, [&] { return parse_step(value); });
     Transform result;
     for (const SceneNode& step : value.elements()) result = parse_step(step) * result;
+    check_conditioning(value, result);  // well-conditioned steps can compose to an ill-conditioned whole
     return result;
 }
 

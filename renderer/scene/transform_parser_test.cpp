@@ -21,6 +21,19 @@ void expect_error(const std::string& text, int line, int column, const std::stri
     testing::expect_input_error([&] { parse(text); }, "scene.json", line, column, field, message);
 }
 
+void expect_error_containing(const std::string& text, int line, int column, const std::string& field,
+                             const std::string& part) {
+    try {
+        parse(text);
+        ADD_FAILURE() << "no InputError; expected one containing: " << part;
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.location().line, line) << error.what();
+        EXPECT_EQ(error.location().column, column) << error.what();
+        EXPECT_EQ(error.field(), field) << error.what();
+        EXPECT_NE(std::string(error.what()).find(part), std::string::npos) << error.what();
+    }
+}
+
 void expect_near(const Vec3d& actual, const Vec3d& expected, double tolerance = 1e-12) {
     EXPECT_NEAR(actual.x, expected.x, tolerance) << "x";
     EXPECT_NEAR(actual.y, expected.y, tolerance) << "y";
@@ -107,6 +120,23 @@ TEST(ParseTransform, ZeroScaleIsRejectedWhereItIsWritten) {
         3, 13, "transform[1].scale", "scene.json:3:13: transform[1].scale: scale factor is zero");
 }
 
+// A scale of 1e-20 along one axis made Embree abort on `ray.valid()` (exit 134); only exact zeros were rejected.
+TEST(ParseTransform, IllConditionedTransformsAreRejectedWhereTheyAreWritten) {
+    expect_error(R"({"transform": {"scale": [1, 1e-20, 1]}})", 1, 25, "transform.scale",
+                 "scene.json:1:25: transform.scale: the transform is ill-conditioned (condition number 1.41e+20, at "
+                 "most 1e6 is supported): its scales are too unequal or its matrix is nearly flat");
+    expect_error_containing(R"({"transform": {"matrix": [1, 0, 0, 0, 0, 1e-200, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}})", 1, 26,
+                 "transform.matrix", "ill-conditioned");
+    expect_error_containing(R"({"transform": {"scale": 1e-200}})", 1, 25, "transform.scale", "outside the supported range");
+    expect_error_containing(R"({"transform": {"scale": 1e15}})", 1, 25, "transform.scale", "outside the supported range");
+    // Two acceptable steps whose product is not.
+    expect_error_containing(R"({"transform": [{"scale": [1, 1e-4, 1]}, {"scale": [1, 1e-4, 1]}]})", 1, 15, "transform",
+                 "ill-conditioned");
+    // Unequal but sane scales stay accepted: a sphere squashed into a coin, micrometre units.
+    EXPECT_NO_THROW(parse(R"({"transform": {"scale": [1, 1e-3, 1]}})"));
+    EXPECT_NO_THROW(parse(R"({"transform": {"scale": 1e-6}})"));
+}
+
 TEST(ParseTransform, RotationErrors) {
     expect_error(R"({"transform": {"rotate": {"axis": [0, 0, 0], "angle": 5}}})", 1, 26, "transform.rotate",
                  "scene.json:1:26: transform.rotate: rotation axis is zero");
@@ -125,7 +155,7 @@ TEST(ParseTransform, RotationErrors) {
 TEST(ParseTransform, StepErrors) {
     expect_error(R"({"transform": {"translate": [1, 2, 3], "scael": 2}})", 1, 49, "transform.scael",
                  "scene.json:1:49: transform.scael: unknown key \"scael\" (did you mean \"scale\"?); "
-                 "known keys here: rotate, scale, translate");
+                 "known keys here: matrix, rotate, scale, translate");
     expect_error(R"({"transform": [{"scale": 1}, 5]})", 1, 30, "transform[1]",
                  "scene.json:1:30: transform[1]: expected a transform object");
     expect_error(R"({"transform": "identity"})", 1, 15, "transform",

@@ -28,7 +28,7 @@ ColourSource parse_colour_source(const SceneNode& parent, const std::string& key
     const Rgb scale = value->colour_or("scale", Rgb(1.0f));
     value->finish();
     try {
-        return ColourSource(ImageTexture::load(file, space, *value->context().colours), scale);
+        return ColourSource(ImageTexture::load(file, space, *value->context().colours, *value->context().memory), scale);
     } catch (const InputError& error) {
         value->fail(error.what());
     }

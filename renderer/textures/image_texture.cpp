@@ -6,6 +6,7 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/memory_budget.h"
 
 namespace isotrace {
 
@@ -13,13 +14,19 @@ ImageTexture::ImageTexture(int width, int height, std::vector<float> rgb, std::s
     : width_(width), height_(height), rgb_(std::move(rgb)), colour_space_(std::move(colour_space)) {}
 
 std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::path& path,
-                                                       const std::string& colour_space, const ColourSystem& colours) {
+                                                       const std::string& colour_space, const ColourSystem& colours,
+                                                       MemoryBudget& memory) {
     const auto fail = [&](const std::string& problem) -> InputError { return InputError({path.string(), 0, 0}, "", problem); };
     auto input = OIIO::ImageInput::open(path.string());
     if (!input) throw fail("cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = input->spec();
     if (spec.width < 1 || spec.height < 1 || spec.depth != 1) throw fail("not a 2-D image");
     if (spec.nchannels < 1) throw fail("image has no channels");
+    // A few bytes of header can claim any size: the float pixels read plus the RGB copy kept.
+    memory.charge(saturating_product({std::uint64_t(spec.width), std::uint64_t(spec.height),
+                                      std::uint64_t(spec.nchannels) + 3, sizeof(float)}),
+                  "the " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image",
+                  {path.string(), 0, 0});
     std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
     if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
         throw fail("cannot read pixels: " + input->geterror());

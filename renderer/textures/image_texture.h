@@ -12,13 +12,15 @@
 namespace isotrace {
 
 class ColourSystem;
+class MemoryBudget;
 
 class ImageTexture {
 public:
     // `colour_space` empty: "srgb_texture" for integer pixel formats (8/16-bit PNG, JPEG, TIFF), the working
-    // space for floating-point formats (EXR, HDR). Throws InputError naming the file on any read problem.
+    // space for floating-point formats (EXR, HDR). The memory it needs, known from the header, is charged to
+    // `memory` before any pixel is read. Throws InputError naming the file on any read problem.
     static std::shared_ptr<const ImageTexture> load(const std::filesystem::path& path, const std::string& colour_space,
-                                                    const ColourSystem& colours);
+                                                    const ColourSystem& colours, MemoryBudget& memory);
 
     Rgb lookup(std::array<float, 2> uv) const;
     // One texel in the working space; row y = 0 is the top of the image; x and y wrap around (repeat).

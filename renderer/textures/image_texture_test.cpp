@@ -3,13 +3,19 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/memory_budget.h"
+#include "tests/support/scene_files.h"
 
 namespace isotrace {
 namespace {
+
+MemoryBudget memory;  // the default limit (80 % of physical memory)
 
 std::filesystem::path temp_dir() {
     const auto dir = std::filesystem::temp_directory_path() /
@@ -34,7 +40,7 @@ TEST(ImageTexture, EightBitImagesAreDecodedFromSrgb) {
     const ColourSystem colours("", "lin_rec709");
     // 2x1 image: left texel 128/255, right texel 255.
     const auto path = write_image<unsigned char>("srgb.png", 2, 1, 3, OIIO::TypeDesc::UINT8, {128, 128, 128, 255, 255, 255});
-    const auto texture = ImageTexture::load(path, "", colours);
+    const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->colour_space(), "srgb_texture");
     const float expected = std::pow((128.0f / 255 + 0.055f) / 1.055f, 2.4f);  // the sRGB EOTF
     const Rgb left = texture->lookup({0.25f, 0.5f});  // texel centre: no blending
@@ -48,7 +54,7 @@ TEST(ImageTexture, FloatImagesDefaultToTheWorkingSpaceAndVRunsUp) {
     const ColourSystem colours("", "ACEScg");
     // 1x2 float image: top row red, bottom row green.
     const auto path = write_image<float>("rows.exr", 1, 2, 3, OIIO::TypeDesc::FLOAT, {1, 0, 0, 0, 1, 0});
-    const auto texture = ImageTexture::load(path, "", colours);
+    const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->colour_space(), "ACEScg");
     EXPECT_EQ(texture->lookup({0.5f, 0.75f}), Rgb(1, 0, 0));  // v = 0.75 is the top row's centre
     EXPECT_EQ(texture->lookup({0.5f, 0.25f}), Rgb(0, 1, 0));
@@ -57,7 +63,7 @@ TEST(ImageTexture, FloatImagesDefaultToTheWorkingSpaceAndVRunsUp) {
 TEST(ImageTexture, ExplicitSpaceIsConvertedToTheWorkingSpace) {
     const ColourSystem colours("", "ACEScg");
     const auto path = write_image<float>("white.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {1, 0, 0});
-    const Rgb converted = ImageTexture::load(path, "lin_rec709", colours)->lookup({0.3f, 0.6f});
+    const Rgb converted = ImageTexture::load(path, "lin_rec709", colours, memory)->lookup({0.3f, 0.6f});
     EXPECT_EQ(converted, colours.to_working(Rgb(1, 0, 0), "lin_rec709"));
     EXPECT_NE(converted, Rgb(1, 0, 0));
 }
@@ -66,7 +72,7 @@ TEST(ImageTexture, RepeatsOutsideTheUnitSquare) {
     const ColourSystem colours("", "ACEScg");
     const auto path = write_image<float>("ramp.exr", 4, 1, 3, OIIO::TypeDesc::FLOAT,
                                          {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3});
-    const auto texture = ImageTexture::load(path, "", colours);
+    const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->lookup({0.375f, 0.5f}), texture->lookup({2.375f, 0.5f}));
     EXPECT_EQ(texture->lookup({0.375f, 0.5f}), texture->lookup({-0.625f, 0.5f}));
     // Between the last and first texel the lookup wraps: halfway = (3 + 0) / 2.
@@ -77,16 +83,54 @@ TEST(ImageTexture, BadFilesNameTheFile) {
     const ColourSystem colours("", "ACEScg");
     const auto missing = temp_dir() / "missing.png";
     try {
-        ImageTexture::load(missing, "", colours);
+        ImageTexture::load(missing, "", colours, memory);
         FAIL() << "expected InputError";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("missing.png"), std::string::npos) << error.what();
     }
     const auto path = write_image<float>("nan.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {NAN, 0, 0});
-    EXPECT_THROW(ImageTexture::load(path, "", colours), InputError);
+    EXPECT_THROW(ImageTexture::load(path, "", colours, memory), InputError);
     EXPECT_THROW(ImageTexture::load(write_image<float>("ok.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {0, 0, 0}),
-                                    "no_such_space", colours),
+                                    "no_such_space", colours, memory),
                  InputError);
+}
+
+// PNG chunk checksum (CRC-32, ISO 3309), to forge a header that libpng accepts.
+std::uint32_t crc32(const std::string& bytes) {
+    std::uint32_t crc = 0xFFFFFFFFu;
+    for (const unsigned char b : bytes) {
+        crc ^= b;
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+std::string big_endian(std::uint32_t v) {
+    return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+// A PNG of 65 bytes whose header claims 100000x100000 RGB pixels (120 GB as floats).
+TEST(ImageTexture, TinyFileClaimingAHugeImageIsRefusedFromItsHeaderBeforeAnyAllocation) {
+    const std::string ihdr = "IHDR" + big_endian(100000) + big_endian(100000) + std::string("\x08\x02\x00\x00\x00", 5);
+    const std::string idat = "IDAT" + std::string("\x78\x9c\x03\x00\x00\x00\x00\x01", 8);  // an empty zlib stream
+    const std::string iend = "IEND";
+    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + big_endian(13) + ihdr + big_endian(crc32(ihdr)) +
+                            big_endian(8) + idat + big_endian(crc32(idat)) + big_endian(0) + iend +
+                            big_endian(crc32(iend));
+    const testing::TemporaryDirectory dir("texture");
+    const auto path = dir.write("huge.png", png);
+    const ColourSystem colours("", "ACEScg");
+    MemoryBudget budget(std::uint64_t(8) << 30);
+    try {
+        ImageTexture::load(path, "", colours, budget);
+        FAIL() << "expected InputError";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("huge.png"), std::string::npos) << message;
+        EXPECT_NE(message.find("100000x100000"), std::string::npos) << message;
+        EXPECT_NE(message.find("needs about 240 GB"), std::string::npos) << message;
+    }
+    EXPECT_EQ(budget.charged_bytes(), 0u);
 }
 
 }  // namespace

@@ -262,14 +262,18 @@ case_bad_scene_unknown_key() {
   bad_scene 12 '        "radius": 1, "raduis": 2' 12 "objects[0].shape.raduis"
 }
 
+# write_shape_scene <dir> <line 11> <line 12>: the base scene in <dir>/scene.json with the shape's two lines replaced.
+write_shape_scene() {
+  mkdir -p "$1"
+  write_base_scene "$1/base.json"
+  awk -v a="$2" -v b="$3" 'NR == 11 { print a; next } NR == 12 { print b; next } { print }' "$1/base.json" \
+    >"$1/scene.json"
+  rm "$1/base.json"
+}
+
 case_bad_scene_missing_mesh() {
-  local dir="$work/scene"
-  mkdir -p "$dir"
-  write_base_scene "$dir/base.json"
-  awk 'NR == 11 { print "        \"type\": \"mesh\","; next }
-       NR == 12 { print "        \"file\": \"no_such_mesh.obj\""; next } { print }' "$dir/base.json" >"$dir/scene.json"
-  rm "$dir/base.json"
-  check_bad_scene "$dir" 12 "objects[0].shape.file" "no_such_mesh.obj"
+  write_shape_scene "$work/scene" '        "type": "mesh",' '        "file": "no_such_mesh.obj"'
+  check_bad_scene "$work/scene" 12 "objects[0].shape.file" "no_such_mesh.obj"
 }
 
 case_bad_scene_unknown_shape() {
@@ -350,6 +354,171 @@ case_interrupt() {
   echo "interrupted render: isotrace:spp $spp, isotrace:partial $partial" >&2
   ((spp < 100000)) || fail "isotrace:spp is $spp after an interrupted render"
   ((partial == 1 || spp > 0)) || fail "neither a partial image nor a completed pass (spp $spp, partial $partial)"
+}
+
+# ---- hostile input and safe output (issue 10) -------------------------------------------------------------
+
+case_output_symlink_not_followed() {  # a planted symlink at the output or at old-style temporary names
+  echo precious >"$work/victim"
+  ln -s "$work/victim" "$work/out.png"
+  for n in 0 1 2 3; do ln -s "$work/victim" "$work/.out.partial-$$-$n.png"; done
+  cli_expect 0 render "$cornell" --res 16x16 --spp 1 --quiet -o "$work/out.png"
+  [[ "$(cat "$work/victim")" == precious ]] || fail "the symlink's target was overwritten"
+  [[ -f "$work/out.png" && ! -L "$work/out.png" ]] || fail "the output is not a regular file"
+  [[ $(find "$work" -name '.out.partial-*' -type f | wc -l) == 0 ]] || fail "a temporary file was left behind"
+}
+
+# Disk full, simulated by a file-size limit (ulimit -f, in KiB): every output fails cleanly, none is truncated,
+# no temporary is left, and each failing output is named (libjpeg used to exit() at the first one).
+case_disk_full() {
+  local format
+  for format in png jpg tif exr; do
+    run "$work/stdout" "$work/stderr" bash -c 'ulimit -f 1; exec "$@"' _ "$cli" render "$cornell" --res 64x64 \
+      --spp 2 --quiet -o "$work/a.$format" -o "$work/b.png"
+    ((status == 1)) || { show_output; fail "$format: exit code $status with a full disk, expected 1"; }
+    expect_in "$work/stderr" "cannot write $work/a.$format" stderr
+    expect_in "$work/stderr" "cannot write $work/b.png" stderr
+    expect_no_file "$work/a.$format"
+    expect_no_file "$work/b.png"
+    expect_no_partial_files "$work"
+  done
+}
+
+case_output_not_writable() {  # found before rendering, as bad input
+  mkdir "$work/taken.png"
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 -o "$work/taken.png"
+  expect_in "$work/stderr" "is a directory" stderr
+  if grep -q "loaded in" "$work/stderr"; then fail "the scene was loaded before the output was checked"; fi
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 -o /proc/isotrace-test.png  # no one may create files there
+  expect_in "$work/stderr" "/proc/isotrace-test.png" stderr
+  expect_in "$work/stderr" "--output" stderr
+}
+
+case_display_metadata() {  # PNG text chunks, and ImageDescription in JPEG and TIFF
+  local format
+  for format in png jpg tif; do
+    cli_expect 0 render "$cornell" --res 16x16 --spp 3 --quiet -o "$work/a.$format"
+    oiiotool --info -v "$work/a.$format" >"$work/info" || fail "oiiotool cannot read a.$format"
+    expect_in "$work/info" "isotrace:partial=0" "$format metadata"
+    expect_in "$work/info" "isotrace:spp=3" "$format metadata"
+    expect_in "$work/info" "isotrace:render_seconds=" "$format metadata"
+  done
+  oiiotool --info -v "$work/a.png" >"$work/info"
+  grep -Eq '^ *isotrace:partial: "0"' "$work/info" || { cat "$work/info" >&2; fail "PNG has no isotrace:partial text chunk"; }
+}
+
+# Each: the replaced line of the base scene, and what the message must name.
+case_bad_scene_ill_conditioned_transform() {  # Embree asserted (exit 134)
+  bad_scene 9 '      "material": "grey", "transform": {"scale": [1, 1e-20, 1]},' 9 "objects[0].transform.scale" \
+    "ill-conditioned"
+}
+
+case_bad_scene_huge_light_power() {
+  bad_scene 6 '  "lights": [ { "type": "point", "position": [0, 3, -3], "intensity": 1e38 } ],' 6 "lights[0]" "power"
+}
+
+case_bad_scene_negative_intensity() {
+  bad_scene 6 '  "lights": [ { "type": "point", "position": [0, 3, -3], "intensity": -1 } ],' 6 \
+    "lights[0].intensity" "must not be negative"
+  bad_scene 6 '  "lights": [ { "type": "directional", "direction": [0, -1, 0], "irradiance": [1, -1, 1] } ],' 6 \
+    "lights[0].irradiance" "must not be negative"
+}
+
+case_bad_scene_non_linear_working_space() {
+  bad_scene 2 '  "isotrace": 1, "colour": { "working_space": "srgb_texture" },' 2 "colour.working_space" "scene-linear"
+}
+
+case_bad_scene_display_view() {  # used to fail only when writing the PNG, after the render, without a position
+  bad_scene 3 '  "film": { "resolution": [16, 16], "spp": 1, "display": "sRBG" },' 3 "film.display" 'did you mean "sRGB"'
+  bad_scene 3 '  "film": { "resolution": [16, 16], "spp": 1, "view": "Raww" },' 3 "film.view" "view"
+}
+
+case_bad_ocio_variable() {
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/scene.json"
+  OCIO="$work/no_such.ocio" cli_expect 2 render "$work/scene/scene.json" -o "$work/scene/out.png" --quiet
+  expect_in "$work/stderr" '$OCIO' stderr
+  expect_in "$work/stderr" "no_such.ocio" stderr
+  expect_no_file "$work/scene/out.png"
+}
+
+case_bad_scene_huge_twist() {  # hung and ignored Ctrl-C
+  write_shape_scene "$work/scene" '        "type": "superquadric",' '        "deform": [{ "twist": 1e9 }]'
+  check_bad_scene "$work/scene" 12 "objects[0].shape.deform[0].twist" "[-3600, 3600]"
+}
+
+case_bad_scene_unknown_key_lists_all_keys() {  # "crop" was never listed: it is only asked about
+  bad_scene 3 '  "film": { "resolution": [16, 16], "spp": 1, "crpo": [0, 1, 0, 1] },' 3 "film.crpo" "crop"
+}
+
+case_bad_scene_nul_in_key() {  # the message used to end at the NUL
+  bad_scene 3 '  "film": { "resolution": [16, 16], "spp": 1, "a\u0000b": 1 },' 3 'film.a\x00b' 'unknown key "a\x00b"'
+}
+
+case_bad_mesh_file() {  # the message names the scene line that refers to the mesh, then the mesh's own line
+  local dir="$work/scene"
+  write_shape_scene "$dir" '        "type": "mesh",' '        "file": "wrapped.obj"'
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 4294967299\n' >"$dir/wrapped.obj"
+  check_bad_scene "$dir" 12 "objects[0].shape.file" "wrapped.obj:5: f line"
+  printf 'v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n' >"$dir/wrapped.obj"
+  check_bad_scene "$dir" 12 "objects[0].shape.file" 'wrapped.obj:3: v line: "nan"'
+}
+
+case_memory_estimate() {  # std::bad_alloc (exit 1) or the OOM killer before
+  cli_expect 2 render "$cornell" --res 65536x65536 -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "--res" stderr
+  expect_in "$work/stderr" "needs about" stderr
+  cli_expect 2 render "$cornell" --res 1024x1024 --max-memory 4M -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "limit of 4.19 MB" stderr
+  cli_expect 2 render "$cornell" --res 16x16 --max-memory lots -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "--max-memory" stderr
+  expect_no_file "$work/a.exr"
+}
+
+case_scene_size_limit() {  # /dev/zero was read without end
+  cli_expect 2 render /dev/zero -o "$work/a.exr" --quiet --max-scene-size 1M
+  expect_in "$work/stderr" "larger than the limit" stderr
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/scene.json"
+  cli_expect 2 render "$work/scene/scene.json" -o "$work/a.exr" --quiet --max-scene-size 1
+  expect_in "$work/stderr" "--max-scene-size" stderr
+  expect_no_file "$work/a.exr"
+}
+
+case_million_keys() {  # the duplicate-key check was quadratic (> 60 s)
+  python3 - "$work/keys.json" <<'PY'
+import sys
+with open(sys.argv[1], "w") as f:
+    f.write('{"isotrace": 1, "materials": {')
+    f.write(",".join('"m%d": {"type": "diffuse"}' % i for i in range(1000000)))
+    f.write('}, "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 0, -5], "target": [0, 0, 0], "up": [0, 1, 0]}}}')
+PY
+  local start=$SECONDS
+  cli_expect 0 info "$work/keys.json"
+  ((SECONDS - start < 60)) || fail "a million keys took $((SECONDS - start)) s"
+  echo "a million material keys: $((SECONDS - start)) s" >&2
+}
+
+case_bad_numeric_options() {
+  cli_expect 2 render "$cornell" --seed -1 -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "isotrace: error: --seed" stderr
+  cli_expect 2 render "$cornell" --seed 18446744073709551616 -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "--seed" stderr
+  cli_expect 2 render "$cornell" --time nan -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "--time" stderr
+  cli_expect 2 render "$cornell" --time 0 -o "$work/a.exr" --quiet
+  expect_in "$work/stderr" "--time" stderr
+  (($(wc -c <"$work/stderr") < 200)) || { cat "$work/stderr" >&2; fail "the --time 0 message is too long"; }
+  expect_no_file "$work/a.exr"
+}
+
+case_cli_error_messages() {
+  cli_expect 2 rendr "$cornell"
+  expect_in "$work/stderr" 'isotrace: error: unknown command "rendr" (did you mean "render"?)' stderr
+  cli_expect 2 render "$cornell" --spp 0
+  expect_in "$work/stderr" "isotrace: error: --spp" stderr
+  cli_expect 2 render "$cornell" --no-such-option
+  expect_in "$work/stderr" "isotrace: error:" stderr
 }
 
 # Two blended balls and a lone one seen from 6 m, 24x16 pixels: the smallest scene with a blob group.

@@ -1,13 +1,16 @@
 #include "tools/cli/command_helpers.h"
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <stdexcept>
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/memory_budget.h"
 
 namespace isotrace::cli {
 
@@ -22,11 +25,59 @@ RasterSize parse_resolution(const std::string& text, const std::string& option) 
     return size;
 }
 
+std::uint64_t parse_seed(const std::string& text, const std::string& option) {
+    std::uint64_t seed = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+    const bool digits_only = !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) {
+        return std::isdigit(c);
+    });
+    if (!digits_only || error != std::errc() || end != text.data() + text.size())
+        throw InputError({}, option,
+                         "expected a whole number from 0 to 18446744073709551615, got \"" + text + "\"");
+    return seed;
+}
+
+double parse_seconds(const std::string& text, const std::string& option) {
+    double seconds = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(seconds) ||
+        !(seconds > 0))
+        throw InputError({}, option, "expected a number of seconds > 0, got \"" + text + "\"");
+    return seconds;
+}
+
+std::uint64_t parse_memory_size(const std::string& text, const std::string& option) {
+    static const std::regex pattern(R"(([0-9]+(\.[0-9]+)?) *([kKmMgGtT%]?)[bB]?)");
+    std::smatch match;
+    const auto bad = [&](const std::string& why) {
+        return InputError({}, option, why + ", got \"" + text + "\" (examples: 16G, 512M, 50%)");
+    };
+    if (!std::regex_match(text, match, pattern)) throw bad("expected a size with K, M, G or T, or a percentage");
+    const double number = std::stod(match[1]);
+    const char unit = char(std::toupper(static_cast<unsigned char>(match[3].str().empty() ? ' ' : match[3].str()[0])));
+    double bytes = number;
+    if (unit == '%') {
+        if (number > 100) throw bad("a percentage of physical memory must be at most 100");
+        bytes = double(MemoryBudget::physical_memory_bytes()) * number / 100;
+    } else {
+        const std::string units = " KMGT";
+        bytes = std::ldexp(number, 10 * int(units.find(unit)));
+    }
+    if (!(bytes >= double(1 << 20))) throw bad("the limit must be at least 1M");
+    if (bytes >= 1.8e19) throw bad("the limit is too large");
+    return std::uint64_t(bytes);
+}
+
 void check_output_directory(const std::string& path, const std::string& option) {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     std::error_code error;
     if (!parent.empty() && !std::filesystem::is_directory(parent, error))
         throw InputError({}, option, "the directory \"" + parent.string() + "\" of \"" + path + "\" does not exist");
+    try {
+        check_atomically_writable(path);
+    } catch (const std::runtime_error& problem) {
+        throw InputError({}, option, problem.what());
+    }
 }
 
 void check_output_file(const std::string& path, const std::string& extension, const std::string& option) {
@@ -36,12 +87,6 @@ void check_output_file(const std::string& path, const std::string& extension, co
     check_output_directory(path, option);
 }
 
-void write_text_atomically(const std::string& path, const std::string& text) {
-    write_atomically(path, [&](const std::filesystem::path& temporary) {
-        std::ofstream out(temporary);
-        out << text;
-        if (!out.flush()) throw std::runtime_error("cannot write " + path);
-    });
-}
+void write_text_atomically(const std::string& path, const std::string& text) { write_file_atomically(path, text); }
 
 }  // namespace isotrace::cli

@@ -1,5 +1,6 @@
 #pragma once
 // Argument checks and output writing shared by the sub-commands.
+#include <cstdint>
 #include <string>
 
 #include "renderer/plugin/camera.h"
@@ -9,8 +10,18 @@ namespace isotrace::cli {
 // "WIDTHxHEIGHT" (each side 1..65536); throws InputError naming `option` otherwise.
 RasterSize parse_resolution(const std::string& text, const std::string& option);
 
-// Rejects an output path whose directory does not exist before any work is done (it would otherwise fail only
-// after the render, with exit code 1).
+// A seed: a whole number in [0, 2^64 - 1], decimal digits only ("-1" is not 2^64 - 1, "2^64" is not clamped).
+std::uint64_t parse_seed(const std::string& text, const std::string& option);
+
+// Seconds: a finite number > 0 (no nan, inf, 0 or negative values).
+double parse_seconds(const std::string& text, const std::string& option);
+
+// A memory size: bytes with an optional K, M, G or T suffix (powers of 1024), or a percentage of physical memory
+// ("50%"). At least 1 MiB.
+std::uint64_t parse_memory_size(const std::string& text, const std::string& option);
+
+// Rejects an output path that cannot be written before any work is done (it would otherwise fail only after the
+// render, with exit code 1): its directory is missing or unwritable, or the path is a directory.
 void check_output_directory(const std::string& path, const std::string& option);
 
 // Both checks before any work: the path ends in `extension` (".png"; any letter case) and its directory exists.

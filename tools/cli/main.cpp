@@ -1,14 +1,47 @@
 // isotrace command-line front end.
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <algorithm>
 #include <exception>
+#include <new>
+#include <string>
+#include <vector>
 
+#include "renderer/core/did_you_mean.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/version.h"
 #include "tools/cli/commands.h"
 
+namespace {
+
+// "isotrace rendr scene.json" would otherwise be reported as "A subcommand is required".
+bool reject_unknown_command(const CLI::App& app, int argc, char** argv) {
+    if (argc < 2 || argv[1][0] == '-') return false;
+    std::vector<std::string> names;
+    for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
+    const std::string word = argv[1];
+    if (std::find(names.begin(), names.end(), word) != names.end()) return false;
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    const std::string suggestion = isotrace::did_you_mean(word, names);
+    std::fprintf(stderr, "isotrace: error: unknown command \"%s\"%s; commands: %s\n", word.c_str(),
+                 suggestion.c_str(), list.c_str());
+    return true;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace isotrace::cli;
+    // Past a file-size limit write() then fails with EFBIG and the output code removes its temporary file;
+    // SIGXFSZ's default action would kill the process and leave the temporary behind.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app("isotrace - a CPU ray tracer for implicit and procedural surfaces", "isotrace");
+    // Set before the sub-commands are added: they copy it.
+    app.failure_message([](const CLI::App* failed, const CLI::Error& error) {
+        return "isotrace: error: " + CLI::FailureMessage::simple(failed, error);
+    });
     app.set_version_flag("--version", std::string("isotrace ") + isotrace::kIsotraceVersion);
     app.require_subcommand(1);
     const CommandRunner render = add_render_command(app);
@@ -16,6 +49,7 @@ int main(int argc, char** argv) {
     const CommandRunner depth = add_depth_command(app);
     const CommandRunner bench = add_bench_command(app);
     const CommandRunner polygonize = add_polygonize_command(app);
+    if (reject_unknown_command(app, argc, argv)) return kExitBadInput;
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -33,6 +67,10 @@ int main(int argc, char** argv) {
         return kExitBadInput;
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? kExitOk : kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        // The memory estimate (--max-memory) should refuse such input first; this is the backstop.
+        std::fprintf(stderr, "isotrace: error: out of memory: the scene or options need more memory than is available\n");
+        return kExitBadInput;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "isotrace: failure: %s\n", error.what());
         return kExitFailure;

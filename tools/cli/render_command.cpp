@@ -33,10 +33,12 @@ struct RenderArguments {
     std::optional<int> spp;
     std::string resolution;
     int threads = 0;
-    std::optional<std::uint64_t> seed;
+    std::string seed;         // parsed by parse_seed: CLI11 would wrap "-1" and clamp 2^64
     std::string aovs;
     std::string stats_json;
-    std::optional<double> time_budget;
+    std::string time_budget;  // parsed by parse_seconds: CLI11 accepts nan
+    std::string max_memory;
+    std::string max_scene_size;
     int tile_size = 32;
     bool quiet = false;
 };
@@ -62,24 +64,40 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
     return m;
 }
 
+// Every output is attempted even when one fails (a full disk may still take a small PNG); each failure is
+// reported, and any failure ends the command with a failure.
 void write_outputs(const RenderArguments& args, const LoadedScene& scene, const RenderResult& result,
                    std::uint64_t rays) {
     const ImageBuffer image = result.film->resolve();
     const ImageMetadata metadata = make_metadata(scene, result, rays);
     const ImageWindow window{scene.film.raster, scene.film.crop.x0, scene.film.crop.y0};
+    int failures = 0;
     for (const std::string& output : args.outputs) {
-        if (image_kind_for(output) == ImageKind::Exr)
-            write_exr(output, image, window, scene.film.half_float, metadata);
-        else
-            write_display_image(output, image, *scene.colours, scene.display, scene.view, metadata);
+        try {
+            if (image_kind_for(output) == ImageKind::Exr)
+                write_exr(output, image, window, scene.film.half_float, metadata);
+            else
+                write_display_image(output, image, *scene.colours, scene.display, scene.view, metadata);
+        } catch (const std::runtime_error& error) {
+            std::fprintf(stderr, "isotrace: failure: %s\n", error.what());
+            ++failures;
+        }
     }
+    if (failures > 0)
+        throw std::runtime_error(std::to_string(failures) + " of " + std::to_string(args.outputs.size()) +
+                                 " output(s) could not be written");
 }
 
 int run_render(const RenderArguments& args) {
     const bool show_progress = !args.quiet && stderr_is_terminal();
     SceneOverrides overrides;
     overrides.spp = args.spp;
-    overrides.seed = args.seed;
+    if (!args.seed.empty()) overrides.seed = parse_seed(args.seed, "--seed");
+    const std::optional<double> time_budget =
+        args.time_budget.empty() ? std::nullopt : std::optional<double>(parse_seconds(args.time_budget, "--time"));
+    if (!args.max_memory.empty()) overrides.max_memory_bytes = parse_memory_size(args.max_memory, "--max-memory");
+    if (!args.max_scene_size.empty())
+        overrides.max_scene_file_bytes = parse_memory_size(args.max_scene_size, "--max-scene-size");
     if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
     if (!args.aovs.empty()) overrides.extra_aovs = parse_aov_list(args.aovs, "--aov");
     for (const std::string& output : args.outputs) {  // reject bad names before rendering
@@ -100,15 +118,15 @@ int run_render(const RenderArguments& args) {
     if (!args.quiet)
         std::fprintf(stderr, "isotrace: %s: %dx%d, %d spp, %s integrator, %d thread(s), loaded in %.2f s\n",
                      args.scene.c_str(), scene->film.raster.width, scene->film.raster.height,
-                     args.time_budget && !args.spp ? 0 : scene->spp, scene->integrator_type.c_str(), threads,
+                     time_budget && !args.spp ? 0 : scene->spp, scene->integrator_type.c_str(), threads,
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count());
 
     ProgressBar bar(show_progress);
     RenderOptions options;
     options.tile_size = args.tile_size;
     // --time alone lifts the sample limit; with --spp too, whichever budget runs out first ends the render.
-    options.spp = args.time_budget && !args.spp ? (1 << 24) : scene->spp;
-    options.time_budget_seconds = args.time_budget;
+    options.spp = time_budget && !args.spp ? (1 << 24) : scene->spp;
+    options.time_budget_seconds = time_budget;
     options.cancel = &g_interrupted;
     if (show_progress) options.on_progress = [&](const RenderProgress& p) { bar.update(p); };
     g_interrupted = false;
@@ -149,14 +167,18 @@ CommandRunner add_render_command(CLI::App& app) {
     command->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1, 1 << 24));
     command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
     command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
-    command->add_option("--seed", args->seed, "Sampler seed (overrides the scene)");
+    command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)");
     command->add_option("--aov", args->aovs,
                         "Comma-separated AOVs to add to the EXR: albedo, normal, depth, position, object_id, "
                         "primitive_id, sample_count, variance, or all");
     command->add_option("--stats-json", args->stats_json, "Write end-of-render statistics as JSON to this file");
     command->add_option("--time", args->time_budget,
-                        "Time budget in seconds (progressive passes; stops after the pass that reaches it)")
-        ->check(CLI::PositiveNumber);
+                        "Time budget in seconds (progressive passes; stops after the pass that reaches it)");
+    command->add_option("--max-memory", args->max_memory,
+                        "Refuse scenes whose estimated memory exceeds this: bytes with K/M/G/T, or a percentage of "
+                        "physical memory (default: 80%)");
+    command->add_option("--max-scene-size", args->max_scene_size,
+                        "Refuse scene files larger than this (bytes with K/M/G; default: 64M)");
     command->add_option("--tile-size", args->tile_size, "Tile edge in pixels (does not change the image)")
         ->check(CLI::Range(1, 4096));
     command->add_flag("-q,--quiet", args->quiet, "No progress bar or statistics on stderr");

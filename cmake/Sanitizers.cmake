@@ -1,0 +1,25 @@
+# Opt-in instrumented builds (separate build directories; see tools/test --sanitize and tools/fuzz).
+#   -DISOTRACE_SANITIZE=address,undefined   or   -DISOTRACE_SANITIZE=thread
+#   -DISOTRACE_FUZZ=ON   libFuzzer targets in tests/fuzz (clang only), with AddressSanitizer and UBSan.
+# Every target of the project is instrumented; the Debian libraries (Embree, TBB, OIIO, OCIO) are not, so bugs
+# inside them are not seen, and ThreadSanitizer cannot see TBB's own synchronisation (see docs/reliability.md).
+set(ISOTRACE_SANITIZE "" CACHE STRING "Comma-separated -fsanitize= list for every target (empty: none)")
+option(ISOTRACE_FUZZ "Build the libFuzzer targets in tests/fuzz (needs clang)" OFF)
+
+set(isotrace_sanitize_list "${ISOTRACE_SANITIZE}")
+if(ISOTRACE_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "ISOTRACE_FUZZ needs clang (libFuzzer): configure with -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  set(isotrace_sanitize_list "address,undefined")
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+
+if(isotrace_sanitize_list)
+  add_compile_options(-fsanitize=${isotrace_sanitize_list} -fno-omit-frame-pointer -g)
+  add_link_options(-fsanitize=${isotrace_sanitize_list})
+  if(isotrace_sanitize_list MATCHES "undefined")
+    # A finding must fail the test, not just print: UBSan otherwise reports and carries on.
+    add_compile_options(-fno-sanitize-recover=undefined)
+  endif()
+endif()

@@ -1,0 +1,42 @@
+#pragma once
+// MemoryBudget: the memory a run may use, charged with an estimate before each large, input-sized allocation
+// (film and AOV buffers, texture pixels, generated elements), so that input asking for too much is refused with
+// the figure (InputError, exit 2) instead of ending in std::bad_alloc or the kernel's OOM killer.
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+#include "renderer/core/input_error.h"
+
+namespace isotrace {
+
+class MemoryBudget {
+public:
+    // The default limit: 80 % of physical memory.
+    MemoryBudget();
+    explicit MemoryBudget(std::uint64_t limit_bytes);
+
+    static std::uint64_t physical_memory_bytes();
+    static std::uint64_t default_limit_bytes();
+
+    // Adds `bytes` for `what` ("film of 65536x65536 pixels with 4 AOVs"). Throws InputError at `where`/`field`
+    // with the estimate, the total and the limit when the total would exceed the limit (and charges nothing).
+    // Thread-safe.
+    void charge(std::uint64_t bytes, const std::string& what, const SourceLocation& where = {},
+                const std::string& field = {});
+
+    std::uint64_t limit_bytes() const { return limit_; }
+    std::uint64_t charged_bytes() const { return charged_.load(); }
+
+private:
+    std::uint64_t limit_;
+    std::atomic<std::uint64_t> charged_{0};
+};
+
+// "27.4 GB" (powers of 1000, three significant digits) for messages.
+std::string format_bytes(std::uint64_t bytes);
+
+// Product of sizes that saturates at UINT64_MAX instead of wrapping (estimates of absurd input stay absurd).
+std::uint64_t saturating_product(std::initializer_list<std::uint64_t> factors);
+
+}  // namespace isotrace

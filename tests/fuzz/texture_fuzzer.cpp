@@ -1,0 +1,22 @@
+// Image textures (PNG by default; the first byte picks the extension OIIO uses to choose a reader): any input
+// loads or throws InputError, and the memory estimate from the header keeps claims of huge sizes harmless.
+#include <cstdint>
+
+#include "renderer/colour/colour_system.h"
+#include "renderer/core/input_error.h"
+#include "renderer/core/memory_budget.h"
+#include "renderer/textures/image_texture.h"
+#include "tests/fuzz/fuzz_input_file.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    static const isotrace::ColourSystem colours("", "ACEScg");
+    static const char* const kExtensions[] = {".png", ".exr", ".jpg", ".tif", ".hdr"};
+    if (size == 0) return 0;
+    const char* extension = kExtensions[data[0] % 5];
+    isotrace::MemoryBudget budget(std::uint64_t(256) << 20);
+    try {
+        isotrace::ImageTexture::load(isotrace::fuzz::write_input(data + 1, size - 1, extension), "", colours, budget);
+    } catch (const isotrace::InputError&) {
+    }
+    return 0;
+}
