@@ -25,6 +25,10 @@ public:
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans) const override;
 
+    // The box is half_size() around the origin of its frame, which to_object() places.
+    const Vec3d& half_size() const { return half_size_; }
+    const Transform& to_object() const { return to_object_; }
+
 private:
     // The one span of the line inside the box (unclipped), if the line passes through its interior. A line in a
     // face plane, or touching only an edge or corner, misses.

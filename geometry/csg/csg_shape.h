@@ -47,6 +47,10 @@ public:
                       std::vector<InsideSpan>& spans) const override;
 
     CsgOperation operation() const { return operation_; }
+    std::size_t operand_count() const { return operands_.size(); }
+    const Shape& operand(std::size_t index) const { return *operands_[index].shape; }
+    // Operand `index`'s placement in the CSG's space when it could not be baked into the operand.
+    const std::optional<Transform>& operand_placement(std::size_t index) const { return operands_[index].to_csg; }
     // Children whose transform could not be baked into them (they see rays mapped into their own space).
     std::size_t transformed_child_count() const;
 

@@ -17,4 +17,16 @@ double signed_volume(const TriangleMeshData& mesh);
 // Number of groups of triangles connected through shared vertices.
 std::size_t connected_components(const TriangleMeshData& mesh);
 
+// Undirected edges used by one triangle (a hole's rim) and by more than two (non-manifold).
+struct EdgeUse {
+    std::size_t boundary = 0, over_shared = 0;
+};
+EdgeUse edge_use(const TriangleMeshData& mesh);
+
+// V − E + F over the vertices the triangles use: 2 for a sphere, 0 for a torus (per closed component).
+long euler_characteristic(const TriangleMeshData& mesh);
+
+// Closed and consistently oriented, and around every vertex its triangles form one ring (no pinched vertices).
+bool is_closed_two_manifold(const TriangleMeshData& mesh);
+
 }  // namespace isotrace

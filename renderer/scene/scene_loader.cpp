@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "geometry/polygonize/tessellated_shape.h"
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
 #include "renderer/plugin/sampler_registry.h"
@@ -171,6 +172,8 @@ void load_content(const SceneNode& root, const SceneOverrides& overrides, Render
         object.material = resolve_material(node, scene, i);
         object.to_world = parse_optional_transform(node, "transform");
         object.shape = shape_registry().create(node.object("shape"));
+        if (auto tessellate = node.optional_object("tessellate"))
+            object.shape = tessellated_shape(std::move(object.shape), *tessellate);
         if (overrides.replace_shape) object.shape = overrides.replace_shape(std::move(object.shape));
         object.part_materials = resolve_part_materials(*object.shape, scene);
         node.finish();

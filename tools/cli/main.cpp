@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
     const CommandRunner depth = add_depth_command(app);
     const CommandRunner bench = add_bench_command(app);
     const CommandRunner polygonize = add_polygonize_command(app);
+    const CommandRunner mesh = add_mesh_command(app);
     if (reject_unknown_command(app, argc, argv)) return kExitBadInput;
     try {
         app.parse(argc, argv);
@@ -61,6 +62,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("depth")) return depth();
         if (app.got_subcommand("bench")) return bench();
         if (app.got_subcommand("polygonize")) return polygonize();
+        if (app.got_subcommand("mesh")) return mesh();
         return info();
     } catch (const isotrace::InputError& error) {
         std::fprintf(stderr, "isotrace: error: %s\n", error.what());

@@ -1,0 +1,50 @@
+// The implicit field of a box: the signed distance to the box in its own frame, carried to the object by the
+// box's placement (exact distance for rigid placements, a field with the same zero set for any affine one).
+#include <cmath>
+
+#include "geometry/box/box_shape.h"
+#include "geometry/polygonize/implicit_field_registry.h"
+#include "geometry/polygonize/transformed_field.h"
+
+namespace isotrace {
+namespace {
+
+// The box half_size around the origin.
+class CentredBoxField final : public ImplicitField {
+public:
+    explicit CentredBoxField(const Vec3d& half_size) : half_size_(half_size) {}
+
+    double value(const Vec3d& p) const override {
+        const Vec3d q = abs(p) - half_size_;
+        return length(max(q, Vec3d{})) + std::min(max_component(q), 0.0);
+    }
+    Vec3d gradient(const Vec3d& p) const override {
+        const Vec3d q = abs(p) - half_size_;
+        Vec3d g;
+        if (max_component(q) > 0) {
+            g = max(q, Vec3d{});
+            g = g / length(g);
+        } else {  // inside: the nearest face's normal
+            const int axis = q.x >= q.y && q.x >= q.z ? 0 : (q.y >= q.z ? 1 : 2);
+            g[axis] = 1;
+        }
+        for (int k = 0; k < 3; ++k)
+            if (p[k] < 0) g[k] = -g[k];
+        return g;
+    }
+    FieldBox bounds() const override { return {-half_size_, half_size_}; }
+    bool may_reach_surface(const Vec3d& centre, double radius) const override {
+        return std::abs(value(centre)) <= radius;
+    }
+
+private:
+    Vec3d half_size_;
+};
+
+}  // namespace
+}  // namespace isotrace
+
+ISOTRACE_REGISTER_IMPLICIT_FIELD("box", [](const isotrace::Shape& shape) {
+    const auto& box = static_cast<const isotrace::BoxShape&>(shape);
+    return isotrace::transformed_field(std::make_unique<isotrace::CentredBoxField>(box.half_size()), box.to_object());
+})

@@ -1,0 +1,57 @@
+#pragma once
+// ImplicitField: what every polygoniser asks of a surface, and nothing about the shape behind it. A field f is
+// negative inside, positive outside and zero on the surface; its gradient points outwards. Value and gradient at
+// a lattice crossing are the Hermite data of dual contouring. f need not be a distance: only its sign, its zero
+// set and the direction of its gradient carry meaning, and |f|/|∇f| estimates the distance near the surface.
+//
+// Shapes offer their field through the implicit-field registry (implicit_field_registry.h); each primitive's
+// field lives in the primitive's own folder.
+#include <limits>
+#include <memory>
+
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+// An axis-aligned box, lower ≤ upper.
+struct FieldBox {
+    Vec3d lower, upper;
+
+    // The box that extend() grows from (lower > upper).
+    static FieldBox none() {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        return {{inf, inf, inf}, {-inf, -inf, -inf}};
+    }
+    void extend(const Vec3d& p) {
+        lower = min(lower, p);
+        upper = max(upper, p);
+    }
+    void extend(const FieldBox& box) {
+        lower = min(lower, box.lower);
+        upper = max(upper, box.upper);
+    }
+
+    Vec3d centre() const { return (lower + upper) * 0.5; }
+    Vec3d extent() const { return upper - lower; }
+    bool contains(const Vec3d& p) const {
+        return lower.x <= p.x && p.x <= upper.x && lower.y <= p.y && p.y <= upper.y && lower.z <= p.z &&
+               p.z <= upper.z;
+    }
+    // Distance from p to the box (0 inside).
+    double distance(const Vec3d& p) const { return length(max(max(lower - p, p - upper), Vec3d{})); }
+};
+
+class ImplicitField {
+public:
+    virtual ~ImplicitField() = default;
+
+    virtual double value(const Vec3d& p) const = 0;
+    virtual Vec3d gradient(const Vec3d& p) const = 0;
+    // A box that contains the whole surface (and, for a bounded solid, the whole inside).
+    virtual FieldBox bounds() const = 0;
+    // Conservative: false only when no surface point lies within `radius` of `centre`. The polygonisers subdivide
+    // only cells for which it is true, so a field that cannot tell may always answer true (at the cost of time).
+    virtual bool may_reach_surface(const Vec3d& centre, double radius) const = 0;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,40 @@
+#pragma once
+// The field sampled on a lattice where the surface is: the cells the octree descent keeps (those that may hold
+// surface, to the finest level), the signs at their corners, and the Hermite data (crossing point and gradient)
+// on every edge whose ends differ in sign. Marching cubes and dual contouring both start from here.
+//
+// Everything is stored in sorted key order and computed into per-index slots, so the result is the same for any
+// thread count.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "geometry/polygonize/implicit_field.h"
+#include "geometry/polygonize/lattice.h"
+
+namespace isotrace {
+
+struct LatticeSamples {
+    std::vector<LatticeKey> cells;           // sorted: finest cells with corners of both signs
+    std::vector<std::uint8_t> inside;        // per cell: bit c set when corner c is inside (field < 0)
+    std::vector<LatticeKey> edges;           // sorted edge keys (lattice.h) of the edges the surface cuts
+    std::vector<Vec3d> crossings;            // per edge: the surface point on it
+    std::vector<Vec3d> gradients;            // per edge: the field's gradient there
+    std::vector<std::uint8_t> lower_inside;  // per edge: its lower corner is the inside one
+    std::size_t candidate_cells = 0;         // finest cells the descent kept
+    std::size_t corners = 0;                 // field samples at corners
+
+    std::optional<std::size_t> cell(LatticeKey key) const;
+    std::optional<std::size_t> edge(LatticeKey key) const;
+};
+
+LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice);
+
+// The point on the lattice edge from `corner` along `axis` where the field changes sign, given the values at its
+// ends (one < 0, the other ≥ 0): regula falsi (Illinois) safeguarded by bisection, in the lattice's coordinates
+// (on a spherical lattice an edge in θ or φ is an arc).
+Vec3d edge_crossing(const ImplicitField& field, const Lattice& lattice, const LatticeIndex& corner, int axis,
+                    double lower_value, double upper_value);
+
+}  // namespace isotrace

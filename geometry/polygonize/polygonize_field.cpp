@@ -1,0 +1,86 @@
+#include "geometry/polygonize/polygonize_field.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "geometry/polygonize/cartesian_lattice.h"
+#include "geometry/polygonize/marching_cubes.h"
+#include "geometry/polygonize/spherical_origin.h"
+
+namespace isotrace {
+namespace {
+
+// A sphere filling the root cell crosses about 1.5·π·4^L finest cells; each costs roughly this much memory while
+// polygonising (keys, eight corner samples, Hermite data, vertices, triangles).
+constexpr double kBytesPerSurfaceCell = 400;
+
+void check_depth(PolygonizeMethod method, int depth) {
+    if (depth >= min_depth(method) && depth <= kMaxPolygonizeDepth) return;
+    char message[256];
+    const double cells = 1.5 * 3.14159 * std::pow(4.0, depth);
+    std::snprintf(message, sizeof message,
+                  "depth: %d is out of range %d..%d (a surface like a sphere needs about %.3g surface cells, %.3g GB, "
+                  "at that depth)",
+                  depth, min_depth(method), kMaxPolygonizeDepth, cells, cells * kBytesPerSurfaceCell / 1e9);
+    throw std::invalid_argument(message);
+}
+
+}  // namespace
+
+int min_depth(PolygonizeMethod method) { return method == PolygonizeMethod::SphericalDualContouring ? 2 : 1; }
+
+std::optional<PolygonizeMethod> polygonize_method_named(const std::string& name) {
+    if (name == "mc") return PolygonizeMethod::MarchingCubes;
+    if (name == "dc") return PolygonizeMethod::DualContouring;
+    if (name == "sdc") return PolygonizeMethod::SphericalDualContouring;
+    return std::nullopt;
+}
+
+std::optional<PoleCap> pole_cap_named(const std::string& name) {
+    if (name == "axis") return PoleCap::AxisRoot;
+    if (name == "normal") return PoleCap::NormalProjection;
+    if (name == "vertical") return PoleCap::VerticalProjection;
+    return std::nullopt;
+}
+
+Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOptions& options) {
+    check_depth(options.method, options.depth);
+    const FieldBox bounds = field.bounds();
+    if (!is_finite(bounds.lower) || !is_finite(bounds.upper) || !(max_component(bounds.extent()) > 0))
+        throw std::invalid_argument("the surface is empty (its bounds have no extent)");
+    Polygonization result;
+    PolygonizeReport& report = result.report;
+    if (options.method != PolygonizeMethod::SphericalDualContouring) {
+        const CartesianLattice lattice = CartesianLattice::around(bounds, options.depth);
+        const LatticeSamples samples = sample_lattice(field, lattice);
+        report.candidate_cells = samples.candidate_cells;
+        report.surface_cells = samples.cells.size();
+        report.corner_samples = samples.corners;
+        report.cut_edges = samples.edges.size();
+        result.mesh = options.method == PolygonizeMethod::MarchingCubes
+                          ? marching_cubes(samples, lattice, field)
+                          : dual_contour(samples, lattice, field, options.pole_cap, report.dual);
+        return result;
+    }
+    report.requested_origin = options.origin.value_or(bounds.centre());
+    if (!bounds.contains(report.requested_origin))
+        throw std::invalid_argument("origin: lies outside the surface's bounds");
+    Vec3d origin = report.requested_origin;
+    if (options.correct_origin) {
+        const OriginCorrection correction = correct_origin(field, origin, options.depth);
+        origin = correction.origin;
+        report.origin_steps = correction.steps;
+    }
+    report.range = spherical_range(field, origin);
+    const SphericalLattice lattice(report.range, options.depth);
+    const LatticeSamples samples = sample_lattice(field, lattice);
+    report.candidate_cells = samples.candidate_cells;
+    report.surface_cells = samples.cells.size();
+    report.corner_samples = samples.corners;
+    report.cut_edges = samples.edges.size();
+    result.mesh = dual_contour(samples, lattice, field, options.pole_cap, report.dual);
+    return result;
+}
+
+}  // namespace isotrace

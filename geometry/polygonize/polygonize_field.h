@@ -1,0 +1,57 @@
+#pragma once
+// Polygonising an implicit field into a triangle mesh: marching cubes or dual contouring on the Cartesian
+// octree's finest level, or dual contouring on a spherical octree (Kim et al. 2011, and the seed paper's stable
+// construction). The octrees subdivide only cells that may hold surface (ImplicitField::may_reach_surface), so
+// every cell that does is kept at the finest level; empty space stays coarse and produces nothing. (No
+// simplification by QEF error: all surface cells are at depth L.)
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "geometry/mesh/triangle_mesh_data.h"
+#include "geometry/polygonize/dual_contouring.h"
+#include "geometry/polygonize/implicit_field.h"
+#include "geometry/polygonize/spherical_lattice.h"
+
+namespace isotrace {
+
+enum class PolygonizeMethod { MarchingCubes, DualContouring, SphericalDualContouring };
+
+struct PolygonizeOptions {
+    PolygonizeMethod method = PolygonizeMethod::DualContouring;
+    int depth = 6;                 // 2^depth cells along each lattice axis
+    std::optional<Vec3d> origin;   // spherical: the lattice's origin (default: the centre of the field's bounds)
+    bool correct_origin = true;    // spherical: move the origin off the surface first (spherical_origin.h)
+    PoleCap pole_cap = PoleCap::AxisRoot;
+};
+
+struct PolygonizeReport {
+    std::size_t candidate_cells = 0;  // finest cells the octree kept
+    std::size_t surface_cells = 0;    // those with corners of both signs
+    std::size_t corner_samples = 0;
+    std::size_t cut_edges = 0;
+    DualContouringStatistics dual;
+    // Spherical only.
+    Vec3d requested_origin;
+    SphericalRange range;
+    int origin_steps = 0;
+};
+
+struct Polygonization {
+    TriangleMeshData mesh;  // normals: the field's gradient direction at each vertex
+    PolygonizeReport report;
+};
+
+// The depths each method accepts.
+int min_depth(PolygonizeMethod method);
+constexpr int kMaxPolygonizeDepth = 10;
+
+// The "mc", "dc", "sdc" names of the methods (for the command line and scene files); std::nullopt for others.
+std::optional<PolygonizeMethod> polygonize_method_named(const std::string& name);
+std::optional<PoleCap> pole_cap_named(const std::string& name);  // "axis", "normal", "vertical"
+
+// Throws std::invalid_argument naming the setting at fault ("depth: ...", "origin: ...") for a depth out of range
+// (with the memory it would need), an origin outside the field's bounds, or a field whose bounds are empty.
+Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOptions& options);
+
+}  // namespace isotrace

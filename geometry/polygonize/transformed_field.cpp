@@ -1,0 +1,48 @@
+#include "geometry/polygonize/transformed_field.h"
+
+#include <cmath>
+
+namespace isotrace {
+namespace {
+
+class TransformedField final : public ImplicitField {
+public:
+    TransformedField(std::unique_ptr<ImplicitField> inner, const Transform& to_outer)
+        : inner_(std::move(inner)), to_outer_(to_outer), to_inner_(to_outer.inverse()) {
+        // The Frobenius norm bounds how far the inverse map can stretch a ball's radius.
+        double sum = 0;
+        for (const Vec3d& axis : {Vec3d{1, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0, 0, 1}})
+            sum += dot(to_inner_.vector(axis), to_inner_.vector(axis));
+        inner_stretch_ = std::sqrt(sum);
+    }
+
+    double value(const Vec3d& p) const override { return inner_->value(to_inner_.point(p)); }
+    // ∇(f∘A⁻¹) = A⁻ᵀ∇f, which is what Transform::normal applies.
+    Vec3d gradient(const Vec3d& p) const override { return to_outer_.normal(inner_->gradient(to_inner_.point(p))); }
+    FieldBox bounds() const override {
+        const FieldBox inner = inner_->bounds();
+        FieldBox box = FieldBox::none();
+        for (int corner = 0; corner < 8; ++corner)
+            box.extend(to_outer_.point(Vec3d{corner & 1 ? inner.upper.x : inner.lower.x,
+                                        corner & 2 ? inner.upper.y : inner.lower.y,
+                                        corner & 4 ? inner.upper.z : inner.lower.z}));
+        return box;
+    }
+    bool may_reach_surface(const Vec3d& centre, double radius) const override {
+        return inner_->may_reach_surface(to_inner_.point(centre), radius * inner_stretch_);
+    }
+
+private:
+    std::unique_ptr<ImplicitField> inner_;
+    Transform to_outer_, to_inner_;
+    double inner_stretch_ = 1;
+};
+
+}  // namespace
+
+std::unique_ptr<ImplicitField> transformed_field(std::unique_ptr<ImplicitField> inner, const Transform& to_outer) {
+    if (to_outer.is_identity()) return inner;
+    return std::make_unique<TransformedField>(std::move(inner), to_outer);
+}
+
+}  // namespace isotrace

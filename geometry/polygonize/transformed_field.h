@@ -1,0 +1,14 @@
+#pragma once
+// A field carried by an affine map: the field of the shape placed by `to_outer`, evaluated in the outer space
+// (an instanced scene object, a CSG child that kept its own frame). The value is the inner field's at the mapped
+// point, so the sign and zero set are exact; the gradient follows by the chain rule.
+#include <memory>
+
+#include "geometry/polygonize/implicit_field.h"
+#include "renderer/math/transform.h"
+
+namespace isotrace {
+
+std::unique_ptr<ImplicitField> transformed_field(std::unique_ptr<ImplicitField> inner, const Transform& to_outer);
+
+}  // namespace isotrace

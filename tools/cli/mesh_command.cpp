@@ -1,0 +1,154 @@
+// isotrace mesh: one implicit object of a scene polygonised by marching cubes, octree dual contouring or
+// spherical-octree dual contouring, written as PLY or OBJ, with counts, time and the distance to the true surface.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "geometry/polygonize/implicit_field_registry.h"
+#include "geometry/polygonize/mesh_error.h"
+#include "geometry/polygonize/polygonize_field.h"
+#include "geometry/polygonize/transformed_field.h"
+#include "renderer/core/did_you_mean.h"
+#include "renderer/core/input_error.h"
+#include "renderer/scene/loaded_scene.h"
+#include "tools/cli/command_helpers.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/obj_writer.h"
+#include "tools/cli/ply_writer.h"
+
+namespace isotrace::cli {
+namespace {
+
+struct MeshArguments {
+    std::string scene, object, output;
+    std::string method = "dc";
+    int depth = 6;
+    std::vector<double> origin;
+    std::string pole_cap = "axis";
+    bool no_origin_correction = false;
+    std::size_t error_samples = 20000;
+    bool quiet = false;
+};
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+
+const SceneObject& find_object(const RenderScene& scene, const std::string& name, const std::string& file) {
+    std::vector<std::string> names;
+    for (const SceneObject& object : scene.objects()) {
+        if (object.name == name) return object;
+        names.push_back(object.name);
+    }
+    throw InputError({}, "--object",
+                     "no object \"" + name + "\" in " + file + did_you_mean(name, names) + "; objects: " + joined(names));
+}
+
+std::unique_ptr<ImplicitField> field_of(const SceneObject& object) {
+    std::unique_ptr<ImplicitField> field;
+    try {
+        field = implicit_field_of(*object.shape);
+    } catch (const std::invalid_argument& error) {
+        throw InputError({}, "--object", "object \"" + object.name + "\": " + error.what());
+    }
+    if (!field)
+        throw InputError({}, "--object", "object \"" + object.name + "\" is a \"" + object.shape->type_name() +
+                                             "\", which is not an implicit surface; these are: " +
+                                             joined(implicit_shape_types()));
+    // An instanced object's shape is in object space.
+    return object.instanced ? transformed_field(std::move(field), object.to_world) : std::move(field);
+}
+
+PolygonizeOptions options_from(const MeshArguments& args) {
+    PolygonizeOptions options;
+    const auto method = polygonize_method_named(args.method);
+    if (!method) throw InputError({}, "--method", "unknown method \"" + args.method + "\"; expected mc, dc or sdc");
+    options.method = *method;
+    options.depth = args.depth;
+    const auto cap = pole_cap_named(args.pole_cap);
+    if (!cap) throw InputError({}, "--pole-cap", "unknown placement \"" + args.pole_cap + "\"; expected axis, normal or vertical");
+    options.pole_cap = *cap;
+    options.correct_origin = !args.no_origin_correction;
+    if (!args.origin.empty()) {
+        if (args.origin.size() != 3) throw InputError({}, "--origin", "expected x,y,z");
+        options.origin = Vec3d{args.origin[0], args.origin[1], args.origin[2]};
+    }
+    return options;
+}
+
+int run_mesh(const MeshArguments& args) {
+    std::string extension = std::filesystem::path(args.output).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    check_output_file(args.output, extension == ".obj" ? ".obj" : ".ply", "--output");
+    const PolygonizeOptions options = options_from(args);
+    const std::unique_ptr<LoadedScene> scene = load_scene(args.scene);
+    const SceneObject& object = find_object(*scene->scene, args.object, args.scene);
+    const std::unique_ptr<ImplicitField> field = field_of(object);
+
+    const auto start = std::chrono::steady_clock::now();
+    Polygonization result;
+    try {
+        result = polygonize_field(*field, options);
+    } catch (const std::invalid_argument& error) {
+        const std::string message = error.what();
+        const std::string option = message.rfind("origin:", 0) == 0 ? "--origin" : (message.rfind("depth:", 0) == 0 ? "--depth" : "--object");
+        throw InputError({}, option, message.substr(message.find(':') == std::string::npos ? 0 : message.find(':') + 2));
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (result.mesh.triangles.empty())
+        throw InputError({}, "--object", "object \"" + object.name + "\": no surface found at depth " + std::to_string(args.depth));
+    const MeshError error = measure_mesh_error(*field, result.mesh, args.error_samples);
+
+    if (extension == ".obj") write_obj(args.output, {{object.name, result.mesh}});
+    else write_ply(args.output, result.mesh);
+
+    if (!args.quiet) {
+        const PolygonizeReport& r = result.report;
+        std::printf("%s: %s depth %d: %zu vertices, %zu triangles in %.3f s (%zu candidate cells, %zu on the surface)\n",
+                    object.name.c_str(), args.method.c_str(), args.depth, result.mesh.positions.size(),
+                    result.mesh.triangles.size(), seconds, r.candidate_cells, r.surface_cells);
+        if (options.method == PolygonizeMethod::SphericalDualContouring)
+            std::printf("origin (%g, %g, %g) -> (%g, %g, %g) in %d steps; r in [%g, %g]; %zu ghost vertices\n",
+                        r.requested_origin.x, r.requested_origin.y, r.requested_origin.z, r.range.origin.x,
+                        r.range.origin.y, r.range.origin.z, r.origin_steps, r.range.r_min, r.range.r_max,
+                        r.dual.ghost_vertices);
+        if (r.dual.open_edges) std::printf("warning: %zu cut edges left open\n", r.dual.open_edges);
+        std::printf("vertex |f|/|grad f|: mean %.3g, max %.3g; Hausdorff estimate %.3g (mesh->surface %.3g, "
+                    "surface->mesh %.3g over %zu surface points)\n",
+                    error.vertex_mean, error.vertex_max, error.hausdorff(), error.mesh_to_surface,
+                    error.surface_to_mesh, error.surface_samples);
+        std::printf("wrote %s\n", args.output.c_str());
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+CommandRunner add_mesh_command(CLI::App& app) {
+    auto args = std::make_shared<MeshArguments>();
+    CLI::App* command = app.add_subcommand(
+        "mesh", "Polygonise one implicit object: marching cubes, octree or spherical-octree dual contouring");
+    command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+    command->add_option("--object", args->object, "Name of the scene object to mesh")->required();
+    command->add_option("--method", args->method, "mc (marching cubes), dc (octree dual contouring) or sdc (spherical)")
+        ->capture_default_str();
+    command->add_option("--depth", args->depth, "Octree depth L: 2^L cells along each axis (1..10, sdc 2..10)")
+        ->capture_default_str();
+    command->add_option("--origin", args->origin, "sdc: origin of the spherical octree (default: centre of the bounds)")
+        ->delimiter(',')
+        ->expected(3);
+    command->add_flag("--no-origin-correction", args->no_origin_correction,
+                      "sdc: keep the origin even when it lies on the surface (for comparison)");
+    command->add_option("--pole-cap", args->pole_cap, "sdc: ghost vertex at the poles: axis, normal or vertical")
+        ->capture_default_str();
+    command->add_option("--error-samples", args->error_samples, "Sample points for the Hausdorff estimate")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t(1), std::size_t(10000000)));
+    command->add_option("-o,--output", args->output, "Mesh file: .ply (binary) or .obj, in world space")->required();
+    command->add_flag("-q,--quiet", args->quiet, "No summary");
+    return [args] { return run_mesh(*args); };
+}
+
+}  // namespace isotrace::cli
