@@ -88,7 +88,7 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
             if (!piece) continue;
             const QuadraticAbout q = s.slices.distance_squared(*piece, s0);
             const Polynomial r2{q.c0, q.c1, q.c2};
-            const double r2_middle = q(middle);
+            const double r2_middle = std::max(0.0, q(middle));
             for (const FieldPiece& kp : kernel.pieces(s.element->radius()).span()) {
                 if (!(r2_middle >= kp.r2_begin && r2_middle <= kp.r2_end)) continue;
                 if (!kp.is_polynomial) {

@@ -79,6 +79,8 @@ namespace field_sweep_detail {
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 constexpr int kRecomposeEvery = 16;
+// Depth of the Lipschitz search: 2⁻⁹⁰ of a piece is far below double resolution, so the stack never limits it.
+constexpr int kMaxSearchDepth = 90;
 constexpr double kUnset = std::numeric_limits<double>::infinity();
 
 inline int sign_of(double value) { return value > 0 ? 1 : -1; }
@@ -335,7 +337,8 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
             if (crossing > t && crossing < a.next_event) a.next_event = crossing;
         }
     }
-    const double r2_middle = a.q(0.5 * (t + a.next_event));
+    // dist² is a sum of squares, but its quadratic can round below 0 where the line crosses a flat skeleton.
+    const double r2_middle = std::max(0.0, a.q(0.5 * (t + a.next_event)));
     for (const FieldPiece& unit : unit_pieces_)
         if (r2_middle >= unit.r2_begin * radius2 && r2_middle <= unit.r2_end * radius2) a.kernel_piece = &unit;
     if (!a.kernel_piece) return;  // beyond the support on this piece (rounding at its ends)
@@ -504,36 +507,28 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                                           radius2) *
                                  slope;
                 }
-                // Subdivide until a sign change brackets a root or the bound proves there is none; nearer halves
-                // first, so crossings come out in increasing t.
+                // Subdivide nearer halves first until the bound proves a span free of crossings or the span is
+                // as small as the resolution; a sign change across such a span is a crossing. Bisecting a bracket
+                // instead could land on its last root of three, so every span is searched the same way.
                 struct Span {
                     double lo, hi, f_lo, f_hi;
                 };
-                Span stack[64];
+                Span stack[kMaxSearchDepth + 2];
                 int top = 0;
                 stack[top++] = {t0, t1, value(t0), value(t1)};
                 while (top > 0) {
                     const Span span = stack[--top];
-                    if ((span.f_lo < 0) != (span.f_hi < 0)) {
-                        double lo = span.lo, hi = span.hi, f_lo = span.f_lo;
-                        for (int i = 0; i < 200 && hi - lo > 1e-13 * (1 + std::abs(hi)); ++i) {
-                            ++work.root_iterations;
-                            const double mid = 0.5 * (lo + hi);
-                            const double f_mid = value(mid);
-                            if ((f_mid < 0) == (f_lo < 0)) {
-                                lo = mid;
-                                f_lo = f_mid;
-                            } else {
-                                hi = mid;
-                            }
-                        }
-                        const int before = sign_of(span.f_lo);
+                    const bool sign_change = (span.f_lo < 0) != (span.f_hi < 0);
+                    if (!sign_change && std::abs(span.f_lo) + std::abs(span.f_hi) > lipschitz * (span.hi - span.lo))
+                        continue;
+                    if (span.hi - span.lo < 1e-13 * (1 + std::abs(span.hi)) || top >= kMaxSearchDepth) {
+                        // A crossing must leave the sign the sweep is in (rounding can flip values a hair from a root).
+                        if (!sign_change || sign_of(span.f_hi) == previous_sign) continue;
+                        const int before = previous_sign;
                         previous_sign = -before;
-                        if (crossing(hi, before)) return;
+                        if (crossing(span.hi, before)) return;
                         continue;
                     }
-                    if (std::abs(span.f_lo) + std::abs(span.f_hi) > lipschitz * (span.hi - span.lo)) continue;
-                    if (top + 2 > 64 || span.hi - span.lo < 1e-13 * (1 + std::abs(span.hi))) continue;
                     ++work.root_iterations;
                     const double mid = 0.5 * (span.lo + span.hi);
                     const double f_mid = value(mid);

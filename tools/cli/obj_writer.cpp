@@ -36,7 +36,7 @@ void write_obj(const std::string& path, const std::vector<NamedMesh>& meshes) {
         }
         first_vertex += mesh.positions.size();
         first_normal += mesh.normals.size();
-        }
+    }
     write_file_atomically(path, out.str());
 }
 

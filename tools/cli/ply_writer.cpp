@@ -1,8 +1,7 @@
 #include "tools/cli/ply_writer.h"
 
 #include <bit>
-#include <fstream>
-#include <stdexcept>
+#include <sstream>
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/version.h"
@@ -11,8 +10,8 @@ namespace isotrace::cli {
 
 void write_ply(const std::string& path, const TriangleMeshData& mesh) {
     static_assert(std::endian::native == std::endian::little, "binary_little_endian is written as in memory");
-    write_atomically(path, [&](const std::filesystem::path& temporary) {
-        std::ofstream out(temporary, std::ios::binary);
+    std::ostringstream out(std::ios::binary);
+    {
         const bool normals = mesh.normals.size() == mesh.positions.size() && !mesh.normals.empty();
         out << "ply\nformat binary_little_endian 1.0\ncomment isotrace " << kIsotraceVersion << "\nelement vertex "
             << mesh.positions.size() << "\nproperty float x\nproperty float y\nproperty float z\n";
@@ -27,8 +26,8 @@ void write_ply(const std::string& path, const TriangleMeshData& mesh) {
             out.write(reinterpret_cast<const char*>(&three), 1);
             out.write(reinterpret_cast<const char*>(t.data()), sizeof(t));
         }
-        if (!out.flush()) throw std::runtime_error("cannot write " + path);
-    });
+    }
+    write_file_atomically(path, out.str());
 }
 
 }  // namespace isotrace::cli

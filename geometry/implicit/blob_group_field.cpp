@@ -1,5 +1,4 @@
-// The implicit field of a blob group: f = T − Σ wᵢ·fᵢ (negative inside), gradient −∇Σ. It lives here rather than
-// beside BlobGroup (geometry/implicit) only while that folder is being rewritten; it uses BlobGroup's public API.
+// The implicit field of a blob group for the polygonisers: f = T − Σ wᵢ·fᵢ (negative inside), gradient −∇Σ.
 //
 // may_reach_surface bounds the sum over the ball by Lipschitz constants: element i changes by at most
 // |wᵢ|·2·|f'(0)|/Rᵢ per unit length (f is non-increasing and convex in r², so |df/dr²| ≤ |f'(0)|/R², and
