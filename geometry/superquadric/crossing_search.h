@@ -23,8 +23,9 @@ struct Crossing {
 
 struct CrossingSearchWork {
     std::uint64_t interval_bounds = 0;
-    std::uint64_t evaluations = 0;
-    std::uint64_t crossings = 0;
+    std::uint64_t evaluations = 0;  // all point values: halvings and refinement steps
+    std::uint64_t halvings = 0;
+    std::uint64_t crossings = 0;    // brackets refined
 };
 
 namespace crossing_search_detail {
@@ -100,6 +101,7 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         }
         const double g_mid = value(mid);
         ++work.evaluations;
+        ++work.halvings;
         stack[top++] = {mid, s.hi, g_mid, s.g_hi};  // the far half waits below the near one
         stack[top++] = {s.lo, mid, s.g_lo, g_mid};
     }

@@ -36,6 +36,8 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
     bounds_slot_ = counters::named_counter_slot("superquadric.interval_bounds");
     evaluations_slot_ = counters::named_counter_slot("superquadric.evaluations");
+    halvings_slot_ = counters::named_counter_slot("superquadric.halvings");
+    crossings_slot_ = counters::named_counter_slot("superquadric.refined_crossings");
     polynomial_slot_ = counters::named_counter_slot("superquadric.polynomial_solves");
     return user_geometry::create(device, this, unsigned(superquadrics_.size()), bounds_callback, intersect_callback,
                                  occluded_callback);
@@ -44,6 +46,8 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {
     counters::add_to_named(bounds_slot_, work.search.interval_bounds);
     counters::add_to_named(evaluations_slot_, work.search.evaluations);
+    counters::add_to_named(halvings_slot_, work.search.halvings);
+    counters::add_to_named(crossings_slot_, work.search.crossings);
     counters::add_to_named(polynomial_slot_, work.polynomial_solves);
 }
 

@@ -45,7 +45,7 @@ private:
 
     std::vector<Superquadric> superquadrics_;
     int counter_slot_ = 0;
-    int bounds_slot_ = 0, evaluations_slot_ = 0, polynomial_slot_ = 0;
+    int bounds_slot_ = 0, evaluations_slot_ = 0, halvings_slot_ = 0, crossings_slot_ = 0, polynomial_slot_ = 0;
 };
 
 }  // namespace isotrace
