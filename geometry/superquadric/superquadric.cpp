@@ -1,9 +1,9 @@
 #include "geometry/superquadric/superquadric.h"
 
 #include <algorithm>
-#include <limits>
 
 #include "geometry/polynomial/monotone_root_finder.h"
+#include "geometry/superquadric/superquadric_along_ray.h"
 
 namespace isotrace {
 namespace {
@@ -63,8 +63,8 @@ Vec3d Superquadric::surface_point(double eta, double omega) const {
 template <class Visit>
 void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                           SuperquadricWork& work, Visit&& visit) const {
-    const Transform& to_local = placement_.inverse();
-    const Vec3d o = to_local.point(origin), d = to_local.vector(direction);
+    const SuperquadricAlongRay ray(*this, origin, direction);
+    const Vec3d &o = ray.local_origin(), &d = ray.local_direction();
     double t0 = t_min, t1 = t_max;
     if (!clip_to_box(deformation_.deformed_box(), o, d, t0, t1)) return;
 
@@ -80,17 +80,9 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return;
     }
 
-    const auto value = [&](double t) { return local_field(o + d * t); };
-    const auto bound = [&](double a, double b) {
-        IntervalBox box = IntervalBox::point(o + d * a);
-        box.extend(o + d * b);
-        bool clipped = false;
-        const std::optional<IntervalBox> undeformed = deformation_.inverse_box(box, clipped);
-        if (!undeformed) return Interval{1, 1};
-        const Interval gauge =
-            shape_.gauge_range({undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
-        return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
-    };
+    const auto value = [&](double t) { return ray.value(t); };
+    const auto bound = [&](double a, double b) { return ray.bound(a, b); };
+    const auto slope = [&](double a, double b) { return ray.slope_bound(a, b); };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
 
     // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
@@ -111,8 +103,8 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     double g_start = value(t0);
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
-        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, work.search,
-                              visit))
+        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, slope,
+                              work.search, visit))
             return;
         g_start = g_end;
     }

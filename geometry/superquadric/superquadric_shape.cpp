@@ -35,6 +35,8 @@ void SuperquadricShape::bake(const Transform& to_world) {
 RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
     bounds_slot_ = counters::named_counter_slot("superquadric.interval_bounds");
+    slope_bounds_slot_ = counters::named_counter_slot("superquadric.slope_bounds");
+    monotone_slot_ = counters::named_counter_slot("superquadric.monotone_proofs");
     evaluations_slot_ = counters::named_counter_slot("superquadric.evaluations");
     halvings_slot_ = counters::named_counter_slot("superquadric.halvings");
     crossings_slot_ = counters::named_counter_slot("superquadric.refined_crossings");
@@ -45,6 +47,8 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
 
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {
     counters::add_to_named(bounds_slot_, work.search.interval_bounds);
+    counters::add_to_named(slope_bounds_slot_, work.search.slope_bounds);
+    counters::add_to_named(monotone_slot_, work.search.monotone_proofs);
     counters::add_to_named(evaluations_slot_, work.search.evaluations);
     counters::add_to_named(halvings_slot_, work.search.halvings);
     counters::add_to_named(crossings_slot_, work.search.crossings);
