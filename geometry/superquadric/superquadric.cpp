@@ -4,24 +4,10 @@
 
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/superquadric/superquadric_along_ray.h"
+#include "renderer/math/line_box_clip.h"
 
 namespace isotrace {
 namespace {
-
-// The part of [t0, t1] where origin + t·direction lies in `box` (slab test); false when empty.
-bool clip_to_box(const IntervalBox& box, const Vec3d& origin, const Vec3d& direction, double& t0, double& t1) {
-    for (int k = 0; k < 3; ++k) {
-        if (direction[k] == 0) {
-            if (!box[k].contains(origin[k])) return false;
-            continue;
-        }
-        double a = (box[k].lo - origin[k]) / direction[k], b = (box[k].hi - origin[k]) / direction[k];
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-    }
-    return t0 <= t1;
-}
 
 double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
@@ -65,8 +51,10 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
                           SuperquadricWork& work, Visit&& visit) const {
     const SuperquadricAlongRay ray(*this, origin, direction);
     const Vec3d &o = ray.local_origin(), &d = ray.local_direction();
-    double t0 = t_min, t1 = t_max;
-    if (!clip_to_box(deformation_.deformed_box(), o, d, t0, t1)) return;
+    const IntervalBox& box = deformation_.deformed_box();
+    const std::optional<LineBoxClip> clip = clip_line_to_box(box.lower(), box.upper(), o, d, t_min, t_max);
+    if (!clip) return;
+    const double t0 = clip->t_enter, t1 = clip->t_exit;
 
     if (deformation_.empty() && shape_.polynomial_degree() > 0) {
         ++work.polynomial_solves;
