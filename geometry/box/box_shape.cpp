@@ -6,6 +6,7 @@
 #include "geometry/csg/inside_span_list.h"
 #include "geometry/csg/transformed_bounds.h"
 #include "renderer/core/render_counters.h"
+#include "renderer/math/line_box_clip.h"
 
 namespace isotrace {
 
@@ -25,31 +26,23 @@ RTCGeometry BoxShape::create_geometry(RTCDevice device) {
 
 std::optional<InsideSpan> BoxShape::crossing(const Vec3d& origin, const Vec3d& direction) const {
     const Vec3d o = from_object_.point(origin), d = from_object_.vector(direction);
-    double t_enter = -INFINITY, t_exit = INFINITY;
-    Vec3d enter_normal{0, 0, 1}, exit_normal{0, 0, 1};  // in the box frame (only meaningful when t is finite)
-    for (int axis = 0; axis < 3; ++axis) {
-        if (d[axis] == 0) {
-            if (!(std::abs(o[axis]) < half_size_[axis])) return std::nullopt;  // parallel to the slab, not inside it
-            continue;
-        }
-        const double side = d[axis] > 0 ? 1.0 : -1.0;  // the slab face the ray leaves through
-        const double t_near = (-side * half_size_[axis] - o[axis]) / d[axis];
-        const double t_far = (side * half_size_[axis] - o[axis]) / d[axis];
-        if (t_near > t_enter) {
-            t_enter = t_near;
-            enter_normal = {};
-            enter_normal[axis] = -side;
-        }
-        if (t_far < t_exit) {
-            t_exit = t_far;
-            exit_normal = {};
-            exit_normal[axis] = side;
-        }
-    }
-    if (!(t_enter < t_exit)) return std::nullopt;
-    // Outward normals map by the inverse transpose (they are gradients of the box's inside function).
-    return InsideSpan{{t_enter, normalize(to_object_.normal(enter_normal)), 0, 0},
-                      {t_exit, normalize(to_object_.normal(exit_normal)), 0, 0}};
+    // A line parallel to a slab must lie strictly inside it: one in the plane of a face only grazes the box, and
+    // grazing contacts are misses (docs/decisions.md), although the closed clip keeps them; so is a line that
+    // meets the box in one point (the strict test below).
+    for (int axis = 0; axis < 3; ++axis)
+        if (d[axis] == 0 && !(std::abs(o[axis]) < half_size_[axis])) return std::nullopt;
+    const std::optional<LineBoxClip> clip = clip_line_to_box(-half_size_, half_size_, o, d, -INFINITY, INFINITY);
+    if (!clip || !(clip->t_enter < clip->t_exit)) return std::nullopt;
+    // The outward normal of the face an end lies on, in the box frame ((0, 0, 1) for an end at infinity, where
+    // it is never used); normals map by the inverse transpose (they are gradients of the box's inside function).
+    const auto face_normal = [&](int axis, double outward) {
+        if (axis < 0) return normalize(to_object_.normal(Vec3d{0, 0, 1}));
+        Vec3d n{};
+        n[axis] = d[axis] > 0 ? outward : -outward;
+        return normalize(to_object_.normal(n));
+    };
+    return InsideSpan{{clip->t_enter, face_normal(clip->enter_axis, -1), 0, 0},
+                      {clip->t_exit, face_normal(clip->exit_axis, 1), 0, 0}};
 }
 
 void BoxShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,

@@ -10,6 +10,7 @@
 #include "geometry/mesh/mesh_closedness.h"
 #include "geometry/mesh/mesh_file.h"
 #include "geometry/mesh/mesh_inside_spans.h"
+#include "renderer/math/line_box_clip.h"
 #include "renderer/sampling/warps.h"
 
 namespace isotrace {
@@ -17,31 +18,22 @@ namespace isotrace {
 TriangleMeshShape::TriangleMeshShape(TriangleMeshData mesh) : mesh_(std::move(mesh)) { build_area_distribution(); }
 
 void TriangleMeshShape::build_area_distribution() {
-    area_distribution_.reset();
-    total_area_ = 0;
-    if (mesh_.triangles.empty()) return;
-    std::vector<float> areas;
+    std::vector<double> areas;
     areas.reserve(mesh_.triangles.size());
     for (const auto& triangle : mesh_.triangles) {
         const Vec3d p0(mesh_.positions[triangle[0]]);
         const Vec3d p1(mesh_.positions[triangle[1]]);
         const Vec3d p2(mesh_.positions[triangle[2]]);
-        const double area = 0.5 * length(cross(p1 - p0, p2 - p0));
-        areas.push_back(std::isfinite(area) ? float(area) : 0.0f);
-        total_area_ += areas.back();  // the sum of what the distribution samples, so pdf_area matches it
+        areas.push_back(0.5 * length(cross(p1 - p0, p2 - p0)));
     }
-    area_distribution_.emplace(areas);
+    areas_ = AreaDistribution(areas);
 }
 
 SurfaceSample TriangleMeshShape::sample_surface(std::array<float, 2> u) const {
-    if (!(total_area_ > 0)) return {};
-    const Distribution1D::ContinuousSample pick = area_distribution_->sample_continuous(u[0]);
-    // Where u[0] fell inside the picked triangle's share of [0,1), rescaled to [0,1). Its resolution is that
-    // of u[0] divided by the triangle's probability (coarse only for meshes of millions of triangles).
-    const double within = double(pick.x) * double(area_distribution_->size()) - double(pick.bin);
-    const float u0 = std::clamp(float(within), 0.0f, 0x1.fffffep-1f);
-    const auto [b0, b1] = square_to_uniform_triangle({u0, u[1]});
-    const auto& triangle = mesh_.triangles[pick.bin];
+    if (!(areas_.total() > 0)) return {};
+    const AreaDistribution::Pick pick = areas_.pick(u[0]);
+    const auto [b0, b1] = square_to_uniform_triangle({pick.reused_u, u[1]});
+    const auto& triangle = mesh_.triangles[pick.index];
     const Vec3f& p0 = mesh_.positions[triangle[0]];
     const Vec3f& p1 = mesh_.positions[triangle[1]];
     const Vec3f& p2 = mesh_.positions[triangle[2]];
@@ -49,7 +41,7 @@ SurfaceSample TriangleMeshShape::sample_surface(std::array<float, 2> u) const {
     sample.position = p0 * b0 + p1 * b1 + p2 * (1 - b0 - b1);
     // (v1-v0)x(v2-v0): Embree's Ng, the counter-clockwise front that shading() reports.
     sample.normal = Vec3f(normalize(cross(Vec3d(p1) - Vec3d(p0), Vec3d(p2) - Vec3d(p0))));
-    sample.pdf_area = float(1.0 / total_area_);
+    sample.pdf_area = float(1.0 / areas_.total());
     return sample;
 }
 
@@ -105,43 +97,22 @@ void TriangleMeshShape::prepare_span_queries(RTCDevice device) {
     span_bounds_.upper += margin;
 }
 
-namespace {
-
-// The parameter range in which origin + t·direction lies inside `box`, if any.
-std::optional<std::array<double, 2>> line_range_in_box(const Bounds3f& box, const Vec3d& origin,
-                                                       const Vec3d& direction) {
-    double t0 = -INFINITY, t1 = INFINITY;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double lower = box.lower[axis], upper = box.upper[axis];
-        if (direction[axis] == 0) {
-            if (origin[axis] < lower || origin[axis] > upper) return std::nullopt;
-            continue;
-        }
-        const double a = (lower - origin[axis]) / direction[axis], b = (upper - origin[axis]) / direction[axis];
-        t0 = std::max(t0, std::min(a, b));
-        t1 = std::min(t1, std::max(a, b));
-    }
-    if (!(t0 < t1)) return std::nullopt;
-    return std::array<double, 2>{t0, t1};
-}
-
-}  // namespace
-
 void TriangleMeshShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                                      std::vector<InsideSpan>& spans) const {
-    const auto range = line_range_in_box(span_bounds_, origin, direction);
-    if (!range || (*range)[1] < t_min || (*range)[0] > t_max) return;
+    const auto range = clip_line_to_box(Vec3d(span_bounds_.lower), Vec3d(span_bounds_.upper), origin, direction,
+                                        -INFINITY, INFINITY);
+    if (!range || !(range->t_enter < range->t_exit) || range->t_exit < t_min || range->t_enter > t_max) return;
     // The query starts where the line enters the bounds (outside the mesh), so crossing directions alone tell
     // inside from outside, also for rays that start inside.
-    const double start = (*range)[0];
+    const double start = range->t_enter, end = range->t_exit;
     thread_local std::vector<MeshCrossing> crossings;
     thread_local std::vector<InsideSpan> unclipped;
     crossings.clear();
     unclipped.clear();
-    crossing_scene_->crossings(origin + direction * start, direction, (*range)[1] - start, crossings);
+    crossing_scene_->crossings(origin + direction * start, direction, end - start, crossings);
     for (MeshCrossing& crossing : crossings) crossing.t += start;
     // Crossings closer than a millionth of the chord are one event (float precision of the query is ~1e-7).
-    mesh_inside_spans(crossings, direction, 1e-6 * ((*range)[1] - start), unclipped);
+    mesh_inside_spans(crossings, direction, 1e-6 * (end - start), unclipped);
     for (const InsideSpan& span : unclipped) append_clipped_span(span, t_min, t_max, spans);
 }
 

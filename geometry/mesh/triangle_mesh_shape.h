@@ -9,7 +9,7 @@
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/plugin/solid.h"
-#include "renderer/sampling/distribution_1d.h"
+#include "renderer/sampling/area_distribution.h"
 
 namespace isotrace {
 
@@ -30,9 +30,9 @@ public:
     // u[0] is rescaled within the picked triangle's share and, with u[1], placed by the low-distortion
     // triangle warp. The normal is the counter-clockwise front, as in shading(). Meshes whose triangles all
     // have zero area (after a degenerate bake) cannot be sampled.
-    bool supports_surface_sampling() const override { return total_area_ > 0; }
+    bool supports_surface_sampling() const override { return areas_.total() > 0; }
     SurfaceSample sample_surface(std::array<float, 2> u) const override;
-    float surface_area() const override { return float(total_area_); }
+    float surface_area() const override { return float(areas_.total()); }
 
     // "triangle_mesh has 6 boundary edges (e.g. 3–7)" and the like (see closed_mesh_problem), or empty.
     std::string solid_problem() const override;
@@ -48,8 +48,7 @@ private:
     void build_area_distribution();
 
     TriangleMeshData mesh_;
-    std::optional<Distribution1D> area_distribution_;  // over triangles, by area
-    double total_area_ = 0;
+    AreaDistribution areas_;  // over triangles
     bool winding_swapped_ = false;  // bake() reversed every triangle (mirroring transform)
     std::unique_ptr<MeshCrossingScene> crossing_scene_;  // built by prepare_span_queries
     Bounds3f span_bounds_;                               // the vertices' bounds, enlarged a little, at that time

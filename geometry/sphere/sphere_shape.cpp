@@ -35,30 +35,21 @@ std::optional<double> first_hit(const Sphere& s, const Vec3d& origin, const Vec3
 SphereShape::SphereShape(std::vector<Sphere> spheres) : spheres_(std::move(spheres)) { build_area_distribution(); }
 
 void SphereShape::build_area_distribution() {
-    area_distribution_.reset();
-    total_area_ = 0;
-    if (spheres_.empty()) return;
-    std::vector<float> areas;
+    std::vector<double> areas;
     areas.reserve(spheres_.size());
-    for (const Sphere& s : spheres_) {
-        const double area = 4 * std::numbers::pi * s.radius * s.radius;
-        areas.push_back(std::isfinite(area) ? float(area) : 0.0f);
-        total_area_ += areas.back();
-    }
-    area_distribution_.emplace(areas);
+    for (const Sphere& s : spheres_) areas.push_back(4 * std::numbers::pi * s.radius * s.radius);
+    areas_ = AreaDistribution(areas);
 }
 
 SurfaceSample SphereShape::sample_surface(std::array<float, 2> u) const {
-    if (!(total_area_ > 0)) return {};
-    const Distribution1D::ContinuousSample pick = area_distribution_->sample_continuous(u[0]);
-    const double within = double(pick.x) * double(area_distribution_->size()) - double(pick.bin);
-    const float u0 = std::clamp(float(within), 0.0f, 0x1.fffffep-1f);
-    const Sphere& s = spheres_[pick.bin];
-    const Vec3f direction = square_to_uniform_sphere({u0, u[1]});
+    if (!(areas_.total() > 0)) return {};
+    const AreaDistribution::Pick pick = areas_.pick(u[0]);
+    const Sphere& s = spheres_[pick.index];
+    const Vec3f direction = square_to_uniform_sphere({pick.reused_u, u[1]});
     SurfaceSample sample;
     sample.position = Vec3f(s.centre + Vec3d(direction) * s.radius);
     sample.normal = direction;
-    sample.pdf_area = float(1.0 / total_area_);
+    sample.pdf_area = float(1.0 / areas_.total());
     return sample;
 }
 

@@ -7,7 +7,7 @@
 
 #include "renderer/plugin/shape.h"
 #include "renderer/plugin/solid.h"
-#include "renderer/sampling/distribution_1d.h"
+#include "renderer/sampling/area_distribution.h"
 
 namespace isotrace {
 
@@ -32,9 +32,9 @@ public:
     // Uniform by area over all spheres (for area lights): a sphere is picked in proportion to its area, u[0]
     // is rescaled within its share, and the point is uniform on it with the outward normal. The area table is
     // built by the constructor and again by bake(), before rendering, so sampling only reads it.
-    bool supports_surface_sampling() const override { return total_area_ > 0; }
+    bool supports_surface_sampling() const override { return areas_.total() > 0; }
     SurfaceSample sample_surface(std::array<float, 2> u) const override;
-    float surface_area() const override { return float(total_area_); }
+    float surface_area() const override { return float(areas_.total()); }
 
     const std::vector<Sphere>& spheres() const { return spheres_; }
 
@@ -52,8 +52,7 @@ private:
     static void occluded_callback(const RTCOccludedFunctionNArguments* args);
 
     std::vector<Sphere> spheres_;
-    std::optional<Distribution1D> area_distribution_;  // over spheres, by area
-    double total_area_ = 0;
+    AreaDistribution areas_;  // over spheres
     int counter_slot_ = 0;
 };
 

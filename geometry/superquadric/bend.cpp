@@ -101,6 +101,21 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
                        arc_excess + f.s * sn + z_in * c + centre_});
 }
 
+// In the bend frame the Jacobian is a rotation by θ times diag(1, 1, along) with along = 1 − k·s inside the region
+// and 1 beyond it (see jacobian()), so its inverse is diag(1, 1, 1/along)·Rᵀ(θ).
+IntervalBox Bend::inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const {
+    const FrameBox p = to_frame(preimage), v = to_frame(tangent);
+    const Interval theta = {region_angle(p.z.lo), region_angle(p.z.hi)};
+    const Interval c = cos_range(theta), sn = sin_range(theta);
+    Interval along{1, 1};
+    if (p.z.hi >= region_.lo && p.z.lo <= region_.hi) {
+        const Interval bent = Interval{1, 1} - p.s * curvature_;
+        const bool all_in_region = p.z.lo >= region_.lo && p.z.hi <= region_.hi;
+        along = all_in_region ? bent : Interval{std::min(bent.lo, 1.0), std::max(bent.hi, 1.0)};
+    }
+    return from_frame({c * v.s - sn * v.z, v.w, divide_by_positive(sn * v.s + c * v.z, along)});
+}
+
 std::string Bend::problem(const IntervalBox& input) const {
     std::ostringstream message;
     const double reach = to_frame(input).s.hi * curvature_;

@@ -30,6 +30,9 @@ public:
     Jacobian jacobian(const Vec3d& p) const;
     IntervalBox forward_box(const IntervalBox& box) const;
     IntervalBox inverse_box(const IntervalBox& box) const;
+    // Bounds d/dt of inverse(q(t)) for q' ∈ `tangent`, where `preimage` bounds the inverse points (inside the
+    // chain's stage box, where k·s < 1).
+    IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
     std::string problem(const IntervalBox& input) const;
 
 private:

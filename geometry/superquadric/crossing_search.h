@@ -1,14 +1,16 @@
 #pragma once
-// A guaranteed search for the sign changes of a function g(t) along a ray segment, given a point evaluator and an
-// interval bound of g over any sub-segment (interval arithmetic). Sub-segments are visited nearest first: a
-// sub-segment whose end values differ in sign holds a crossing; one whose bound excludes zero holds none and is
-// dropped; the others are halved. A crossing bracket is halved further until it is no wider than `resolution`
-// (so no earlier pair of crossings hides in it), then refined by the Illinois variant of regula falsi with
-// bisection steps whenever it stalls. A sub-segment narrower than `resolution` whose bound still straddles zero
-// without a sign change at its ends is a grazing contact (two crossings closer than the resolution, or none)
-// and is not reported — the project's rule for tangent contacts (docs/decisions.md). When the caller knows that
-// {g < 0} meets the ray in one interval (a convex solid), a sign change brackets exactly one crossing and is
-// refined at once.
+// A guaranteed search for the sign changes of a function g(t) along a ray segment, given a point evaluator, an
+// interval bound of g over any sub-segment and an interval bound of its derivative g′ (interval arithmetic).
+// Sub-segments are visited nearest first: a sub-segment whose end values differ in sign holds a crossing; one
+// whose bound excludes zero holds none and is dropped; the others are halved. A crossing bracket on which the
+// bound of g′ excludes zero holds exactly one crossing (g is strictly monotone there) and is refined at once;
+// otherwise it is halved further until it is no wider than `resolution` (so no earlier pair of crossings hides
+// in it) before it is refined. A sub-segment without a sign change on which g is proven monotone holds no
+// crossing. Refinement is the Illinois variant of regula falsi with bisection steps whenever it stalls. A
+// sub-segment narrower than `resolution` whose bound still straddles zero without a sign change at its ends is a
+// grazing contact (two crossings closer than the resolution, or none) and is not reported — the project's rule
+// for tangent contacts (docs/decisions.md). When the caller knows that {g < 0} meets the ray in one interval (a
+// convex solid), a sign change brackets exactly one crossing and is refined at once.
 #include <cmath>
 #include <cstdint>
 
@@ -23,8 +25,11 @@ struct Crossing {
 
 struct CrossingSearchWork {
     std::uint64_t interval_bounds = 0;
-    std::uint64_t evaluations = 0;
-    std::uint64_t crossings = 0;
+    std::uint64_t slope_bounds = 0;
+    std::uint64_t monotone_proofs = 0;  // sub-segments settled by the bound of g′
+    std::uint64_t evaluations = 0;  // all point values: halvings and refinement steps
+    std::uint64_t halvings = 0;
+    std::uint64_t crossings = 0;    // brackets refined
 };
 
 namespace crossing_search_detail {
@@ -69,13 +74,21 @@ double refine(double lo, double hi, double g_lo, double g_hi, const Value& value
 }  // namespace crossing_search_detail
 
 // Visits the crossings of g in [t0, t1] in increasing t; g0 = g(t0), g1 = g(t1). `bound(a, b)` returns an
-// Interval containing g over [a, b]; `visit(Crossing)` returns false to stop. Returns false when stopped.
-template <class Value, class Bound, class Visit>
+// Interval containing g over [a, b], `slope(a, b)` one containing g′ wherever g is differentiable on [a, b] (g
+// continuous there, differentiable but at finitely many points; an unbounded interval when nothing is known);
+// `visit(Crossing)` returns false to stop. Returns false when stopped.
+template <class Value, class Bound, class Slope, class Visit>
 bool search_crossings(double t0, double t1, double g0, double g1, double resolution, bool convex, const Value& value,
-                      const Bound& bound, CrossingSearchWork& work, Visit&& visit) {
+                      const Bound& bound, const Slope& slope, CrossingSearchWork& work, Visit&& visit) {
     using crossing_search_detail::inside;
     struct Segment {
         double lo, hi, g_lo, g_hi;
+    };
+    const auto monotone = [&](const Segment& s) {
+        ++work.slope_bounds;
+        const bool proven = slope(s.lo, s.hi).excludes_zero();
+        work.monotone_proofs += proven;
+        return proven;
     };
     constexpr int kMaxDepth = 96;
     Segment stack[kMaxDepth + 1];
@@ -87,7 +100,7 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         const double mid = 0.5 * (s.lo + s.hi);
         const bool narrow =
             s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
-        if (sign_change && (narrow || convex)) {
+        if (sign_change && (narrow || convex || monotone(s))) {
             ++work.crossings;
             const double t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
             if (!visit(Crossing{t, inside(s.g_hi)})) return false;
@@ -96,10 +109,11 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         if (!sign_change) {
             ++work.interval_bounds;
             const Interval range = bound(s.lo, s.hi);
-            if (range.lo >= 0 || range.hi < 0 || narrow) continue;
+            if (range.lo >= 0 || range.hi < 0 || narrow || monotone(s)) continue;
         }
         const double g_mid = value(mid);
         ++work.evaluations;
+        ++work.halvings;
         stack[top++] = {mid, s.hi, g_mid, s.g_hi};  // the far half waits below the near one
         stack[top++] = {s.lo, mid, s.g_lo, g_mid};
     }

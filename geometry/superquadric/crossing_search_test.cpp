@@ -1,6 +1,7 @@
 // The guaranteed crossing search on functions with known roots: a pair of close crossings hidden inside a
 // sign-change bracket is still found first, every crossing is visited in order with its direction, a convex
-// caller's bracket is refined at once, and visiting stops when asked.
+// caller's bracket and a bracket proven monotone by the derivative bound are refined at once (with the same
+// crossings as without the derivative bound), and visiting stops when asked.
 #include "geometry/superquadric/crossing_search.h"
 
 #include <gtest/gtest.h>
@@ -19,16 +20,29 @@ struct Cubic {
         const Interval product = (t + (-r0)) * (t + (-r1)) * (t + (-r2));
         return {-product.hi, -product.lo};
     }
+    // g′ = −[(t − r1)(t − r2) + (t − r0)(t − r2) + (t − r0)(t − r1)].
+    Interval slope(double a, double b) const {
+        const Interval t{a, b}, d0 = t + (-r0), d1 = t + (-r1), d2 = t + (-r2);
+        const Interval sum = d1 * d2 + d0 * d2 + d0 * d1;
+        return {-sum.hi, -sum.lo};
+    }
 };
 
-std::vector<Crossing> all_crossings(const Cubic& g, double t0, double t1, double resolution, bool convex = false) {
+// How the search may use g′: not at all (the search before the derivative bound), or its interval bound.
+enum class SlopeUse { None, Bound };
+
+std::vector<Crossing> all_crossings(const Cubic& g, double t0, double t1, double resolution, bool convex = false,
+                                    SlopeUse use = SlopeUse::Bound, CrossingSearchWork* work_out = nullptr) {
     std::vector<Crossing> found;
     CrossingSearchWork work;
-    search_crossings(t0, t1, g(t0), g(t1), resolution, convex, g, [&](double a, double b) { return g.bound(a, b); },
-                     work, [&](const Crossing& c) {
-                         found.push_back(c);
-                         return true;
-                     });
+    search_crossings(
+        t0, t1, g(t0), g(t1), resolution, convex, g, [&](double a, double b) { return g.bound(a, b); },
+        [&](double a, double b) { return use == SlopeUse::Bound ? g.slope(a, b) : Interval::unbounded(); }, work,
+        [&](const Crossing& c) {
+            found.push_back(c);
+            return true;
+        });
+    if (work_out) *work_out = work;
     return found;
 }
 
@@ -58,6 +72,25 @@ TEST(SuperquadricCrossingSearch, TheConvexShortcutRefinesTheBracketItIsGiven) {
     EXPECT_NEAR(entry[0].t, 0.25, 1e-14);
 }
 
+TEST(SuperquadricCrossingSearch, ABracketProvenMonotoneIsRefinedAtOnceToTheSameCrossings) {
+    // Three well separated roots: every bracket that isolates one is proven monotone after a few halvings, where
+    // the search without the derivative bound halves each down to the resolution.
+    const Cubic g{0.21, 0.5, 0.83};
+    CrossingSearchWork with_slope, without_slope;
+    const std::vector<Crossing> fast = all_crossings(g, 0, 1, 1e-9, false, SlopeUse::Bound, &with_slope);
+    const std::vector<Crossing> slow = all_crossings(g, 0, 1, 1e-9, false, SlopeUse::None, &without_slope);
+    ASSERT_EQ(fast.size(), 3u);
+    ASSERT_EQ(slow.size(), 3u);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(fast[i].t, slow[i].t, 1e-14);
+        EXPECT_EQ(fast[i].entering, slow[i].entering);
+    }
+    EXPECT_NEAR(fast[0].t, 0.21, 1e-14);
+    EXPECT_GT(with_slope.monotone_proofs, 0u);
+    EXPECT_EQ(without_slope.monotone_proofs, 0u);
+    EXPECT_LT(with_slope.halvings * 4, without_slope.halvings);
+}
+
 TEST(SuperquadricCrossingSearch, PairsCloserThanTheResolutionMayBeTakenForAGrazingContact) {
     // Both ends outside, two crossings 1e-10 apart: below a resolution of 1e-6 the pair is a grazing contact.
     const Cubic g{0.4, 0.4 + 1e-10, 5};
@@ -70,8 +103,9 @@ TEST(SuperquadricCrossingSearch, VisitingStopsWhenAsked) {
     const Cubic g{0.2, 0.5, 0.8};
     int visits = 0;
     CrossingSearchWork work;
-    const bool finished = search_crossings(0, 1, g(0), g(1), 1e-9, false, g, [&](double a, double b) { return g.bound(a, b); },
-                                           work, [&](const Crossing&) { return ++visits < 2; });
+    const bool finished = search_crossings(
+        0, 1, g(0), g(1), 1e-9, false, g, [&](double a, double b) { return g.bound(a, b); },
+        [&](double a, double b) { return g.slope(a, b); }, work, [&](const Crossing&) { return ++visits < 2; });
     EXPECT_FALSE(finished);
     EXPECT_EQ(visits, 2);
     EXPECT_GT(work.interval_bounds, 0u);

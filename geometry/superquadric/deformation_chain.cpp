@@ -70,13 +70,21 @@ DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
     return path;
 }
 
-std::optional<IntervalBox> DeformationChain::inverse_box(IntervalBox box, bool& clipped) const {
+std::optional<IntervalBox> DeformationChain::inverse_box(IntervalBox box, bool& clipped, IntervalBox* tangent) const {
     clipped = false;
-    for (std::size_t k = stages_.size() + 1; k > 0; --k) {
-        const IntervalBox before = box;
-        if (!clip_box(box, boxes_[k - 1])) return std::nullopt;
-        clipped = clipped || before.lower() != box.lower() || before.upper() != box.upper();
-        if (k > 1) box = std::visit([&](const auto& s) { return s.inverse_box(box); }, stages_[k - 2]);
+    const auto clip_to_stage = [&](IntervalBox& b, std::size_t stage) {
+        const IntervalBox before = b;
+        if (!clip_box(b, boxes_[stage])) return false;
+        clipped = clipped || before.lower() != b.lower() || before.upper() != b.upper();
+        return true;
+    };
+    if (!clip_to_stage(box, stages_.size())) return std::nullopt;
+    for (std::size_t k = stages_.size(); k > 0; --k) {
+        IntervalBox preimage = std::visit([&](const auto& s) { return s.inverse_box(box); }, stages_[k - 1]);
+        if (!clip_to_stage(preimage, k - 1)) return std::nullopt;
+        if (tangent)
+            *tangent = std::visit([&](const auto& s) { return s.inverse_tangent(preimage, *tangent); }, stages_[k - 1]);
+        box = preimage;
     }
     return box;
 }

@@ -47,7 +47,9 @@ public:
     Path inverse_path(const Vec3d& q) const;
     // A box bounding the undeformed points of the part of `box` that lies inside every stage box, or nothing when
     // no part does. `clipped` tells whether some of `box` was cut away (those points are outside the object).
-    std::optional<IntervalBox> inverse_box(IntervalBox box, bool& clipped) const;
+    // With `tangent` (a bound of q'(t) for a curve q(t) in `box`), it is replaced by a bound of the derivative of
+    // the curve's undeformed points, valid where nothing was clipped.
+    std::optional<IntervalBox> inverse_box(IntervalBox box, bool& clipped, IntervalBox* tangent = nullptr) const;
     // The outward normal at path[size()] from the undeformed normal at path[0] (unit length).
     Vec3d deform_normal(const Path& path, const Vec3d& undeformed_normal) const;
 

@@ -5,6 +5,7 @@
 // rounding level (see docs/decisions.md).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "renderer/math/vec3.h"
@@ -15,9 +16,15 @@ struct Interval {
     double lo = 0, hi = 0;
 
     static Interval point(double v) { return {v, v}; }
+    static Interval unbounded() {
+        return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    }
     static Interval spanning(double a, double b) { return {std::min(a, b), std::max(a, b)}; }
     bool contains(double v) const { return lo <= v && v <= hi; }
     double width() const { return hi - lo; }
+    bool is_finite() const { return std::isfinite(lo) && std::isfinite(hi); }
+    // Every value has the same strict sign (a function whose derivative lies here is strictly monotone).
+    bool excludes_zero() const { return lo > 0 || hi < 0; }
     // The interval of |v| for v in this interval.
     Interval magnitude() const {
         if (lo >= 0) return *this;

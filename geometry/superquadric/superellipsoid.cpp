@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace isotrace {
 namespace {
@@ -44,6 +45,53 @@ double Superellipsoid::gauge(const Vec3d& p) const {
 
 Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {
     return {gauge(magnitudes.lower()), gauge(magnitudes.upper())};
+}
+
+namespace {
+
+// The range of a/‖(a, b)‖_p = 1/‖(1, b/a)‖_p (in [0, 1], decreasing in b/a) for a, b ≥ 0 in the given ranges;
+// where a = b = 0 is possible it is undefined and every value of [0, 1] is allowed.
+Interval share_range(Interval a, Interval b, double p) {
+    const auto share = [p](double x, double y, double if_undefined) {
+        return x == 0 && y == 0 ? if_undefined : x / p_norm(x, y, p);
+    };
+    return {share(a.lo, b.hi, 0), share(a.hi, b.lo, 1)};
+}
+
+// r^e over r in `ratio` ⊂ [0, 1] (0^negative is +inf).
+Interval power_range(Interval ratio, double e) {
+    const double at_lo = std::pow(ratio.lo, e), at_hi = std::pow(ratio.hi, e);
+    return e >= 0 ? Interval{at_lo, at_hi} : Interval{at_hi, at_lo};
+}
+
+// The product of two ranges of non-negative values, where 0·∞ bounds stay 0 below and ∞ above.
+Interval non_negative_product(Interval a, Interval b) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {a.lo == 0 || b.lo == 0 ? 0 : a.lo * b.lo, a.hi == inf || b.hi == inf ? inf : a.hi * b.hi};
+}
+
+// ∂|x|/∂x times a non-negative factor over x's range: the factor's range, negated or made symmetric by sign.
+Interval signed_by(Interval x, Interval factor) {
+    if (x.lo >= 0) return factor;
+    if (x.hi <= 0) return {-factor.hi, -factor.lo};
+    return {-factor.hi, factor.hi};
+}
+
+}  // namespace
+
+// ∂G/∂u = (h/G)^(p1−1)·(u/h)^(p2−1), ∂G/∂v likewise, ∂G/∂w = (w/G)^(p1−1), with h = ‖(u, v)‖_p2, p = 2/ε and
+// u = |x|/a1, ...; every factor is a power of a share in [0, 1], bounded from the ranges of u, v, w, h.
+IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
+    const double p1 = 2 / north_south, p2 = 2 / east_west;
+    const Interval u = box.x.magnitude() * (1 / radii.x), v = box.y.magnitude() * (1 / radii.y),
+                   w = box.z.magnitude() * (1 / radii.z);
+    const Interval h = {p_norm(u.lo, v.lo, p2), p_norm(u.hi, v.hi, p2)};
+    const Interval horizontal = power_range(share_range(h, w, p1), p1 - 1);
+    const Interval d_du = non_negative_product(horizontal, power_range(share_range(u, v, p2), p2 - 1));
+    const Interval d_dv = non_negative_product(horizontal, power_range(share_range(v, u, p2), p2 - 1));
+    const Interval d_dw = power_range(share_range(w, h, p1), p1 - 1);
+    return {signed_by(box.x, d_du * (1 / radii.x)), signed_by(box.y, d_dv * (1 / radii.y)),
+            signed_by(box.z, d_dw * (1 / radii.z))};
 }
 
 double Superellipsoid::inside_outside(const Vec3d& p) const { return std::pow(gauge(p), 2 / north_south); }

@@ -27,6 +27,9 @@ struct Superellipsoid {
     bool is_convex() const { return north_south <= 2 && east_west <= 2; }
     // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative).
     Interval gauge_range(const IntervalBox& magnitudes) const;
+    // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents
+    // above 2 near the coordinate planes).
+    IntervalBox gradient_range(const IntervalBox& box) const;
     // The paper's F = G^(2/ε1) (may overflow to +inf far away; the intersector never uses it).
     double inside_outside(const Vec3d& p) const;
 

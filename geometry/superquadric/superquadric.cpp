@@ -1,27 +1,13 @@
 #include "geometry/superquadric/superquadric.h"
 
 #include <algorithm>
-#include <limits>
 
 #include "geometry/polynomial/monotone_root_finder.h"
+#include "geometry/superquadric/superquadric_along_ray.h"
+#include "renderer/math/line_box_clip.h"
 
 namespace isotrace {
 namespace {
-
-// The part of [t0, t1] where origin + t·direction lies in `box` (slab test); false when empty.
-bool clip_to_box(const IntervalBox& box, const Vec3d& origin, const Vec3d& direction, double& t0, double& t1) {
-    for (int k = 0; k < 3; ++k) {
-        if (direction[k] == 0) {
-            if (!box[k].contains(origin[k])) return false;
-            continue;
-        }
-        double a = (box[k].lo - origin[k]) / direction[k], b = (box[k].hi - origin[k]) / direction[k];
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-    }
-    return t0 <= t1;
-}
 
 double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
@@ -63,10 +49,12 @@ Vec3d Superquadric::surface_point(double eta, double omega) const {
 template <class Visit>
 void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                           SuperquadricWork& work, Visit&& visit) const {
-    const Transform& to_local = placement_.inverse();
-    const Vec3d o = to_local.point(origin), d = to_local.vector(direction);
-    double t0 = t_min, t1 = t_max;
-    if (!clip_to_box(deformation_.deformed_box(), o, d, t0, t1)) return;
+    const SuperquadricAlongRay ray(*this, origin, direction);
+    const Vec3d &o = ray.local_origin(), &d = ray.local_direction();
+    const IntervalBox& box = deformation_.deformed_box();
+    const std::optional<LineBoxClip> clip = clip_line_to_box(box.lower(), box.upper(), o, d, t_min, t_max);
+    if (!clip) return;
+    const double t0 = clip->t_enter, t1 = clip->t_exit;
 
     if (deformation_.empty() && shape_.polynomial_degree() > 0) {
         ++work.polynomial_solves;
@@ -80,17 +68,9 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return;
     }
 
-    const auto value = [&](double t) { return local_field(o + d * t); };
-    const auto bound = [&](double a, double b) {
-        IntervalBox box = IntervalBox::point(o + d * a);
-        box.extend(o + d * b);
-        bool clipped = false;
-        const std::optional<IntervalBox> undeformed = deformation_.inverse_box(box, clipped);
-        if (!undeformed) return Interval{1, 1};
-        const Interval gauge =
-            shape_.gauge_range({undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
-        return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
-    };
+    const auto value = [&](double t) { return ray.value(t); };
+    const auto bound = [&](double a, double b) { return ray.bound(a, b); };
+    const auto slope = [&](double a, double b) { return ray.slope_bound(a, b); };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
 
     // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
@@ -111,8 +91,8 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     double g_start = value(t0);
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
-        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, work.search,
-                              visit))
+        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, slope,
+                              work.search, visit))
             return;
         g_start = g_end;
     }

@@ -5,8 +5,8 @@
 // (G the superellipsoid's gauge, D the deformation chain):
 // - undeformed with ε1 = ε2 = 2/n, n even: F − 1 is a polynomial in t, solved by the monotone-interval finder;
 // - otherwise: the ray is cut at the local coordinate planes when undeformed (where F changes form), then each
-//   piece is searched by interval subdivision (crossing_search.h) with bounds from the deformation chain's
-//   interval inverse and the gauge's monotonicity in |x|, |y|, |z|.
+//   piece is searched by interval subdivision (crossing_search.h) with the bounds of g and g′ along the ray
+//   (superquadric_along_ray.h).
 #include <optional>
 #include <vector>
 
@@ -39,6 +39,8 @@ public:
     IntervalBox bounds() const;
     // G(D⁻¹(p)) − 1 at a point of the shape's space: negative inside, 0 on the surface.
     double field(const Vec3d& point) const;
+    // The field at a point of the local deformed frame (before the placement).
+    double local_field(const Vec3d& local) const;
     // Outward unit normal at a surface point of the shape's space: J⁻ᵀ·∇F carried through the chain, then the
     // placement's inverse transpose.
     Vec3d normal(const Vec3d& point) const;
@@ -57,7 +59,6 @@ private:
     template <class Visit>
     void search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, SuperquadricWork& work,
                 Visit&& visit) const;
-    double local_field(const Vec3d& local) const;
 
     Superellipsoid shape_;
     DeformationChain deformation_;

@@ -1,8 +1,9 @@
 #include "geometry/superquadric/superquadric_shape.h"
 
-#include <algorithm>
-#include <limits>
+#include <span>
 
+#include "geometry/csg/inside_span_list.h"
+#include "geometry/csg/span_combination.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/user_geometry.h"
 
@@ -35,7 +36,11 @@ void SuperquadricShape::bake(const Transform& to_world) {
 RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
     bounds_slot_ = counters::named_counter_slot("superquadric.interval_bounds");
+    slope_bounds_slot_ = counters::named_counter_slot("superquadric.slope_bounds");
+    monotone_slot_ = counters::named_counter_slot("superquadric.monotone_proofs");
     evaluations_slot_ = counters::named_counter_slot("superquadric.evaluations");
+    halvings_slot_ = counters::named_counter_slot("superquadric.halvings");
+    crossings_slot_ = counters::named_counter_slot("superquadric.refined_crossings");
     polynomial_slot_ = counters::named_counter_slot("superquadric.polynomial_solves");
     return user_geometry::create(device, this, unsigned(superquadrics_.size()), bounds_callback, intersect_callback,
                                  occluded_callback);
@@ -43,7 +48,11 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
 
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {
     counters::add_to_named(bounds_slot_, work.search.interval_bounds);
+    counters::add_to_named(slope_bounds_slot_, work.search.slope_bounds);
+    counters::add_to_named(monotone_slot_, work.search.monotone_proofs);
     counters::add_to_named(evaluations_slot_, work.search.evaluations);
+    counters::add_to_named(halvings_slot_, work.search.halvings);
+    counters::add_to_named(crossings_slot_, work.search.crossings);
     counters::add_to_named(polynomial_slot_, work.polynomial_solves);
 }
 
@@ -90,21 +99,9 @@ void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin
     found.clear();
     SuperquadricWork work;
     s.crossings(origin, direction, t_min, t_max, found, work);
-    const auto surface_point = [&](double t) {
-        return BoundaryPoint{t, s.normal(origin + direction * t), index, 0};
-    };
-    const auto cut = [](double t) { return BoundaryPoint{t, {0, 0, 1}, BoundaryPoint::kCut, 0}; };
-    std::optional<BoundaryPoint> open;
-    if (s.field(origin + direction * t_min) < 0) open = cut(t_min);
-    for (const Crossing& c : found) {
-        if (c.entering && !open) {
-            open = surface_point(c.t);
-        } else if (!c.entering && open) {
-            if (c.t > open->t) spans.push_back({*open, surface_point(c.t)});
-            open.reset();
-        }
-    }
-    if (open && t_max > open->t) spans.push_back({*open, cut(t_max)});
+    append_spans_from_crossings(
+        std::span<const Crossing>(found), s.field(origin + direction * t_min) < 0, t_min, t_max,
+        [&](const Crossing& c) { return BoundaryPoint{c.t, s.normal(origin + direction * c.t), index, 0}; }, spans);
 }
 
 void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
@@ -113,19 +110,16 @@ void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction
         primitive_spans(0, origin, direction, t_min, t_max, spans);
         return;
     }
-    // The union of the superquadrics' spans: sorted by entry, overlapping spans merged.
-    thread_local std::vector<InsideSpan> all;
-    all.clear();
-    for (std::uint32_t i = 0; i < superquadrics_.size(); ++i) primitive_spans(i, origin, direction, t_min, t_max, all);
-    std::sort(all.begin(), all.end(), [](const InsideSpan& a, const InsideSpan& b) { return a.enter.t < b.enter.t; });
-    const std::size_t first = spans.size();
-    for (const InsideSpan& span : all) {
-        if (spans.size() > first && span.enter.t <= spans.back().exit.t) {
-            if (span.exit.t > spans.back().exit.t) spans.back().exit = span.exit;
-        } else {
-            spans.push_back(span);
-        }
+    // The union of the superquadrics' spans, by the sweep that combines CSG operands.
+    thread_local std::vector<InsideSpan> own;
+    thread_local std::vector<SpanEvent> events;
+    events.clear();
+    for (std::uint32_t i = 0; i < superquadrics_.size(); ++i) {
+        own.clear();
+        primitive_spans(i, origin, direction, t_min, t_max, own);
+        append_span_events(i, 0, own, events);
     }
+    combine_span_events(CsgOperation::Union, std::uint32_t(superquadrics_.size()), events, spans);
 }
 
 }  // namespace isotrace

@@ -45,7 +45,8 @@ private:
 
     std::vector<Superquadric> superquadrics_;
     int counter_slot_ = 0;
-    int bounds_slot_ = 0, evaluations_slot_ = 0, polynomial_slot_ = 0;
+    int bounds_slot_ = 0, slope_bounds_slot_ = 0, monotone_slot_ = 0, evaluations_slot_ = 0, halvings_slot_ = 0;
+    int crossings_slot_ = 0, polynomial_slot_ = 0;
 };
 
 }  // namespace isotrace

@@ -191,9 +191,15 @@ TEST(SuperquadricShape, CountersRecordTestsAndRootFinderWork) {
     EXPECT_TRUE(count(after).counts_tests);
     EXPECT_GE(count(after).tests, count(before).tests + 2);
     EXPECT_GE(count(after).candidate_hits, count(before).candidate_hits + 2);
-    EXPECT_GT(after.named.at("superquadric.evaluations"), before.named.count("superquadric.evaluations")
-                                                              ? before.named.at("superquadric.evaluations")
-                                                              : 0);
+    const auto named = [](const CounterTotals& t, const std::string& name) {
+        const auto found = t.named.find(name);
+        return found == t.named.end() ? std::uint64_t(0) : found->second;
+    };
+    EXPECT_GT(named(after, "superquadric.evaluations"), named(before, "superquadric.evaluations"));
+    // Both rays refine one bracket each (the entry).
+    EXPECT_GE(named(after, "superquadric.refined_crossings"), named(before, "superquadric.refined_crossings") + 2);
+    EXPECT_GE(named(after, "superquadric.evaluations") - named(before, "superquadric.evaluations"),
+              named(after, "superquadric.halvings") - named(before, "superquadric.halvings"));
 }
 
 // ---- scene format ----------------------------------------------------------------------------------------

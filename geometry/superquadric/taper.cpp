@@ -27,6 +27,14 @@ IntervalBox Taper::inverse_box(const IntervalBox& box) const {
     return {divide_by_positive(box.x, scale(x_rate_, box.z)), divide_by_positive(box.y, scale(y_rate_, box.z)), box.z};
 }
 
+// x = X·f(z) with z = Z, so dx = (dX − x·f'(z)·dZ)/f(z), and likewise for y.
+IntervalBox Taper::inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const {
+    const double dz_slope = 1 / (2 * half_height_);
+    return {divide_by_positive(tangent.x - preimage.x * tangent.z * (x_rate_ * dz_slope), scale(x_rate_, preimage.z)),
+            divide_by_positive(tangent.y - preimage.y * tangent.z * (y_rate_ * dz_slope), scale(y_rate_, preimage.z)),
+            tangent.z};
+}
+
 std::string Taper::problem(const IntervalBox& input) const {
     for (const double rate : {x_rate_, y_rate_}) {
         const Interval s = scale(rate, input.z);

@@ -22,6 +22,9 @@ public:
     Jacobian jacobian(const Vec3d& p) const;
     IntervalBox forward_box(const IntervalBox& box) const;
     IntervalBox inverse_box(const IntervalBox& box) const;
+    // Bounds d/dt of inverse(q(t)) for a curve q(t) with q ∈ inverse of `preimage` and q' ∈ `tangent`, where
+    // `preimage` bounds the inverse points (the chain's stage box keeps the scale positive there).
+    IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
     // Why the taper cannot be applied to points of `input` (empty when it can).
     std::string problem(const IntervalBox& input) const;
 

@@ -15,6 +15,16 @@ Jacobian Twist::jacobian(const Vec3d& p) const {
     return {{{c, s, 0}, {-s, c, 0}, {-rate_ * q.y, rate_ * q.x, 1}}};
 }
 
+// The inverse turns q by φ = −θ(z), and φ changes with z at −rate: the turned tangent plus the point's own
+// rotation rate·dz·(y, −x) (x, y the inverse point).
+IntervalBox Twist::inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const {
+    const Interval phi = Interval::spanning(-angle(preimage.z.lo), -angle(preimage.z.hi));
+    const Interval c = cos_range(phi), s = sin_range(phi);
+    const Interval turn = tangent.z * rate_;
+    return {tangent.x * c - tangent.y * s + turn * preimage.y, tangent.x * s + tangent.y * c - turn * preimage.x,
+            tangent.z};
+}
+
 IntervalBox Twist::rotate_box(const IntervalBox& box, double sign) const {
     const Interval theta = Interval::spanning(sign * angle(box.z.lo), sign * angle(box.z.hi));
     const Interval c = cos_range(theta), s = sin_range(theta);

@@ -17,6 +17,8 @@ public:
     Jacobian jacobian(const Vec3d& p) const;
     IntervalBox forward_box(const IntervalBox& box) const { return rotate_box(box, 1); }
     IntervalBox inverse_box(const IntervalBox& box) const { return rotate_box(box, -1); }
+    // Bounds d/dt of inverse(q(t)) for q' ∈ `tangent`, where `preimage` bounds the inverse points.
+    IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
     // A twist is a rotation per height: every twist is valid.
     std::string problem(const IntervalBox&) const { return {}; }
 

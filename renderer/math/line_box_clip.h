@@ -1,7 +1,7 @@
 #pragma once
 // The stretch of a line o + t·d inside an axis-aligned box (the slab method): the one line–box clip of isotrace,
-// used by bounding boxes, the box primitive, superquadric cells and blob cells. The box is closed: a line
-// running along a face, or touching an edge, meets it in a segment or a point.
+// used by bounding boxes, the box primitive, superquadrics, mesh span queries and blob cells. The box is closed:
+// a line running along a face, or touching an edge, meets it in a segment or a point.
 #include <algorithm>
 #include <optional>
 

@@ -1,0 +1,43 @@
+#include "geometry/superquadric/superquadric_along_ray.h"
+
+#include <limits>
+
+namespace isotrace {
+
+SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, const Vec3d& origin,
+                                           const Vec3d& direction)
+    : superquadric_(superquadric),
+      origin_(superquadric.placement().inverse().point(origin)),
+      direction_(superquadric.placement().inverse().vector(direction)) {}
+
+IntervalBox SuperquadricAlongRay::stretch(double a, double b) const {
+    IntervalBox box = IntervalBox::point(origin_ + direction_ * a);
+    box.extend(origin_ + direction_ * b);
+    return box;
+}
+
+Interval SuperquadricAlongRay::bound(double a, double b) const {
+    bool clipped = false;
+    const std::optional<IntervalBox> undeformed = superquadric_.deformation().inverse_box(stretch(a, b), clipped);
+    if (!undeformed) return Interval{1, 1};
+    const Interval gauge = superquadric_.shape().gauge_range(
+        {undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
+    return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
+}
+
+Interval SuperquadricAlongRay::slope_bound(double a, double b) const {
+    bool clipped = false;
+    IntervalBox tangent = IntervalBox::point(direction_);
+    const std::optional<IntervalBox> undeformed =
+        superquadric_.deformation().inverse_box(stretch(a, b), clipped, &tangent);
+    if (!undeformed || clipped) return Interval::unbounded();
+    const IntervalBox gradient = superquadric_.shape().gradient_range(*undeformed);
+    Interval slope{0, 0};
+    for (int k = 0; k < 3; ++k) {
+        if (!gradient[k].is_finite()) return Interval::unbounded();
+        slope = slope + gradient[k] * tangent[k];
+    }
+    return slope;
+}
+
+}  // namespace isotrace

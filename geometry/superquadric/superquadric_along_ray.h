@@ -1,0 +1,34 @@
+#pragma once
+// One superquadric along one ray, in its local deformed frame (where the placement keeps t): the inside function
+// g(t) = G(D⁻¹(o + t·d)) − 1 and what the crossing search (crossing_search.h) needs to know of it over a stretch
+// [a, b] of the ray — an interval bound of g, from the deformation chain's interval inverse and the gauge's
+// monotonicity in |x|, |y|, |z|, and an interval bound of g′, from the gauge's gradient range and the chain's
+// interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]).
+#include "geometry/superquadric/interval.h"
+#include "geometry/superquadric/superquadric.h"
+
+namespace isotrace {
+
+class SuperquadricAlongRay {
+public:
+    // `origin` and `direction` in the superquadric's shape space.
+    SuperquadricAlongRay(const Superquadric& superquadric, const Vec3d& origin, const Vec3d& direction);
+
+    const Vec3d& local_origin() const { return origin_; }
+    const Vec3d& local_direction() const { return direction_; }
+
+    double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t); }
+    // Contains g over [a, b] (points outside a stage box count as outside, g = 1).
+    Interval bound(double a, double b) const;
+    // Contains g′ over [a, b] wherever g is differentiable; unbounded when some of the stretch lies outside a
+    // stage box (g is not continuous there) or the gradient is unbounded.
+    Interval slope_bound(double a, double b) const;
+
+private:
+    IntervalBox stretch(double a, double b) const;
+
+    const Superquadric& superquadric_;
+    Vec3d origin_, direction_;
+};
+
+}  // namespace isotrace

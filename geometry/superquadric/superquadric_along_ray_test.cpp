@@ -1,0 +1,147 @@
+// The bounds of g and g′ along a ray through random deformed superquadrics: the slope bound contains the
+// derivative (finite differences), a stretch it proves monotone holds exactly one crossing when its ends differ
+// in sign and none otherwise (dense sampling), and the search that uses it finds the same crossings as the
+// search without it.
+#include "geometry/superquadric/superquadric_along_ray.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "geometry/superquadric/superquadric_test_support.h"
+#include "renderer/math/line_box_clip.h"
+
+namespace isotrace {
+namespace {
+
+using superquadric_test::make_superquadric;
+using superquadric_test::random_deformations;
+
+struct RandomCase {
+    Superquadric superquadric;
+    Vec3d origin, direction;
+};
+
+// A random deformed superquadric (exponents 0.1 to 4: convex, and pinched beyond 2) and a ray from a shell
+// around it toward a point near it.
+RandomCase random_case(std::mt19937& random) {
+    std::uniform_real_distribution<double> unit(-1, 1), exponent(0.1, 4), size(0.4, 1.5);
+    const Vec3d radii(size(random), size(random), size(random));
+    Superquadric s = make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii));
+    const Vec3d target(unit(random) * radii.x, unit(random) * radii.y, unit(random) * radii.z);
+    const Vec3d origin = normalize(Vec3d(unit(random), unit(random), unit(random))) * 5.0;
+    return {std::move(s), origin, (target - origin) * (0.5 + std::abs(unit(random)))};
+}
+
+// The stretch of the ray inside the deformed box (where the search runs), or nothing.
+std::optional<LineBoxClip> box_stretch(const Superquadric& s, const SuperquadricAlongRay& ray) {
+    const IntervalBox& box = s.deformation().deformed_box();
+    return clip_line_to_box(box.lower(), box.upper(), ray.local_origin(), ray.local_direction(), 0, 1e30);
+}
+
+// Calls visit(ray, a, b) for stretches [a, b] of rays through random deformed superquadrics: per ray, 20 at
+// random places of its stretch in the deformed box (widths 1 to 10⁻⁴ of it) and 4 starting just before each
+// crossing the search finds.
+template <class Visit>
+void for_random_stretches(unsigned seed, int cases, Visit&& visit) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    for (int i = 0; i < cases; ++i) {
+        const RandomCase c = random_case(random);
+        const SuperquadricAlongRay ray(c.superquadric, c.origin, c.direction);
+        const auto stretch = box_stretch(c.superquadric, ray);
+        if (!stretch) continue;
+        const double length = stretch->t_exit - stretch->t_enter;
+        std::vector<Crossing> found;
+        SuperquadricWork work;
+        c.superquadric.crossings(c.origin, c.direction, 0, 1e30, found, work);
+        for (int j = 0; j < 20 + 4 * int(found.size()); ++j) {
+            const double width = length * std::pow(10.0, -4 * uniform(random));
+            const double a = j < 20 ? stretch->t_enter + (length - width) * uniform(random)
+                                    : found[(j - 20) / 4].t - width * uniform(random);
+            visit(ray, a, a + width);
+        }
+    }
+}
+
+TEST(SuperquadricAlongRay, TheSlopeBoundContainsTheDerivative) {
+    int checked = 0;
+    for_random_stretches(91, 300, [&](const SuperquadricAlongRay& ray, double a, double b) {
+        const Interval slope = ray.slope_bound(a, b);
+        if (!slope.is_finite()) return;
+        for (int k = 1; k < 8; ++k) {
+            const double t = a + (b - a) * k / 8, h = 1e-6 * (b - a);
+            const double derivative = (ray.value(t + h) - ray.value(t - h)) / (2 * h);
+            const double tolerance = 1e-5 * (std::abs(slope.lo) + std::abs(slope.hi)) + 1e-9;
+            EXPECT_GE(derivative, slope.lo - tolerance) << "[" << a << ", " << b << "] t " << t;
+            EXPECT_LE(derivative, slope.hi + tolerance) << "[" << a << ", " << b << "] t " << t;
+            ++checked;
+        }
+    });
+    EXPECT_GT(checked, 5000);
+}
+
+TEST(SuperquadricAlongRay, AStretchProvenMonotoneHoldsOneCrossingOrNone) {
+    int proven_with_crossing = 0, proven_without = 0;
+    for_random_stretches(92, 300, [&](const SuperquadricAlongRay& ray, double a, double b) {
+        const Interval slope = ray.slope_bound(a, b);
+        if (!slope.excludes_zero()) return;
+        const double direction = slope.lo > 0 ? 1 : -1;
+        constexpr int kSamples = 1000;
+        int sign_changes = 0;
+        double previous = ray.value(a);
+        for (int k = 1; k <= kSamples; ++k) {
+            const double g = ray.value(a + (b - a) * k / kSamples);
+            // Strictly monotone, up to rounding of g.
+            EXPECT_GT(direction * (g - previous), -1e-13) << "[" << a << ", " << b << "]";
+            sign_changes += (g < 0) != (previous < 0);
+            previous = g;
+        }
+        const bool ends_differ = (ray.value(a) < 0) != (ray.value(b) < 0);
+        EXPECT_EQ(sign_changes, ends_differ ? 1 : 0) << "[" << a << ", " << b << "]";
+        ++(ends_differ ? proven_with_crossing : proven_without);
+    });
+    EXPECT_GT(proven_with_crossing, 300);
+    EXPECT_GT(proven_without, 200);
+}
+
+TEST(SuperquadricAlongRay, TheSearchFindsTheSameCrossingsAsWithoutTheSlopeBound) {
+    std::mt19937 random(93);
+    int crossings = 0;
+    for (int i = 0; i < 400; ++i) {
+        const RandomCase c = random_case(random);
+        const Superquadric& s = c.superquadric;
+        const SuperquadricAlongRay ray(s, c.origin, c.direction);
+        const auto stretch = box_stretch(s, ray);
+        if (!stretch) continue;
+        std::vector<Crossing> with_slope;
+        SuperquadricWork work;
+        s.crossings(c.origin, c.direction, 0, 1e30, with_slope, work);
+        // The search as it was before the slope bound: the same value and bound, g′ never known.
+        const IntervalBox& box = s.deformation().deformed_box();
+        const double extent = std::max({box.x.width(), box.y.width(), box.z.width()});
+        const double resolution = Superquadric::kRelativeResolution * extent / length(ray.local_direction());
+        std::vector<Crossing> without_slope;
+        CrossingSearchWork old_work;
+        search_crossings(
+            stretch->t_enter, stretch->t_exit, ray.value(stretch->t_enter), ray.value(stretch->t_exit), resolution,
+            false, [&](double t) { return ray.value(t); }, [&](double a, double b) { return ray.bound(a, b); },
+            [](double, double) { return Interval::unbounded(); }, old_work, [&](const Crossing& found) {
+                without_slope.push_back(found);
+                return true;
+            });
+        ASSERT_EQ(with_slope.size(), without_slope.size()) << "case " << i;
+        for (std::size_t k = 0; k < with_slope.size(); ++k) {
+            EXPECT_NEAR(with_slope[k].t, without_slope[k].t, 1e-12 * std::abs(without_slope[k].t))
+                << "case " << i << " crossing " << k;
+            EXPECT_EQ(with_slope[k].entering, without_slope[k].entering) << "case " << i << " crossing " << k;
+        }
+        crossings += int(with_slope.size());
+        EXPECT_LE(work.search.halvings, old_work.halvings) << "case " << i;
+    }
+    EXPECT_GT(crossings, 300);
+}
+
+}  // namespace
+}  // namespace isotrace
