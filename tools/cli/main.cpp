@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     const CommandRunner depth = add_depth_command(app);
     const CommandRunner bench = add_bench_command(app);
     const CommandRunner polygonize = add_polygonize_command(app);
+    const CommandRunner deform = add_deform_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("depth")) return depth();
         if (app.got_subcommand("bench")) return bench();
         if (app.got_subcommand("polygonize")) return polygonize();
+        if (app.got_subcommand("deform")) return deform();
         return info();
     } catch (const isotrace::InputError& error) {
         std::fprintf(stderr, "isotrace: error: %s\n", error.what());
