@@ -19,16 +19,22 @@ RadiusProbe::RadiusProbe(const TriangleMeshData& mesh) {
 }
 
 std::vector<double> RadiusProbe::measure(const Vec3d& centre, const Quaternion& orientation, int samples) const {
+    // Embree asserts on rays that are not finite: refuse them here.
+    if (!is_finite(centre) || !orientation.is_finite()) throw std::invalid_argument("radii: the key section is not finite");
     std::vector<double> radii;
     std::vector<MeshCrossing> crossings;
     for (int j = 0; j < samples; ++j) {
-        const double theta = 2 * std::numbers::pi * j / samples;
-        const Vec3d direction = orientation.rotate({std::cos(theta), std::sin(theta), 0});
-        crossings.clear();
-        scene_->crossings(centre, direction, reach_, crossings);
         double nearest = INFINITY;
-        for (const MeshCrossing& c : crossings)
-            if (c.t > 0) nearest = std::min(nearest, c.t);
+        // A ray along a shared edge can slip between its triangles: then two slightly turned rays try again.
+        for (const double nudge : {0.0, 1e-5, -1e-5}) {
+            const double theta = 2 * std::numbers::pi * j / samples + nudge;
+            const Vec3d direction = orientation.rotate({std::cos(theta), std::sin(theta), 0});
+            crossings.clear();
+            scene_->crossings(centre, direction, reach_, crossings);
+            for (const MeshCrossing& c : crossings)
+                if (c.t > 0) nearest = std::min(nearest, c.t);
+            if (std::isfinite(nearest)) break;
+        }
         if (!std::isfinite(nearest)) {
             std::ostringstream problem;
             problem << "radii: the ray at θ = " << 360.0 * j / samples << "° from the centre meets no surface";

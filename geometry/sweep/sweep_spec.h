@@ -27,6 +27,8 @@ struct SweepSpec {
     std::vector<KeySectionSpec> keys;
     int radius_samples = 16;
     bool relative = false;  // key centres and rotations relative to the previous key section
+    double measured_radius_scale = 1;  // measured radii are multiplied by it (a sweep should enclose its part)
+    bool measure_circle = false;       // measured sections become circles of the largest measured radius
 
     // Absolute key sections, missing radii measured on `mesh` (null: an error names the key section).
     std::vector<KeySection> key_sections(const TriangleMeshData* mesh) const;
