@@ -23,7 +23,8 @@ public:
     explicit SingleSweepDeformer(const SceneNode& node)
         : sweep_(parse_sweep_spec(node)),
           local_(node.choice_or("mode", "local", {"local", "global"}) == "local"),
-          levels_(node.integer_or("levels", 1, NumberRange::between(1, MultiResolutionSweep::kMaxLevels))) {
+          levels_(node.integer_or("levels", 1, NumberRange::between(1, MultiResolutionSweep::kMaxLevels))),
+          weights_as_uv_(node.boolean_or("weights_as_uv", false)) {
         if (const auto curve = node.optional_value("weight_curve")) {
             std::vector<double> values;
             for (const SceneNode& v : curve->elements()) values.push_back(v.as_number());
@@ -45,6 +46,11 @@ public:
         edit(sweep);
         const std::vector<Vec3d> moved = at_node(sweep_.node, [&] { return deformer.deform(sweep.finest()); });
         for (std::size_t i = 0; i < moved.size(); ++i) mesh.positions[i] = Vec3f(moved[i]);
+        if (weights_as_uv_) {  // to show the weights through a texture (the paper's Fig. 5)
+            mesh.uvs.clear();
+            // u kept off the texture's edges, where a repeating lookup would blend its two ends.
+            for (double w : deformer.weights()) mesh.uvs.push_back({float(0.005 + 0.99 * w), 0.5f});
+        }
         const BindingStatistics& s = deformer.statistics();
         std::ostringstream summary;
         summary << "sweep" << (sweep_.name.empty() ? "" : " \"" + sweep_.name + "\"") << " (" << (local_ ? "local" : "global")
@@ -64,6 +70,7 @@ private:
     SweepSpec sweep_;
     bool local_;
     int levels_;
+    bool weights_as_uv_;
     WeightCurve weight_;
     std::vector<EditSpec> edits_;
 };
