@@ -165,9 +165,12 @@ private:
         for (const EditSpec& e : edits_) {
             const int node = index_of(e.sweep);
             at_node(e.node, [&] {
+                if (e.key >= int(tree.surface(node).keys().size()))
+                    throw std::invalid_argument("key: " + e.sweep + " has key sections 0 to " +
+                                                std::to_string(tree.surface(node).keys().size() - 1));
                 if (e.pull) {
                     const BackwardResult result =
-                        tree.pull(node, {{e.key, tree.surface(node).keys().at(std::size_t(e.key)).centre + *e.pull}}, max_iterations_);
+                        tree.pull(node, {{e.key, tree.surface(node).keys()[std::size_t(e.key)].centre + *e.pull}}, max_iterations_);
                     if (!result.converged) {
                         std::ostringstream problem;
                         problem << "pull: backward deformation did not converge: residual " << result.residual << " after "
@@ -178,7 +181,6 @@ private:
                             << result.iterations << " iterations";
                     return;
                 }
-                if (e.key >= int(tree.surface(node).keys().size())) throw std::invalid_argument("key: no such key section");
                 std::vector<RelativeKeySection> chain = to_relative(tree.surface(node).keys());
                 edit_key_section(chain, std::size_t(e.key), e.edit);
                 tree.set_keys(node, to_absolute(chain));
