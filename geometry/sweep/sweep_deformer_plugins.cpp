@@ -148,8 +148,7 @@ public:
 
 private:
     SweepHierarchy build(const TriangleMeshData& mesh) const {
-        SweepHierarchy tree;
-        tree.set_preserve_volume(preserve_volume_);
+        SweepHierarchy tree(preserve_volume_);
         for (const Member& m : members_)
             at_node(m.sweep.node, [&] {
                 std::vector<KeySection> keys = m.sweep.key_sections(&mesh);

@@ -45,7 +45,7 @@ int SweepHierarchy::add_child(std::string name, std::vector<KeySection> keys, in
     const std::size_t bound_count = attachment == Attachment::loop ? keys.size() : 1;
     for (std::size_t k = 0; k < bound_count; ++k)
         node.bound.push_back(bind_key(parent_surface, keys[k], name + ".key_sections[" + std::to_string(k) + "]"));
-    node.volume_ratio = sweep_volume(node.surface) / sweep_volume(parent_surface);
+    if (preserve_volume_) node.volume_ratio = sweep_volume(node.surface) / sweep_volume(parent_surface);
     nodes_.push_back(std::move(node));
     return int(nodes_.size()) - 1;
 }

@@ -38,6 +38,9 @@ public:
     // Tolerance of the backward deformation's convergence test, relative to the parent sweep's size.
     static constexpr double kBackwardTolerance = 1e-6;
 
+    // `preserve_volume`: rule 3 (each child's volume ratio to its parent, measured when it is added, is kept).
+    explicit SweepHierarchy(bool preserve_volume = false) : preserve_volume_(preserve_volume) {}
+
     int add_root(std::string name, std::vector<KeySection> keys);
     // Binds the child's key sections (the first or all) to the parent's current sweep. Throws
     // std::invalid_argument "<name>.key_sections[k]: ..." when a key section to be bound has no binding.
@@ -57,8 +60,6 @@ public:
     // editing its parent (then rule 1 for everything below the parent). `max_iterations` ≥ 1.
     BackwardResult pull(int loop_child, const std::vector<std::pair<int, Vec3d>>& targets, int max_iterations = 50);
 
-    void set_preserve_volume(bool on) { preserve_volume_ = on; }
-
 private:
     struct Node {
         std::string name;
@@ -68,14 +69,14 @@ private:
         std::vector<double> parameters;          // the keys' t as first placed, kept through edits
         std::vector<RelativeKeySection> shape;  // branch children: the keys after the first, relative
         std::vector<BoundKeySection> bound;
-        double volume_ratio = 1;  // volume / parent volume when bound (rule 3)
+        double volume_ratio = 1;  // volume / parent volume when bound (rule 3 only)
     };
     void place_children(int node);
     std::vector<KeySection> placed_keys(const Node& child, const SweepSurface& parent) const;
     void keep_volume_ratio(int child);
 
     std::vector<Node> nodes_;
-    bool preserve_volume_ = false;
+    bool preserve_volume_;
 };
 
 }  // namespace isotrace

@@ -23,8 +23,7 @@ struct Teapot {
 };
 
 Teapot make_teapot(bool preserve_volume) {
-    Teapot pot;
-    pot.tree.set_preserve_volume(preserve_volume);
+    Teapot pot{SweepHierarchy(preserve_volume), 0, 0, 0, {}};
     pot.body = pot.tree.add_root("body", sweep_test::cylinder(1, 2, 5));
     const Quaternion out = Quaternion::from_axis_angle({0, 1, 0}, -90);  // normal along −x
     pot.handle_keys = {{{-1, 0, 1.6}, out, constant_radii(0.12)},
