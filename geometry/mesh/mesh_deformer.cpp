@@ -18,6 +18,9 @@ std::vector<std::string> apply_list(const SceneNode& list, TriangleMeshData& mes
     for (const SceneNode& element : list.elements()) {
         if (!element.json().is_object()) element.fail("expected a deformer object");
         summaries.push_back(mesh_deformer_registry().create(element)->apply(mesh));
+        // An extreme edit can throw vertices beyond float range: report it here, not as a broken render.
+        for (const Vec3f& p : mesh.positions)
+            if (!is_finite(p)) element.fail("the deformation moved a vertex to a non-finite position");
     }
     compute_vertex_normals(mesh);
     return summaries;

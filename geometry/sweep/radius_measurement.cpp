@@ -19,8 +19,9 @@ RadiusProbe::RadiusProbe(const TriangleMeshData& mesh) {
 }
 
 std::vector<double> RadiusProbe::measure(const Vec3d& centre, const Quaternion& orientation, int samples) const {
-    // Embree asserts on rays that are not finite: refuse them here.
-    if (!is_finite(centre) || !orientation.is_finite()) throw std::invalid_argument("radii: the key section is not finite");
+    // Embree asserts on rays that are not finite in float: refuse them here.
+    if (!is_finite(centre) || !orientation.is_finite() || max_component(abs(centre)) > 1e18)
+        throw std::invalid_argument("radii: the key section's centre is not finite or too far out (beyond 1e18)");
     std::vector<double> radii;
     std::vector<MeshCrossing> crossings;
     for (int j = 0; j < samples; ++j) {

@@ -32,6 +32,7 @@ TEST(RadiusProbe, MeasuresTheDistanceToTheNearestSurfaceInTheSectionPlane) {
     EXPECT_NEAR(off[2], 0.7, 1e-4);
     EXPECT_THROW(probe.measure({0, 0, 5}, Quaternion::from_axis_angle({1, 0, 0}, 90), 8), std::invalid_argument);
     EXPECT_THROW(probe.measure({NAN, 0, 1}, Quaternion::identity(), 8), std::invalid_argument);
+    EXPECT_THROW(probe.measure({1e300, 0, 1}, Quaternion::identity(), 8), std::invalid_argument);  // inf in float
 }
 
 TEST(SweepDeformerPlugins, UneditedSweepWithMeasuredRadiiLeavesTheMeshInPlace) {

@@ -51,6 +51,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     } else {
         add_tubes(*list, mesh, edited, steps, tubes);
     }
+    for (const Vec3f& p : tubes.positions)
+        if (!is_finite(p)) node.fail("a sweep reaches beyond float range");
     tubes.remove_degenerate_triangles();
     compute_vertex_normals(tubes);
     return std::make_unique<TriangleMeshShape>(std::move(tubes));

@@ -526,6 +526,13 @@ JSON
 JSON
   cli_expect 2 deform scenes/data/bunny.obj "$work/bad_weight.json" -o "$work/out.ply"
   expect_in "$work/stderr" "weight_curve: weight_curve[1]: control value 1.5 is outside [0, 1]" stderr
+  cat >"$work/huge.json" <<'JSON'
+{"deformers": [{"type": "sweep", "mode": "global",
+  "key_sections": [{"center": [-0.03, 0.1, -0.07], "radius": 0.1}, {"center": [-0.03, 0.1, 0.07], "radius": 0.1}],
+  "edits": [{"key": 1, "scale_radii": 1e300}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/huge.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "deformers[0]: the deformation moved a vertex to a non-finite position" stderr
   # A pull whose target cannot be reached within the iteration cap reports its residual.
   python3 - scenes/sweeps/teapot_pull.json "$work/stuck.json" <<'PY'
 import json, sys
