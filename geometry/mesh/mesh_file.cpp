@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "geometry/mesh/bezier_patches.h"
 #include "geometry/mesh/obj_loader.h"
 #include "geometry/mesh/ply_loader.h"
 #include "renderer/core/input_error.h"
@@ -16,8 +17,13 @@ TriangleMeshData load_mesh_file(const std::string& path) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".obj") return load_obj(path);
     if (extension == ".ply") return load_ply(path);
+    if (extension == ".bpt") {
+        TriangleMeshData mesh = tessellate_bezier_patches(load_bezier_patches(path), kBezierPatchSteps);
+        mesh.validate(path);
+        return mesh;
+    }
     const std::string found = extension.empty() ? "no file extension" : "unsupported file extension '" + extension + "'";
-    throw InputError({path}, "", found + " (supported mesh formats: .obj, .ply)");
+    throw InputError({path}, "", found + " (supported mesh formats: .obj, .ply, .bpt)");
 }
 
 }  // namespace isotrace

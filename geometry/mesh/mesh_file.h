@@ -6,8 +6,11 @@
 
 namespace isotrace {
 
-// .obj or .ply (any letter case). Throws InputError naming `path` for an unsupported extension or any
-// problem the loader finds. The result is validated; degenerate triangles are kept.
+// Quads per patch edge when a Bézier patch file (.bpt) is tessellated.
+inline constexpr int kBezierPatchSteps = 16;
+
+// .obj, .ply or .bpt (Bézier patches, tessellated), in any letter case. Throws InputError naming `path` for an
+// unsupported extension or any problem the loader finds. The result is validated; degenerate triangles are kept.
 TriangleMeshData load_mesh_file(const std::string& path);
 
 }  // namespace isotrace

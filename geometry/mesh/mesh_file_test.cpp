@@ -39,10 +39,10 @@ TEST(MeshFile, UnsupportedExtensionListsSupportedOnes) {
     ScratchDirectory scratch;
     const std::string stl = scratch.write("cube.stl", "solid cube\n");
     EXPECT_EQ(input_error_message([&] { load_mesh_file(stl); }),
-              stl + ": unsupported file extension '.stl' (supported mesh formats: .obj, .ply)");
+              stl + ": unsupported file extension '.stl' (supported mesh formats: .obj, .ply, .bpt)");
     const std::string bare = scratch.write("cube", triangle_obj);
     EXPECT_EQ(input_error_message([&] { load_mesh_file(bare); }),
-              bare + ": no file extension (supported mesh formats: .obj, .ply)");
+              bare + ": no file extension (supported mesh formats: .obj, .ply, .bpt)");
 }
 
 TEST(MeshFile, DirectoryIsNotAMesh) {

@@ -8,6 +8,7 @@
 
 #include "geometry/csg/inside_span_list.h"
 #include "geometry/mesh/mesh_closedness.h"
+#include "geometry/mesh/mesh_deformer.h"
 #include "geometry/mesh/mesh_file.h"
 #include "geometry/mesh/mesh_inside_spans.h"
 #include "renderer/math/line_box_clip.h"
@@ -196,6 +197,7 @@ TriangleMeshData load_referenced_file(const SceneNode& node) {
 std::unique_ptr<Shape> create(const SceneNode& node) {
     if (node.has("file") && node.has("positions")) node.fail("give either \"file\" or inline \"positions\", not both");
     TriangleMeshData mesh = node.has("file") ? load_referenced_file(node) : parse_inline_mesh(node);
+    apply_mesh_deformers(node, mesh);
     mesh.remove_degenerate_triangles();
     if (mesh.triangles.empty()) node.fail("the mesh has no triangles of non-zero area");
     return std::make_unique<TriangleMeshShape>(std::move(mesh));
@@ -204,7 +206,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 }  // namespace
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "mesh",
-                         "triangle mesh; file (.obj/.ply, relative to the scene) or inline positions/triangles",
+                         "triangle mesh; file (.obj/.ply/.bpt, relative to the scene) or inline positions/triangles; deformers",
                          create)
 
 }  // namespace isotrace

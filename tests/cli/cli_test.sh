@@ -644,6 +644,78 @@ PY
   expect_in "$work/stderr" "no blob group" stderr
 }
 
+case_deform_help() {
+  cli_expect 0 deform --help
+  for option in --output --quiet mesh deformers; do
+    expect_in "$work/stdout" "$option" "deform --help output"
+  done
+}
+
+case_deform_mesh() {  # the bunny's ear bent by its sweep, as PLY and OBJ; statistics on stderr
+  cli_expect 0 deform scenes/data/bunny.obj scenes/sweeps/bunny_ear_bend.json -o "$work/bent.ply"
+  expect_in "$work/stderr" "13934 vertices" stderr
+  expect_in "$work/stderr" "unbound" stderr
+  expect_in "$work/stderr" "wrote $work/bent.ply" stderr
+  head -c 200 "$work/bent.ply" | grep -q "element vertex 13934" || fail "PLY header lacks the vertex count"
+  cli_expect 0 deform scenes/data/teapot.bpt scenes/sweeps/teapot_pull.json -o "$work/teapot.obj" --quiet
+  [[ ! -s "$work/stderr" ]] || { show_output; fail "--quiet printed something"; }
+  (($(grep -c '^v ' "$work/teapot.obj") > 1000)) || fail "too few vertices in the OBJ"
+  # The deformed mesh loads back as a scene mesh.
+  cat >"$work/scene.json" <<JSON
+{"isotrace": 1, "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 1], "target": [0, 0, 0]}},
+ "materials": {"m": {"type": "diffuse"}}, "objects": [{"material": "m", "shape": {"type": "mesh", "file": "bent.ply"}}]}
+JSON
+  cli_expect 0 info "$work/scene.json"
+}
+
+case_deform_bad_input() {
+  cli_expect 2 deform scenes/data/bunny.obj scenes/sweeps/bunny_ear_bend.json -o "$work/bent.stl"
+  expect_in "$work/stderr" "must end in .ply or .obj" stderr
+  expect_no_file "$work/bent.stl"
+  cat >"$work/bad_radius.json" <<'JSON'
+{"deformers": [{"type": "sweep", "key_sections": [{"center": [0, 0, 0], "radius": 0.1}, {"center": [0, 0, 1], "radius": -1}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/bad_radius.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "bad_radius.json:1:121: deformers[0].key_sections[1].radius: value -1 out of range: must be > 0" stderr
+  expect_no_file "$work/out.ply"
+  cat >"$work/bad_quaternion.json" <<'JSON'
+{"deformers": [{"type": "sweep", "key_sections": [{"center": [0, 0, 0], "radius": 0.1, "orientation": [2, 0, 0, 0]},
+                                                {"center": [0, 0, 1], "radius": 0.1}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/bad_quaternion.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "key_sections[0].orientation: not a unit quaternion (|q| = 2)" stderr
+  cat >"$work/one_key.json" <<'JSON'
+{"deformers": [{"type": "sweep", "key_sections": [{"center": [0, 0, 0], "radius": 0.1}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/one_key.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "a sweep needs at least 2 key_sections, got 1" stderr
+  cat >"$work/bad_weight.json" <<'JSON'
+{"deformers": [{"type": "sweep", "weight_curve": [1, 1.5, 0],
+  "key_sections": [{"center": [0, 0, 0], "radius": 0.1}, {"center": [0, 0, 1], "radius": 0.1}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/bad_weight.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "weight_curve: weight_curve[1]: control value 1.5 is outside [0, 1]" stderr
+  cat >"$work/huge.json" <<'JSON'
+{"deformers": [{"type": "sweep", "mode": "global",
+  "key_sections": [{"center": [-0.03, 0.1, -0.07], "radius": 0.1}, {"center": [-0.03, 0.1, 0.07], "radius": 0.1}],
+  "edits": [{"key": 1, "scale_radii": 1e300}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/huge.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "deformers[0]: the deformation moved a vertex to a non-finite position" stderr
+  # A pull whose target cannot be reached within the iteration cap reports its residual.
+  python3 - scenes/sweeps/teapot_pull.json "$work/stuck.json" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec["deformers"][0]["max_iterations"] = 1
+spec["deformers"][0]["edits"] = [{"sweep": "handle", "key": 2, "pull": [0, 0, 3]}]
+json.dump(spec, open(sys.argv[2], "w"))
+PY
+  cli_expect 2 deform scenes/data/teapot.bpt "$work/stuck.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "edits[0]: pull: backward deformation did not converge: residual" stderr
+  expect_in "$work/stderr" "(max_iterations 1)" stderr
+  expect_no_file "$work/out.ply"
+}
+
 # ---- dispatch --------------------------------------------------------------------------------------------
 
 if [[ $(type -t "case_$case_name") != function ]]; then

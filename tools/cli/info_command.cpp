@@ -1,5 +1,6 @@
 #include <cstdio>
 
+#include "geometry/mesh/mesh_deformer.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/plugin/integrator.h"
 #include "renderer/plugin/light.h"
@@ -27,6 +28,7 @@ void print_all_plugins() {
     print_plugins(integrator_registry());
     print_plugins(pixel_filter_registry());
     print_plugins(sampler_registry());
+    print_plugins(mesh_deformer_registry());
 }
 
 int run_info(const std::string& path) {

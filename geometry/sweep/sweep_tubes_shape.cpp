@@ -1,0 +1,68 @@
+// The "sweep_tubes" shape: the sweeps of sweep deformers as triangle meshes, for showing them (translucent) over
+// the mesh they deform. It reads the same deformer list (inline or a file) as a mesh's "deformers".
+#include "geometry/mesh/mesh_file.h"
+#include "geometry/mesh/vertex_normals.h"
+#include "geometry/mesh/triangle_mesh_shape.h"
+#include "geometry/sweep/sweep_family_deformer.h"
+#include "geometry/sweep/sweep_spec.h"
+#include "geometry/sweep/sweep_tessellation.h"
+#include "renderer/scene/json_document.h"
+
+namespace isotrace {
+namespace {
+
+void append(TriangleMeshData& all, const TriangleMeshData& part) {
+    const auto base = std::uint32_t(all.positions.size());
+    all.positions.insert(all.positions.end(), part.positions.begin(), part.positions.end());
+    for (const auto& t : part.triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+void add_tubes(const SceneNode& list, const TriangleMeshData& mesh, bool edited, const SweepTessellation& steps,
+               TriangleMeshData& tubes) {
+    if (!list.json().is_array()) list.fail("expected a list of deformers or the name of a deformer file");
+    for (const SceneNode& element : list.elements()) {
+        const std::unique_ptr<MeshDeformer> deformer = mesh_deformer_registry().create(element);
+        const auto* sweeps = dynamic_cast<const SweepFamilyDeformer*>(deformer.get());
+        if (!sweeps) element.fail("not a sweep deformer");
+        for (const SweepSurface& sweep : sweeps->sweeps(mesh, edited))
+            append(tubes, at_node(element, [&] { return tessellate(sweep, steps); }));
+    }
+}
+
+std::unique_ptr<Shape> create(const SceneNode& node) {
+    const TriangleMeshData mesh = node.has("measure_on") ? load_mesh_file(node.file_path("measure_on").string()) : TriangleMeshData{};
+    const bool edited = node.choice_or("state", "after", {"before", "after"}) == "after";
+    SweepTessellation steps;
+    steps.theta_steps = node.integer_or("theta_steps", 48, NumberRange::between(3, 4096));
+    steps.t_steps = node.integer_or("t_steps", 64, NumberRange::between(1, 4096));
+    TriangleMeshData tubes;
+    const std::optional<SceneNode> list = node.optional_value("deformers");
+    if (!list) node.fail("needs \"deformers\" (a list or the name of a deformer file)");
+    if (list->json().is_string()) {
+        const std::string path = node.file_path("deformers").string();
+        const JsonValue document = parse_json_file(path);
+        auto context = std::make_shared<SceneFileContext>();
+        context->file = path;
+        context->directory = std::filesystem::path(path).parent_path();
+        const SceneNode root(document, "", context);
+        const std::optional<SceneNode> in_file = root.optional_value("deformers");
+        if (!in_file) root.fail("missing \"deformers\"");
+        add_tubes(*in_file, mesh, edited, steps, tubes);
+    } else {
+        add_tubes(*list, mesh, edited, steps, tubes);
+    }
+    for (const Vec3f& p : tubes.positions)
+        if (!is_finite(p)) node.fail("a sweep reaches beyond float range");
+    tubes.remove_degenerate_triangles();
+    compute_vertex_normals(tubes);
+    return std::make_unique<TriangleMeshShape>(std::move(tubes));
+}
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(shape_registry, "sweep_tubes",
+                         "the sweeps of sweep deformers as tubes: deformers (list or file), measure_on (mesh), state "
+                         "(before/after), theta_steps, t_steps",
+                         create)
+
+}  // namespace isotrace
