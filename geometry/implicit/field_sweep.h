@@ -518,7 +518,8 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 stack[top++] = {t0, t1, value(t0), value(t1)};
                 while (top > 0) {
                     const Span span = stack[--top];
-                    const bool sign_change = (span.f_lo < 0) != (span.f_hi < 0);
+                    // Signs as everywhere in the sweep: F = 0 exactly counts as outside.
+                    const bool sign_change = sign_of(span.f_lo) != sign_of(span.f_hi);
                     if (!sign_change && std::abs(span.f_lo) + std::abs(span.f_hi) > lipschitz * (span.hi - span.lo))
                         continue;
                     if (span.hi - span.lo < 1e-13 * (1 + std::abs(span.hi)) || top >= kMaxSearchDepth) {
