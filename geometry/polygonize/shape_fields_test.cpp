@@ -188,6 +188,25 @@ TEST(ShapeFields, EveryImplicitShapeTypeIsRegistered) {
 }
 
 // DC keeps a box's corners (three planes meet in the corner's cell); MC cannot (its vertices lie on lattice edges).
+// Regression: the superquadric field was a constant 1 outside the object's box, with zero gradient, so a DC
+// vertex clamped just outside it had |f|/|∇f| = ∞ (isotrace mesh printed "mean inf, max inf" for an ellipsoid).
+TEST(ShapeFields, SuperquadricFieldKeepsRisingOutsideItsBox) {
+    std::vector<Superquadric> set;
+    set.push_back(superquadric_test::make_superquadric({1, 0.6, 0.4}, 1, 1));
+    const SuperquadricShape shape(std::move(set));
+    const std::unique_ptr<ImplicitField> field = implicit_field_of(shape);
+    const double top = field->bounds().upper.z;
+    // Continuous across the box face, positive and rising beyond it, with an outward gradient.
+    EXPECT_NEAR(field->value({0, 0, top - 1e-9}), field->value({0, 0, top + 1e-9}), 1e-6);
+    double previous = field->value({0, 0, top});
+    for (double z = top + 0.05; z < top + 1; z += 0.05) {
+        const double v = field->value({0, 0, z});
+        EXPECT_GT(v, previous) << "z " << z;
+        EXPECT_GT(field->gradient({0.01, 0.02, z}).z, 0.1) << "z " << z;
+        previous = v;
+    }
+}
+
 TEST(ShapeFields, DualContouringKeepsTheCornersOfACsgBox) {
     std::vector<CsgChild> children;
     children.push_back({std::make_unique<BoxShape>(Vec3d{0.0123, -0.0311, 0.0271}, Vec3d{0.61, 0.47, 0.53}), Transform(), {}});

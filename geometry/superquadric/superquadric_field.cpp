@@ -1,6 +1,10 @@
 // The implicit field of a set of superquadrics (their union): min over the set of G(D⁻¹(p)) − 1, the gauge of
 // the undeformed superellipsoid at the undeformed point (negative inside). The gradient is the analytic normal
 // (carried through the deformation chain) scaled by the field's slope along it, a central difference.
+// Superquadric::field is a constant 1 outside the deformed box (the ray tracer only needs the sign there), which
+// has no gradient: a dual-contouring vertex clamped to a cell may sit just outside the box, and |f|/|∇f| there
+// was infinite. Outside the box the field is continued by the distance to it, so it stays positive, continuous
+// and rising.
 #include <algorithm>
 #include <cmath>
 
@@ -18,15 +22,15 @@ public:
     }
 
     double value(const Vec3d& p) const override {
-        double v = superquadrics_[0].field(p);
-        for (std::size_t i = 1; i < superquadrics_.size(); ++i) v = std::min(v, superquadrics_[i].field(p));
+        double v = extended_field(superquadrics_[0], p);
+        for (std::size_t i = 1; i < superquadrics_.size(); ++i) v = std::min(v, extended_field(superquadrics_[i], p));
         return v;
     }
     Vec3d gradient(const Vec3d& p) const override {
         const Superquadric& s = superquadrics_[nearest(p)];
         const Vec3d n = s.normal(p);
         if (!is_finite(n)) return {};
-        return n * ((s.field(p + n * step_) - s.field(p - n * step_)) / (2 * step_));
+        return n * ((extended_field(s, p + n * step_) - extended_field(s, p - n * step_)) / (2 * step_));
     }
     FieldBox bounds() const override {
         FieldBox box = FieldBox::none();
@@ -40,6 +44,13 @@ public:
     }
 
 private:
+    static double extended_field(const Superquadric& s, const Vec3d& p) {
+        const Vec3d local = s.placement().inverse().point(p);
+        const IntervalBox& box = s.deformation().deformed_box();
+        const Vec3d clamped(std::clamp(local.x, box.x.lo, box.x.hi), std::clamp(local.y, box.y.lo, box.y.hi),
+                            std::clamp(local.z, box.z.lo, box.z.hi));
+        return s.local_field(clamped) + length(local - clamped);
+    }
     static bool may_cross(const Superquadric& s, const Vec3d& centre, double radius) {
         const Transform to_local = s.placement().inverse();
         IntervalBox local = IntervalBox::point(to_local.point(centre));
@@ -56,9 +67,9 @@ private:
     }
     std::size_t nearest(const Vec3d& p) const {
         std::size_t best = 0;
-        double best_value = superquadrics_[0].field(p);
+        double best_value = extended_field(superquadrics_[0], p);
         for (std::size_t i = 1; i < superquadrics_.size(); ++i) {
-            const double v = superquadrics_[i].field(p);
+            const double v = extended_field(superquadrics_[i], p);
             if (v < best_value) {
                 best = i;
                 best_value = v;
