@@ -20,6 +20,9 @@ struct DepthMap {
     float at(int x, int y) const { return depth[index(x, y)]; }
 };
 
+// The ray through the centre of pixel (x, y), full-raster coordinates (thin-lens cameras: from the lens centre).
+Ray pixel_centre_ray(const LoadedScene& scene, int x, int y);
+
 // Distance along the camera's viewing axis (Camera::view_depth, the same quantity as the depth AOV), world units,
 // for every pixel of scene.film.crop; rows run in parallel. Thin-lens cameras use the lens centre.
 DepthMap render_depth_map(const LoadedScene& scene);

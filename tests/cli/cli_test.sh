@@ -596,7 +596,9 @@ case_bench_help() {
 case_bench_small_scene() {  # the whole pipeline in seconds
   write_blob_scene "$work/blobs.json"
   cli_expect 0 bench "$work/blobs.json" --threads 1 2 --repeats 1 --resolution scene --json "$work/bench.json"
-  for text in "Direct" "Tessellated" "direct/tess" "blobs"; do expect_in "$work/stdout" "$text" "bench table"; done
+  for text in "Direct" "Tessellated" "direct/tess" "blobs" "primary" "shadow" "bounce"; do
+    expect_in "$work/stdout" "$text" "bench table"
+  done
   python3 - "$work/bench.json" <<'PY' || fail "bench JSON is incomplete or wrong"
 import json, sys
 report = json.load(open(sys.argv[1]))
@@ -610,6 +612,22 @@ if not t["triangles"] > 100: problems.append("triangles %r" % t["triangles"])
 if not t["closed"]: problems.append("tessellation not closed")
 if not all(r["direct_over_tessellated"] > 0 for r in t["runs"]): problems.append("ratio")
 if not scene["pixel_agreement"] > 0.95: problems.append("pixel agreement %r" % scene["pixel_agreement"])
+# The light sits above the bounds (top y 1.4 + 0.8), raised by their height.
+if not (len(scene["light"]) == 3 and scene["light"][1] > 2.2): problems.append("light %r" % scene["light"])
+for kind in ("shadow", "bounce"):
+    k = scene[kind]
+    if not 0 < k["rays"] <= scene["rays"]: problems.append("%s rays %r" % (kind, k["rays"]))
+    if not k["agreement"] > 0.9: problems.append("%s agreement %r" % (kind, k["agreement"]))
+    if not 0 <= k["direct_hit_fraction"] <= 1: problems.append("%s hit fraction" % kind)
+    for side in ("direct", "tessellated"):
+        runs = k[side]["runs"]
+        if [r["threads"] for r in runs] != [1, 2]: problems.append("%s %s thread counts" % (kind, side))
+        if not all(r["mrays_per_second"] > 0 and r["ns_per_ray"] > 0 and len(r["seconds"]) == 1 for r in runs):
+            problems.append("%s %s timings" % (kind, side))
+    if not all(r["direct_over_tessellated"] > 0 for r in k["tessellated"]["runs"]): problems.append("%s ratio" % kind)
+# Shadow rays go only towards a light the surface faces: the camera sees the blobs from the side, so some
+# primary hits face away from the light above.
+if not scene["shadow"]["rays"] < scene["bounce"]["rays"]: problems.append("shadow rays not fewer than bounces")
 for p in problems: print("bench:", p, file=sys.stderr)
 sys.exit(1 if problems else 0)
 PY

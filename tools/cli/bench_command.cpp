@@ -1,4 +1,4 @@
-// isotrace bench: the blob-group benchmark of issue 4 (see tools/cli/blob_benchmark.h).
+// isotrace bench: the blob-group benchmark of issues 4 and 9 (see tools/cli/blob_benchmark.h).
 #include <cstdio>
 #include <filesystem>
 
@@ -48,7 +48,9 @@ int run_bench(const BenchArguments& args) {
 CommandRunner add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArguments>();
     CLI::App* command = app.add_subcommand(
-        "bench", "Benchmark blob groups: primary rays traced directly and as their tessellation, per thread count");
+        "bench",
+        "Benchmark blob groups: primary, shadow and bounce rays traced directly and as their tessellation, per thread "
+        "count");
     command->add_option("scenes", args->scenes, "Scene files with blob groups")->capture_default_str();
     command->add_option("--threads", args->threads, "Thread counts to measure")
         ->capture_default_str()

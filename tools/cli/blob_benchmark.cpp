@@ -8,6 +8,7 @@
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "geometry/polygonize/mesh_topology.h"
 #include "renderer/core/input_error.h"
+#include "tools/cli/secondary_ray_lists.h"
 
 namespace isotrace::cli {
 namespace {
@@ -53,6 +54,28 @@ void compare_images(const DepthMap& direct, const DepthMap& tessellated, SceneBe
     result.median_depth_difference = median(std::move(differences));
 }
 
+void compare_answers(SecondaryBenchmark& kind) {
+    if (kind.rays == 0) return;
+    const std::vector<std::uint8_t>& direct = kind.direct.front().hit;
+    const std::vector<std::uint8_t>& tessellated = kind.tessellated.front().hit;
+    std::size_t agree = 0, hits = 0;
+    for (std::size_t i = 0; i < direct.size(); ++i) {
+        agree += direct[i] == tessellated[i];
+        hits += direct[i];
+    }
+    kind.agreement = double(agree) / double(direct.size());
+    kind.direct_hit_fraction = double(hits) / double(direct.size());
+}
+
+void time_secondary_kind(const std::vector<const LoadedScene*>& scenes, const std::vector<Ray>& rays,
+                         SecondaryQuery query, int threads, int repeats, SecondaryBenchmark& kind) {
+    kind.rays = rays.size();
+    if (rays.empty()) return;  // nothing to time: no runs
+    std::vector<RayCastTiming> timings = time_secondary_rays(scenes, rays, query, threads, repeats);
+    kind.direct.push_back(std::move(timings[0]));
+    kind.tessellated.push_back(std::move(timings[1]));
+}
+
 }  // namespace
 
 std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& settings,
@@ -75,15 +98,24 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         const std::unique_ptr<LoadedScene> tessellated = load_scene(path, overrides);
         result.direct = build_of(*direct);
         result.tessellated = build_of(*tessellated);
+        log(path + ": building the shadow and bounce rays from the direct scene's primary hits");
+        const SecondaryRayLists secondary = build_secondary_rays(*direct);
+        result.light = secondary.light;
+        const std::vector<const LoadedScene*> scenes = {direct.get(), tessellated.get()};
         for (int threads : settings.threads) {
             log(path + ": " + std::to_string(settings.repeats) + " run(s) each on " + std::to_string(threads) +
                 " thread(s)");
-            std::vector<RayCastTiming> timings = time_primary_rays({direct.get(), tessellated.get()}, threads,
-                                                                   settings.repeats);
+            std::vector<RayCastTiming> timings = time_primary_rays(scenes, threads, settings.repeats);
             result.direct.timings.push_back(std::move(timings[0]));
             result.tessellated.timings.push_back(std::move(timings[1]));
+            time_secondary_kind(scenes, secondary.shadow, SecondaryQuery::Occlusion, threads, settings.repeats,
+                                result.shadow);
+            time_secondary_kind(scenes, secondary.bounce, SecondaryQuery::NearestHit, threads, settings.repeats,
+                                result.bounce);
         }
         compare_images(result.direct.timings.front().depth, result.tessellated.timings.front().depth, result);
+        compare_answers(result.shadow);
+        compare_answers(result.bounce);
         results.push_back(std::move(result));
     }
     return results;

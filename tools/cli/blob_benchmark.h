@@ -1,7 +1,9 @@
 #pragma once
-// The blob-group benchmark of issue 4, in one process and one run: every scene is loaded twice and traced with
-// primary rays only, directly (blob groups as Embree user geometry) and with every blob group replaced by its
-// tessellation (geometry/polygonize) traced natively by Embree as triangles, taking turns, on each thread count.
+// The blob-group benchmark of issues 4 and 9, in one process and one run: every scene is loaded twice and traced
+// with primary, shadow and one-bounce diffuse rays, directly (blob groups as Embree user geometry) and with every
+// blob group replaced by its tessellation (geometry/polygonize) traced natively by Embree as triangles, taking
+// turns, on each thread count. The secondary rays are built once from the direct scene's primary hits
+// (tools/cli/secondary_ray_lists.h) and the same lists are traced in both scenes.
 #include <functional>
 #include <optional>
 #include <string>
@@ -36,6 +38,14 @@ struct TessellationSummary {
     bool closed = true;  // every mesh closed and consistently oriented
 };
 
+// One kind of secondary ray: the same list traced in both scenes.
+struct SecondaryBenchmark {
+    std::size_t rays = 0;
+    std::vector<RayCastTiming> direct, tessellated;  // in the order of the settings' thread counts
+    double agreement = 1;            // fraction of the rays with the same answer (occluded / hit) in both scenes
+    double direct_hit_fraction = 0;  // fraction of the rays occluded / hitting something in the direct scene
+};
+
 struct SceneBenchmark {
     std::string scene;
     std::size_t elements = 0;
@@ -43,6 +53,8 @@ struct SceneBenchmark {
     TessellationSummary tessellation;
     double pixel_agreement = 0;          // fraction of pixels where both hit or both miss
     double median_depth_difference = 0;  // |direct − tessellated| view depth over pixels both hit, world units
+    Vec3f light;                         // the point light the shadow rays go to
+    SecondaryBenchmark shadow, bounce;
 };
 
 // Throws InputError when a scene holds no blob group. `log` receives one line per step.

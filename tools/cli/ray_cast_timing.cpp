@@ -1,11 +1,34 @@
 #include "tools/cli/ray_cast_timing.h"
 
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+
+#include "renderer/embree/embree_device.h"
 
 namespace isotrace::cli {
+namespace {
+
+// Runs trace(timing, scene index) for every scene, `repeats` times with the scenes taking turns, timing each call.
+std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, int repeats,
+                                             const std::function<void(RayCastTiming&, std::size_t)>& trace) {
+    std::vector<RayCastTiming> timings(scenes);
+    for (RayCastTiming& timing : timings) timing.threads = threads;
+    tbb::task_arena arena(threads);
+    for (int run = 0; run < repeats; ++run)
+        for (std::size_t i = 0; i < scenes; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            arena.execute([&] { trace(timings[i], i); });
+            timings[i].seconds.push_back(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+    return timings;
+}
+
+}  // namespace
 
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
@@ -17,17 +40,29 @@ double median(std::vector<double> values) {
 double RayCastTiming::median_seconds() const { return median(seconds); }
 
 std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats) {
-    std::vector<RayCastTiming> timings(scenes.size());
-    for (RayCastTiming& timing : timings) timing.threads = threads;
-    tbb::task_arena arena(threads);
-    for (int run = 0; run < repeats; ++run)
-        for (std::size_t i = 0; i < scenes.size(); ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            timings[i].depth = arena.execute([&] { return render_depth_map(*scenes[i]); });
-            timings[i].seconds.push_back(
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        }
-    return timings;
+    return time_taking_turns(scenes.size(), threads, repeats, [&](RayCastTiming& timing, std::size_t i) {
+        timing.depth = render_depth_map(*scenes[i]);
+        timing.ray_count = timing.depth.depth.size();
+    });
+}
+
+std::vector<RayCastTiming> time_secondary_rays(const std::vector<const LoadedScene*>& scenes,
+                                               const std::vector<Ray>& rays, SecondaryQuery query, int threads,
+                                               int repeats) {
+    constexpr std::size_t kRaysPerTask = 256;  // like a row of the depth map: enough work to amortise a task
+    return time_taking_turns(scenes.size(), threads, repeats, [&](RayCastTiming& timing, std::size_t i) {
+        const RenderScene& scene = *scenes[i]->scene;
+        timing.ray_count = rays.size();
+        timing.hit.assign(rays.size(), 0);
+        tbb::parallel_for(std::size_t(0), (rays.size() + kRaysPerTask - 1) / kRaysPerTask, [&](std::size_t task) {
+            enable_flush_to_zero();  // as in every render thread
+            const std::size_t end = std::min(rays.size(), (task + 1) * kRaysPerTask);
+            for (std::size_t r = task * kRaysPerTask; r < end; ++r)
+                timing.hit[r] = query == SecondaryQuery::Occlusion
+                                    ? scene.occluded(rays[r])
+                                    : scene.intersect(rays[r], RayKind::Secondary).has_value();
+        });
+    });
 }
 
 }  // namespace isotrace::cli

@@ -1,18 +1,23 @@
 #pragma once
-// Times the primary rays of scenes (one per pixel centre to its first hit, with its view depth: the depth map of
-// renderer/render/depth_map.h) on a given number of threads, several times.
+// Times rays in scenes on a given number of threads, several times: the primary rays (one per pixel centre to its
+// first hit, with its view depth: the depth map of renderer/render/depth_map.h) or a fixed list of secondary rays
+// (occlusion queries for shadow rays, nearest-hit queries for bounces).
+#include <cstdint>
 #include <vector>
 
+#include "renderer/core/ray.h"
 #include "renderer/render/depth_map.h"
 
 namespace isotrace::cli {
 
 struct RayCastTiming {
     int threads = 1;
+    std::size_t ray_count = 0;
     std::vector<double> seconds;  // one per run
-    DepthMap depth;               // of the last run: which pixels hit, and where
+    DepthMap depth;               // primary rays, of the last run: which pixels hit, and where
+    std::vector<std::uint8_t> hit;  // secondary rays, of the last run: 1 where the ray was occluded / hit
 
-    std::size_t rays() const { return depth.depth.size(); }
+    std::size_t rays() const { return ray_count; }
     double median_seconds() const;
     double mrays_per_second() const { return double(rays()) / median_seconds() * 1e-6; }
     double nanoseconds_per_ray() const { return median_seconds() / double(rays()) * 1e9; }
@@ -22,6 +27,13 @@ struct RayCastTiming {
 // the scenes take turns, so that a machine whose speed drifts (a shared VM) slows them alike and the ratios of
 // run i stay comparable.
 std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats);
+
+enum class SecondaryQuery { Occlusion, NearestHit };
+
+// The same `rays` traced in every scene with `query`, taking turns as above.
+std::vector<RayCastTiming> time_secondary_rays(const std::vector<const LoadedScene*>& scenes,
+                                               const std::vector<Ray>& rays, SecondaryQuery query, int threads,
+                                               int repeats);
 
 double median(std::vector<double> values);
 
