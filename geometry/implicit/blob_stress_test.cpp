@@ -160,11 +160,18 @@ long long stress_rays() {
     return value ? std::atoll(value) : 10000;
 }
 
+// ISOTRACE_BLOB_STRESS_FIRST_GROUP=N draws the groups and rays before group N without tracing them, so that a
+// failure reported deep in a long run ("group N ray R") reproduces in seconds.
+long long first_traced_group() {
+    const char* value = std::getenv("ISOTRACE_BLOB_STRESS_FIRST_GROUP");
+    return value ? std::atoll(value) : 0;
+}
+
 TEST(BlobStress, RandomRaysAgreeWithTheBruteForceOracle) {
     const long long rays = stress_rays();
     std::mt19937_64 rng(20261124);
     std::uniform_real_distribution<double> u(0, 1);
-    long long compared = 0, hits = 0, all_compared = 0, graze_pairs = 0;
+    long long compared = 0, hits = 0, all_compared = 0, graze_pairs = 0, thin_dips = 0;
     const auto& kernels = field_function_names();
     const long long rays_per_group = 50;
     for (long long group_index = 0; compared < rays; ++group_index) {
@@ -177,6 +184,7 @@ TEST(BlobStress, RandomRaysAgreeWithTheBruteForceOracle) {
             const Vec3d target = random_vector(rng, -1, 1);
             const Vec3d direction = (target - origin) * (0.3 + u(rng));  // not unit length
             const double t_max = 12.0 / length(direction);
+            if (group_index < first_traced_group()) continue;
             const std::vector<OracleCrossing> expected = oracle_crossings(group, origin, direction, 0, t_max);
             BlobQueryWork work;
             const auto first = group.first_crossing(origin, direction, 0, t_max, work);
@@ -184,6 +192,16 @@ TEST(BlobStress, RandomRaysAgreeWithTheBruteForceOracle) {
                 return kernel + " group " + std::to_string(group_index) + " ray " + std::to_string(r);
             };
             const double tolerance = 1e-7 * t_max;
+            // The oracle samples non-polynomial pieces densely and can miss a pair of crossings closer than its
+            // step: the sweep's pair is right when F in its middle has the other sign than just before it.
+            const auto total = [&](double t) {
+                double sum = -group.threshold();
+                for (const Metacube& e : group.elements()) sum += e.field(group.kernel(), origin + direction * t);
+                return sum;
+            };
+            const auto dip_confirmed = [&](double a, double b) {
+                return (total(0.5 * (a + b)) > 0) != (total(a - 0.5 * (b - a)) > 0);
+            };
             // A pair of oracle crossings closer than the tolerance is a graze: finding both or neither is right.
             std::size_t first_expected = 0;
             while (!first && first_expected + 1 < expected.size() &&
@@ -218,6 +236,10 @@ TEST(BlobStress, RandomRaysAgreeWithTheBruteForceOracle) {
                 } else if (i + 1 < all.size() && all[i + 1].t - all[i].t < tolerance) {
                     i += 2;  // a graze the oracle did not split
                     ++graze_pairs;
+                } else if (i + 1 < all.size() && (j >= expected.size() || all[i + 1].t < expected[j].t) &&
+                           dip_confirmed(all[i].t, all[i + 1].t)) {
+                    i += 2;  // a dip narrower than the oracle's sampling, confirmed by the field itself
+                    ++thin_dips;
                 } else {
                     FAIL() << context() << " crossing lists differ at sweep " << i << " / oracle " << j << ": "
                            << (i < all.size() ? all[i].t : -1) << " vs " << (j < expected.size() ? expected[j].t : -1);
@@ -226,11 +248,11 @@ TEST(BlobStress, RandomRaysAgreeWithTheBruteForceOracle) {
             ++all_compared;
         }
     }
-    EXPECT_GT(hits, rays / 4);
+    EXPECT_GT(hits, (rays - first_traced_group() * rays_per_group) / 4);
     RecordProperty("rays", std::to_string(compared));
     RecordProperty("graze_pairs", std::to_string(graze_pairs));
-    std::printf("blob stress: %lld rays, %lld hits, %lld all-crossing lists, %lld graze pairs\n", compared, hits,
-                all_compared, graze_pairs);
+    std::printf("blob stress: %lld rays, %lld hits, %lld all-crossing lists, %lld graze pairs, %lld thin dips\n",
+                compared, hits, all_compared, graze_pairs, thin_dips);
 }
 
 }  // namespace
