@@ -31,6 +31,7 @@
 #include "geometry/polynomial/bernstein.h"
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/quadratic_roots.h"
+#include "geometry/sphere/sphere_intersection.h"
 #include "renderer/core/inline_vector.h"
 
 namespace isotrace {
@@ -218,7 +219,7 @@ void FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, const
     next_candidate_ = 0;
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
-    const double dd = dot(d, d);
+    const double dd = dot(d, d);  // for the bounding-sphere test
     for (std::uint32_t index : candidates) {
         // Most listed elements are far from the line: their compact bounding spheres reject them.
         if (!spheres_[index].may_meet_line(o, d, dd)) continue;
@@ -228,14 +229,9 @@ void FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, const
         const Vec3d& half = element.skeleton().half_size;
         const double half2 = dot(half, half);
         const double reach = element.radius() + (half2 > 0 ? std::sqrt(half2) : 0.0);
-        const Vec3d f = o - element.skeleton().centre;
-        const double half_b = dot(f, d);
-        const Vec3d to_line = f - d * (half_b / dd);
-        const double quarter_discriminant = dd * (reach * reach - dot(to_line, to_line));
-        if (!(quarter_discriminant > 0)) continue;
-        const QuadraticRoots roots =
-            quadratic_roots_with_discriminant(dd, 2 * half_b, dot(f, f) - reach * reach, 4 * quarter_discriminant);
-        const double t_in = roots.roots[0], t_out = roots.roots[roots.count - 1];
+        const auto roots = intersect_sphere(o, d, element.skeleton().centre, reach);
+        if (!roots) continue;
+        const double t_in = roots->t0, t_out = roots->t1;
         if (!(t_out > stretch.t_begin && t_in < stretch.t_end)) continue;
         candidates_.push_back({t_in, t_out, index});
     }
