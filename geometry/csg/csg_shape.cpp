@@ -1,6 +1,7 @@
 #include "geometry/csg/csg_shape.h"
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -76,8 +77,8 @@ CsgShape::CsgShape(CsgOperation operation, std::vector<CsgChild> children) : ope
         place(operand, child.to_csg);
         operands_.push_back(std::move(operand));
     }
-    span_combinations_slot_ = counters::named_counter_slot("csg.span_combinations");
-    span_events_slot_ = counters::named_counter_slot("csg.span_events");
+    span_slots_ = {counters::named_counter_slot("csg.span_combinations"),
+                   counters::named_counter_slot("csg.span_events")};
 }
 
 void CsgShape::place(Operand& operand, const Transform& to_csg) {
@@ -180,8 +181,7 @@ void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double 
         }
         append_span_events(i, operand.first_part, operand_spans, events);
     }
-    counters::add_to_named(span_combinations_slot_, 1);
-    counters::add_to_named(span_events_slot_, events.size());
+    counters::add_to_named(span_slots_, std::array<std::uint64_t, 2>{1, events.size()});
     combine_span_events(operation_, std::uint32_t(operands_.size()), events, spans);
 }
 

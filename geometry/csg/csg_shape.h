@@ -5,6 +5,7 @@
 //
 // Parts: every leaf solid of the tree is a part, numbered depth-first; a hit's part (LocalShading::part, carried
 // in Embree's primID) names the leaf surface that bounds the result there, and with it the child's material.
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -72,8 +73,7 @@ private:
     std::vector<Operand> operands_;
     std::uint32_t part_count_ = 0;
     SolidUserGeometry geometry_;
-    int span_combinations_slot_ = 0;
-    int span_events_slot_ = 0;
+    std::array<int, 2> span_slots_{};  // span combinations, span events
 };
 
 }  // namespace isotrace

@@ -11,14 +11,6 @@ BlinnExponential::BlinnExponential(double sharpness) : sharpness_(sharpness), ex
 }
 
 // e^(−ax) − e^(−a) = −e^(−ax)·expm1(−a(1 − x)): no cancellation near the cut, no overflow for large a.
-double BlinnExponential::unit_value(double x) const {
-    return std::exp(-sharpness_ * x) * std::expm1(-sharpness_ * (1 - x)) / expm1_minus_a_;
-}
-
-double BlinnExponential::unit_derivative(double x) const {
-    return sharpness_ * std::exp(-sharpness_ * x) / expm1_minus_a_;
-}
-
 std::span<const FieldPiece> BlinnExponential::unit_pieces() const {
     static constexpr FieldPiece pieces[] = {{0, 1, false, 0, {}}};
     return pieces;

@@ -10,6 +10,8 @@
 // from the raw exponential is below 3.4e-4. iso_radius inverts this truncated form exactly.
 //
 // Not a polynomial: root finders use the monotone/convex bounds documented in field_function.h.
+#include <cmath>
+
 #include "geometry/implicit/field_function.h"
 
 namespace isotrace {
@@ -25,8 +27,12 @@ public:
     double sharpness() const { return sharpness_; }
 
     std::string_view name() const override { return "blinn"; }
-    double unit_value(double x) const override;
-    double unit_derivative(double x) const override;
+    double unit_value(double x) const override {
+        return std::exp(-sharpness_ * x) * std::expm1(-sharpness_ * (1 - x)) / expm1_minus_a_;
+    }
+    double unit_derivative(double x) const override {
+        return sharpness_ * std::exp(-sharpness_ * x) / expm1_minus_a_;
+    }
     std::span<const FieldPiece> unit_pieces() const override;
     double unit_iso_level(double level) const override;
 

@@ -71,6 +71,7 @@ private:
     KernelKind kernel_kind_;
     double threshold_;
     std::vector<BoundingSphere> spheres_;  // per element, for the sweep's first test
+    double centre_bound_ = 0;              // the largest |centre| of spheres_ (scales that test's float margin)
     BlobCells cells_;
 };
 

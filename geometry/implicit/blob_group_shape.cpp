@@ -1,5 +1,7 @@
 #include "geometry/implicit/blob_group_shape.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -24,34 +26,25 @@ Bounds3f BlobGroupShape::bounds() const {
 
 void BlobGroupShape::register_counters() {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
-    const auto slots = [](const std::string& prefix) {
-        return WorkSlots{counters::named_counter_slot(prefix + ".cell_queries"),
-                         counters::named_counter_slot(prefix + ".candidates"),
-                         counters::named_counter_slot(prefix + ".elements_joined"),
-                         counters::named_counter_slot(prefix + ".pieces"),
-                         counters::named_counter_slot(prefix + ".pieces_skipped_by_bounds"),
-                         counters::named_counter_slot(prefix + ".polynomial_solves"),
-                         counters::named_counter_slot(prefix + ".lipschitz_searches"),
-                         counters::named_counter_slot(prefix + ".root_iterations"),
-                         counters::named_counter_slot(prefix + ".roots")};
-    };
-    all_groups_ = slots(type_name());
-    this_group_ = slots(type_name() + "[" + (object_name().empty() ? "unnamed" : object_name()) + "]");
+    static constexpr const char* kWorkNames[] = {
+        ".cell_queries",       ".candidates",      ".elements_joined", ".pieces", ".pieces_skipped_by_bounds",
+        ".polynomial_solves", ".lipschitz_searches", ".root_iterations", ".roots"};
+    const std::string prefixes[] = {type_name(),
+                                    type_name() + "[" + (object_name().empty() ? "unnamed" : object_name()) + "]"};
+    std::size_t slot = 0;
+    for (const std::string& prefix : prefixes)
+        for (const char* name : kWorkNames) work_slots_[slot++] = counters::named_counter_slot(prefix + name);
 }
 
 void BlobGroupShape::count_work(const BlobQueryWork& work) const {
     if (work.queries == 0) return;
-    for (const WorkSlots& slots : {all_groups_, this_group_}) {
-        counters::add_to_named(slots.queries, work.queries);
-        counters::add_to_named(slots.candidates, work.candidates);
-        counters::add_to_named(slots.joined, work.joined);
-        counters::add_to_named(slots.pieces, work.pieces);
-        counters::add_to_named(slots.skipped, work.skipped_pieces);
-        counters::add_to_named(slots.solves, work.polynomial_solves);
-        counters::add_to_named(slots.searches, work.lipschitz_searches);
-        counters::add_to_named(slots.iterations, work.root_iterations);
-        counters::add_to_named(slots.roots, work.roots);
-    }
+    const std::array<std::uint64_t, 9> amounts{work.queries,           work.candidates,     work.joined,
+                                               work.pieces,            work.skipped_pieces, work.polynomial_solves,
+                                               work.lipschitz_searches, work.root_iterations, work.roots};
+    std::array<std::uint64_t, 18> for_both;  // all groups, then this one
+    std::copy(amounts.begin(), amounts.end(), for_both.begin());
+    std::copy(amounts.begin(), amounts.end(), for_both.begin() + amounts.size());
+    counters::add_to_named(work_slots_, for_both);
 }
 
 RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {

@@ -4,6 +4,8 @@
 // cells are disjoint, so Embree's shrinking t_far makes the nearest of them the hit and culls the cells behind
 // it. Normals are computed for the accepted hit only (shading). As a CSG operand the group is a solid: inside is
 // where the summed field exceeds the threshold.
+#include <array>
+
 #include "geometry/implicit/blob_group.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/plugin/solid.h"
@@ -46,10 +48,8 @@ private:
     BlobGroup group_;
     int counter_slot_ = 0;
     // Work counters for all blob groups ("blobs.pieces", ...) and for this one ("blobs[name].pieces", ...).
-    struct WorkSlots {
-        int queries, candidates, joined, pieces, skipped, solves, searches, iterations, roots;
-    };
-    WorkSlots all_groups_{}, this_group_{};
+    // Counter slots of every BlobQueryWork field, for all blob groups and then for this one.
+    std::array<int, 18> work_slots_{};
 };
 
 }  // namespace isotrace

@@ -4,16 +4,6 @@
 
 namespace isotrace {
 
-double KimSextic::unit_value(double x) const {
-    const double u = 1 - x;
-    return u * u * u;
-}
-
-double KimSextic::unit_derivative(double x) const {
-    const double u = 1 - x;
-    return -3 * u * u;
-}
-
 std::span<const FieldPiece> KimSextic::unit_pieces() const {
     static constexpr FieldPiece pieces[] = {{0, 1, true, 3, {1, -3, 3, -1}}};
     return pieces;

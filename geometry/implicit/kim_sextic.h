@@ -8,8 +8,14 @@ namespace isotrace {
 class KimSextic final : public FieldFunction {
 public:
     std::string_view name() const override { return "kim"; }
-    double unit_value(double x) const override;
-    double unit_derivative(double x) const override;
+    double unit_value(double x) const override {
+        const double u = 1 - x;
+        return u * u * u;
+    }
+    double unit_derivative(double x) const override {
+        const double u = 1 - x;
+        return -3 * u * u;
+    }
     std::span<const FieldPiece> unit_pieces() const override;
     double unit_iso_level(double level) const override;
 };

@@ -4,13 +4,6 @@
 
 namespace isotrace {
 
-double MurakamiQuartic::unit_value(double x) const {
-    const double u = 1 - x;
-    return u * u;
-}
-
-double MurakamiQuartic::unit_derivative(double x) const { return -2 * (1 - x); }
-
 std::span<const FieldPiece> MurakamiQuartic::unit_pieces() const {
     static constexpr FieldPiece pieces[] = {{0, 1, true, 2, {1, -2, 1, 0}}};
     return pieces;

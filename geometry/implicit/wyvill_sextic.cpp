@@ -5,14 +5,6 @@
 
 namespace isotrace {
 
-// The factored form keeps full relative accuracy near r = R, where thin blends put their surfaces.
-double WyvillSextic::unit_value(double x) const {
-    const double u = 1 - x;
-    return u * u * (9 - 4 * x) / 9;
-}
-
-double WyvillSextic::unit_derivative(double x) const { return -(1 - x) * (22 - 12 * x) / 9; }
-
 std::span<const FieldPiece> WyvillSextic::unit_pieces() const {
     static constexpr FieldPiece pieces[] = {{0, 1, true, 3, {1, -22.0 / 9, 17.0 / 9, -4.0 / 9}}};
     return pieces;

@@ -1,5 +1,6 @@
 #include "geometry/superquadric/superquadric_shape.h"
 
+#include <array>
 #include <span>
 
 #include "geometry/csg/inside_span_list.h"
@@ -35,25 +36,22 @@ void SuperquadricShape::bake(const Transform& to_world) {
 
 RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
-    bounds_slot_ = counters::named_counter_slot("superquadric.interval_bounds");
-    slope_bounds_slot_ = counters::named_counter_slot("superquadric.slope_bounds");
-    monotone_slot_ = counters::named_counter_slot("superquadric.monotone_proofs");
-    evaluations_slot_ = counters::named_counter_slot("superquadric.evaluations");
-    halvings_slot_ = counters::named_counter_slot("superquadric.halvings");
-    crossings_slot_ = counters::named_counter_slot("superquadric.refined_crossings");
-    polynomial_slot_ = counters::named_counter_slot("superquadric.polynomial_solves");
+    work_slots_ = {counters::named_counter_slot("superquadric.interval_bounds"),
+                   counters::named_counter_slot("superquadric.slope_bounds"),
+                   counters::named_counter_slot("superquadric.monotone_proofs"),
+                   counters::named_counter_slot("superquadric.evaluations"),
+                   counters::named_counter_slot("superquadric.halvings"),
+                   counters::named_counter_slot("superquadric.refined_crossings"),
+                   counters::named_counter_slot("superquadric.polynomial_solves")};
     return user_geometry::create(device, this, unsigned(superquadrics_.size()), bounds_callback, intersect_callback,
                                  occluded_callback);
 }
 
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {
-    counters::add_to_named(bounds_slot_, work.search.interval_bounds);
-    counters::add_to_named(slope_bounds_slot_, work.search.slope_bounds);
-    counters::add_to_named(monotone_slot_, work.search.monotone_proofs);
-    counters::add_to_named(evaluations_slot_, work.search.evaluations);
-    counters::add_to_named(halvings_slot_, work.search.halvings);
-    counters::add_to_named(crossings_slot_, work.search.crossings);
-    counters::add_to_named(polynomial_slot_, work.polynomial_solves);
+    const std::array<std::uint64_t, 7> amounts{
+        work.search.interval_bounds, work.search.slope_bounds, work.search.monotone_proofs, work.search.evaluations,
+        work.search.halvings,        work.search.crossings,    work.polynomial_solves};
+    counters::add_to_named(work_slots_, amounts);
 }
 
 void SuperquadricShape::bounds_callback(const RTCBoundsFunctionArguments* args) {

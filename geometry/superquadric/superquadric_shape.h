@@ -2,6 +2,7 @@
 // The "superquadric" shape: a set of (deformed) superquadrics as one Embree user geometry, one primitive per
 // superquadric with the bound of its deformed box. It is also a Solid, so CSG can combine superquadrics: the
 // inside spans are the union of the superquadrics' own spans.
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -45,8 +46,8 @@ private:
 
     std::vector<Superquadric> superquadrics_;
     int counter_slot_ = 0;
-    int bounds_slot_ = 0, slope_bounds_slot_ = 0, monotone_slot_ = 0, evaluations_slot_ = 0, halvings_slot_ = 0;
-    int crossings_slot_ = 0, polynomial_slot_ = 0;
+    // interval bounds, slope bounds, monotone proofs, evaluations, halvings, refined crossings, polynomial solves
+    std::array<int, 7> work_slots_{};
 };
 
 }  // namespace isotrace

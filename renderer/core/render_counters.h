@@ -3,6 +3,7 @@
 // counting costs no atomics; totals are summed on demand.
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 
 namespace isotrace {
@@ -38,7 +39,8 @@ void count_nan_sample();
 // Plugin-specific counters: register a name once, then add to its slot from any thread. Names beyond the table's
 // 1023 share the slot "counters.overflow".
 int named_counter_slot(const std::string& name);
-void add_to_named(int slot, std::uint64_t amount);
+// Adds amounts[i] to slot slots[i] (one lookup of the thread's block for all of them: hot paths count several).
+void add_to_named(std::span<const int> slots, std::span<const std::uint64_t> amounts);
 
 CounterTotals totals();
 void reset();
