@@ -27,8 +27,8 @@ Bounds3f BlobGroupShape::bounds() const {
 void BlobGroupShape::register_counters() {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
     static constexpr const char* kWorkNames[] = {
-        ".cell_queries",       ".candidates",      ".elements_joined", ".pieces", ".pieces_skipped_by_bounds",
-        ".polynomial_solves", ".lipschitz_searches", ".root_iterations", ".roots"};
+        ".cell_queries",      ".cell_queries_bounded", ".candidates",      ".elements_joined", ".pieces",
+        ".pieces_skipped_by_bounds", ".polynomial_solves", ".lipschitz_searches", ".root_iterations", ".roots"};
     const std::string prefixes[] = {type_name(),
                                     type_name() + "[" + (object_name().empty() ? "unnamed" : object_name()) + "]"};
     std::size_t slot = 0;
@@ -38,10 +38,11 @@ void BlobGroupShape::register_counters() {
 
 void BlobGroupShape::count_work(const BlobQueryWork& work) const {
     if (work.queries == 0) return;
-    const std::array<std::uint64_t, 9> amounts{work.queries,           work.candidates,     work.joined,
-                                               work.pieces,            work.skipped_pieces, work.polynomial_solves,
-                                               work.lipschitz_searches, work.root_iterations, work.roots};
-    std::array<std::uint64_t, 18> for_both;  // all groups, then this one
+    const std::array<std::uint64_t, 10> amounts{work.queries,        work.queries_bounded,    work.candidates,
+                                                work.joined,         work.pieces,             work.skipped_pieces,
+                                                work.polynomial_solves, work.lipschitz_searches, work.root_iterations,
+                                                work.roots};
+    std::array<std::uint64_t, 20> for_both;  // all groups, then this one
     std::copy(amounts.begin(), amounts.end(), for_both.begin());
     std::copy(amounts.begin(), amounts.end(), for_both.begin() + amounts.size());
     counters::add_to_named(work_slots_, for_both);

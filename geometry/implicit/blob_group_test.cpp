@@ -99,6 +99,30 @@ std::optional<double> reference_crossing(const BlobGroup& group, const Vec3d& or
     return std::nullopt;
 }
 
+// The candidates' bound skips a cell at once only when no crossing can be there: two Kim metaballs (w = 1, R = 1,
+// T = 0.5) 3 apart, in one cell, and a ray parallel to their axis at distance h. Their supports do not overlap,
+// so the ray hits exactly when h is below one ball's iso-radius, (1 − h²)³ = T. Each contributes at most
+// (1 − h²)³ on the ray, so the bound 2·(1 − h²)³ falls below T only beyond h² = 1 − 0.25^(1/3): from there on
+// the cell is skipped before any element is joined, and between the two radii the sweep runs and finds nothing.
+TEST(BlobGroup, CandidateBoundSkipsOnlyCellsWithoutCrossings) {
+    const BlobGroup group({Metacube::metaball({-1.5, 0, 0}, 1, 1), Metacube::metaball({1.5, 0, 0}, 1, 1)},
+                          make_field_function("kim", 4.0), 0.5);
+    ASSERT_EQ(group.cells().cells().size(), 1u);
+    const double h_limit = std::sqrt(1 - std::cbrt(0.25));  // 2·(1 − h²)³ = T: the bound's edge
+    const double h_alone = std::sqrt(1 - std::cbrt(0.5));   // (1 − h²)³ = T: one ball's own iso-radius
+    for (const double h : {0.5 * h_alone, 0.999 * h_alone, 1.001 * h_alone, 0.5 * (h_alone + h_limit),
+                           1.001 * h_limit, 1.5 * h_limit}) {
+        BlobQueryWork work;
+        const auto crossing = group.first_crossing({-5, h, 0}, {1, 0, 0}, 0, 100, work);
+        EXPECT_EQ(crossing.has_value(), h < h_alone) << h;
+        if (h > h_limit) {
+            EXPECT_EQ(work.queries_bounded, work.queries) << h;
+        } else {
+            EXPECT_LT(work.queries_bounded, work.queries) << h;
+        }
+    }
+}
+
 // The nearest crossing over all cells, as Embree finds it (each cell's query shrinks t_far).
 std::optional<double> nearest_crossing(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction) {
     std::optional<double> best;
