@@ -10,7 +10,6 @@ CommandRunner add_render_command(CLI::App& app);
 CommandRunner add_info_command(CLI::App& app);
 CommandRunner add_depth_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
-CommandRunner add_polygonize_command(CLI::App& app);
 CommandRunner add_mesh_command(CLI::App& app);
 CommandRunner add_deform_command(CLI::App& app);
 

@@ -11,6 +11,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/obj_writer.h"
 #include "tools/cli/ply_writer.h"
+#include "tools/cli/thread_limit.h"
 
 namespace isotrace::cli {
 namespace {
@@ -19,6 +20,7 @@ struct DeformArguments {
     std::string mesh;
     std::string deformers;
     std::string output;
+    int threads = 0;
     bool quiet = false;
 };
 
@@ -33,6 +35,7 @@ int run_deform(const DeformArguments& args) {
     if (extension != ".ply" && extension != ".obj")
         throw InputError({}, "--output", "\"" + args.output + "\" must end in .ply or .obj");
     check_output_directory(args.output, "--output");
+    const ThreadLimit limit(args.threads);
     TriangleMeshData mesh = load_mesh_file(args.mesh);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh);
@@ -44,8 +47,8 @@ int run_deform(const DeformArguments& args) {
     }
     if (!args.quiet) {
         for (const std::string& line : summaries) std::fprintf(stderr, "isotrace: %s\n", line.c_str());
-        std::fprintf(stderr, "isotrace: deformed %zu vertices in %.3f s\nwrote %s\n", mesh.positions.size(), seconds,
-                     args.output.c_str());
+        std::fprintf(stderr, "isotrace: deformed %zu vertices in %.3f s on %d thread(s)\nwrote %s\n",
+                     mesh.positions.size(), seconds, limit.threads(), args.output.c_str());
     }
     return kExitOk;
 }
@@ -60,6 +63,7 @@ CommandRunner add_deform_command(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", args->output, "Deformed mesh, .ply (binary) or .obj")->required();
+    add_threads_option(*command, args->threads);
     command->add_flag("-q,--quiet", args->quiet, "No statistics on stderr");
     return [args] { return run_deform(*args); };
 }

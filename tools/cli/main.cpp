@@ -2,7 +2,6 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <algorithm>
 #include <exception>
 #include <new>
 #include <string>
@@ -18,10 +17,12 @@ namespace {
 // "isotrace rendr scene.json" would otherwise be reported as "A subcommand is required".
 bool reject_unknown_command(const CLI::App& app, int argc, char** argv) {
     if (argc < 2 || argv[1][0] == '-') return false;
-    std::vector<std::string> names;
-    for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
     const std::string word = argv[1];
-    if (std::find(names.begin(), names.end(), word) != names.end()) return false;
+    std::vector<std::string> names;
+    for (const CLI::App* command : app.get_subcommands({})) {
+        if (command->check_name(word)) return false;  // its name or an alias
+        names.push_back(command->get_name());
+    }
     std::string list;
     for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
     const std::string suggestion = isotrace::did_you_mean(word, names);
@@ -48,7 +49,6 @@ int main(int argc, char** argv) {
     const CommandRunner info = add_info_command(app);
     const CommandRunner depth = add_depth_command(app);
     const CommandRunner bench = add_bench_command(app);
-    const CommandRunner polygonize = add_polygonize_command(app);
     const CommandRunner mesh = add_mesh_command(app);
     const CommandRunner deform = add_deform_command(app);
     if (reject_unknown_command(app, argc, argv)) return kExitBadInput;
@@ -62,7 +62,6 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("depth")) return depth();
         if (app.got_subcommand("bench")) return bench();
-        if (app.got_subcommand("polygonize")) return polygonize();
         if (app.got_subcommand("mesh")) return mesh();
         if (app.got_subcommand("deform")) return deform();
         return info();

@@ -1,5 +1,7 @@
 // isotrace mesh: one implicit object of a scene polygonised by marching cubes, octree dual contouring or
 // spherical-octree dual contouring, written as PLY or OBJ, with counts, time and the distance to the true surface.
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +17,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/obj_writer.h"
 #include "tools/cli/ply_writer.h"
+#include "tools/cli/thread_limit.h"
 
 namespace isotrace::cli {
 namespace {
@@ -27,6 +30,7 @@ struct MeshArguments {
     std::string pole_cap = "axis";
     bool no_origin_correction = false;
     std::size_t error_samples = 20000;
+    int threads = 0;
     bool quiet = false;
 };
 
@@ -44,6 +48,26 @@ const SceneObject& find_object(const RenderScene& scene, const std::string& name
     }
     throw InputError({}, "--object",
                      "no object \"" + name + "\" in " + file + did_you_mean(name, names) + "; objects: " + joined(names));
+}
+
+// Without --object: the scene's one object with an implicit surface (a blob group next to a floor mesh, say).
+const SceneObject& only_implicit_object(const RenderScene& scene, const std::string& file) {
+    std::vector<const SceneObject*> implicit;
+    std::vector<std::string> names;
+    for (const SceneObject& object : scene.objects()) {
+        try {
+            if (!implicit_field_of(*object.shape)) continue;
+        } catch (const std::invalid_argument&) {
+            continue;  // an open mesh, say: no inside to mesh
+        }
+        implicit.push_back(&object);
+        names.push_back(object.name);
+    }
+    if (implicit.size() == 1) return *implicit.front();
+    throw InputError({}, "--object",
+                     implicit.empty() ? file + " has no object with an implicit surface"
+                                      : file + " has several objects with an implicit surface (" + joined(names) +
+                                            "): name one with --object");
 }
 
 std::unique_ptr<ImplicitField> field_of(const SceneObject& object) {
@@ -83,8 +107,10 @@ int run_mesh(const MeshArguments& args) {
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     check_output_file(args.output, extension == ".obj" ? ".obj" : ".ply", "--output");
     const PolygonizeOptions options = options_from(args);
+    const ThreadLimit limit(args.threads);
     const std::unique_ptr<LoadedScene> scene = load_scene(args.scene);
-    const SceneObject& object = find_object(*scene->scene, args.object, args.scene);
+    const SceneObject& object = args.object.empty() ? only_implicit_object(*scene->scene, args.scene)
+                                                    : find_object(*scene->scene, args.object, args.scene);
     const std::unique_ptr<ImplicitField> field = field_of(object);
 
     const auto start = std::chrono::steady_clock::now();
@@ -106,9 +132,13 @@ int run_mesh(const MeshArguments& args) {
 
     if (!args.quiet) {
         const PolygonizeReport& r = result.report;
-        std::printf("%s: %s depth %d: %zu vertices, %zu triangles in %.3f s (%zu candidate cells, %zu on the surface)\n",
+        rusage usage{};
+        getrusage(RUSAGE_SELF, &usage);
+        std::printf("%s: %s depth %d: %zu vertices, %zu triangles in %.3f s on %d thread(s) (%zu candidate cells, "
+                    "%zu on the surface); peak resident memory of the process %.1f MiB\n",
                     object.name.c_str(), args.method.c_str(), args.depth, result.mesh.positions.size(),
-                    result.mesh.triangles.size(), seconds, r.candidate_cells, r.surface_cells);
+                    result.mesh.triangles.size(), seconds, limit.threads(), r.candidate_cells, r.surface_cells,
+                    double(usage.ru_maxrss) / 1024);
         if (options.method == PolygonizeMethod::SphericalDualContouring)
             std::printf("origin (%g, %g, %g) -> (%g, %g, %g) in %d steps; r in [%g, %g]; %zu ghost vertices\n",
                         r.requested_origin.x, r.requested_origin.y, r.requested_origin.z, r.range.origin.x,
@@ -130,8 +160,10 @@ CommandRunner add_mesh_command(CLI::App& app) {
     auto args = std::make_shared<MeshArguments>();
     CLI::App* command = app.add_subcommand(
         "mesh", "Polygonise one implicit object: marching cubes, octree or spherical-octree dual contouring");
+    command->alias("polygonize");  // the blob-only tessellator this command replaced
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
-    command->add_option("--object", args->object, "Name of the scene object to mesh")->required();
+    command->add_option("--object", args->object,
+                        "Name of the scene object to mesh (default: the scene's only implicit object)");
     command->add_option("--method", args->method, "mc (marching cubes), dc (octree dual contouring) or sdc (spherical)")
         ->capture_default_str();
     command->add_option("--depth", args->depth, "Octree depth L: 2^L cells along each axis (1..10, sdc 2..10)")
@@ -147,6 +179,7 @@ CommandRunner add_mesh_command(CLI::App& app) {
         ->capture_default_str()
         ->check(CLI::Range(std::size_t(1), std::size_t(10000000)));
     command->add_option("-o,--output", args->output, "Mesh file: .ply (binary) or .obj, in world space")->required();
+    add_threads_option(*command, args->threads);
     command->add_flag("-q,--quiet", args->quiet, "No summary");
     return [args] { return run_mesh(*args); };
 }

@@ -1,6 +1,3 @@
-#include <tbb/global_control.h>
-#include <tbb/info.h>
-
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +13,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/progress_bar.h"
 #include "tools/cli/render_statistics.h"
+#include "tools/cli/thread_limit.h"
 
 namespace isotrace::cli {
 namespace {
@@ -106,8 +104,8 @@ int run_render(const RenderArguments& args) {
     }
     if (!args.stats_json.empty()) check_output_directory(args.stats_json, "--stats-json");
 
-    const int threads = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    const ThreadLimit limit(args.threads);
+    const int threads = limit.threads();
 
     counters::reset();
     const auto load_start = std::chrono::steady_clock::now();
@@ -166,7 +164,7 @@ CommandRunner add_render_command(CLI::App& app) {
                         ".png/.jpg/.tif: display-referred through the OCIO view. Default: <scene name>.exr");
     command->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1, 1 << 24));
     command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
-    command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
+    add_threads_option(*command, args->threads);
     command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)");
     command->add_option("--aov", args->aovs,
                         "Comma-separated AOVs to add to the EXR: albedo, normal, depth, position, object_id, "
