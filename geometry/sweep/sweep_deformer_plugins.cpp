@@ -12,6 +12,12 @@
 namespace isotrace {
 namespace {
 
+// Wall seconds since `start`: the summaries report binding and deformation times (the sweep benchmark).
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+
 std::vector<Vec3d> positions_of(const TriangleMeshData& mesh) {
     std::vector<Vec3d> points;
     for (const Vec3f& p : mesh.positions) points.emplace_back(p);
@@ -41,11 +47,15 @@ public:
 
     std::string apply(TriangleMeshData& mesh) const override {
         MultiResolutionSweep sweep = initial(mesh);
+        const auto binding_start = std::chrono::steady_clock::now();
         const SweepDeformer deformer(sweep.finest(), positions_of(mesh),
                                      local_ ? SweepDeformer::Mode::local : SweepDeformer::Mode::global, weight_);
+        const double binding_seconds = seconds_since(binding_start);
+        const auto deformation_start = std::chrono::steady_clock::now();
         edit(sweep);
         const std::vector<Vec3d> moved = at_node(sweep_.node, [&] { return deformer.deform(sweep.finest()); });
         for (std::size_t i = 0; i < moved.size(); ++i) mesh.positions[i] = Vec3f(moved[i]);
+        const double deformation_seconds = seconds_since(deformation_start);
         if (weights_as_uv_) {  // to show the weights through a texture (the paper's Fig. 5)
             mesh.uvs.clear();
             // u kept off the texture's edges, where a repeating lookup would blend its two ends.
@@ -55,7 +65,8 @@ public:
         std::ostringstream summary;
         summary << "sweep" << (sweep_.name.empty() ? "" : " \"" + sweep_.name + "\"") << " (" << (local_ ? "local" : "global")
                 << ", " << levels_ << " level" << (levels_ > 1 ? "s" : "") << "): " << s.points << " vertices, " << s.bound
-                << " bound (" << s.inside << " inside the sweep, " << s.weighted << " moved), " << s.unbound() << " unbound";
+                << " bound (" << s.inside << " inside the sweep, " << s.weighted << " moved), " << s.unbound() << " unbound"
+                << "; binding " << binding_seconds << " s, deformation " << deformation_seconds << " s";
         return summary.str();
     }
 
@@ -110,6 +121,7 @@ public:
     std::string apply(TriangleMeshData& mesh) const override {
         SweepHierarchy tree = build(mesh);
         // Each vertex follows the sweep it lies deepest in: the smallest u = (r + d)/r of its bindings.
+        const auto binding_start = std::chrono::steady_clock::now();
         const std::vector<Vec3d> points = positions_of(mesh);
         std::vector<SweepBinder> binders;
         for (std::size_t n = 0; n < tree.size(); ++n) binders.emplace_back(tree.surface(int(n)));
@@ -128,6 +140,8 @@ public:
                 }
             }
         });
+        const double binding_seconds = seconds_since(binding_start);
+        const auto deformation_start = std::chrono::steady_clock::now();
         const std::string pulls = edit(tree);
         std::vector<std::size_t> counts(tree.size(), 0);
         std::size_t unbound = 0;
@@ -142,7 +156,8 @@ public:
         std::ostringstream head;
         head << "sweep hierarchy: " << points.size() << " vertices";
         for (std::size_t n = 0; n < tree.size(); ++n) head << ", " << counts[n] << " on " << tree.name(int(n));
-        head << ", " << unbound << " unbound";
+        head << ", " << unbound << " unbound; binding " << binding_seconds << " s, deformation "
+             << seconds_since(deformation_start) << " s";
         return head.str() + pulls;
     }
 
