@@ -268,14 +268,15 @@ TriangleMeshData tessellate_patches(const std::vector<AbmPatch>& patches, const 
     std::vector<std::vector<double>> rings(patches.size(), uniform_parameters(start));
 
     PatchTessellationReport summary;
+    std::vector<PatchGrid> grids(patches.size());
     for (summary.rounds = 1;; ++summary.rounds) {
         Marks marks;
         std::vector<std::set<int>> bands(patches.size());
         summary.largest_deviation = 0;
         for (std::size_t p = 0; p < patches.size(); ++p) {
-            const PatchGrid grid = build_grid(patches[p], rings[p], shared);
+            grids[p] = build_grid(patches[p], rings[p], shared);
             summary.largest_deviation = std::max(summary.largest_deviation,
-                                                 mark_failures(patches[p], grid, shared, options.tolerance, marks));
+                                                 mark_failures(patches[p], grids[p], shared, options.tolerance, marks));
             bands[p] = std::move(marks.bands);
             marks.bands.clear();
         }
@@ -290,8 +291,8 @@ TriangleMeshData tessellate_patches(const std::vector<AbmPatch>& patches, const 
         }
     }
 
-    TriangleMeshData mesh;
-    for (std::size_t p = 0; p < patches.size(); ++p) append(patches[p], build_grid(patches[p], rings[p], shared), mesh);
+    TriangleMeshData mesh;  // from the grids last checked
+    for (std::size_t p = 0; p < patches.size(); ++p) append(patches[p], grids[p], mesh);
     if (report) *report = summary;
     return mesh;
 }
