@@ -1,12 +1,14 @@
 // The "abm_patch" shape: one attribute-based multi-sided patch or a model of patches sharing boundary curves,
 // tessellated (patch_tessellation.h) and traced by Embree as triangles; or, with "draw": "curves", the boundary
 // curves as thin tubes.
+#include <algorithm>
 #include <map>
 
 #include "geometry/abm_patch/abm_patch.h"
 #include "geometry/abm_patch/boundary_tubes.h"
 #include "geometry/abm_patch/patch_tessellation.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
+#include "renderer/core/memory_budget.h"
 
 namespace isotrace {
 namespace {
@@ -138,6 +140,17 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         options.tolerance = node.number_or("tolerance", options.tolerance, NumberRange::positive());
         options.max_segments = node.integer_or("max_segments", options.max_segments, NumberRange::between(1, 4096));
         options.segments = node.integer_or("segments", 0, NumberRange::between(0, 4096));
+        // Vertices, normals, indices and Embree's copy and BVH: about 100 bytes a triangle.
+        std::uint64_t charged = 0;
+        SourceLocation where = node.json().location;
+        where.file = node.context().file;
+        options.before_building = [&](std::uint64_t triangles) {
+            const std::uint64_t bytes = saturating_product({triangles, 100});
+            if (bytes > charged)
+                node.context().memory->charge(bytes - charged, "a tessellation of " + std::to_string(triangles) + " triangles",
+                                              where, node.path());
+            charged = std::max(charged, bytes);
+        };
         mesh = at_node(node, [&] { return tessellate_patches(patches, options); });
     }
     for (const Vec3f& p : mesh.positions)

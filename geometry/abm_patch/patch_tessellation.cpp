@@ -1,6 +1,7 @@
 #include "geometry/abm_patch/patch_tessellation.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -250,6 +251,16 @@ void append(const AbmPatch& patch, const PatchGrid& grid, TriangleMeshData& mesh
     }
 }
 
+// Per sector: a fan and two triangles per column in every band but the first.
+std::uint64_t triangle_count(const std::vector<AbmPatch>& patches, const std::vector<std::vector<double>>& rings,
+                             const SharedCurves& shared) {
+    std::uint64_t total = 0;
+    for (std::size_t p = 0; p < patches.size(); ++p)
+        for (const PatchSide& side : patches[p].sides())
+            total += (shared.parameters.at(side.curve.get()).size() - 1) * (2 * (rings[p].size() - 1) - 1);
+    return total;
+}
+
 }  // namespace
 
 TriangleMeshData tessellate_patches(const std::vector<AbmPatch>& patches, const PatchTessellationOptions& options,
@@ -273,6 +284,7 @@ TriangleMeshData tessellate_patches(const std::vector<AbmPatch>& patches, const 
         Marks marks;
         std::vector<std::set<int>> bands(patches.size());
         summary.largest_deviation = 0;
+        if (options.before_building) options.before_building(triangle_count(patches, rings, shared));
         for (std::size_t p = 0; p < patches.size(); ++p) {
             grids[p] = build_grid(patches[p], rings[p], shared);
             summary.largest_deviation = std::max(summary.largest_deviation,

@@ -12,6 +12,8 @@
 // than the tolerance from the surface point at the same domain point, the curve segment (shared by its patches)
 // or the ring band (shared by the patch's sectors) is halved, until every test point is within the tolerance or
 // the segment cap is reached.
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "geometry/abm_patch/abm_patch.h"
@@ -23,6 +25,9 @@ struct PatchTessellationOptions {
     double tolerance = 1e-3;  // world units
     int max_segments = 256;   // cap per curve and per patch radially
     int segments = 0;         // > 0: exactly this many per curve and radially, no refinement (benchmarks, tests)
+    // Called with the number of triangles before every round builds them, so that the caller can charge the
+    // memory first (and throw to refuse).
+    std::function<void(std::uint64_t triangles)> before_building = nullptr;
 };
 
 struct PatchTessellationReport {

@@ -786,6 +786,13 @@ case_abm_patch_bad_input() {
   done
   write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"', {"curve": "nope"}]'
   check_bad_scene "$dir" 12 "objects[0].shape.boundary[2]" 'no curve named "nope"'
+  # 3 × 2048 × 4095 triangles need about 2.5 GB: refused under a 1 GB limit before anything is built.
+  write_shape_scene "$dir" '        "type": "abm_patch", "segments": 2048,' '        "boundary": ['"$e0, $e1, $e2"']'
+  cli_expect 2 render "$dir/scene.json" --max-memory 1G -o "$dir/out.exr" --quiet
+  expect_in "$work/stderr" "scene.json:10:" stderr
+  expect_in "$work/stderr" "objects[0].shape: " stderr
+  expect_in "$work/stderr" "a tessellation of 25159680 triangles" stderr
+  expect_no_file "$dir/out.exr"
 }
 
 # ---- dispatch --------------------------------------------------------------------------------------------
