@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/curves/bspline_curve.h"
@@ -34,6 +35,14 @@ public:
     P operator()(double t) const {
         const Homogeneous<P> h = homogeneous_(t);
         return (1.0 / h.weight) * h.weighted;
+    }
+
+    // The point and dC/dt, without the second derivative.
+    std::pair<P, P> value_and_tangent(double t) const {
+        const Homogeneous<P> h = homogeneous_(t), first = homogeneous_.first(t);
+        const double inverse = 1.0 / h.weight;
+        const P value = inverse * h.weighted;
+        return {value, inverse * (first.weighted - first.weight * value)};
     }
 
     CurveJet<P> jet(double t) const {

@@ -70,4 +70,10 @@ MeshBounds TriangleMeshData::bounds() const {
     return box;
 }
 
+void TriangleMeshData::append_positions_and_triangles(const TriangleMeshData& part) {
+    const auto base = std::uint32_t(positions.size());
+    positions.insert(positions.end(), part.positions.begin(), part.positions.end());
+    for (const auto& t : part.triangles) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
 }  // namespace isotrace

@@ -32,6 +32,10 @@ struct TriangleMeshData {
 
     // Bounds of all positions; min > max on every axis when there are none.
     MeshBounds bounds() const;
+
+    // Adds the positions and triangles of `part` (its normals and uvs are dropped: for meshes whose normals are
+    // computed afterwards).
+    void append_positions_and_triangles(const TriangleMeshData& part);
 };
 
 }  // namespace isotrace

@@ -47,14 +47,4 @@ SweepSpec parse_sweep_spec(const SceneNode& node);
 // `hierarchy`: edits name their sweep and may pull; otherwise they may name a level.
 EditSpec parse_edit_spec(const SceneNode& node, bool hierarchy);
 
-// Runs `action`; a std::invalid_argument it throws becomes an InputError at `node`.
-template <class Action>
-auto at_node(const SceneNode& node, Action action) -> decltype(action()) {
-    try {
-        return action();
-    } catch (const std::invalid_argument& error) {
-        node.fail(error.what());
-    }
-}
-
 }  // namespace isotrace

@@ -11,12 +11,6 @@
 namespace isotrace {
 namespace {
 
-void append(TriangleMeshData& all, const TriangleMeshData& part) {
-    const auto base = std::uint32_t(all.positions.size());
-    all.positions.insert(all.positions.end(), part.positions.begin(), part.positions.end());
-    for (const auto& t : part.triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-}
-
 void add_tubes(const SceneNode& list, const TriangleMeshData& mesh, bool edited, const SweepTessellation& steps,
                TriangleMeshData& tubes) {
     if (!list.json().is_array()) list.fail("expected a list of deformers or the name of a deformer file");
@@ -25,7 +19,7 @@ void add_tubes(const SceneNode& list, const TriangleMeshData& mesh, bool edited,
         const auto* sweeps = dynamic_cast<const SweepFamilyDeformer*>(deformer.get());
         if (!sweeps) element.fail("not a sweep deformer");
         for (const SweepSurface& sweep : sweeps->sweeps(mesh, edited))
-            append(tubes, at_node(element, [&] { return tessellate(sweep, steps); }));
+            tubes.append_positions_and_triangles(at_node(element, [&] { return tessellate(sweep, steps); }));
     }
 }
 

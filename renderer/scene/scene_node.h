@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -116,5 +117,15 @@ private:
     mutable std::set<std::string> read_keys_;
     mutable std::set<std::string> asked_keys_;  // by has(): known, though not necessarily read
 };
+
+// Runs `action`; a std::invalid_argument it throws becomes an InputError at `node`.
+template <class Action>
+auto at_node(const SceneNode& node, Action action) -> decltype(action()) {
+    try {
+        return action();
+    } catch (const std::invalid_argument& error) {
+        node.fail(error.what());
+    }
+}
 
 }  // namespace isotrace

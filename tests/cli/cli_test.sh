@@ -743,6 +743,67 @@ PY
   expect_no_file "$work/out.ply"
 }
 
+# Attribute-based patches: the closed gem of scenes/abm_models.json exported by isotrace mesh is watertight (every
+# edge, keyed by its end positions, is used once in each direction) and carries a normal per vertex.
+case_abm_patch_mesh() {
+  cli_expect 0 mesh scenes/abm_models.json --object gem --method traced -o "$work/gem.obj"
+  expect_in "$work/stdout" "gem: traced as triangles" stdout
+  python3 - "$work/gem.obj" <<'PY' || fail "the exported gem is not watertight"
+import sys
+from collections import Counter
+positions, normals, edges = [], 0, Counter()
+for line in open(sys.argv[1]):
+    f = line.split()
+    if not f: continue
+    if f[0] == "v": positions.append(tuple(f[1:4]))
+    elif f[0] == "vn": normals += 1
+    elif f[0] == "f":
+        corners = [positions[int(c.split("/")[0]) - 1] for c in f[1:]]
+        if len(set(corners)) < 3: continue  # a zero-area sliver
+        for k in range(3): edges[(corners[k], corners[(k + 1) % 3])] += 1
+bad = [e for e, n in edges.items() if n != 1 or edges.get((e[1], e[0])) != 1]
+print(len(positions), "vertices,", normals, "normals,", len(edges), "directed edges,", len(bad), "open or repeated")
+sys.exit(0 if positions and normals == len(positions) and not bad else 1)
+PY
+  cli_expect 0 mesh scenes/abm_models.json --object rounded_corner --method traced -o "$work/corner.ply" --quiet
+  [[ -s "$work/corner.ply" ]] || fail "no PLY written"
+  cli_expect 2 mesh scenes/abm_models.json --object rounded_corner -o "$work/open.ply"  # open: no implicit field
+  expect_in "$work/stderr" "it has no inside" stderr
+  cli_expect 2 mesh scenes/abm_models.json --object floor --method traced -o "$work/floor.ply"
+  expect_in "$work/stderr" "not traced as triangles" stderr
+  expect_no_file "$work/floor.ply"
+}
+
+# Bad patches: exit 2 with file:line:column, the JSON path and what is wrong; nothing written.
+case_abm_patch_bad_input() {
+  local dir="$work/scene" e0='{"points": [[0,0,0],[1,0,0]]}' e1='{"points": [[1,0,0],[0,1,0]]}' e2='{"points": [[0,1,0],[0,0,0]]}'
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"', {"points": [[0,1,0],[0,0,0.5]]}]'
+  check_bad_scene "$dir" 12 "objects[0].shape.boundary" "curve 2 ends at (0, 0, 0.5) but curve 0 starts at (0, 0, 0), a gap of 0.5"
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0"', {"points": [[1,0,0],[1,0,0]]}, '"$e1, $e2"']'
+  check_bad_scene "$dir" 12 "objects[0].shape.boundary" "curve 1 is degenerate"
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"']'
+  check_bad_scene "$dir" 12 "objects[0].shape.boundary" "a patch needs 3 to 8 boundary curves, got 2"
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e0, $e0, $e0, $e0, $e0, $e0, $e0, $e0"']'
+  check_bad_scene "$dir" 12 "objects[0].shape.boundary" "a patch needs 3 to 8 boundary curves, got 9"
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"', {"points": [[0,1,0],[NaN,0,0]]}]'
+  check_bad_scene "$dir" 12 "" ""
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"', {"points": [[0,1,0],[1e999,0,0]]}]'
+  check_bad_scene "$dir" 12 "" "number out of range"
+  for p in 0 -1 0.5; do
+    write_shape_scene "$dir" '        "type": "abm_patch", "p": '"$p"',' '        "boundary": ['"$e0, $e1, $e2"']'
+    check_bad_scene "$dir" 11 "objects[0].shape.p" "value $p out of range: must be in [1, 8]"
+  done
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"', {"curve": "nope"}]'
+  check_bad_scene "$dir" 12 "objects[0].shape.boundary[2]" 'no curve named "nope"'
+  # 3 × 2048 × 4095 triangles need about 2.5 GB: refused under a 1 GB limit before anything is built.
+  write_shape_scene "$dir" '        "type": "abm_patch", "segments": 2048,' '        "boundary": ['"$e0, $e1, $e2"']'
+  cli_expect 2 render "$dir/scene.json" --max-memory 1G -o "$dir/out.exr" --quiet
+  expect_in "$work/stderr" "scene.json:10:" stderr
+  expect_in "$work/stderr" "objects[0].shape: " stderr
+  expect_in "$work/stderr" "a tessellation of 25159680 triangles" stderr
+  expect_no_file "$dir/out.exr"
+}
+
 # ---- dispatch --------------------------------------------------------------------------------------------
 
 if [[ $(type -t "case_$case_name") != function ]]; then

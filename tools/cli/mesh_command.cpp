@@ -1,11 +1,15 @@
 // isotrace mesh: one implicit object of a scene polygonised by marching cubes, octree dual contouring or
 // spherical-octree dual contouring, written as PLY or OBJ, with counts, time and the distance to the true surface.
+// With --method traced, an object that is traced as triangles (meshes, abm_patch tessellations, sweep tubes) is
+// written as traced, in world space.
 #include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
+#include "geometry/mesh/triangle_mesh_shape.h"
 #include "geometry/polygonize/implicit_field_registry.h"
 #include "geometry/polygonize/mesh_error.h"
 #include "geometry/polygonize/polygonize_field.h"
@@ -80,7 +84,7 @@ std::unique_ptr<ImplicitField> field_of(const SceneObject& object) {
     if (!field)
         throw InputError({}, "--object", "object \"" + object.name + "\" is a \"" + object.shape->type_name() +
                                              "\", which is not an implicit surface; these are: " +
-                                             joined(implicit_shape_types()));
+                                             joined(implicit_shape_types()) + " (objects traced as triangles: --method traced)");
     // An instanced object's shape is in object space.
     return object.instanced ? transformed_field(std::move(field), object.to_world) : std::move(field);
 }
@@ -88,7 +92,7 @@ std::unique_ptr<ImplicitField> field_of(const SceneObject& object) {
 PolygonizeOptions options_from(const MeshArguments& args) {
     PolygonizeOptions options;
     const auto method = polygonize_method_named(args.method);
-    if (!method) throw InputError({}, "--method", "unknown method \"" + args.method + "\"; expected mc, dc or sdc");
+    if (!method) throw InputError({}, "--method", "unknown method \"" + args.method + "\"; expected mc, dc, sdc or traced");
     options.method = *method;
     options.depth = args.depth;
     const auto cap = pole_cap_named(args.pole_cap);
@@ -102,21 +106,38 @@ PolygonizeOptions options_from(const MeshArguments& args) {
     return options;
 }
 
+void write_mesh(const std::string& path, const std::string& extension, const std::string& name, const TriangleMeshData& mesh) {
+    if (extension == ".obj") write_obj(path, {{name, mesh}});
+    else write_ply(path, mesh);
+}
+
 int run_mesh(const MeshArguments& args) {
     std::string extension = std::filesystem::path(args.output).extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     check_output_file(args.output, extension == ".obj" ? ".obj" : ".ply", "--output");
-    const PolygonizeOptions options = options_from(args);
+    const bool traced = args.method == "traced";
+    const std::optional<PolygonizeOptions> options = traced ? std::nullopt : std::optional(options_from(args));
     const ThreadLimit limit(args.threads);
     const std::unique_ptr<LoadedScene> scene = load_scene(args.scene);
     const SceneObject& object = args.object.empty() ? only_implicit_object(*scene->scene, args.scene)
                                                     : find_object(*scene->scene, args.object, args.scene);
+    if (traced) {
+        const auto* triangles = dynamic_cast<const TriangleMeshShape*>(object.shape.get());
+        if (!triangles)
+            throw InputError({}, "--object", "object \"" + object.name + "\" is a \"" + object.shape->type_name() +
+                                                 "\", which is not traced as triangles");
+        write_mesh(args.output, extension, object.name, triangles->data());  // baked: already in world space
+        if (!args.quiet)
+            std::printf("%s: traced as triangles: %zu vertices, %zu triangles\nwrote %s\n", object.name.c_str(),
+                        triangles->data().positions.size(), triangles->data().triangles.size(), args.output.c_str());
+        return kExitOk;
+    }
     const std::unique_ptr<ImplicitField> field = field_of(object);
 
     const auto start = std::chrono::steady_clock::now();
     Polygonization result;
     try {
-        result = polygonize_field(*field, options);
+        result = polygonize_field(*field, *options);
     } catch (const std::invalid_argument& error) {
         const std::string message = error.what();
         const std::string option = message.rfind("origin:", 0) == 0 ? "--origin" : (message.rfind("depth:", 0) == 0 ? "--depth" : "--object");
@@ -127,8 +148,7 @@ int run_mesh(const MeshArguments& args) {
         throw InputError({}, "--object", "object \"" + object.name + "\": no surface found at depth " + std::to_string(args.depth));
     const MeshError error = measure_mesh_error(*field, result.mesh, args.error_samples);
 
-    if (extension == ".obj") write_obj(args.output, {{object.name, result.mesh}});
-    else write_ply(args.output, result.mesh);
+    write_mesh(args.output, extension, object.name, result.mesh);
 
     if (!args.quiet) {
         const PolygonizeReport& r = result.report;
@@ -139,7 +159,7 @@ int run_mesh(const MeshArguments& args) {
                     object.name.c_str(), args.method.c_str(), args.depth, result.mesh.positions.size(),
                     result.mesh.triangles.size(), seconds, limit.threads(), r.candidate_cells, r.surface_cells,
                     double(usage.ru_maxrss) / 1024);
-        if (options.method == PolygonizeMethod::SphericalDualContouring)
+        if (options->method == PolygonizeMethod::SphericalDualContouring)
             std::printf("origin (%g, %g, %g) -> (%g, %g, %g) in %d steps; r in [%g, %g]; %zu ghost vertices\n",
                         r.requested_origin.x, r.requested_origin.y, r.requested_origin.z, r.range.origin.x,
                         r.range.origin.y, r.range.origin.z, r.origin_steps, r.range.r_min, r.range.r_max,
@@ -159,12 +179,15 @@ int run_mesh(const MeshArguments& args) {
 CommandRunner add_mesh_command(CLI::App& app) {
     auto args = std::make_shared<MeshArguments>();
     CLI::App* command = app.add_subcommand(
-        "mesh", "Polygonise one implicit object: marching cubes, octree or spherical-octree dual contouring");
+        "mesh", "Polygonise one implicit object (marching cubes, octree or spherical-octree dual contouring), or write "
+                "an object traced as triangles (mesh, abm_patch) as it is traced (--method traced)");
     command->alias("polygonize");  // the blob-only tessellator this command replaced
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
     command->add_option("--object", args->object,
                         "Name of the scene object to mesh (default: the scene's only implicit object)");
-    command->add_option("--method", args->method, "mc (marching cubes), dc (octree dual contouring) or sdc (spherical)")
+    command->add_option("--method", args->method,
+                        "mc (marching cubes), dc (octree dual contouring), sdc (spherical) or traced (the triangles "
+                        "the renderer traces)")
         ->capture_default_str();
     command->add_option("--depth", args->depth, "Octree depth L: 2^L cells along each axis (1..10, sdc 2..10)")
         ->capture_default_str();

@@ -1,0 +1,15 @@
+#pragma once
+// Thin tubes along boundary curves, to draw a patch's curves over it as in the paper's Figs. 10–11. Each curve
+// becomes a sweep (geometry/sweep) of circular key sections along it, oriented by parallel transport, and is
+// tessellated by the sweep layer.
+#include <vector>
+
+#include "geometry/curves/space_curve.h"
+#include "geometry/mesh/triangle_mesh_data.h"
+
+namespace isotrace {
+
+// Throws std::invalid_argument for a radius that is not > 0.
+TriangleMeshData boundary_tubes(const std::vector<const SpaceCurve*>& curves, double radius);
+
+}  // namespace isotrace

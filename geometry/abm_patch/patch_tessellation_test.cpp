@@ -1,0 +1,129 @@
+// Tessellation: watertight across shared curves, within the tolerance of the surface, normals facing the front.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+
+#include "geometry/abm_patch/abm_patch_test_support.h"
+#include "geometry/abm_patch/patch_tessellation.h"
+#include "geometry/mesh/closest_triangle_point.h"
+
+namespace isotrace {
+namespace {
+
+using abm_test::bezier;
+using abm_test::curved_loop;
+
+// A closed curved tetrahedron: four three-sided patches over six shared bulging curves, each patch's loop
+// counter-clockwise seen from outside, so every curve is used once forwards and once backwards.
+std::vector<AbmPatch> curved_tetrahedron(bool polygon_domains) {
+    const Vec3d v[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    std::map<std::pair<int, int>, std::shared_ptr<const SpaceCurve>> edges;
+    auto edge = [&](int a, int b) -> PatchSide {
+        const bool reversed = a > b;
+        const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+        if (!edges.count(key)) {
+            const Vec3d p = v[key.first], q = v[key.second], bulge = 0.35 * normalize(p + q);
+            edges[key] = bezier({p, (2.0 / 3) * p + (1.0 / 3) * q + bulge, (1.0 / 3) * p + (2.0 / 3) * q + bulge, q});
+        }
+        return {edges[key], reversed, "edge"};
+    };
+    const int faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    std::vector<AbmPatch> patches;
+    for (const auto& f : faces)
+        patches.emplace_back(polygon_domains ? regular_polygon_domain(3) : right_triangle_domain(),
+                             std::vector<PatchSide>{edge(f[0], f[1]), edge(f[1], f[2]), edge(f[2], f[0])}, 1.0);
+    return patches;
+}
+
+// Every edge of the mesh, keyed by the positions of its ends (vertices are per patch, positions are shared),
+// must be used exactly twice, once in each direction.
+void expect_closed_by_position(const TriangleMeshData& mesh) {
+    std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> directed;
+    auto key = [&](std::uint32_t i) {
+        const Vec3f& p = mesh.positions[i];
+        return std::array<float, 3>{p.x, p.y, p.z};
+    };
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) ++directed[{key(t[std::size_t(k)]), key(t[std::size_t((k + 1) % 3)])}];
+    int open = 0;
+    for (const auto& [edge, count] : directed) {
+        const auto back = directed.find({edge.second, edge.first});
+        if (count != 1 || back == directed.end() || back->second != 1) ++open;
+    }
+    EXPECT_EQ(open, 0) << "of " << directed.size() << " directed edges";
+}
+
+TEST(PatchTessellation, PatchesSharingCurvesAreWatertight) {
+    for (bool polygon : {false, true}) {
+        const std::vector<AbmPatch> patches = curved_tetrahedron(polygon);
+        PatchTessellationReport report;
+        TriangleMeshData mesh = tessellate_patches(patches, {.tolerance = 2e-3}, &report);
+        EXPECT_LE(report.largest_deviation, 2e-3);
+        EXPECT_FALSE(report.capped);
+        mesh.remove_degenerate_triangles();
+        expect_closed_by_position(mesh);
+        // Outward: the enclosed volume is positive.
+        double volume = 0;
+        for (const auto& t : mesh.triangles)
+            volume += dot(Vec3d(mesh.positions[t[0]]), cross(Vec3d(mesh.positions[t[1]]), Vec3d(mesh.positions[t[2]]))) / 6;
+        EXPECT_GT(volume, 0) << (polygon ? "polygon" : "right triangle");
+    }
+}
+
+TEST(PatchTessellation, UniformSegmentsAreWatertightToo) {
+    TriangleMeshData mesh = tessellate_patches(curved_tetrahedron(false), {.segments = 5});
+    EXPECT_EQ(mesh.triangles.size(), 4u * 3 * 5 * (1 + 2 * 4));  // per sector: a fan and 4 bands of 2 per column
+    mesh.remove_degenerate_triangles();
+    expect_closed_by_position(mesh);
+}
+
+TEST(PatchTessellation, TheSurfaceLiesWithinTheToleranceOfTheMesh) {
+    for (int n : {3, 4, 5, 8}) {
+        const AbmPatch patch(n == 3 ? right_triangle_domain() : n == 4 ? unit_square_domain() : regular_polygon_domain(n),
+                             curved_loop(n), 1.5);
+        for (double tolerance : {1e-2, 1e-3}) {
+            const TriangleMeshData mesh = tessellate_patches({patch}, {.tolerance = tolerance});
+            const ClosestPointQuery query(mesh);
+            std::mt19937 random(n);
+            std::uniform_real_distribution<double> unit(0, 1);
+            const DomainPoint c = patch.domain().centre();
+            double worst = 0;
+            for (int k = 0; k < 2000; ++k) {
+                const DomainPoint edge = patch.domain().on_side(k % n, unit(random));
+                const double r = std::sqrt(unit(random));
+                worst = std::max(worst, query.nearest(patch({c.x + r * (edge.x - c.x), c.y + r * (edge.y - c.y)}), INFINITY).distance);
+            }
+            EXPECT_LE(worst, tolerance) << n << " sides";
+        }
+    }
+}
+
+TEST(PatchTessellation, FinerToleranceGivesMoreTrianglesAndNormalsFaceTheFront) {
+    const AbmPatch patch(regular_polygon_domain(5), curved_loop(5));
+    const TriangleMeshData coarse = tessellate_patches({patch}, {.tolerance = 1e-2});
+    const TriangleMeshData fine = tessellate_patches({patch}, {.tolerance = 1e-3});
+    EXPECT_GT(fine.triangles.size(), 2 * coarse.triangles.size());
+    ASSERT_EQ(fine.normals.size(), fine.positions.size());
+    for (const auto& t : fine.triangles) {
+        const Vec3f face = cross(fine.positions[t[1]] - fine.positions[t[0]], fine.positions[t[2]] - fine.positions[t[0]]);
+        if (!(length(face) > 0)) continue;
+        for (std::uint32_t i : t) {
+            // The patch is a cone at its corners (abm_patch.h): the faces there turn farther from the normal.
+            const bool corner = std::any_of(patch.sides().begin(), patch.sides().end(),
+                                            [&](const PatchSide& s) { return Vec3f(s.start()) == fine.positions[i]; });
+            EXPECT_GT(dot(fine.normals[i], normalize(face)), corner ? 0.0f : 0.5f);
+        }
+    }
+}
+
+TEST(PatchTessellation, RejectsBadOptions) {
+    const std::vector<AbmPatch> patches = curved_tetrahedron(false);
+    EXPECT_THROW(tessellate_patches(patches, {.tolerance = 0}), std::invalid_argument);
+    EXPECT_THROW(tessellate_patches(patches, {.max_segments = 0}), std::invalid_argument);
+    EXPECT_THROW(tessellate_patches(patches, {.segments = 5000}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace isotrace
