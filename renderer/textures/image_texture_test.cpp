@@ -95,6 +95,24 @@ TEST(ImageTexture, BadFilesNameTheFile) {
                  InputError);
 }
 
+// The texture fuzzer's first finding (tests/fuzz/seeds/texture/truncated-png-oiio-leak): a PNG cut off after its
+// header makes libpng fail inside OpenImageIO's read callback. It must be a clear error, never a crash. (OIIO 2.4
+// leaks a string on this path, which is why the texture fuzzer runs without leak detection.)
+TEST(ImageTexture, TruncatedPngIsAnInputErrorNamingTheFile) {
+    const ColourSystem colours("", "ACEScg");
+    const auto whole = write_image<std::uint8_t>("whole.png", 64, 64, 3, OIIO::TypeDesc::UINT8,
+                                                 std::vector<std::uint8_t>(64 * 64 * 3, 200));
+    const auto truncated = temp_dir() / "truncated.png";
+    std::filesystem::copy_file(whole, truncated, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::resize_file(truncated, 60);  // signature, IHDR and a few bytes of the next chunk
+    try {
+        ImageTexture::load(truncated, "", colours, memory);
+        FAIL() << "expected InputError";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("truncated.png"), std::string::npos) << error.what();
+    }
+}
+
 // PNG chunk checksum (CRC-32, ISO 3309), to forge a header that libpng accepts.
 std::uint32_t crc32(const std::string& bytes) {
     std::uint32_t crc = 0xFFFFFFFFu;
