@@ -72,6 +72,12 @@ void generate_elements(const SceneNode& node, std::vector<Metacube>& elements) {
     const auto weight = range("weight", 1.0, {});
     const auto half_size = range("half_size", 0.0, NumberRange::non_negative());
     node.finish();
+    try {
+        node.context().memory->charge(saturating_product({std::uint64_t(count), BlobGroup::kPeakBytesPerElement}),
+                                      "a blob group of " + std::to_string(count) + " generated elements");
+    } catch (const InputError& error) {
+        node.fail_at("count", error.problem());
+    }
     const auto lerp = [](const std::array<double, 2>& r, double u) { return r[0] + (r[1] - r[0]) * u; };
     elements.reserve(elements.size() + std::size_t(count));
     for (int i = 0; i < count; ++i) {

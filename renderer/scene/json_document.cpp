@@ -13,6 +13,13 @@
 
 namespace isotrace {
 
+JsonValue::JsonValue() = default;
+JsonValue::~JsonValue() = default;
+JsonValue::JsonValue(const JsonValue&) = default;
+JsonValue::JsonValue(JsonValue&&) noexcept = default;
+JsonValue& JsonValue::operator=(const JsonValue&) = default;
+JsonValue& JsonValue::operator=(JsonValue&&) noexcept = default;
+
 const JsonValue* JsonValue::find(const std::string& key) const {
     if (key_index && key_index->size() == members.size()) {  // the size check guards against later edits
         const auto found = key_index->find(key);

@@ -16,6 +16,15 @@ class JsonValue {
 public:
     enum class Kind { Null, Bool, Number, String, Array, Object };
 
+    // Defined out of line: `members` holds pairs of this still incomplete class, and clang with libstdc++
+    // refuses to instantiate their destructor inside it (GCC accepts it).
+    JsonValue();
+    ~JsonValue();
+    JsonValue(const JsonValue&);
+    JsonValue(JsonValue&&) noexcept;
+    JsonValue& operator=(const JsonValue&);
+    JsonValue& operator=(JsonValue&&) noexcept;
+
     Kind kind = Kind::Null;
     bool boolean = false;
     double number = 0;

@@ -7,6 +7,7 @@
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/memory_budget.h"
+#include "renderer/textures/exr_header_check.h"
 
 namespace isotrace {
 
@@ -17,6 +18,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
                                                        const std::string& colour_space, const ColourSystem& colours,
                                                        MemoryBudget& memory) {
     const auto fail = [&](const std::string& problem) -> InputError { return InputError({path.string(), 0, 0}, "", problem); };
+    check_exr_header_sizes(path);  // before OpenEXR trusts the sizes a few bytes of header declare
     auto input = OIIO::ImageInput::open(path.string());
     if (!input) throw fail("cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = input->spec();

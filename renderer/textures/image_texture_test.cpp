@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
@@ -34,6 +35,17 @@ std::filesystem::path write_image(const std::string& name, int w, int h, int cha
     EXPECT_TRUE(out->write_image(type, pixels.data()));
     out->close();
     return path;
+}
+
+// The message of the InputError that loading `path` throws; a test failure (and "") if it loads.
+std::string load_error(const std::filesystem::path& path, const ColourSystem& colours, MemoryBudget& budget = memory) {
+    try {
+        ImageTexture::load(path, "", colours, budget);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "expected InputError for " << path;
+    return "";
 }
 
 TEST(ImageTexture, EightBitImagesAreDecodedFromSrgb) {
@@ -95,6 +107,44 @@ TEST(ImageTexture, BadFilesNameTheFile) {
                  InputError);
 }
 
+// The texture fuzzer's first finding (tests/fuzz/seeds/texture/truncated-png-oiio-leak): a PNG cut off after its
+// header makes libpng fail inside OpenImageIO's read callback. It must be a clear error, never a crash. (OIIO 2.4
+// leaks a string on this path, which is why the texture fuzzer runs without leak detection.)
+TEST(ImageTexture, TruncatedPngIsAnInputErrorNamingTheFile) {
+    const ColourSystem colours("", "ACEScg");
+    const auto whole = write_image<std::uint8_t>("whole.png", 64, 64, 3, OIIO::TypeDesc::UINT8,
+                                                 std::vector<std::uint8_t>(64 * 64 * 3, 200));
+    const auto truncated = temp_dir() / "truncated.png";
+    std::filesystem::copy_file(whole, truncated, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::resize_file(truncated, 60);  // signature, IHDR and a few bytes of the next chunk
+    const std::string message = load_error(truncated, colours);
+    EXPECT_NE(message.find("truncated.png"), std::string::npos) << message;
+}
+
+// The texture fuzzer's second finding (tests/fuzz/seeds/texture/exr-attribute-claims-335mb): OpenEXR 3.1 trusts an
+// attribute's declared size, so a 3 kB file claiming a 335 MB string took 18 s and 450 MB before failing. The
+// header is checked first: an attribute larger than the rest of the file is an error naming it, at once.
+TEST(ImageTexture, ExrAttributeLargerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
+    const ColourSystem colours("", "ACEScg");
+    const auto path = write_image<float>("claims.exr", 2, 2, 3, OIIO::TypeDesc::FLOAT, std::vector<float>(12, 0.5f));
+    ASSERT_NO_THROW(ImageTexture::load(path, "", colours, memory));  // intact, it loads
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    // The first attribute: name and type (NUL-terminated) after the 8-byte magic and version, then its size.
+    const std::size_t type_start = bytes.find('\0', 8) + 1;
+    const std::string name = bytes.substr(8, type_start - 1 - 8);
+    const std::size_t size_at = bytes.find('\0', type_start) + 1;
+    const std::uint32_t claimed = 335'544'551;
+    for (int i = 0; i < 4; ++i) bytes[size_at + std::size_t(i)] = char(claimed >> (8 * i) & 0xFF);
+    std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+    const std::string message = load_error(path, colours);
+    EXPECT_NE(message.find("claims.exr"), std::string::npos) << message;
+    EXPECT_NE(message.find("attribute \"" + name + "\" claims 335544551 bytes"), std::string::npos) << message;
+}
+
 // PNG chunk checksum (CRC-32, ISO 3309), to forge a header that libpng accepts.
 std::uint32_t crc32(const std::string& bytes) {
     std::uint32_t crc = 0xFFFFFFFFu;
@@ -121,15 +171,10 @@ TEST(ImageTexture, TinyFileClaimingAHugeImageIsRefusedFromItsHeaderBeforeAnyAllo
     const auto path = dir.write("huge.png", png);
     const ColourSystem colours("", "ACEScg");
     MemoryBudget budget(std::uint64_t(8) << 30);
-    try {
-        ImageTexture::load(path, "", colours, budget);
-        FAIL() << "expected InputError";
-    } catch (const InputError& error) {
-        const std::string message = error.what();
-        EXPECT_NE(message.find("huge.png"), std::string::npos) << message;
-        EXPECT_NE(message.find("100000x100000"), std::string::npos) << message;
-        EXPECT_NE(message.find("needs about 240 GB"), std::string::npos) << message;
-    }
+    const std::string message = load_error(path, colours, budget);
+    EXPECT_NE(message.find("huge.png"), std::string::npos) << message;
+    EXPECT_NE(message.find("100000x100000"), std::string::npos) << message;
+    EXPECT_NE(message.find("needs about 240 GB"), std::string::npos) << message;
     EXPECT_EQ(budget.charged_bytes(), 0u);
 }
 

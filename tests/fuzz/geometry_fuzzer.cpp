@@ -1,6 +1,11 @@
-// Geometry: a random sphere, box, superquadric (with taper, twist, bend), CSG of two of them, or blob group,
-// loaded through the scene loader (blob groups only through their public scene form), then random rays.
-// Invariants: no NaN; a hit lies inside (t_near, t_far); unit normals; occlusion agrees with intersection.
+// Geometry: a random sphere, box, superquadric (with taper, twist, bend), CSG of two of them, or blob group of
+// metaballs and metacubes (any kernel, negative weights too), loaded through the scene loader (blob groups only
+// through their public scene form), then random rays.
+// Invariants: no NaN; a hit lies inside (t_near, t_far); unit normals; occlusion agrees with intersection; and the
+// work per ray is bounded: the geometry's own work counters (root-finder and search steps, sweep pieces, CSG
+// events) for one ray's intersect() and occluded() stay below kWorkPerPrimitive per primitive of the configuration.
+// The bound is deterministic (no clock, so it cannot flake on a loaded machine); libFuzzer's -timeout is the
+// wall-clock backstop for loops that count nothing.
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cmath>
@@ -10,10 +15,28 @@
 #include <string>
 
 #include "renderer/core/input_error.h"
+#include "renderer/core/render_counters.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tests/fuzz/fuzz_input_file.h"
 
 namespace {
+
+// Work units per ray and primitive. A blob ray costs ~3 cell queries of ~4 candidates, ~3 pieces and ~10 root steps
+// each (docs/benchmarks.md), a superquadric ray tens to hundreds of search steps; the cap is ~1000 times that.
+constexpr std::uint64_t kWorkPerPrimitive = 100'000;
+
+// The counters that count the steps of every input-dependent loop along a ray.
+constexpr const char* kWorkCounters[] = {
+    "blobs.candidates", "blobs.pieces", "blobs.root_iterations", "superquadric.interval_bounds",
+    "superquadric.evaluations", "csg.span_events"};
+
+std::uint64_t ray_work() {
+    const auto named = isotrace::counters::totals().named;
+    std::uint64_t work = 0;
+    for (const char* name : kWorkCounters)
+        if (const auto found = named.find(name); found != named.end()) work += found->second;
+    return work;
+}
 
 std::string number(FuzzedDataProvider& in, double low, double high) {
     char text[32];
@@ -41,7 +64,8 @@ std::string superquadric(FuzzedDataProvider& in) {
     return shape + "]}";
 }
 
-std::string solid(FuzzedDataProvider& in) {
+std::string solid(FuzzedDataProvider& in, std::uint64_t& primitives) {
+    ++primitives;
     switch (in.ConsumeIntegralInRange(0, 2)) {
         case 0: return R"({"type": "sphere", "center": )" + vec3(in, -1, 1) + R"(, "radius": )" + number(in, 0.05, 2) + "}";
         case 1: return R"({"type": "box", "center": )" + vec3(in, -1, 1) + R"(, "half_size": )" + vec3(in, 0.05, 2) + "}";
@@ -49,21 +73,29 @@ std::string solid(FuzzedDataProvider& in) {
     }
 }
 
-std::string shape(FuzzedDataProvider& in) {
+std::string shape(FuzzedDataProvider& in, std::uint64_t& primitives) {
     switch (in.ConsumeIntegralInRange(0, 2)) {
-        case 0: return solid(in);
+        case 0: return solid(in, primitives);
         case 1: {
             static const char* const kOps[] = {"union", "intersection", "difference"};
-            return std::string(R"({"type": "csg", "op": ")") + kOps[in.ConsumeIntegralInRange(0, 2)] +
-                   R"(", "children": [{"shape": )" + solid(in) + R"(}, {"shape": )" + solid(in) + "}]}";
+            const std::string op = kOps[in.ConsumeIntegralInRange(0, 2)];
+            const std::string first = solid(in, primitives), second = solid(in, primitives);
+            return R"({"type": "csg", "op": ")" + op + R"(", "children": [{"shape": )" + first + R"(}, {"shape": )" +
+                   second + "}]}";
         }
         default: {
+            static const char* const kFields[] = {"kim", "wyvill", "murakami", "nishimura", "blinn"};
+            const std::string field = kFields[in.ConsumeIntegralInRange(0, 4)];
             std::string elements;
             const int count = in.ConsumeIntegralInRange(1, 12);
-            for (int i = 0; i < count; ++i)
+            primitives += std::uint64_t(count);
+            for (int i = 0; i < count; ++i) {
                 elements += std::string(i ? ", " : "") + R"({"center": )" + vec3(in, -1.5, 1.5) + R"(, "radius": )" +
-                            number(in, 0.1, 1.5) + "}";
-            return R"({"type": "blobs", "elements": [)" + elements + "]}";
+                            number(in, 0.1, 1.5) + R"(, "weight": )" + number(in, -1, 2);
+                if (in.ConsumeBool()) elements += R"(, "half_size": )" + vec3(in, 0, 1);  // a metacube
+                elements += "}";
+            }
+            return R"({"type": "blobs", "field": ")" + field + R"(", "elements": [)" + elements + "]}";
         }
     }
 }
@@ -82,10 +114,11 @@ bool finite(const isotrace::Vec3f& v) { return std::isfinite(v.x) && std::isfini
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace isotrace;
     FuzzedDataProvider in(data, size);
+    std::uint64_t primitives = 0;
     const std::string scene = R"({"isotrace": 1, "film": {"resolution": [4, 4], "spp": 1}, "camera": {"type": )"
                               R"("perspective", "look_at": {"eye": [0, 0, -5], "target": [0, 0, 0], "up": [0, 1, 0]}},)"
                               R"( "materials": {"m": {"type": "diffuse"}}, "objects": [{"material": "m", "shape": )" +
-                              shape(in) + "}]}";
+                              shape(in, primitives) + "}]}";
     std::unique_ptr<LoadedScene> loaded;
     try {
         const std::string text = scene;
@@ -103,8 +136,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         ray.direction = normalize(d);
         ray.t_near = in.ConsumeFloatingPointInRange(0.0f, 1.0f);
         ray.t_far = in.ConsumeBool() ? INFINITY : ray.t_near + in.ConsumeFloatingPointInRange(0.0f, 10.0f);
+        counters::reset();
         const auto hit = loaded->scene->intersect(ray, RayKind::Camera);
         const bool blocked = loaded->scene->occluded(ray);
+        const std::uint64_t work = ray_work();
+        if (work > kWorkPerPrimitive * primitives) {
+            std::fprintf(stderr, "work %llu for %llu primitives\n", static_cast<unsigned long long>(work),
+                         static_cast<unsigned long long>(primitives));
+            violated("work per ray above the bound", ray, scene);
+        }
         if (hit) {
             if (!std::isfinite(hit->t) || !finite(hit->position)) violated("non-finite hit", ray, scene);
             if (!(hit->t >= ray.t_near && hit->t <= ray.t_far)) violated("hit outside [t_near, t_far]", ray, scene);
