@@ -485,7 +485,8 @@ case_scene_size_limit() {  # /dev/zero was read without end
   expect_no_file "$work/a.exr"
 }
 
-case_million_keys() {  # the duplicate-key check was quadratic (> 60 s)
+case_million_keys() {  # the duplicate-key check was quadratic (5·10¹¹ comparisons here); no clock in the test:
+  # CTest's 120 s timeout is the backstop against a return of it
   python3 - "$work/keys.json" <<'PY'
 import sys
 with open(sys.argv[1], "w") as f:
@@ -493,10 +494,7 @@ with open(sys.argv[1], "w") as f:
     f.write(",".join('"m%d": {"type": "diffuse"}' % i for i in range(1000000)))
     f.write('}, "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 0, -5], "target": [0, 0, 0], "up": [0, 1, 0]}}}')
 PY
-  local start=$SECONDS
   cli_expect 0 info "$work/keys.json"
-  ((SECONDS - start < 60)) || fail "a million keys took $((SECONDS - start)) s"
-  echo "a million material keys: $((SECONDS - start)) s" >&2
 }
 
 case_bad_numeric_options() {
