@@ -89,7 +89,9 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
             const QuadraticAbout q = s.slices.distance_squared(*piece, s0);
             const Polynomial r2{q.c0, q.c1, q.c2};
             const double r2_middle = std::max(0.0, q(middle));
-            for (const FieldPiece& kp : kernel.pieces(s.element->radius()).span()) {
+            // Kept in a variable: span() of the temporary would dangle (AddressSanitizer: stack-use-after-scope).
+            const FieldPieces kernel_pieces = kernel.pieces(s.element->radius());
+            for (const FieldPiece& kp : kernel_pieces.span()) {
                 if (!(r2_middle >= kp.r2_begin && r2_middle <= kp.r2_end)) continue;
                 if (!kp.is_polynomial) {
                     polynomial = false;

@@ -140,7 +140,9 @@ TEST(FieldFunction, PolynomialPiecesReproduceTheValues) {
 TEST(FieldFunction, PolynomialFlagsMatchTheKernels) {
     auto polynomial_flags = [](std::string_view name) {
         std::vector<bool> flags;
-        for (const FieldPiece& piece : make_field_function(name, 1)->pieces(1).span()) flags.push_back(piece.is_polynomial);
+        // Kept in a variable: span() of the temporary would dangle (AddressSanitizer: stack-use-after-scope).
+        const FieldPieces pieces = make_field_function(name, 1)->pieces(1);
+        for (const FieldPiece& piece : pieces.span()) flags.push_back(piece.is_polynomial);
         return flags;
     };
     EXPECT_EQ(polynomial_flags("kim"), std::vector<bool>{true});
