@@ -13,3 +13,11 @@ function(isotrace_tests)
     set_property(GLOBAL APPEND PROPERTY ISOTRACE_TEST_SOURCES "${CMAKE_CURRENT_SOURCE_DIR}/${source}")
   endforeach()
 endfunction()
+
+# A Google Benchmark executable `name` from `source`, built on request (EXCLUDE_FROM_ALL) and not run by ctest:
+# cmake --build <dir> --target <name> && <dir>/bin/<name>
+function(isotrace_benchmark name source)
+  find_package(benchmark REQUIRED)
+  add_executable(${name} EXCLUDE_FROM_ALL ${source})
+  target_link_libraries(${name} PRIVATE isotrace benchmark::benchmark)
+endfunction()
