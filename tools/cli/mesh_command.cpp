@@ -54,20 +54,36 @@ const SceneObject& find_object(const RenderScene& scene, const std::string& name
                      "no object \"" + name + "\" in " + file + did_you_mean(name, names) + "; objects: " + joined(names));
 }
 
-// Without --object: the scene's one object with an implicit surface (a blob group next to a floor mesh, say).
-const SceneObject& only_implicit_object(const RenderScene& scene, const std::string& file) {
-    std::vector<const SceneObject*> implicit;
+// An object's field in world space (an instanced object's shape is in object space).
+std::unique_ptr<ImplicitField> placed(const SceneObject& object, std::unique_ptr<ImplicitField> field) {
+    return object.instanced ? transformed_field(std::move(field), object.to_world) : std::move(field);
+}
+
+struct ObjectField {
+    const SceneObject* object;
+    std::unique_ptr<ImplicitField> field;
+};
+
+// Without --object: the scene's one object with an implicit surface (a blob group next to a floor mesh, say),
+// with the field found while looking for it.
+ObjectField only_implicit_object(const RenderScene& scene, const std::string& file) {
+    std::vector<ObjectField> implicit;
     std::vector<std::string> names;
     for (const SceneObject& object : scene.objects()) {
+        std::unique_ptr<ImplicitField> field;
         try {
-            if (!implicit_field_of(*object.shape)) continue;
+            field = implicit_field_of(*object.shape);
         } catch (const std::invalid_argument&) {
             continue;  // an open mesh, say: no inside to mesh
         }
-        implicit.push_back(&object);
+        if (!field) continue;
+        implicit.push_back({&object, std::move(field)});
         names.push_back(object.name);
     }
-    if (implicit.size() == 1) return *implicit.front();
+    if (implicit.size() == 1) {
+        const SceneObject& object = *implicit.front().object;
+        return {&object, placed(object, std::move(implicit.front().field))};
+    }
     throw InputError({}, "--object",
                      implicit.empty() ? file + " has no object with an implicit surface"
                                       : file + " has several objects with an implicit surface (" + joined(names) +
@@ -85,8 +101,7 @@ std::unique_ptr<ImplicitField> field_of(const SceneObject& object) {
         throw InputError({}, "--object", "object \"" + object.name + "\" is a \"" + object.shape->type_name() +
                                              "\", which is not an implicit surface; these are: " +
                                              joined(implicit_shape_types()) + " (objects traced as triangles: --method traced)");
-    // An instanced object's shape is in object space.
-    return object.instanced ? transformed_field(std::move(field), object.to_world) : std::move(field);
+    return placed(object, std::move(field));
 }
 
 PolygonizeOptions options_from(const MeshArguments& args) {
@@ -119,8 +134,9 @@ int run_mesh(const MeshArguments& args) {
     const std::optional<PolygonizeOptions> options = traced ? std::nullopt : std::optional(options_from(args));
     const ThreadLimit limit(args.threads);
     const std::unique_ptr<LoadedScene> scene = load_scene(args.scene);
-    const SceneObject& object = args.object.empty() ? only_implicit_object(*scene->scene, args.scene)
-                                                    : find_object(*scene->scene, args.object, args.scene);
+    ObjectField chosen = args.object.empty() ? only_implicit_object(*scene->scene, args.scene)
+                                             : ObjectField{&find_object(*scene->scene, args.object, args.scene), nullptr};
+    const SceneObject& object = *chosen.object;
     if (traced) {
         const auto* triangles = dynamic_cast<const TriangleMeshShape*>(object.shape.get());
         if (!triangles)
@@ -132,7 +148,7 @@ int run_mesh(const MeshArguments& args) {
                         triangles->data().positions.size(), triangles->data().triangles.size(), args.output.c_str());
         return kExitOk;
     }
-    const std::unique_ptr<ImplicitField> field = field_of(object);
+    const std::unique_ptr<ImplicitField> field = chosen.field ? std::move(chosen.field) : field_of(object);
 
     const auto start = std::chrono::steady_clock::now();
     Polygonization result;
