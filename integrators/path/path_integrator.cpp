@@ -127,6 +127,10 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
             }
         }
 
+        // The next ray would only look for emission: with nothing a ray can hit emitting (delta lights only),
+        // the path ends here with the same result and without that ray.
+        if (depth + 1 >= settings_.max_depth && !scene.emission_can_be_hit()) break;
+
         // Continue the path by sampling the BSDF.
         const std::optional<BsdfSample> scattered = bsdf->sample(wo, u_lobe, u_direction);
         if (!scattered || scattered->pdf <= 0 || scattered->weight.is_black()) break;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/core/render_counters.h"
 #include "renderer/render/tile_renderer.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tests/support/scene_files.h"
@@ -208,6 +209,50 @@ TEST(DirectIntegrator, NoShadowAcneFarFromTheOriginAndNoLeaksThroughThinWalls) {
                                    "triangles": [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7]]}}]})";
     const Rendered shaded = render_text(slab, 4);
     for (float v : shaded.rgb) EXPECT_EQ(v, 0.0f);
+}
+
+}  // namespace
+}  // namespace isotrace
+
+namespace isotrace {
+namespace {
+
+CounterTotals rays_of(const std::string& scene_text, int spp) {
+    counters::reset();
+    render_text(scene_text, spp);
+    return counters::totals();
+}
+
+std::string point_lit_scene(const std::string& integrator, const std::string& extra_lights) {
+    return R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [8, 8], "filter": {"type": "box"}},
+      "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
+      "sampler": {"type": "independent"},
+      "integrator": )" + integrator + R"(,
+      "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+      "lights": [{"type": "point", "position": [1, 2, 3], "intensity": 10})" + extra_lights + R"(],
+      "objects": [{"material": "m", "shape": {"type": "mesh", "positions": [[-9, -9, -1], [9, -9, -1], [9, 9, -1], [-9, 9, -1]],
+                                              "triangles": [[0, 1, 2], [0, 2, 3]]}}]})";
+}
+
+// Under delta lights alone a path's last ray could only find emission, and there is none to find: it is not
+// traced. The film covers the plane, so every camera ray hits it and each pixel sample casts one shadow ray per
+// bounce. An environment light makes the last ray worth tracing again.
+TEST(PathIntegrator, TracesNoLastRayWhenOnlyDeltaLightsEmit) {
+    const int spp = 4;
+    const std::uint64_t samples = 8 * 8 * spp;
+    const CounterTotals direct = rays_of(point_lit_scene(R"({"type": "direct"})", ""), spp);
+    EXPECT_EQ(direct.camera_rays, samples);
+    EXPECT_EQ(direct.secondary_rays, 0u);
+    EXPECT_EQ(direct.shadow_rays, samples);
+
+    // Two bounces: the only bounce ray is the first one (it leaves the plane and escapes, ending the path).
+    const CounterTotals path = rays_of(point_lit_scene(R"({"type": "path", "max_depth": 2})", ""), spp);
+    EXPECT_EQ(path.secondary_rays, samples);
+
+    const CounterTotals lit_by_sky =
+        rays_of(point_lit_scene(R"({"type": "direct"})", R"(, {"type": "environment", "radiance": 1})"), spp);
+    EXPECT_EQ(lit_by_sky.secondary_rays, samples);
 }
 
 }  // namespace

@@ -167,6 +167,10 @@ bool RenderScene::occluded(const Ray& ray) const {
 
 void RenderScene::build_lights() {
     for (SceneObject& object : objects_) {
+        // Emission found by rays: every emissive material, also per-part ones and those of unsampled emitters.
+        if (object.material && object.material->is_emissive()) emission_can_be_hit_ = true;
+        for (const Material* part : object.part_materials)
+            if (part && part->is_emissive()) emission_can_be_hit_ = true;
         if (!object.material || !object.material->is_emissive()) continue;
         if (object.instanced || !object.shape->supports_surface_sampling()) {
             ++build_statistics_.unsampled_emitters;
@@ -181,7 +185,10 @@ void RenderScene::build_lights() {
     for (const auto& light : lights_) {
         light->preprocess(scene_bounds);
         all_lights_.push_back(light.get());
-        if (light->is_infinite()) infinite_lights_.push_back(light.get());
+        if (light->is_infinite()) {
+            infinite_lights_.push_back(light.get());
+            emission_can_be_hit_ = true;
+        }
         powers.push_back(std::max(0.0f, light->power()));
     }
     if (powers.empty()) return;

@@ -80,6 +80,9 @@ public:
     float light_probability(const Light* light) const;
     const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
     const std::vector<const Light*>& all_lights() const { return all_lights_; }
+    // False when no ray can gather emission by hitting something (only delta lights: no emissive surface, no
+    // environment): a path's last ray, which would only look for emission, need not be traced.
+    bool emission_can_be_hit() const { return emission_can_be_hit_; }
 
     const std::vector<SceneObject>& objects() const { return objects_; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
@@ -97,6 +100,7 @@ private:
     std::vector<const Light*> infinite_lights_;
     std::unique_ptr<Distribution1D> light_distribution_;
     std::unordered_map<const Light*, float> light_probabilities_;
+    bool emission_can_be_hit_ = false;
     BuildStatistics build_statistics_;
 
     void build_lights();
