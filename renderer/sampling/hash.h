@@ -23,14 +23,19 @@ constexpr uint64_t mix64(uint64_t z) {
     return z ^ (z >> 31);
 }
 
-// Order-sensitive hash of several integers: each value is mixed on its own before it meets the state, so
-// small neighbouring inputs (pixel 3 vs 4, dimension 0 vs 1) give unrelated results.
+// Continues an order-sensitive hash with more integers: each value is mixed on its own before it meets the
+// state, so small neighbouring inputs (pixel 3 vs 4, dimension 0 vs 1) give unrelated results.
+// hash_extend(hash_combine(a, b), c) == hash_combine(a, b, c): a shared prefix is hashed once.
 template <std::integral... Values>
-constexpr uint64_t hash_combine(Values... values) {
+constexpr uint64_t hash_extend(uint64_t state, Values... values) {
     constexpr uint64_t golden_gamma = 0x9e3779b97f4a7c15ull;  // keeps value 0 from being a fixed point of mix64
-    uint64_t state = 0;
     ((state = mix64(state ^ mix64(static_cast<uint64_t>(values) + golden_gamma))), ...);
     return state;
+}
+
+template <std::integral... Values>
+constexpr uint64_t hash_combine(Values... values) {
+    return hash_extend(0, values...);
 }
 
 // Top 24 bits as a float in [0,1): every result is exactly representable, so it can never round up to 1.

@@ -65,3 +65,17 @@ TEST(Hash, UnitFloatIsInHalfOpenIntervalAndExact) {
 
 }  // namespace
 }  // namespace isotrace
+
+namespace isotrace {
+namespace {
+
+TEST(Hash, ExtendingAPrefixEqualsCombiningEverything) {
+    for (uint64_t seed : {0ull, 1ull, 0xdeadbeefcafeull})
+        for (uint32_t x : {0u, 5u, 0xffffffffu}) {
+            EXPECT_EQ(hash_extend(hash_combine(seed, x), 7u, 9u), hash_combine(seed, x, 7u, 9u));
+            EXPECT_EQ(hash_extend(0, seed, x), hash_combine(seed, x));
+        }
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -10,6 +10,7 @@ public:
     using Sampler::Sampler;
 
     float sample(const PixelSampleKey& key, uint32_t dimension) const override;
+    Block sample_block(const PixelSampleContext& context, uint32_t block) const override;
 };
 
 }  // namespace isotrace

@@ -32,4 +32,10 @@ constexpr uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
     return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
 }
 
+// The same scramble of x given as reverse_bits(x), as sobol_sample_bit_reversed produces it: one reversal
+// fewer on the sampler's hot path.
+constexpr uint32_t nested_uniform_scramble_of_reversed(uint32_t reversed_x, uint32_t seed) {
+    return reverse_bits(laine_karras_permutation(reversed_x, seed));
+}
+
 }  // namespace isotrace

@@ -10,6 +10,14 @@ struct PixelSampleKey {
     uint32_t x, y, index;
 };
 
+// What every dimension of one pixel sample shares, computed once per sample rather than once per block:
+// the hash of (seed, x, y) and the sample index with its bits reversed (for the Sobol' sampler's shuffle).
+struct PixelSampleContext {
+    PixelSampleKey key;
+    uint64_t pixel_hash;      // hash_combine(seed, x, y)
+    uint32_t reversed_index;  // reverse_bits(key.index)
+};
+
 class Sampler {
 public:
     explicit Sampler(uint64_t seed);
@@ -18,12 +26,14 @@ public:
     // Value in [0,1) for (pixel, sample index, dimension); a pure function of those and the seed.
     virtual float sample(const PixelSampleKey& key, uint32_t dimension) const = 0;
     // Dimensions 4 * block .. 4 * block + 3 together: equal to four sample() calls, but samplers may share
-    // work between them (the Sobol' sampler shuffles the index once per block).
+    // work between them (the Sobol' sampler shuffles the index once per block) and with the other blocks of
+    // the same pixel sample (the context).
     static constexpr uint32_t kBlockDimensions = 4;
     using Block = std::array<float, kBlockDimensions>;
-    virtual Block sample_block(const PixelSampleKey& key, uint32_t block) const {
+    PixelSampleContext context(const PixelSampleKey& key) const;
+    virtual Block sample_block(const PixelSampleContext& context, uint32_t block) const {
         Block values;
-        for (uint32_t i = 0; i < kBlockDimensions; ++i) values[i] = sample(key, block * kBlockDimensions + i);
+        for (uint32_t i = 0; i < kBlockDimensions; ++i) values[i] = sample(context.key, block * kBlockDimensions + i);
         return values;
     }
 
@@ -40,18 +50,31 @@ class SampleStream {
 public:
     SampleStream(const Sampler& sampler, PixelSampleKey key);
 
-    float next_1d();
+    float next_1d() { return value(dimension_++); }
     // Two consecutive dimensions starting at an even dimension: if the counter is odd, one dimension is
     // skipped so the pair lines up with the samplers' stratified pairs (Sobol' dimensions 0-1, 2-3).
-    std::array<float, 2> next_2d();
+    std::array<float, 2> next_2d() {
+        dimension_ += dimension_ & 1u;
+        const std::array<float, 2> pair = {value(dimension_), value(dimension_ + 1)};
+        dimension_ += 2;
+        return pair;
+    }
     // The dimension the next next_1d() call will use.
     uint32_t dimension() const { return dimension_; }
 
 private:
-    float value(uint32_t dimension);
+    // Inline: several calls per bounce on the path tracer's hottest loop.
+    float value(uint32_t dimension) {
+        const uint32_t block = dimension / Sampler::kBlockDimensions;
+        if (block != cached_block_) {
+            cache_ = sampler_.sample_block(context_, block);
+            cached_block_ = block;
+        }
+        return cache_[dimension % Sampler::kBlockDimensions];
+    }
 
     const Sampler& sampler_;
-    PixelSampleKey key_;
+    PixelSampleContext context_;
     uint32_t dimension_ = 0;
     uint32_t cached_block_ = UINT32_MAX;
     Sampler::Block cache_{};

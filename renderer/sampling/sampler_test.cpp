@@ -37,21 +37,24 @@ TEST(SampleStream, PairsStartOnEvenDimensions) {
     EXPECT_EQ(stream.dimension(), 4u);
 }
 
-TEST(SampleStream, MatchesDirectSamplerCalls) {
-    const SobolSampler sampler(7);
-    const PixelSampleKey key{10, 20, 30};
-    SampleStream stream(sampler, key);
-    EXPECT_EQ(stream.next_1d(), sampler.sample(key, 0));
-    const auto pair = stream.next_2d();
-    EXPECT_EQ(pair[0], sampler.sample(key, 2));
-    EXPECT_EQ(pair[1], sampler.sample(key, 3));
-}
-
 // Properties every sampler must have, checked for each concrete sampler.
 template <class ConcreteSampler>
 class EverySampler : public ::testing::Test {};
 using ConcreteSamplers = ::testing::Types<IndependentSampler, SobolSampler>;
 TYPED_TEST_SUITE(EverySampler, ConcreteSamplers);
+
+// Streams fetch blocks through the per-sample context: the values must be those of sample().
+TYPED_TEST(EverySampler, StreamsMatchDirectSampleCalls) {
+    const TypeParam sampler(7);
+    for (const PixelSampleKey key : {PixelSampleKey{10, 20, 30}, PixelSampleKey{0xffffffffu, 0, 0xfffffffeu}}) {
+        SampleStream stream(sampler, key);
+        EXPECT_EQ(stream.next_1d(), sampler.sample(key, 0));
+        const auto pair = stream.next_2d();
+        EXPECT_EQ(pair[0], sampler.sample(key, 2));
+        EXPECT_EQ(pair[1], sampler.sample(key, 3));
+        for (uint32_t d = 4; d < 40; ++d) EXPECT_EQ(stream.next_1d(), sampler.sample(key, d)) << d;
+    }
+}
 
 TYPED_TEST(EverySampler, IsAPureFunctionOfItsInputs) {
     const TypeParam a(42), b(42);

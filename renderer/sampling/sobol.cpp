@@ -4,6 +4,8 @@
 #include <bit>
 #include <cassert>
 
+#include "renderer/sampling/owen_scramble.h"
+
 namespace isotrace {
 namespace {
 
@@ -61,16 +63,18 @@ constexpr std::array<GeneratorMatrix, kSobolDimensions> build_generators() {
 
 // The matrix-vector product over GF(2) is linear in the index bits, so it splits into one lookup per index
 // byte: table[byte position][byte value] = XOR of the columns that byte selects. 4 KiB per dimension, and
-// four loads instead of a loop over the (after shuffling, about 16) set bits.
+// four loads instead of a loop over the (after shuffling, about 16) set bits. Bit reversal is linear too:
+// the tables are indexed by the reversed index and hold reversed columns (bit b of the reversed index is
+// index bit 31 - b).
 using ByteTables = std::array<std::array<uint32_t, 256>, 4>;
 
-constexpr ByteTables byte_tables(const GeneratorMatrix& columns) {
+constexpr ByteTables bit_reversed_byte_tables(const GeneratorMatrix& columns) {
     ByteTables tables{};
     for (int position = 0; position < 4; ++position)
         for (uint32_t byte = 0; byte < 256; ++byte) {
             uint32_t value = 0;
             for (int bit = 0; bit < 8; ++bit)
-                if ((byte >> bit) & 1u) value ^= columns[std::size_t(position * 8 + bit)];
+                if ((byte >> bit) & 1u) value ^= reverse_bits(columns[std::size_t(31 - (position * 8 + bit))]);
             tables[std::size_t(position)][byte] = value;
         }
     return tables;
@@ -79,7 +83,7 @@ constexpr ByteTables byte_tables(const GeneratorMatrix& columns) {
 constexpr std::array<ByteTables, kSobolDimensions> build_byte_tables() {
     const std::array<GeneratorMatrix, kSobolDimensions> generators = build_generators();
     std::array<ByteTables, kSobolDimensions> tables{};
-    for (std::size_t d = 0; d < kSobolDimensions; ++d) tables[d] = byte_tables(generators[d]);
+    for (std::size_t d = 0; d < kSobolDimensions; ++d) tables[d] = bit_reversed_byte_tables(generators[d]);
     return tables;
 }
 
@@ -87,11 +91,15 @@ const std::array<ByteTables, kSobolDimensions> kByteTables = build_byte_tables()
 
 }  // namespace
 
-uint32_t sobol_sample(uint32_t index, uint32_t dimension) {
+uint32_t sobol_sample_bit_reversed(uint32_t reversed_index, uint32_t dimension) {
     assert(dimension < kSobolDimensions);
     const ByteTables& tables = kByteTables[dimension];
-    return tables[0][index & 0xFFu] ^ tables[1][(index >> 8) & 0xFFu] ^ tables[2][(index >> 16) & 0xFFu] ^
-           tables[3][index >> 24];
+    return tables[0][reversed_index & 0xFFu] ^ tables[1][(reversed_index >> 8) & 0xFFu] ^
+           tables[2][(reversed_index >> 16) & 0xFFu] ^ tables[3][reversed_index >> 24];
+}
+
+uint32_t sobol_sample(uint32_t index, uint32_t dimension) {
+    return reverse_bits(sobol_sample_bit_reversed(reverse_bits(index), dimension));
 }
 
 }  // namespace isotrace

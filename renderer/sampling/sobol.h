@@ -10,4 +10,8 @@ inline constexpr uint32_t kSobolDimensions = 4;
 // Sobol' value of `index` in `dimension` (< kSobolDimensions) as 0.32 fixed point (divide by 2^32 for [0,1)).
 uint32_t sobol_sample(uint32_t index, uint32_t dimension);
 
+// The same with index and value bit-reversed: reverse_bits(sobol_sample(reverse_bits(reversed_index), d)).
+// Owen scrambling and the index shuffle both work on reversed bits, so the sampler needs no reversal here.
+uint32_t sobol_sample_bit_reversed(uint32_t reversed_index, uint32_t dimension);
+
 }  // namespace isotrace

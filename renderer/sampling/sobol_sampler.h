@@ -18,14 +18,14 @@ public:
     using Sampler::Sampler;
 
     float sample(const PixelSampleKey& key, uint32_t dimension) const override;
-    Block sample_block(const PixelSampleKey& key, uint32_t block) const override;
+    Block sample_block(const PixelSampleContext& context, uint32_t block) const override;
 
 private:
     struct BlockPoint {
         uint64_t block_hash;
-        uint32_t shuffled_index;
+        uint32_t reversed_shuffled_index;
     };
-    BlockPoint block_point(const PixelSampleKey& key, uint32_t block) const;
+    static BlockPoint block_point(const PixelSampleContext& context, uint32_t block);
     static float scrambled_value(const BlockPoint& point, uint32_t sobol_dimension);
 };
 

@@ -6,7 +6,9 @@
 #include <numbers>
 #include <vector>
 
+#include "renderer/sampling/hash.h"
 #include "renderer/sampling/independent_sampler.h"
+#include "renderer/sampling/owen_scramble.h"
 #include "renderer/sampling/sobol.h"
 #include "tests/support/chi_square.h"
 #include "tests/support/net_quality.h"
@@ -156,6 +158,37 @@ TEST(SobolSampler, IntegratesSmoothFunctionsFarBetterThanIndependentSampling) {
             const double sobol = rms_error(SobolSampler(seed), first_dimension);
             // Independent: ~0.006 (n^-1/2); scrambled Sobol': ~1e-4 or better (about n^-3/2 for smooth f).
             EXPECT_LT(sobol, independent / 20) << "seed " << seed << " dimensions " << first_dimension;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace isotrace
+
+namespace isotrace {
+namespace {
+
+// The sampler computes its values in the bit-reversed domain with a per-sample context; they must equal the
+// definition written out: shuffle the index by nested_uniform_scramble with hash(seed, x, y, block), take the
+// Sobol' point of the shuffled index, Owen-scramble each dimension with its own seed.
+TEST(SobolSampler, BlocksEqualTheDefinitionOfShuffledOwenScrambledSobol) {
+    const SobolSampler sampler(0x5eedull);
+    for (const PixelSampleKey& pixel : kPixels) {
+        for (uint32_t index : {0u, 1u, 2u, 77u, 65535u, 0x80000001u}) {
+            PixelSampleKey key = pixel;
+            key.index = index;
+            const PixelSampleContext context = sampler.context(key);
+            for (uint32_t block : {0u, 1u, 9u, 1000u}) {
+                const uint64_t block_hash = hash_combine(uint64_t(0x5eed), key.x, key.y, block);
+                const uint32_t shuffled = nested_uniform_scramble(index, static_cast<uint32_t>(block_hash));
+                const Sampler::Block values = sampler.sample_block(context, block);
+                for (uint32_t d = 0; d < 4; ++d) {
+                    const uint32_t seed = mix32(static_cast<uint32_t>(block_hash >> 32) ^ (d + 1) * 0x9e3779b9u);
+                    const float expected = uint_to_unit_float(nested_uniform_scramble(sobol_sample(shuffled, d), seed));
+                    EXPECT_EQ(values[d], expected) << "index " << index << " block " << block << " dim " << d;
+                    EXPECT_EQ(sampler.sample(key, 4 * block + d), expected);
+                }
+            }
         }
     }
 }
