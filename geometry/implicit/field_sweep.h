@@ -154,7 +154,7 @@ struct alignas(16) BoundingSphere {
 static_assert(sizeof(BoundingSphere) == 16, "one vector load per sphere");
 
 // Which of (up to) four bounding spheres may the line p + s·u (|u| = 1) come within, four at a time in float
-// (GCC vector extensions: SSE on any x86-64). `margin` must cover float rounding: 2⁻¹⁸·(2|p| + max |centre|) is
+// (GCC/clang vector extensions: SSE on any x86-64). `margin` must cover float rounding: 2⁻¹⁸·(2|p| + max |centre|) is
 // far above it (the rounding of p, u, c − p and the cross product is a few 2⁻²⁴ of |p| and |c − p|), so a sphere
 // the line meets is never rejected; the exact test in double follows for the others.
 struct LineNearSpheres {
@@ -170,14 +170,14 @@ struct LineNearSpheres {
                   const BoundingSphere& s3) const {
         // One 16-byte load per sphere, then a 4×4 transpose into x, y, z and radius lanes.
         const Float4 a = load(s0), b = load(s1), c = load(s2), d = load(s3);
-        const Float4 ab_low = __builtin_shuffle(a, b, Int4{0, 4, 1, 5});
-        const Float4 cd_low = __builtin_shuffle(c, d, Int4{0, 4, 1, 5});
-        const Float4 ab_high = __builtin_shuffle(a, b, Int4{2, 6, 3, 7});
-        const Float4 cd_high = __builtin_shuffle(c, d, Int4{2, 6, 3, 7});
-        const Float4 fx = __builtin_shuffle(ab_low, cd_low, Int4{0, 1, 4, 5}) - px;
-        const Float4 fy = __builtin_shuffle(ab_low, cd_low, Int4{2, 3, 6, 7}) - py;
-        const Float4 fz = __builtin_shuffle(ab_high, cd_high, Int4{0, 1, 4, 5}) - pz;
-        const Float4 r = __builtin_shuffle(ab_high, cd_high, Int4{2, 3, 6, 7});
+        const Float4 ab_low = __builtin_shufflevector(a, b, 0, 4, 1, 5);
+        const Float4 cd_low = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+        const Float4 ab_high = __builtin_shufflevector(a, b, 2, 6, 3, 7);
+        const Float4 cd_high = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+        const Float4 fx = __builtin_shufflevector(ab_low, cd_low, 0, 1, 4, 5) - px;
+        const Float4 fy = __builtin_shufflevector(ab_low, cd_low, 2, 3, 6, 7) - py;
+        const Float4 fz = __builtin_shufflevector(ab_high, cd_high, 0, 1, 4, 5) - pz;
+        const Float4 r = __builtin_shufflevector(ab_high, cd_high, 2, 3, 6, 7);
         const Float4 ax = fy * uz - fz * uy, ay = fz * ux - fx * uz, az = fx * uy - fy * ux;
         const Float4 reach = r * (1 + 0x1p-18f) + margin;
         const Int4 near = (ax * ax + ay * ay + az * az) <= reach * reach;
