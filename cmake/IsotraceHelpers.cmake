@@ -14,6 +14,12 @@ function(isotrace_tests)
   endforeach()
 endfunction()
 
+# Sets `variable` to a test time limit of `seconds`, scaled for sanitizer builds (cmake/Sanitizers.cmake).
+function(isotrace_test_timeout variable seconds)
+  math(EXPR scaled "${seconds} * ${ISOTRACE_TEST_TIMEOUT_SCALE}")
+  set(${variable} ${scaled} PARENT_SCOPE)
+endfunction()
+
 # A Google Benchmark executable `name` from `source`, built on request (EXCLUDE_FROM_ALL) and not run by ctest:
 # cmake --build <dir> --target <name> && <dir>/bin/<name>
 function(isotrace_benchmark name source)

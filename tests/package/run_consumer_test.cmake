@@ -1,5 +1,6 @@
 # Package test driver: cmake -D BUILD_DIR=... -D CONSUMER_SOURCE_DIR=... -D WORK_DIR=... -D SCENE=...
-#                            [-D GENERATOR=...] [-D CXX_COMPILER=...] [-D BUILD_TYPE=...] -P run_consumer_test.cmake
+#                            [-D GENERATOR=...] [-D CXX_COMPILER=...] [-D BUILD_TYPE=...] [-D SANITIZE=...]
+#                            -P run_consumer_test.cmake
 # 1. cmake --install BUILD_DIR into WORK_DIR/prefix (WORK_DIR is emptied first)
 # 2. configures and builds the consumer project against that prefix only
 # 3. runs the consumer on SCENE and the installed isotrace CLI with --version
@@ -41,6 +42,11 @@ if(GENERATOR)
 endif()
 if(CXX_COMPILER)
   list(APPEND configure_arguments "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
+endif()
+if(SANITIZE)
+  # An instrumented library needs the sanitizer runtime loaded first: the consumer is linked with it too.
+  list(APPEND configure_arguments "-DCMAKE_CXX_FLAGS=-fsanitize=${SANITIZE}"
+       "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=${SANITIZE}")
 endif()
 run_step("configuring the consumer" "${CMAKE_COMMAND}" ${configure_arguments})
 string(REGEX MATCH "isotrace package: [^\n]*" found "${step_output}")
