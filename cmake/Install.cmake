@@ -1,9 +1,11 @@
-# cmake --install: library, public headers, the OCIO config, the CLI, and a CMake package so that
-# find_package(isotrace) works for other programs.
+# cmake --install: library and its image module, public headers, the OCIO config, the CLI, and a CMake package
+# so that find_package(isotrace) works for other programs.
 install(TARGETS isotrace EXPORT isotraceTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace)
+# The image module goes beside the library, where image_codec() looks for it.
+install(TARGETS isotrace_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(folder renderer geometry integrators)
   install(DIRECTORY ${folder} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace
           FILES_MATCHING PATTERN "*.h" PATTERN "*_test*" EXCLUDE)

@@ -1,9 +1,9 @@
 #include "renderer/colour/default_ocio_config_path.h"
 
-#include <dlfcn.h>
-
 #include <cstdlib>
 #include <filesystem>
+
+#include "renderer/core/library_directory.h"
 
 #if !defined(ISOTRACE_SOURCE_CONFIG_DIR) || !defined(ISOTRACE_LIBRARY_TO_CONFIG_DIR)
 #error "the build must define ISOTRACE_SOURCE_CONFIG_DIR and ISOTRACE_LIBRARY_TO_CONFIG_DIR"
@@ -15,10 +15,9 @@ namespace {
 // The config installed beside this library (<prefix>/lib -> <prefix>/share/isotrace/config), found from the
 // library's own location so that an installed tree works wherever it is moved.
 std::filesystem::path installed_config() {
-    Dl_info info{};
-    if (!dladdr(reinterpret_cast<void*>(&default_ocio_config_path), &info) || !info.dli_fname) return {};
-    return std::filesystem::path(info.dli_fname).parent_path() / ISOTRACE_LIBRARY_TO_CONFIG_DIR / "ocio" /
-           "isotrace.ocio";
+    const std::filesystem::path library = library_directory();
+    if (library.empty()) return {};
+    return library / ISOTRACE_LIBRARY_TO_CONFIG_DIR / "ocio" / "isotrace.ocio";
 }
 
 }  // namespace

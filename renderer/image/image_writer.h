@@ -4,23 +4,15 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
-#include <utility>
-#include <variant>
 #include <vector>
 
 #include "renderer/film/film.h"
+#include "renderer/image/image_codec.h"
+#include "renderer/image/image_metadata.h"
 
 namespace isotrace {
 
 class ColourSystem;
-
-struct ImageMetadata {
-    using Value = std::variant<std::string, double, std::int64_t, std::vector<float>>;
-    std::vector<std::pair<std::string, Value>> entries;
-    void set(const std::string& name, Value value) {
-        entries.emplace_back(name, std::move(value));
-    }
-};
 
 // Placement of a (possibly cropped) image inside the full raster.
 struct ImageWindow {
@@ -32,6 +24,10 @@ enum class ImageKind { Exr, Display };
 
 // Chooses by extension: .exr -> Exr; .png/.jpg/.jpeg/.tif/.tiff -> Display. Throws InputError otherwise.
 ImageKind image_kind_for(const std::filesystem::path& path);
+
+// Encodes `image` in the format of `path`'s extension and writes the file atomically (atomic_file.h): on any
+// failure the target is untouched. Throws std::runtime_error naming the path.
+void write_image_file(const std::filesystem::path& path, const ImageEncoding& image);
 
 void write_exr(const std::filesystem::path& path, const ImageBuffer& image, const ImageWindow& window,
                bool half_float, const ImageMetadata& metadata);

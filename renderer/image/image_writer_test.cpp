@@ -1,8 +1,7 @@
-// Image writers, checked by reading the files back with OpenImageIO: EXR channels, pixel types, windows and
+// Image writers, checked by reading the files back with read_image_file: EXR channels, pixel types, windows and
 // metadata; display images against ColourSystem::to_display; failures leave no file; format detection.
 #include "renderer/image/image_writer.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
+#include "renderer/image/image_reader.h"
 
 namespace isotrace {
 namespace {
@@ -71,40 +71,38 @@ ImageMetadata test_metadata() {
     return metadata;
 }
 
-struct ReadBack {
-    OIIO::ImageSpec spec;
-    std::vector<float> pixels;
-};
-
-ReadBack read_image(const fs::path& path) {
-    ReadBack result;
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) {
-        ADD_FAILURE() << "cannot open " << path << ": " << OIIO::geterror();
-        return result;
+// An attribute of `type`; a test failure if it is missing or of another type.
+template <class Type>
+Type attribute(const DecodedImage& image, const std::string& name) {
+    const ImageMetadata::Value* value = image.header.metadata.find(name);
+    if (!value || !std::holds_alternative<Type>(*value)) {
+        ADD_FAILURE() << "no attribute " << name << " of the expected type";
+        return {};
     }
-    result.spec = in->spec();
-    result.pixels.resize(std::size_t(result.spec.width * result.spec.height * result.spec.nchannels));
-    EXPECT_TRUE(in->read_image(0, 0, 0, result.spec.nchannels, OIIO::TypeDesc::FLOAT, result.pixels.data()))
-        << in->geterror();
-    in->close();
-    return result;
+    return std::get<Type>(*value);
+}
+
+// The pixels as 8-bit values (read_image_file gives v / 255).
+std::vector<int> bytes_of(const DecodedImage& image) {
+    std::vector<int> bytes;
+    for (float v : image.pixels) bytes.push_back(int(std::lround(v * 255.0f)));
+    return bytes;
 }
 
 // EXR stores channels sorted by name and readers choose their own order (OIIO: RGBA first, then Z, then the
 // rest), so a file is compared with the buffer channel by channel, by name.
-void expect_same_channels(const ReadBack& back, const ImageBuffer& image, bool exact) {
-    std::vector<std::string> written = image.channels, read = back.spec.channelnames;
+void expect_same_channels(const DecodedImage& back, const ImageBuffer& image, bool exact) {
+    std::vector<std::string> written = image.channels, read = back.header.channel_names;
     std::sort(written.begin(), written.end());
     std::sort(read.begin(), read.end());
     ASSERT_EQ(read, written);
-    ASSERT_EQ(back.spec.nchannels, int(image.channels.size()));
+    ASSERT_EQ(back.header.channel_names.size(), image.channels.size());
     const std::vector<std::string> beauty = {"R", "G", "B", "A"};
-    EXPECT_EQ(std::vector<std::string>(back.spec.channelnames.begin(), back.spec.channelnames.begin() + 4), beauty);
+    EXPECT_EQ(std::vector<std::string>(back.header.channel_names.begin(), back.header.channel_names.begin() + 4), beauty);
     const std::size_t n = image.channels.size();
     for (std::size_t c = 0; c < n; ++c) {
-        const auto found = std::find(back.spec.channelnames.begin(), back.spec.channelnames.end(), image.channels[c]);
-        const std::size_t k = std::size_t(found - back.spec.channelnames.begin());
+        const auto& names = back.header.channel_names;
+        const std::size_t k = std::size_t(std::find(names.begin(), names.end(), image.channels[c]) - names.begin());
         for (std::size_t p = 0; p < std::size_t(image.width * image.height); ++p) {
             const float original = image.pixels[p * n + c], read_value = back.pixels[p * n + k];
             if (exact) {
@@ -121,13 +119,13 @@ TEST(ImageWriter, ExrKeepsChannelNamesOrderAndFloatValues) {
     const ImageBuffer image = test_image();
     const fs::path path = dir.path() / "out.exr";
     write_exr(path, image, {{5, 3}, 0, 0}, false, test_metadata());
-    const ReadBack back = read_image(path);
+    const DecodedImage back = read_image_file(path);
     expect_same_channels(back, image, true);  // bit for bit
-    EXPECT_EQ(back.spec.width, 5);
-    EXPECT_EQ(back.spec.height, 3);
-    EXPECT_EQ(back.spec.alpha_channel, 3);
-    EXPECT_EQ(back.spec.format, OIIO::TypeDesc::FLOAT);
-    for (int c = 0; c < back.spec.nchannels; ++c) EXPECT_EQ(back.spec.channelformat(c), OIIO::TypeDesc::FLOAT);
+    EXPECT_EQ(back.header.width, 5);
+    EXPECT_EQ(back.header.height, 3);
+    EXPECT_EQ(back.header.alpha_channel, 3);
+    EXPECT_EQ(back.header.file_type, PixelType::Float);
+    EXPECT_EQ(back.header.channel_file_types, std::vector<PixelType>(image.channels.size(), PixelType::Float));
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.exr"});  // no temporary left behind
 }
 
@@ -136,17 +134,17 @@ TEST(ImageWriter, HalfExrKeepsIdsCountsDepthAndPositionsAsFloat) {
     const ImageBuffer image = test_image();
     const fs::path path = dir.path() / "half.exr";
     write_exr(path, image, {{5, 3}, 0, 0}, true, test_metadata());
-    const ReadBack back = read_image(path);
+    const DecodedImage back = read_image_file(path);
     expect_same_channels(back, image, false);
     const std::size_t n = image.channels.size();
     for (std::size_t c = 0; c < n; ++c) {
         const std::string& name = image.channels[c];
         const bool exact = name == "objectId" || name == "primitiveId" || name == "sampleCount" || name == "Z" ||
                            name.rfind("P.", 0) == 0;
-        const std::size_t k = std::size_t(std::find(back.spec.channelnames.begin(), back.spec.channelnames.end(), name) -
-                                          back.spec.channelnames.begin());
+        const auto& names = back.header.channel_names;
+        const std::size_t k = std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
         ASSERT_LT(k, n) << name;
-        EXPECT_EQ(back.spec.channelformat(int(k)), exact ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF) << name;
+        EXPECT_EQ(back.header.channel_file_types[k], exact ? PixelType::Float : PixelType::Half) << name;
         if (!exact) continue;
         for (std::size_t p = 0; p < 15; ++p) EXPECT_EQ(back.pixels[p * n + k], image.pixels[p * n + c]) << name;
     }
@@ -159,15 +157,15 @@ TEST(ImageWriter, CropWindowBecomesTheDataWindowInsideTheDisplayWindow) {
     const ImageBuffer image = test_image();
     const fs::path path = dir.path() / "crop.exr";
     write_exr(path, image, {{48, 40}, 7, 11}, false, {});
-    const ReadBack back = read_image(path);
-    EXPECT_EQ(back.spec.x, 7);
-    EXPECT_EQ(back.spec.y, 11);
-    EXPECT_EQ(back.spec.width, 5);
-    EXPECT_EQ(back.spec.height, 3);
-    EXPECT_EQ(back.spec.full_x, 0);
-    EXPECT_EQ(back.spec.full_y, 0);
-    EXPECT_EQ(back.spec.full_width, 48);
-    EXPECT_EQ(back.spec.full_height, 40);
+    const DecodedImage back = read_image_file(path);
+    EXPECT_EQ(back.header.x, 7);
+    EXPECT_EQ(back.header.y, 11);
+    EXPECT_EQ(back.header.width, 5);
+    EXPECT_EQ(back.header.height, 3);
+    EXPECT_EQ(back.header.full_x, 0);
+    EXPECT_EQ(back.header.full_y, 0);
+    EXPECT_EQ(back.header.full_width, 48);
+    EXPECT_EQ(back.header.full_height, 40);
     expect_same_channels(back, image, true);
 }
 
@@ -177,17 +175,15 @@ TEST(ImageWriter, MetadataAttributesArePresent) {
     ImageMetadata metadata = test_metadata();
     metadata.set("isotrace:big", std::int64_t(1) << 40);  // beyond a 32-bit attribute
     write_exr(path, test_image(), {{5, 3}, 0, 0}, false, metadata);
-    const ReadBack back = read_image(path);
-    EXPECT_EQ(back.spec.get_int_attribute("isotrace:spp", -1), 64);
-    EXPECT_EQ(back.spec.get_int_attribute("isotrace:partial", -1), 0);
-    EXPECT_EQ(back.spec.get_string_attribute("isotrace:seed"), "18446744073709551615");
-    EXPECT_EQ(back.spec.get_string_attribute("isotrace:integrator"), "preview");
-    EXPECT_FLOAT_EQ(back.spec.get_float_attribute("isotrace:render_seconds", -1), 1.5f);
+    const DecodedImage back = read_image_file(path);
+    EXPECT_EQ(attribute<std::int64_t>(back, "isotrace:spp"), 64);
+    EXPECT_EQ(attribute<std::int64_t>(back, "isotrace:partial"), 0);
+    EXPECT_EQ(attribute<std::string>(back, "isotrace:seed"), "18446744073709551615");
+    EXPECT_EQ(attribute<std::string>(back, "isotrace:integrator"), "preview");
+    EXPECT_FLOAT_EQ(float(attribute<double>(back, "isotrace:render_seconds")), 1.5f);
     // A value that does not fit the file's 32-bit integer attribute must not be silently wrapped.
-    const OIIO::ParamValue* big = back.spec.find_attribute("isotrace:big");
-    ASSERT_NE(big, nullptr);
-    EXPECT_EQ(back.spec.get_string_attribute("isotrace:big"), "1099511627776");
-    EXPECT_EQ(back.spec.get_string_attribute("compression"), "zip");
+    EXPECT_EQ(attribute<std::string>(back, "isotrace:big"), "1099511627776");
+    EXPECT_EQ(attribute<std::string>(back, "compression"), "zip");
 }
 
 TEST(ImageWriter, DisplayImageMatchesTheColourSystemsDisplayTransform) {
@@ -207,16 +203,12 @@ TEST(ImageWriter, DisplayImageMatchesTheColourSystemsDisplayTransform) {
                                         std::pair<std::string, std::string>{"sRGB", "ACES 1.0 - SDR Video"}}) {
         const fs::path path = dir.path() / ("display" + view.substr(0, 4) + ".png");
         write_display_image(path, image, colours, display, view, test_metadata());
-        auto in = OIIO::ImageInput::open(path.string());
-        ASSERT_TRUE(in) << OIIO::geterror();
-        const OIIO::ImageSpec spec = in->spec();
-        EXPECT_EQ(spec.width, 7);
-        EXPECT_EQ(spec.height, 4);
-        ASSERT_EQ(spec.nchannels, 3);
-        EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT8);
-        std::vector<unsigned char> bytes(std::size_t(7 * 4 * 3));
-        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, bytes.data()));
-        in->close();
+        const DecodedImage back = read_image_file(path);
+        EXPECT_EQ(back.header.width, 7);
+        EXPECT_EQ(back.header.height, 4);
+        ASSERT_EQ(back.header.channel_names.size(), 3u);
+        EXPECT_EQ(back.header.file_type, PixelType::UInt8);
+        const std::vector<int> bytes = bytes_of(back);
 
         std::vector<float> rgb(std::size_t(7 * 4 * 3));
         for (std::size_t p = 0; p < 28; ++p)
@@ -224,7 +216,7 @@ TEST(ImageWriter, DisplayImageMatchesTheColourSystemsDisplayTransform) {
         colours.to_display(rgb.data(), 28, 3, display, view);
         for (std::size_t i = 0; i < rgb.size(); ++i) {
             const float v = std::isfinite(rgb[i]) ? std::clamp(rgb[i], 0.0f, 1.0f) : 0.0f;
-            EXPECT_EQ(int(bytes[i]), int(std::lround(v * 255.0f))) << view << " value " << i;
+            EXPECT_EQ(bytes[i], int(std::lround(v * 255.0f))) << view << " value " << i;
         }
     }
 }
@@ -239,18 +231,16 @@ TEST(ImageWriter, DisplayImagesOfEveryFormatCarryTheRenderMetadata) {
     for (const std::string format : {"png", "jpg", "tif"}) {
         const fs::path path = dir.path() / ("meta." + format);
         write_display_image(path, test_image(), colours, "", "", metadata);
-        auto in = OIIO::ImageInput::open(path.string());
-        ASSERT_TRUE(in) << format << ": " << OIIO::geterror();
-        const OIIO::ImageSpec spec = in->spec();
-        EXPECT_EQ(spec.width, 5) << format;
-        EXPECT_EQ(spec.height, 3) << format;
-        const std::string description = spec.get_string_attribute("ImageDescription");
+        const DecodedImage back = read_image_file(path);
+        EXPECT_EQ(back.header.width, 5) << format;
+        EXPECT_EQ(back.header.height, 3) << format;
+        const std::string description = attribute<std::string>(back, "ImageDescription");
         for (const char* entry : {"isotrace:partial=1", "isotrace:spp=64", "isotrace:render_seconds=1.5",
                                   "isotrace:seed=18446744073709551615"})
             EXPECT_NE(description.find(entry), std::string::npos) << format << ": " << description;
         if (format == "png") {  // text chunks keep every entry under its own name
-            EXPECT_EQ(spec.get_string_attribute("isotrace:partial"), "1");
-            EXPECT_EQ(spec.get_string_attribute("isotrace:spp"), "64");
+            EXPECT_EQ(attribute<std::string>(back, "isotrace:partial"), "1");
+            EXPECT_EQ(attribute<std::string>(back, "isotrace:spp"), "64");
         }
     }
 }
@@ -278,10 +268,10 @@ TEST(ImageWriter, FailedWriteLeavesNoFile) {
     write_exr(good, image, {{5, 3}, 0, 0}, false, {});
     const auto size = fs::file_size(good);
     ImageBuffer broken = image;
-    broken.width = 0;  // no pixels: OIIO refuses to open the output
+    broken.width = 0;  // no pixels: the encoder refuses to open the output
     EXPECT_ANY_THROW(write_exr(good, broken, {{5, 3}, 0, 0}, false, {}));
     EXPECT_EQ(fs::file_size(good), size);
-    expect_same_channels(read_image(good), image, true);
+    expect_same_channels(read_image_file(good), image, true);
     EXPECT_EQ(dir.entries(), (std::vector<std::string>{"good.exr", "taken.exr"}));
 }
 

@@ -5,7 +5,6 @@
 // where the map is smooth and never 0 where light arrives; constant environments; power; scene errors.
 #include "renderer/lights/environment_light.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,6 +19,7 @@
 #include "renderer/sampling/independent_sampler.h"
 #include "tests/support/chi_square.h"
 #include "tests/support/scene_files.h"
+#include "tests/support/test_images.h"
 
 namespace isotrace {
 namespace {
@@ -55,12 +55,7 @@ protected:
                 const Rgb c = test_texel(x, y);
                 pixels.insert(pixels.end(), {c.r, c.g, c.b});
             }
-        const std::string path = (directory_ / "sky.exr").string();
-        auto out = OIIO::ImageOutput::create(path);
-        ASSERT_TRUE(out);
-        ASSERT_TRUE(out->open(path, OIIO::ImageSpec(kWidth, kHeight, 3, OIIO::TypeDesc::FLOAT)));
-        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
-        out->close();
+        testing::write_rgb_image(directory_ / "sky.exr", kWidth, kHeight, pixels);
     }
 
     std::unique_ptr<Light> make(const std::string& json) const {
@@ -282,12 +277,7 @@ TEST_F(EnvironmentLightTest, PowerUsesTheSceneRadiusAndAverageRadiance) {
     constant->preprocess(bounds);
     EXPECT_NEAR(constant->power(), kPi * 3 * 3, 1e-4);
     // A map of one colour: the average is that colour, times the scale.
-    const std::vector<float> flat(4 * 2 * 3, 2.0f);
-    const auto path = directory_ / "flat.exr";
-    auto out = OIIO::ImageOutput::create(path.string());
-    ASSERT_TRUE(out->open(path.string(), OIIO::ImageSpec(4, 2, 3, OIIO::TypeDesc::FLOAT)));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, flat.data()));
-    out->close();
+    testing::write_rgb_image(directory_ / "flat.exr", 4, 2, std::vector<float>(4 * 2 * 3, 2.0f));
     auto map = make(R"({"type": "environment", "file": "flat.exr", "scale": 1.5})");
     EXPECT_EQ(map->power(), 0.0f);  // before preprocess()
     map->preprocess(bounds);

@@ -1,13 +1,11 @@
 #include "renderer/textures/image_texture.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/memory_budget.h"
-#include "renderer/textures/exr_header_check.h"
+#include "renderer/image/image_reader.h"
 
 namespace isotrace {
 
@@ -18,37 +16,30 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
                                                        const std::string& colour_space, const ColourSystem& colours,
                                                        MemoryBudget& memory) {
     const auto fail = [&](const std::string& problem) -> InputError { return InputError({path.string(), 0, 0}, "", problem); };
-    check_exr_header_sizes(path);  // before OpenEXR trusts the sizes a few bytes of header declare
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input) throw fail("cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.width < 1 || spec.height < 1 || spec.depth != 1) throw fail("not a 2-D image");
-    if (spec.nchannels < 1) throw fail("image has no channels");
     // A few bytes of header can claim any size: the float pixels read plus the RGB copy kept.
-    memory.charge(saturating_product({std::uint64_t(spec.width), std::uint64_t(spec.height),
-                                      std::uint64_t(spec.nchannels) + 3, sizeof(float)}),
-                  "the " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image",
-                  {path.string(), 0, 0});
-    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throw fail("cannot read pixels: " + input->geterror());
-    input->close();
+    const auto charge = [&](const ImageHeader& header) {
+        memory.charge(saturating_product({std::uint64_t(header.width), std::uint64_t(header.height),
+                                          std::uint64_t(header.channel_names.size()) + 3, sizeof(float)}),
+                      "the " + std::to_string(header.width) + "x" + std::to_string(header.height) + " image",
+                      {path.string(), 0, 0});
+    };
+    const DecodedImage image = read_image_file(path, charge);
+    const ImageHeader& header = image.header;
 
     // Grey images are spread to RGB; alpha and extra channels are ignored.
-    const std::size_t count = std::size_t(spec.width) * std::size_t(spec.height);
+    const std::size_t count = std::size_t(header.width) * std::size_t(header.height);
+    const std::size_t channels = header.channel_names.size();
     std::vector<float> rgb(count * 3);
     for (std::size_t i = 0; i < count; ++i)
-        for (int c = 0; c < 3; ++c)
-            rgb[i * 3 + std::size_t(c)] = pixels[i * std::size_t(spec.nchannels) + std::size_t(spec.nchannels >= 3 ? c : 0)];
+        for (std::size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * channels + (channels >= 3 ? c : 0)];
 
-    const bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
-                          spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    const bool is_float = is_floating_point(header.file_type);
     const std::string space = !colour_space.empty() ? colour_space : (is_float ? colours.working_space() : "srgb_texture");
     if (!colours.has_colour_space(space)) throw fail("unknown colour space \"" + space + "\"");
     colours.to_working(rgb.data(), count, 3, space);
     for (float v : rgb)
         if (!std::isfinite(v)) throw fail("image contains NaN or infinite values");
-    return std::shared_ptr<const ImageTexture>(new ImageTexture(spec.width, spec.height, std::move(rgb), space));
+    return std::shared_ptr<const ImageTexture>(new ImageTexture(header.width, header.height, std::move(rgb), space));
 }
 
 Rgb ImageTexture::texel(int x, int y) const {

@@ -1,6 +1,7 @@
 #pragma once
-// An RGB image read with OpenImageIO and converted to the working space once, at load time, then looked up
-// with bilinear filtering and repeat wrapping. uv (0, 0) is the image's bottom-left corner.
+// An RGB image read by read_image_file (any format OpenImageIO reads) and converted to the working space once,
+// at load time, then looked up with bilinear filtering and repeat wrapping. uv (0, 0) is the image's bottom-left
+// corner.
 #include <array>
 #include <filesystem>
 #include <memory>

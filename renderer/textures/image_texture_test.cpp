@@ -1,6 +1,5 @@
 #include "renderer/textures/image_texture.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -12,6 +11,7 @@
 #include "renderer/core/input_error.h"
 #include "renderer/core/memory_budget.h"
 #include "tests/support/scene_files.h"
+#include "tests/support/test_images.h"
 
 namespace isotrace {
 namespace {
@@ -26,15 +26,8 @@ std::filesystem::path temp_dir() {
 }
 
 template <class T>
-std::filesystem::path write_image(const std::string& name, int w, int h, int channels, OIIO::TypeDesc type,
-                                  const std::vector<T>& pixels) {
-    const auto path = temp_dir() / name;
-    auto out = OIIO::ImageOutput::create(path.string());
-    OIIO::ImageSpec spec(w, h, channels, type);
-    EXPECT_TRUE(out->open(path.string(), spec));
-    EXPECT_TRUE(out->write_image(type, pixels.data()));
-    out->close();
-    return path;
+std::filesystem::path write_image(const std::string& name, int w, int h, const std::vector<T>& pixels) {
+    return testing::write_rgb_image(temp_dir() / name, w, h, pixels);
 }
 
 // The message of the InputError that loading `path` throws; a test failure (and "") if it loads.
@@ -51,7 +44,7 @@ std::string load_error(const std::filesystem::path& path, const ColourSystem& co
 TEST(ImageTexture, EightBitImagesAreDecodedFromSrgb) {
     const ColourSystem colours("", "lin_rec709");
     // 2x1 image: left texel 128/255, right texel 255.
-    const auto path = write_image<unsigned char>("srgb.png", 2, 1, 3, OIIO::TypeDesc::UINT8, {128, 128, 128, 255, 255, 255});
+    const auto path = write_image<std::uint8_t>("srgb.png", 2, 1, {128, 128, 128, 255, 255, 255});
     const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->colour_space(), "srgb_texture");
     const float expected = std::pow((128.0f / 255 + 0.055f) / 1.055f, 2.4f);  // the sRGB EOTF
@@ -65,7 +58,7 @@ TEST(ImageTexture, EightBitImagesAreDecodedFromSrgb) {
 TEST(ImageTexture, FloatImagesDefaultToTheWorkingSpaceAndVRunsUp) {
     const ColourSystem colours("", "ACEScg");
     // 1x2 float image: top row red, bottom row green.
-    const auto path = write_image<float>("rows.exr", 1, 2, 3, OIIO::TypeDesc::FLOAT, {1, 0, 0, 0, 1, 0});
+    const auto path = write_image<float>("rows.exr", 1, 2, {1, 0, 0, 0, 1, 0});
     const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->colour_space(), "ACEScg");
     EXPECT_EQ(texture->lookup({0.5f, 0.75f}), Rgb(1, 0, 0));  // v = 0.75 is the top row's centre
@@ -74,7 +67,7 @@ TEST(ImageTexture, FloatImagesDefaultToTheWorkingSpaceAndVRunsUp) {
 
 TEST(ImageTexture, ExplicitSpaceIsConvertedToTheWorkingSpace) {
     const ColourSystem colours("", "ACEScg");
-    const auto path = write_image<float>("white.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {1, 0, 0});
+    const auto path = write_image<float>("white.exr", 1, 1, {1, 0, 0});
     const Rgb converted = ImageTexture::load(path, "lin_rec709", colours, memory)->lookup({0.3f, 0.6f});
     EXPECT_EQ(converted, colours.to_working(Rgb(1, 0, 0), "lin_rec709"));
     EXPECT_NE(converted, Rgb(1, 0, 0));
@@ -82,7 +75,7 @@ TEST(ImageTexture, ExplicitSpaceIsConvertedToTheWorkingSpace) {
 
 TEST(ImageTexture, RepeatsOutsideTheUnitSquare) {
     const ColourSystem colours("", "ACEScg");
-    const auto path = write_image<float>("ramp.exr", 4, 1, 3, OIIO::TypeDesc::FLOAT,
+    const auto path = write_image<float>("ramp.exr", 4, 1,
                                          {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3});
     const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->lookup({0.375f, 0.5f}), texture->lookup({2.375f, 0.5f}));
@@ -100,9 +93,9 @@ TEST(ImageTexture, BadFilesNameTheFile) {
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("missing.png"), std::string::npos) << error.what();
     }
-    const auto path = write_image<float>("nan.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {NAN, 0, 0});
+    const auto path = write_image<float>("nan.exr", 1, 1, {NAN, 0, 0});
     EXPECT_THROW(ImageTexture::load(path, "", colours, memory), InputError);
-    EXPECT_THROW(ImageTexture::load(write_image<float>("ok.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {0, 0, 0}),
+    EXPECT_THROW(ImageTexture::load(write_image<float>("ok.exr", 1, 1, {0, 0, 0}),
                                     "no_such_space", colours, memory),
                  InputError);
 }
@@ -112,7 +105,7 @@ TEST(ImageTexture, BadFilesNameTheFile) {
 // leaks a string on this path, which is why the texture fuzzer runs without leak detection.)
 TEST(ImageTexture, TruncatedPngIsAnInputErrorNamingTheFile) {
     const ColourSystem colours("", "ACEScg");
-    const auto whole = write_image<std::uint8_t>("whole.png", 64, 64, 3, OIIO::TypeDesc::UINT8,
+    const auto whole = write_image<std::uint8_t>("whole.png", 64, 64,
                                                  std::vector<std::uint8_t>(64 * 64 * 3, 200));
     const auto truncated = temp_dir() / "truncated.png";
     std::filesystem::copy_file(whole, truncated, std::filesystem::copy_options::overwrite_existing);
@@ -126,7 +119,7 @@ TEST(ImageTexture, TruncatedPngIsAnInputErrorNamingTheFile) {
 // header is checked first: an attribute larger than the rest of the file is an error naming it, at once.
 TEST(ImageTexture, ExrAttributeLargerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
     const ColourSystem colours("", "ACEScg");
-    const auto path = write_image<float>("claims.exr", 2, 2, 3, OIIO::TypeDesc::FLOAT, std::vector<float>(12, 0.5f));
+    const auto path = write_image<float>("claims.exr", 2, 2, std::vector<float>(12, 0.5f));
     ASSERT_NO_THROW(ImageTexture::load(path, "", colours, memory));  // intact, it loads
     std::string bytes;
     {

@@ -285,6 +285,29 @@ case_info_scene() {
   grep -Eq '^objects +[0-9]+' "$work/stdout" || { show_output; fail "info does not print the object count"; }
 }
 
+# Image I/O lives in a module loaded on first use: commands that read and write no image never load it (nor
+# OpenImageIO's ~260 libraries); without the module, writing an image is a clear failure and leaves no file.
+case_image_module_on_demand() {
+  for arguments in "--version" "info $cornell"; do
+    LD_DEBUG=files "$cli" $arguments >/dev/null 2>"$work/loader"
+    if grep -Eq 'libisotrace_oiio|libOpenImageIO' "$work/loader"; then
+      fail "isotrace $arguments loaded the image module or OpenImageIO"
+    fi
+  done
+  LD_DEBUG=files "$cli" render "$cornell" --res 8x8 --spp 1 --quiet -o "$work/a.png" >/dev/null 2>"$work/loader"
+  expect_in "$work/loader" "libisotrace_oiio.so" "the loader's log of a render"
+  [[ -s "$work/a.png" ]] || fail "render wrote no PNG"
+
+  # The library alone, without the module beside it (LD_LIBRARY_PATH comes before the binary's RUNPATH).
+  mkdir "$work/lib"
+  cp "$(dirname "$cli")/../lib/libisotrace.so.0" "$work/lib/"
+  LD_LIBRARY_PATH="$work/lib" cli_expect 0 info "$cornell"
+  LD_LIBRARY_PATH="$work/lib" cli_expect 1 render "$cornell" --res 8x8 --spp 1 --quiet -o "$work/b.png"
+  expect_in "$work/stderr" "cannot load the image module $work/lib/libisotrace_oiio.so" stderr
+  expect_no_file "$work/b.png"
+  expect_no_partial_files "$work"
+}
+
 case_info_plugins() {
   cli_expect 0 info --plugins
   grep -Eq '^ +sphere ' "$work/stdout" || { show_output; fail "info --plugins does not list sphere"; }

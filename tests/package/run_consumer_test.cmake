@@ -3,7 +3,7 @@
 #                            -P run_consumer_test.cmake
 # 1. cmake --install BUILD_DIR into WORK_DIR/prefix (WORK_DIR is emptied first)
 # 2. configures and builds the consumer project against that prefix only
-# 3. runs the consumer on SCENE and the installed isotrace CLI with --version
+# 3. runs the consumer on SCENE and the installed isotrace CLI with --version and a small render to PNG
 cmake_minimum_required(VERSION 3.25)
 
 foreach(variable BUILD_DIR CONSUMER_SOURCE_DIR WORK_DIR SCENE)
@@ -82,5 +82,12 @@ endif()
 run_step("running the installed CLI" "${prefix}/bin/isotrace" --version)
 if(NOT step_output MATCHES "isotrace [0-9]+\\.[0-9]+\\.[0-9]+")
   message(FATAL_ERROR "unexpected output of ${prefix}/bin/isotrace --version: ${step_output}")
+endif()
+# The installed CLI writes images through the image module installed beside the library.
+run_step("rendering a PNG with the installed CLI"
+  "${prefix}/bin/isotrace" render "${SCENE}" --res 8x8 --spp 1 --quiet -o "${WORK_DIR}/installed.png")
+file(GLOB installed_module "${prefix}/*/libisotrace_oiio.so")
+if(NOT installed_module OR NOT EXISTS "${WORK_DIR}/installed.png")
+  message(FATAL_ERROR "the installed image module is missing or the installed CLI wrote no PNG")
 endif()
 message(STATUS "package test passed")

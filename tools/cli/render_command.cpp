@@ -103,6 +103,7 @@ int run_render(const RenderArguments& args) {
         check_output_directory(output, "--output");
     }
     if (!args.stats_json.empty()) check_output_directory(args.stats_json, "--stats-json");
+    if (!args.outputs.empty()) image_codec();  // a missing image module fails now, not after the render
 
     const ThreadLimit limit(args.threads);
     const int threads = limit.threads();

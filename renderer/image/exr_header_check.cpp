@@ -1,4 +1,4 @@
-#include "renderer/textures/exr_header_check.h"
+#include "renderer/image/exr_header_check.h"
 
 #include <algorithm>
 #include <cstdint>

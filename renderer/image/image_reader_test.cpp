@@ -1,0 +1,105 @@
+// read_image_file: headers, channels, pixel types and metadata of what write_exr wrote; the before-pixels hook;
+// files that are missing or not images; a missing image module.
+#include "renderer/image/image_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "renderer/core/input_error.h"
+#include "renderer/image/image_writer.h"
+#include "tests/support/scene_files.h"
+
+namespace isotrace {
+namespace {
+
+// 3x2 pixels of R, G, B and an integer id channel.
+ImageBuffer small_image() {
+    ImageBuffer image;
+    image.width = 3;
+    image.height = 2;
+    image.channels = {"R", "G", "B", "objectId"};
+    for (int i = 0; i < 24; ++i) image.pixels.push_back(i % 4 == 3 ? float(100000 + i) : 0.25f * float(i) - 1.0f);
+    return image;
+}
+
+TEST(ImageReader, ReadsTheHeaderEveryChannelAndTheMetadata) {
+    const testing::TemporaryDirectory directory("image_reader");
+    const auto path = directory / "small.exr";
+    ImageMetadata metadata;
+    metadata.set("isotrace:spp", std::int64_t(-3));
+    metadata.set("isotrace:scale", 0.5);
+    metadata.set("isotrace:text", std::string("a b"));
+    metadata.set("isotrace:vector", std::vector<float>{1.5f, -2.0f, 0.25f});
+    const ImageBuffer image = small_image();
+    write_exr(path, image, {{10, 8}, 2, 5}, true, metadata);
+
+    const DecodedImage back = read_image_file(path);
+    const ImageHeader& header = back.header;
+    EXPECT_EQ(header.width, 3);
+    EXPECT_EQ(header.height, 2);
+    EXPECT_EQ(header.x, 2);
+    EXPECT_EQ(header.y, 5);
+    EXPECT_EQ(header.full_width, 10);
+    EXPECT_EQ(header.full_height, 8);
+    EXPECT_EQ(header.channel_names, image.channels);  // EXR readers put R, G, B first, then by name
+    EXPECT_EQ(header.channel_file_types,
+              (std::vector<PixelType>{PixelType::Half, PixelType::Half, PixelType::Half, PixelType::Float}));
+    EXPECT_TRUE(is_floating_point(header.file_type));
+    EXPECT_EQ(header.alpha_channel, -1);
+    EXPECT_EQ(back.pixels, image.pixels);  // quarters are exact in half, the ids in float
+    ASSERT_TRUE(header.metadata.find("isotrace:spp"));
+    EXPECT_EQ(std::get<std::int64_t>(*header.metadata.find("isotrace:spp")), -3);
+    EXPECT_EQ(std::get<double>(*header.metadata.find("isotrace:scale")), 0.5);
+    EXPECT_EQ(std::get<std::string>(*header.metadata.find("isotrace:text")), "a b");
+    EXPECT_EQ(std::get<std::vector<float>>(*header.metadata.find("isotrace:vector")),
+              (std::vector<float>{1.5f, -2.0f, 0.25f}));
+    EXPECT_EQ(header.metadata.find("isotrace:absent"), nullptr);
+}
+
+TEST(ImageReader, BeforePixelsSeesTheHeaderAndMayRefuseTheImage) {
+    const testing::TemporaryDirectory directory("image_reader");
+    const auto path = directory / "small.png";
+    write_grey8_image(path, 3, 2, {0, 51, 102, 153, 204, 255}, {});
+    ImageHeader seen;
+    const DecodedImage back = read_image_file(path, [&](const ImageHeader& header) { seen = header; });
+    EXPECT_EQ(seen.width, 3);
+    EXPECT_EQ(seen.height, 2);
+    EXPECT_EQ(seen.channel_names, std::vector<std::string>{"Y"});
+    EXPECT_EQ(seen.file_type, PixelType::UInt8);
+    EXPECT_FALSE(is_floating_point(seen.file_type));
+    ASSERT_EQ(back.pixels.size(), 6u);
+    for (std::size_t i = 0; i < 6; ++i) EXPECT_FLOAT_EQ(back.pixels[i], 0.2f * float(i));  // 8-bit values v / 255
+
+    struct Refused {};
+    EXPECT_THROW(read_image_file(path, [](const ImageHeader&) { throw Refused{}; }), Refused);
+}
+
+TEST(ImageReader, MissingFilesAndFilesThatAreNoImagesAreInputErrorsNamingThem) {
+    const testing::TemporaryDirectory directory("image_reader");
+    for (const auto& path : {directory / "missing.exr", directory.write("text.png", "not a PNG at all")}) {
+        try {
+            read_image_file(path);
+            ADD_FAILURE() << path << " was read";
+        } catch (const InputError& error) {
+            EXPECT_EQ(error.location().file, path.string());
+            EXPECT_NE(std::string(error.what()).find("cannot read image"), std::string::npos) << error.what();
+        }
+    }
+}
+
+TEST(ImageReader, AMissingImageModuleIsAnErrorNamingIt) {
+    const testing::TemporaryDirectory directory("image_reader");
+    const auto module = directory / "libisotrace_oiio.so";
+    try {
+        load_image_codec(module);
+        FAIL() << "a missing module was loaded";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("cannot load the image module " + module.string()), std::string::npos)
+            << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace isotrace
