@@ -26,6 +26,7 @@
 #include <span>
 #include <vector>
 
+#include "renderer/math/lanes4.h"
 #include "geometry/implicit/field_function.h"
 #include "geometry/implicit/metacube.h"
 #include "geometry/implicit/metacube_ray_slices.h"
@@ -158,8 +159,6 @@ static_assert(sizeof(BoundingSphere) == 16, "one vector load per sphere");
 // far above it (the rounding of p, u, c − p and the cross product is a few 2⁻²⁴ of |p| and |c − p|), so a sphere
 // the line meets is never rejected; the exact test in double follows for the others.
 struct LineNearSpheres {
-    using Float4 = float __attribute__((vector_size(16)));
-    using Int4 = std::int32_t __attribute__((vector_size(16)));
 
     LineNearSpheres(const Vec3d& p, const Vec3d& u, double centre_bound)
         : px(float(p.x)), py(float(p.y)), pz(float(p.z)), ux(float(u.x)), uy(float(u.y)), uz(float(u.z)),

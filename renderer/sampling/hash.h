@@ -4,10 +4,13 @@
 #include <concepts>
 #include <cstdint>
 
+#include "renderer/math/lanes4.h"
+
 namespace isotrace {
 
-// MurmurHash3's 32-bit finaliser: full avalanche, a bijection on uint32_t.
-constexpr uint32_t mix32(uint32_t h) {
+// MurmurHash3's 32-bit finaliser: full avalanche, a bijection on uint32_t (per lane for a Uint4).
+template <Uint32Bits Bits>
+constexpr Bits mix32(Bits h) {
     h ^= h >> 16;
     h *= 0x85ebca6bu;
     h ^= h >> 13;

@@ -31,7 +31,7 @@ void expect_avalanche(Mix mix) {
     }
 }
 
-TEST(Hash, Mix32Avalanches) { expect_avalanche<uint32_t>(mix32); }
+TEST(Hash, Mix32Avalanches) { expect_avalanche<uint32_t>(mix32<uint32_t>); }
 TEST(Hash, Mix64Avalanches) { expect_avalanche<uint64_t>(mix64); }
 
 TEST(Hash, CombineDependsOnOrderAndEveryValue) {

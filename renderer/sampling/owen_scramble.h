@@ -3,9 +3,12 @@
 // Scrambling", JCGT 9(4)). Used both to scramble Sobol' values and to shuffle sample indices.
 #include <cstdint>
 
+#include "renderer/math/lanes4.h"
+
 namespace isotrace {
 
-constexpr uint32_t reverse_bits(uint32_t v) {
+template <Uint32Bits Bits>
+constexpr Bits reverse_bits(Bits v) {
     v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
     v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
     v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
@@ -16,7 +19,8 @@ constexpr uint32_t reverse_bits(uint32_t v) {
 // Laine-Karras style permutation with Burley's constants. Addition and `x ^= x * even` only carry
 // information from lower to higher bits, so output bit k is input bit k flipped by a function of the seed
 // and bits below k: exactly the structure of an Owen scramble when applied to bit-reversed values.
-constexpr uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
+template <Uint32Bits Bits>
+constexpr Bits laine_karras_permutation(Bits x, Bits seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
@@ -34,7 +38,8 @@ constexpr uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
 
 // The same scramble of x given as reverse_bits(x), as sobol_sample_bit_reversed produces it: one reversal
 // fewer on the sampler's hot path.
-constexpr uint32_t nested_uniform_scramble_of_reversed(uint32_t reversed_x, uint32_t seed) {
+template <Uint32Bits Bits>
+constexpr Bits nested_uniform_scramble_of_reversed(Bits reversed_x, Bits seed) {
     return reverse_bits(laine_karras_permutation(reversed_x, seed));
 }
 

@@ -98,6 +98,12 @@ uint32_t sobol_sample_bit_reversed(uint32_t reversed_index, uint32_t dimension) 
            tables[2][(reversed_index >> 16) & 0xFFu] ^ tables[3][reversed_index >> 24];
 }
 
+Uint4 sobol_point_bit_reversed(uint32_t reversed_index) {
+    static_assert(kSobolDimensions == 4);
+    return Uint4{sobol_sample_bit_reversed(reversed_index, 0), sobol_sample_bit_reversed(reversed_index, 1),
+                 sobol_sample_bit_reversed(reversed_index, 2), sobol_sample_bit_reversed(reversed_index, 3)};
+}
+
 uint32_t sobol_sample(uint32_t index, uint32_t dimension) {
     return reverse_bits(sobol_sample_bit_reversed(reverse_bits(index), dimension));
 }

@@ -5,6 +5,15 @@
 #include "renderer/sampling/sobol.h"
 
 namespace isotrace {
+namespace {
+
+// Per-dimension Owen scramble seeds of a block: the four dimensions need independent scrambles, not strong
+// hashing of a fresh key: one 32-bit finaliser round over the block hash and the dimension is enough and costs
+// a fraction of hash_combine.
+constexpr uint32_t kSeedStep = 0x9e3779b9u;
+constexpr Uint4 kDimensionSalt = {1 * kSeedStep, 2 * kSeedStep, 3 * kSeedStep, 4 * kSeedStep};
+
+}  // namespace
 
 SobolSampler::BlockPoint SobolSampler::block_point(const PixelSampleContext& context, uint32_t block) {
     // One shuffle per block keeps the block's four dimensions a single 4-D Sobol' point; separate blocks
@@ -14,25 +23,20 @@ SobolSampler::BlockPoint SobolSampler::block_point(const PixelSampleContext& con
     return {block_hash, laine_karras_permutation(context.reversed_index, static_cast<uint32_t>(block_hash))};
 }
 
-float SobolSampler::scrambled_value(const BlockPoint& point, uint32_t sobol_dimension) {
-    // The four dimensions of a block need independent scrambles, not strong hashing of a fresh key: one 32-bit
-    // finaliser round over the block hash and the dimension is enough and costs a fraction of hash_combine.
-    const uint32_t scramble_seed =
-        mix32(static_cast<uint32_t>(point.block_hash >> 32) ^ (sobol_dimension + 1) * 0x9e3779b9u);
-    return uint_to_unit_float(nested_uniform_scramble_of_reversed(
-        sobol_sample_bit_reversed(point.reversed_shuffled_index, sobol_dimension), scramble_seed));
-}
-
 float SobolSampler::sample(const PixelSampleKey& key, uint32_t dimension) const {
-    return scrambled_value(block_point(context(key), dimension / kSobolDimensions), dimension % kSobolDimensions);
+    return sample_block(context(key), dimension / kSobolDimensions)[dimension % kSobolDimensions];
 }
 
+// The four dimensions in the four lanes of a vector: the scramble is the same bit arithmetic per lane.
 Sampler::Block SobolSampler::sample_block(const PixelSampleContext& context, uint32_t block) const {
-    static_assert(kBlockDimensions == kSobolDimensions);
+    static_assert(kBlockDimensions == kSobolDimensions && kSobolDimensions == 4);
     const BlockPoint point = block_point(context, block);
-    Block values;
-    for (uint32_t d = 0; d < kSobolDimensions; ++d) values[d] = scrambled_value(point, d);
-    return values;
+    const Uint4 seeds = mix32(static_cast<uint32_t>(point.block_hash >> 32) ^ kDimensionSalt);
+    const Uint4 scrambled =
+        nested_uniform_scramble_of_reversed(sobol_point_bit_reversed(point.reversed_shuffled_index), seeds);
+    // uint_to_unit_float per lane: the top 24 bits, exact in float.
+    const Float4 values = __builtin_convertvector(Int4(scrambled >> 8), Float4) * 0x1p-24f;
+    return {values[0], values[1], values[2], values[3]};
 }
 
 }  // namespace isotrace

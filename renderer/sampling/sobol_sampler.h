@@ -26,7 +26,6 @@ private:
         uint32_t reversed_shuffled_index;
     };
     static BlockPoint block_point(const PixelSampleContext& context, uint32_t block);
-    static float scrambled_value(const BlockPoint& point, uint32_t sobol_dimension);
 };
 
 }  // namespace isotrace
