@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "renderer/core/input_error.h"
+#include "renderer/image_compare/primaries.h"
 
 namespace isotrace {
 
@@ -51,6 +52,17 @@ RgbImage colour_of(const ImageFile& file, const std::string& path) {
                              "pixel " + std::to_string(i / 3 % std::size_t(image.width)) + "," +
                                  std::to_string(i / 3 / std::size_t(image.width)) + " has a value that is not finite (" +
                                  std::to_string(image.values[i]) + ")");
+    return image;
+}
+
+RgbImage linear_srgb_colour_of(const ImageFile& file, const std::string& path) {
+    RgbImage image = colour_of(file, path);
+    if (!file.chromaticities) return image;
+    try {
+        convert_colours(image, to_linear_srgb(*file.chromaticities));
+    } catch (const std::invalid_argument& error) {
+        throw InputError({path, 0, 0}, "chromaticities", error.what());
+    }
     return image;
 }
 

@@ -23,4 +23,8 @@ RgbImage channels_as_rgb(const ImageFile& file, const std::array<std::string, 3>
 // three. Throws InputError if there is neither, or if a value is not finite.
 RgbImage colour_of(const ImageFile& file, const std::string& path);
 
+// colour_of() of a scene-linear image in linear sRGB: converted from the primaries its chromaticities attribute
+// names (none: taken as linear sRGB already). Throws InputError for degenerate chromaticities.
+RgbImage linear_srgb_colour_of(const ImageFile& file, const std::string& path);
+
 }  // namespace isotrace

@@ -31,6 +31,8 @@ ImageFile read_image_file(const std::string& path) {
         throw fail("cannot read the pixels: " + input->geterror());
     for (const OIIO::ParamValue& attribute : spec.extra_attribs)
         image.metadata.emplace_back(attribute.name().string(), attribute.get_string());
+    std::array<float, 8> xy{};
+    if (spec.getattribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), xy.data())) image.chromaticities = xy;
     return image;
 }
 

@@ -112,7 +112,7 @@ std::string flip_description(const Comparison& c, double ppd) {
 
 void print_comparison(const DiffArguments& args, const Comparison& c) {
     std::printf("reference %s (%s)\ntest      %s\n", args.reference.c_str(),
-                c.display_referred ? "display-referred sRGB" : "scene-linear", args.test.c_str());
+                c.display_referred ? "display-referred sRGB" : "scene-linear, compared as linear sRGB", args.test.c_str());
     std::printf("rmse    %.6g\n", c.values.at("rmse"));
     std::printf("relmse  %.6g   (pbrt-v4 MRSE: mean of (B - A)^2 / (A + 0.01)^2)\n", c.values.at("relmse"));
     std::printf("psnr    %.6g dB   (peak %.6g%s)\n", c.values.at("psnr"), c.psnr_peak,
@@ -187,6 +187,9 @@ void write_error_map(const DiffArguments& args, int width, int height, const Err
 
 int run_z_test(const DiffArguments& args, const ImageFile& reference, const ImageFile& test) {
     require_comparable(reference, args.reference, test, args.test, false);
+    // Per-channel statistics: both images must hold the same primaries.
+    if (reference.chromaticities != test.chromaticities)
+        throw InputError({}, "", args.reference + " and " + args.test + " have different chromaticities (primaries)");
     const ZTestInput input = z_test_input(reference, args.reference, test, args.test, args.test_spp);
     const ZTestResult result = z_test(input, args.z_settings);
     std::printf("z-test: %.4f %% of pixel channels pass (needs %.4f %%): %s\n", 100 * result.pass_fraction,
@@ -226,9 +229,11 @@ int run_diff(const DiffArguments& args, bool error_map_metric_given) {
     if (args.z_test) return run_z_test(args, reference_file, test_file);
 
     require_comparable(reference_file, args.reference, test_file, args.test, true);
-    const RgbImage reference = colour_of(reference_file, args.reference);
-    const RgbImage test = colour_of(test_file, args.test);
-    const Comparison comparison = compare(reference, test, reference_file.display_referred, args.pixels_per_degree);
+    const bool display = reference_file.display_referred;
+    const RgbImage reference = display ? colour_of(reference_file, args.reference)
+                                       : linear_srgb_colour_of(reference_file, args.reference);
+    const RgbImage test = display ? colour_of(test_file, args.test) : linear_srgb_colour_of(test_file, args.test);
+    const Comparison comparison = compare(reference, test, display, args.pixels_per_degree);
     const std::vector<std::string> broken = broken_thresholds(thresholds, comparison.values);
 
     print_comparison(args, comparison);
