@@ -26,7 +26,8 @@ ImageFile read_image_file(const std::string& path) {
     image.channels = spec.channelnames;
     image.pixels.resize(count);
     const OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
-    image.display_referred = !(base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE);
+    image.display_referred =
+        !(base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE);
     if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
         throw fail("cannot read the pixels: " + input->geterror());
     for (const OIIO::ParamValue& attribute : spec.extra_attribs)

@@ -41,7 +41,8 @@ double psnr(const RgbImage& reference, const RgbImage& test, double peak) {
 
 double psnr_peak(const RgbImage& reference, bool display_referred) {
     if (display_referred) return 1.0;
-    const float largest = reference.values.empty() ? 0.0f : *std::max_element(reference.values.begin(), reference.values.end());
+    const float largest =
+        reference.values.empty() ? 0.0f : *std::max_element(reference.values.begin(), reference.values.end());
     return largest > 0 ? double(largest) : 1.0;
 }
 

@@ -30,7 +30,8 @@ Transform rgb_to_xyz(const Chromaticities& c) {
 
 // Bradford's cone response matrix (Lam 1985).
 const Transform& bradford() {
-    static const Transform m = linear_map({{{0.8951, 0.2664, -0.1614}, {-0.7502, 1.7135, 0.0367}, {0.0389, -0.0685, 1.0296}}});
+    static const Transform m =
+        linear_map({{{0.8951, 0.2664, -0.1614}, {-0.7502, 1.7135, 0.0367}, {0.0389, -0.0685, 1.0296}}});
     return m;
 }
 

@@ -12,7 +12,9 @@ std::vector<float> ssim_map(const std::vector<float>& reference, const std::vect
                             double dynamic_range) {
     if (reference.size() != test.size()) throw std::invalid_argument("ssim: planes of different size");
     const Kernel1d window = normalised_gaussian(1.5, 5);  // 11 taps
-    const auto blur = [&](const std::vector<float>& plane) { return filter_separable(plane, width, height, window, window); };
+    const auto blur = [&](const std::vector<float>& plane) {
+        return filter_separable(plane, width, height, window, window);
+    };
     // Moments of the values less each image's global mean: the same variances and covariance, without the
     // float cancellation of E[x^2] - E[x]^2 for bright, flat regions.
     const double offset_x = std::accumulate(reference.begin(), reference.end(), 0.0) / double(reference.size());

@@ -29,7 +29,8 @@ ZTestResult z_test(const ZTestInput& input, const ZTestSettings& settings) {
             const double sample_variance =
                 std::max(double(input.reference_variance.values[k]) * n_reference, settings.variance_floor);
             const double standard_error = std::sqrt(sample_variance / n_test + sample_variance / n_reference);
-            const double z = std::abs(double(input.test.values[k]) - double(input.reference_mean.values[k])) / standard_error;
+            const double difference = double(input.test.values[k]) - double(input.reference_mean.values[k]);
+            const double z = std::abs(difference) / standard_error;
             const double p = std::isnan(z) ? 0.0 : std::erfc(z / std::sqrt(2.0));
             result.min_p_value = std::min(result.min_p_value, p);
             if (!(p > result.alpha)) {

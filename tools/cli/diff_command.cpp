@@ -47,7 +47,9 @@ void require_comparable(const ImageFile& a, const std::string& a_path, const Ima
         throw InputError({}, "", "images of different size: " + a_path + " is " + describe_size(a) + ", " + b_path +
                                      " is " + describe_size(b));
     if (a.display_referred != b.display_referred) {
-        const auto kind = [](const ImageFile& f) { return f.display_referred ? "display-referred (integer pixels)" : "scene-linear (float pixels)"; };
+        const auto kind = [](const ImageFile& f) {
+            return f.display_referred ? "display-referred (integer pixels)" : "scene-linear (float pixels)";
+        };
         throw InputError({}, "", a_path + " is " + kind(a) + " but " + b_path + " is " + kind(b) +
                                      ": compare an EXR with an EXR, a PNG with a PNG");
     }
@@ -168,8 +170,8 @@ ErrorPicture error_picture(const std::string& metric, const RgbImage& reference,
         const float largest = *std::max_element(picture.values.begin(), picture.values.end());
         picture.full_scale = largest > 0 ? double(largest) : 1.0;
         char text[120];
-        std::snprintf(text, sizeof text, "%s, 0 to %.6g", relative ? "|B - A| / (A + 0.01) of the luminance" : "|B - A| of the luminance",
-                      picture.full_scale);
+        std::snprintf(text, sizeof text, "%s, 0 to %.6g",
+                      relative ? "|B - A| / (A + 0.01) of the luminance" : "|B - A| of the luminance", picture.full_scale);
         picture.description = text;
     }
     return picture;
