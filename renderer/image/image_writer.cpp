@@ -115,13 +115,28 @@ void write_display_image(const std::filesystem::path& path, const ImageBuffer& i
     write_image_file(path, encoding);
 }
 
-void write_grey8_image(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& pixels,
-                       const ImageMetadata& metadata) {
-    if (pixels.size() != std::size_t(width) * std::size_t(height))
-        throw std::logic_error("write_grey8_image: pixel count does not match the size");
-    ImageEncoding encoding = display_encoding(width, height, {"Y"}, metadata);
+namespace {
+
+// 8-bit pixels written as they are, without colour transform, atomically.
+void write_8bit_image(const std::filesystem::path& path, int width, int height, const std::vector<std::string>& channels,
+                      const std::vector<std::uint8_t>& pixels, const ImageMetadata& metadata) {
+    if (pixels.size() != std::size_t(width) * std::size_t(height) * channels.size())
+        throw std::logic_error("write_8bit_image: pixel count does not match the size");
+    ImageEncoding encoding = display_encoding(width, height, channels, metadata);
     encoding.pixels = pixels.data();
     write_image_file(path, encoding);
+}
+
+}  // namespace
+
+void write_grey8_image(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& pixels,
+                       const ImageMetadata& metadata) {
+    write_8bit_image(path, width, height, {"Y"}, pixels, metadata);
+}
+
+void write_rgb8_image(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& pixels,
+                      const ImageMetadata& metadata) {
+    write_8bit_image(path, width, height, {"R", "G", "B"}, pixels, metadata);
 }
 
 }  // namespace isotrace

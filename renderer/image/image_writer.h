@@ -36,6 +36,10 @@ void write_exr(const std::filesystem::path& path, const ImageBuffer& image, cons
 void write_grey8_image(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& pixels,
                        const ImageMetadata& metadata);
 
+// 8-bit RGB already encoded for display (false-colour error maps), written as is, atomically.
+void write_rgb8_image(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& pixels,
+                      const ImageMetadata& metadata);
+
 void write_display_image(const std::filesystem::path& path, const ImageBuffer& image, const ColourSystem& colours,
                          const std::string& display, const std::string& view, const ImageMetadata& metadata);
 

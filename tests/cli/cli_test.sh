@@ -825,6 +825,110 @@ case_abm_patch_bad_input() {
   expect_no_file "$dir/out.exr"
 }
 
+# ---- isotrace diff ----------------------------------------------------------------------------------------
+
+case_diff_help() {
+  cli_expect 0 diff --help
+  for option in --json --error-map --error-map-metric --fail --ztest --test-spp --ppd; do
+    expect_in "$work/stdout" "$option" "diff --help"
+  done
+}
+
+case_diff_identical() {  # an image against itself: 0 for every error, inf dB, SSIM 1; EXR (HDR-FLIP) and PNG (LDR)
+  render_small -o "$work/a.exr" -o "$work/a.png"
+  for image in a.exr a.png; do
+    cli_expect 0 diff "$work/$image" "$work/$image" --json "$work/same.json" \
+      --fail rmse=0 --fail relmse=0 --fail flip=0 --fail ssim=1 --fail psnr=1e300
+    expect_in "$work/stdout" "rmse    0" stdout
+    expect_in "$work/stdout" "relmse  0" stdout
+    expect_in "$work/stdout" "psnr    inf dB" stdout
+    expect_in "$work/stdout" "ssim    1 " stdout
+    expect_in "$work/stdout" "flip    0 " stdout
+    expect_in "$work/same.json" '"psnr": "inf"' same.json
+  done
+  expect_in "$work/stdout" "LDR-FLIP" stdout
+}
+
+case_diff_renders() {  # two renders at different spp differ; thresholds gate with exit 1; an error map is written
+  render_small -o "$work/a.exr" --seed 1
+  cli_expect 0 render "$cornell" --res 64x64 --spp 32 --seed 2 --quiet -o "$work/b.exr"
+  cli_expect 0 diff "$work/b.exr" "$work/a.exr" --json "$work/d.json" --error-map "$work/map.png"
+  expect_in "$work/stdout" "HDR-FLIP" stdout
+  for metric in rmse relmse flip; do
+    value=$(sed -n "s/^$metric *\([0-9.e+-]*\).*/\1/p" "$work/stdout")
+    awk -v v="$value" 'BEGIN { exit !(v > 0) }' || fail "$metric is $value, expected > 0"
+  done
+  [[ $(iinfo "$work/map.png") == *"64 x   64, 3 channel, uint8 png"* ]] || fail "error map: $(iinfo "$work/map.png")"
+  expect_in "$work/d.json" '"mode": "hdr"' d.json
+  cli_expect 1 diff "$work/b.exr" "$work/a.exr" --fail flip=0.001
+  expect_in "$work/stderr" "threshold broken: flip" stderr
+  cli_expect 1 diff "$work/b.exr" "$work/a.exr" --fail psnr=200
+  expect_in "$work/stderr" "threshold broken: psnr" stderr
+  cli_expect 0 diff "$work/b.exr" "$work/a.exr" --fail flip=0.99 --fail psnr=1 --error-map "$work/ssim.png" \
+    --error-map-metric ssim
+  expect_in "$work/stderr" "1 - per-pixel SSIM" stderr
+}
+
+case_diff_bad_input() {  # exit 2, a clear message, no output written
+  render_small -o "$work/a.exr" -o "$work/a.png"
+  cli_expect 0 render "$cornell" --res 32x32 --spp 4 --quiet -o "$work/small.exr"
+  cli_expect 0 render "$cornell" --res 64x64 --spp 4 --quiet --aov depth -o "$work/depth.exr"
+  echo "not an image" >"$work/text.png"
+  cli_expect 2 diff "$work/a.exr" "$work/missing.exr" --json "$work/out.json"
+  expect_in "$work/stderr" "missing.exr: cannot read image" stderr
+  cli_expect 2 diff "$work/text.png" "$work/a.png"
+  expect_in "$work/stderr" "text.png: cannot read image" stderr
+  cli_expect 2 diff "$work/a.exr" "$work/small.exr"
+  expect_in "$work/stderr" "different size" stderr
+  cli_expect 2 diff "$work/a.exr" "$work/depth.exr"
+  expect_in "$work/stderr" "only in $work/depth.exr: Z" stderr
+  cli_expect 2 diff "$work/a.exr" "$work/a.png"
+  expect_in "$work/stderr" "display-referred" stderr
+  cli_expect 2 diff "$work/a.exr" "$work/a.exr" --fail flp=0.1
+  expect_in "$work/stderr" 'unknown metric "flp" (did you mean "flip"?)' stderr
+  cli_expect 2 diff "$work/a.exr" "$work/a.exr" --fail flip=abc
+  expect_in "$work/stderr" "must be a finite number" stderr
+  cli_expect 2 diff "$work/a.exr" "$work/a.exr" --fail flip
+  expect_in "$work/stderr" "METRIC=VALUE" stderr
+  cli_expect 2 diff "$work/a.exr" "$work/a.exr" --error-map-metric bogus --error-map "$work/map.png"
+  cli_expect 2 diff "$work/a.exr" "$work/a.exr" --error-map "$work/map.jpg"
+  cli_expect 2 diff --ztest "$work/a.exr" "$work/a.exr"
+  expect_in "$work/stderr" "--aov variance,sample_count" stderr
+  expect_no_file "$work/out.json"
+  expect_no_file "$work/map.png"
+}
+
+write_two_balls_scene() {  # write_two_balls_scene <path> <left ball reflectance>
+  cat >"$1" <<JSON
+{"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+  "film": {"resolution": [32, 16], "filter": {"type": "box"}},
+  "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 0, 7], "target": [0, 0, 0]}},
+  "sampler": {"type": "independent"},
+  "integrator": {"type": "path", "max_depth": 4},
+  "materials": {"ball": {"type": "diffuse", "reflectance": $2}, "other": {"type": "diffuse", "reflectance": 0.8}},
+  "lights": [{"type": "point", "position": [0, 4, 6], "intensity": 250}],
+  "objects": [{"material": "ball", "shape": {"type": "sphere", "radius": 1}, "transform": {"translate": [-1.1, 0, 0]}},
+              {"material": "other", "shape": {"type": "sphere", "radius": 1}, "transform": {"translate": [1.1, 0, 0]}}]}
+JSON
+}
+
+case_diff_ztest() {  # an unbiased 64-spp render passes against a 1024-spp reference; one material 2 % brighter fails
+  write_two_balls_scene "$work/scene.json" 0.5
+  write_two_balls_scene "$work/biased.json" 0.51
+  cli_expect 0 render "$work/scene.json" --spp 1024 --seed 1 --aov variance,sample_count --quiet -o "$work/ref.exr"
+  cli_expect 0 render "$work/scene.json" --spp 64 --seed 2 --quiet -o "$work/test.exr"
+  cli_expect 0 render "$work/biased.json" --spp 64 --seed 2 --quiet -o "$work/biased.exr"
+  cli_expect 0 diff --ztest "$work/ref.exr" "$work/test.exr" --json "$work/z.json"
+  expect_in "$work/stdout" "): pass" stdout
+  expect_in "$work/z.json" '"passed": true' z.json
+  cli_expect 1 diff --ztest "$work/ref.exr" "$work/biased.exr" --error-map "$work/z.png"
+  expect_in "$work/stdout" "): FAIL" stdout
+  [[ -s "$work/z.png" ]] || fail "no z-test error map"
+  # The test's sample count comes from its isotrace:spp metadata; a wrong --test-spp changes the verdict.
+  cli_expect 1 diff --ztest "$work/ref.exr" "$work/test.exr" --test-spp 100000
+  cli_expect 2 diff --ztest "$work/ref.exr" "$work/test.exr" --fail flip=0.1
+}
+
 # ---- dispatch --------------------------------------------------------------------------------------------
 
 if [[ $(type -t "case_$case_name") != function ]]; then

@@ -12,6 +12,7 @@ CommandRunner add_depth_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
 CommandRunner add_mesh_command(CLI::App& app);
 CommandRunner add_deform_command(CLI::App& app);
+CommandRunner add_diff_command(CLI::App& app);
 
 // Exit codes shared by all commands.
 constexpr int kExitOk = 0;

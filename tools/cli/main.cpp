@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
     const CommandRunner bench = add_bench_command(app);
     const CommandRunner mesh = add_mesh_command(app);
     const CommandRunner deform = add_deform_command(app);
+    const CommandRunner diff = add_diff_command(app);
     if (reject_unknown_command(app, argc, argv)) return kExitBadInput;
     try {
         app.parse(argc, argv);
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("bench")) return bench();
         if (app.got_subcommand("mesh")) return mesh();
         if (app.got_subcommand("deform")) return deform();
+        if (app.got_subcommand("diff")) return diff();
         return info();
     } catch (const isotrace::InputError& error) {
         std::fprintf(stderr, "isotrace: error: %s\n", error.what());

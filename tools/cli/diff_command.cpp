@@ -1,0 +1,292 @@
+// isotrace diff: how far a test image is from a reference (RMSE, relative MSE, PSNR, SSIM, FLIP), with a
+// false-colour error map and thresholds to gate another renderer's CI on; --ztest: Mitsuba 3's per-pixel test of
+// a low-budget render against a reference's mean and variance.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+
+#include "renderer/core/input_error.h"
+#include "renderer/core/version.h"
+#include "renderer/image/image_writer.h"
+#include "renderer/image_compare/error_map.h"
+#include "renderer/image_compare/flip.h"
+#include "renderer/image_compare/image_channels.h"
+#include "renderer/image_compare/pixel_error.h"
+#include "renderer/image_compare/ssim.h"
+#include "tools/cli/command_helpers.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/diff_thresholds.h"
+#include "tools/cli/diff_z_test_input.h"
+
+namespace isotrace::cli {
+namespace {
+
+struct DiffArguments {
+    std::string reference, test;
+    std::string json, error_map;
+    std::string error_map_metric = "flip";
+    std::vector<std::string> fail;
+    double pixels_per_degree = kFlipDefaultPixelsPerDegree;
+    bool z_test = false;
+    std::optional<int> test_spp;
+    ZTestSettings z_settings;
+    bool quiet = false;
+};
+
+std::string describe_size(const ImageFile& image) {
+    return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
+void require_comparable(const ImageFile& a, const std::string& a_path, const ImageFile& b, const std::string& b_path,
+                        bool same_channels) {
+    if (a.width != b.width || a.height != b.height)
+        throw InputError({}, "", "images of different size: " + a_path + " is " + describe_size(a) + ", " + b_path +
+                                     " is " + describe_size(b));
+    if (a.display_referred != b.display_referred) {
+        const auto kind = [](const ImageFile& f) {
+            return f.display_referred ? "display-referred (integer pixels)" : "scene-linear (float pixels)";
+        };
+        throw InputError({}, "", a_path + " is " + kind(a) + " but " + b_path + " is " + kind(b) +
+                                     ": compare an EXR with an EXR, a PNG with a PNG");
+    }
+    if (!same_channels) return;
+    std::vector<std::string> ca = a.channels, cb = b.channels;
+    std::sort(ca.begin(), ca.end());
+    std::sort(cb.begin(), cb.end());
+    if (ca == cb) return;
+    const auto only = [](const std::vector<std::string>& x, const std::vector<std::string>& y) {
+        std::string list;
+        for (const std::string& c : x)
+            if (!std::binary_search(y.begin(), y.end(), c)) list += (list.empty() ? "" : ", ") + c;
+        return list.empty() ? std::string("none") : list;
+    };
+    throw InputError({}, "", "the images have different channels: only in " + a_path + ": " + only(ca, cb) +
+                                 "; only in " + b_path + ": " + only(cb, ca));
+}
+
+struct Comparison {
+    std::map<std::string, double> values;
+    bool display_referred = false;
+    double psnr_peak = 1, ssim_range = 1;
+    FlipExposures exposures;
+    std::vector<float> flip_map, ssim_map;
+};
+
+Comparison compare(const RgbImage& reference, const RgbImage& test, bool display_referred, double ppd) {
+    Comparison c;
+    c.display_referred = display_referred;
+    c.values["rmse"] = rmse(reference, test);
+    c.values["relmse"] = relative_mse(reference, test);
+    c.psnr_peak = psnr_peak(reference, display_referred);
+    c.values["psnr"] = psnr(reference, test, c.psnr_peak);
+    const std::vector<float> y_reference = luminance_plane(reference), y_test = luminance_plane(test);
+    const float brightest = *std::max_element(y_reference.begin(), y_reference.end());
+    c.ssim_range = display_referred || !(brightest > 0) ? 1.0 : double(brightest);
+    c.ssim_map = ssim_map(y_reference, y_test, reference.width, reference.height, c.ssim_range);
+    double ssim_sum = 0;
+    for (float v : c.ssim_map) ssim_sum += v;
+    c.values["ssim"] = ssim_sum / double(c.ssim_map.size());
+    if (display_referred) {
+        c.flip_map = ldr_flip(reference, test, ppd);
+    } else {
+        c.exposures = hdr_flip_exposures(reference);
+        c.flip_map = hdr_flip(reference, test, ppd, c.exposures);
+    }
+    double flip_sum = 0;
+    for (float v : c.flip_map) flip_sum += v;
+    c.values["flip"] = flip_sum / double(c.flip_map.size());
+    return c;
+}
+
+std::string flip_description(const Comparison& c, double ppd) {
+    char text[200];
+    if (c.display_referred)
+        std::snprintf(text, sizeof text, "LDR-FLIP, mean, %.1f pixels per degree", ppd);
+    else
+        std::snprintf(text, sizeof text, "HDR-FLIP, mean, %.1f pixels per degree, %d exposures %.3f to %.3f", ppd,
+                      c.exposures.count, c.exposures.start, c.exposures.stop);
+    return text;
+}
+
+void print_comparison(const DiffArguments& args, const Comparison& c) {
+    std::printf("reference %s (%s)\ntest      %s\n", args.reference.c_str(),
+                c.display_referred ? "display-referred sRGB" : "scene-linear, compared as linear sRGB", args.test.c_str());
+    std::printf("rmse    %.6g\n", c.values.at("rmse"));
+    std::printf("relmse  %.6g   (pbrt-v4 MRSE: mean of (B - A)^2 / (A + 0.01)^2)\n", c.values.at("relmse"));
+    std::printf("psnr    %.6g dB   (peak %.6g%s)\n", c.values.at("psnr"), c.psnr_peak,
+                c.display_referred ? "" : ", the reference's largest value");
+    std::printf("ssim    %.6g   (luminance, 11x11 Gaussian window sigma 1.5, dynamic range %.6g)\n",
+                c.values.at("ssim"), c.ssim_range);
+    std::printf("flip    %.6g   (%s)\n", c.values.at("flip"), flip_description(c, args.pixels_per_degree).c_str());
+}
+
+// JSON has no infinity: PSNR of identical images is written as the string "inf".
+nlohmann::json number(double value) {
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    return value;
+}
+
+nlohmann::json comparison_json(const DiffArguments& args, const Comparison& c, int width, int height,
+                               const std::vector<std::string>& broken) {
+    nlohmann::json metrics;
+    for (const auto& [name, value] : c.values) metrics[name] = number(value);
+    nlohmann::json flip = {{"mode", c.display_referred ? "ldr" : "hdr"}, {"pixels_per_degree", args.pixels_per_degree}};
+    if (!c.display_referred)
+        flip["exposures"] = {{"start", c.exposures.start}, {"stop", c.exposures.stop}, {"count", c.exposures.count}};
+    return {{"reference", args.reference}, {"test", args.test}, {"width", width}, {"height", height},
+            {"encoding", c.display_referred ? "display-referred sRGB" : "scene-linear"}, {"metrics", metrics},
+            {"psnr_peak", c.psnr_peak}, {"ssim_dynamic_range", c.ssim_range}, {"flip", flip},
+            {"relmse_epsilon", kRelativeMseEpsilon}, {"broken_thresholds", broken}, {"isotrace", kIsotraceVersion}};
+}
+
+// The per-pixel picture of a metric, and the value shown brightest.
+struct ErrorPicture {
+    std::vector<float> values;
+    double full_scale = 1;
+    std::string description;
+};
+
+ErrorPicture error_picture(const std::string& metric, const RgbImage& reference, const RgbImage& test,
+                           const Comparison& c) {
+    ErrorPicture picture;
+    if (metric == "flip") {
+        picture = {c.flip_map, 1.0, "per-pixel FLIP, 0 to 1"};
+    } else if (metric == "ssim") {
+        picture.values.resize(c.ssim_map.size());
+        for (std::size_t i = 0; i < c.ssim_map.size(); ++i) picture.values[i] = 1 - c.ssim_map[i];
+        picture.description = "1 - per-pixel SSIM, 0 to 1";
+    } else {
+        const std::vector<float> y_reference = luminance_plane(reference), y_test = luminance_plane(test);
+        picture.values.resize(y_reference.size());
+        const bool relative = metric == "relmse";
+        for (std::size_t i = 0; i < y_reference.size(); ++i) {
+            const float difference = std::abs(y_test[i] - y_reference[i]);
+            picture.values[i] = relative ? difference / float(std::abs(y_reference[i]) + kRelativeMseEpsilon) : difference;
+        }
+        const float largest = *std::max_element(picture.values.begin(), picture.values.end());
+        picture.full_scale = largest > 0 ? double(largest) : 1.0;
+        char text[120];
+        std::snprintf(text, sizeof text, "%s, 0 to %.6g",
+                      relative ? "|B - A| / (A + 0.01) of the luminance" : "|B - A| of the luminance", picture.full_scale);
+        picture.description = text;
+    }
+    return picture;
+}
+
+void write_error_map(const DiffArguments& args, int width, int height, const ErrorPicture& picture) {
+    ImageMetadata metadata;
+    metadata.set("Software", std::string("isotrace ") + kIsotraceVersion);
+    metadata.set("isotrace:diff_reference", args.reference);
+    metadata.set("isotrace:diff_test", args.test);
+    metadata.set("isotrace:error_map", picture.description);
+    write_rgb8_image(args.error_map, width, height, false_colour(picture.values, picture.full_scale), metadata);
+    if (!args.quiet) std::fprintf(stderr, "wrote %s (%s)\n", args.error_map.c_str(), picture.description.c_str());
+}
+
+int run_z_test(const DiffArguments& args, const ImageFile& reference, const ImageFile& test) {
+    require_comparable(reference, args.reference, test, args.test, false);
+    // Per-channel statistics: both images must hold the same primaries.
+    if (reference.chromaticities != test.chromaticities)
+        throw InputError({}, "", args.reference + " and " + args.test + " have different chromaticities (primaries)");
+    const ZTestInput input = z_test_input(reference, args.reference, test, args.test, args.test_spp);
+    const ZTestResult result = z_test(input, args.z_settings);
+    std::printf("z-test: %.4f %% of pixel channels pass (needs %.4f %%): %s\n", 100 * result.pass_fraction,
+                100 * args.z_settings.required_pass_fraction, result.passed ? "pass" : "FAIL");
+    std::printf("        %lld of %zu channels fail; alpha %.3g (Sidak: significance %g over %zu pixels); min p %.3g\n",
+                static_cast<long long>(result.failed_channels), 3 * input.test.pixel_count(), result.alpha,
+                args.z_settings.significance, input.test.pixel_count(), result.min_p_value);
+    if (!args.json.empty()) {
+        const nlohmann::json report = {
+            {"reference", args.reference}, {"test", args.test}, {"pass_fraction", result.pass_fraction},
+            {"required_pass_fraction", args.z_settings.required_pass_fraction}, {"alpha", result.alpha},
+            {"significance", args.z_settings.significance}, {"variance_floor", args.z_settings.variance_floor},
+            {"failed_channels", result.failed_channels}, {"min_p_value", result.min_p_value}, {"passed", result.passed},
+            {"isotrace", kIsotraceVersion}};
+        write_text_atomically(args.json, report.dump(2) + "\n");
+    }
+    if (!args.error_map.empty()) {
+        ErrorPicture picture{result.failed_per_pixel, 3.0, "failing channels per pixel, 0 to 3"};
+        write_error_map(args, input.test.width, input.test.height, picture);
+    }
+    return result.passed ? kExitOk : kExitFailure;
+}
+
+int run_diff(const DiffArguments& args, bool error_map_metric_given) {
+    std::vector<Threshold> thresholds;
+    for (const std::string& text : args.fail) thresholds.push_back(parse_threshold(text));
+    if (args.z_test && !thresholds.empty())
+        throw InputError({}, "--fail", "not with --ztest, whose pass mark is the fraction of passing pixels");
+    if (args.z_test && error_map_metric_given)
+        throw InputError({}, "--error-map-metric", "not with --ztest, whose map shows the failing channels");
+    require_metric_name(args.error_map_metric, "--error-map-metric");
+    if (!args.error_map.empty()) check_output_file(args.error_map, ".png", "--error-map");
+    if (!args.json.empty()) check_output_directory(args.json, "--json");
+
+    const ImageFile reference_file = read_image_for_comparison(args.reference);
+    const ImageFile test_file = read_image_for_comparison(args.test);
+    if (args.z_test) return run_z_test(args, reference_file, test_file);
+
+    require_comparable(reference_file, args.reference, test_file, args.test, true);
+    const bool display = reference_file.display_referred;
+    const RgbImage reference = display ? colour_of(reference_file, args.reference)
+                                       : linear_srgb_colour_of(reference_file, args.reference);
+    const RgbImage test = display ? colour_of(test_file, args.test) : linear_srgb_colour_of(test_file, args.test);
+    const Comparison comparison = compare(reference, test, display, args.pixels_per_degree);
+    const std::vector<std::string> broken = broken_thresholds(thresholds, comparison.values);
+
+    print_comparison(args, comparison);
+    if (!args.json.empty())
+        write_text_atomically(args.json,
+                              comparison_json(args, comparison, reference.width, reference.height, broken).dump(2) + "\n");
+    if (!args.error_map.empty())
+        write_error_map(args, reference.width, reference.height,
+                        error_picture(args.error_map_metric, reference, test, comparison));
+    for (const std::string& line : broken) std::fprintf(stderr, "isotrace diff: threshold broken: %s\n", line.c_str());
+    return broken.empty() ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+CommandRunner add_diff_command(CLI::App& app) {
+    auto args = std::make_shared<DiffArguments>();
+    CLI::App* command = app.add_subcommand(
+        "diff", "Compare a test image B with a reference A: RMSE, relative MSE, PSNR, SSIM, FLIP; or --ztest");
+    command->add_option("reference", args->reference, "Reference image A (EXR, PNG or any format OpenImageIO reads)")
+        ->required();
+    command->add_option("test", args->test, "Test image B, the same size, channels and kind (linear/display) as A")
+        ->required();
+    command->add_option("--json", args->json, "Also write the figures as JSON to this file");
+    command->add_option("--error-map", args->error_map, "Write a false-colour (magma-like) error map, PNG");
+    CLI::Option* metric = command->add_option(
+        "--error-map-metric", args->error_map_metric,
+        "What the error map shows: flip (default, per-pixel FLIP), ssim (1 - SSIM), rmse or psnr (|B - A| of the "
+        "luminance), relmse (|B - A| / (A + 0.01) of the luminance)");
+    command->add_option("--fail", args->fail,
+                        "METRIC=VALUE: exit 1 if the metric is worse than VALUE (above it; psnr and ssim: below); "
+                        "repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    command->add_option("--ppd", args->pixels_per_degree, "FLIP's pixels per degree of visual angle (default 67: a 0.7 m "
+                                                          "wide 4K monitor at 0.7 m)")
+        ->check(CLI::Range(1.0, 1000.0));
+    command->add_flag("--ztest", args->z_test,
+                      "Per-pixel z-test of B (a low-budget render) against A's mean, variance and sampleCount channels; "
+                      "exit 1 unless 99.75 % of pixel channels pass");
+    command->add_option("--test-spp", args->test_spp, "--ztest: B's samples per pixel, if it has no sampleCount channel "
+                                                      "or isotrace:spp metadata")
+        ->check(CLI::Range(1, 1 << 30));
+    command->add_option("--significance", args->z_settings.significance, "--ztest: significance before the Sidak "
+                                                                         "correction (default 0.01)")
+        ->check(CLI::Range(1e-12, 0.5));
+    command->add_option("--variance-floor", args->z_settings.variance_floor,
+                        "--ztest: smallest per-sample variance (default 1e-4, Mitsuba's)")
+        ->check(CLI::Range(0.0, 1e30));
+    command->add_flag("-q,--quiet", args->quiet, "No note on stderr about the files written");
+    return [args, metric] { return run_diff(*args, metric->count() > 0); };
+}
+
+}  // namespace isotrace::cli
