@@ -59,6 +59,7 @@ SimplificationStatistics simplify_octree(const LatticeSamples& samples, const Ca
                                          const ImplicitField& field, double tolerance, DualVertices& vertices) {
     SimplificationStatistics statistics;
     const int depth = lattice.depth();
+    statistics.coarsest_level = depth;
     const std::size_t cells = samples.cells.size();
     const double limit = tolerance * tolerance;
 
@@ -132,6 +133,7 @@ SimplificationStatistics simplify_octree(const LatticeSamples& samples, const Ca
             }
         }
         statistics.collapsed_nodes += next.size();
+        if (!next.empty()) statistics.coarsest_level = level;
         open.swap(still_open);
         leaves.swap(next);
         collapsed[std::size_t(level)] = leaves;

@@ -23,6 +23,7 @@ struct SimplificationStatistics {
     std::size_t collapsed_nodes = 0;       // nodes made leaves (including those collapsed again later)
     std::size_t rejected_by_topology = 0;  // nodes whose children were all leaves, refused by (a)
     std::size_t rejected_by_error = 0;     // refused by (b)
+    int coarsest_level = 0;                // the level of the largest leaf with surface (L when nothing collapsed)
 };
 
 // `vertices` comes from cell_vertices(samples, lattice); its cycles are redirected to the leaves' vertices.

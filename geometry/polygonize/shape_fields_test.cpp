@@ -280,5 +280,29 @@ TEST(ShapeFields, DualContouringKeepsTheCornersOfACsgBox) {
     }
 }
 
+// Simplified, the box's flat faces collapse into a few large leaves (their QEF planes agree), while a corner's
+// leaf still holds its three planes, whose intersection is the vertex: the corners stay within 1e-3.
+TEST(ShapeFields, SimplifiedDualContouringCollapsesABoxsFacesAndKeepsItsCorners) {
+    const Vec3d centre{0.0123, -0.0311, 0.0271}, half{0.61, 0.47, 0.53};
+    const BoxShape box(centre, half);
+    const std::unique_ptr<ImplicitField> field = implicit_field_of(box);
+    PolygonizeOptions options;
+    options.depth = 6;
+    options.method = PolygonizeMethod::DualContouring;
+    const std::size_t full = polygonize_field(*field, options).mesh.positions.size();
+    options.simplify = 1e-4;
+    const Polygonization p = polygonize_field(*field, options);
+    EXPECT_TRUE(is_closed_two_manifold(p.mesh));
+    EXPECT_EQ(euler_characteristic(p.mesh), 2);
+    EXPECT_LT(p.mesh.positions.size() * 10, full) << full;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3d q = centre + Vec3d(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1) * half;
+        double best = INFINITY;
+        for (const Vec3f& v : p.mesh.positions) best = std::min(best, length(Vec3d(v) - q));
+        EXPECT_LT(best, 1e-3) << corner;
+    }
+    std::printf("box depth 6: %zu vertices, simplified to 1e-4: %zu\n", full, p.mesh.positions.size());
+}
+
 }  // namespace
 }  // namespace isotrace

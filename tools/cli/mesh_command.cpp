@@ -188,6 +188,8 @@ int run_mesh(const MeshArguments& args) {
             std::printf("simplified to tolerance %g: %zu octree nodes collapsed (%zu refused by topology, %zu by error)\n",
                         *options->simplify, r.simplification.collapsed_nodes, r.simplification.rejected_by_topology,
                         r.simplification.rejected_by_error);
+        if (r.dual.split_vertices)
+            std::printf("%zu split vertices (tunnels through ambiguous faces)\n", r.dual.split_vertices);
         if (r.dual.open_edges) std::printf("warning: %zu cut edges left open\n", r.dual.open_edges);
         std::printf("vertex |f|/|grad f|: mean %.3g, max %.3g; Hausdorff estimate %.3g (mesh->surface %.3g, "
                     "surface->mesh %.3g over %zu surface points)\n",
