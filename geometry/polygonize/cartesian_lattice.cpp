@@ -21,8 +21,13 @@ bool CartesianLattice::may_hold_surface(const ImplicitField& field, int level, c
 }
 
 Vec3d CartesianLattice::clamp_to_cell(const Vec3d& p, const LatticeIndex& cell) const {
-    const Vec3d lower = position(Vec3d(cell[0], cell[1], cell[2]));
-    return min(max(p, lower), lower + Vec3d{1, 1, 1} * cell_size_);
+    return clamp_to_node(p, depth(), cell);
+}
+
+Vec3d CartesianLattice::clamp_to_node(const Vec3d& p, int level, const LatticeIndex& node) const {
+    const double width = cell_size_ * double(1 << (depth() - level));
+    const Vec3d lower = lower_ + Vec3d(node[0], node[1], node[2]) * width;
+    return min(max(p, lower), lower + Vec3d{1, 1, 1} * width);
 }
 
 }  // namespace isotrace

@@ -15,6 +15,8 @@ public:
     Vec3d position(const Vec3d& coordinates) const override { return lower_ + coordinates * cell_size_; }
     bool may_hold_surface(const ImplicitField& field, int level, const LatticeIndex& cell) const override;
     Vec3d clamp_to_cell(const Vec3d& p, const LatticeIndex& cell) const override;
+    // The point of the octree node `node` of `level` (2^(L − level) finest cells wide) nearest to p.
+    Vec3d clamp_to_node(const Vec3d& p, int level, const LatticeIndex& node) const;
 
 private:
     Vec3d lower_;

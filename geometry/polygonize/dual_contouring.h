@@ -1,20 +1,22 @@
 #pragma once
-// Dual contouring (Ju et al. 2002) on a lattice, manifold variant: a cell gets one vertex per cycle of its
-// marching-cubes pattern (cube_cycles.h) — one per connected component of the surface in the cell, as in
-// manifold dual contouring (Schaefer, Ju & Warren 2007) — placed by the cell's QEF over that cycle's Hermite data
-// (qef.h) and clamped to the cell. Every cut lattice edge becomes the polygon of the vertices owning it in the
-// cells around it: a quad, or on a spherical lattice's polar axis a ring of 2^L vertices closed by a fan around a
-// ghost vertex on the axis.
+// Dual contouring (Ju et al. 2002) on a lattice, manifold variant: the vertices are those of dual_vertices.h (one
+// per cycle of a cell's marching-cubes pattern, or one per collapsed octree leaf after octree_simplification.h).
+// Every cut lattice edge becomes the polygon of the vertices owning it in the cells around it: a quad (a triangle
+// where two of the cells share a collapsed leaf), or on a spherical lattice's polar axis a ring of 2^L vertices
+// closed by a fan around a ghost vertex on the axis.
 //
 // Guarantee: the mesh is the dual of the marching-cubes surface on the same lattice, so it is closed and
-// consistently oriented wherever that one is, and a 2-manifold except where two cells sharing a face both join
-// that face's two segments into one cycle (a tunnel through an ambiguous face): the edge between their two vertices
-// then belongs to four triangles. Vertices are clamped to their cells, so the mesh cannot stray from the
-// lattice cells that hold the surface, but triangles may intersect each other.
+// consistently oriented wherever that one is, and a closed 2-manifold for a closed surface. One place needs a
+// repair for that: where two cells sharing an ambiguous face both join that face's two segments into one cycle (a
+// tunnel through the face), their two vertices would be joined by two dual edges, one per segment, and the edge
+// between them would belong to four triangles. One of the two segments (the one round the face's inside corner
+// with the smaller key) gets a vertex of its own, at the QEF minimiser of its two crossings, which the polygons of
+// its two edges pass through (a "split" vertex). Vertices are clamped to their cells, so the mesh cannot stray
+// from the lattice cells that hold the surface, but triangles may intersect each other.
 #include <cstddef>
 
 #include "geometry/mesh/triangle_mesh_data.h"
-#include "geometry/polygonize/lattice_samples.h"
+#include "geometry/polygonize/dual_vertices.h"
 
 namespace isotrace {
 
@@ -28,13 +30,14 @@ enum class PoleCap {
 };
 
 struct DualContouringStatistics {
-    std::size_t cell_vertices = 0;
+    std::size_t cell_vertices = 0;     // vertices of cells or collapsed leaves
     std::size_t ghost_vertices = 0;
+    std::size_t split_vertices = 0;    // one per tunnel through an ambiguous face (above)
     std::size_t clamped_vertices = 0;  // QEF minimisers that fell outside their cell
     std::size_t open_edges = 0;        // cut edges with a cell around them that the descent did not keep (a bug)
 };
 
 TriangleMeshData dual_contour(const LatticeSamples& samples, const Lattice& lattice, const ImplicitField& field,
-                              PoleCap pole_cap, DualContouringStatistics& statistics);
+                              const DualVertices& vertices, PoleCap pole_cap, DualContouringStatistics& statistics);
 
 }  // namespace isotrace

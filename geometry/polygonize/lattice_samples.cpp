@@ -66,6 +66,12 @@ std::optional<std::size_t> LatticeSamples::edge(LatticeKey key) const {
     return i;
 }
 
+std::optional<std::size_t> LatticeSamples::corner(LatticeKey key) const {
+    const std::size_t i = position_of(corners, key);
+    if (i == corners.size() || corners[i] != key) return std::nullopt;
+    return i;
+}
+
 Vec3d edge_crossing(const ImplicitField& field, const Lattice& lattice, const LatticeIndex& corner, int axis,
                     double lower_value, double upper_value) {
     const Vec3d start(corner[0], corner[1], corner[2]);
@@ -100,17 +106,18 @@ LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice
     const std::vector<LatticeKey> candidates = candidate_cells(field, lattice);
     samples.candidate_cells = candidates.size();
 
-    std::vector<LatticeKey> corners;
+    std::vector<LatticeKey>& corners = samples.corners;
     corners.reserve(candidates.size() * 8);
     for (LatticeKey key : candidates)
         for (int c = 0; c < 8; ++c) corners.push_back(lattice_key(lattice.canonical_corner(corner_of(lattice_index(key), c))));
     std::sort(corners.begin(), corners.end());
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-    samples.corners = corners.size();
     std::vector<double> values(corners.size());
+    samples.corner_inside.resize(corners.size());
     tbb::parallel_for(std::size_t(0), corners.size(), [&](std::size_t i) {
         const LatticeIndex c = lattice_index(corners[i]);
         values[i] = field.value(lattice.position(Vec3d(c[0], c[1], c[2])));
+        samples.corner_inside[i] = values[i] < 0;
     });
     const auto value_at = [&](const LatticeIndex& corner) {
         return values[position_of(corners, lattice_key(lattice.canonical_corner(corner)))];

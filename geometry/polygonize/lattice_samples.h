@@ -22,11 +22,13 @@ struct LatticeSamples {
     std::vector<Vec3d> crossings;            // per edge: the surface point on it
     std::vector<Vec3d> gradients;            // per edge: the field's gradient there
     std::vector<std::uint8_t> lower_inside;  // per edge: its lower corner is the inside one
+    std::vector<LatticeKey> corners;         // sorted canonical keys of the sampled corners (of candidate cells)
+    std::vector<std::uint8_t> corner_inside; // per corner: the field is negative there
     std::size_t candidate_cells = 0;         // finest cells the descent kept
-    std::size_t corners = 0;                 // field samples at corners
 
     std::optional<std::size_t> cell(LatticeKey key) const;
     std::optional<std::size_t> edge(LatticeKey key) const;
+    std::optional<std::size_t> corner(LatticeKey key) const;
 };
 
 LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice);

@@ -26,6 +26,21 @@ void check_depth(PolygonizeMethod method, int depth) {
     throw std::invalid_argument(message);
 }
 
+void check_simplify(const PolygonizeOptions& options) {
+    if (!options.simplify) return;
+    if (options.method != PolygonizeMethod::DualContouring)
+        throw std::invalid_argument("simplify: only dual contouring on the Cartesian octree (dc) can be simplified");
+    if (!(*options.simplify >= 0) || !std::isfinite(*options.simplify))
+        throw std::invalid_argument("simplify: the tolerance must be a finite distance >= 0");
+}
+
+void report_samples(const LatticeSamples& samples, PolygonizeReport& report) {
+    report.candidate_cells = samples.candidate_cells;
+    report.surface_cells = samples.cells.size();
+    report.corner_samples = samples.corners.size();
+    report.cut_edges = samples.edges.size();
+}
+
 }  // namespace
 
 int min_depth(PolygonizeMethod method) { return method == PolygonizeMethod::SphericalDualContouring ? 2 : 1; }
@@ -46,6 +61,7 @@ std::optional<PoleCap> pole_cap_named(const std::string& name) {
 
 Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOptions& options) {
     check_depth(options.method, options.depth);
+    check_simplify(options);
     const FieldBox bounds = field.bounds();
     if (!is_finite(bounds.lower) || !is_finite(bounds.upper) || !(max_component(bounds.extent()) > 0))
         throw std::invalid_argument("the surface is empty (its bounds have no extent)");
@@ -54,13 +70,15 @@ Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOpti
     if (options.method != PolygonizeMethod::SphericalDualContouring) {
         const CartesianLattice lattice = CartesianLattice::around(bounds, options.depth);
         const LatticeSamples samples = sample_lattice(field, lattice);
-        report.candidate_cells = samples.candidate_cells;
-        report.surface_cells = samples.cells.size();
-        report.corner_samples = samples.corners;
-        report.cut_edges = samples.edges.size();
-        result.mesh = options.method == PolygonizeMethod::MarchingCubes
-                          ? marching_cubes(samples, lattice, field)
-                          : dual_contour(samples, lattice, field, options.pole_cap, report.dual);
+        report_samples(samples, report);
+        if (options.method == PolygonizeMethod::MarchingCubes) {
+            result.mesh = marching_cubes(samples, lattice, field);
+            return result;
+        }
+        DualVertices vertices = cell_vertices(samples, lattice);
+        if (options.simplify)
+            report.simplification = simplify_octree(samples, lattice, field, *options.simplify, vertices);
+        result.mesh = dual_contour(samples, lattice, field, vertices, options.pole_cap, report.dual);
         return result;
     }
     report.requested_origin = options.origin.value_or(bounds.centre());
@@ -75,11 +93,8 @@ Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOpti
     report.range = spherical_range(field, origin);
     const SphericalLattice lattice(report.range, options.depth);
     const LatticeSamples samples = sample_lattice(field, lattice);
-    report.candidate_cells = samples.candidate_cells;
-    report.surface_cells = samples.cells.size();
-    report.corner_samples = samples.corners;
-    report.cut_edges = samples.edges.size();
-    result.mesh = dual_contour(samples, lattice, field, options.pole_cap, report.dual);
+    report_samples(samples, report);
+    result.mesh = dual_contour(samples, lattice, field, cell_vertices(samples, lattice), options.pole_cap, report.dual);
     return result;
 }
 

@@ -2,8 +2,8 @@
 // Polygonising an implicit field into a triangle mesh: marching cubes or dual contouring on the Cartesian
 // octree's finest level, or dual contouring on a spherical octree (Kim et al. 2011, and the seed paper's stable
 // construction). The octrees subdivide only cells that may hold surface (ImplicitField::may_reach_surface), so
-// every cell that does is kept at the finest level; empty space stays coarse and produces nothing. (No
-// simplification by QEF error: all surface cells are at depth L.)
+// every cell that does is kept at the finest level; empty space stays coarse and produces nothing. Cartesian dual
+// contouring may then simplify the octree by QEF error (octree_simplification.h).
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -11,6 +11,7 @@
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "geometry/polygonize/dual_contouring.h"
 #include "geometry/polygonize/implicit_field.h"
+#include "geometry/polygonize/octree_simplification.h"
 #include "geometry/polygonize/spherical_lattice.h"
 
 namespace isotrace {
@@ -23,6 +24,9 @@ struct PolygonizeOptions {
     std::optional<Vec3d> origin;   // spherical: the lattice's origin (default: the centre of the field's bounds)
     bool correct_origin = true;    // spherical: move the origin off the surface first (spherical_origin.h)
     PoleCap pole_cap = PoleCap::AxisRoot;
+    // dc only: collapse octree nodes whose vertex lies within this distance (scene units) of every tangent plane
+    // in the node, where the topology allows (octree_simplification.h).
+    std::optional<double> simplify;
 };
 
 struct PolygonizeReport {
@@ -31,6 +35,7 @@ struct PolygonizeReport {
     std::size_t corner_samples = 0;
     std::size_t cut_edges = 0;
     DualContouringStatistics dual;
+    SimplificationStatistics simplification;
     // Spherical only.
     Vec3d requested_origin;
     SphericalRange range;
@@ -50,8 +55,9 @@ constexpr int kMaxPolygonizeDepth = 10;
 std::optional<PolygonizeMethod> polygonize_method_named(const std::string& name);
 std::optional<PoleCap> pole_cap_named(const std::string& name);  // "axis", "normal", "vertical"
 
-// Throws std::invalid_argument naming the setting at fault ("depth: ...", "origin: ...") for a depth out of range
-// (with the memory it would need), an origin outside the field's bounds, or a field whose bounds are empty.
+// Throws std::invalid_argument naming the setting at fault ("depth: ...", "origin: ...", "simplify: ...") for a depth
+// out of range (with the memory it would need), an origin outside the field's bounds, a simplification tolerance
+// that is negative or not finite or given for another method than dc, or a field whose bounds are empty.
 Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOptions& options);
 
 }  // namespace isotrace

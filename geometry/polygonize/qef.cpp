@@ -59,6 +59,34 @@ void Qef::add(const Vec3d& p, const Vec3d& n) {
     ata_[5] += u.z * u.z;
     const double d = dot(u, q);
     atb_ += u * d;
+    btb_ += d * d;
+}
+
+void Qef::merge(const Qef& other) {
+    if (other.count_ == 0) return;
+    if (count_ == 0) {
+        *this = other;
+        return;
+    }
+    // Move the other's planes to this reference: with δ = reference_ − other.reference_, each d = n·p becomes
+    // d − n·δ, so Aᵀb loses AᵀA·δ and bᵀb becomes Σ (d − n·δ)².
+    const Vec3d delta = reference_ - other.reference_;
+    const double* m = other.ata_;
+    const Vec3d ata_delta(m[0] * delta.x + m[1] * delta.y + m[2] * delta.z, m[1] * delta.x + m[3] * delta.y + m[4] * delta.z,
+                          m[2] * delta.x + m[4] * delta.y + m[5] * delta.z);
+    for (int i = 0; i < 6; ++i) ata_[i] += m[i];
+    atb_ += other.atb_ - ata_delta;
+    btb_ += other.btb_ - 2 * dot(delta, other.atb_) + dot(delta, ata_delta);
+    point_sum_ += other.point_sum_ - delta * double(other.count_);
+    count_ += other.count_;
+}
+
+double Qef::error(const Vec3d& x) const {
+    // xᵀAᵀAx − 2xᵀAᵀb + bᵀb with x relative to the reference; never below zero (rounding).
+    const Vec3d y = x - reference_;
+    const Vec3d ata_y(ata_[0] * y.x + ata_[1] * y.y + ata_[2] * y.z, ata_[1] * y.x + ata_[3] * y.y + ata_[4] * y.z,
+                      ata_[2] * y.x + ata_[4] * y.y + ata_[5] * y.z);
+    return std::max(0.0, dot(y, ata_y) - 2 * dot(y, atb_) + btb_);
 }
 
 Vec3d Qef::solve() const {

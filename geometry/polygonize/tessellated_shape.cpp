@@ -11,6 +11,7 @@ std::unique_ptr<Shape> tessellated_shape(std::unique_ptr<Shape> shape, const Sce
     options.method = *polygonize_method_named(settings.choice_or("method", "dc", {"mc", "dc", "sdc"}));
     options.depth = settings.integer_or("depth", 6, NumberRange::between(min_depth(options.method), kMaxPolygonizeDepth));
     options.pole_cap = *pole_cap_named(settings.choice_or("pole_cap", "axis", {"axis", "normal", "vertical"}));
+    if (settings.has("simplify")) options.simplify = settings.number("simplify", NumberRange::non_negative());
     if (settings.has("origin")) {
         const std::vector<double> o = settings.numbers("origin", 3);
         options.origin = Vec3d{o[0], o[1], o[2]};

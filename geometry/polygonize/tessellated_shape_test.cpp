@@ -25,11 +25,11 @@ std::string scene_with_object(const std::string& object_fields) {
 // along −z through x = 1.5 meets the top of the sphere, at z ≈ 1 (the tessellation's chordal error apart).
 TEST(TessellatedShape, AnImplicitObjectIsTracedAsItsMesh) {
     ScratchDirectory dir;
-    for (const char* method : {"mc", "dc", "sdc"}) {
+    for (const char* method : {R"("mc")", R"("dc")", R"("sdc")", R"("dc", "simplify": 0.001)"}) {
         const auto loaded = load_scene(dir.write(
             "ball.json", scene_with_object(R"("transform": {"translate": [1, 0, 0]},
               "shape": {"type": "sphere", "center": [0.5, 0, 0], "radius": 1},
-              "tessellate": {"method": ")" + std::string(method) + R"(", "depth": 5})")));
+              "tessellate": {"method": )" + std::string(method) + R"(, "depth": 5})")));
         const SceneObject& object = loaded->scene->objects().at(0);
         EXPECT_EQ(object.shape->type_name(), "triangle_mesh") << method;
         Ray ray;
@@ -50,6 +50,10 @@ TEST(TessellatedShape, BadSettingsAreReportedWhereTheyAreWritten) {
               std::string::npos);
     EXPECT_NE(error_for(R"("shape": {"type": "sphere"}, "tessellate": {"method": "mt"})").find("objects[0].tessellate.method"),
               std::string::npos);
+    EXPECT_NE(error_for(R"("shape": {"type": "sphere"}, "tessellate": {"simplify": -1})").find("objects[0].tessellate.simplify"),
+              std::string::npos);
+    const std::string simplify_mc = error_for(R"("shape": {"type": "sphere"}, "tessellate": {"method": "mc", "simplify": 0.01})");
+    EXPECT_NE(simplify_mc.find("only dual contouring"), std::string::npos) << simplify_mc;
     const std::string origin = error_for(R"("shape": {"type": "sphere"}, "tessellate": {"method": "sdc", "origin": [5, 0, 0]})");
     EXPECT_NE(origin.find("origin"), std::string::npos) << origin;
     const std::string open_mesh = error_for(R"("shape": {"type": "mesh", "positions": [[0,0,0], [1,0,0], [0,1,0]], "triangles": [[0,1,2]]},

@@ -692,6 +692,24 @@ PY
   expect_no_partial_files "$work"
 }
 
+case_mesh_simplify() {  # octree simplification by QEF error: fewer vertices; bad tolerances and methods exit 2
+  write_blob_scene "$work/blobs.json"
+  cli_expect 0 mesh "$work/blobs.json" -o "$work/full.obj" --depth 5
+  cli_expect 0 mesh "$work/blobs.json" -o "$work/simple.obj" --depth 5 --simplify 0.05
+  expect_in "$work/stdout" "simplified to tolerance 0.05" stdout
+  local full simple
+  full=$(grep -c '^v ' "$work/full.obj")
+  simple=$(grep -c '^v ' "$work/simple.obj")
+  ((simple < full)) || fail "--simplify 0.05 kept $simple of $full vertices"
+  for bad in -1 nan inf abc; do
+    cli_expect 2 mesh "$work/blobs.json" -o "$work/bad.obj" --depth 5 --simplify "$bad"
+    expect_in "$work/stderr" "--simplify" stderr
+  done
+  cli_expect 2 mesh "$work/blobs.json" -o "$work/bad.obj" --depth 5 --method sdc --simplify 0.01
+  expect_in "$work/stderr" "only dual contouring" stderr
+  expect_no_file "$work/bad.obj"
+}
+
 case_deform_help() {
   cli_expect 0 deform --help
   for option in --output --quiet mesh deformers; do

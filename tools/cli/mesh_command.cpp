@@ -31,6 +31,7 @@ struct MeshArguments {
     std::string method = "dc";
     int depth = 6;
     std::vector<double> origin;
+    std::optional<double> simplify;
     std::string pole_cap = "axis";
     bool no_origin_correction = false;
     std::size_t error_samples = 20000;
@@ -114,6 +115,7 @@ PolygonizeOptions options_from(const MeshArguments& args) {
     if (!cap) throw InputError({}, "--pole-cap", "unknown placement \"" + args.pole_cap + "\"; expected axis, normal or vertical");
     options.pole_cap = *cap;
     options.correct_origin = !args.no_origin_correction;
+    options.simplify = args.simplify;
     if (!args.origin.empty()) {
         if (args.origin.size() != 3) throw InputError({}, "--origin", "expected x,y,z");
         options.origin = Vec3d{args.origin[0], args.origin[1], args.origin[2]};
@@ -156,7 +158,9 @@ int run_mesh(const MeshArguments& args) {
         result = polygonize_field(*field, *options);
     } catch (const std::invalid_argument& error) {
         const std::string message = error.what();
-        const std::string option = message.rfind("origin:", 0) == 0 ? "--origin" : (message.rfind("depth:", 0) == 0 ? "--depth" : "--object");
+        std::string option = "--object";
+        for (const char* setting : {"origin", "depth", "simplify"})
+            if (message.rfind(std::string(setting) + ":", 0) == 0) option = std::string("--") + setting;
         throw InputError({}, option, message.substr(message.find(':') == std::string::npos ? 0 : message.find(':') + 2));
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -180,6 +184,12 @@ int run_mesh(const MeshArguments& args) {
                         r.requested_origin.x, r.requested_origin.y, r.requested_origin.z, r.range.origin.x,
                         r.range.origin.y, r.range.origin.z, r.origin_steps, r.range.r_min, r.range.r_max,
                         r.dual.ghost_vertices);
+        if (options->simplify)
+            std::printf("simplified to tolerance %g: %zu octree nodes collapsed (%zu refused by topology, %zu by error)\n",
+                        *options->simplify, r.simplification.collapsed_nodes, r.simplification.rejected_by_topology,
+                        r.simplification.rejected_by_error);
+        if (r.dual.split_vertices)
+            std::printf("%zu split vertices (tunnels through ambiguous faces)\n", r.dual.split_vertices);
         if (r.dual.open_edges) std::printf("warning: %zu cut edges left open\n", r.dual.open_edges);
         std::printf("vertex |f|/|grad f|: mean %.3g, max %.3g; Hausdorff estimate %.3g (mesh->surface %.3g, "
                     "surface->mesh %.3g over %zu surface points)\n",
@@ -210,6 +220,9 @@ CommandRunner add_mesh_command(CLI::App& app) {
     command->add_option("--origin", args->origin, "sdc: origin of the spherical octree (default: centre of the bounds)")
         ->delimiter(',')
         ->expected(3);
+    command->add_option("--simplify", args->simplify,
+                        "dc: collapse octree cells whose vertex stays within this distance (scene units) of every "
+                        "tangent plane of the surface crossings in the cell, where the topology allows (default: none)");
     command->add_flag("--no-origin-correction", args->no_origin_correction,
                       "sdc: keep the origin even when it lies on the surface (for comparison)");
     command->add_option("--pole-cap", args->pole_cap, "sdc: ghost vertex at the poles: axis, normal or vertical")
