@@ -609,20 +609,22 @@ case_depth_bad_input() {
 
 case_bench_help() {
   cli_expect 0 bench --help
-  for option in --threads --repeats --resolution --cell-size --cells-per-radius --json --quiet; do
+  for option in --threads --repeats --resolution --cell-size --cells-per-radius --json --quiet --filter --quick \
+    --report --scaling --scaling-max --list; do
     expect_in "$work/stdout" "$option" "bench --help output"
   done
 }
 
 case_bench_small_scene() {  # the whole pipeline in seconds
   write_blob_scene "$work/blobs.json"
-  cli_expect 0 bench "$work/blobs.json" --threads 1 2 --repeats 1 --resolution scene --json "$work/bench.json"
+  cli_expect 0 bench "$work/blobs.json" --filter direct_vs_tessellated --threads 1 2 --repeats 1 --resolution scene \
+    --json "$work/bench.json"
   for text in "Direct" "Tessellated" "direct/tess" "blobs" "primary" "shadow" "bounce"; do
     expect_in "$work/stdout" "$text" "bench table"
   done
   python3 - "$work/bench.json" <<'PY' || fail "bench JSON is incomplete or wrong"
 import json, sys
-report = json.load(open(sys.argv[1]))
+report = json.load(open(sys.argv[1]))["blob_comparison"]
 scene = report["scenes"][0]
 problems = []
 if scene["elements"] != 3: problems.append("elements %r" % scene["elements"])
@@ -652,10 +654,95 @@ if not scene["shadow"]["rays"] < scene["bounce"]["rays"]: problems.append("shado
 for p in problems: print("bench:", p, file=sys.stderr)
 sys.exit(1 if problems else 0)
 PY
-  cli_expect 2 bench "$work/blobs.json" --cell-size 1e-9 --repeats 1 --resolution scene
+  cli_expect 2 bench "$work/blobs.json" --filter direct_vs_tessellated --cell-size 1e-9 --repeats 1 --resolution scene
   expect_in "$work/stderr" "cell" stderr
-  cli_expect 2 bench "$work/no_such_scene.json"
+  cli_expect 2 bench "$work/no_such_scene.json" --filter direct_vs_tessellated
   expect_in "$work/stderr" "no_such_scene.json" stderr
+}
+
+case_bench_suite() {  # two workloads of the suite on two thread counts, with JSON and the HTML report
+  cli_expect 0 bench --quick --resolution 32x18 --threads 1,2 --filter '^cornell_box/(primary|path)$' \
+    --json "$work/suite.json" --report "$work/suite.html"
+  for text in "cornell_box/primary" "cornell_box/path" "Mrays/s" "Msamples/s" "Thread scaling" "speed-up"; do
+    expect_in "$work/stdout" "$text" "bench table"
+  done
+  ! grep -qF cornell_box/shadow "$work/stdout" || fail "--filter did not leave out cornell_box/shadow"
+  python3 - "$work/suite.json" <<'PY' || fail "bench suite JSON is incomplete or wrong"
+import json, sys
+report = json.load(open(sys.argv[1]))
+problems = []
+machine = report["machine"]
+for key in ("cpu", "cores", "embree_isa", "embree_version", "compiler", "flags", "isotrace_version", "commit"):
+    if not machine.get(key): problems.append("machine lacks " + key)
+if report["isotrace_bench"] != 2: problems.append("format version")
+if report["settings"]["threads"] != [1, 2]: problems.append("threads %r" % report["settings"]["threads"])
+names = [w["name"] for w in report["workloads"]]
+if names != ["cornell_box/primary", "cornell_box/path"]: problems.append("workloads %r" % names)
+for w in report["workloads"]:
+    if not w["build_seconds"] > 0 or not w["peak_memory_bytes"] > 1 << 20: problems.append(w["name"] + " build/memory")
+    if [r["threads"] for r in w["runs"]] != [1, 2]: problems.append(w["name"] + " thread counts")
+    for r in w["runs"]:
+        t = r["throughput"]
+        if len(r["seconds"]) != 1: problems.append(w["name"] + ": --quick is one timed run")
+        if not 0 < t["min"] <= t["median"] <= t["max"]: problems.append(w["name"] + " throughput %r" % t)
+        if abs(r["efficiency"] - r["speedup"] / r["threads"]) > 1e-9: problems.append(w["name"] + " efficiency")
+    if w["runs"][0]["speedup"] != 1: problems.append(w["name"] + " base speed-up")
+primary, path = report["workloads"]
+if primary["work_per_run"] != 32 * 18: problems.append("primary rays %r" % primary["work_per_run"])
+if path["work_per_run"] != 32 * 18 * 1: problems.append("path samples %r" % path["work_per_run"])
+if report["scaling"] is not None or report["blob_comparison"] is not None: problems.append("unasked parts")
+for p in problems: print("bench:", p, file=sys.stderr)
+sys.exit(1 if problems else 0)
+PY
+  for text in "<!DOCTYPE html>" "<svg" "Thread scaling" "cornell_box/path" "</html>"; do
+    expect_in "$work/suite.html" "$text" "bench HTML report"
+  done
+  cli_expect 0 bench --list
+  expect_in "$work/stdout" "blobs/direct_vs_tessellated" "bench --list"
+  expect_in "$work/stdout" "metacube_dog/mesh_dc" "bench --list"
+}
+
+case_bench_scaling() {  # the element-count scaling alone (a filter that matches no workload)
+  cli_expect 0 bench --scaling --scaling-max 10000 --filter '^$' --repeats 1 --resolution 16x9 --json "$work/scaling.json"
+  expect_in "$work/stdout" "Element-count scaling" "bench table"
+  python3 - "$work/scaling.json" <<'PY' || fail "bench scaling JSON is incomplete or wrong"
+import json, sys
+report = json.load(open(sys.argv[1]))
+points = report["scaling"]["points"]
+problems = []
+if [p["elements"] for p in points] != [1000, 10000]: problems.append("counts %r" % [p["elements"] for p in points])
+if points[0]["cost_growth"] != 1: problems.append("growth is relative to the smallest count")
+for p in points:
+    if not (p["rays"] == 16 * 9 and p["ns_per_ray"] > 0 and 10 < p["bytes_per_element"] < 100000):
+        problems.append("point %r" % p)
+if report["workloads"]: problems.append("workloads ran")
+for p in problems: print("bench:", p, file=sys.stderr)
+sys.exit(1 if problems else 0)
+PY
+}
+
+case_bench_bad_input() {  # each with --quick and one workload, so that a wrongly accepted one stays cheap
+  cli_expect 2 bench --threads 0 --quick --filter '^cornell_box/primary$'
+  expect_in "$work/stderr" "--threads" stderr
+  cli_expect 2 bench --threads abc --quick --filter '^cornell_box/primary$'
+  expect_in "$work/stderr" "--threads" stderr
+  cli_expect 2 bench --filter '(unclosed' --quick
+  expect_in "$work/stderr" "not a valid regular expression" stderr
+  cli_expect 2 bench --filter 'no_such_workload' --quick
+  expect_in "$work/stderr" "matches no workload" stderr
+  expect_in "$work/stderr" "cornell_box/primary" stderr
+  cli_expect 2 bench --quick --filter '^cornell_box/primary$' --json "$work/missing/b.json"
+  expect_in "$work/stderr" "--json" stderr
+  cli_expect 2 bench --quick --filter '^cornell_box/primary$' --report "$work/missing/r.html"
+  expect_in "$work/stderr" "--report" stderr
+  cli_expect 2 bench --quick --filter '^cornell_box/primary$' --report "$work"
+  expect_in "$work/stderr" "--report" stderr
+  [[ ! -e "$work/missing" ]] || fail "an output directory was created"
+  cli_expect 2 bench --repeats 0 --quick --filter '^cornell_box/primary$'
+  cli_expect 2 bench --scaling --scaling-max 10 --quick --filter '^cornell_box/primary$'
+  expect_in "$work/stderr" "--scaling-max" stderr
+  cli_expect 2 bench --resolution 0x5 --quick --filter '^cornell_box/primary$'
+  expect_in "$work/stderr" "--resolution" stderr
 }
 
 case_polygonize_obj() {  # "polygonize" is an alias of "mesh": the scene's one implicit object by default

@@ -1,45 +1,143 @@
-// isotrace bench: the blob-group benchmark of issues 4 and 9 (see tools/cli/blob_benchmark.h).
+// isotrace bench: the benchmark suite of issue 15 (tools/cli/bench_workloads.h), the element-count scaling
+// (tools/cli/bench_scaling.h) and the blob direct-vs-tessellated comparison of issues 4 and 9
+// (tools/cli/blob_benchmark.h), reported as a table, JSON and a self-contained HTML page.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
+#include <thread>
 
 #include "renderer/core/input_error.h"
+#include "tools/cli/bench_html_report.h"
 #include "tools/cli/bench_report.h"
+#include "tools/cli/bench_suite_report.h"
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/machine_description.h"
+#include "tools/cli/object_field.h"
 #include "tools/cli/progress_bar.h"
 
 namespace isotrace::cli {
 namespace {
 
+// The report's format version: 2 is the suite (version 1, the blob comparison alone, is now "blob_comparison").
+constexpr int kBenchReportVersion = 2;
+
 struct BenchArguments {
-    std::vector<std::string> scenes = {"scenes/blobs_1k.json", "scenes/blobs_10k.json", "scenes/blobs_100k.json"};
-    std::vector<int> threads = {1, 2};
+    std::vector<std::string> scenes;  // of the blob comparison; default below
+    std::vector<int> threads;         // default: all cores
     int repeats = 3;
     std::string resolution = "320x180";
+    std::string filter = ".";
+    bool quick = false;
+    bool list = false;
+    bool scaling = false;
+    std::size_t scaling_max = 1'000'000;
     TessellationOptions tessellation;
-    std::string json;
+    std::string json, report;
     bool quiet = false;
+    // Whether the user set the values --quick would otherwise lower.
+    const CLI::Option *repeats_option = nullptr, *resolution_option = nullptr, *scaling_max_option = nullptr;
 };
 
-int run_bench(const BenchArguments& args) {
-    BlobBenchmarkSettings settings;
-    for (const std::string& scene : args.scenes)
-        if (!std::filesystem::is_regular_file(scene))
-            throw InputError({}, "scene", "\"" + scene + "\" does not exist (run from the source tree or name the scenes)");
-    settings.scenes = args.scenes;
-    settings.threads = args.threads;
-    settings.repeats = args.repeats;
-    if (args.resolution != "scene") settings.resolution = parse_resolution(args.resolution, "--resolution");
-    settings.tessellation = args.tessellation;
+std::regex filter_regex(const std::string& filter) {
+    try {
+        return std::regex(filter, std::regex::ECMAScript);
+    } catch (const std::regex_error& error) {
+        throw InputError({}, "--filter", "\"" + filter + "\" is not a valid regular expression: " + error.what());
+    }
+}
+
+std::vector<std::string> names_of(const std::vector<Workload>& workloads) {
+    std::vector<std::string> names;
+    for (const Workload& w : workloads) names.push_back(w.name);
+    return names;
+}
+
+nlohmann::json settings_json(const BenchArguments& args, const SuiteSettings& suite) {
+    nlohmann::json settings = {{"threads", suite.threads},   {"repeats", suite.repeats},
+                               {"warm_up_runs", 1},          {"quick", args.quick},
+                               {"filter", args.filter},      {"path_spp", suite.path_spp},
+                               {"mesh_depth", suite.mesh_depth}};
+    settings["resolution"] = suite.resolution
+                                 ? nlohmann::json::array({suite.resolution->width, suite.resolution->height})
+                                 : nlohmann::json();
+    return settings;
+}
+
+int run_bench(BenchArguments args) {
+    const std::vector<Workload> all = suite_workloads();
+    if (args.list) {
+        for (const Workload& w : all) std::printf("%s\n", w.name.c_str());
+        return kExitOk;
+    }
+    const std::vector<Workload> selected = workloads_matching(all, filter_regex(args.filter));
+    if (selected.empty() && !args.scaling)
+        throw InputError({}, "--filter",
+                         "\"" + args.filter + "\" matches no workload; workloads: " + joined_names(names_of(all)));
     if (!args.json.empty()) check_output_directory(args.json, "--json");
+    if (!args.report.empty()) check_output_directory(args.report, "--report");
+
+    if (args.quick) {  // the whole suite in well under a minute on 2 cores
+        if (args.repeats_option->count() == 0) args.repeats = 1;
+        if (args.resolution_option->count() == 0) args.resolution = "160x90";
+        if (args.scaling_max_option->count() == 0) args.scaling_max = 100'000;
+    }
+    SuiteSettings suite;
+    suite.threads = args.threads.empty() ? std::vector<int>{int(std::max(1u, std::thread::hardware_concurrency()))}
+                                         : args.threads;
+    std::sort(suite.threads.begin(), suite.threads.end());
+    suite.threads.erase(std::unique(suite.threads.begin(), suite.threads.end()), suite.threads.end());
+    suite.repeats = args.repeats;
+    if (args.resolution != "scene") suite.resolution = parse_resolution(args.resolution, "--resolution");
+    suite.path_spp = args.quick ? 1 : 4;
+    suite.mesh_depth = args.quick ? 6 : 7;
+
+    const bool run_comparison = std::any_of(selected.begin(), selected.end(), [](const Workload& w) {
+        return w.kind == WorkloadKind::BlobComparison;
+    });
+    BlobBenchmarkSettings comparison;
+    if (run_comparison) {
+        comparison.scenes = !args.scenes.empty() ? args.scenes
+                            : args.quick        ? std::vector<std::string>{"scenes/blobs_1k.json", "scenes/blobs_10k.json"}
+                                                : std::vector<std::string>{"scenes/blobs_1k.json", "scenes/blobs_10k.json",
+                                                                           "scenes/blobs_100k.json"};
+        for (const std::string& scene : comparison.scenes)
+            if (!std::filesystem::is_regular_file(scene))
+                throw InputError({}, "scene",
+                                 "\"" + scene + "\" does not exist (run from the source tree or name the scenes)");
+        comparison.threads = suite.threads;
+        comparison.repeats = suite.repeats;
+        comparison.resolution = suite.resolution;
+        comparison.tessellation = args.tessellation;
+    }
 
     const bool show_progress = !args.quiet && stderr_is_terminal();
     const auto log = [show_progress](const std::string& line) {
         if (show_progress) std::fprintf(stderr, "bench: %s\n", line.c_str());
     };
-    const nlohmann::json report = benchmark_json(settings, run_blob_benchmark(settings, log));
-    std::fputs(benchmark_table(report).c_str(), stdout);
+    nlohmann::json report = {{"isotrace_bench", kBenchReportVersion},
+                             {"machine", machine_description()},
+                             {"settings", settings_json(args, suite)},
+                             {"workloads", nlohmann::json::array()},
+                             {"scaling", nullptr},
+                             {"blob_comparison", nullptr}};
+    for (const WorkloadResult& result : run_workloads(selected, suite, log))
+        report["workloads"].push_back(workload_json(result));
+    if (args.scaling) {
+        const RasterSize resolution = suite.resolution.value_or(RasterSize{320, 180});
+        const int threads = suite.threads.back();
+        report["scaling"] = {{"threads", threads},
+                             {"resolution", {resolution.width, resolution.height}},
+                             {"points", scaling_json(run_scaling(scaling_counts(args.scaling_max), resolution, threads,
+                                                                 suite.repeats, log))}};
+    }
+    if (run_comparison) report["blob_comparison"] = benchmark_json(comparison, run_blob_benchmark(comparison, log));
+
+    std::fputs(suite_table(report).c_str(), stdout);
+    if (run_comparison) std::fputs(("\n" + benchmark_table(report["blob_comparison"])).c_str(), stdout);
     if (!args.json.empty()) write_text_atomically(args.json, report.dump(2) + "\n");
+    if (!args.report.empty()) write_text_atomically(args.report, bench_html_report(report));
     return kExitOk;
 }
 
@@ -49,19 +147,37 @@ CommandRunner add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArguments>();
     CLI::App* command = app.add_subcommand(
         "bench",
-        "Benchmark blob groups: primary, shadow and bounce rays traced directly and as their tessellation, per thread "
-        "count");
-    command->add_option("scenes", args->scenes, "Scene files with blob groups")->capture_default_str();
-    command->add_option("--threads", args->threads, "Thread counts to measure")
-        ->capture_default_str()
+        "Benchmark suite: primary, shadow and bounce rays, the path tracer and the polygoniser on fixed scenes, "
+        "with thread and element-count scaling (run from the source tree; --list names the workloads)");
+    command->add_option("scenes", args->scenes,
+                        "Scene files with blob groups for the blobs/direct_vs_tessellated workload (default: "
+                        "scenes/blobs_1k, _10k, _100k)");
+    command
+        ->add_option("--threads", args->threads,
+                     "Thread counts to measure, e.g. 1,2 (a thread-scaling table; default: all cores)")
+        ->delimiter(',')
         ->check(CLI::Range(1, 4096));
-    command->add_option("--repeats", args->repeats, "Runs per measurement (the median is reported)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 1000));
-    command->add_option("--resolution", args->resolution, "WIDTHxHEIGHT of the ray grid, or \"scene\"")
+    args->repeats_option = command->add_option("--repeats", args->repeats, "Timed runs per measurement, after one warm-up run")
+                               ->capture_default_str()
+                               ->check(CLI::Range(1, 1000));
+    args->resolution_option =
+        command->add_option("--resolution", args->resolution, "WIDTHxHEIGHT of the ray grid and image, or \"scene\"")
+            ->capture_default_str();
+    command->add_option("--filter", args->filter, "Run only the workloads whose names match this regular expression")
         ->capture_default_str();
+    command->add_flag("--quick", args->quick,
+                      "1 run after the warm-up, 160x90, 1 spp, smaller blob scenes: the suite in under a minute");
+    command->add_flag("--list", args->list, "List the workload names and exit");
+    command->add_flag("--scaling", args->scaling,
+                      "Also measure the cost per ray and bytes per element of generated blob groups, 1k to "
+                      "--scaling-max elements at a fixed density");
+    args->scaling_max_option =
+        command->add_option("--scaling-max", args->scaling_max, "Largest element count of --scaling (--quick: 100000)")
+            ->capture_default_str()
+            ->check(CLI::Range(std::size_t(1000), std::size_t(100'000'000)));
     args->tessellation.add_to(*command);
     command->add_option("--json", args->json, "Also write the results as JSON to this file");
+    command->add_option("--report", args->report, "Also write an HTML page with the results as plots to this file");
     command->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
     return [args] { return run_bench(*args); };
 }

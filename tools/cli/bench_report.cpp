@@ -2,22 +2,12 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <thread>
+
+#include "tools/cli/machine_description.h"
 
 namespace isotrace::cli {
 namespace {
-
-std::string cpu_model() {
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(cpuinfo, line))
-        if (line.rfind("model name", 0) == 0) {
-            const std::size_t colon = line.find(':');
-            return colon == std::string::npos ? line : line.substr(line.find_first_not_of(' ', colon + 1));
-        }
-    return "unknown";
-}
 
 nlohmann::json runs_json(const std::vector<RayCastTiming>& timings) {
     nlohmann::json runs = nlohmann::json::array();

@@ -1,5 +1,6 @@
 #pragma once
-// The results of isotrace bench as a table for people and as JSON for scripts (schema in docs/cli.md).
+// The results of the blob direct-vs-tessellated comparison (the workload blobs/direct_vs_tessellated of isotrace
+// bench) as a table for people and as JSON for scripts (schema in docs/cli.md).
 #include <nlohmann/json.hpp>
 
 #include <string>

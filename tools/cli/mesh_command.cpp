@@ -13,13 +13,12 @@
 #include "geometry/polygonize/implicit_field_registry.h"
 #include "geometry/polygonize/mesh_error.h"
 #include "geometry/polygonize/polygonize_field.h"
-#include "geometry/polygonize/transformed_field.h"
-#include "renderer/core/did_you_mean.h"
 #include "renderer/core/input_error.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/obj_writer.h"
+#include "tools/cli/object_field.h"
 #include "tools/cli/ply_writer.h"
 #include "tools/cli/thread_limit.h"
 
@@ -38,27 +37,6 @@ struct MeshArguments {
     int threads = 0;
     bool quiet = false;
 };
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-    return list;
-}
-
-const SceneObject& find_object(const RenderScene& scene, const std::string& name, const std::string& file) {
-    std::vector<std::string> names;
-    for (const SceneObject& object : scene.objects()) {
-        if (object.name == name) return object;
-        names.push_back(object.name);
-    }
-    throw InputError({}, "--object",
-                     "no object \"" + name + "\" in " + file + did_you_mean(name, names) + "; objects: " + joined(names));
-}
-
-// An object's field in world space (an instanced object's shape is in object space).
-std::unique_ptr<ImplicitField> placed(const SceneObject& object, std::unique_ptr<ImplicitField> field) {
-    return object.instanced ? transformed_field(std::move(field), object.to_world) : std::move(field);
-}
 
 struct ObjectField {
     const SceneObject* object;
@@ -87,22 +65,8 @@ ObjectField only_implicit_object(const RenderScene& scene, const std::string& fi
     }
     throw InputError({}, "--object",
                      implicit.empty() ? file + " has no object with an implicit surface"
-                                      : file + " has several objects with an implicit surface (" + joined(names) +
+                                      : file + " has several objects with an implicit surface (" + joined_names(names) +
                                             "): name one with --object");
-}
-
-std::unique_ptr<ImplicitField> field_of(const SceneObject& object) {
-    std::unique_ptr<ImplicitField> field;
-    try {
-        field = implicit_field_of(*object.shape);
-    } catch (const std::invalid_argument& error) {
-        throw InputError({}, "--object", "object \"" + object.name + "\": " + error.what());
-    }
-    if (!field)
-        throw InputError({}, "--object", "object \"" + object.name + "\" is a \"" + object.shape->type_name() +
-                                             "\", which is not an implicit surface; these are: " +
-                                             joined(implicit_shape_types()) + " (objects traced as triangles: --method traced)");
-    return placed(object, std::move(field));
 }
 
 PolygonizeOptions options_from(const MeshArguments& args) {

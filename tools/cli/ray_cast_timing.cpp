@@ -10,9 +10,7 @@
 #include "renderer/embree/embree_device.h"
 
 namespace isotrace::cli {
-namespace {
 
-// Runs trace(timing, scene index) for every scene, `repeats` times with the scenes taking turns, timing each call.
 std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, int repeats,
                                              const std::function<void(RayCastTiming&, std::size_t)>& trace) {
     std::vector<RayCastTiming> timings(scenes);
@@ -26,15 +24,6 @@ std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, in
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         }
     return timings;
-}
-
-}  // namespace
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    if (n == 0) return 0;
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 double RayCastTiming::median_seconds() const { return median(seconds); }

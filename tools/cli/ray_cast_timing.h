@@ -3,10 +3,12 @@
 // first hit, with its view depth: the depth map of renderer/render/depth_map.h) or a fixed list of secondary rays
 // (occlusion queries for shadow rays, nearest-hit queries for bounces).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "renderer/core/ray.h"
 #include "renderer/render/depth_map.h"
+#include "tools/cli/bench_statistics.h"
 
 namespace isotrace::cli {
 
@@ -23,6 +25,12 @@ struct RayCastTiming {
     double nanoseconds_per_ray() const { return median_seconds() / double(rays()) * 1e9; }
 };
 
+// Runs trace(timing, i) for every i < `scenes`, `repeats` times with the scenes taking turns, each call timed
+// inside a TBB arena of `threads` threads (the timing's seconds get one entry per run; trace sets ray_count and
+// its results). The other workloads of isotrace bench (path tracing, polygonising) time their runs with it too.
+std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, int repeats,
+                                             const std::function<void(RayCastTiming&, std::size_t)>& trace);
+
 // `repeats` runs of every scene inside a TBB arena of `threads` threads, one timing per scene. Within each repeat
 // the scenes take turns, so that a machine whose speed drifts (a shared VM) slows them alike and the ratios of
 // run i stay comparable.
@@ -34,7 +42,5 @@ enum class SecondaryQuery { Occlusion, NearestHit };
 std::vector<RayCastTiming> time_secondary_rays(const std::vector<const LoadedScene*>& scenes,
                                                const std::vector<Ray>& rays, SecondaryQuery query, int threads,
                                                int repeats);
-
-double median(std::vector<double> values);
 
 }  // namespace isotrace::cli

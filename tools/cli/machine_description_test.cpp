@@ -1,0 +1,34 @@
+#include "tools/cli/machine_description.h"
+
+#include <gtest/gtest.h>
+
+namespace isotrace::cli {
+namespace {
+
+TEST(MachineDescription, HasEveryField) {
+    const nlohmann::json machine = machine_description();
+    for (const char* key : {"cpu", "cores", "embree_isa", "embree_native_packets", "embree_version", "compiler",
+                            "flags", "build_type", "isotrace_version", "commit"})
+        EXPECT_TRUE(machine.contains(key)) << key;
+    EXPECT_GE(machine["cores"].get<unsigned>(), 1u);
+    EXPECT_FALSE(machine["compiler"].get<std::string>().empty());
+    EXPECT_EQ(machine["embree_version"].get<std::string>().substr(0, 2), "3.");
+    const std::string commit = machine["commit"].get<std::string>();
+    EXPECT_TRUE(commit == "unknown" || commit.size() == 40) << commit;
+}
+
+TEST(MachineDescription, IsaFromCpuFlags) {
+    EXPECT_EQ(isa_from_cpu_flags("fpu sse sse2"), "SSE2");
+    EXPECT_EQ(isa_from_cpu_flags("sse2 ssse3 sse4_1 sse4_2"), "SSE4.2");
+    EXPECT_EQ(isa_from_cpu_flags("sse2 sse4_2 avx"), "AVX");
+    EXPECT_EQ(isa_from_cpu_flags("sse2 sse4_2 avx avx2 fma bmi1 bmi2 lzcnt"), "AVX2");
+    EXPECT_EQ(isa_from_cpu_flags("sse2 sse4_2 avx avx2 fma bmi1 bmi2 abm"), "AVX2");
+    EXPECT_EQ(isa_from_cpu_flags("sse2 avx avx2"), "AVX");  // AVX2 without FMA and BMI: Embree's AVX2 target needs them
+    EXPECT_EQ(isa_from_cpu_flags("sse2 avx avx2 fma bmi1 bmi2 abm avx512f avx512dq avx512cd avx512bw avx512vl"),
+              "AVX512SKX");
+    EXPECT_EQ(isa_from_cpu_flags(""), "unknown");
+    EXPECT_EQ(isa_from_cpu_flags("avx2x sse2y"), "unknown");  // whole words only
+}
+
+}  // namespace
+}  // namespace isotrace::cli
