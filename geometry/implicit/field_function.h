@@ -32,7 +32,10 @@ struct FieldPiece {
 struct FieldPieces {
     std::array<FieldPiece, 2> pieces{};
     int count = 0;
-    std::span<const FieldPiece> span() const { return {pieces.data(), std::size_t(count)}; }
+    std::span<const FieldPiece> span() const& { return {pieces.data(), std::size_t(count)}; }
+    // A span of a temporary dangles at the end of the full expression (`for (p : f.pieces(R).span())`, found
+    // twice by AddressSanitizer in tests): keep the pieces in a variable.
+    std::span<const FieldPiece> span() const&& = delete;
 };
 
 class FieldFunction {
