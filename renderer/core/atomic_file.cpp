@@ -4,8 +4,10 @@
 #include <sys/random.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <climits>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -56,7 +58,47 @@ void write_all(int fd, std::string_view bytes, const std::filesystem::path& targ
     }
 }
 
+// Temporary paths of the writes in progress, for remove_temporary_files_in_progress(). A slot is Free, then
+// Filling while its owner copies the path in, then Live until the temporary file is renamed or removed; a
+// signal handler only reads Live slots. More concurrent writes than slots go untracked (none in practice).
+class TemporaryFileRegistry {
+public:
+    // Returns the slot index, or -1 if none is free or the path does not fit.
+    int publish(const std::filesystem::path& temporary) noexcept {
+        const std::string& text = temporary.native();
+        if (text.size() >= PATH_MAX) return -1;
+        for (int i = 0; i < kSlots; ++i) {
+            int expected = kFree;
+            if (!slots_[i].state.compare_exchange_strong(expected, kFilling)) continue;
+            std::memcpy(slots_[i].path, text.c_str(), text.size() + 1);
+            slots_[i].state.store(kLive);
+            return i;
+        }
+        return -1;
+    }
+    void withdraw(int slot) noexcept {
+        if (slot >= 0) slots_[slot].state.store(kFree);
+    }
+    void remove_live_files() noexcept {
+        for (Slot& slot : slots_)
+            if (slot.state.load() == kLive) ::unlink(slot.path);
+    }
+
+private:
+    static constexpr int kSlots = 8, kFree = 0, kFilling = 1, kLive = 2;
+    static_assert(std::atomic<int>::is_always_lock_free, "slot states are read in signal handlers");
+    struct Slot {
+        std::atomic<int> state{kFree};
+        char path[PATH_MAX];
+    };
+    Slot slots_[kSlots];
+};
+
+TemporaryFileRegistry g_temporaries;
+
 }  // namespace
+
+void remove_temporary_files_in_progress() noexcept { g_temporaries.remove_live_files(); }
 
 void check_atomically_writable(const std::filesystem::path& target) {
     std::error_code ignored;
@@ -70,6 +112,7 @@ void check_atomically_writable(const std::filesystem::path& target) {
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes) {
     std::filesystem::path temporary;
     int fd = create_temporary(target, temporary);
+    const int slot = g_temporaries.publish(temporary);
     try {
         write_all(fd, bytes, target);
         if (::fsync(fd) != 0) fail(target, "flushing to disk failed", errno);
@@ -77,9 +120,11 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
         fd = -1;
         if (closed != 0) fail(target, "closing failed", errno);
         if (::rename(temporary.c_str(), target.c_str()) != 0) fail(target, "cannot rename the temporary file", errno);
+        g_temporaries.withdraw(slot);
     } catch (...) {
         if (fd >= 0) ::close(fd);
         ::unlink(temporary.c_str());
+        g_temporaries.withdraw(slot);
         throw;
     }
 }

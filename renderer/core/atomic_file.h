@@ -12,6 +12,11 @@ namespace isotrace {
 // and throws std::runtime_error naming the target and the reason.
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes);
 
+// Async-signal-safe: removes the temporary siblings of the write_file_atomically calls in progress, for a signal
+// handler that ends the process at once (so that a second Ctrl-C or SIGTERM during a write leaves nothing behind).
+// Each call in progress publishes its temporary path in a fixed table of slots readable without locks.
+void remove_temporary_files_in_progress() noexcept;
+
 // Checks before any long work that write_file_atomically(target, ...) can succeed as far as permissions go: the
 // target is not a directory and a file can be created beside it (found by creating and removing an empty probe,
 // which also catches read-only file systems and ACLs, even for root). Throws std::runtime_error saying why not.

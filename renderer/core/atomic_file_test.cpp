@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -104,6 +105,38 @@ TEST(WriteFileAtomically, FileSizeLimitLeavesNeitherTargetNorTemporaryAndKeepsTh
     EXPECT_NE(error.find("out.png"), std::string::npos) << "no error naming the target: \"" << error << "\"";
     EXPECT_EQ(read_file(target), "previous render");
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.png"});
+}
+
+// A signal handler that ends the process in the middle of a write (a second Ctrl-C) removes the temporary file
+// first. The signal here is SIGXFSZ, raised by a file-size limit inside write(), so it arrives deterministically
+// while the temporary file exists; the child process ends from the handler like isotrace's second signal does.
+extern "C" void remove_temporaries_and_exit(int) {
+    remove_temporary_files_in_progress();
+    ::_exit(42);
+}
+
+TEST(WriteFileAtomically, SignalHandlerRemovesTheTemporaryFileOfAWriteInProgress) {
+    TemporaryDirectory dir("atomic");
+    const fs::path target = dir / "out.exr";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::signal(SIGXFSZ, remove_temporaries_and_exit);
+        rlimit small{};
+        ::getrlimit(RLIMIT_FSIZE, &small);
+        small.rlim_cur = 4096;
+        ::setrlimit(RLIMIT_FSIZE, &small);
+        try {
+            write_file_atomically(target, std::string(1 << 20, 'x'));
+        } catch (...) {
+        }
+        ::_exit(1);  // the handler did not run
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 42);
+    EXPECT_TRUE(dir.entries().empty()) << dir.entries().front();
 }
 
 }  // namespace

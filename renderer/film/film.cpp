@@ -1,7 +1,10 @@
 #include "renderer/film/film.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "renderer/core/memory_budget.h"
 
@@ -61,6 +64,63 @@ void Film::add_sample(int x, int y, const CameraSample& sample) {
 }
 
 std::uint32_t Film::sample_count(int x, int y) const { return beauty_[index(x, y)].samples; }
+
+SampleCountRange Film::sample_count_range() const {
+    SampleCountRange range;
+    if (beauty_.empty()) return range;
+    range.min = range.max = beauty_.front().samples;
+    for (const Accumulator& p : beauty_) {
+        range.min = std::min(range.min, p.samples);
+        range.max = std::max(range.max, p.samples);
+        range.total += p.samples;
+    }
+    return range;
+}
+
+// Field by field (struct padding is not data), in declaration order, in the machine's byte order.
+template <class Self, class Visit>
+void Film::visit_state(Self& film, Visit&& visit) {
+    for (auto& p : film.beauty_) {
+        visit(p.weight);
+        visit(p.weight_squared);
+        for (auto& v : p.rgb) visit(v);
+        for (auto& v : p.rgb_squared) visit(v);
+        visit(p.coverage);
+        visit(p.samples);
+    }
+    for (auto& a : film.aovs_) {
+        for (auto& v : a.albedo) visit(v);
+        for (auto& v : a.normal) visit(v);
+        for (auto& v : a.position) visit(v);
+        visit(a.depth);
+        visit(a.hit_weight);
+        visit(a.nearest_offset);
+        visit(a.object_id);
+        visit(a.primitive_id);
+    }
+}
+
+std::string Film::state() const {
+    std::string bytes;
+    bytes.reserve(beauty_.size() * (11 * sizeof(double) + sizeof(std::uint32_t)));
+    visit_state(*this, [&](const auto& field) {
+        bytes.append(reinterpret_cast<const char*>(&field), sizeof field);
+    });
+    return bytes;
+}
+
+void Film::restore_state(std::string_view bytes) {
+    std::size_t needed = 0;
+    visit_state(*this, [&](auto& field) { needed += sizeof field; });
+    if (bytes.size() != needed)
+        throw std::invalid_argument("film state: " + std::to_string(bytes.size()) + " bytes where these film settings need " +
+                                    std::to_string(needed));
+    std::size_t at = 0;
+    visit_state(*this, [&](auto& field) {
+        std::memcpy(&field, bytes.data() + at, sizeof field);
+        at += sizeof field;
+    });
+}
 
 ImageBuffer Film::resolve() const {
     ImageBuffer image;

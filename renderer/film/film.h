@@ -4,6 +4,7 @@
 // thread, so the result is independent of thread count and tile size.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "renderer/film/aov.h"
@@ -36,6 +37,12 @@ struct ImageBuffer {
     float* pixel(int x, int y) { return pixels.data() + (std::size_t(y) * width + x) * channels.size(); }
 };
 
+// Per-pixel sample counts over the film: a render stopped mid-pass leaves min < max.
+struct SampleCountRange {
+    std::uint32_t min = 0, max = 0;
+    std::uint64_t total = 0;
+};
+
 struct CameraSample {
     Rgb radiance;
     float filter_weight = 1;
@@ -57,6 +64,13 @@ public:
     // x, y in full-raster pixels inside bounds(). Not thread-safe per pixel (one thread owns a pixel).
     void add_sample(int x, int y, const CameraSample& sample);
     std::uint32_t sample_count(int x, int y) const;
+    SampleCountRange sample_count_range() const;
+
+    // The accumulators exactly (doubles, counts, ids), for checkpoints: restore_state(state()) on a film with the
+    // same settings gives a film that continues bit-identically. restore_state throws std::invalid_argument if
+    // the bytes do not have the size these settings need.
+    std::string state() const;
+    void restore_state(std::string_view bytes);
 
     // Beauty RGBA followed by the AOV channels in the order requested.
     ImageBuffer resolve() const;
@@ -78,6 +92,10 @@ private:
     std::size_t index(int x, int y) const {
         return std::size_t(y - settings_.crop.y0) * std::size_t(settings_.crop.width()) + std::size_t(x - settings_.crop.x0);
     }
+
+    // Calls visit(field) for every accumulator field; Self is Film or const Film.
+    template <class Self, class Visit>
+    static void visit_state(Self& film, Visit&& visit);
 
     FilmSettings settings_;
     std::vector<Accumulator> beauty_;

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <stdexcept>
 #include <limits>
 #include <string>
 #include <vector>
@@ -225,6 +227,55 @@ TEST(Film, AovTableMatchesParsing) {
     EXPECT_EQ(parse_aov_list("depth,albedo,depth", "test"), (std::vector<Aov>{Aov::Depth, Aov::Albedo}));
     EXPECT_EQ(parse_aov_list("all", "test").size(), all_aovs().size());
     EXPECT_THROW(parse_aov_list("albdo", "test"), InputError);
+}
+
+// A film restored from state() continues exactly as the original: the same further samples give the same bits,
+// in every channel (accumulated doubles, counts, nearest-sample ids).
+TEST(Film, StateRestoresEveryAccumulatorExactly) {
+    const FilmSettings s = settings(3, 2, {Aov::Albedo, Aov::Depth, Aov::ObjectId,
+                                           Aov::SampleCount, Aov::Variance});
+    Film original(s);
+    const auto feed = [](Film& film, int round) {
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 3; ++x)
+                if ((x + y + round) % 3 != 0)
+                    film.add_sample(x, y, hit(Rgb(0.1f * float(round) + 1.0f / 3, 0.7f / float(x + 1), 1e-3f * float(y)),
+                                              0.3f + 0.1f * float(round), 1.5f + float(x), std::uint32_t(round),
+                                              std::uint32_t(x), 0.01f * float((round * 7) % 5)));
+        film.add_sample(0, 0, miss(Rgb(2, 2, 2), 0.9f));
+    };
+    for (int round = 0; round < 3; ++round) feed(original, round);
+    Film restored(s);
+    restored.restore_state(original.state());
+    EXPECT_EQ(restored.state(), original.state());
+    for (int round = 3; round < 6; ++round) {
+        feed(original, round);
+        feed(restored, round);
+    }
+    const ImageBuffer a = original.resolve(), b = restored.resolve();
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0);
+    EXPECT_EQ(restored.sample_count_range().total, original.sample_count_range().total);
+}
+
+TEST(Film, StateOfOtherSettingsIsRefused) {
+    Film small(settings(2, 2)), large(settings(3, 2)), with_aovs(settings(2, 2, {Aov::Normal}));
+    EXPECT_THROW(large.restore_state(small.state()), std::invalid_argument);
+    EXPECT_THROW(with_aovs.restore_state(small.state()), std::invalid_argument);
+    EXPECT_THROW(small.restore_state(small.state() + "x"), std::invalid_argument);
+    EXPECT_NO_THROW(small.restore_state(Film(settings(2, 2)).state()));
+}
+
+TEST(Film, SampleCountRangeSpansThePixels) {
+    Film film(settings(2, 2));
+    EXPECT_EQ(film.sample_count_range().max, 0u);
+    film.add_sample(1, 0, miss(Rgb(1, 1, 1)));
+    film.add_sample(1, 0, miss(Rgb(1, 1, 1)));
+    film.add_sample(0, 1, miss(Rgb(1, 1, 1)));
+    const SampleCountRange range = film.sample_count_range();
+    EXPECT_EQ(range.min, 0u);
+    EXPECT_EQ(range.max, 2u);
+    EXPECT_EQ(range.total, 3u);
 }
 
 }  // namespace

@@ -19,6 +19,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Why the tiles were told to stop taking samples. Cancel and Deadline end the render; Checkpoint pauses it.
+enum class Stop : int { None, Checkpoint, Deadline, Cancel };
+
 std::vector<PixelBounds> make_tiles(const PixelBounds& area, int tile_size) {
     std::vector<PixelBounds> tiles;
     for (int y = area.y0; y < area.y1; y += tile_size)
@@ -27,16 +30,28 @@ std::vector<PixelBounds> make_tiles(const PixelBounds& area, int tile_size) {
     return tiles;
 }
 
-// Takes samples [first, last) of every pixel of `tile`, in sample order per pixel. Checks for cancellation
-// before each row (a tile at high spp may take seconds); returns false if it stopped early.
-template <class CancelCheck>
-bool render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile, int first, int last,
-                 const CancelCheck& cancelled) {
+// The flags a tile reads before each sample: the watcher's, and the caller's cancel flag directly, so that a
+// cancellation takes effect without waiting for the watcher's next tick.
+struct StopFlags {
+    const std::atomic<int>& stop;
+    const std::atomic<bool>* cancel;
+    bool raised() const {
+        return stop.load(std::memory_order_relaxed) != int(Stop::None) ||
+               (cancel && cancel->load(std::memory_order_relaxed));
+    }
+};
+
+// Brings every pixel of `tile` up to `last` samples, continuing from the samples it already has, in sample
+// order. Reads the stop flags before each sample (two relaxed loads), so even a tile at high spp stops within one
+// sample; returns the samples it took.
+std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile, std::uint32_t last,
+                         const StopFlags& flags) {
+    std::int64_t taken = 0;
     for (int y = tile.y0; y < tile.y1; ++y) {
-        if (cancelled()) return false;
         for (int x = tile.x0; x < tile.x1; ++x) {
-            for (int s = first; s < last; ++s) {
-                SampleStream samples(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), std::uint32_t(s)});
+            for (std::uint32_t s = film.sample_count(x, y); s < last; ++s) {
+                if (flags.raised()) return taken;
+                SampleStream samples(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), s});
                 const FilterSample offset = loaded.filter->sample(samples.next_2d());
                 const Ray ray = loaded.camera->generate_ray(float(x) + 0.5f + offset.dx, float(y) + 0.5f + offset.dy,
                                                             samples.next_2d());
@@ -51,37 +66,76 @@ bool render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile,
                     sample.radiance = Rgb();
                 }
                 film.add_sample(x, y, sample);
+                ++taken;
             }
         }
     }
-    return true;
+    return taken;
 }
 
-// Reports progress from its own thread while the render runs.
-class ProgressReporter {
+// A thread that, every few milliseconds, turns the cancel flag, the time budget and the checkpoint interval
+// into the one stop flag the tiles read, and reports progress about 5 times a second.
+class RenderWatcher {
 public:
-    ProgressReporter(const RenderOptions& options, std::function<RenderProgress()> snapshot)
-        : options_(options), snapshot_(std::move(snapshot)) {
-        if (options_.on_progress) thread_ = std::thread([this] { run(); });
+    RenderWatcher(const RenderOptions& options, std::atomic<int>& stop, std::function<double()> elapsed,
+                  std::function<RenderProgress()> snapshot)
+        : options_(options), stop_(stop), elapsed_(std::move(elapsed)), snapshot_(std::move(snapshot)) {
+        next_checkpoint_ = options_.checkpoint_interval_seconds.value_or(0);
+        thread_ = std::thread([this] { run(); });
     }
-    ~ProgressReporter() {
+    ~RenderWatcher() {
         {
             std::lock_guard lock(mutex_);
             done_ = true;
         }
         wake_.notify_all();
-        if (thread_.joinable()) thread_.join();
+        thread_.join();
+    }
+
+    // Called after a checkpoint was written: lifts the pause (unless something more important came meanwhile).
+    void checkpoint_written() {
+        next_checkpoint_ = elapsed_() + *options_.checkpoint_interval_seconds;
+        int expected = int(Stop::Checkpoint);
+        stop_.compare_exchange_strong(expected, int(Stop::None));
+    }
+
+    // The checks the thread makes, also made by the rendering thread before each pass.
+    void check() {
+        if (options_.cancel && options_.cancel->load(std::memory_order_relaxed)) {
+            stop_ = int(Stop::Cancel);
+            return;
+        }
+        const double now = elapsed_();
+        if (options_.time_budget_seconds && now >= *options_.time_budget_seconds) {
+            raise(Stop::Deadline);
+            return;
+        }
+        if (options_.on_checkpoint && options_.checkpoint_interval_seconds && now >= next_checkpoint_.load())
+            raise(Stop::Checkpoint);
     }
 
 private:
+    void raise(Stop reason) {  // a stronger reason replaces a weaker one, never the other way round
+        int current = stop_.load();
+        while (current < int(reason) && !stop_.compare_exchange_weak(current, int(reason))) {
+        }
+    }
+
     void run() {
+        constexpr auto kTick = std::chrono::milliseconds(10);
+        constexpr int kTicksPerReport = 20;
         std::unique_lock lock(mutex_);
-        while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return done_; }))
-            options_.on_progress(snapshot_());
+        for (int tick = 1; !wake_.wait_for(lock, kTick, [this] { return done_; }); ++tick) {
+            check();
+            if (options_.on_progress && tick % kTicksPerReport == 0) options_.on_progress(snapshot_());
+        }
     }
 
     const RenderOptions& options_;
+    std::atomic<int>& stop_;
+    std::function<double()> elapsed_;
     std::function<RenderProgress()> snapshot_;
+    std::atomic<double> next_checkpoint_{0};
     std::mutex mutex_;
     std::condition_variable wake_;
     bool done_ = false;
@@ -90,23 +144,28 @@ private:
 
 }  // namespace
 
-RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& options) {
+RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& options, std::unique_ptr<Film> film) {
     RenderResult result;
-    result.film = std::make_unique<Film>(loaded.film);
+    result.film = film ? std::move(film) : std::make_unique<Film>(loaded.film);
     const std::vector<PixelBounds> tiles = make_tiles(loaded.film.crop, std::max(1, options.tile_size));
     const std::int64_t pixels = loaded.film.crop.area();
     const auto start = Clock::now();
-    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    const auto elapsed = [start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
-    std::atomic<std::int64_t> pixel_samples_done{0};
-    std::atomic<int> completed_spp{0};  // result.completed_spp, readable from the progress thread
+    const SampleCountRange initial = result.film->sample_count_range();
+    std::atomic<std::int64_t> samples_taken{0};  // in this call
+    std::atomic<int> completed_spp{int(initial.min)};  // readable from the watcher thread
     const double budget = options.time_budget_seconds.value_or(0);
-    const auto cancelled = [&] { return options.cancel && options.cancel->load(std::memory_order_relaxed); };
+    std::atomic<int> stop{int(Stop::None)};
+    const StopFlags flags{stop, options.cancel};
 
-    ProgressReporter reporter(options, [&] {
+    const auto snapshot = [&] {
         RenderProgress progress;
         progress.elapsed_seconds = elapsed();
-        const double sample_fraction = double(pixel_samples_done.load()) / (double(pixels) * options.spp);
+        progress.time_budget_seconds = options.time_budget_seconds;
+        const double planned = double(pixels) * options.spp;
+        const double sample_fraction = std::min(
+            1.0, (double(initial.total) + double(samples_taken.load())) / std::max(1.0, planned));
         progress.fraction = options.time_budget_seconds
                                 ? std::max(sample_fraction, std::min(1.0, progress.elapsed_seconds / budget))
                                 : sample_fraction;
@@ -115,44 +174,61 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
         progress.rays = counters::totals().total_rays();
         progress.completed_spp = completed_spp.load();
         return progress;
-    });
+    };
+    std::optional<RenderWatcher> watch(std::in_place, options, stop, elapsed, snapshot);
+    RenderWatcher& watcher = *watch;
 
-    while (result.completed_spp < options.spp && !cancelled()) {
+    for (;;) {
+        const int completed = int(result.film->sample_count_range().min);
+        completed_spp = completed;
+        if (completed >= options.spp) break;
+        watcher.check();
+        if (stop == int(Stop::Checkpoint)) {
+            options.on_checkpoint(*result.film);
+            ++result.checkpoints;
+            watcher.checkpoint_written();
+            continue;
+        }
+        if (stop != int(Stop::None)) break;
         // Pass sizes double (1, 1, 2, 4, ...) so early passes give a quick preview; under a time budget the
-        // next pass is shrunk to what the measured speed says still fits.
-        int pass_spp = std::min(options.spp - result.completed_spp, std::max(1, result.completed_spp));
-        if (options.time_budget_seconds && result.completed_spp > 0) {
-            const double per_spp = elapsed() / result.completed_spp;
-            const double fits = (budget - elapsed()) / per_spp;
+        // next pass is shrunk to what the measured speed says still fits, so that most budgets end on a whole
+        // pass. (The budget is hard either way: a pass that overruns is stopped within a sample.)
+        int pass_spp = std::min(options.spp - completed, std::max(1, completed));
+        if (options.time_budget_seconds && samples_taken > 0) {
+            const double seconds_per_spp = elapsed() * double(pixels) / double(samples_taken.load());
+            const double fits = (budget - elapsed()) / seconds_per_spp;
             if (!(fits >= 1)) break;
             pass_spp = int(std::min(double(pass_spp), fits));  // compare as doubles: fits may exceed INT_MAX
         }
-        const int first = result.completed_spp, last = first + pass_spp;
-        std::atomic<bool> skipped_tile{false};
+        const std::uint32_t last = std::uint32_t(completed + pass_spp);
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& range) {
                 enable_flush_to_zero();
-                for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                    if (!render_tile(loaded, *result.film, tiles[t], first, last, cancelled)) {
-                        skipped_tile = true;
-                        continue;
-                    }
-                    pixel_samples_done += tiles[t].area() * pass_spp;
-                }
+                for (std::size_t t = range.begin(); t != range.end(); ++t)
+                    samples_taken += render_tile(loaded, *result.film, tiles[t], last, flags);
             },
             tbb::simple_partitioner());
         ++result.passes;
-        if (skipped_tile) {
-            result.partial = true;
-            break;
-        }
-        result.completed_spp = last;
-        completed_spp = last;
-        if (options.time_budget_seconds && elapsed() >= budget) break;
     }
-    result.cancelled = cancelled();
+    watcher.check();  // a cancellation seen by the tiles but not yet by the watcher
+    watch.reset();    // no more reports from the watcher thread
+    const SampleCountRange counts = result.film->sample_count_range();
+    result.completed_spp = int(counts.min);
+    result.max_spp = int(counts.max);
+    result.partial = counts.min != counts.max;
+    result.cancelled = stop == int(Stop::Cancel);
+    result.out_of_time = options.time_budget_seconds && result.completed_spp < options.spp && !result.cancelled;
     result.seconds = elapsed();
+    if (options.on_progress) {  // the last report: 100 % unless the render was cancelled
+        RenderProgress last = snapshot();
+        last.completed_spp = result.completed_spp;
+        if (!result.cancelled) {
+            last.fraction = 1;
+            last.eta_seconds = 0;
+        }
+        options.on_progress(last);
+    }
     return result;
 }
 

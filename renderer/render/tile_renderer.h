@@ -1,6 +1,9 @@
 #pragma once
-// Renders a loaded scene: progressive passes over TBB-scheduled tiles, with sample-count and time budgets
-// and cooperative cancellation (Ctrl-C). Results do not depend on thread count or tile size.
+// Renders a loaded scene: progressive passes over TBB-scheduled tiles, with sample-count and hard time budgets,
+// cooperative cancellation (Ctrl-C, SIGTERM) and pauses for checkpoints. Every stop is sample-granular: a
+// watcher thread raises one flag that the tiles read before each sample. A pixel's samples are always taken in
+// index order, continuing from the sample count the film already holds, so the image depends only on each pixel's
+// final sample count — not on thread count, tile size, when the render stopped, or how often it was resumed.
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -17,26 +20,36 @@ struct RenderProgress {
     double elapsed_seconds = 0;
     double eta_seconds = -1;       // < 0 when unknown
     std::uint64_t rays = 0;
-    int completed_spp = 0;
+    int completed_spp = 0;         // samples every pixel has
+    std::optional<double> time_budget_seconds;
 };
 
 struct RenderOptions {
     int tile_size = 32;
     int spp = 16;                                  // sample budget per pixel
-    std::optional<double> time_budget_seconds;     // stop after the pass in which the budget runs out
-    const std::atomic<bool>* cancel = nullptr;     // set asynchronously to stop at the next tile
+    std::optional<double> time_budget_seconds;     // hard: the render stops within a sample of running out
+    const std::atomic<bool>* cancel = nullptr;     // set asynchronously to stop within a sample
     std::function<void(const RenderProgress&)> on_progress;  // called about 5 times a second from one thread
+    // Called from the rendering thread with the film in a consistent state (no sample in flight) every
+    // checkpoint_interval_seconds of rendering; the render waits while it runs.
+    std::optional<double> checkpoint_interval_seconds;
+    std::function<void(const Film&)> on_checkpoint;
 };
 
 struct RenderResult {
     std::unique_ptr<Film> film;
     int completed_spp = 0;   // samples every pixel received
-    bool partial = false;    // cancelled mid-pass: some pixels have more samples than completed_spp
+    int max_spp = 0;         // samples the most-sampled pixel received
+    bool partial = false;    // stopped mid-pass: pixels have between completed_spp and max_spp samples
     bool cancelled = false;
-    int passes = 0;
+    bool out_of_time = false;  // the time budget ended the render
+    int passes = 0;            // passes started in this call
+    int checkpoints = 0;       // on_checkpoint calls
     double seconds = 0;
 };
 
-RenderResult render_scene(const LoadedScene& scene, const RenderOptions& options);
+// Continues `film` when given (a resumed checkpoint: its per-pixel sample counts say where each pixel goes on);
+// otherwise starts a new film.
+RenderResult render_scene(const LoadedScene& scene, const RenderOptions& options, std::unique_ptr<Film> film = {});
 
 }  // namespace isotrace

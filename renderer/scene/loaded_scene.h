@@ -1,6 +1,7 @@
 #pragma once
 // Everything a render needs, created from one scene file.
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -47,6 +48,7 @@ struct LoadedScene {
     std::uint64_t seed = 0;
     std::string camera_type, integrator_type, sampler_type, filter_type;
     std::string display, view;  // for display-referred outputs; empty = the config's defaults
+    std::vector<std::filesystem::path> referenced_files;  // external files the scene names, sorted
     double parse_seconds = 0;   // reading and validating the file, creating plugins and loading meshes
 };
 

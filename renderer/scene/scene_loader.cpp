@@ -235,6 +235,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
 
     loaded->scene = std::make_unique<RenderScene>();
     load_content(root, overrides, *loaded->scene);
+    loaded->referenced_files = context->files->sorted();
     loaded->parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     loaded->scene->commit();

@@ -232,6 +232,7 @@ std::filesystem::path SceneNode::file_path(const std::string& key) const {
     std::error_code error;
     if (!std::filesystem::is_regular_file(resolved, error))
         fail_at(key, "file not found: " + resolved.string());
+    context_->files->add(resolved);
     return resolved;
 }
 

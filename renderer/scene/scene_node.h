@@ -16,6 +16,7 @@
 #include "renderer/math/rgb.h"
 #include "renderer/math/vec3.h"
 #include "renderer/scene/json_document.h"
+#include "renderer/scene/referenced_files.h"
 
 namespace isotrace {
 
@@ -27,6 +28,7 @@ struct SceneFileContext {
     std::filesystem::path directory;    // external files resolve relative to this
     const ColourSystem* colours = nullptr;
     std::shared_ptr<MemoryBudget> memory = std::make_shared<MemoryBudget>();  // large allocations are charged here
+    std::shared_ptr<ReferencedFiles> files = std::make_shared<ReferencedFiles>();  // every file_path() resolved
 };
 
 // Accepted range of a number; open ends exclude the bound.

@@ -141,7 +141,7 @@ case_help() {
 
 case_render_help() {
   cli_expect 0 render --help
-  for option in --output --spp --res --threads --seed --aov --stats-json --time --tile-size --quiet; do
+  for option in --output --spp --res --threads --seed --aov --stats-json --time --checkpoint --checkpoint-every --resume --tile-size --quiet; do
     expect_in "$work/stdout" "$option" "render --help output"
   done
 }
@@ -377,6 +377,179 @@ case_interrupt() {
   echo "interrupted render: isotrace:spp $spp, isotrace:partial $partial" >&2
   ((spp < 100000)) || fail "isotrace:spp is $spp after an interrupted render"
   ((partial == 1 || spp > 0)) || fail "neither a partial image nor a completed pass (spp $spp, partial $partial)"
+}
+
+# ---- long renders: hard budgets, signals, checkpoints (issue 16) -------------------------------------------
+
+# start_render <stderr file> <isotrace render arguments...>: starts a render in the background, sets $pid, and
+# returns once it has loaded the scene (isotrace prints "... loaded in ..." just before it starts rendering).
+start_render() {
+  local err=$1 waited=0
+  shift
+  "$cli" render "$@" >"$work/stdout" 2>"$err" &
+  pid=$!
+  until grep -q "loaded in" "$err"; do
+    kill -0 "$pid" 2>/dev/null || { cat "$err" >&2; fail "isotrace ended before rendering"; }
+    ((waited++ < 300)) || { kill -KILL "$pid"; fail "scene did not load within 30 s"; }
+    sleep 0.1
+  done
+}
+
+# wait_exit <seconds>: waits for $pid (killing it after that long), sets $status.
+wait_exit() {
+  local waited=0
+  while kill -0 "$pid" 2>/dev/null; do
+    ((waited++ < $1 * 10)) || { kill -KILL "$pid"; show_output; fail "isotrace did not stop within $1 s"; }
+    sleep 0.1
+  done
+  status=0
+  wait "$pid" || status=$?
+}
+
+exr_attribute() {  # exr_attribute <exr> <name>: the value of an isotrace: attribute
+  iinfo -v "$1" | sed -n "s/.*isotrace:$2: *\"\{0,1\}\([^\"]*\)\"\{0,1\}.*/\1/p" | head -n 1
+}
+
+# A first pass at 1920x1080 with 4 light bounces takes many seconds on this scene; a 0.3 s budget must stop it
+# inside the pass: fewer than one sample per pixel on average, the image marked partial.
+case_time_budget_is_hard() {
+  cli_expect 0 render "$cornell" --res 1920x1080 --spp 64 --time 0.3 --threads 2 --quiet --aov sample_count \
+    -o "$work/a.exr" --stats-json "$work/stats.json"
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == "time budget" ]] || fail "isotrace:stopped is not \"time budget\""
+  local spp spp_max
+  spp=$(exr_attribute "$work/a.exr" spp)
+  spp_max=$(exr_attribute "$work/a.exr" spp_max)
+  echo "--time 0.3: isotrace:spp $spp, isotrace:spp_max $spp_max, $(grep '"render_seconds"' "$work/stats.json")" >&2
+  ((spp < 64 && spp_max < 64)) || fail "the time budget did not stop the render (spp $spp, spp_max $spp_max)"
+  if ((spp < spp_max)); then
+    [[ "$(exr_attribute "$work/a.exr" partial)" == 1 ]] || fail "pixels differ in sample count but partial is not 1"
+  fi
+}
+
+# SIGTERM: like the first Ctrl-C (partial image, checkpoint, exit 143); the checkpoint resumes.
+case_sigterm() {
+  start_render "$work/stderr" "$cornell" --res 64x64 --spp 100000 --threads 2 -o "$work/a.exr" \
+    --checkpoint "$work/ck.bin"
+  sleep 1
+  kill -TERM "$pid"
+  wait_exit 20
+  ((status == 143)) || { show_output; fail "exit code $status after SIGTERM, expected 143"; }
+  expect_in "$work/stderr" "interrupted by SIGTERM" stderr
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == interrupted ]] || fail "isotrace:stopped is not \"interrupted\""
+  [[ -s "$work/ck.bin" ]] || fail "no checkpoint written after SIGTERM"
+  expect_no_partial_files "$work"
+  local before after
+  before="$(exr_attribute "$work/a.exr" spp) $(exr_attribute "$work/a.exr" spp_max)"
+  cli_expect 0 render "$cornell" --resume "$work/ck.bin" --time 0.5 --threads 2 -o "$work/b.exr"
+  expect_in "$work/stderr" "resuming at $(exr_attribute "$work/a.exr" spp) spp" stderr
+  after="$(exr_attribute "$work/b.exr" spp) $(exr_attribute "$work/b.exr" spp_max)"
+  echo "interrupted: spp, spp_max = $before; resumed for 0.5 s: $after" >&2
+  ((${after% *} >= ${before% *} && ${after#* } >= ${before#* })) ||
+    fail "the resumed render (spp, spp_max = $after) has fewer samples than the one it resumed from ($before)"
+  expect_no_partial_files "$work"
+}
+
+# A second signal ends at once, whatever is happening (most likely writing the large outputs): exit 128 + the
+# signal, and no temporary file left in the output directory.
+case_second_signal() {
+  local signal
+  for signal in TERM INT; do
+    start_render "$work/stderr" "$cornell" --res 2048x2048 --spp 100000 --threads 2 --aov all \
+      -o "$work/a.exr" -o "$work/a.tif" --checkpoint "$work/ck.bin"
+    sleep 0.5
+    kill -"$signal" "$pid"
+    sleep 0.2
+    kill -"$signal" "$pid" 2>/dev/null || true
+    wait_exit 20
+    local expected=143
+    [[ $signal == INT ]] && expected=130
+    ((status == expected)) || { show_output; fail "exit code $status after two SIG$signal, expected $expected"; }
+    expect_no_partial_files "$work"
+  done
+}
+
+# SIGKILL at several moments (some during checkpoint writes: one is written every 50 ms), then resume, possibly
+# killed again: the final image is bit-identical to the uninterrupted render.
+case_checkpoint_resume_identical() {
+  cli_expect 0 render "$cornell" --res 48x48 --spp 256 --threads 2 --quiet -o "$work/reference.exr"
+  local delay resumed=0 leftovers=0
+  for delay in 0.1 0.25 0.4 0.55 0.7; do  # the render itself takes about 1 s
+    # A SIGKILL during a checkpoint write leaves its temporary file (nothing can catch SIGKILL); the checkpoint
+    # itself is then the previous one.
+    leftovers=$((leftovers + $(find "$work" -name '.ck.partial-*' | wc -l)))
+    rm -f "$work/ck.bin" "$work"/.ck.partial-*
+    start_render "$work/stderr" "$cornell" --res 48x48 --spp 256 --threads 2 -o "$work/a.exr" \
+      --checkpoint "$work/ck.bin" --checkpoint-every 0.05
+    sleep "$delay"
+    kill -KILL "$pid" 2>/dev/null || true
+    wait "$pid" 2>/dev/null || true
+    [[ -f "$work/ck.bin" ]] || { echo "killed after $delay s: no checkpoint yet" >&2; continue; }
+    # Resume and kill once more mid-way, then resume to the end.
+    start_render "$work/stderr" "$cornell" --resume "$work/ck.bin" --threads 1 -o "$work/b.exr" --checkpoint-every 0.05
+    sleep 0.2
+    kill -KILL "$pid" 2>/dev/null || true
+    wait "$pid" 2>/dev/null || true
+    cli_expect 0 render "$cornell" --resume "$work/ck.bin" --threads 2 --tile-size 7 --quiet -o "$work/b.exr"
+    idiff -fail 0 -failpercent 0 -warn 0 "$work/reference.exr" "$work/b.exr" >"$work/idiff" 2>&1 ||
+      { cat "$work/idiff" >&2; fail "killed after $delay s: the resumed image differs from the uninterrupted one"; }
+    [[ "$(exr_attribute "$work/b.exr" spp)" == 256 ]] || fail "the resumed image does not have 256 spp"
+    resumed=$((resumed + 1))
+  done
+  echo "resumed and identical after $resumed of 5 kills ($leftovers of them during a checkpoint write)" >&2
+  ((resumed >= 3)) || fail "only $resumed of 5 kills left a checkpoint to resume"
+}
+
+# The progress bar on a terminal (script(1) provides one, 60 columns): it fits the width, ends at 100 %, and with
+# --time shows the clock against the budget.
+case_progress_bar() {
+  command -v script >/dev/null || fail "script (util-linux) is needed for a terminal"
+  local arguments
+  for arguments in "--spp 16" "--time 0.5"; do
+    script -qec "stty cols 60; '$cli' render '$cornell' --res 32x32 $arguments --threads 2 -o '$work/a.exr'" \
+      /dev/null >"$work/tty" || { cat "$work/tty" >&2; fail "render $arguments on a terminal failed"; }
+    tr '\r' '\n' <"$work/tty" | sed 's/\x1b\[K//g' | grep -a '%' >"$work/bar" || fail "no progress bar drawn"
+    cat "$work/bar" >&2
+    awk 'length($0) > 59 { exit 1 }' "$work/bar" || fail "a progress line is wider than the 60-column terminal"
+    tail -n 1 "$work/bar" | grep -q '100.0%' || fail "the progress bar did not end at 100 %"
+    if [[ $arguments == --time* ]]; then
+      grep -q 'budget' "$work/bar" || fail "with --time the bar does not show the budget"
+    fi
+  done
+}
+
+# A bad checkpoint or a changed scene or pixel option: exit 2, a clear message, the checkpoint untouched.
+case_resume_bad_input() {
+  cp "$cornell" "$work/scene.json"
+  cli_expect 0 render "$work/scene.json" --res 16x16 --spp 100000 --time 0.2 --quiet -o "$work/a.exr" \
+    --checkpoint "$work/ck.bin"
+  [[ -s "$work/ck.bin" ]] || fail "no checkpoint after a time budget ended the render"
+  local sum
+  sum=$(md5sum <"$work/ck.bin")
+  resume_fails() {  # resume_fails <checkpoint> <expected text> [more arguments]
+    local checkpoint=$1 text=$2
+    shift 2
+    cli_expect 2 render "$work/scene.json" --resume "$checkpoint" --quiet -o "$work/b.exr" "$@"
+    sed 's/^/  stderr: /' "$work/stderr" >&2
+    expect_in "$work/stderr" "$text" stderr
+    expect_no_file "$work/b.exr"
+    expect_no_partial_files "$work"
+  }
+  head -c 100 "$work/ck.bin" >"$work/truncated.bin"
+  resume_fails "$work/truncated.bin" "truncated"
+  cp "$work/ck.bin" "$work/corrupted.bin"
+  printf 'X' | dd of="$work/corrupted.bin" bs=1 seek=200 conv=notrunc status=none
+  resume_fails "$work/corrupted.bin" "corrupted"
+  resume_fails "$work/scene.json" "not an isotrace checkpoint"
+  resume_fails "$work/ck.bin" "--spp 32 differs from the checkpoint's 100000" --spp 32
+  resume_fails "$work/ck.bin" "--res 8x8 differs" --res 8x8
+  resume_fails "$work/ck.bin" "--seed 5 differs" --seed 5
+  resume_fails "$work/ck.bin" "--aov depth differs" --aov depth
+  echo >>"$work/scene.json"  # the same scene to the parser, but not the same file
+  resume_fails "$work/ck.bin" "the scene file $work/scene.json changed since the checkpoint was written"
+  [[ "$(md5sum <"$work/ck.bin")" == "$sum" ]] || fail "a refused resume changed the checkpoint"
+  cli_expect 2 render "$work/scene.json" --resume "$work/missing.bin" --quiet -o "$work/b.exr"
+  cli_expect 2 render "$work/scene.json" --checkpoint-every 5 --quiet -o "$work/b.exr"
+  expect_in "$work/stderr" "needs --checkpoint" stderr
 }
 
 # ---- hostile input and safe output (issue 10) -------------------------------------------------------------

@@ -1,5 +1,6 @@
 #include "tools/cli/progress_bar.h"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -8,6 +9,12 @@
 namespace isotrace::cli {
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) == 1; }
+
+int terminal_columns() {
+    winsize size{};
+    if (::ioctl(STDERR_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
+    return 80;
+}
 
 std::string format_duration(double seconds) {
     if (!(seconds >= 0) || !std::isfinite(seconds)) return "--:--";
@@ -18,15 +25,48 @@ std::string format_duration(double seconds) {
     return text;
 }
 
+std::string format_progress_line(const RenderProgress& progress, int columns) {
+    const double fraction = std::clamp(progress.fraction, 0.0, 1.0);
+    char percent[16];
+    std::snprintf(percent, sizeof percent, "%5.1f%%", fraction * 100);
+    const double mrays = progress.elapsed_seconds > 0 ? progress.rays / progress.elapsed_seconds * 1e-6 : 0;
+    char speed[32];
+    std::snprintf(speed, sizeof speed, "%.2f Mrays/s", mrays);
+    // With a time budget the budget is the plan: show the clock against it, not an unbounded sample count.
+    const std::string time = progress.time_budget_seconds
+                                 ? format_duration(progress.elapsed_seconds) + " of " +
+                                       format_duration(*progress.time_budget_seconds) + " budget"
+                                 : format_duration(progress.elapsed_seconds) + " elapsed  ETA " +
+                                       format_duration(progress.eta_seconds);
+    // Parts in order of importance; the least important go first when the terminal is narrow.
+    const std::vector<std::string> parts = {percent, time, std::to_string(progress.completed_spp) + " spp done",
+                                            speed};
+    constexpr int kMaxBar = 30, kMinBar = 10;
+    const int usable = std::max(1, columns - 1);  // the last column would wrap on some terminals
+    std::size_t shown = parts.size();
+    const auto text_width = [&](std::size_t n) {
+        int width = 0;
+        for (std::size_t i = 0; i < n; ++i) width += 2 + int(parts[i].size());
+        return width;
+    };
+    while (shown > 1 && text_width(shown) + kMinBar + 2 > usable) --shown;
+    std::string line;
+    const int bar = std::min(kMaxBar, usable - text_width(shown) - 2);
+    if (bar >= kMinBar) {
+        const int filled = std::clamp(int(fraction * bar), 0, bar);
+        line += '[';
+        line.append(std::size_t(filled), '#');
+        line.append(std::size_t(bar - filled), '.');
+        line += ']';
+    }
+    for (std::size_t i = 0; i < shown; ++i) line += (line.empty() ? "" : "  ") + parts[i];
+    if (int(line.size()) > usable) line.resize(std::size_t(usable));
+    return line;
+}
+
 void ProgressBar::update(const RenderProgress& progress) {
     if (!enabled_) return;
-    constexpr int kWidth = 30;
-    const int filled = std::clamp(int(progress.fraction * kWidth), 0, kWidth);
-    const std::string bar = std::string(std::size_t(filled), '#') + std::string(std::size_t(kWidth - filled), '.');
-    const double mrays = progress.elapsed_seconds > 0 ? progress.rays / progress.elapsed_seconds * 1e-6 : 0;
-    std::fprintf(stderr, "\r[%s] %5.1f%%  %s elapsed  ETA %s  %.2f Mrays/s  %d spp done\x1b[K", bar.c_str(),
-                 progress.fraction * 100, format_duration(progress.elapsed_seconds).c_str(),
-                 format_duration(progress.eta_seconds).c_str(), mrays, progress.completed_spp);
+    std::fprintf(stderr, "\r%s\x1b[K", format_progress_line(progress, terminal_columns()).c_str());
     std::fflush(stderr);
     drawn_ = true;
 }

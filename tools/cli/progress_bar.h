@@ -1,12 +1,14 @@
 #pragma once
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "renderer/render/tile_renderer.h"
 
 namespace isotrace::cli {
 
-// One-line progress bar with ETA and Mrays/s, redrawn in place on a terminal. Silent when disabled.
+// One-line progress bar with ETA (or the time budget) and Mrays/s, redrawn in place on a terminal and fitted to
+// its width. Silent when disabled. The renderer's last report is 100 % for a render that finished.
 class ProgressBar {
 public:
     explicit ProgressBar(bool enabled) : enabled_(enabled) {}
@@ -22,5 +24,11 @@ private:
 bool stderr_is_terminal();
 
 std::string format_duration(double seconds);
+
+// The line the bar draws, at most columns - 1 characters: the bar shrinks, then the least important parts go.
+std::string format_progress_line(const RenderProgress& progress, int columns);
+
+// Width of the terminal on stderr (80 when unknown).
+int terminal_columns();
 
 }  // namespace isotrace::cli

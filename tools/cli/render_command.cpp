@@ -1,8 +1,13 @@
-#include <csignal>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 
 #include "renderer/colour/chromaticities.h"
+#include "renderer/core/atomic_file.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/core/version.h"
@@ -12,18 +17,51 @@
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/progress_bar.h"
+#include "tools/cli/render_checkpoint.h"
 #include "tools/cli/render_statistics.h"
 #include "tools/cli/thread_limit.h"
 
 namespace isotrace::cli {
 namespace {
 
+// The first SIGINT or SIGTERM asks the render to stop (it writes what it has, then exits 128 + the signal);
+// a second one ends the process at once, removing any half-written output first.
 std::atomic<bool> g_interrupted{false};
+std::atomic<int> g_first_signal{0};
 
-extern "C" void on_interrupt(int) {
-    g_interrupted = true;
-    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+extern "C" void on_stop_signal(int signal_number) {
+    int expected = 0;
+    if (g_first_signal.compare_exchange_strong(expected, signal_number)) {
+        g_interrupted = true;
+        return;
+    }
+    remove_temporary_files_in_progress();
+    ::_exit(128 + signal_number);
 }
+
+// Installs on_stop_signal for SIGINT and SIGTERM for its lifetime.
+class StopSignals {
+public:
+    StopSignals() {
+        g_interrupted = false;
+        g_first_signal = 0;
+        struct sigaction action {};
+        action.sa_handler = on_stop_signal;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESTART;
+        ::sigaction(SIGINT, &action, &previous_int_);
+        ::sigaction(SIGTERM, &action, &previous_term_);
+    }
+    ~StopSignals() {
+        ::sigaction(SIGINT, &previous_int_, nullptr);
+        ::sigaction(SIGTERM, &previous_term_, nullptr);
+    }
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+
+private:
+    struct sigaction previous_int_ {}, previous_term_ {};
+};
 
 struct RenderArguments {
     std::string scene;
@@ -39,9 +77,20 @@ struct RenderArguments {
     std::string max_scene_size;
     int tile_size = 32;
     bool quiet = false;
+    std::string checkpoint;
+    std::string checkpoint_every;  // parsed by parse_seconds
+    std::string resume;
 };
 
-ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result, std::uint64_t rays) {
+constexpr double kDefaultCheckpointSeconds = 300;
+
+const char* how_it_ended(const RenderResult& result, int spp) {
+    if (result.cancelled) return "interrupted";
+    if (result.completed_spp >= spp) return "complete";
+    return "time budget";
+}
+
+ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result, int spp, std::uint64_t rays) {
     ImageMetadata m;
     m.set("Software", std::string("isotrace ") + kIsotraceVersion);
     m.set("isotrace:version", std::string(kIsotraceVersion));
@@ -54,7 +103,11 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
     m.set("isotrace:pixel_filter", scene.filter_type);
     m.set("isotrace:render_seconds", result.seconds);
     m.set("isotrace:rays", std::to_string(rays));
+    // partial = 1: the render stopped inside a pass, so pixels have between isotrace:spp and isotrace:spp_max
+    // samples (each pixel's count is in the sampleCount AOV when requested).
     m.set("isotrace:partial", std::int64_t(result.partial ? 1 : 0));
+    m.set("isotrace:spp_max", std::int64_t(result.max_spp));
+    m.set("isotrace:stopped", std::string(how_it_ended(result, spp)));
     m.set("isotrace:working_space", scene.colours->working_space());
     m.set("isotrace:ocio_config", scene.colours->config_path());
     if (const auto xy = chromaticities_of(scene.colours->working_space()))
@@ -64,10 +117,10 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
 
 // Every output is attempted even when one fails (a full disk may still take a small PNG); each failure is
 // reported, and any failure ends the command with a failure.
-void write_outputs(const RenderArguments& args, const LoadedScene& scene, const RenderResult& result,
+void write_outputs(const RenderArguments& args, const LoadedScene& scene, const RenderResult& result, int spp,
                    std::uint64_t rays) {
     const ImageBuffer image = result.film->resolve();
-    const ImageMetadata metadata = make_metadata(scene, result, rays);
+    const ImageMetadata metadata = make_metadata(scene, result, spp, rays);
     const ImageWindow window{scene.film.raster, scene.film.crop.x0, scene.film.crop.y0};
     int failures = 0;
     for (const std::string& output : args.outputs) {
@@ -86,6 +139,44 @@ void write_outputs(const RenderArguments& args, const LoadedScene& scene, const 
                                  " output(s) could not be written");
 }
 
+std::vector<std::string> aov_names(const std::vector<Aov>& aovs) {
+    std::vector<std::string> names;
+    for (Aov aov : aovs) names.push_back(aov_info(aov).name);
+    return names;
+}
+
+// On --resume, the options that change pixels come from the checkpoint; any given on the command line must match.
+void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& args, SceneOverrides& overrides) {
+    const PixelOptions& recorded = resume.options;
+    const auto mismatch = [&](const std::string& option, const std::string& given, const std::string& kept) {
+        throw InputError({args.resume}, "",
+                         option + " " + given + " differs from the checkpoint's " + kept +
+                             " (options that change pixels cannot change when resuming; leave it out)");
+    };
+    if (args.spp && *args.spp != recorded.spp)
+        mismatch("--spp", std::to_string(*args.spp), std::to_string(recorded.spp));
+    if (overrides.resolution && (overrides.resolution->width != recorded.resolution.width ||
+                                 overrides.resolution->height != recorded.resolution.height))
+        mismatch("--res", args.resolution,
+                 std::to_string(recorded.resolution.width) + "x" + std::to_string(recorded.resolution.height));
+    if (overrides.seed && *overrides.seed != recorded.seed)
+        mismatch("--seed", args.seed, std::to_string(recorded.seed));
+    std::vector<Aov> recorded_aovs;
+    for (const std::string& name : recorded.extra_aovs) {
+        const std::vector<Aov> parsed = parse_aov_list(name, args.resume);
+        recorded_aovs.insert(recorded_aovs.end(), parsed.begin(), parsed.end());
+    }
+    if (!args.aovs.empty() && overrides.extra_aovs != recorded_aovs) {
+        std::string kept;
+        for (const std::string& name : recorded.extra_aovs) kept += (kept.empty() ? "" : ",") + name;
+        mismatch("--aov", args.aovs, kept.empty() ? "(none)" : kept);
+    }
+    overrides.spp = recorded.spp;
+    overrides.resolution = recorded.resolution;
+    overrides.seed = recorded.seed;
+    overrides.extra_aovs = recorded_aovs;
+}
+
 int run_render(const RenderArguments& args) {
     const bool show_progress = !args.quiet && stderr_is_terminal();
     SceneOverrides overrides;
@@ -98,11 +189,24 @@ int run_render(const RenderArguments& args) {
         overrides.max_scene_file_bytes = parse_memory_size(args.max_scene_size, "--max-scene-size");
     if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
     if (!args.aovs.empty()) overrides.extra_aovs = parse_aov_list(args.aovs, "--aov");
+    // A resumed render goes on checkpointing to the file it came from unless told otherwise.
+    const std::string checkpoint_path = !args.checkpoint.empty() ? args.checkpoint : args.resume;
+    if (!args.checkpoint_every.empty() && checkpoint_path.empty())
+        throw InputError({}, "--checkpoint-every", "needs --checkpoint FILE (or --resume FILE)");
+    const double checkpoint_seconds = args.checkpoint_every.empty()
+                                          ? kDefaultCheckpointSeconds
+                                          : parse_seconds(args.checkpoint_every, "--checkpoint-every");
     for (const std::string& output : args.outputs) {  // reject bad names before rendering
         image_kind_for(output);
         check_output_directory(output, "--output");
     }
     if (!args.stats_json.empty()) check_output_directory(args.stats_json, "--stats-json");
+    std::optional<ResumePoint> resume;
+    if (!args.resume.empty()) {
+        resume = read_resume_point(args.resume);
+        take_pixel_options_from(*resume, args, overrides);
+    }
+    if (!checkpoint_path.empty()) check_output_directory(checkpoint_path, "--checkpoint");
     if (!args.outputs.empty()) image_codec();  // a missing image module fails now, not after the render
 
     const ThreadLimit limit(args.threads);
@@ -111,33 +215,61 @@ int run_render(const RenderArguments& args) {
     counters::reset();
     const auto load_start = std::chrono::steady_clock::now();
     std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
+    std::unique_ptr<Film> film;
+    if (resume) {
+        check_same_scene(*resume, *scene, args.resume);
+        film = std::make_unique<Film>(scene->film);
+        try {
+            film->restore_state(resume->film_state);
+        } catch (const std::invalid_argument& error) {
+            throw InputError({args.resume}, "", std::string("the checkpoint does not fit this film: ") + error.what());
+        }
+    }
     PhaseTimes times;
     times.parse = scene->parse_seconds;
     times.build = scene->scene->build_statistics().seconds;
-    if (!args.quiet)
-        std::fprintf(stderr, "isotrace: %s: %dx%d, %d spp, %s integrator, %d thread(s), loaded in %.2f s\n",
-                     args.scene.c_str(), scene->film.raster.width, scene->film.raster.height,
-                     time_budget && !args.spp ? 0 : scene->spp, scene->integrator_type.c_str(), threads,
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count());
 
-    ProgressBar bar(show_progress);
     RenderOptions options;
     options.tile_size = args.tile_size;
     // --time alone lifts the sample limit; with --spp too, whichever budget runs out first ends the render.
-    options.spp = time_budget && !args.spp ? (1 << 24) : scene->spp;
+    options.spp = resume ? resume->options.spp : time_budget && !args.spp ? (1 << 24) : scene->spp;
     options.time_budget_seconds = time_budget;
     options.cancel = &g_interrupted;
+    const PixelOptions pixel_options{options.spp, scene->film.raster, scene->seed, aov_names(overrides.extra_aovs)};
+    const auto checkpoint = [&](const Film& state) {
+        try {
+            save_checkpoint(checkpoint_path, *scene, pixel_options, state);
+        } catch (const std::runtime_error& error) {  // the render goes on; the next checkpoint may succeed
+            std::fprintf(stderr, "isotrace: warning: no checkpoint written: %s\n", error.what());
+        }
+    };
+    if (!checkpoint_path.empty()) {
+        options.checkpoint_interval_seconds = checkpoint_seconds;
+        options.on_checkpoint = checkpoint;
+    }
+
+    if (!args.quiet) {
+        const SampleCountRange done = film ? film->sample_count_range() : SampleCountRange{};
+        std::fprintf(stderr, "isotrace: %s: %dx%d, %s, %s integrator, %d thread(s), loaded in %.2f s%s\n",
+                     args.scene.c_str(), scene->film.raster.width, scene->film.raster.height,
+                     options.spp == (1 << 24) ? "no sample limit" : (std::to_string(options.spp) + " spp").c_str(),
+                     scene->integrator_type.c_str(), threads,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count(),
+                     resume ? (", resuming at " + std::to_string(done.min) + " spp").c_str() : "");
+    }
+
+    ProgressBar bar(show_progress);
     if (show_progress) options.on_progress = [&](const RenderProgress& p) { bar.update(p); };
-    g_interrupted = false;
-    std::signal(SIGINT, on_interrupt);
-    const RenderResult result = render_scene(*scene, options);
-    std::signal(SIGINT, SIG_DFL);
+    const StopSignals signals;  // until the outputs are written: a second signal then removes the temporary file
+    const RenderResult result = render_scene(*scene, options, std::move(film));
     bar.finish();
     times.render = result.seconds;
 
     const CounterTotals counts = counters::totals();
     const auto write_start = std::chrono::steady_clock::now();
-    write_outputs(args, *scene, result, counts.total_rays());
+    // An unfinished render leaves a checkpoint to continue from.
+    if (!checkpoint_path.empty() && result.completed_spp < options.spp) checkpoint(*result.film);
+    write_outputs(args, *scene, result, options.spp, counts.total_rays());
     times.write = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
 
     const nlohmann::json stats = render_statistics(*scene, result, counts, times, threads);
@@ -145,11 +277,15 @@ int run_render(const RenderArguments& args) {
     if (!args.quiet) {
         std::fputs(format_statistics(stats).c_str(), stderr);
         for (const std::string& output : args.outputs) std::fprintf(stderr, "wrote %s\n", output.c_str());
+        if (!checkpoint_path.empty() && result.completed_spp < options.spp)
+            std::fprintf(stderr, "wrote checkpoint %s (continue with --resume %s)\n", checkpoint_path.c_str(),
+                         checkpoint_path.c_str());
     }
-    if (result.cancelled) {
-        std::fprintf(stderr, "isotrace: interrupted: wrote the %s image rendered so far\n",
+    if (const int signal_number = g_first_signal.load()) {
+        std::fprintf(stderr, "isotrace: interrupted by %s: wrote the %s image rendered so far\n",
+                     signal_number == SIGTERM ? "SIGTERM" : "SIGINT",
                      result.partial ? "partial" : "completed-pass");
-        return kExitInterrupted;
+        return 128 + signal_number;
     }
     return kExitOk;
 }
@@ -172,7 +308,17 @@ CommandRunner add_render_command(CLI::App& app) {
                         "primitive_id, sample_count, variance, or all");
     command->add_option("--stats-json", args->stats_json, "Write end-of-render statistics as JSON to this file");
     command->add_option("--time", args->time_budget,
-                        "Time budget in seconds (progressive passes; stops after the pass that reaches it)");
+                        "Time budget in seconds: the render stops within a sample of it, mid-pass if need be "
+                        "(the image is then marked partial)");
+    command->add_option("--checkpoint", args->checkpoint,
+                        "Save the render's state to this file periodically, when interrupted (SIGINT, SIGTERM) and "
+                        "when the time budget ends it");
+    command->add_option("--checkpoint-every", args->checkpoint_every,
+                        "Seconds of rendering between checkpoints (default: 300)");
+    command->add_option("--resume", args->resume,
+                        "Continue the render saved in this checkpoint (same scene; the final image is bit-identical "
+                        "to an uninterrupted render); goes on checkpointing to it unless --checkpoint says otherwise")
+        ->check(CLI::ExistingFile);
     command->add_option("--max-memory", args->max_memory,
                         "Refuse scenes whose estimated memory exceeds this: bytes with K/M/G/T, or a percentage of "
                         "physical memory (default: 80%)");

@@ -16,6 +16,7 @@ nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& r
     stats["seed"] = scene.seed;
     stats["threads"] = threads;
     stats["spp"] = result.completed_spp;
+    stats["spp_max"] = result.max_spp;
     stats["spp_requested"] = scene.spp;
     stats["passes"] = result.passes;
     stats["partial"] = result.partial;

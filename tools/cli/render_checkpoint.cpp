@@ -1,0 +1,108 @@
+#include "tools/cli/render_checkpoint.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+#include "renderer/core/fnv_hash.h"
+#include "renderer/core/input_error.h"
+#include "renderer/core/version.h"
+#include "renderer/render/checkpoint_file.h"
+
+namespace isotrace::cli {
+namespace {
+
+std::string hex(std::uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
+}
+
+nlohmann::json fingerprint(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + file.string() + " to fingerprint the scene");
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return {{"path", file.string()}, {"bytes", bytes.size()}, {"fnv1a64", hex(fnv1a_64(bytes))}};
+}
+
+// The scene file first, then the files it references in sorted order.
+nlohmann::json scene_files(const LoadedScene& scene) {
+    nlohmann::json files = nlohmann::json::array({fingerprint(scene.path)});
+    for (const auto& file : scene.referenced_files) files.push_back(fingerprint(file));
+    return files;
+}
+
+[[noreturn]] void reject(const std::string& checkpoint, const std::string& problem) {
+    throw InputError({checkpoint}, "", problem);
+}
+
+}  // namespace
+
+void save_checkpoint(const std::filesystem::path& path, const LoadedScene& scene, const PixelOptions& options,
+                     const Film& film) {
+    const SampleCountRange counts = film.sample_count_range();
+    const PixelBounds& crop = film.bounds();
+    const nlohmann::json metadata = {
+        {"isotrace_version", kIsotraceVersion},
+        {"scene", {{"path", scene.path}, {"files", scene_files(scene)}}},
+        {"options",
+         {{"spp", options.spp},
+          {"resolution", {options.resolution.width, options.resolution.height}},
+          {"seed", std::to_string(options.seed)},
+          {"aovs", options.extra_aovs}}},
+        {"film",
+         {{"crop", {crop.x0, crop.y0, crop.x1, crop.y1}},
+          {"completed_spp", counts.min},
+          {"max_spp", counts.max},
+          {"samples", counts.total}}},
+        {"pass_schedule", "passes of 1, 1, 2, 4, ... samples; every pixel continues at its own sample count"},
+    };
+    write_checkpoint(path, {metadata.dump(1), film.state()});
+}
+
+ResumePoint read_resume_point(const std::filesystem::path& path) {
+    const std::string source = path.string();
+    CheckpointContents contents = read_checkpoint(path);
+    ResumePoint resume;
+    try {
+        resume.metadata = nlohmann::json::parse(contents.metadata_json);
+        const std::string version = resume.metadata.at("isotrace_version").get<std::string>();
+        if (version != kIsotraceVersion)
+            reject(source, "the checkpoint was written by isotrace " + version + "; this is isotrace " +
+                               kIsotraceVersion + " (renders can only be resumed by the same version)");
+        const nlohmann::json& options = resume.metadata.at("options");
+        resume.options.spp = options.at("spp").get<int>();
+        resume.options.resolution = {options.at("resolution").at(0).get<int>(), options.at("resolution").at(1).get<int>()};
+        resume.options.seed = std::stoull(options.at("seed").get<std::string>());
+        resume.options.extra_aovs = options.at("aovs").get<std::vector<std::string>>();
+        resume.metadata.at("scene").at("files").at(0).at("fnv1a64").get<std::string>();
+    } catch (const nlohmann::json::exception& error) {
+        reject(source, std::string("the checkpoint's metadata is incomplete: ") + error.what());
+    } catch (const std::logic_error& error) {  // std::stoull
+        reject(source, std::string("the checkpoint's metadata is invalid: ") + error.what());
+    }
+    resume.film_state = std::move(contents.film_state);
+    return resume;
+}
+
+void check_same_scene(const ResumePoint& resume, const LoadedScene& scene, const std::string& checkpoint) {
+    const nlohmann::json& recorded = resume.metadata.at("scene").at("files");
+    const nlohmann::json current = scene_files(scene);
+    const auto describe = [](const nlohmann::json& f) {
+        return std::to_string(f.at("bytes").get<std::uint64_t>()) + " bytes, FNV-1a " + f.at("fnv1a64").get<std::string>();
+    };
+    const auto name = [](const nlohmann::json& f) { return f.at("path").get<std::string>(); };
+    for (std::size_t i = 0; i < std::max(recorded.size(), current.size()); ++i) {
+        if (i >= recorded.size())
+            reject(checkpoint, "the scene now references " + name(current[i]) +
+                                   ", which it did not when the checkpoint was written");
+        if (i >= current.size()) reject(checkpoint, "the scene no longer references " + name(recorded[i]));
+        if (recorded[i].at("bytes") != current[i].at("bytes") || recorded[i].at("fnv1a64") != current[i].at("fnv1a64"))
+            reject(checkpoint, std::string(i == 0 ? "the scene file " : "the file ") + name(current[i]) +
+                                   (i == 0 ? "" : ", referenced by the scene,") +
+                                   " changed since the checkpoint was written (now " + describe(current[i]) +
+                                   "; then " + describe(recorded[i]) + ")");
+    }
+}
+
+}  // namespace isotrace::cli
