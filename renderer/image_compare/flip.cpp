@@ -1,3 +1,4 @@
+#include "renderer/math/median.h"
 #include "renderer/image_compare/flip.h"
 
 #include <algorithm>
@@ -151,16 +152,6 @@ constexpr double k0 = 0.6 * 0.6 * 2.51, k1 = 0.6 * 0.03, k3 = 0.6 * 0.6 * 2.43, 
 double aces_inverse(double t) {
     const double c0 = (k1 - k4 * t) / (k0 - k3 * t), c1 = -k5 * t / (k0 - k3 * t);
     return -0.5 * c0 + std::sqrt(0.25 * c0 * c0 - c1);
-}
-
-// numpy.percentile(values, 50): the middle value, or the mean of the middle two.
-double median(std::vector<float> values) {
-    const std::size_t n = values.size(), upper = n / 2;
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(upper), values.end());
-    const double high = values[upper];
-    if (n % 2 == 1) return high;
-    const double low = *std::max_element(values.begin(), values.begin() + std::ptrdiff_t(upper));
-    return 0.5 * (low + high);
 }
 
 }  // namespace

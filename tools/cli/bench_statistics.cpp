@@ -16,8 +16,6 @@ double quantile_of_sorted(const std::vector<double>& sorted, double p) {
 
 }  // namespace
 
-double median(std::vector<double> values) { return spread_of(std::move(values)).median; }
-
 Spread spread_of(std::vector<double> values) {
     if (values.empty()) return {};
     std::sort(values.begin(), values.end());

@@ -2,10 +2,11 @@
 // The statistics isotrace bench reports: the median and spread of repeated runs, and thread scaling.
 #include <vector>
 
+#include "renderer/math/median.h"
+
 namespace isotrace::cli {
 
-// The median; 0 for no values.
-double median(std::vector<double> values);
+using isotrace::median;  // renderer/math/median.h
 
 // Five-number summary of repeated measurements; quartiles by linear interpolation between order statistics
 // (the "type 7" rule of R and NumPy's default), so that one run gives min = q1 = median = q3 = max.
