@@ -109,18 +109,74 @@ void check_atomically_writable(const std::filesystem::path& target) {
     ::unlink(probe.c_str());
 }
 
+namespace {
+
+// The file's new contents in `fd` (flushed) become the target: renamed over it from the temporary path.
+void publish_as_target(int fd, const std::filesystem::path& temporary, const std::filesystem::path& target,
+                       int slot) {
+    const int closed = ::close(fd);
+    if (closed != 0) fail(target, "closing failed", errno);
+    if (::rename(temporary.c_str(), target.c_str()) != 0) fail(target, "cannot rename the temporary file", errno);
+    g_temporaries.withdraw(slot);
+}
+
+// An unnamed file in the target's directory (O_TMPFILE): whatever happens to the process while it is written —
+// even SIGKILL — nothing is left behind. -1 where the file system does not support it.
+int open_unnamed_beside(const std::filesystem::path& target) {
+    const std::filesystem::path directory = target.has_parent_path() ? target.parent_path() : ".";
+    return ::open(directory.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+}
+
+// Gives the unnamed file `fd` a fresh random hidden name beside the target (for the instant before the rename).
+// False when it cannot be linked (no /proc): the caller then writes a named file instead.
+bool link_unnamed(int fd, const std::filesystem::path& target, std::filesystem::path& temporary) {
+    const std::string self = "/proc/self/fd/" + std::to_string(fd);
+    constexpr int kAttempts = 16;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        temporary = target;
+        temporary.replace_filename("." + target.stem().string() + ".partial-" + random_suffix() +
+                                   target.extension().string());
+        if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
+        if (errno != EEXIST) return false;
+    }
+    return false;
+}
+
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes) {
     std::filesystem::path temporary;
-    int fd = create_temporary(target, temporary);
+    int fd = open_unnamed_beside(target);
+    if (fd >= 0) {
+        try {
+            write_all(fd, bytes, target);
+            if (::fsync(fd) != 0) fail(target, "flushing to disk failed", errno);
+        } catch (...) {
+            ::close(fd);  // an unnamed file disappears with its last descriptor
+            throw;
+        }
+        if (link_unnamed(fd, target, temporary)) {
+            const int slot = g_temporaries.publish(temporary);
+            try {
+                publish_as_target(fd, temporary, target, slot);
+            } catch (...) {
+                ::unlink(temporary.c_str());
+                g_temporaries.withdraw(slot);
+                throw;
+            }
+            return;
+        }
+        ::close(fd);
+    }
+    // No O_TMPFILE (or no /proc to link it): a named temporary file from the start.
+    fd = create_temporary(target, temporary);
     const int slot = g_temporaries.publish(temporary);
     try {
         write_all(fd, bytes, target);
         if (::fsync(fd) != 0) fail(target, "flushing to disk failed", errno);
-        const int closed = ::close(fd);
+        const int owned = fd;
         fd = -1;
-        if (closed != 0) fail(target, "closing failed", errno);
-        if (::rename(temporary.c_str(), target.c_str()) != 0) fail(target, "cannot rename the temporary file", errno);
-        g_temporaries.withdraw(slot);
+        publish_as_target(owned, temporary, target, slot);
     } catch (...) {
         if (fd >= 0) ::close(fd);
         ::unlink(temporary.c_str());

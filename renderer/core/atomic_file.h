@@ -5,11 +5,13 @@
 namespace isotrace {
 
 // Writes `bytes` to `target` so that the target is afterwards either the complete new file or untouched.
-// The bytes go to a new hidden sibling with a random name (".<stem>.partial-<random><ext>"), created with
-// O_CREAT|O_EXCL|O_NOFOLLOW so that no planted file or symlink is ever opened or followed; they are flushed to
-// disk and the sibling is renamed over the target (rename replaces a symlink at `target`, never its referent).
-// Any failure — disk full (ENOSPC), a file-size limit (EFBIG), an unwritable directory — removes the sibling
-// and throws std::runtime_error naming the target and the reason.
+// The bytes go to an unnamed file in the target's directory (O_TMPFILE), so that even SIGKILL during the write
+// leaves nothing behind; once flushed to disk it is linked under a new hidden sibling name with a random suffix
+// (".<stem>.partial-<random><ext>") and renamed over the target at once (rename replaces a symlink at `target`,
+// never its referent). Where the file system has no O_TMPFILE, the sibling is created first, with
+// O_CREAT|O_EXCL|O_NOFOLLOW so that no planted file or symlink is ever opened or followed. Any failure — disk
+// full (ENOSPC), a file-size limit (EFBIG), an unwritable directory — removes what was written and throws
+// std::runtime_error naming the target and the reason.
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes);
 
 // Async-signal-safe: removes the temporary siblings of the write_file_atomically calls in progress, for a signal

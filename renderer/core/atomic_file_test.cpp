@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -115,13 +116,13 @@ extern "C" void remove_temporaries_and_exit(int) {
     ::_exit(42);
 }
 
-TEST(WriteFileAtomically, SignalHandlerRemovesTheTemporaryFileOfAWriteInProgress) {
-    TemporaryDirectory dir("atomic");
-    const fs::path target = dir / "out.exr";
+// Forks a child that writes 1 MiB to `target` under a 4 KiB file-size limit, with `on_limit` handling SIGXFSZ,
+// so that the handler runs inside write(); the child exits 1 if the handler returns. Returns its wait status.
+int write_past_size_limit_in_child(const fs::path& target, void (*on_limit)(int)) {
     const pid_t child = ::fork();
-    ASSERT_GE(child, 0);
+    if (child < 0) return -1;
     if (child == 0) {
-        std::signal(SIGXFSZ, remove_temporaries_and_exit);
+        std::signal(SIGXFSZ, on_limit);
         rlimit small{};
         ::getrlimit(RLIMIT_FSIZE, &small);
         small.rlim_cur = 4096;
@@ -130,13 +131,38 @@ TEST(WriteFileAtomically, SignalHandlerRemovesTheTemporaryFileOfAWriteInProgress
             write_file_atomically(target, std::string(1 << 20, 'x'));
         } catch (...) {
         }
-        ::_exit(1);  // the handler did not run
+        ::_exit(1);
     }
-    int status = 0;
-    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    int status = -1;
+    ::waitpid(child, &status, 0);
+    return status;
+}
+
+TEST(WriteFileAtomically, SignalHandlerRemovesTheTemporaryFileOfAWriteInProgress) {
+    TemporaryDirectory dir("atomic");
+    const int status = write_past_size_limit_in_child(dir / "out.exr", remove_temporaries_and_exit);
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 42);
     EXPECT_TRUE(dir.entries().empty()) << dir.entries().front();
+}
+
+// SIGKILL cannot be caught, so nothing can clean up after it: the bytes are written to an unnamed file that the
+// kernel discards with the process. The kill arrives deterministically mid-write: a file-size limit raises SIGXFSZ
+// inside write(), and its handler sends SIGKILL.
+extern "C" void kill_self(int) { ::kill(::getpid(), SIGKILL); }
+
+TEST(WriteFileAtomically, SigkillDuringTheWriteLeavesNothingBehindAndKeepsTheOldTarget) {
+    TemporaryDirectory dir("atomic");
+    const int probe = ::open(dir.path().c_str(), O_TMPFILE | O_WRONLY, 0600);
+    if (probe < 0) GTEST_SKIP() << "the file system of " << dir.path() << " has no O_TMPFILE";
+    ::close(probe);
+    const fs::path target = dir / "checkpoint.bin";
+    write_text(target, "previous checkpoint");
+    const int status = write_past_size_limit_in_child(target, kill_self);
+    ASSERT_TRUE(WIFSIGNALED(status));
+    EXPECT_EQ(WTERMSIG(status), SIGKILL);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"checkpoint.bin"});
+    EXPECT_EQ(read_file(target), "previous checkpoint");
 }
 
 }  // namespace

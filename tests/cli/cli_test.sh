@@ -468,22 +468,40 @@ case_second_signal() {
   done
 }
 
-# SIGKILL at several moments (some during checkpoint writes: one is written every 50 ms), then resume, possibly
-# killed again: the final image is bit-identical to the uninterrupted render.
+# kill_during_checkpoint_write: SIGKILLs $pid while it has a checkpoint open for writing: the unnamed file
+# (O_TMPFILE) shows in /proc/<pid>/fd as "<directory>/#<inode> (deleted)". Returns 1 if the render ended first.
+kill_during_checkpoint_write() {
+  while kill -0 "$pid" 2>/dev/null; do
+    if ls -l "/proc/$pid/fd" 2>/dev/null | grep -qF -- "-> $work/#"; then
+      kill -KILL "$pid"
+      wait "$pid" 2>/dev/null || true
+      return 0
+    fi
+  done
+  return 1
+}
+
+# SIGKILL at several moments, then resume, possibly killed again: the final image is bit-identical to the
+# uninterrupted render. Some kills come at chosen delays (a checkpoint is written every 50 ms), others exactly
+# while a checkpoint is being written; no kill leaves a temporary file behind.
 case_checkpoint_resume_identical() {
   cli_expect 0 render "$cornell" --res 48x48 --spp 256 --threads 2 --quiet -o "$work/reference.exr"
-  local delay resumed=0 leftovers=0
-  for delay in 0.1 0.25 0.4 0.55 0.7; do  # the render itself takes about 1 s
-    # A SIGKILL during a checkpoint write leaves its temporary file (nothing can catch SIGKILL); the checkpoint
-    # itself is then the previous one.
-    leftovers=$((leftovers + $(find "$work" -name '.ck.partial-*' | wc -l)))
-    rm -f "$work/ck.bin" "$work"/.ck.partial-*
+  local delay resumed=0 during_write=0
+  for delay in 0.1 0.25 0.4 0.55 0.7 write write write; do  # the render itself takes about 1 s
+    rm -f "$work/ck.bin"
     start_render "$work/stderr" "$cornell" --res 48x48 --spp 256 --threads 2 -o "$work/a.exr" \
       --checkpoint "$work/ck.bin" --checkpoint-every 0.05
-    sleep "$delay"
-    kill -KILL "$pid" 2>/dev/null || true
-    wait "$pid" 2>/dev/null || true
-    [[ -f "$work/ck.bin" ]] || { echo "killed after $delay s: no checkpoint yet" >&2; continue; }
+    if [[ $delay == write ]]; then
+      # The first checkpoint complete, then kill during the next write: the checkpoint must be the previous one.
+      until [[ -f "$work/ck.bin" ]] || ! kill -0 "$pid" 2>/dev/null; do sleep 0.01; done
+      kill_during_checkpoint_write && during_write=$((during_write + 1))
+    else
+      sleep "$delay"
+      kill -KILL "$pid" 2>/dev/null || true
+      wait "$pid" 2>/dev/null || true
+    fi
+    [[ -z "$(find "$work" -name '.*partial-*')" ]] || fail "a SIGKILL ($delay) left a temporary file behind"
+    [[ -f "$work/ck.bin" ]] || { echo "killed ($delay): no checkpoint yet" >&2; continue; }
     # Resume and kill once more mid-way, then resume to the end.
     start_render "$work/stderr" "$cornell" --resume "$work/ck.bin" --threads 1 -o "$work/b.exr" --checkpoint-every 0.05
     sleep 0.2
@@ -495,8 +513,9 @@ case_checkpoint_resume_identical() {
     [[ "$(exr_attribute "$work/b.exr" spp)" == 256 ]] || fail "the resumed image does not have 256 spp"
     resumed=$((resumed + 1))
   done
-  echo "resumed and identical after $resumed of 5 kills ($leftovers of them during a checkpoint write)" >&2
-  ((resumed >= 3)) || fail "only $resumed of 5 kills left a checkpoint to resume"
+  echo "resumed and identical after $resumed of 8 kills ($during_write of them during a checkpoint write)" >&2
+  ((resumed >= 6)) || fail "only $resumed of 8 kills left a checkpoint to resume"
+  ((during_write >= 1)) || fail "no kill landed during a checkpoint write"
 }
 
 # The progress bar on a terminal (script(1) provides one, 60 columns): it fits the width, ends at 100 %, and with
