@@ -5,12 +5,13 @@
 //   2. a candidate joins the sweep when the sweep reaches its entry: it is cut into pieces on which its field is
 //      one closed form (metacube region pieces, metacube_ray_slices.h; kernel pieces such as Nishimura's r = R/3);
 //   3. between consecutive events (an entry, an exit, a piece boundary) F is a polynomial in t when every kernel
-//      piece is one. The sum is kept up to date by adding an element's polynomial when it starts to count and
-//      subtracting it when it stops, and recomposed from scratch before any solve and every kRecomposeEvery
-//      updates, so rounding drift never decides anything (the skip test allows for the drift bound);
-//   4. each piece is first tested by its Bernstein coefficients (all of one sign beyond rounding and drift: no
-//      crossing), and only the others are solved (monotone_root_finder.h), or searched with a Lipschitz bound
-//      when a non-polynomial kernel piece (Blinn, Nishimura's outer piece) is present;
+//      piece is one;
+//   4. each piece is first bounded by every counting element's own range (most pieces end here, without any
+//      polynomial), then by the Bernstein coefficients of the summed polynomial (all of one sign beyond rounding:
+//      no crossing), and only the others are solved (monotone_root_finder.h), or searched with a Lipschitz bound
+//      when a non-polynomial kernel piece (Blinn, Nishimura's outer piece) is present. An element's polynomial is
+//      composed only when a piece first needs it and kept until its piece changes; the sum is formed afresh from
+//      those terms whenever it is needed, so no rounding drift accumulates along the sweep;
 //   5. crossings are reported in increasing t; the caller's `report` decides whether the sweep goes on (a
 //      nearest-hit or shadow query stops at the first, CSG takes them all).
 // F > 0 is inside. Every crossing is a sign change of F: a tangent touch (a double root) is not one.
@@ -83,7 +84,6 @@ struct SweepStretch {
 namespace field_sweep_detail {
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
-constexpr int kRecomposeEvery = 16;
 // Depth of the Lipschitz search: 2⁻⁹⁰ of a piece is far below double resolution, so the stack never limits it.
 constexpr int kMaxSearchDepth = 90;
 constexpr double kUnset = std::numeric_limits<double>::infinity();
@@ -228,6 +228,7 @@ private:
         int region = -1;                           // current region piece, −1 before the support
         const FieldPiece* kernel_piece = nullptr;  // nullptr: not counting on the current piece
         double next_event = 0;                     // where its current piece ends (kUnset: never again)
+        bool composed = false;                     // contribution is up to date
         Polynomial contribution;                   // its term of the sum on the current piece (polynomial pieces)
         QuadraticAbout q;                          // dist² on the current piece, in s = t − t_ref_
     };
@@ -239,10 +240,12 @@ private:
     void join_until(double t, const SweepStretch& stretch, BlobQueryWork& work);
     // Brings element `a` to the piece that starts at t (it counts from there on), updating the sum.
     void enter_piece(Active& a, double t);
-    void add_to_sum(const Polynomial& p, double sign);
-    // The sum from the counting elements' terms, without drift; drops elements that are done.
-    void recompose();
-    // F at t from the counting elements (the polynomial sum plus the non-polynomial pieces).
+    // Drops the elements whose support the sweep has left.
+    void drop_finished();
+    // Σ of the counting elements' polynomial terms − T (composing the terms not yet composed), and in
+    // sum_magnitude_ the Σ of their coefficients' magnitudes (for the rounding bounds).
+    const Polynomial& polynomial_sum();
+    // F at t, summed directly from the counting elements (no polynomial needed).
     double value(double t) const;
     // Bounds on [t0, t1] of the counting elements' sum Σ wᵢ·fᵢ (of only those on non-polynomial pieces if asked)
     // from each element's own range: f is monotone in r², so its extremes are at the ends of the element's r²
@@ -264,9 +267,10 @@ private:
     InlineVector<Candidate, 64> candidates_;  // by entry
     std::size_t next_candidate_ = 0;
     InlineVector<Active, 24> joined_;
-    Polynomial sum_;                                          // Σ contributions − T, in s
-    std::array<double, kMaxPolynomialDegree + 1> drift_{};  // Σ |coefficients| of the updates since recompose
-    int updates_ = 0;
+    bool sum_valid_ = false;                                        // sum_ matches the counting elements
+    Polynomial sum_;                                                // Σ contributions − T, in s
+    std::array<double, kMaxPolynomialDegree + 1> sum_magnitude_{};  // Σ |coefficients| of its terms and T
+    int sum_terms_ = 0;
     int non_polynomial_ = 0;  // counting elements whose current kernel piece is not a polynomial
 };
 
@@ -337,30 +341,45 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
 }
 
 template <class Kernel>
-void FieldSweep<Kernel>::add_to_sum(const Polynomial& p, double sign) {
-    if (sign > 0) {
-        sum_ += p;
-    } else {
-        sum_ -= p;
-    }
-    for (int i = 0; i <= p.degree(); ++i) drift_[std::size_t(i)] += std::abs(p[i]);
-    ++updates_;
-}
-
-template <class Kernel>
-void FieldSweep<Kernel>::recompose() {
-    sum_ = Polynomial{-threshold_};
+void FieldSweep<Kernel>::drop_finished() {
     std::size_t kept = 0;
     for (std::size_t i = 0; i < joined_.size(); ++i) {
         if (joined_[i].next_event == field_sweep_detail::kUnset) continue;
         if (kept != i) joined_[kept] = joined_[i];
-        const Active& a = joined_[kept++];
-        if (a.kernel_piece && a.kernel_piece->is_polynomial) sum_ += a.contribution;
+        ++kept;
     }
     joined_.truncate(kept);
-    drift_ = {};
-    for (int i = 0; i <= sum_.degree(); ++i) drift_[std::size_t(i)] = std::abs(sum_[i]);
-    updates_ = 0;
+}
+
+template <class Kernel>
+const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
+    if (sum_valid_) return sum_;
+    sum_ = Polynomial{-threshold_};
+    sum_magnitude_ = {};
+    sum_magnitude_[0] = threshold_;
+    sum_terms_ = 1;
+    for (Active& a : joined_) {
+        if (!a.kernel_piece || !a.kernel_piece->is_polynomial) continue;
+        if (!a.composed) {
+            if (elements_[a.index].is_hard_cube()) {
+                a.contribution = Polynomial{elements_[a.index].weight()};
+            } else {
+                // The unit piece is a polynomial in x = r²/R²: compose it with the quadratic x(s) = q(s)/R².
+                const double inverse_radius2 = 1 / (elements_[a.index].radius() * elements_[a.index].radius());
+                const QuadraticAbout x{a.q.t_ref, a.q.c0 * inverse_radius2, a.q.c1 * inverse_radius2,
+                                       a.q.c2 * inverse_radius2};
+                a.contribution =
+                    field_sweep_detail::compose_with_quadratic(*a.kernel_piece, elements_[a.index].weight(), x);
+            }
+            a.composed = true;
+        }
+        sum_ += a.contribution;
+        for (int i = 0; i <= a.contribution.degree(); ++i)
+            sum_magnitude_[std::size_t(i)] += std::abs(a.contribution[i]);
+        ++sum_terms_;
+    }
+    sum_valid_ = true;
+    return sum_;
 }
 
 template <class Kernel>
@@ -369,12 +388,13 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
     // Leave the previous piece.
     if (a.kernel_piece) {
         if (a.kernel_piece->is_polynomial) {
-            add_to_sum(a.contribution, -1);
+            sum_valid_ = false;
         } else {
             --non_polynomial_;
         }
         a.kernel_piece = nullptr;
     }
+    a.composed = false;
     const MetacubeRaySlices& slices = a.slices;
     const auto pieces = slices.pieces();
     if (t >= slices.t_out()) {
@@ -397,8 +417,7 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
         static constexpr FieldPiece kConstant{0, 0, true, 0, {1, 0, 0, 0}};
         if (region.region == std::array<int, 3>{0, 0, 0}) {
             a.kernel_piece = &kConstant;
-            a.contribution = Polynomial{element.weight()};
-            add_to_sum(a.contribution, 1);
+            sum_valid_ = false;
         }
         return;
     }
@@ -417,15 +436,11 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
     for (const FieldPiece& unit : unit_pieces_)
         if (r2_middle >= unit.r2_begin * radius2 && r2_middle <= unit.r2_end * radius2) a.kernel_piece = &unit;
     if (!a.kernel_piece) return;  // beyond the support on this piece (rounding at its ends)
-    if (!a.kernel_piece->is_polynomial) {
+    if (a.kernel_piece->is_polynomial) {
+        sum_valid_ = false;
+    } else {
         ++non_polynomial_;
-        return;
     }
-    // The unit piece is a polynomial in x = r²/R²: compose it with the quadratic x(s) = q(s)/R².
-    const double inverse_radius2 = 1 / radius2;
-    const QuadraticAbout x{a.q.t_ref, a.q.c0 * inverse_radius2, a.q.c1 * inverse_radius2, a.q.c2 * inverse_radius2};
-    a.contribution = field_sweep_detail::compose_with_quadratic(*a.kernel_piece, element.weight(), x);
-    add_to_sum(a.contribution, 1);
 }
 
 template <class Kernel>
@@ -450,13 +465,16 @@ field_sweep_detail::Range FieldSweep<Kernel>::elements_range(double t0, double t
 
 template <class Kernel>
 double FieldSweep<Kernel>::value(double t) const {
-    double sum = sum_.evaluate(t - t_ref_);
-    if (non_polynomial_ == 0) return sum;
+    double sum = -threshold_;
     for (const Active& a : joined_) {
-        if (!a.kernel_piece || a.kernel_piece->is_polynomial) continue;
+        if (!a.kernel_piece) continue;
         const Metacube& element = elements_[a.index];
+        if (element.is_hard_cube()) {
+            sum += element.weight();  // it counts only inside its box
+            continue;
+        }
         const double radius = element.radius();
-        sum += element.weight() * unit_value(a.q(t) / (radius * radius));
+        sum += element.weight() * unit_value(std::max(0.0, a.q(t)) / (radius * radius));
     }
     return sum;
 }
@@ -492,10 +510,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
     joined_.clear();
     non_polynomial_ = 0;
     t_ref_ = stretch.t_begin;
-    sum_ = Polynomial{-threshold_};
-    drift_ = {};
-    drift_[0] = threshold_;
-    updates_ = 0;
+    sum_valid_ = false;
 
     // Reports a crossing at t from sign `before` to the other; true when the sweep must stop.
     std::uint32_t witness = 0;
@@ -529,17 +544,18 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 solve = false;
                 start_sign = sign_of(range.low - threshold_);
             } else if (non_polynomial_ == 0) {
-                // Bernstein test on the sum as it stands, allowing for its drift since the last recompose.
-                const Polynomial on_piece = sum_.compose_linear(s0, width);
-                // The shift to the piece rounds too: 2·degree + 2 operations per coefficient.
-                const double drift = 4 * kEpsilon * (updates_ + 2 * sum_.degree() + 2) *
-                                     magnitude_at(drift_, std::abs(s0) + width);
+                // Bernstein test on the sum, allowing for the rounding of its terms' sum and of the shift to the
+                // piece (2·degree + 2 operations per coefficient).
+                const Polynomial& sum = polynomial_sum();
+                const Polynomial on_piece = sum.compose_linear(s0, width);
+                const double rounding = 4 * kEpsilon * (sum_terms_ + 2 * sum.degree() + 2) *
+                                        magnitude_at(sum_magnitude_, std::abs(s0) + width);
                 start_sign = sign_of(on_piece[0]);
-                solve = bernstein_has_sign_change(on_piece, drift);
+                solve = bernstein_has_sign_change(on_piece, rounding);
             } else {
                 // Tighter: the polynomial part (with −T) bounded by its Bernstein hull, the non-polynomial
                 // elements by their own ranges.
-                const BernsteinCoefficients hull = to_bernstein(sum_.compose_linear(s0, width));
+                const BernsteinCoefficients hull = to_bernstein(polynomial_sum().compose_linear(s0, width));
                 const Range others = elements_range(t0, t1, true);
                 const double low =
                     *std::min_element(hull.values.begin(), hull.values.begin() + hull.degree + 1) + others.low;
@@ -556,8 +572,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 previous_sign = start_sign;
             } else if (non_polynomial_ == 0) {
                 ++work.polynomial_solves;
-                if (updates_ > 0) recompose();
-                const Polynomial on_piece = sum_.compose_linear(s0, width);
+                const Polynomial on_piece = polynomial_sum().compose_linear(s0, width);
                 // A start within rounding of zero is a root at t0 the previous piece already ended on: no step.
                 if (!on_piece.is_zero_within_rounding(0)) {
                     const int sign_at_start = sign_of(on_piece[0]);
@@ -591,7 +606,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 // |dF/dt| on the piece: the polynomial part's derivative hull, plus per non-polynomial element
                 // |w|·max|f'|·max|q'| (f is convex non-increasing in r², so max|f'| is at the smallest r²).
                 const BernsteinCoefficients slope_hull =
-                    to_bernstein(sum_.compose_linear(s0, width).derivative());
+                    to_bernstein(polynomial_sum().compose_linear(s0, width).derivative());
                 double lipschitz = 0;
                 for (int k = 0; k <= slope_hull.degree; ++k)
                     lipschitz = std::max(lipschitz, std::abs(slope_hull.values[std::size_t(k)]));
@@ -644,7 +659,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
         for (Active& a : joined_)
             if (a.next_event <= t1) enter_piece(a, t1);
         join_until(t1, stretch, work);
-        if (updates_ >= kRecomposeEvery) recompose();
+        drop_finished();
         t0 = t1;
     }
 }
