@@ -32,6 +32,7 @@
 #include "geometry/implicit/metacube.h"
 #include "geometry/implicit/metacube_ray_slices.h"
 #include "geometry/polynomial/bernstein.h"
+#include "geometry/polynomial/bracketed_root.h"
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/quadratic_roots.h"
 #include "geometry/sphere/sphere_intersection.h"
@@ -536,6 +537,8 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
             const double s0 = t0 - t_ref_, width = t1 - t0;
             bool solve = true;
             int start_sign = 0;
+            Polynomial on_piece;  // F on the piece in u ∈ [0,1] (polynomial pieces that were not settled by ranges)
+            int variations = kUntrustedSign;  // of its Bernstein control polygon
             // First each element's own range: it proves most pieces free of crossings (F far below T along most
             // of a ray) at a fraction of the cost of the sums below.
             const Range range = elements_range(t0, t1, false);
@@ -547,11 +550,12 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 // Bernstein test on the sum, allowing for the rounding of its terms' sum and of the shift to the
                 // piece (2·degree + 2 operations per coefficient).
                 const Polynomial& sum = polynomial_sum();
-                const Polynomial on_piece = sum.compose_linear(s0, width);
+                on_piece = sum.compose_linear(s0, width);
                 const double rounding = 4 * kEpsilon * (sum_terms_ + 2 * sum.degree() + 2) *
                                         magnitude_at(sum_magnitude_, std::abs(s0) + width);
                 start_sign = sign_of(on_piece[0]);
-                solve = bernstein_has_sign_change(on_piece, rounding);
+                variations = bernstein_sign_variations(on_piece, rounding);
+                solve = variations != 0;
             } else {
                 // Tighter: the polynomial part (with −T) bounded by its Bernstein hull, the non-polynomial
                 // elements by their own ranges.
@@ -572,17 +576,32 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 previous_sign = start_sign;
             } else if (non_polynomial_ == 0) {
                 ++work.polynomial_solves;
-                const Polynomial on_piece = polynomial_sum().compose_linear(s0, width);
                 // A start within rounding of zero is a root at t0 the previous piece already ended on: no step.
                 if (!on_piece.is_zero_within_rounding(0)) {
                     const int sign_at_start = sign_of(on_piece[0]);
                     if (sign_at_start != previous_sign && crossing(t0, previous_sign)) return;
                     previous_sign = sign_at_start;
                 }
+                RootFinderWork root_work;
+                const double at_start = on_piece[0], at_end = on_piece.evaluate(1);
+                const bool bracketed = variations == 1 && sign_of(at_start) != sign_of(at_end);
+                if (bracketed) {
+                    // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points
+                    // to find first (a third of the cost of a hit, measured).
+                    const double root = refine_bracketed_root(on_piece, 0, 1, at_start, at_end, {}, &root_work);
+                    const int after = sign_of(at_end);
+                    if (after != previous_sign) {
+                        const int before = previous_sign;
+                        previous_sign = after;
+                        if (crossing(t0 + root * width, before)) {
+                            work.root_iterations += root_work.iterations;
+                            return;
+                        }
+                    }
+                }
                 // Roots in order; a tangent root touches without crossing, and a root whose direction repeats the
                 // last sign change is the piece-start step found again.
-                RootFinderWork root_work;
-                for (double from = 0; from <= 1;) {
+                for (double from = 0; !bracketed && from <= 1;) {
                     const auto root = first_root(on_piece, from, 1, {}, &root_work);
                     if (!root) break;
                     from = root->t + 1e-12;

@@ -47,14 +47,14 @@ BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval) {
     return result;
 }
 
-bool bernstein_has_sign_change(const Polynomial& on_unit_interval, double coefficient_error) {
+int bernstein_sign_variations(const Polynomial& on_unit_interval, double coefficient_error) {
     const BernsteinCoefficients bernstein = to_bernstein(on_unit_interval);
-    const bool positive = bernstein.values[0] > 0;
+    int variations = 0;
     for (int k = 0; k <= bernstein.degree; ++k) {
-        if (std::abs(bernstein.values[k]) <= bernstein.error_bounds[k] + coefficient_error) return true;
-        if ((bernstein.values[k] > 0) != positive) return true;
+        if (std::abs(bernstein.values[k]) <= bernstein.error_bounds[k] + coefficient_error) return kUntrustedSign;
+        if (k > 0 && (bernstein.values[k] > 0) != (bernstein.values[k - 1] > 0)) ++variations;
     }
-    return false;
+    return variations;
 }
 
 }  // namespace isotrace

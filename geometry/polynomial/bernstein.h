@@ -18,11 +18,14 @@ struct BernsteinCoefficients {
 // small integers, so the conversion is well conditioned for the degrees used here (≤ kMaxPolynomialDegree).
 BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval);
 
-// False only when every Bernstein coefficient on [0,1] is certainly non-zero (beyond its rounding bound) and all
-// have the same sign: then the polynomial has no root in the closed interval [0,1] and the piece can be skipped.
-// True means "may have a root", including coefficients that are zero or too small to trust. `coefficient_error`
-// bounds Σᵢ|Δaᵢ|, the error the caller's coefficients already carry (it bounds each Bernstein value's error too,
-// as the conversion weights are ≤ 1).
-bool bernstein_has_sign_change(const Polynomial& on_unit_interval, double coefficient_error = 0);
+// The sign variations of the control polygon on [0,1], or kUntrustedSign when a coefficient is zero or too small
+// to trust (beyond its rounding bound). By Descartes' rule for the Bernstein basis the roots in the open interval
+// (0,1), counted with multiplicity, are as many as the variations or fewer by an even number:
+//   0 — no root in the closed interval [0,1]: the piece can be skipped;
+//   1 — exactly one root, a simple one, and p(0), p(1) have trusted opposite signs: [0,1] brackets it.
+// `coefficient_error` bounds Σᵢ|Δaᵢ|, the error the caller's coefficients already carry (it bounds each Bernstein
+// value's error too, as the conversion weights are ≤ 1).
+constexpr int kUntrustedSign = -1;
+int bernstein_sign_variations(const Polynomial& on_unit_interval, double coefficient_error = 0);
 
 }  // namespace isotrace

@@ -29,17 +29,20 @@ TEST(PolynomialBernstein, ConvertsKnownPolynomials) {
     }
 }
 
+// The skip test: no variation, every coefficient trusted.
+bool may_have_root(const Polynomial& p) { return bernstein_sign_variations(p) != 0; }
+
 TEST(PolynomialBernstein, SkipsOnlyWhenEveryCoefficientHasTheSameStrictSign) {
-    EXPECT_FALSE(bernstein_has_sign_change(Polynomial{1, -1, 1}));  // 1 − u + u² > 0
-    EXPECT_FALSE(bernstein_has_sign_change(-1e30 * Polynomial{1, -1, 1}));
-    EXPECT_FALSE(bernstein_has_sign_change(1e-30 * Polynomial::from_roots(std::vector<double>{-0.5, 1.5, 2})));
-    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0.5})));
-    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0.5, 0.5})));  // tangent
-    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0, 3})));  // root at 0
-    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{-2, 1})));  // root at 1
-    EXPECT_TRUE(bernstein_has_sign_change(Polynomial{}));
+    EXPECT_FALSE(may_have_root(Polynomial{1, -1, 1}));  // 1 − u + u² > 0
+    EXPECT_FALSE(may_have_root(-1e30 * Polynomial{1, -1, 1}));
+    EXPECT_FALSE(may_have_root(1e-30 * Polynomial::from_roots(std::vector<double>{-0.5, 1.5, 2})));
+    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0.5})));
+    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0.5, 0.5})));  // tangent
+    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0, 3})));  // root at 0
+    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{-2, 1})));  // root at 1
+    EXPECT_TRUE(may_have_root(Polynomial{}));
     // Conservative: no root in [0,1] but the control polygon crosses zero.
-    EXPECT_TRUE(bernstein_has_sign_change(Polynomial::from_roots(std::vector<double>{0.5, 0.5}) + Polynomial{0.01}));
+    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0.5, 0.5}) + Polynomial{0.01}));
 }
 
 // Property: over many random polynomials, every one with a root in [0,1] (known by construction, including roots
@@ -78,11 +81,36 @@ TEST(PolynomialBernstein, NeverSkipsAnIntervalContainingARoot) {
         }
         r.polynomial = r.polynomial * std::pow(10.0, 60 * uniform(random) - 30);
         const bool has_root = !roots_inside(r.real_roots, 0, 1).empty();
-        const bool may_have_root = bernstein_has_sign_change(r.polynomial);
-        EXPECT_TRUE(may_have_root || !has_root) << "trial " << trial;
-        (may_have_root ? kept : skipped)++;
+        const bool kept_piece = may_have_root(r.polynomial);
+        EXPECT_TRUE(kept_piece || !has_root) << "trial " << trial;
+        (kept_piece ? kept : skipped)++;
     }
     EXPECT_GT(skipped, 2000);  // the test is worth having: it does skip
+}
+
+TEST(PolynomialBernstein, CountsTheControlPolygonsSignVariations) {
+    EXPECT_EQ(bernstein_sign_variations(Polynomial{1, -1, 1}), 0);
+    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0.5})), 1);
+    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0.25, 0.75})), 2);
+    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0.2, 0.5, 0.9})), 3);
+    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0, 3})), kUntrustedSign);
+    EXPECT_EQ(bernstein_sign_variations(Polynomial{}), kUntrustedSign);
+}
+
+// Property behind the sweep's bracket shortcut: one variation means exactly one root in (0,1), a simple one.
+TEST(PolynomialBernstein, OneVariationMeansExactlyOneSimpleRoot) {
+    std::mt19937_64 random(13);
+    int single = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const int degree = 1 + trial % kMaxPolynomialDegree;
+        const RandomPolynomial r = random_polynomial(random, degree, -1, 2, 0);
+        if (bernstein_sign_variations(r.polynomial) != 1) continue;
+        ++single;
+        const std::vector<double> inside = roots_inside(r.real_roots, 0, 1);
+        ASSERT_EQ(inside.size(), 1u) << "trial " << trial;
+        EXPECT_LT(r.polynomial.evaluate(0) * r.polynomial.evaluate(1), 0) << "trial " << trial;
+    }
+    EXPECT_GT(single, 2000);  // the property was exercised
 }
 
 }  // namespace
