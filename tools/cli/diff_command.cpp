@@ -303,8 +303,9 @@ CommandRunner add_diff_command(CLI::App& app) {
     command->add_option("--test-spp", args->test_spp, "--ztest: B's samples per pixel, if it has no sampleCount channel "
                                                       "or isotrace:spp metadata")
         ->check(CLI::Range(1, 1 << 30));
-    command->add_option("--significance", args->z_settings.significance, "--ztest: significance before the Sidak "
-                                                                         "correction (default 0.01)")
+    command->add_option("--significance", args->z_settings.significance,
+                        "--ztest: family-wise significance, split over the levels (pixels, block sizes) and "
+                        "Sidak-corrected within each (default 0.01)")
         ->check(CLI::Range(1e-12, 0.5));
     command->add_option("--variance-floor", args->z_settings.variance_floor,
                         "--ztest: smallest per-sample variance (default 1e-4, Mitsuba's)")
