@@ -77,6 +77,25 @@ SampleCountRange Film::sample_count_range() const {
     return range;
 }
 
+PixelStatistics Film::pixel_statistics(int x, int y) const { return statistics_of(beauty_[index(x, y)]); }
+
+PixelStatistics Film::statistics_of(const Accumulator& p) {
+    PixelStatistics statistics;
+    statistics.samples = p.samples;
+    const double inv_w = p.weight > 0 ? 1.0 / p.weight : 0.0;
+    // Sums in double: the cancellation in E[x^2] - E[x]^2 costs about n * 1e-16 of mean^2, far below the noise
+    // of any pixel whose variance matters (docs/decisions.md, "Reference mode").
+    const double denominator = p.weight * p.weight - p.weight_squared;
+    for (int c = 0; c < 3; ++c) {
+        const double mean = p.rgb[c] * inv_w;
+        const double spread = std::max(0.0, p.rgb_squared[c] * inv_w - mean * mean);
+        statistics.mean[c] = mean;
+        statistics.variance_of_mean[c] = denominator > 0 ? spread * p.weight_squared / denominator
+                                                         : std::numeric_limits<double>::infinity();
+    }
+    return statistics;
+}
+
 // Field by field (struct padding is not data), in declaration order, in the machine's byte order.
 template <class Self, class Visit>
 void Film::visit_state(Self& film, Visit&& visit) {
@@ -157,17 +176,9 @@ ImageBuffer Film::resolve() const {
                 case Aov::ObjectId: out[k++] = float(a->object_id); break;
                 case Aov::PrimitiveId: out[k++] = float(a->primitive_id); break;
                 case Aov::SampleCount: out[k++] = float(p.samples); break;
-                case Aov::Variance: {
-                    // Variance of the weighted mean, with the effective sample count (sum w)^2 / sum w^2.
-                    const double denominator = p.weight * p.weight - p.weight_squared;
-                    for (int c = 0; c < 3; ++c) {
-                        const double mean = p.rgb[c] * inv_w;
-                        const double second_moment = p.rgb_squared[c] * inv_w;
-                        const double spread = std::max(0.0, second_moment - mean * mean);
-                        out[k++] = denominator > 0 ? float(spread * p.weight_squared / denominator) : inf;
-                    }
+                case Aov::Variance:
+                    for (int c = 0; c < 3; ++c) out[k++] = float(statistics_of(p).variance_of_mean[c]);
                     break;
-                }
             }
         }
     }

@@ -43,6 +43,15 @@ struct SampleCountRange {
     std::uint64_t total = 0;
 };
 
+// A pixel's estimate and its uncertainty, per radiance channel.
+struct PixelStatistics {
+    double mean[3] = {0, 0, 0};
+    // Variance of the (weighted) mean: the per-sample variance over the effective sample count
+    // (sum w)^2 / sum w^2, which is the sample count when every weight is 1. Infinite below two samples.
+    double variance_of_mean[3] = {0, 0, 0};
+    std::uint32_t samples = 0;
+};
+
 struct CameraSample {
     Rgb radiance;
     float filter_weight = 1;
@@ -65,6 +74,7 @@ public:
     void add_sample(int x, int y, const CameraSample& sample);
     std::uint32_t sample_count(int x, int y) const;
     SampleCountRange sample_count_range() const;
+    PixelStatistics pixel_statistics(int x, int y) const;
 
     // The accumulators exactly (doubles, counts, ids), for checkpoints: restore_state(state()) on a film with the
     // same settings gives a film that continues bit-identically. restore_state throws std::invalid_argument if
@@ -89,6 +99,7 @@ private:
         float nearest_offset = 1e30f;
         std::int64_t object_id = -1, primitive_id = -1;
     };
+    static PixelStatistics statistics_of(const Accumulator& pixel);
     std::size_t index(int x, int y) const {
         return std::size_t(y - settings_.crop.y0) * std::size_t(settings_.crop.width()) + std::size_t(x - settings_.crop.x0);
     }

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
@@ -178,9 +179,19 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
     std::optional<RenderWatcher> watch(std::in_place, options, stop, elapsed, snapshot);
     RenderWatcher& watcher = *watch;
 
+    std::uint32_t last_pass_end_seen = 0;
     for (;;) {
-        const int completed = int(result.film->sample_count_range().min);
+        const SampleCountRange now = result.film->sample_count_range();
+        const int completed = int(now.min);
         completed_spp = completed;
+        if (options.stop_at_pass_end && now.min == now.max && std::has_single_bit(now.min) &&
+            now.min != last_pass_end_seen) {
+            last_pass_end_seen = now.min;
+            if (options.stop_at_pass_end(*result.film)) {
+                result.stopped_at_pass_end = true;
+                break;
+            }
+        }
         if (completed >= options.spp) break;
         watcher.check();
         if (stop == int(Stop::Checkpoint)) {
@@ -190,10 +201,13 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
             continue;
         }
         if (stop != int(Stop::None)) break;
-        // Pass sizes double (1, 1, 2, 4, ...) so early passes give a quick preview; under a time budget the
-        // next pass is shrunk to what the measured speed says still fits, so that most budgets end on a whole
-        // pass. (The budget is hard either way: a pass that overruns is stopped within a sample.)
-        int pass_spp = std::min(options.spp - completed, std::max(1, completed));
+        // Passes end at the powers of two (1, 2, 4, 8, ...): sizes double so early passes give a quick preview,
+        // and a film left at another count (a pass shrunk by a time budget, then resumed) is brought back onto
+        // the same boundaries that stop_at_pass_end is asked at. Under a time budget the next pass is shrunk to
+        // what the measured speed says still fits, so that most budgets end on a whole pass. (The budget is hard
+        // either way: a pass that overruns is stopped within a sample.)
+        const int next_boundary = completed == 0 ? 1 : int(std::bit_floor(std::uint32_t(completed)) * 2);
+        int pass_spp = std::min(options.spp - completed, next_boundary - completed);
         if (options.time_budget_seconds && samples_taken > 0) {
             const double seconds_per_spp = elapsed() * double(pixels) / double(samples_taken.load());
             const double fits = (budget - elapsed()) / seconds_per_spp;
@@ -218,7 +232,8 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
     result.max_spp = int(counts.max);
     result.partial = counts.min != counts.max;
     result.cancelled = stop == int(Stop::Cancel);
-    result.out_of_time = options.time_budget_seconds && result.completed_spp < options.spp && !result.cancelled;
+    result.out_of_time = options.time_budget_seconds && result.completed_spp < options.spp && !result.cancelled &&
+                         !result.stopped_at_pass_end;
     result.seconds = elapsed();
     if (options.on_progress) {  // the last report: 100 % unless the render was cancelled
         RenderProgress last = snapshot();

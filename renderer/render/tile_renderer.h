@@ -34,6 +34,11 @@ struct RenderOptions {
     // checkpoint_interval_seconds of rendering; the render waits while it runs.
     std::optional<double> checkpoint_interval_seconds;
     std::function<void(const Film&)> on_checkpoint;
+    // Called on the rendering thread at every pass boundary where all pixels have the same power-of-two sample
+    // count (passes end at 1, 2, 4, 8, ... samples), at most once per count; returning true ends the render.
+    // What it sees depends only on the image at those counts, never on timing or threads, so a stop it decides
+    // is reproducible (isotrace render --target-error).
+    std::function<bool(const Film&)> stop_at_pass_end;
 };
 
 struct RenderResult {
@@ -43,6 +48,7 @@ struct RenderResult {
     bool partial = false;    // stopped mid-pass: pixels have between completed_spp and max_spp samples
     bool cancelled = false;
     bool out_of_time = false;  // the time budget ended the render
+    bool stopped_at_pass_end = false;  // stop_at_pass_end returned true
     int passes = 0;            // passes started in this call
     int checkpoints = 0;       // on_checkpoint calls
     double seconds = 0;

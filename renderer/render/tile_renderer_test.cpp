@@ -480,5 +480,52 @@ TEST(TileRenderer, DepthAovIsTheViewDepthOfTheFirstHit) {
     EXPECT_GT(misses, 10);  // the quad ends at x = 1, right of the image centre
 }
 
+// stop_at_pass_end is asked at 1, 2, 4, ... spp, once each, with every pixel at that count; the render it stops
+// is bit-identical to one with that sample budget, for any thread count and tile size.
+TEST(TileRenderer, StopAtPassEndIsAskedAtPowersOfTwoAndStopsThere) {
+    const auto scene = load_test_scene(1000, RasterSize{20, 12}, "");
+    for (int threads : {1, 2}) {
+        std::vector<std::uint32_t> asked;
+        RenderOptions options = options_for(*scene, threads == 1 ? 5 : 32);
+        options.stop_at_pass_end = [&](const Film& film) {
+            const SampleCountRange counts = film.sample_count_range();
+            EXPECT_EQ(counts.min, counts.max);
+            asked.push_back(counts.min);
+            return counts.min >= 16;
+        };
+        const RenderResult result = render_with_threads(*scene, threads, options);
+        EXPECT_EQ(asked, (std::vector<std::uint32_t>{1, 2, 4, 8, 16}));
+        EXPECT_TRUE(result.stopped_at_pass_end);
+        EXPECT_FALSE(result.out_of_time);
+        EXPECT_EQ(result.completed_spp, 16);
+        EXPECT_FALSE(result.partial);
+        RenderOptions budget = options_for(*scene, 7);
+        budget.spp = 16;
+        expect_bit_identical(result.film->resolve(), render_with_threads(*scene, 2, budget).film->resolve(),
+                             "stopped at 16 spp vs --spp 16");
+    }
+}
+
+// A film left between boundaries (3 spp, as a time budget can leave it) goes on to 4, then 8, ...: the stop is
+// asked at the same counts as in an uninterrupted render.
+TEST(TileRenderer, PassesRealignToPowersOfTwoAfterAnOddCount) {
+    const auto scene = load_test_scene(1000, RasterSize{8, 8}, "");
+    RenderOptions first = options_for(*scene, 8);
+    first.spp = 3;
+    RenderResult three = render_with_threads(*scene, 1, first);
+    ASSERT_EQ(three.completed_spp, 3);
+    std::vector<std::uint32_t> asked;
+    RenderOptions options = options_for(*scene, 8);
+    options.spp = 32;
+    options.stop_at_pass_end = [&](const Film& film) {
+        asked.push_back(film.sample_count_range().min);
+        return false;
+    };
+    const RenderResult result = render_with_threads(*scene, 2, options, std::move(three.film));
+    EXPECT_EQ(asked, (std::vector<std::uint32_t>{4, 8, 16, 32}));
+    EXPECT_EQ(result.passes, 4);
+    EXPECT_FALSE(result.stopped_at_pass_end);
+}
+
 }  // namespace
 }  // namespace isotrace

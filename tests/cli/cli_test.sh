@@ -1226,6 +1226,81 @@ case_diff_ztest() {  # an unbiased 64-spp render passes against a 1024-spp refer
   cli_expect 2 diff --ztest "$work/ref.exr" "$work/test.exr" --fail flip=0.1
 }
 
+# Reference mode: the stop at the target error is decided at pass boundaries, so the image is the same for any
+# thread count and tile size, and --spp with the samples it stopped at renders the same pixels again.
+case_reference_mode() {
+  write_two_balls_scene "$work/scene.json" 0.5
+  cli_expect 0 render "$work/scene.json" --reference --target-error 0.02 --seed 1 --threads 1 -o "$work/a.exr"
+  sed 's/^/  stderr: /' "$work/stderr" >&2
+  expect_in "$work/stderr" "isotrace: 1 spp: estimated relative error inf (target 0.02, checked from 64 spp)"
+  expect_in "$work/stderr" "(target 0.02): reached"
+  cli_expect 0 render "$work/scene.json" --reference --target-error 0.02 --seed 1 --threads 2 --tile-size 5 \
+    --quiet -o "$work/b.exr"
+  [[ ! -s "$work/stderr" ]] || fail "--quiet printed the error estimate"
+  idiff -fail 0 -failpercent 0 -warn 0 "$work/a.exr" "$work/b.exr" >"$work/idiff" 2>&1 ||
+    { cat "$work/idiff" >&2; fail "reference renders with 1 and 2 threads differ"; }
+  local spp
+  spp=$(exr_attribute "$work/a.exr" spp)
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == "target error" ]] || fail "not stopped by the target error"
+  ((spp >= 64 && (spp & (spp - 1)) == 0)) || fail "stopped at $spp spp, not a power of two from 64 on"
+  exr_info "$work/a.exr" "$work/info"
+  local entry
+  for entry in variance.R variance.B sampleCount "isotrace:scene_hash" "isotrace:commit" "isotrace:target_error" \
+    "isotrace:estimated_error" "isotrace:channels" "isotrace:reproduce" "isotrace:seed" "isotrace:sampler" \
+    "isotrace:version"; do
+    expect_in "$work/info" "$entry" "the reference's channels and metadata"
+  done
+  grep -q "half" "$work/info" && fail "a reference EXR must be full float"
+  expect_in "$work/info" "--reference --res 32x16 --seed 1 --spp $spp"
+  # The scene hash is the one isotrace info prints.
+  cli_expect 0 info "$work/scene.json"
+  expect_in "$work/stdout" "scene hash   $(exr_attribute "$work/a.exr" scene_hash)"
+  # The printed command renders the same pixels.
+  cli_expect 0 render "$work/scene.json" --reference --res 32x16 --seed 1 --spp "$spp" --quiet -o "$work/c.exr"
+  idiff -fail 0 -failpercent 0 -warn 0 "$work/a.exr" "$work/c.exr" >"$work/idiff" 2>&1 ||
+    { cat "$work/idiff" >&2; fail "--spp $spp does not reproduce the reference"; }
+  # A low-budget reference-mode render with another seed passes the z-test (with its own variance), one with the
+  # reference's seed is refused.
+  cli_expect 0 render "$work/scene.json" --reference --spp 64 --seed 2 --quiet -o "$work/test.exr"
+  cli_expect 0 diff --ztest "$work/a.exr" "$work/test.exr"
+  expect_in "$work/stdout" "16x16 blocks"
+  cli_expect 2 diff --ztest "$work/a.exr" "$work/c.exr"
+  expect_in "$work/stderr" "same seed"
+}
+
+# A reference render cut short by its time budget leaves a checkpoint; resumed, it goes on to the same stop.
+case_reference_resume() {
+  write_two_balls_scene "$work/scene.json" 0.5
+  cli_expect 0 render "$work/scene.json" --reference --target-error 0.01 --seed 3 --quiet -o "$work/a.exr"
+  cli_expect 0 render "$work/scene.json" --reference --target-error 0.01 --seed 3 --time 0.05 --quiet \
+    -o "$work/b.exr" --checkpoint "$work/ck.bin"
+  [[ -s "$work/ck.bin" ]] || fail "no checkpoint after the time budget"
+  cli_expect 2 render "$work/scene.json" --resume "$work/ck.bin" --target-error 0.5 --quiet -o "$work/b.exr"
+  expect_in "$work/stderr" "--target-error 0.5 differs"
+  cli_expect 0 render "$work/scene.json" --resume "$work/ck.bin" --quiet -o "$work/b.exr"
+  idiff -fail 0 -failpercent 0 -warn 0 "$work/a.exr" "$work/b.exr" >"$work/idiff" 2>&1 ||
+    { cat "$work/idiff" >&2; fail "the resumed reference differs from the uninterrupted one"; }
+  [[ "$(exr_attribute "$work/b.exr" stopped)" == "target error" ]] || fail "the resumed render did not stop at the target"
+}
+
+case_reference_bad_input() {
+  write_two_balls_scene "$work/scene.json" 0.5
+  local value
+  for value in 0 -0.1 nan inf abc ""; do
+    cli_expect 2 render "$work/scene.json" --reference --target-error "$value" --quiet -o "$work/a.exr"
+    expect_in "$work/stderr" "--target-error"
+  done
+  cli_expect 2 render "$work/scene.json" --target-error 0.01 --quiet -o "$work/a.exr"
+  expect_in "$work/stderr" "needs --reference"
+  cli_expect 2 render "$work/scene.json" --reference --quiet -o "$work/a.png"
+  expect_in "$work/stderr" "give -o NAME.exr"
+  cli_expect 0 render "$work/scene.json" --spp 100000 --time 0.1 --quiet -o "$work/plain.exr" --checkpoint "$work/ck.bin"
+  cli_expect 2 render "$work/scene.json" --resume "$work/ck.bin" --reference --quiet -o "$work/a.exr"
+  expect_in "$work/stderr" "not of a reference render"
+  expect_no_file "$work/a.exr"
+  expect_no_file "$work/a.png"
+}
+
 # ---- dispatch --------------------------------------------------------------------------------------------
 
 if [[ $(type -t "case_$case_name") != function ]]; then

@@ -37,13 +37,17 @@ std::uint64_t parse_seed(const std::string& text, const std::string& option) {
     return seed;
 }
 
+double parse_positive_number(const std::string& text, const std::string& option, const std::string& what) {
+    double value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
+        !(value > 0))
+        throw InputError({}, option, "expected " + what + " > 0, got \"" + text + "\"");
+    return value;
+}
+
 double parse_seconds(const std::string& text, const std::string& option) {
-    double seconds = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(seconds) ||
-        !(seconds > 0))
-        throw InputError({}, option, "expected a number of seconds > 0, got \"" + text + "\"");
-    return seconds;
+    return parse_positive_number(text, option, "a number of seconds");
 }
 
 std::uint64_t parse_memory_size(const std::string& text, const std::string& option) {

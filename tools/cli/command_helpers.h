@@ -13,7 +13,10 @@ RasterSize parse_resolution(const std::string& text, const std::string& option);
 // A seed: a whole number in [0, 2^64 - 1], decimal digits only ("-1" is not 2^64 - 1, "2^64" is not clamped).
 std::uint64_t parse_seed(const std::string& text, const std::string& option);
 
-// Seconds: a finite number > 0 (no nan, inf, 0 or negative values).
+// A finite number > 0 (no nan, inf, 0 or negative values); the error names `option` and says `what` was expected.
+double parse_positive_number(const std::string& text, const std::string& option, const std::string& what);
+
+// Seconds: parse_positive_number for a number of seconds.
 double parse_seconds(const std::string& text, const std::string& option);
 
 // A memory size: bytes with an optional K, M, G or T suffix (powers of 1024), or a percentage of physical memory

@@ -187,6 +187,41 @@ void write_error_map(const DiffArguments& args, int width, int height, const Err
     if (!args.quiet) std::fprintf(stderr, "wrote %s (%s)\n", args.error_map.c_str(), picture.description.c_str());
 }
 
+std::string level_name(int edge) {
+    return edge == 1 ? "pixels" : std::to_string(edge) + "x" + std::to_string(edge) + " blocks";
+}
+
+void print_z_test(const DiffArguments& args, const ZTestResult& result) {
+    std::printf("z-test (each level needs %.2f %% of its tests to pass; significance %g over the levels): %s\n",
+                100 * args.z_settings.required_pass_fraction, args.z_settings.significance,
+                result.passed ? "pass" : "FAIL");
+    std::printf("  %-14s %8s %8s %9s %10s %10s\n", "level", "tests", "failed", "passed %", "alpha", "min p");
+    for (const ZTestLevel& level : result.levels)
+        std::printf("  %-14s %8lld %8lld %9.3f %10.3g %10.3g  %s\n", level_name(level.edge).c_str(),
+                    static_cast<long long>(level.tests), static_cast<long long>(level.failed), 100 * level.pass_fraction,
+                    level.alpha, level.min_p_value, level.passed ? "pass" : "FAIL");
+    if (result.worst.empty()) return;
+    std::printf("most significant failures (block: top-left pixel and mean values):\n");
+    for (const ZTestFailure& f : result.worst)
+        std::printf("  %-14s at %d,%d %c: test %.6g, reference %.6g (%+.2f %%), z %.2f, p %.3g\n",
+                    level_name(f.edge).c_str(), f.x, f.y, "RGB"[f.channel], f.test, f.reference,
+                    f.reference != 0 ? 100 * (f.test - f.reference) / std::abs(f.reference) : 0.0, f.z, f.p_value);
+}
+
+nlohmann::json z_test_json(const DiffArguments& args, const ZTestResult& result) {
+    nlohmann::json levels = nlohmann::json::array(), worst = nlohmann::json::array();
+    for (const ZTestLevel& l : result.levels)
+        levels.push_back({{"block_edge", l.edge}, {"tests", l.tests}, {"failed", l.failed}, {"alpha", l.alpha},
+                          {"min_p_value", l.min_p_value}, {"pass_fraction", l.pass_fraction}, {"passed", l.passed}});
+    for (const ZTestFailure& f : result.worst)
+        worst.push_back({{"block_edge", f.edge}, {"x", f.x}, {"y", f.y}, {"channel", std::string(1, "RGB"[f.channel])},
+                         {"test", f.test}, {"reference", f.reference}, {"z", f.z}, {"p_value", f.p_value}});
+    return {{"reference", args.reference}, {"test", args.test}, {"significance", args.z_settings.significance},
+            {"required_pass_fraction", args.z_settings.required_pass_fraction},
+            {"variance_floor", args.z_settings.variance_floor}, {"levels", levels}, {"worst_failures", worst},
+            {"passed", result.passed}, {"isotrace", kIsotraceVersion}};
+}
+
 int run_z_test(const DiffArguments& args, const ImageFile& reference, const ImageFile& test) {
     require_comparable(reference, args.reference, test, args.test, false);
     // Per-channel statistics: both images must hold the same primaries.
@@ -194,22 +229,10 @@ int run_z_test(const DiffArguments& args, const ImageFile& reference, const Imag
         throw InputError({}, "", args.reference + " and " + args.test + " have different chromaticities (primaries)");
     const ZTestInput input = z_test_input(reference, args.reference, test, args.test, args.test_spp);
     const ZTestResult result = z_test(input, args.z_settings);
-    std::printf("z-test: %.4f %% of pixel channels pass (needs %.4f %%): %s\n", 100 * result.pass_fraction,
-                100 * args.z_settings.required_pass_fraction, result.passed ? "pass" : "FAIL");
-    std::printf("        %lld of %zu channels fail; alpha %.3g (Sidak: significance %g over %zu pixels); min p %.3g\n",
-                static_cast<long long>(result.failed_channels), 3 * input.test.pixel_count(), result.alpha,
-                args.z_settings.significance, input.test.pixel_count(), result.min_p_value);
-    if (!args.json.empty()) {
-        const nlohmann::json report = {
-            {"reference", args.reference}, {"test", args.test}, {"pass_fraction", result.pass_fraction},
-            {"required_pass_fraction", args.z_settings.required_pass_fraction}, {"alpha", result.alpha},
-            {"significance", args.z_settings.significance}, {"variance_floor", args.z_settings.variance_floor},
-            {"failed_channels", result.failed_channels}, {"min_p_value", result.min_p_value}, {"passed", result.passed},
-            {"isotrace", kIsotraceVersion}};
-        write_text_atomically(args.json, report.dump(2) + "\n");
-    }
+    print_z_test(args, result);
+    if (!args.json.empty()) write_text_atomically(args.json, z_test_json(args, result).dump(2) + "\n");
     if (!args.error_map.empty()) {
-        ErrorPicture picture{result.failed_per_pixel, 3.0, "failing channels per pixel, 0 to 3"};
+        ErrorPicture picture{result.failed_per_pixel, 3.0, "failing pixel channels per pixel, 0 to 3"};
         write_error_map(args, input.test.width, input.test.height, picture);
     }
     return result.passed ? kExitOk : kExitFailure;
@@ -274,13 +297,15 @@ CommandRunner add_diff_command(CLI::App& app) {
                                                           "wide 4K monitor at 0.7 m)")
         ->check(CLI::Range(1.0, 1000.0));
     command->add_flag("--ztest", args->z_test,
-                      "Per-pixel z-test of B (a low-budget render) against A's mean, variance and sampleCount channels; "
-                      "exit 1 unless 99.75 % of pixel channels pass");
+                      "Per-pixel and per-block z-test of B (a low-budget render with another seed) against A's mean, "
+                      "variance and sampleCount channels (isotrace render --reference), using B's variance channels "
+                      "too when it has them; exit 1 unless 99.75 % of the tests pass at every level");
     command->add_option("--test-spp", args->test_spp, "--ztest: B's samples per pixel, if it has no sampleCount channel "
                                                       "or isotrace:spp metadata")
         ->check(CLI::Range(1, 1 << 30));
-    command->add_option("--significance", args->z_settings.significance, "--ztest: significance before the Sidak "
-                                                                         "correction (default 0.01)")
+    command->add_option("--significance", args->z_settings.significance,
+                        "--ztest: family-wise significance, split over the levels (pixels, block sizes) and "
+                        "Sidak-corrected within each (default 0.01)")
         ->check(CLI::Range(1e-12, 0.5));
     command->add_option("--variance-floor", args->z_settings.variance_floor,
                         "--ztest: smallest per-sample variance (default 1e-4, Mitsuba's)")

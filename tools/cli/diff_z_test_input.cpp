@@ -34,11 +34,20 @@ ZTestInput z_test_input(const ImageFile& reference, const std::string& reference
             throw InputError({reference_path, 0, 0}, "",
                              std::string("the z-test reference needs a \"") + needed +
                                  "\" channel: render it with --aov variance,sample_count (and many samples)");
+    // The same seed makes the test's samples a prefix of the reference's: the two means are then not independent.
+    const ImageMetadata::Value* reference_seed = reference.metadata.find("isotrace:seed");
+    const ImageMetadata::Value* test_seed = test.metadata.find("isotrace:seed");
+    if (reference_seed && test_seed && *reference_seed == *test_seed)
+        throw InputError({test_path, 0, 0}, "",
+                         "rendered with the same seed as the reference (isotrace:seed): the z-test needs independent "
+                         "samples; render the test with another --seed");
     ZTestInput input;
     input.reference_mean = colour_of(reference, reference_path);
     input.reference_variance = channels_as_rgb(reference, {"variance.R", "variance.G", "variance.B"}, reference_path);
     input.reference_samples = channel_plane(reference, "sampleCount", reference_path);
     input.test = colour_of(test, test_path);
+    if (find_channel(test, "variance.R"))
+        input.test_variance = channels_as_rgb(test, {"variance.R", "variance.G", "variance.B"}, test_path);
     if (find_channel(test, "sampleCount")) {
         input.test_samples = channel_plane(test, "sampleCount", test_path);
     } else {

@@ -10,6 +10,7 @@
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/scene_fingerprint.h"
 
 namespace isotrace::cli {
 namespace {
@@ -40,6 +41,8 @@ int run_info(const std::string& path) {
     std::printf("film         %dx%d (crop %d..%d x %d..%d), %d spp, %s filter, EXR %s\n", scene->film.raster.width,
                 scene->film.raster.height, scene->film.crop.x0, scene->film.crop.x1, scene->film.crop.y0,
                 scene->film.crop.y1, scene->spp, scene->filter_type.c_str(), scene->film.half_float ? "half" : "float");
+    std::printf("scene hash   %s (the scene file and %zu referenced file(s), by content)\n", scene_hash(*scene).c_str(),
+                scene->referenced_files.size());
     std::printf("camera       %s\n", scene->camera_type.c_str());
     std::printf("integrator   %s\n", scene->integrator_type.c_str());
     std::printf("sampler      %s, seed %llu\n", scene->sampler_type.c_str(), (unsigned long long)scene->seed);

@@ -1,36 +1,12 @@
 #include "tools/cli/render_checkpoint.h"
 
-#include <cstdio>
-#include <fstream>
-#include <iterator>
-
-#include "renderer/core/fnv_hash.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/version.h"
 #include "renderer/render/checkpoint_file.h"
+#include "tools/cli/scene_fingerprint.h"
 
 namespace isotrace::cli {
 namespace {
-
-std::string hex(std::uint64_t value) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-    return text;
-}
-
-nlohmann::json fingerprint(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read " + file.string() + " to fingerprint the scene");
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return {{"path", file.string()}, {"bytes", bytes.size()}, {"fnv1a64", hex(fnv1a_64(bytes))}};
-}
-
-// The scene file first, then the files it references in sorted order.
-nlohmann::json scene_files(const LoadedScene& scene) {
-    nlohmann::json files = nlohmann::json::array({fingerprint(scene.path)});
-    for (const auto& file : scene.referenced_files) files.push_back(fingerprint(file));
-    return files;
-}
 
 [[noreturn]] void reject(const std::string& checkpoint, const std::string& problem) {
     throw InputError({checkpoint}, "", problem);
@@ -49,13 +25,15 @@ void save_checkpoint(const std::filesystem::path& path, const LoadedScene& scene
          {{"spp", options.spp},
           {"resolution", {options.resolution.width, options.resolution.height}},
           {"seed", std::to_string(options.seed)},
-          {"aovs", options.extra_aovs}}},
+          {"aovs", options.extra_aovs},
+          {"reference", options.reference},
+          {"target_error", options.target_error ? nlohmann::json(*options.target_error) : nlohmann::json()}}},
         {"film",
          {{"crop", {crop.x0, crop.y0, crop.x1, crop.y1}},
           {"completed_spp", counts.min},
           {"max_spp", counts.max},
           {"samples", counts.total}}},
-        {"pass_schedule", "passes of 1, 1, 2, 4, ... samples; every pixel continues at its own sample count"},
+        {"pass_schedule", "passes end at 1, 2, 4, 8, ... samples; every pixel continues at its own sample count"},
     };
     write_checkpoint(path, {metadata.dump(1), film.state()});
 }
@@ -75,6 +53,10 @@ ResumePoint read_resume_point(const std::filesystem::path& path) {
         resume.options.resolution = {options.at("resolution").at(0).get<int>(), options.at("resolution").at(1).get<int>()};
         resume.options.seed = std::stoull(options.at("seed").get<std::string>());
         resume.options.extra_aovs = options.at("aovs").get<std::vector<std::string>>();
+        // Absent from checkpoints written before reference mode existed: those were not reference renders.
+        resume.options.reference = options.value("reference", false);
+        if (options.contains("target_error") && !options.at("target_error").is_null())
+            resume.options.target_error = options.at("target_error").get<double>();
         resume.metadata.at("scene").at("files").at(0).at("fnv1a64").get<std::string>();
     } catch (const nlohmann::json::exception& error) {
         reject(source, std::string("the checkpoint's metadata is incomplete: ") + error.what());

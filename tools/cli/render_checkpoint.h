@@ -3,6 +3,7 @@
 // file and every file it references, by size and hash), the isotrace version, and the options that change pixels.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct PixelOptions {
     RasterSize resolution;
     std::uint64_t seed = 0;
     std::vector<std::string> extra_aovs;  // --aov, by name
+    bool reference = false;               // --reference
+    std::optional<double> target_error;   // --target-error: decides where the render ends
 };
 
 // Writes `film` with its metadata atomically to `path`.

@@ -17,6 +17,7 @@
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/progress_bar.h"
+#include "tools/cli/reference_mode.h"
 #include "tools/cli/render_checkpoint.h"
 #include "tools/cli/render_statistics.h"
 #include "tools/cli/thread_limit.h"
@@ -80,12 +81,15 @@ struct RenderArguments {
     std::string checkpoint;
     std::string checkpoint_every;  // parsed by parse_seconds
     std::string resume;
+    bool reference = false;
+    std::optional<std::string> target_error;  // parsed by parse_reference_request
 };
 
 constexpr double kDefaultCheckpointSeconds = 300;
 
 const char* how_it_ended(const RenderResult& result, int spp) {
     if (result.cancelled) return "interrupted";
+    if (result.stopped_at_pass_end) return "target error";
     if (result.completed_spp >= spp) return "complete";
     return "time budget";
 }
@@ -117,10 +121,9 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
 
 // Every output is attempted even when one fails (a full disk may still take a small PNG); each failure is
 // reported, and any failure ends the command with a failure.
-void write_outputs(const RenderArguments& args, const LoadedScene& scene, const RenderResult& result, int spp,
-                   std::uint64_t rays) {
+void write_outputs(const RenderArguments& args, const LoadedScene& scene, const RenderResult& result,
+                   const ImageMetadata& metadata) {
     const ImageBuffer image = result.film->resolve();
-    const ImageMetadata metadata = make_metadata(scene, result, spp, rays);
     const ImageWindow window{scene.film.raster, scene.film.crop.x0, scene.film.crop.y0};
     int failures = 0;
     for (const std::string& output : args.outputs) {
@@ -146,7 +149,8 @@ std::vector<std::string> aov_names(const std::vector<Aov>& aovs) {
 }
 
 // On --resume, the options that change pixels come from the checkpoint; any given on the command line must match.
-void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& args, SceneOverrides& overrides) {
+void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& args, SceneOverrides& overrides,
+                             ReferenceRequest& reference) {
     const PixelOptions& recorded = resume.options;
     const auto mismatch = [&](const std::string& option, const std::string& given, const std::string& kept) {
         throw InputError({args.resume}, "",
@@ -161,6 +165,11 @@ void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& a
                  std::to_string(recorded.resolution.width) + "x" + std::to_string(recorded.resolution.height));
     if (overrides.seed && *overrides.seed != recorded.seed)
         mismatch("--seed", args.seed, std::to_string(recorded.seed));
+    if (args.reference && !recorded.reference)
+        throw InputError({args.resume}, "", "--reference: the checkpoint is not of a reference render");
+    if (args.target_error && reference.target_error != recorded.target_error)
+        mismatch("--target-error", *args.target_error,
+                 recorded.target_error ? std::to_string(*recorded.target_error) : "(none)");
     std::vector<Aov> recorded_aovs;
     for (const std::string& name : recorded.extra_aovs) {
         const std::vector<Aov> parsed = parse_aov_list(name, args.resume);
@@ -175,10 +184,11 @@ void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& a
     overrides.resolution = recorded.resolution;
     overrides.seed = recorded.seed;
     overrides.extra_aovs = recorded_aovs;
+    reference = {recorded.reference, recorded.target_error};
 }
 
 int run_render(const RenderArguments& args) {
-    const bool show_progress = !args.quiet && stderr_is_terminal();
+    ReferenceRequest reference = parse_reference_request(args.reference, args.target_error, !args.resume.empty());
     SceneOverrides overrides;
     overrides.spp = args.spp;
     if (!args.seed.empty()) overrides.seed = parse_seed(args.seed, "--seed");
@@ -189,6 +199,7 @@ int run_render(const RenderArguments& args) {
         overrides.max_scene_file_bytes = parse_memory_size(args.max_scene_size, "--max-scene-size");
     if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
     if (!args.aovs.empty()) overrides.extra_aovs = parse_aov_list(args.aovs, "--aov");
+    if (reference.enabled) add_reference_channels(overrides.extra_aovs);
     // A resumed render goes on checkpointing to the file it came from unless told otherwise.
     const std::string checkpoint_path = !args.checkpoint.empty() ? args.checkpoint : args.resume;
     if (!args.checkpoint_every.empty() && checkpoint_path.empty())
@@ -204,8 +215,9 @@ int run_render(const RenderArguments& args) {
     std::optional<ResumePoint> resume;
     if (!args.resume.empty()) {
         resume = read_resume_point(args.resume);
-        take_pixel_options_from(*resume, args, overrides);
+        take_pixel_options_from(*resume, args, overrides, reference);
     }
+    if (reference.enabled) require_reference_output(args.outputs);
     if (!checkpoint_path.empty()) check_output_directory(checkpoint_path, "--checkpoint");
     if (!args.outputs.empty()) image_codec();  // a missing image module fails now, not after the render
 
@@ -215,6 +227,7 @@ int run_render(const RenderArguments& args) {
     counters::reset();
     const auto load_start = std::chrono::steady_clock::now();
     std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
+    if (reference.enabled) scene->film.half_float = false;  // a reference keeps every bit of its mean and variance
     std::unique_ptr<Film> film;
     if (resume) {
         check_same_scene(*resume, *scene, args.resume);
@@ -231,11 +244,14 @@ int run_render(const RenderArguments& args) {
 
     RenderOptions options;
     options.tile_size = args.tile_size;
-    // --time alone lifts the sample limit; with --spp too, whichever budget runs out first ends the render.
-    options.spp = resume ? resume->options.spp : time_budget && !args.spp ? (1 << 24) : scene->spp;
+    // --time or --target-error alone lifts the sample limit; with --spp too, whichever ends first ends the render.
+    const bool lifted = (time_budget || reference.target_error) && !args.spp;
+    options.spp = resume ? resume->options.spp : lifted ? (1 << 24) : scene->spp;
     options.time_budget_seconds = time_budget;
     options.cancel = &g_interrupted;
-    const PixelOptions pixel_options{options.spp, scene->film.raster, scene->seed, aov_names(overrides.extra_aovs)};
+    const PixelOptions pixel_options{options.spp, scene->film.raster, scene->seed, aov_names(overrides.extra_aovs),
+                                     reference.enabled, reference.target_error};
+    if (reference.enabled) options.stop_at_pass_end = reference_stop_rule(reference, args.quiet);
     const auto checkpoint = [&](const Film& state) {
         try {
             save_checkpoint(checkpoint_path, *scene, pixel_options, state);
@@ -258,6 +274,8 @@ int run_render(const RenderArguments& args) {
                      resume ? (", resuming at " + std::to_string(done.min) + " spp").c_str() : "");
     }
 
+    // A reference render prints its error estimate at each pass boundary instead of drawing the bar.
+    const bool show_progress = !args.quiet && stderr_is_terminal() && !reference.enabled;
     ProgressBar bar(show_progress);
     if (show_progress) options.on_progress = [&](const RenderProgress& p) { bar.update(p); };
     const StopSignals signals;  // until the outputs are written: a second signal then removes the temporary file
@@ -268,8 +286,13 @@ int run_render(const RenderArguments& args) {
     const CounterTotals counts = counters::totals();
     const auto write_start = std::chrono::steady_clock::now();
     // An unfinished render leaves a checkpoint to continue from.
-    if (!checkpoint_path.empty() && result.completed_spp < options.spp) checkpoint(*result.film);
-    write_outputs(args, *scene, result, options.spp, counts.total_rays());
+    const bool unfinished = result.completed_spp < options.spp && !result.stopped_at_pass_end;
+    if (!checkpoint_path.empty() && unfinished) checkpoint(*result.film);
+    ImageMetadata metadata = make_metadata(*scene, result, options.spp, counts.total_rays());
+    if (reference.enabled)
+        add_reference_metadata(metadata, reference, {scene->film.raster, scene->seed, options.spp, time_budget}, *scene,
+                               result);
+    write_outputs(args, *scene, result, metadata);
     times.write = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
 
     const nlohmann::json stats = render_statistics(*scene, result, counts, times, threads);
@@ -277,7 +300,7 @@ int run_render(const RenderArguments& args) {
     if (!args.quiet) {
         std::fputs(format_statistics(stats).c_str(), stderr);
         for (const std::string& output : args.outputs) std::fprintf(stderr, "wrote %s\n", output.c_str());
-        if (!checkpoint_path.empty() && result.completed_spp < options.spp)
+        if (!checkpoint_path.empty() && unfinished)
             std::fprintf(stderr, "wrote checkpoint %s (continue with --resume %s)\n", checkpoint_path.c_str(),
                          checkpoint_path.c_str());
     }
@@ -319,6 +342,7 @@ CommandRunner add_render_command(CLI::App& app) {
                         "Continue the render saved in this checkpoint (same scene; the final image is bit-identical "
                         "to an uninterrupted render); goes on checkpointing to it unless --checkpoint says otherwise")
         ->check(CLI::ExistingFile);
+    add_reference_options(*command, args->reference, args->target_error);
     command->add_option("--max-memory", args->max_memory,
                         "Refuse scenes whose estimated memory exceeds this: bytes with K/M/G/T, or a percentage of "
                         "physical memory (default: 80%)");

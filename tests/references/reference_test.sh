@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# reference_test.sh <isotrace binary> <source dir> <scene name>: the statistical regression test of one scene
+# (docs/reference-images.md). Renders scenes/<name>.json at 64 spp with a seed other than its reference's, at the
+# reference's resolution, and runs isotrace diff --ztest against references/<name>.exr (made by
+# tools/make-references): per-pixel and per-block tests, both images' variances, Sidak-corrected. Fails with the
+# z-test's listing; first checks that the scene is the one the reference and references/scene-hashes.txt were
+# made from.
+set -euo pipefail
+if (($# != 3)); then
+  echo "usage: $0 <isotrace binary> <source dir> <scene name>" >&2
+  exit 64
+fi
+cli=$1
+cd "$2"
+name=$3
+test_spp=64
+
+fail() {
+  echo "FAIL [reference_$name]: $*" >&2
+  exit 1
+}
+
+hashes=references/scene-hashes.txt
+line=$(awk -v n="$name" '$1 == n' "$hashes" 2>/dev/null || true)
+[[ -n $line ]] || fail "no line for $name in $hashes: run tools/make-references $name"
+read -r _ hash resolution seed _ <<<"$line"
+current=$("$cli" info "scenes/$name.json" | sed -n 's/^scene hash *\([0-9a-f]*\).*/\1/p')
+[[ $current == "$hash" ]] ||
+  fail "scenes/$name.json (or a file it references) changed since its reference was made: scene hash $current," \
+       "$hash in $hashes; if the change is meant to change the image, run tools/make-references $name and commit $hashes"
+reference=references/$name.exr
+[[ -f $reference ]] || fail "no $reference: run tools/make-references $name (reference images are not committed)"
+made_from=$(iinfo -v "$reference" | sed -n 's/.*isotrace:scene_hash: *"\{0,1\}\([0-9a-f]*\)"\{0,1\}.*/\1/p' | head -n 1)
+[[ $made_from == "$hash" ]] || fail "$reference was made from another version of the scene (scene hash $made_from): run tools/make-references $name"
+
+out=${TMPDIR:-/tmp}/isotrace-reference-tests
+mkdir -p "$out"
+"$cli" render "scenes/$name.json" --reference --res "$resolution" --seed $((seed + 1)) --spp "$test_spp" --quiet \
+  -o "$out/$name.exr"
+status=0
+"$cli" diff --ztest "$reference" "$out/$name.exr" --error-map "$out/$name-failures.png" --quiet || status=$?
+if ((status != 0)); then
+  fail "the $test_spp-spp render is not consistent with $reference (z-test exit $status); the render and a map of" \
+       "its failing pixels are in $out/"
+fi
+rm -f "$out/$name.exr" "$out/$name-failures.png"
+echo "PASS [reference_$name]"

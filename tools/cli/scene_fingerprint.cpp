@@ -1,0 +1,41 @@
+#include "tools/cli/scene_fingerprint.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "renderer/core/fnv_hash.h"
+
+namespace isotrace::cli {
+namespace {
+
+std::string hex(std::uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
+}
+
+nlohmann::json fingerprint(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + file.string() + " to fingerprint the scene");
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return {{"path", file.string()}, {"bytes", bytes.size()}, {"fnv1a64", hex(fnv1a_64(bytes))}};
+}
+
+}  // namespace
+
+nlohmann::json scene_files(const LoadedScene& scene) {
+    nlohmann::json files = nlohmann::json::array({fingerprint(scene.path)});
+    for (const auto& file : scene.referenced_files) files.push_back(fingerprint(file));
+    return files;
+}
+
+std::string scene_hash(const LoadedScene& scene) {
+    std::string lines;
+    for (const nlohmann::json& file : scene_files(scene))
+        lines += std::to_string(file.at("bytes").get<std::uint64_t>()) + " " + file.at("fnv1a64").get<std::string>() + "\n";
+    return hex(fnv1a_64(lines));
+}
+
+}  // namespace isotrace::cli
