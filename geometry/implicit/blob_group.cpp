@@ -119,17 +119,25 @@ int BlobGroup::crossings(const Vec3d& origin, const Vec3d& direction, double t_m
     return sign_at_start;
 }
 
+template <class Visit>
+void BlobGroup::for_each_reaching(std::span<const std::uint32_t> listed, const Vec3d& point, Visit&& visit) const {
+    // The float test rejects most listed elements four at a time; the exact test decides for the rest.
+    for_each_near(listed, spheres_, PointNearSpheres(point, centre_bound_), [&](std::uint32_t j) {
+        if (spheres_[j].may_contain(point)) visit(elements_[j]);
+    });
+}
+
 double BlobGroup::field(const Vec3d& point) const {
     double sum = 0;
-    for (std::uint32_t j : cells_.elements_near(point))
-        if (spheres_[j].may_contain(point)) sum += elements_[j].field(*kernel_, point);
+    for_each_reaching(cells_.elements_near(point), point,
+                      [&](const Metacube& element) { sum += element.field(*kernel_, point); });
     return sum;
 }
 
 Vec3d BlobGroup::gradient(const Vec3d& point) const {
     Vec3d sum(0, 0, 0);
-    for (std::uint32_t j : cells_.elements_near(point))
-        if (spheres_[j].may_contain(point)) sum += elements_[j].field_gradient(*kernel_, point);
+    for_each_reaching(cells_.elements_near(point), point,
+                      [&](const Metacube& element) { sum += element.field_gradient(*kernel_, point); });
     return sum;
 }
 
@@ -141,9 +149,8 @@ Vec3d BlobGroup::normal_in_cell(std::uint32_t cell, const Vec3d& point) const {
 
 Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const {
     Vec3d g(0, 0, 0);
-    // The bounding spheres skip, at a few operations each, the listed elements that add exactly 0 here.
-    for (std::uint32_t j : near)
-        if (spheres_[j].may_contain(point)) g += elements_[j].field_gradient(*kernel_, point);
+    // The bounding spheres skip the listed elements that add exactly 0 here.
+    for_each_reaching(near, point, [&](const Metacube& element) { g += element.field_gradient(*kernel_, point); });
     const double len = length(g);
     if (len > 0 && std::isfinite(len)) return -g / len;
     // Only hard cubes (step fields) meet here: take the face of the nearest hard-cube boundary.

@@ -487,7 +487,7 @@ kill_during_checkpoint_write() {
 case_checkpoint_resume_identical() {
   cli_expect 0 render "$cornell" --res 48x48 --spp 256 --threads 2 --quiet -o "$work/reference.exr"
   local delay resumed=0 during_write=0
-  for delay in 0.1 0.25 0.4 0.55 0.7 write write write; do  # the render itself takes about 1 s
+  for delay in 0.1 0.4 0.7 write write; do  # the render itself takes about 1 s
     rm -f "$work/ck.bin"
     start_render "$work/stderr" "$cornell" --res 48x48 --spp 256 --threads 2 -o "$work/a.exr" \
       --checkpoint "$work/ck.bin" --checkpoint-every 0.05
@@ -513,8 +513,8 @@ case_checkpoint_resume_identical() {
     [[ "$(exr_attribute "$work/b.exr" spp)" == 256 ]] || fail "the resumed image does not have 256 spp"
     resumed=$((resumed + 1))
   done
-  echo "resumed and identical after $resumed of 8 kills ($during_write of them during a checkpoint write)" >&2
-  ((resumed >= 6)) || fail "only $resumed of 8 kills left a checkpoint to resume"
+  echo "resumed and identical after $resumed of 5 kills ($during_write of them during a checkpoint write)" >&2
+  ((resumed >= 4)) || fail "only $resumed of 5 kills left a checkpoint to resume"
   ((during_write >= 1)) || fail "no kill landed during a checkpoint write"
 }
 

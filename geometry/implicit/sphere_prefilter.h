@@ -1,0 +1,125 @@
+#pragma once
+// The first test of every listed element of a blob cell: its compact bounding sphere, tested four at a time in
+// float (GCC/clang vector extensions: SSE on any x86-64) against the ray's line (the sweep's candidates) or
+// against a point (the field and normal at a hit). The float tests carry margins far above their rounding, so
+// they never reject a sphere that the exact double test would keep; callers run the exact test on the survivors,
+// which keeps every result bit-identical to testing each sphere exactly.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <span>
+
+#include "geometry/implicit/metacube.h"
+#include "renderer/math/lanes4.h"
+
+namespace isotrace {
+
+// A sphere that contains an element's support, in 16 bytes: the first test of every listed element of every
+// swept cell reads only these, not the 136-byte elements (measured: 7 % less time on blobs_10k). Rounded so
+// that it still contains the support: the radius grows by the centre's rounding.
+struct alignas(16) BoundingSphere {
+    float centre[3];
+    float radius;
+
+    static BoundingSphere of(const Metacube& element) {
+        const Vec3d& c = element.skeleton().centre;
+        const Vec3d& half = element.skeleton().half_size;
+        BoundingSphere sphere{{float(c.x), float(c.y), float(c.z)}, 0};
+        const Vec3d rounding = c - Vec3d(sphere.centre[0], sphere.centre[1], sphere.centre[2]);
+        const double reach = element.radius() + std::sqrt(dot(half, half)) + length(rounding);
+        sphere.radius = std::nextafter(float(reach * (1 + 1e-9)), std::numeric_limits<float>::infinity());
+        return sphere;
+    }
+    // False only when p is outside the element's support (its field and gradient are exactly 0 there).
+    bool may_contain(const Vec3d& p) const {
+        const Vec3d f = p - Vec3d(centre[0], centre[1], centre[2]);
+        return dot(f, f) <= double(radius) * double(radius) * (1 + 1e-9);
+    }
+};
+
+static_assert(sizeof(BoundingSphere) == 16, "one vector load per sphere");
+
+// Four spheres as lanes: one 16-byte load per sphere, then a 4×4 transpose.
+struct SphereLanes {
+    Float4 x, y, z, radius;
+
+    SphereLanes(const BoundingSphere& s0, const BoundingSphere& s1, const BoundingSphere& s2,
+                const BoundingSphere& s3) {
+        const Float4 a = load(s0), b = load(s1), c = load(s2), d = load(s3);
+        const Float4 ab_low = __builtin_shufflevector(a, b, 0, 4, 1, 5);
+        const Float4 cd_low = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+        const Float4 ab_high = __builtin_shufflevector(a, b, 2, 6, 3, 7);
+        const Float4 cd_high = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+        x = __builtin_shufflevector(ab_low, cd_low, 0, 1, 4, 5);
+        y = __builtin_shufflevector(ab_low, cd_low, 2, 3, 6, 7);
+        z = __builtin_shufflevector(ab_high, cd_high, 0, 1, 4, 5);
+        radius = __builtin_shufflevector(ab_high, cd_high, 2, 3, 6, 7);
+    }
+
+private:
+    static Float4 load(const BoundingSphere& s) {
+        Float4 v;
+        std::memcpy(&v, &s, sizeof v);
+        return v;
+    }
+};
+
+// Bit k of the result set when lane k is true.
+inline unsigned lane_mask(Int4 lanes) {
+#if defined(__SSE__)
+    return unsigned(__builtin_ia32_movmskps(Float4(lanes)));
+#else
+    return (lanes[0] ? 1u : 0u) | (lanes[1] ? 2u : 0u) | (lanes[2] ? 4u : 0u) | (lanes[3] ? 8u : 0u);
+#endif
+}
+
+// Which of four bounding spheres may the line p + s·u (|u| = 1) come within. `margin` must cover float rounding:
+// 2⁻¹⁸·(2|p| + max |centre|) is far above it (the rounding of p, u, c − p and the cross product is a few 2⁻²⁴ of
+// |p| and |c − p|), so a sphere the line meets is never rejected.
+struct LineNearSpheres {
+    LineNearSpheres(const Vec3d& p, const Vec3d& u, double centre_bound)
+        : px(float(p.x)), py(float(p.y)), pz(float(p.z)), ux(float(u.x)), uy(float(u.y)), uz(float(u.z)),
+          margin(float(0x1p-18 * (2 * length(p) + centre_bound))) {}
+
+    unsigned test(const SphereLanes& s) const {
+        const Float4 fx = s.x - px, fy = s.y - py, fz = s.z - pz;
+        const Float4 ax = fy * uz - fz * uy, ay = fz * ux - fx * uz, az = fx * uy - fy * ux;
+        const Float4 reach = s.radius * (1 + 0x1p-18f) + margin;
+        return lane_mask((ax * ax + ay * ay + az * az) <= reach * reach);
+    }
+
+    float px, py, pz, ux, uy, uz, margin;
+};
+
+// Which of four bounding spheres may contain the point p, with the same kind of margin (the rounding of p and of
+// c − p is a few 2⁻²⁴ of |p| + |c|).
+struct PointNearSpheres {
+    PointNearSpheres(const Vec3d& p, double centre_bound)
+        : px(float(p.x)), py(float(p.y)), pz(float(p.z)), margin(float(0x1p-18 * (2 * length(p) + centre_bound))) {}
+
+    unsigned test(const SphereLanes& s) const {
+        const Float4 fx = s.x - px, fy = s.y - py, fz = s.z - pz;
+        const Float4 reach = s.radius * (1 + 0x1p-18f) + margin;
+        return lane_mask((fx * fx + fy * fy + fz * fz) <= reach * reach);
+    }
+
+    float px, py, pz, margin;
+};
+
+// Calls visit(id) for the listed elements (in list order) whose bounding sphere passes `test`, four at a time.
+template <class Test, class Visit>
+void for_each_near(std::span<const std::uint32_t> ids, std::span<const BoundingSphere> spheres, const Test& test,
+                   Visit&& visit) {
+    const std::size_t n = ids.size();
+    for (std::size_t first = 0; first < n; first += 4) {
+        // The last group repeats its last element in the lanes beyond the list (their bits are not read).
+        const auto sphere = [&](std::size_t k) -> const BoundingSphere& { return spheres[ids[std::min(first + k, n - 1)]]; };
+        const unsigned near = test.test(SphereLanes(sphere(0), sphere(1), sphere(2), sphere(3)));
+        for (std::size_t k = 0; k < 4 && first + k < n; ++k)
+            if (near & (1u << k)) visit(ids[first + k]);
+    }
+}
+
+}  // namespace isotrace
