@@ -163,7 +163,7 @@ private:
         return std::to_string(ranks) + " ranks but the work divides into only " + std::to_string(items_.size()) +
                " " + unit + (items_.size() == 1 ? "" : "s") + " (--distribute " +
                (split_ == WorkSplit::Tiles ? "tiles" : "samples") + "): use at most " + std::to_string(items_.size()) +
-               " ranks, " +
+               (items_.size() == 1 ? " rank, " : " ranks, ") +
                (split_ == WorkSplit::Tiles ? "a smaller --tile-size or --distribute samples"
                                            : "more samples (blocks of " + std::to_string(Film::kSampleBlock) +
                                                  ") or --distribute tiles");

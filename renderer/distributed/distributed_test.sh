@@ -4,42 +4,16 @@
 # Renders are small (32x32 to 64x64) so that the cases stay in the default test run.
 set -euo pipefail
 
-if (($# != 4)); then
-  echo "usage: $0 <isotrace binary> <source dir> <mpirun> <case>" >&2
-  exit 64
-fi
-cli=$1
-source_dir=$2
-mpirun=$3
-case_name=$4
+(($# == 4)) || { echo "usage: $0 <isotrace binary> <source dir> <mpirun> <case>" >&2; exit 64; }
+cli=$1 source_dir=$2 mpirun=$3 case_name=$4
 cd "$source_dir"
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/isotrace-mpi-test.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+# $work, fail, run, show_output
+source "$source_dir/tests/cli/test_script_helpers.sh"
 cornell=scenes/cornell_box.json
 # Test machines and containers often run as root, which Open MPI refuses unless told.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # Two ranks on however few cores: one thread each, no binding to cores.
 mpi=("$mpirun" --oversubscribe --bind-to none)
-
-fail() {
-  echo "FAIL [$case_name]: $*" >&2
-  exit 1
-}
-
-# run <command...>: runs it with stdout and stderr in $work/stdout and $work/stderr, sets $status.
-run() {
-  echo "+ $*" >&2
-  status=0
-  "$@" >"$work/stdout" 2>"$work/stderr" || status=$?
-}
-
-show_output() {
-  echo "--- stdout:" >&2
-  cat "$work/stdout" >&2 || true
-  echo "--- stderr:" >&2
-  cat "$work/stderr" >&2 || true
-}
 
 expect_status() {  # expect_status <code> <what>
   ((status == $1)) || { show_output; fail "$2 exited with $status, expected $1"; }
@@ -70,9 +44,9 @@ json_value() {  # json_value <file> <python expression on j>
 # The single-process render and the 2-rank render with the given arguments: the same pixels, the same rays, and
 # statistics from both ranks.
 expect_identical_to_one_process() {
-  run "$cli" render "$cornell" --quiet --threads 2 "$@" -o "$work/one.exr" --stats-json "$work/one.json"
+  run "$work/stdout" "$work/stderr" "$cli" render "$cornell" --quiet --threads 2 "$@" -o "$work/one.exr" --stats-json "$work/one.json"
   expect_status 0 "the single-process render"
-  run "${mpi[@]}" -np 2 "$cli" render "$cornell" --quiet --threads 1 "$@" -o "$work/two.exr" \
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --quiet --threads 1 "$@" -o "$work/two.exr" \
     --stats-json "$work/two.json"
   expect_status 0 "mpirun -np 2 isotrace render $*"
   identical "$work/one.exr" "$work/two.exr" "2 ranks ($*) give other pixels than one process"
@@ -103,7 +77,7 @@ case_identical_aovs() {
 # A rank killed mid-render: the job fails naming the rank, writes no image, and its checkpoint resumes (under
 # MPI again) to the pixels of an uninterrupted render.
 case_killed_rank() {
-  local arguments=("$cornell" --res 64x64 --spp 512 --tile-size 16 --distribute samples)
+  local arguments=("$cornell" --res 48x48 --spp 320 --tile-size 16 --distribute samples)
   "${mpi[@]}" -np 2 "$cli" render "${arguments[@]}" --threads 1 -o "$work/killed.exr" \
     --checkpoint "$work/ck.bin" --checkpoint-every 0.1 >"$work/stdout" 2>"$work/stderr" &
   local launcher=$! rank1="" waited
@@ -127,46 +101,46 @@ case_killed_rank() {
   [[ -z $(find "$work" -name '*.exr.partial*' -o -name '.killed*') ]] || fail "temporary output files were left"
   cat "$work/stderr" >&2
 
-  run "$cli" render "${arguments[@]}" --threads 2 --quiet -o "$work/one.exr"
+  run "$work/stdout" "$work/stderr" "$cli" render "${arguments[@]}" --threads 2 --quiet -o "$work/one.exr"
   expect_status 0 "the uninterrupted single-process render"
-  run "${mpi[@]}" -np 2 "$cli" render "${arguments[@]}" --threads 1 --quiet --resume "$work/ck.bin" -o "$work/resumed.exr"
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "${arguments[@]}" --threads 1 --quiet --resume "$work/ck.bin" -o "$work/resumed.exr"
   expect_status 0 "the resumed 2-rank render"
   identical "$work/one.exr" "$work/resumed.exr" "the resumed render differs from the uninterrupted one"
 }
 
 case_bad_input() {
   # More ranks than work: 16 spp is one block of samples.
-  run "${mpi[@]}" -np 2 "$cli" render "$cornell" --res 16x16 --spp 16 --quiet --distribute samples -o "$work/a.exr"
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --res 16x16 --spp 16 --quiet --distribute samples -o "$work/a.exr"
   expect_status 2 "2 ranks for one block"
   expect_in_stderr "2 ranks but the work divides into only 1 block of samples"
   # A rank that cannot load its scene (MPMD: rank 1 is given a broken file).
   printf '{"camera": ' >"$work/broken.json"
-  run "${mpi[@]}" -np 1 "$cli" render "$cornell" --res 16x16 --spp 4 --quiet -o "$work/a.exr" : \
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 1 "$cli" render "$cornell" --res 16x16 --spp 4 --quiet -o "$work/a.exr" : \
     -np 1 "$cli" render "$work/broken.json" --res 16x16 --spp 4 --quiet -o "$work/a.exr"
   expect_status 2 "a rank that cannot read its scene"
   expect_in_stderr "rank 1 (on $(hostname)) could not load the scene"
   # Another scene, or another option that changes pixels, on one rank.
-  run "${mpi[@]}" -np 1 "$cli" render "$cornell" --res 16x16 --spp 4 --quiet -o "$work/a.exr" : \
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 1 "$cli" render "$cornell" --res 16x16 --spp 4 --quiet -o "$work/a.exr" : \
     -np 1 "$cli" render "$cornell" --res 16x16 --spp 4 --seed 7 --quiet -o "$work/a.exr"
   expect_status 2 "ranks with different seeds"
   expect_in_stderr "rank 1 (on $(hostname)) loaded another scene than rank 0"
   # Another isotrace build on one rank: the same executable with one byte more.
   cp "$cli" "$work/other-isotrace"
   printf 'x' >>"$work/other-isotrace"
-  run "${mpi[@]}" -np 1 "$cli" render "$cornell" --res 16x16 --spp 4 --quiet -o "$work/a.exr" : \
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 1 "$cli" render "$cornell" --res 16x16 --spp 4 --quiet -o "$work/a.exr" : \
     -np 1 "$work/other-isotrace" render "$cornell" --res 16x16 --spp 4 --quiet -o "$work/a.exr"
   expect_status 2 "ranks running different builds"
   expect_in_stderr "rank 1 (on $(hostname)) runs another isotrace build than rank 0"
   rm "$work/other-isotrace"
   # A time budget cannot be shared by the ranks.
-  run "${mpi[@]}" -np 2 "$cli" render "$cornell" --res 16x16 --time 5 --quiet -o "$work/a.exr"
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --res 16x16 --time 5 --quiet -o "$work/a.exr"
   expect_status 2 "--time under MPI"
   expect_in_stderr "--time"
   expect_no_outputs
 }
 
 case_bench() {
-  run "${mpi[@]}" -np 2 "$cli" bench --quick --filter cornell_box/primary --threads 1 --json "$work/bench.json"
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" bench --quick --filter cornell_box/primary --threads 1 --json "$work/bench.json"
   expect_status 0 "mpirun -np 2 isotrace bench"
   [[ $(json_value "$work/bench.json" 'j["mpi"]["ranks"]') == 2 ]] || fail "the report does not say 2 ranks"
   [[ $(json_value "$work/bench.json" 'len(j["mpi"]["workloads"][0]["runs"][0]["per_rank"])') == 2 ]] ||

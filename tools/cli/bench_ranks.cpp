@@ -41,7 +41,7 @@ nlohmann::json rank_aggregate(const std::vector<nlohmann::json>& rank_workloads)
 std::string rank_aggregate_table(const nlohmann::json& aggregate) {
     char line[512];
     std::snprintf(line, sizeof line,
-                  "\nAggregate of %zu ranks (all running at once; each rank's median throughput, summed)\n"
+                  "\nAggregate of %zu ranks (run concurrently, each from its start; each rank's median throughput, summed)\n"
                   "%-30s %-13s %7s %10s  %s\n",
                   aggregate["ranks"].get<std::size_t>(), "workload", "unit", "threads", "total", "per rank");
     std::string out = line;
