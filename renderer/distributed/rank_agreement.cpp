@@ -15,12 +15,12 @@
 namespace isotrace {
 namespace {
 
-// Continues `h` over the file's bytes; a file that cannot be read hashes as its name alone (the scene loaded, so
-// only an unreadable executable could get here, and then every rank would differ anyway).
+// Continues `h` over the file's bytes (not its path: ranks may see the same files under other paths). A file that
+// cannot be read adds nothing; the scene loaded, so only an unreadable executable could get here.
 std::uint64_t hash_file(const std::string& path, std::uint64_t h) {
     std::ifstream in(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return fnv1a_64(bytes, fnv1a_64(path, h));
+    return fnv1a_64(bytes, h);
 }
 
 std::uint64_t hash_binary() {

@@ -60,7 +60,7 @@ TEST(WorkPlan, TilesOfAResumedFilmLeaveOutFinishedRegions) {
         for (int x = 0; x < 32; ++x)
             for (int s = 0; s < 4; ++s) film.add_sample(x, y, sample);
     film.add_sample(40, 3, sample);  // a pixel of an unfinished region
-    const std::vector<WorkItem> items = plan_tiles(film, 32, 4, 1);
+    const std::vector<WorkItem> items = plan_tiles(film, 32, 4, 2);  // two regions of 32x32
     ASSERT_EQ(items.size(), 1u);
     EXPECT_EQ(items[0].region.x0, 32);
 }

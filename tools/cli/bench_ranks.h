@@ -1,7 +1,7 @@
 #pragma once
 // isotrace bench under mpirun or srun: every rank runs the same workloads from its start, concurrently with the
-// others (no barrier: a rank that fails must not leave the others waiting), and rank 0 reports
-// each rank's median throughput and their sum, the aggregate throughput of the job (docs/distributed.md).
+// others (no barrier: a rank that fails must not leave the others waiting), and rank 0 reports each rank's median
+// throughput and their sum, the aggregate throughput of the job (docs/distributed.md).
 #include <nlohmann/json.hpp>
 
 #include <string>
