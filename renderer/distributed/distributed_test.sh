@@ -66,6 +66,33 @@ case_identical_samples() {
 
 case_identical_tiles() {
   expect_identical_to_one_process --res 32x32 --spp 40 --tile-size 8 --distribute tiles
+  # A single-process render stopped mid-pass by its time budget (pixels with different sample counts), finished by
+  # 2 ranks: each region goes on from its pixels' counts.
+  local arguments=("$cornell" --res 32x32 --spp 1024 --quiet)
+  run "$work/stdout" "$work/stderr" "$cli" render "${arguments[@]}" --threads 1 --time 0.2 \
+    --checkpoint "$work/ck.bin" -o "$work/stopped.exr"
+  expect_status 0 "the render stopped by its time budget"
+  [[ -f "$work/ck.bin" ]] || fail "the render stopped by its time budget left no checkpoint"
+  # The samples split refuses it unless the budget happened to end with every pixel at a multiple of 32 samples.
+  local counts
+  counts=$(python3 -c 'import json, struct, sys
+data = open(sys.argv[1], "rb").read()
+film = json.loads(data[32:32 + struct.unpack_from("<Q", data, 16)[0]])["film"]
+print(film["completed_spp"], film["max_spp"])' "$work/ck.bin")
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --quiet --distribute samples \
+    --resume "$work/ck.bin" -o "$work/refused.exr"
+  if [[ ${counts% *} == "${counts#* }" ]] && ((${counts% *} % 32 == 0)); then
+    expect_status 0 "the samples split resuming a checkpoint at ${counts% *} spp"
+  else
+    expect_status 2 "the samples split resuming a checkpoint with $counts spp"
+    expect_in_stderr "finish it with --distribute tiles"
+  fi
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --quiet --threads 1 --tile-size 8 \
+    --resume "$work/ck.bin" -o "$work/resumed.exr"
+  expect_status 0 "2 ranks resuming a mid-pass checkpoint"
+  run "$work/stdout" "$work/stderr" "$cli" render "${arguments[@]}" --threads 2 -o "$work/uninterrupted.exr"
+  expect_status 0 "the uninterrupted render"
+  identical "$work/uninterrupted.exr" "$work/resumed.exr" "2 ranks finishing a mid-pass checkpoint give other pixels"
 }
 
 # Every AOV (ids, depth, variance, sample counts) through both merges.
