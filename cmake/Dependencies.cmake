@@ -9,3 +9,10 @@ find_package(tinyobjloader CONFIG REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET OpenColorIO)
+# Distributed rendering (renderer/distributed, docs/distributed.md): on when an MPI implementation is found
+# (Debian: libopenmpi-dev); the build works without it.
+find_package(MPI COMPONENTS CXX QUIET)
+option(ISOTRACE_MPI "Distributed rendering over MPI (mpirun, srun)" ${MPI_CXX_FOUND})
+if(ISOTRACE_MPI)
+  find_package(MPI REQUIRED COMPONENTS CXX)
+endif()

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -14,6 +15,31 @@ namespace {
 bool needs_hit_data(const std::vector<Aov>& aovs) {
     return std::any_of(aovs.begin(), aovs.end(),
                        [](Aov a) { return a != Aov::SampleCount && a != Aov::Variance; });
+}
+
+// into += from, field by field (the sums of a block added to those of the blocks before it).
+template <class Sums>
+void add_sums(Sums& into, const Sums& from) {
+    double* target[Sums::kFieldCount];
+    int n = 0;
+    Sums::each(into, [&](double& field) { target[n++] = &field; });
+    n = 0;
+    Sums::each(from, [&](const double& field) { *target[n++] += field; });
+}
+
+// Ends a pixel's block: its sums join the total and the next block starts from zero.
+template <class Sums>
+void close_block(Sums& total, Sums& block) {
+    add_sums(total, block);
+    block = Sums();
+}
+
+// total + block: a pixel's sums over all its samples.
+template <class Sums>
+Sums all_samples(const Sums& total, const Sums& block) {
+    Sums sum = total;
+    add_sums(sum, block);
+    return sum;
 }
 
 }  // namespace
@@ -31,36 +57,47 @@ Film::Film(FilmSettings settings) : settings_(std::move(settings)) {
     if (needs_hit_data(settings_.aovs)) aovs_.resize(beauty_.size());
 }
 
+Film::Film(FilmSettings settings, std::uint32_t first_sample) : Film(std::move(settings)) {
+    if (first_sample % kSampleBlock != 0)
+        throw std::invalid_argument("a film's first sample must start a block of " + std::to_string(kSampleBlock));
+    for (Accumulator& p : beauty_) p.samples = first_sample;
+}
+
 void Film::add_sample(int x, int y, const CameraSample& sample) {
     const std::size_t i = index(x, y);
     Accumulator& pixel = beauty_[i];
+    BeautySums& sums = pixel.block;
     const double w = sample.filter_weight;
     const double value[3] = {sample.radiance.r, sample.radiance.g, sample.radiance.b};
-    pixel.weight += w;
-    pixel.weight_squared += w * w;
+    sums.weight += w;
+    sums.weight_squared += w * w;
     for (int c = 0; c < 3; ++c) {
-        pixel.rgb[c] += w * value[c];
-        pixel.rgb_squared[c] += w * value[c] * value[c];
+        sums.rgb[c] += w * value[c];
+        sums.rgb_squared[c] += w * value[c] * value[c];
     }
-    if (sample.primary.hit) pixel.coverage += w;
-    ++pixel.samples;
-    if (aovs_.empty() || !sample.primary.hit) return;
+    if (sample.primary.hit) sums.coverage += w;
+    const bool block_ends = ++pixel.samples % kSampleBlock == 0;
+    if (block_ends) close_block(pixel.total, pixel.block);
+    if (aovs_.empty()) return;
 
     AovAccumulator& aov = aovs_[i];
-    const PrimaryHitRecord& hit = sample.primary;
-    const float a[3] = {hit.albedo.r, hit.albedo.g, hit.albedo.b};
-    for (int c = 0; c < 3; ++c) {
-        aov.albedo[c] += w * a[c];
-        aov.normal[c] += w * hit.shading_normal[c];
-        aov.position[c] += w * hit.position[c];
+    if (sample.primary.hit) {
+        const PrimaryHitRecord& hit = sample.primary;
+        const float a[3] = {hit.albedo.r, hit.albedo.g, hit.albedo.b};
+        for (int c = 0; c < 3; ++c) {
+            aov.block.albedo[c] += w * a[c];
+            aov.block.normal[c] += w * hit.shading_normal[c];
+            aov.block.position[c] += w * hit.position[c];
+        }
+        aov.block.depth += w * hit.depth;
+        aov.block.hit_weight += w;
+        if (sample.offset_squared < aov.nearest_offset) {  // ids cannot be averaged: keep the most central sample's
+            aov.nearest_offset = sample.offset_squared;
+            aov.object_id = hit.object_id;
+            aov.primitive_id = hit.primitive_id;
+        }
     }
-    aov.depth += w * hit.depth;
-    aov.hit_weight += w;
-    if (sample.offset_squared < aov.nearest_offset) {  // ids cannot be averaged: keep the most central sample's
-        aov.nearest_offset = sample.offset_squared;
-        aov.object_id = hit.object_id;
-        aov.primitive_id = hit.primitive_id;
-    }
+    if (block_ends) close_block(aov.total, aov.block);
 }
 
 std::uint32_t Film::sample_count(int x, int y) const { return beauty_[index(x, y)].samples; }
@@ -77,11 +114,14 @@ SampleCountRange Film::sample_count_range() const {
     return range;
 }
 
-PixelStatistics Film::pixel_statistics(int x, int y) const { return statistics_of(beauty_[index(x, y)]); }
+PixelStatistics Film::pixel_statistics(int x, int y) const {
+    const Accumulator& pixel = beauty_[index(x, y)];
+    return statistics_of(all_samples(pixel.total, pixel.block), pixel.samples);
+}
 
-PixelStatistics Film::statistics_of(const Accumulator& p) {
+PixelStatistics Film::statistics_of(const BeautySums& p, std::uint32_t samples) {
     PixelStatistics statistics;
-    statistics.samples = p.samples;
+    statistics.samples = samples;
     const double inv_w = p.weight > 0 ? 1.0 / p.weight : 0.0;
     // Sums in double: the cancellation in E[x^2] - E[x]^2 costs about n * 1e-16 of mean^2, far below the noise
     // of any pixel whose variance matters (docs/decisions.md, "Reference mode").
@@ -100,19 +140,13 @@ PixelStatistics Film::statistics_of(const Accumulator& p) {
 template <class Self, class Visit>
 void Film::visit_state(Self& film, Visit&& visit) {
     for (auto& p : film.beauty_) {
-        visit(p.weight);
-        visit(p.weight_squared);
-        for (auto& v : p.rgb) visit(v);
-        for (auto& v : p.rgb_squared) visit(v);
-        visit(p.coverage);
+        BeautySums::each(p.total, visit);
+        BeautySums::each(p.block, visit);
         visit(p.samples);
     }
     for (auto& a : film.aovs_) {
-        for (auto& v : a.albedo) visit(v);
-        for (auto& v : a.normal) visit(v);
-        for (auto& v : a.position) visit(v);
-        visit(a.depth);
-        visit(a.hit_weight);
+        AovSums::each(a.total, visit);
+        AovSums::each(a.block, visit);
         visit(a.nearest_offset);
         visit(a.object_id);
         visit(a.primitive_id);
@@ -121,7 +155,7 @@ void Film::visit_state(Self& film, Visit&& visit) {
 
 std::string Film::state() const {
     std::string bytes;
-    bytes.reserve(beauty_.size() * (11 * sizeof(double) + sizeof(std::uint32_t)));
+    bytes.reserve(beauty_.size() * (22 * sizeof(double) + sizeof(std::uint32_t)));
     visit_state(*this, [&](const auto& field) {
         bytes.append(reinterpret_cast<const char*>(&field), sizeof field);
     });
@@ -141,6 +175,57 @@ void Film::restore_state(std::string_view bytes) {
     });
 }
 
+Film Film::region(const PixelBounds& area) const {
+    FilmSettings settings = settings_;
+    settings.crop = area;
+    Film part(std::move(settings));
+    for (int y = area.y0; y < area.y1; ++y) {
+        const std::size_t from = index(area.x0, y), to = part.index(area.x0, y);
+        std::copy_n(beauty_.begin() + from, area.width(), part.beauty_.begin() + to);
+        if (!aovs_.empty()) std::copy_n(aovs_.begin() + from, area.width(), part.aovs_.begin() + to);
+    }
+    return part;
+}
+
+void Film::replace_region(const Film& part) {
+    const PixelBounds& area = part.bounds();
+    for (int y = area.y0; y < area.y1; ++y) {
+        const std::size_t from = part.index(area.x0, y), to = index(area.x0, y);
+        std::copy_n(part.beauty_.begin() + from, area.width(), beauty_.begin() + to);
+        if (!aovs_.empty()) std::copy_n(part.aovs_.begin() + from, area.width(), aovs_.begin() + to);
+    }
+}
+
+void Film::append_block(const Film& later) {
+    const PixelBounds& area = later.bounds();
+    for (int y = area.y0; y < area.y1; ++y) {
+        for (int x = area.x0; x < area.x1; ++x) {
+            Accumulator& pixel = beauty_[index(x, y)];
+            const Accumulator& next = later.beauty_[later.index(x, y)];
+            if (pixel.samples % kSampleBlock != 0 || next.samples <= pixel.samples ||
+                next.samples - pixel.samples > kSampleBlock)
+                throw std::invalid_argument("film block: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                            ") holds " + std::to_string(pixel.samples) +
+                                            " samples; the block to append ends at " + std::to_string(next.samples));
+            // `next` started from zero at a block boundary: its total is its one completed block (or zero), and
+            // its open block is what follows it, exactly as add_sample would have left them here.
+            add_sums(pixel.total, next.total);
+            pixel.block = next.block;
+            pixel.samples = next.samples;
+            if (aovs_.empty()) continue;
+            AovAccumulator& aov = aovs_[index(x, y)];
+            const AovAccumulator& next_aov = later.aovs_[later.index(x, y)];
+            add_sums(aov.total, next_aov.total);
+            aov.block = next_aov.block;
+            if (next_aov.nearest_offset < aov.nearest_offset) {  // strictly nearer, as add_sample decides
+                aov.nearest_offset = next_aov.nearest_offset;
+                aov.object_id = next_aov.object_id;
+                aov.primitive_id = next_aov.primitive_id;
+            }
+        }
+    }
+}
+
 ImageBuffer Film::resolve() const {
     ImageBuffer image;
     image.width = settings_.crop.width();
@@ -153,14 +238,18 @@ ImageBuffer Film::resolve() const {
     const float inf = std::numeric_limits<float>::infinity();
 
     for (std::size_t i = 0; i < beauty_.size(); ++i) {
-        const Accumulator& p = beauty_[i];
+        const std::uint32_t samples = beauty_[i].samples;
+        const BeautySums p = all_samples(beauty_[i].total, beauty_[i].block);
         float* out = image.pixels.data() + i * stride;
         const double inv_w = p.weight > 0 ? 1.0 / p.weight : 0.0;
         for (int c = 0; c < 3; ++c) out[c] = float(p.rgb[c] * inv_w);
         out[3] = float(p.coverage * inv_w);
         std::size_t k = 4;
         for (Aov aov : settings_.aovs) {
-            const AovAccumulator* a = aovs_.empty() ? nullptr : &aovs_[i];
+            const AovAccumulator* ids = aovs_.empty() ? nullptr : &aovs_[i];
+            const std::optional<AovSums> sums =
+                ids ? std::optional<AovSums>(all_samples(ids->total, ids->block)) : std::nullopt;
+            const AovSums* a = sums ? &*sums : nullptr;
             const double inv_hit = a && a->hit_weight > 0 ? 1.0 / a->hit_weight : 0.0;
             switch (aov) {
                 case Aov::Albedo:
@@ -173,12 +262,14 @@ ImageBuffer Film::resolve() const {
                     for (int c = 0; c < 3; ++c) out[k++] = float(a->position[c] * inv_hit);
                     break;
                 case Aov::Depth: out[k++] = a->hit_weight > 0 ? float(a->depth * inv_hit) : inf; break;
-                case Aov::ObjectId: out[k++] = float(a->object_id); break;
-                case Aov::PrimitiveId: out[k++] = float(a->primitive_id); break;
-                case Aov::SampleCount: out[k++] = float(p.samples); break;
-                case Aov::Variance:
-                    for (int c = 0; c < 3; ++c) out[k++] = float(statistics_of(p).variance_of_mean[c]);
+                case Aov::ObjectId: out[k++] = float(ids->object_id); break;
+                case Aov::PrimitiveId: out[k++] = float(ids->primitive_id); break;
+                case Aov::SampleCount: out[k++] = float(samples); break;
+                case Aov::Variance: {
+                    const PixelStatistics statistics = statistics_of(p, samples);
+                    for (int c = 0; c < 3; ++c) out[k++] = float(statistics.variance_of_mean[c]);
                     break;
+                }
             }
         }
     }

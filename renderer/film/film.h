@@ -1,7 +1,10 @@
 #pragma once
 // Film: per-pixel accumulation of weighted radiance samples (filter importance sampling: every sample belongs
 // to exactly one pixel) plus the requested AOVs. A pixel's samples are added in sample-index order by one
-// thread, so the result is independent of thread count and tile size.
+// thread, so the result is independent of thread count and tile size. The sums are kept in blocks of
+// kSampleBlock consecutive sample indices (each block summed from zero, the blocks' sums added in block order),
+// so that a block rendered elsewhere (another MPI rank) can be added with the same roundings: the image is
+// bit-identical however the sample indices were split between processes (docs/decisions.md).
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -61,7 +64,13 @@ struct CameraSample {
 
 class Film {
 public:
+    // Sample indices per block of the sums.
+    static constexpr std::uint32_t kSampleBlock = 32;
+
     explicit Film(FilmSettings settings);
+    // A film for the samples [first_sample, ...) of each pixel, to be added with append_block() to the film that
+    // holds [0, first_sample): its counts start at first_sample, a multiple of kSampleBlock, its sums at zero.
+    Film(FilmSettings settings, std::uint32_t first_sample);
 
     // Bytes a film with these settings holds while rendering and writing: the accumulators, the resolved
     // image and, at most, one encoded copy of it (image writers encode in memory before writing).
@@ -82,24 +91,60 @@ public:
     std::string state() const;
     void restore_state(std::string_view bytes);
 
+    // The accumulators of `area` (inside bounds()) as a film of its own whose crop is `area`.
+    Film region(const PixelBounds& area) const;
+    // Replaces the accumulators of part.bounds() (inside bounds()) with part's.
+    void replace_region(const Film& part);
+    // Adds `later`: for each pixel of later.bounds(), the samples that follow this film's, at most one block of
+    // them, starting at a block boundary (a Film(settings, first_sample) rendered up to some count). The result
+    // is bit-identical to adding those samples here one by one. Throws std::invalid_argument when a pixel's
+    // samples do not follow on like that.
+    void append_block(const Film& later);
+
     // Beauty RGBA followed by the AOV channels in the order requested.
     ImageBuffer resolve() const;
 
 private:
-    struct Accumulator {
+    struct BeautySums {
         double weight = 0, weight_squared = 0;
         double rgb[3] = {0, 0, 0};
         double rgb_squared[3] = {0, 0, 0};
         double coverage = 0;  // weighted fraction of samples that hit a surface
+        static constexpr int kFieldCount = 11;
+        // Calls visit(field) for every sum; Self is BeautySums or const BeautySums.
+        template <class Self, class Visit>
+        static void each(Self& sums, Visit&& visit) {
+            visit(sums.weight);
+            visit(sums.weight_squared);
+            for (auto& v : sums.rgb) visit(v);
+            for (auto& v : sums.rgb_squared) visit(v);
+            visit(sums.coverage);
+        }
+    };
+    struct AovSums {
+        double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, position[3] = {0, 0, 0};
+        double depth = 0, hit_weight = 0;
+        static constexpr int kFieldCount = 11;
+        template <class Self, class Visit>
+        static void each(Self& sums, Visit&& visit) {
+            for (auto& v : sums.albedo) visit(v);
+            for (auto& v : sums.normal) visit(v);
+            for (auto& v : sums.position) visit(v);
+            visit(sums.depth);
+            visit(sums.hit_weight);
+        }
+    };
+    // total: the sums of the completed blocks; block: of the samples since.
+    struct Accumulator {
+        BeautySums total, block;
         std::uint32_t samples = 0;
     };
     struct AovAccumulator {
-        double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, position[3] = {0, 0, 0};
-        double depth = 0, hit_weight = 0;
+        AovSums total, block;
         float nearest_offset = 1e30f;
         std::int64_t object_id = -1, primitive_id = -1;
     };
-    static PixelStatistics statistics_of(const Accumulator& pixel);
+    static PixelStatistics statistics_of(const BeautySums& sums, std::uint32_t samples);
     std::size_t index(int x, int y) const {
         return std::size_t(y - settings_.crop.y0) * std::size_t(settings_.crop.width()) + std::size_t(x - settings_.crop.x0);
     }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -264,6 +265,68 @@ TEST(Film, StateOfOtherSettingsIsRefused) {
     EXPECT_THROW(with_aovs.restore_state(small.state()), std::invalid_argument);
     EXPECT_THROW(small.restore_state(small.state() + "x"), std::invalid_argument);
     EXPECT_NO_THROW(small.restore_state(Film(settings(2, 2)).state()));
+}
+
+// Sample s of pixel (x, y): values of very different magnitudes, so that any change in the order of the
+// additions would change the rounded sums.
+CameraSample varied_sample(int x, int y, std::uint32_t s) {
+    const float v = float((s * 7919u + std::uint32_t(x) * 104729u + std::uint32_t(y) * 1299709u) % 1000u);
+    CameraSample sample = hit(Rgb(v * 1e-3f, 1.0f / (v + 1.0f), v * v * 1e3f), 0.25f + 1e-4f * float(s % 17),
+                              1.0f + v, s % 5, std::uint32_t(x), float(s % 3) * 0.1f);
+    sample.primary.hit = s % 4 != 1;
+    return sample;
+}
+
+void feed_samples(Film& film, std::uint32_t first, std::uint32_t last) {
+    for (int y = film.bounds().y0; y < film.bounds().y1; ++y)
+        for (int x = film.bounds().x0; x < film.bounds().x1; ++x)
+            for (std::uint32_t s = first; s < last; ++s) film.add_sample(x, y, varied_sample(x, y, s));
+}
+
+// The distributed sample split: blocks of sample indices rendered into separate films and appended in order give
+// the bits of one film that took every sample itself, also for a last block that is not full.
+TEST(Film, AppendedBlocksEqualOneFilmBitForBit) {
+    const FilmSettings s = settings(3, 2, {Aov::Albedo, Aov::Depth, Aov::ObjectId, Aov::Variance});
+    constexpr std::uint32_t block = Film::kSampleBlock, last = 2 * block + 5;
+    Film whole(s);
+    feed_samples(whole, 0, last);
+    Film merged(s);
+    for (std::uint32_t first = 0; first < last; first += block) {
+        Film part(s, first);
+        feed_samples(part, first, std::min(first + block, last));
+        merged.append_block(part);
+    }
+    EXPECT_EQ(merged.state(), whole.state());
+    const ImageBuffer a = whole.resolve(), b = merged.resolve();
+    EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0);
+}
+
+TEST(Film, AppendingABlockThatDoesNotFollowIsRefused) {
+    const FilmSettings s = settings(2, 1);
+    Film merged(s);
+    Film second_block(s, Film::kSampleBlock);
+    feed_samples(second_block, Film::kSampleBlock, Film::kSampleBlock + 1);
+    EXPECT_THROW(merged.append_block(second_block), std::invalid_argument);  // the first block is missing
+    Film two_blocks(s, 0);
+    feed_samples(two_blocks, 0, 2 * Film::kSampleBlock);
+    EXPECT_THROW(merged.append_block(two_blocks), std::invalid_argument);  // more than one block
+    EXPECT_THROW(Film(s, 1), std::invalid_argument);                      // not at a block boundary
+}
+
+// The distributed tile split: regions rendered separately and put back give the film rendered whole.
+TEST(Film, RegionsReplacedEqualOneFilm) {
+    const FilmSettings s = settings(5, 4, {Aov::Normal}, PixelBounds{1, 1, 5, 4});
+    Film whole(s);
+    feed_samples(whole, 0, 40);
+    Film assembled(s);
+    for (const PixelBounds& area : {PixelBounds{1, 1, 3, 4}, PixelBounds{3, 1, 5, 2}, PixelBounds{3, 2, 5, 4}}) {
+        Film part = assembled.region(area);
+        EXPECT_EQ(part.bounds().x0, area.x0);
+        feed_samples(part, 0, 40);
+        assembled.replace_region(part);
+    }
+    EXPECT_EQ(assembled.state(), whole.state());
+    EXPECT_EQ(whole.region(PixelBounds{3, 2, 5, 4}).state(), assembled.region(PixelBounds{3, 2, 5, 4}).state());
 }
 
 TEST(Film, SampleCountRangeSpansThePixels) {

@@ -9,7 +9,8 @@
 
 namespace isotrace {
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 1;
+// 2: the film's sums in blocks of sample indices (Film::kSampleBlock).
+inline constexpr std::uint32_t kCheckpointFormatVersion = 2;
 
 struct CheckpointContents {
     std::string metadata_json;

@@ -148,8 +148,8 @@ private:
 RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& options, std::unique_ptr<Film> film) {
     RenderResult result;
     result.film = film ? std::move(film) : std::make_unique<Film>(loaded.film);
-    const std::vector<PixelBounds> tiles = make_tiles(loaded.film.crop, std::max(1, options.tile_size));
-    const std::int64_t pixels = loaded.film.crop.area();
+    const std::vector<PixelBounds> tiles = make_tiles(result.film->bounds(), std::max(1, options.tile_size));
+    const std::int64_t pixels = result.film->bounds().area();
     const auto start = Clock::now();
     const auto elapsed = [start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 

@@ -54,8 +54,8 @@ struct RenderResult {
     double seconds = 0;
 };
 
-// Continues `film` when given (a resumed checkpoint: its per-pixel sample counts say where each pixel goes on);
-// otherwise starts a new film.
+// Renders the pixels of `film` when given (a resumed checkpoint, or a region of the image for another process:
+// its per-pixel sample counts say where each pixel goes on); otherwise starts a new film of the scene's crop.
 RenderResult render_scene(const LoadedScene& scene, const RenderOptions& options, std::unique_ptr<Film> film = {});
 
 }  // namespace isotrace

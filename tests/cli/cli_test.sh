@@ -13,32 +13,11 @@ source_dir=$2
 case_name=$3
 cd "$source_dir"
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/isotrace-cli-test.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+# $work, fail, run, show_output
+source "$(dirname "${BASH_SOURCE[0]}")/test_script_helpers.sh"
 cornell=scenes/cornell_box.json
 
 # ---- helpers ---------------------------------------------------------------------------------------------
-
-fail() {
-  echo "FAIL [$case_name]: $*" >&2
-  exit 1
-}
-
-# run <stdout file> <stderr file> <command...>: runs the command, sets $status, never fails the script.
-run() {
-  local out=$1 err=$2
-  shift 2
-  echo "+ $*" >&2
-  status=0
-  "$@" >"$out" 2>"$err" || status=$?
-}
-
-show_output() {
-  echo "--- stdout:" >&2
-  cat "$work/stdout" >&2 || true
-  echo "--- stderr:" >&2
-  cat "$work/stderr" >&2 || true
-}
 
 # cli_expect <exit code> <isotrace arguments...>: runs isotrace, captures $work/stdout and $work/stderr.
 cli_expect() {

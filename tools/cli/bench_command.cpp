@@ -8,7 +8,9 @@
 #include <thread>
 
 #include "renderer/core/input_error.h"
+#include "renderer/distributed/render_ranks.h"
 #include "tools/cli/bench_html_report.h"
+#include "tools/cli/bench_ranks.h"
 #include "tools/cli/bench_report.h"
 #include "tools/cli/bench_suite_report.h"
 #include "tools/cli/command_helpers.h"
@@ -124,6 +126,16 @@ int run_bench(BenchArguments args) {
                              {"blob_comparison", nullptr}};
     for (const WorkloadResult& result : run_workloads(selected, suite, log))
         report["workloads"].push_back(workload_json(result));
+    // Under mpirun or srun every rank has run the workloads at the same time: rank 0 reports their sum (and runs
+    // the scaling and blob comparison alone).
+    RenderRanks ranks;
+    if (ranks.distributed()) {
+        const std::vector<std::string> gathered = ranks.gather(report["workloads"].dump());
+        if (!ranks.coordinator()) return kExitOk;
+        std::vector<nlohmann::json> rank_workloads;
+        for (const std::string& workloads : gathered) rank_workloads.push_back(nlohmann::json::parse(workloads));
+        report["mpi"] = rank_aggregate(rank_workloads);
+    }
     if (args.scaling) {
         const RasterSize resolution = suite.resolution.value_or(RasterSize{320, 180});
         const int threads = suite.threads.back();
@@ -135,6 +147,7 @@ int run_bench(BenchArguments args) {
     if (run_comparison) report["blob_comparison"] = benchmark_json(comparison, run_blob_benchmark(comparison, log));
 
     std::fputs(suite_table(report).c_str(), stdout);
+    if (report.contains("mpi")) std::fputs(rank_aggregate_table(report["mpi"]).c_str(), stdout);
     if (run_comparison) std::fputs(("\n" + benchmark_table(report["blob_comparison"])).c_str(), stdout);
     if (!args.json.empty()) write_text_atomically(args.json, report.dump(2) + "\n");
     if (!args.report.empty()) write_text_atomically(args.report, bench_html_report(report));

@@ -11,6 +11,7 @@
 #include "renderer/core/input_error.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/core/version.h"
+#include "renderer/distributed/render_ranks.h"
 #include "renderer/image/image_writer.h"
 #include "renderer/render/tile_renderer.h"
 #include "renderer/scene/loaded_scene.h"
@@ -19,6 +20,7 @@
 #include "tools/cli/progress_bar.h"
 #include "tools/cli/reference_mode.h"
 #include "tools/cli/render_checkpoint.h"
+#include "tools/cli/render_distribution.h"
 #include "tools/cli/render_statistics.h"
 #include "tools/cli/thread_limit.h"
 
@@ -83,6 +85,7 @@ struct RenderArguments {
     std::string resume;
     bool reference = false;
     std::optional<std::string> target_error;  // parsed by parse_reference_request
+    DistributionArguments distribution;
 };
 
 constexpr double kDefaultCheckpointSeconds = 300;
@@ -226,8 +229,14 @@ int run_render(const RenderArguments& args) {
 
     counters::reset();
     const auto load_start = std::chrono::steady_clock::now();
-    std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
+    RenderRanks ranks;  // one of several when started by mpirun or srun (docs/distributed.md)
+    std::unique_ptr<LoadedScene> scene = ranks.load_scene(args.scene, overrides);
+    if (!scene) return kExitBadInput;  // this rank could not take part; rank 0 says why
     if (reference.enabled) scene->film.half_float = false;  // a reference keeps every bit of its mean and variance
+    if (!ranks.coordinator()) {
+        ranks.serve(*scene, args.tile_size);
+        return kExitOk;
+    }
     std::unique_ptr<Film> film;
     if (resume) {
         check_same_scene(*resume, *scene, args.resume);
@@ -278,12 +287,13 @@ int run_render(const RenderArguments& args) {
     const bool show_progress = !args.quiet && stderr_is_terminal() && !reference.enabled;
     ProgressBar bar(show_progress);
     if (show_progress) options.on_progress = [&](const RenderProgress& p) { bar.update(p); };
+    else if (ranks.distributed() && !args.quiet) options.on_progress = progress_lines(10);
     const StopSignals signals;  // until the outputs are written: a second signal then removes the temporary file
-    const RenderResult result = render_scene(*scene, options, std::move(film));
+    const RenderResult result = ranks.render(*scene, options, std::move(film), work_split(args.distribution));
     bar.finish();
     times.render = result.seconds;
 
-    const CounterTotals counts = counters::totals();
+    const CounterTotals counts = ranks.counter_totals();
     const auto write_start = std::chrono::steady_clock::now();
     // An unfinished render leaves a checkpoint to continue from.
     const bool unfinished = result.completed_spp < options.spp && !result.stopped_at_pass_end;
@@ -295,7 +305,8 @@ int run_render(const RenderArguments& args) {
     write_outputs(args, *scene, result, metadata);
     times.write = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
 
-    const nlohmann::json stats = render_statistics(*scene, result, counts, times, threads);
+    nlohmann::json stats = render_statistics(*scene, result, counts, times, threads);
+    add_rank_statistics(stats, ranks);
     if (!args.stats_json.empty()) write_text_atomically(args.stats_json, stats.dump(2) + "\n");
     if (!args.quiet) {
         std::fputs(format_statistics(stats).c_str(), stderr);
@@ -351,6 +362,7 @@ CommandRunner add_render_command(CLI::App& app) {
     command->add_option("--tile-size", args->tile_size, "Tile edge in pixels (does not change the image)")
         ->check(CLI::Range(1, 4096));
     command->add_flag("-q,--quiet", args->quiet, "No progress bar or statistics on stderr");
+    add_distribution_options(*command, args->distribution);
     return [args] {
         if (args->outputs.empty())
             args->outputs.push_back(std::filesystem::path(args->scene).stem().string() + ".exr");

@@ -95,6 +95,16 @@ std::string format_statistics(const nlohmann::json& s) {
         out << " " << what << " " << value.get<unsigned long long>();
     }
     if (!owner_on_line.empty()) out << "\n";
+    if (s.contains("ranks")) {  // a distributed render (docs/distributed.md)
+        for (const nlohmann::json& rank : s["ranks"]) {
+            std::snprintf(line, sizeof line, "  %s %-4d %s: %llu items, %llu samples, %.3g rays, %.2f Mrays/s over %.3f s busy\n",
+                          rank["rank"].get<int>() == 0 ? "ranks    " : "         ", rank["rank"].get<int>(),
+                          rank["host"].get<std::string>().c_str(), rank["items"].get<unsigned long long>(),
+                          rank["samples"].get<unsigned long long>(), double(rank["rays"].get<unsigned long long>()),
+                          rank["mrays_per_second"].get<double>(), rank["busy_seconds"].get<double>());
+            out << line;
+        }
+    }
     return out.str();
 }
 

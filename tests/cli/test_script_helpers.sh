@@ -1,0 +1,26 @@
+# Helpers of the end-to-end test scripts (tests/cli/cli_test.sh, renderer/distributed/distributed_test.sh), sourced
+# once they have set $case_name: $work, a temporary directory removed on exit, and the reporting helpers.
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/isotrace-test.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+fail() {
+  echo "FAIL [$case_name]: $*" >&2
+  exit 1
+}
+
+# run <stdout file> <stderr file> <command...>: runs the command, sets $status, never fails the script.
+run() {
+  local out=$1 err=$2
+  shift 2
+  echo "+ $*" >&2
+  status=0
+  "$@" >"$out" 2>"$err" || status=$?
+}
+
+show_output() {
+  echo "--- stdout:" >&2
+  cat "$work/stdout" >&2 || true
+  echo "--- stderr:" >&2
+  cat "$work/stderr" >&2 || true
+}
