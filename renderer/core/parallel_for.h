@@ -35,7 +35,9 @@ private:
     static constexpr std::memory_order kRelaxed = std::memory_order_relaxed;
     const AnnouncedLoop<Body>* get() const { return std::atomic_ref(loop_).load(kRelaxed); }
 
-    mutable const AnnouncedLoop<Body>* loop_ = nullptr;  // mutable: atomic_ref needs a non-const object to load
+    // No initialiser: that would be a plain store, racing (for TSan) with the atomic loads of an earlier task
+    // that TBB ran in the same memory. mutable: atomic_ref needs a non-const object, even to load.
+    mutable const AnnouncedLoop<Body>* loop_;
 };
 
 }  // namespace parallel_for_detail
