@@ -43,31 +43,41 @@ private:
 }  // namespace parallel_for_detail
 #endif
 
-// f(i) for every i in [first, last), like tbb::parallel_for(first, last, f) (auto_partitioner, grain size 1).
-template <std::integral Index, class Function>
-    requires std::invocable<const Function&, Index>
-void parallel_for(Index first, Index last, const Function& f) {
-#ifdef ISOTRACE_THREAD_SANITIZER
-    const AnnouncedLoop<Function> loop(f);
-    loop.fork();
-    tbb::parallel_for(first, last, loop);  // TBB keeps a reference to loop (parallel_for_body_wrapper)
-#else
-    tbb::parallel_for(first, last, f);
-#endif
-}
+namespace parallel_for_detail {
 
-// body(subrange) over a split of range, like tbb::parallel_for(range, body[, partitioner]).
-template <class Range, class Body, class... Partitioner>
-    requires std::invocable<const Body&, const Range&>
-void parallel_for(const Range& range, const Body& body, Partitioner&&... partitioner) {
+struct ParallelFor {
+    // f(i) for every i in [first, last), like tbb::parallel_for(first, last, f) (auto_partitioner, grain size 1).
+    template <std::integral Index, class Function>
+        requires std::invocable<const Function&, Index>
+    void operator()(Index first, Index last, const Function& f) const {
 #ifdef ISOTRACE_THREAD_SANITIZER
-    const AnnouncedLoop<Body> loop(body);
-    const parallel_for_detail::LoopPointer<Body> pointer(loop);
-    loop.fork();
-    tbb::parallel_for(range, pointer, std::forward<Partitioner>(partitioner)...);
+        const AnnouncedLoop<Function> loop(f);
+        loop.fork();
+        tbb::parallel_for(first, last, loop);  // TBB keeps a reference to loop (parallel_for_body_wrapper)
 #else
-    tbb::parallel_for(range, body, std::forward<Partitioner>(partitioner)...);
+        tbb::parallel_for(first, last, f);
 #endif
-}
+    }
+
+    // body(subrange) over a split of range, like tbb::parallel_for(range, body[, partitioner]).
+    template <class Range, class Body, class... Partitioner>
+        requires std::invocable<const Body&, const Range&>
+    void operator()(const Range& range, const Body& body, Partitioner&&... partitioner) const {
+#ifdef ISOTRACE_THREAD_SANITIZER
+        const AnnouncedLoop<Body> loop(body);
+        const LoopPointer<Body> pointer(loop);
+        loop.fork();
+        tbb::parallel_for(range, pointer, std::forward<Partitioner>(partitioner)...);
+#else
+        tbb::parallel_for(range, body, std::forward<Partitioner>(partitioner)...);
+#endif
+    }
+};
+
+}  // namespace parallel_for_detail
+
+// A function object, not a function template: a call with a tbb::blocked_range argument would otherwise also find
+// tbb::parallel_for by argument-dependent lookup, and TBB's non-variadic overload would win, silently.
+inline constexpr parallel_for_detail::ParallelFor parallel_for{};
 
 }  // namespace isotrace
