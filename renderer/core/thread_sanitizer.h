@@ -2,7 +2,8 @@
 // ThreadSanitizer and TBB: Debian's TBB is not instrumented, so TSan sees neither a task being handed to a worker
 // (the fork) nor the end of a parallel loop (the join), and reports every result a worker wrote and the caller
 // reads as a race. AnnouncedLoop announces both with __tsan_release/__tsan_acquire; it exists only in builds with
-// -fsanitize=thread (ISOTRACE_THREAD_SANITIZER), and parallel_for.h is its only user.
+// -fsanitize=thread (ISOTRACE_THREAD_SANITIZER), and parallel_for.h is its only user. publish/acquire announce the
+// other hand-off isotrace code takes part in: Embree calling bounds callbacks in its own TBB tasks.
 #if defined(__SANITIZE_THREAD__)
 #define ISOTRACE_THREAD_SANITIZER 1
 #elif defined(__has_feature)
@@ -13,10 +14,32 @@
 
 #ifdef ISOTRACE_THREAD_SANITIZER
 #include <sanitizer/tsan_interface.h>
+#endif
 
 #include <utility>
 
 namespace isotrace {
+
+namespace thread_sanitizer {
+
+// publish(object) once it is complete, before a library hands it to its own threads; acquire(object) first thing
+// on such a thread: everything before the publish happens before what follows the acquire. No-ops without
+// -fsanitize=thread.
+inline void publish([[maybe_unused]] const void* object) {
+#ifdef ISOTRACE_THREAD_SANITIZER
+    __tsan_release(const_cast<void*>(object));
+#endif
+}
+
+inline void acquire([[maybe_unused]] const void* object) {
+#ifdef ISOTRACE_THREAD_SANITIZER
+    __tsan_acquire(const_cast<void*>(object));
+#endif
+}
+
+}  // namespace thread_sanitizer
+
+#ifdef ISOTRACE_THREAD_SANITIZER
 
 // One parallel loop, on the caller's stack; TBB calls it (on any thread) for every chunk. The loop object itself
 // is the fork's sync object and join_ the join's: chunks synchronise with the caller only, never with each other,
@@ -53,5 +76,6 @@ private:
     mutable char join_ = 0;
 };
 
-}  // namespace isotrace
 #endif
+
+}  // namespace isotrace
