@@ -26,8 +26,8 @@ RTCGeometry SolidUserGeometry::create(RTCDevice device, const Solid& solid, int 
     solid_ = &solid;
     counter_slot_ = counter_slot;
     bounds_ = bounds;
-    return user_geometry::create(device, this, bounds.empty() ? 0 : 1, bounds_callback, intersect_callback,
-                                 occluded_callback);
+    return user_geometry::create<bounds_callback>(device, this, bounds.empty() ? 0 : 1, intersect_callback,
+                                                  occluded_callback);
 }
 
 void SolidUserGeometry::bounds_callback(const RTCBoundsFunctionArguments* args) {

@@ -50,8 +50,8 @@ void BlobGroupShape::count_work(const BlobQueryWork& work) const {
 
 RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {
     register_counters();
-    return user_geometry::create(device, this, unsigned(group_.cells().cells().size()), bounds_callback,
-                                 intersect_callback, occluded_callback);
+    return user_geometry::create<bounds_callback>(device, this, unsigned(group_.cells().cells().size()),
+                                                  intersect_callback, occluded_callback);
 }
 
 void BlobGroupShape::bounds_callback(const RTCBoundsFunctionArguments* args) {

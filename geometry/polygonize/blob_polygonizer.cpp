@@ -1,8 +1,5 @@
 #include "geometry/polygonize/blob_polygonizer.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,6 +7,8 @@
 #include <string>
 
 #include "geometry/polygonize/marching_tetrahedra.h"
+#include "renderer/core/parallel_for.h"
+#include "renderer/core/parallel_sort.h"
 
 namespace isotrace {
 namespace {
@@ -205,8 +204,8 @@ TriangleMeshData polygonize(const BlobGroup& group, const PolygonizeSettings& se
 
     const std::vector<std::uint64_t> bricks = active_bricks(group, lattice);
     std::vector<std::vector<KeyedTriangle>> per_brick(bricks.size());
-    tbb::parallel_for(std::size_t(0), bricks.size(),
-                      [&](std::size_t i) { per_brick[i] = cut_brick(bricks[i], lattice, field, threshold); });
+    parallel_for(std::size_t(0), bricks.size(),
+                 [&](std::size_t i) { per_brick[i] = cut_brick(bricks[i], lattice, field, threshold); });
 
     std::vector<KeyedTriangle> triangles;
     for (auto& list : per_brick) {
@@ -217,11 +216,11 @@ TriangleMeshData polygonize(const BlobGroup& group, const PolygonizeSettings& se
     std::vector<EdgeKey> edges;
     edges.reserve(3 * triangles.size());
     for (const KeyedTriangle& t : triangles) edges.insert(edges.end(), t.begin(), t.end());
-    tbb::parallel_sort(edges.begin(), edges.end());
+    parallel_sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
     mesh.triangles.resize(triangles.size());
-    tbb::parallel_for(std::size_t(0), triangles.size(), [&](std::size_t i) {
+    parallel_for(std::size_t(0), triangles.size(), [&](std::size_t i) {
         for (int k = 0; k < 3; ++k) {
             const auto found = std::lower_bound(edges.begin(), edges.end(), triangles[i][std::size_t(k)]);
             mesh.triangles[i][std::size_t(k)] = std::uint32_t(found - edges.begin());
@@ -229,7 +228,7 @@ TriangleMeshData polygonize(const BlobGroup& group, const PolygonizeSettings& se
     });
     mesh.positions.resize(edges.size());
     mesh.normals.resize(edges.size());
-    tbb::parallel_for(std::size_t(0), edges.size(), [&](std::size_t i) {
+    parallel_for(std::size_t(0), edges.size(), [&](std::size_t i) {
         const SurfaceVertex vertex = place_vertex(edges[i], lattice, field, threshold);
         mesh.positions[i] = vertex.position;
         mesh.normals[i] = vertex.normal;

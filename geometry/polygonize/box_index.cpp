@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/embree/embree_device.h"
+#include "renderer/embree/user_geometry.h"
 
 namespace isotrace {
 namespace {
@@ -43,8 +44,9 @@ bool visit_box(RTCPointQueryFunctionArguments* args) {
 BoxIndex::BoxIndex(std::vector<FieldBox> boxes) : boxes_(std::move(boxes)), scene_(rtcNewScene(embree_device())) {
     RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, unsigned(boxes_.size()));
+    thread_sanitizer::publish(&boxes_);
     rtcSetGeometryUserData(geometry, &boxes_);
-    rtcSetGeometryBoundsFunction(geometry, box_bounds, nullptr);
+    rtcSetGeometryBoundsFunction(geometry, user_geometry::announced_bounds<box_bounds>, nullptr);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(scene_, geometry);
     rtcReleaseGeometry(geometry);

@@ -1,8 +1,8 @@
 #include "geometry/polygonize/dual_vertices.h"
 
-#include <tbb/parallel_for.h>
-
 #include <numeric>
+
+#include "renderer/core/parallel_for.h"
 
 namespace isotrace {
 
@@ -37,7 +37,7 @@ DualVertices cell_vertices(const LatticeSamples& samples, const Lattice& lattice
     result.vertex_of_cycle.resize(result.positions.size());
     std::iota(result.vertex_of_cycle.begin(), result.vertex_of_cycle.end(), 0u);
     std::vector<std::uint8_t> clamped(result.positions.size());
-    tbb::parallel_for(std::size_t(0), samples.cells.size(), [&](std::size_t i) {
+    parallel_for(std::size_t(0), samples.cells.size(), [&](std::size_t i) {
         const LatticeIndex cell = lattice_index(samples.cells[i]);
         const CubeCycles& cycles = cube_cycles(samples.inside[i]);
         for (int k = 0; k < cycles.count; ++k) {

@@ -1,11 +1,10 @@
 #include "geometry/polygonize/lattice_samples.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/polygonize/cube_cycles.h"
+#include "renderer/core/parallel_for.h"
 
 namespace isotrace {
 namespace {
@@ -33,7 +32,7 @@ std::vector<LatticeKey> candidate_cells(const ImplicitField& field, const Lattic
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) tasks.push_back({i, j, k});
     std::vector<std::vector<LatticeKey>> found(tasks.size());
-    tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t t) {
+    parallel_for(std::size_t(0), tasks.size(), [&](std::size_t t) {
         // The ancestors were not tested: a task's first test covers them (a cell can only hold surface its
         // ancestors may hold).
         descend(field, lattice, task_level, tasks[t], found[t]);
@@ -114,7 +113,7 @@ LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     std::vector<double> values(corners.size());
     samples.corner_inside.resize(corners.size());
-    tbb::parallel_for(std::size_t(0), corners.size(), [&](std::size_t i) {
+    parallel_for(std::size_t(0), corners.size(), [&](std::size_t i) {
         const LatticeIndex c = lattice_index(corners[i]);
         values[i] = field.value(lattice.position(Vec3d(c[0], c[1], c[2])));
         samples.corner_inside[i] = values[i] < 0;
@@ -124,7 +123,7 @@ LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice
     };
 
     std::vector<std::uint8_t> patterns(candidates.size());
-    tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
+    parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
         const LatticeIndex cell = lattice_index(candidates[i]);
         std::uint8_t inside = 0;
         for (int c = 0; c < 8; ++c)
@@ -153,7 +152,7 @@ LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice
     samples.crossings.resize(count);
     samples.gradients.resize(count);
     samples.lower_inside.resize(count);
-    tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) {
+    parallel_for(std::size_t(0), count, [&](std::size_t i) {
         const int axis = int(samples.edges[i] & 3);
         const LatticeIndex corner = lattice_index(samples.edges[i] >> 2);
         LatticeIndex upper = corner;

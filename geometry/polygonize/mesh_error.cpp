@@ -1,13 +1,12 @@
 #include "geometry/polygonize/mesh_error.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include "geometry/mesh/closest_triangle_point.h"
+#include "renderer/core/parallel_for.h"
 
 namespace isotrace {
 namespace {
@@ -25,7 +24,7 @@ std::vector<Vec3d> surface_points(const ImplicitField& field, std::size_t wanted
     const FieldBox box = field.bounds();
     const std::size_t lines = std::max<std::size_t>(1, wanted / 4);
     std::vector<std::vector<Vec3d>> found(lines);
-    tbb::parallel_for(std::size_t(0), lines, [&](std::size_t line) {
+    parallel_for(std::size_t(0), lines, [&](std::size_t line) {
         std::mt19937_64 random(seed * 0x9E3779B97F4A7C15ull + line);
         std::uniform_real_distribution<double> u(0, 1);
         std::normal_distribution<double> g;
@@ -61,8 +60,8 @@ MeshError measure_mesh_error(const ImplicitField& field, const TriangleMeshData&
     MeshError error;
     if (mesh.triangles.empty()) return error;
     std::vector<double> at_vertex(mesh.positions.size());
-    tbb::parallel_for(std::size_t(0), mesh.positions.size(),
-                      [&](std::size_t i) { at_vertex[i] = first_order_distance(field, Vec3d(mesh.positions[i])); });
+    parallel_for(std::size_t(0), mesh.positions.size(),
+                 [&](std::size_t i) { at_vertex[i] = first_order_distance(field, Vec3d(mesh.positions[i])); });
     for (double e : at_vertex) {
         error.vertex_mean += e;
         error.vertex_max = std::max(error.vertex_max, e);
@@ -79,7 +78,7 @@ MeshError measure_mesh_error(const ImplicitField& field, const TriangleMeshData&
         cumulative[t] = total;
     }
     std::vector<double> to_surface(samples);
-    tbb::parallel_for(std::size_t(0), samples, [&](std::size_t i) {
+    parallel_for(std::size_t(0), samples, [&](std::size_t i) {
         std::mt19937_64 random(seed ^ (0xD1B54A32D192ED03ull * (i + 1)));
         std::uniform_real_distribution<double> u(0, 1);
         const std::size_t t = std::min<std::size_t>(
@@ -101,8 +100,8 @@ MeshError measure_mesh_error(const ImplicitField& field, const TriangleMeshData&
     error.surface_samples = points.size();
     const ClosestPointQuery query(mesh);
     std::vector<double> to_mesh(points.size());
-    tbb::parallel_for(std::size_t(0), points.size(),
-                      [&](std::size_t i) { to_mesh[i] = query.nearest(points[i], INFINITY).distance; });
+    parallel_for(std::size_t(0), points.size(),
+                 [&](std::size_t i) { to_mesh[i] = query.nearest(points[i], INFINITY).distance; });
     for (double e : to_mesh) error.surface_to_mesh = std::max(error.surface_to_mesh, e);
     return error;
 }

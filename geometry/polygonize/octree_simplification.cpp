@@ -1,12 +1,11 @@
 #include "geometry/polygonize/octree_simplification.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <numeric>
 #include <optional>
 
 #include "geometry/polygonize/collapse_topology.h"
+#include "renderer/core/parallel_for.h"
 
 namespace isotrace {
 namespace {
@@ -76,7 +75,7 @@ SimplificationStatistics simplify_octree(const LatticeSamples& samples, const Ca
         std::vector<std::size_t> leaf_cell;
         for (std::size_t i = 0; i < cells; ++i)
             if (open[i]) leaf_cell.push_back(i);
-        tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
+        parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
             const std::size_t i = leaf_cell[k];
             leaves[k].qef = cycle_qef(samples, lattice, lattice_index(samples.cells[i]), cube_cycles(samples.inside[i]).cycles[0]);
         });
@@ -101,7 +100,7 @@ SimplificationStatistics simplify_octree(const LatticeSamples& samples, const Ca
         }
         std::vector<std::optional<Leaf>> made(groups.size());
         std::vector<std::uint8_t> refused_by_error(groups.size());
-        tbb::parallel_for(std::size_t(0), groups.size(), [&](std::size_t g) {
+        parallel_for(std::size_t(0), groups.size(), [&](std::size_t g) {
             const Group& group = groups[g];
             const LatticeIndex node = lattice_index(group.parent);
             if (!collapse_keeps_topology(child_corner_signs(samples, lattice, field, level, node))) return;

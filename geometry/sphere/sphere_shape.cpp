@@ -73,8 +73,8 @@ void SphereShape::bake(const Transform& to_world) {
 
 RTCGeometry SphereShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
-    return user_geometry::create(device, this, unsigned(spheres_.size()), bounds_callback, intersect_callback,
-                                 occluded_callback);
+    return user_geometry::create<bounds_callback>(device, this, unsigned(spheres_.size()), intersect_callback,
+                                                  occluded_callback);
 }
 
 void SphereShape::bounds_callback(const RTCBoundsFunctionArguments* args) {

@@ -43,8 +43,8 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
                    counters::named_counter_slot("superquadric.halvings"),
                    counters::named_counter_slot("superquadric.refined_crossings"),
                    counters::named_counter_slot("superquadric.polynomial_solves")};
-    return user_geometry::create(device, this, unsigned(superquadrics_.size()), bounds_callback, intersect_callback,
-                                 occluded_callback);
+    return user_geometry::create<bounds_callback>(device, this, unsigned(superquadrics_.size()), intersect_callback,
+                                                  occluded_callback);
 }
 
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {

@@ -1,10 +1,9 @@
 #include "geometry/sweep/sweep_deformer.h"
 
-#include <tbb/parallel_for.h>
-
 #include <stdexcept>
 
 #include "geometry/sweep/sweep_surface.h"
+#include "renderer/core/parallel_for.h"
 
 namespace isotrace {
 
@@ -14,7 +13,7 @@ SweepDeformer::SweepDeformer(const SweepSurface& sweep, const std::vector<Vec3d>
     if (selected && selected->size() != points.size())
         throw std::invalid_argument("selection: one flag per point needed");
     const SweepBinder binder(sweep);
-    tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
         if (selected && !(*selected)[i]) return;
         bindings_[i] = binder.bind(points[i]);
         if (!bindings_[i]) return;
@@ -37,7 +36,7 @@ SweepDeformer::SweepDeformer(const SweepSurface& sweep, const std::vector<Vec3d>
 
 std::vector<Vec3d> SweepDeformer::deform(const SweepSurface& edited) const {
     std::vector<Vec3d> moved(points_);
-    tbb::parallel_for(std::size_t(0), points_.size(), [&](std::size_t i) {
+    parallel_for(std::size_t(0), points_.size(), [&](std::size_t i) {
         if (weights_[i] == 0) return;
         moved[i] = points_[i] + weights_[i] * (bound_position(edited, *bindings_[i]) - points_[i]);
     });

@@ -1,5 +1,4 @@
 // The "sweep" and "sweep_hierarchy" mesh deformers (docs/scene-format.md, "Sweep deformers").
-#include <tbb/parallel_for.h>
 
 #include <sstream>
 
@@ -8,6 +7,7 @@
 #include "geometry/sweep/sweep_hierarchy.h"
 #include "geometry/sweep/sweep_spec.h"
 #include "geometry/sweep/sweep_surface.h"
+#include "renderer/core/parallel_for.h"
 
 namespace isotrace {
 namespace {
@@ -127,7 +127,7 @@ public:
         for (std::size_t n = 0; n < tree.size(); ++n) binders.emplace_back(tree.surface(int(n)));
         std::vector<int> owner(points.size(), -1);
         std::vector<VertexBinding> bindings(points.size());
-        tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+        parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
             double best = INFINITY;
             for (std::size_t n = 0; n < binders.size(); ++n) {
                 const auto b = binders[n].bind(points[i]);

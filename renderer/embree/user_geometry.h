@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "renderer/core/render_counters.h"
+#include "renderer/core/thread_sanitizer.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace::user_geometry {
@@ -31,14 +32,25 @@ inline void store_bounds(RTCBounds* out, const Vec3d& lower, const Vec3d& upper)
     out->upper_z = std::nextafter(float(upper.z), kInfinity);
 }
 
+// Embree calls bounds callbacks in its own TBB tasks while it builds the BVH, a hand-off ThreadSanitizer cannot see
+// (Embree and TBB are not instrumented): every call first acquires the shape, which create() published.
+template <RTCBoundsFunction bounds>
+void announced_bounds(const RTCBoundsFunctionArguments* args) {
+    thread_sanitizer::acquire(args->geometryUserPtr);
+    bounds(args);
+}
+
 // A committed user geometry of `primitive_count` primitives whose callbacks find their shape in
-// args->geometryUserPtr (the bounds callback's own userPtr is ignored by Embree 3.13.5).
-inline RTCGeometry create(RTCDevice device, void* shape, unsigned primitive_count, RTCBoundsFunction bounds,
-                          RTCIntersectFunctionN intersect, RTCOccludedFunctionN occluded) {
+// args->geometryUserPtr (the bounds callback's own userPtr is ignored by Embree 3.13.5). The shape must be
+// complete: its bounds may be computed on other threads from here on.
+template <RTCBoundsFunction bounds>
+RTCGeometry create(RTCDevice device, void* shape, unsigned primitive_count, RTCIntersectFunctionN intersect,
+                   RTCOccludedFunctionN occluded) {
+    thread_sanitizer::publish(shape);
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, primitive_count);
     rtcSetGeometryUserData(geometry, shape);
-    rtcSetGeometryBoundsFunction(geometry, bounds, nullptr);
+    rtcSetGeometryBoundsFunction(geometry, announced_bounds<bounds>, nullptr);
     rtcSetGeometryIntersectFunction(geometry, intersect);
     rtcSetGeometryOccludedFunction(geometry, occluded);
     rtcCommitGeometry(geometry);

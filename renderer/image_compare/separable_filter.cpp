@@ -1,12 +1,13 @@
 #include "renderer/image_compare/separable_filter.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+
+#include "renderer/core/parallel_for.h"
 
 namespace isotrace {
 namespace {
@@ -21,7 +22,7 @@ std::vector<float> filter_lines(const std::vector<float>& plane, int width, int 
     const std::size_t step = along_rows ? 1 : std::size_t(width);
     const std::size_t line_step = along_rows ? std::size_t(width) : 1;
     std::vector<float> out(plane.size());
-    tbb::parallel_for(tbb::blocked_range<int>(0, lines), [&](const tbb::blocked_range<int>& range) {
+    parallel_for(tbb::blocked_range<int>(0, lines), [&](const tbb::blocked_range<int>& range) {
         for (int line = range.begin(); line != range.end(); ++line) {
             const float* in = plane.data() + std::size_t(line) * line_step;
             float* result = out.data() + std::size_t(line) * line_step;

@@ -1,7 +1,6 @@
 #include "renderer/render/depth_map.h"
 
-#include <tbb/parallel_for.h>
-
+#include "renderer/core/parallel_for.h"
 #include "renderer/embree/embree_device.h"
 
 namespace isotrace {
@@ -14,7 +13,7 @@ DepthMap render_depth_map(const LoadedScene& scene) {
     DepthMap map;
     map.window = scene.film.crop;
     map.depth.assign(std::size_t(map.window.area()), DepthMap::kNoHit);
-    tbb::parallel_for(map.window.y0, map.window.y1, [&](int y) {
+    parallel_for(map.window.y0, map.window.y1, [&](int y) {
         enable_flush_to_zero();  // as in every render thread: this worker may not have rendered before
         for (int x = map.window.x0; x < map.window.x1; ++x) {
             const Ray ray = pixel_centre_ray(scene, x, y);

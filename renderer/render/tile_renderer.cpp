@@ -1,7 +1,6 @@
 #include "renderer/render/tile_renderer.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <bit>
@@ -11,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "renderer/core/parallel_for.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/embree_device.h"
 #include "renderer/sampling/sampler.h"
@@ -215,7 +215,7 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
             pass_spp = int(std::min(double(pass_spp), fits));  // compare as doubles: fits may exceed INT_MAX
         }
         const std::uint32_t last = std::uint32_t(completed + pass_spp);
-        tbb::parallel_for(
+        parallel_for(
             tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& range) {
                 enable_flush_to_zero();

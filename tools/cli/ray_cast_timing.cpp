@@ -1,12 +1,12 @@
 #include "tools/cli/ray_cast_timing.h"
 
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
 #include <functional>
 
+#include "renderer/core/parallel_for.h"
 #include "renderer/embree/embree_device.h"
 
 namespace isotrace::cli {
@@ -43,7 +43,7 @@ std::vector<RayCastTiming> time_secondary_rays(const std::vector<const LoadedSce
         const RenderScene& scene = *scenes[i]->scene;
         timing.ray_count = rays.size();
         timing.hit.assign(rays.size(), 0);
-        tbb::parallel_for(std::size_t(0), (rays.size() + kRaysPerTask - 1) / kRaysPerTask, [&](std::size_t task) {
+        parallel_for(std::size_t(0), (rays.size() + kRaysPerTask - 1) / kRaysPerTask, [&](std::size_t task) {
             enable_flush_to_zero();  // as in every render thread
             const std::size_t end = std::min(rays.size(), (task + 1) * kRaysPerTask);
             for (std::size_t r = task * kRaysPerTask; r < end; ++r)

@@ -1,12 +1,11 @@
 #include "tools/cli/secondary_ray_lists.h"
 
-#include <tbb/parallel_for.h>
-
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "renderer/core/input_error.h"
+#include "renderer/core/parallel_for.h"
 #include "renderer/embree/embree_device.h"
 #include "renderer/render/depth_map.h"
 #include "renderer/sampling/independent_sampler.h"
@@ -37,7 +36,7 @@ SecondaryRayLists build_secondary_rays(const LoadedScene& scene) {
     const PixelBounds window = scene.film.crop;
     const IndependentSampler sampler(scene.seed);
     std::vector<RowRays> rows(std::size_t(window.height()));
-    tbb::parallel_for(window.y0, window.y1, [&](int y) {
+    parallel_for(window.y0, window.y1, [&](int y) {
         enable_flush_to_zero();  // as in every render thread
         RowRays& row = rows[std::size_t(y - window.y0)];
         for (int x = window.x0; x < window.x1; ++x) {
