@@ -21,13 +21,7 @@ struct QueryState {
 void box_bounds(const RTCBoundsFunctionArguments* args) {
     const auto& boxes = *static_cast<const std::vector<FieldBox>*>(args->geometryUserPtr);
     const FieldBox& box = boxes[args->primID];
-    // Rounded outwards, so that the float box contains the double one.
-    args->bounds_o->lower_x = std::nextafter(float(box.lower.x), -INFINITY);
-    args->bounds_o->lower_y = std::nextafter(float(box.lower.y), -INFINITY);
-    args->bounds_o->lower_z = std::nextafter(float(box.lower.z), -INFINITY);
-    args->bounds_o->upper_x = std::nextafter(float(box.upper.x), INFINITY);
-    args->bounds_o->upper_y = std::nextafter(float(box.upper.y), INFINITY);
-    args->bounds_o->upper_z = std::nextafter(float(box.upper.z), INFINITY);
+    user_geometry::store_bounds(args->bounds_o, box.lower, box.upper);
 }
 
 bool visit_box(RTCPointQueryFunctionArguments* args) {
