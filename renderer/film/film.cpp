@@ -153,9 +153,15 @@ void Film::visit_state(Self& film, Visit&& visit) {
     }
 }
 
+std::size_t Film::state_size() const {
+    std::size_t size = 0;
+    visit_state(*this, [&](const auto& field) { size += sizeof field; });
+    return size;
+}
+
 std::string Film::state() const {
     std::string bytes;
-    bytes.reserve(beauty_.size() * (22 * sizeof(double) + sizeof(std::uint32_t)));
+    bytes.reserve(state_size());
     visit_state(*this, [&](const auto& field) {
         bytes.append(reinterpret_cast<const char*>(&field), sizeof field);
     });
@@ -163,8 +169,7 @@ std::string Film::state() const {
 }
 
 void Film::restore_state(std::string_view bytes) {
-    std::size_t needed = 0;
-    visit_state(*this, [&](auto& field) { needed += sizeof field; });
+    const std::size_t needed = state_size();
     if (bytes.size() != needed)
         throw std::invalid_argument("film state: " + std::to_string(bytes.size()) + " bytes where these film settings need " +
                                     std::to_string(needed));
@@ -175,26 +180,23 @@ void Film::restore_state(std::string_view bytes) {
     });
 }
 
+void Film::copy_pixels(const Film& from, Film& to, const PixelBounds& area) {
+    for (int y = area.y0; y < area.y1; ++y) {
+        const std::size_t source = from.index(area.x0, y), target = to.index(area.x0, y);
+        std::copy_n(from.beauty_.begin() + source, area.width(), to.beauty_.begin() + target);
+        if (!to.aovs_.empty()) std::copy_n(from.aovs_.begin() + source, area.width(), to.aovs_.begin() + target);
+    }
+}
+
 Film Film::region(const PixelBounds& area) const {
     FilmSettings settings = settings_;
     settings.crop = area;
     Film part(std::move(settings));
-    for (int y = area.y0; y < area.y1; ++y) {
-        const std::size_t from = index(area.x0, y), to = part.index(area.x0, y);
-        std::copy_n(beauty_.begin() + from, area.width(), part.beauty_.begin() + to);
-        if (!aovs_.empty()) std::copy_n(aovs_.begin() + from, area.width(), part.aovs_.begin() + to);
-    }
+    copy_pixels(*this, part, area);
     return part;
 }
 
-void Film::replace_region(const Film& part) {
-    const PixelBounds& area = part.bounds();
-    for (int y = area.y0; y < area.y1; ++y) {
-        const std::size_t from = part.index(area.x0, y), to = index(area.x0, y);
-        std::copy_n(part.beauty_.begin() + from, area.width(), beauty_.begin() + to);
-        if (!aovs_.empty()) std::copy_n(part.aovs_.begin() + from, area.width(), aovs_.begin() + to);
-    }
-}
+void Film::replace_region(const Film& part) { copy_pixels(part, *this, part.bounds()); }
 
 void Film::append_block(const Film& later) {
     const PixelBounds& area = later.bounds();

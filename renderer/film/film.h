@@ -152,6 +152,9 @@ private:
     // Calls visit(field) for every accumulator field; Self is Film or const Film.
     template <class Self, class Visit>
     static void visit_state(Self& film, Visit&& visit);
+    std::size_t state_size() const;  // bytes of state()
+    // The accumulators of `area` (inside both films' crops) from one film to the other.
+    static void copy_pixels(const Film& from, Film& to, const PixelBounds& area);
 
     FilmSettings settings_;
     std::vector<Accumulator> beauty_;
