@@ -19,6 +19,10 @@
 
 namespace isotrace {
 
+// The most samples per pixel a scene or --spp may ask for; also the budget of a render that only a time budget
+// or a target error ends ("no sample limit").
+constexpr int kMaxSamplesPerPixel = 1 << 24;
+
 // Command-line values that replace the scene's.
 struct SceneOverrides {
     std::optional<int> spp;

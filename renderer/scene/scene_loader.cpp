@@ -72,7 +72,7 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
     if (overrides.resolution) raster = *overrides.resolution;
     loaded.film.raster = raster;
     loaded.film.crop = crop_window(film, raster);
-    loaded.spp = overrides.spp.value_or(film.integer_or("spp", 16, NumberRange::between(1, 1 << 24)));
+    loaded.spp = overrides.spp.value_or(film.integer_or("spp", 16, NumberRange::between(1, kMaxSamplesPerPixel)));
     loaded.film.half_float = film.choice_or("exr_pixel", "float", {"float", "half"}) == "half";
     if (auto aovs = film.optional_value("aovs")) {
         for (const SceneNode& item : aovs->elements()) {

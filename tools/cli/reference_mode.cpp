@@ -84,7 +84,7 @@ std::string reproduce_command(const ReferenceRequest& request, const ReferenceSe
     std::string command = common + " --spp " + std::to_string(result.completed_spp);
     if (result.stopped_at_pass_end) {
         command += "; or " + common + " --target-error " + format_number(*request.target_error);
-        if (settings.spp_budget != 1 << 24) command += " --spp " + std::to_string(settings.spp_budget);
+        if (settings.spp_budget != kMaxSamplesPerPixel) command += " --spp " + std::to_string(settings.spp_budget);
     }
     return command;
 }

@@ -47,7 +47,7 @@ std::function<bool(const Film&)> reference_stop_rule(const ReferenceRequest& req
 struct ReferenceSettings {
     RasterSize resolution;
     std::uint64_t seed = 0;
-    int spp_budget = 0;          // --spp (or the scene's); 1 << 24 when the target error or --time lifted it
+    int spp_budget = 0;          // --spp (or the scene's); kMaxSamplesPerPixel when the target error or --time lifted it
     std::optional<double> time_budget_seconds;
 };
 

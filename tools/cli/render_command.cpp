@@ -255,7 +255,7 @@ int run_render(const RenderArguments& args) {
     options.tile_size = args.tile_size;
     // --time or --target-error alone lifts the sample limit; with --spp too, whichever ends first ends the render.
     const bool lifted = (time_budget || reference.target_error) && !args.spp;
-    options.spp = resume ? resume->options.spp : lifted ? (1 << 24) : scene->spp;
+    options.spp = resume ? resume->options.spp : lifted ? kMaxSamplesPerPixel : scene->spp;
     options.time_budget_seconds = time_budget;
     options.cancel = &g_interrupted;
     const PixelOptions pixel_options{options.spp, scene->film.raster, scene->seed, aov_names(overrides.extra_aovs),
@@ -277,7 +277,7 @@ int run_render(const RenderArguments& args) {
         const SampleCountRange done = film ? film->sample_count_range() : SampleCountRange{};
         std::fprintf(stderr, "isotrace: %s: %dx%d, %s, %s integrator, %d thread(s), loaded in %.2f s%s\n",
                      args.scene.c_str(), scene->film.raster.width, scene->film.raster.height,
-                     options.spp == (1 << 24) ? "no sample limit" : (std::to_string(options.spp) + " spp").c_str(),
+                     options.spp == kMaxSamplesPerPixel ? "no sample limit" : (std::to_string(options.spp) + " spp").c_str(),
                      scene->integrator_type.c_str(), threads,
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count(),
                      resume ? (", resuming at " + std::to_string(done.min) + " spp").c_str() : "");
@@ -333,7 +333,7 @@ CommandRunner add_render_command(CLI::App& app) {
     command->add_option("-o,--output", args->outputs,
                         "Output image; repeat for several. .exr: scene-linear with AOVs and metadata; "
                         ".png/.jpg/.tif: display-referred through the OCIO view. Default: <scene name>.exr");
-    command->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1, 1 << 24));
+    command->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1, kMaxSamplesPerPixel));
     command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
     add_threads_option(*command, args->threads);
     command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)");
