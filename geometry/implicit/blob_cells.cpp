@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "renderer/core/parallel_for.h"
+
 namespace isotrace {
 namespace {
 
@@ -28,10 +30,6 @@ bool support_meets(const Metacube& element, const WorldBounds& box) {
     return dot(gap, gap) <= element.radius() * element.radius();
 }
 
-int longest_axis(const Vec3d& extent) {
-    return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
-}
-
 }  // namespace
 
 void BlobCells::build(std::span<const Metacube> elements) {
@@ -47,10 +45,36 @@ void BlobCells::build(std::span<const Metacube> elements) {
     std::vector<std::uint32_t> all(elements.size());
     std::iota(all.begin(), all.end(), 0u);
     nodes_.emplace_back();
+    root_ = root;
     build_node(elements, 0, root, all, 0);
     nodes_.shrink_to_fit();
     cells_.shrink_to_fit();
     element_ids_.shrink_to_fit();
+    surface_cells_ = std::uint32_t(cells_.size());
+}
+
+void BlobCells::restrict_to_surface(const SurfaceRegion& region) {
+    std::vector<std::optional<WorldBounds>> regions(cells_.size());
+    parallel_for(std::size_t(0), cells_.size(), [&](std::size_t c) {
+        regions[c] = region({cells_[c].lower, cells_[c].upper}, elements_of(cells_[c]));
+    });
+    // New order: the cells with a region first, each group in its old order (deterministic).
+    std::vector<std::uint32_t> new_index(cells_.size());
+    std::vector<Cell> reordered;
+    reordered.reserve(cells_.size());
+    for (int with_region = 1; with_region >= 0; --with_region)
+        for (std::size_t c = 0; c < cells_.size(); ++c) {
+            if (regions[c].has_value() != bool(with_region)) continue;
+            new_index[c] = std::uint32_t(reordered.size());
+            Cell cell = cells_[c];
+            cell.lower = with_region ? regions[c]->lower : Vec3d(INFINITY, INFINITY, INFINITY);
+            cell.upper = with_region ? regions[c]->upper : Vec3d(-INFINITY, -INFINITY, -INFINITY);
+            reordered.push_back(cell);
+        }
+    surface_cells_ = std::uint32_t(std::count_if(regions.begin(), regions.end(), [](const auto& r) { return r; }));
+    for (Node& node : nodes_)
+        if (node.axis == 3 && node.child != kNoCell) node.child = new_index[node.child];
+    cells_ = std::move(reordered);
 }
 
 void BlobCells::build_node(std::span<const Metacube> elements, std::uint32_t node, const WorldBounds& box,
@@ -110,6 +134,8 @@ std::size_t BlobCells::memory_bytes() const {
 
 std::span<const std::uint32_t> BlobCells::elements_near(const Vec3d& p) const {
     if (nodes_.empty()) return {};
+    for (int k = 0; k < 3; ++k)
+        if (p[k] < root_.lower[k] || p[k] > root_.upper[k]) return {};
     std::uint32_t index = 0;
     while (nodes_[index].axis != 3) {
         const Node& node = nodes_[index];
@@ -117,10 +143,7 @@ std::span<const std::uint32_t> BlobCells::elements_near(const Vec3d& p) const {
     }
     const std::uint32_t cell = nodes_[index].child;
     if (cell == kNoCell) return {};
-    const Cell& c = cells_[cell];
-    for (int k = 0; k < 3; ++k)
-        if (p[k] < c.lower[k] || p[k] > c.upper[k]) return {};
-    return elements_of(c);
+    return elements_of(cell);
 }
 
 }  // namespace isotrace

@@ -5,9 +5,13 @@
 // primitive each, front to back, culling beyond the nearest hit found) and each cell sweeps its stretch of the
 // ray once (field_sweep.h). Like Mitsuba's sdfgrid voxels, but adaptive: a kd-tree splits space at the middle of
 // its longest side until a cell lists few elements or is about as small as its elements' supports; each leaf
-// box is then shrunk to the supports it lists (still inside its kd cell, so cells stay disjoint). The kd-tree
-// itself is kept for point queries (field and normal at a point) and for walking a ray's cells in order (CSG).
+// box is then shrunk to the supports it lists (still inside its kd cell, so cells stay disjoint), and further, by
+// restrict_to_surface, to where the surface may lie: a cell that is all inside or all outside is no ray primitive.
+// The kd-tree itself is kept for point queries (field and normal at a point) and for walking a ray's cells in
+// order (CSG).
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -18,25 +22,39 @@ namespace isotrace {
 class BlobCells {
 public:
     struct Cell {
-        Vec3d lower, upper;            // closed box; cells overlap at most on their faces
+        // Closed box that rays sweep; cells overlap at most on their faces. Cells at or beyond
+        // surface_cell_count() have none (lower > upper).
+        Vec3d lower, upper;
         std::uint32_t first = 0, count = 0;  // its elements: element_ids()[first, first + count), ascending
     };
 
     // Cells over the supports of `elements` (the lists index into it).
     void build(std::span<const Metacube> elements);
 
+    // The part of a cell's box where a ray may cross the surface (std::nullopt: nowhere), given the box and the
+    // cell's elements; surface_region.h computes it for a blob group.
+    using SurfaceRegion =
+        std::function<std::optional<WorldBounds>(const WorldBounds&, std::span<const std::uint32_t>)>;
+    // Shrinks every cell's box to its surface region and moves the cells without one to the end, where they keep
+    // their lists for point queries but are no ray primitive. Cells are independent, so they are done in parallel.
+    void restrict_to_surface(const SurfaceRegion& region);
+
     std::span<const Cell> cells() const { return cells_; }
+    // Cells [0, surface_cell_count()) have a box to sweep: the ray primitives.
+    std::uint32_t surface_cell_count() const { return surface_cells_; }
     std::span<const std::uint32_t> elements_of(const Cell& cell) const {
         return {element_ids_.data() + cell.first, cell.count};
     }
     std::span<const std::uint32_t> elements_of(std::uint32_t cell) const { return elements_of(cells_[cell]); }
     std::size_t memory_bytes() const;
 
-    // The elements whose support may contain p: the list of the cell that holds p (empty outside every cell).
+    // The elements whose support may contain p: the list of the kd cell that holds p (empty outside the bounds
+    // of every support).
     std::span<const std::uint32_t> elements_near(const Vec3d& p) const;
 
-    // Calls visit(cell, t_enter, t_exit) for the cells that o + t·d meets within [t_min, t_max], in increasing t
-    // (stretches of consecutive cells touch; gaps are empty space). Stops early when visit returns false.
+    // Calls visit(cell, t_enter, t_exit) for the kd cells that o + t·d meets within [t_min, t_max], in increasing
+    // t (stretches of consecutive cells touch; gaps are empty space), with or without a surface region. Stops
+    // early when visit returns false.
     template <class Visit>
     void walk(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, Visit&& visit) const;
 
@@ -56,6 +74,8 @@ private:
     std::vector<Node> nodes_;
     std::vector<Cell> cells_;
     std::vector<std::uint32_t> element_ids_;
+    WorldBounds root_{};  // the kd-tree's box: the bounds of every support
+    std::uint32_t surface_cells_ = 0;
 };
 
 template <class Visit>

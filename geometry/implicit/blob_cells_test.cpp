@@ -84,6 +84,44 @@ TEST(BlobCells, WalkVisitsTheRaysCellsInOrderWithoutGaps) {
     }
 }
 
+TEST(BlobCells, RestrictingToTheSurfaceMovesCellsWithoutRegionLastAndKeepsTheirLists) {
+    const std::vector<Metacube> elements = random_elements(300, 5);
+    BlobCells cells;
+    cells.build(elements);
+    const std::vector<BlobCells::Cell> before(cells.cells().begin(), cells.cells().end());
+    // Every third cell has no region; the others shrink to their lower half along x.
+    std::size_t calls = 0;
+    cells.restrict_to_surface([&](const WorldBounds& box, std::span<const std::uint32_t>) -> std::optional<WorldBounds> {
+        std::size_t index = 0;  // which cell: boxes are distinct
+        while (before[index].lower != box.lower || before[index].upper != box.upper) ++index;
+        ++calls;
+        if (index % 3 == 0) return std::nullopt;
+        WorldBounds half = box;
+        half.upper.x = 0.5 * (box.lower.x + box.upper.x);
+        return half;
+    });
+    EXPECT_EQ(calls, before.size());
+    ASSERT_EQ(cells.cells().size(), before.size());
+    EXPECT_EQ(cells.surface_cell_count(), before.size() - (before.size() + 2) / 3);
+    // Surface cells first, in their old order, then the others; every list kept.
+    std::size_t next_surface = 0, next_other = cells.surface_cell_count();
+    for (std::size_t old = 0; old < before.size(); ++old) {
+        const std::size_t now = old % 3 == 0 ? next_other++ : next_surface++;
+        const BlobCells::Cell& cell = cells.cells()[now];
+        EXPECT_EQ(cell.first, before[old].first);
+        EXPECT_EQ(cell.count, before[old].count);
+        if (old % 3 == 0) {
+            EXPECT_GT(cell.lower.x, cell.upper.x);  // no box
+        } else {
+            EXPECT_EQ(cell.upper.x, 0.5 * (before[old].lower.x + before[old].upper.x));
+        }
+        // Point queries still find the cell's list, also in a cell without region and outside a shrunk box.
+        const Vec3d inside_old_box = before[old].lower * 0.2 + before[old].upper * 0.8;
+        const auto near = cells.elements_near(inside_old_box);
+        EXPECT_EQ(near.data(), cells.elements_of(cell).data()) << "cell " << old;
+    }
+}
+
 TEST(BlobCells, CoincidentElementsStopTheSplitting) {
     std::vector<Metacube> elements(500, Metacube::metaball({0.5, 0.5, 0.5}, 1.0, 1.0));
     BlobCells cells;

@@ -9,6 +9,7 @@
 #include "geometry/implicit/kim_sextic.h"
 #include "geometry/implicit/murakami_quartic.h"
 #include "geometry/implicit/nishimura_quadratic.h"
+#include "geometry/implicit/surface_region.h"
 #include "geometry/implicit/wyvill_sextic.h"
 #include "renderer/math/line_box_clip.h"
 
@@ -27,17 +28,6 @@ BlobGroup::BlobGroup(std::vector<Metacube> elements, std::unique_ptr<const Field
     build_index();
 }
 
-void BlobGroup::build_index() {
-    spheres_.resize(elements_.size());
-    centre_bound_ = 0;
-    for (std::size_t i = 0; i < elements_.size(); ++i) {
-        spheres_[i] = BoundingSphere::of(elements_[i]);
-        const BoundingSphere& s = spheres_[i];
-        centre_bound_ = std::max(centre_bound_, length(Vec3d(s.centre[0], s.centre[1], s.centre[2])));
-    }
-    cells_.build(elements_);
-}
-
 template <class F>
 decltype(auto) BlobGroup::with_kernel(F&& f) const {
     switch (kernel_kind_) {
@@ -48,6 +38,20 @@ decltype(auto) BlobGroup::with_kernel(F&& f) const {
         case KernelKind::Kim: break;
     }
     return f(static_cast<const KimSextic&>(*kernel_));
+}
+
+void BlobGroup::build_index() {
+    spheres_.resize(elements_.size());
+    centre_bound_ = 0;
+    for (std::size_t i = 0; i < elements_.size(); ++i) {
+        spheres_[i] = BoundingSphere::of(elements_[i]);
+        const BoundingSphere& s = spheres_[i];
+        centre_bound_ = std::max(centre_bound_, length(Vec3d(s.centre[0], s.centre[1], s.centre[2])));
+    }
+    cells_.build(elements_);
+    cells_.restrict_to_surface([&](const WorldBounds& box, std::span<const std::uint32_t> ids) {
+        return with_kernel([&](const auto& kernel) { return surface_region(box, ids, elements_, kernel, threshold_); });
+    });
 }
 
 void BlobGroup::bake(const Transform& similarity, double scale) {
@@ -69,6 +73,7 @@ std::size_t BlobGroup::memory_bytes() const {
 template <class Report>
 void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
                            double t_max, BlobQueryWork& work, Report&& report) const {
+    if (cell >= cells_.surface_cell_count()) return;  // all inside or all outside: no crossing
     const BlobCells::Cell& box = cells_.cells()[cell];
     const auto clip = clip_line_to_box(box.lower, box.upper, origin, direction, t_min, t_max);
     // A zero direction, or an unbounded query along a line parallel to every slab, has no finite stretch.

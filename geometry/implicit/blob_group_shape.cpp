@@ -50,7 +50,7 @@ void BlobGroupShape::count_work(const BlobQueryWork& work) const {
 
 RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {
     register_counters();
-    return user_geometry::create<bounds_callback>(device, this, unsigned(group_.cells().cells().size()),
+    return user_geometry::create<bounds_callback>(device, this, group_.cells().surface_cell_count(),
                                                   intersect_callback, occluded_callback);
 }
 

@@ -100,26 +100,36 @@ std::optional<double> reference_crossing(const BlobGroup& group, const Vec3d& or
 }
 
 // The candidates' bound skips a cell at once only when no crossing can be there: two Kim metaballs (w = 1, R = 1,
-// T = 0.5) 3 apart, in one cell, and a ray parallel to their axis at distance h. Their supports do not overlap,
-// so the ray hits exactly when h is below one ball's iso-radius, (1 − h²)³ = T. Each contributes at most
-// (1 − h²)³ on the ray, so the bound 2·(1 − h²)³ falls below T only beyond h² = 1 − 0.25^(1/3): from there on
-// the cell is skipped before any element is joined, and between the two radii the sweep runs and finds nothing.
+// T = 0.5) 3 apart, in one cell, and rays parallel to their axis at distance h. Their supports do not overlap, so
+// a ray hits exactly when h is below one ball's iso-radius, (1 − h²)³ = T. Each contributes at most (1 − h²)³ on
+// the ray, so the bound 2·(1 − h²)³ falls below T only beyond h² = 1 − 0.25^(1/3): from there on the cell is
+// skipped before any element is joined; between the two radii the sweep runs and finds nothing. The cell's surface
+// region (surface_region.h) ends at |y| = 0.5 here: rays beyond it make no query at all.
 TEST(BlobGroup, CandidateBoundSkipsOnlyCellsWithoutCrossings) {
     const BlobGroup group({Metacube::metaball({-1.5, 0, 0}, 1, 1), Metacube::metaball({1.5, 0, 0}, 1, 1)},
                           make_field_function("kim", 4.0), 0.5);
     ASSERT_EQ(group.cells().cells().size(), 1u);
+    const BlobCells::Cell& cell = group.cells().cells()[0];
     const double h_limit = std::sqrt(1 - std::cbrt(0.25));  // 2·(1 − h²)³ = T: the bound's edge
     const double h_alone = std::sqrt(1 - std::cbrt(0.5));   // (1 − h²)³ = T: one ball's own iso-radius
-    for (const double h : {0.5 * h_alone, 0.999 * h_alone, 1.001 * h_alone, 0.5 * (h_alone + h_limit),
-                           1.001 * h_limit, 1.5 * h_limit}) {
+    const double diagonal = 0.49;  // inside the region, at distance 0.69 > h_limit from the axis
+    ASSERT_GT(std::sqrt(2) * diagonal, h_limit);
+    ASSERT_GE(cell.upper.y, diagonal);
+    ASSERT_GE(cell.upper.z, diagonal);
+    ASSERT_LT(cell.upper.y, 1.001 * h_limit);
+    struct Case {
+        Vec3d offset;
+        bool hits;
+        int queries, bounded;
+    };
+    for (const Case& c : {Case{{0, 0.5 * h_alone, 0}, true, 1, 0}, Case{{0, 0.999 * h_alone, 0}, true, 1, 0},
+                          Case{{0, 1.001 * h_alone, 0}, false, 1, 0}, Case{{0, diagonal, diagonal}, false, 1, 1},
+                          Case{{0, 1.001 * h_limit, 0}, false, 0, 0}, Case{{0, 1.5 * h_limit, 0}, false, 0, 0}}) {
         BlobQueryWork work;
-        const auto crossing = group.first_crossing({-5, h, 0}, {1, 0, 0}, 0, 100, work);
-        EXPECT_EQ(crossing.has_value(), h < h_alone) << h;
-        if (h > h_limit) {
-            EXPECT_EQ(work.queries_bounded, work.queries) << h;
-        } else {
-            EXPECT_LT(work.queries_bounded, work.queries) << h;
-        }
+        const auto crossing = group.first_crossing(Vec3d(-5, 0, 0) + c.offset, {1, 0, 0}, 0, 100, work);
+        EXPECT_EQ(crossing.has_value(), c.hits) << c.offset.x << "," << c.offset.y << "," << c.offset.z;
+        EXPECT_EQ(work.queries, std::uint64_t(c.queries)) << c.offset.x << "," << c.offset.y << "," << c.offset.z;
+        EXPECT_EQ(work.queries_bounded, std::uint64_t(c.bounded)) << c.offset.x << "," << c.offset.y << "," << c.offset.z;
     }
 }
 

@@ -237,9 +237,11 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, con
         }
         upper += element.weight() * f_max;
     };
-    // Most listed elements are far from the line: their compact bounding spheres reject them, four at a time.
-    const LineNearSpheres line(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), normalize(d), centre_bound_);
-    for_each_near(candidates, spheres_, line, consider);
+    // Most listed elements are far from the stretch: their compact bounding spheres reject them, four at a time.
+    const double length_d = length(d);
+    const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
+                                     0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
+    for_each_near(candidates, spheres_, segment, consider);
     std::sort(candidates_.begin(), candidates_.end(), [](const Candidate& x, const Candidate& y) {
         return x.t_enter < y.t_enter || (x.t_enter == y.t_enter && x.index < y.index);
     });

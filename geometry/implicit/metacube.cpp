@@ -86,4 +86,19 @@ WorldBounds Metacube::support_bounds() const {
     return {skeleton_.centre - reach, skeleton_.centre + reach};
 }
 
+double Metacube::nearest_squared_distance_from_ball(const WorldBounds& box) const {
+    const double gap = std::sqrt(distance_squared((box.lower + box.upper) * 0.5)) - 0.5 * length(box.upper - box.lower);
+    return gap > 0 ? gap * gap : 0;
+}
+
+double Metacube::farthest_squared_distance_at_corners(const WorldBounds& box) const {
+    double farthest = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3d p{(corner & 1 ? box.upper : box.lower).x, (corner & 2 ? box.upper : box.lower).y,
+                      (corner & 4 ? box.upper : box.lower).z};
+        farthest = std::max(farthest, distance_squared(p));
+    }
+    return farthest;
+}
+
 }  // namespace isotrace

@@ -56,8 +56,29 @@ public:
     Vec3d field_gradient(const FieldFunction& kernel, const Vec3d& point) const;
     // The tight world bounds of the support {dist ≤ R} (the per-primitive bounds for Embree).
     WorldBounds support_bounds() const;
+    // Bounds of dist² over the closed box: no point of the box is nearer than the first (exact for a metaball),
+    // none farther than the second (exact). The kernel is monotone in dist², so they bound the field there.
+    double nearest_squared_distance(const WorldBounds& box) const {
+        if (skeleton_.half_size == Vec3d(0, 0, 0)) {  // inline: the surface-region search's most frequent call
+            const Vec3d gap = max(max(box.lower - skeleton_.centre, skeleton_.centre - box.upper), Vec3d(0, 0, 0));
+            return dot(gap, gap);
+        }
+        return nearest_squared_distance_from_ball(box);
+    }
+    double farthest_squared_distance(const WorldBounds& box) const {
+        if (skeleton_.half_size == Vec3d(0, 0, 0)) {  // the corner farthest from the centre on each axis
+            const Vec3d reach = max(abs(box.lower - skeleton_.centre), abs(box.upper - skeleton_.centre));
+            return dot(reach, reach);
+        }
+        return farthest_squared_distance_at_corners(box);
+    }
 
 private:
+    // nearest_squared_distance of a metacube: dist is 1-Lipschitz, so dist ≥ dist(middle of the box) − half its
+    // diagonal.
+    double nearest_squared_distance_from_ball(const WorldBounds& box) const;
+    // farthest_squared_distance of a metacube: dist² is convex in P, so its largest value is at a corner.
+    double farthest_squared_distance_at_corners(const WorldBounds& box) const;
     // Per local axis, the signed amount by which p lies beyond the box's slab (0 inside the slab): its squared
     // length is dist² and twice it is ∇dist² in local coordinates.
     Vec3d offset_beyond_box(const Vec3d& world_point) const;

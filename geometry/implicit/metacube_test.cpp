@@ -216,6 +216,42 @@ TEST(Metacube, SupportBoundsAreTightAndContainTheSupport) {
     }
 }
 
+TEST(Metacube, SquaredDistanceRangeBoundsEveryPointOfTheBox) {
+    // Random elements (metaballs, rotated metacubes, flat skeletons) and random boxes near them: dist² of every
+    // sampled point lies between the nearest and the farthest bound, and the farthest bound is reached at a corner.
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 400; ++i) {
+        const Metacube element = random_metacube(rng);
+        const Vec3d corner = element.skeleton().centre + random_vector(rng, -3, 2);
+        const WorldBounds box{corner, corner + random_vector(rng, 0.05, 1.5)};
+        const double nearest = element.nearest_squared_distance(box);
+        const double farthest = element.farthest_squared_distance(box);
+        ASSERT_LE(nearest, farthest);
+        for (int n = 0; n < 200; ++n) {
+            const Vec3d p = box.lower + (box.upper - box.lower) * Vec3d(u(rng), u(rng), u(rng));
+            const double d2 = element.distance_squared(p);
+            EXPECT_GE(d2, nearest * (1 - 1e-12)) << "element " << i;
+            EXPECT_LE(d2, farthest * (1 + 1e-12)) << "element " << i;
+        }
+        double at_corners = 0;
+        for (int c = 0; c < 8; ++c)
+            at_corners = std::max(at_corners, element.distance_squared({(c & 1 ? box.upper : box.lower).x,
+                                                                        (c & 2 ? box.upper : box.lower).y,
+                                                                        (c & 4 ? box.upper : box.lower).z}));
+        EXPECT_NEAR(farthest, at_corners, 1e-12 * (1 + at_corners)) << "element " << i;
+    }
+}
+
+TEST(Metacube, SquaredDistanceRangeOfAMetaballIsExact) {
+    // The nearest point of the box [1, 2]×[0, 1]×[−1, 1] to the centre 0 is (1, 0, 0), the farthest a corner.
+    const Metacube ball = Metacube::metaball({0, 0, 0}, 3, -2);
+    const WorldBounds box{{1, 0, -1}, {2, 1, 1}};
+    EXPECT_EQ(ball.nearest_squared_distance(box), 1);
+    EXPECT_EQ(ball.farthest_squared_distance(box), 6);
+    EXPECT_EQ(ball.nearest_squared_distance({{-1, -1, -1}, {1, 1, 1}}), 0);  // the centre is inside
+}
+
 TEST(Metacube, RejectsInvalidParametersNamingTheField) {
     OrientedBox box;
     box.half_size = {1, 1, 1};

@@ -1,6 +1,6 @@
 #pragma once
 // The first test of every listed element of a blob cell: its compact bounding sphere, tested four at a time in
-// float (GCC/clang vector extensions: SSE on any x86-64) against the ray's line (the sweep's candidates) or
+// float (GCC/clang vector extensions: SSE on any x86-64) against a stretch of the ray (the sweep's candidates) or
 // against a point (the field and normal at a hit). The float tests carry margins far above their rounding, so
 // they never reject a sphere that the exact double test would keep; callers run the exact test on the survivors,
 // which keeps every result bit-identical to testing each sphere exactly.
@@ -75,22 +75,28 @@ inline unsigned lane_mask(Int4 lanes) {
 #endif
 }
 
-// Which of four bounding spheres may the line p + s·u (|u| = 1) come within. `margin` must cover float rounding:
-// 2⁻¹⁸·(2|p| + max |centre|) is far above it (the rounding of p, u, c − p and the cross product is a few 2⁻²⁴ of
-// |p| and |c − p|), so a sphere the line meets is never rejected.
-struct LineNearSpheres {
-    LineNearSpheres(const Vec3d& p, const Vec3d& u, double centre_bound)
+// Which of four bounding spheres may the segment p + s·u (|u| = 1, |s| ≤ half_length) come within: the squared
+// distance from a centre c is |(c − p) × u|² across the line plus (|s_c| − half_length)² beyond an end, where
+// s_c = (c − p)·u. `margin` must cover float rounding: 2⁻¹⁸·(2|p| + max |centre|) is far above it (the rounding
+// of p, u, c − p, the cross and dot products is a few 2⁻²⁴ of |p| and |c − p|), so a sphere the segment meets is
+// never rejected; it widens both the reach and the half-length.
+struct SegmentNearSpheres {
+    SegmentNearSpheres(const Vec3d& p, const Vec3d& u, double half_length, double centre_bound)
         : px(float(p.x)), py(float(p.y)), pz(float(p.z)), ux(float(u.x)), uy(float(u.y)), uz(float(u.z)),
-          margin(float(0x1p-18 * (2 * length(p) + centre_bound))) {}
+          margin(float(0x1p-18 * (2 * length(p) + centre_bound))),
+          half(float(half_length * (1 + 0x1p-18)) + margin) {}
 
     unsigned test(const SphereLanes& s) const {
         const Float4 fx = s.x - px, fy = s.y - py, fz = s.z - pz;
         const Float4 ax = fy * uz - fz * uy, ay = fz * ux - fx * uz, az = fx * uy - fy * ux;
+        const Float4 along = fx * ux + fy * uy + fz * uz;
+        const Float4 excess = (along < 0 ? -along : along) - half;
+        const Float4 beyond = excess > 0 ? excess : Float4{};
         const Float4 reach = s.radius * (1 + 0x1p-18f) + margin;
-        return lane_mask((ax * ax + ay * ay + az * az) <= reach * reach);
+        return lane_mask((ax * ax + ay * ay + az * az + beyond * beyond) <= reach * reach);
     }
 
-    float px, py, pz, ux, uy, uz, margin;
+    float px, py, pz, ux, uy, uz, margin, half;
 };
 
 // Which of four bounding spheres may contain the point p, with the same kind of margin (the rounding of p and of

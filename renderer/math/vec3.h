@@ -47,6 +47,8 @@ template <class T> constexpr Vec3T<T> max(const Vec3T<T>& a, const Vec3T<T>& b) 
     return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
 template <class T> constexpr T max_component(const Vec3T<T>& a) { return std::max(a.x, std::max(a.y, a.z)); }
+// The axis (0–2) of the largest component; ties go to the lower axis.
+template <class T> constexpr int longest_axis(const Vec3T<T>& a) { return a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2; }
 template <class T> inline Vec3T<T> abs(const Vec3T<T>& a) { return {std::abs(a.x), std::abs(a.y), std::abs(a.z)}; }
 template <class T> inline bool is_finite(const Vec3T<T>& a) {
     return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);

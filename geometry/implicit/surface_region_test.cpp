@@ -1,0 +1,101 @@
+// surface_region: analytic regions of a lone metaball and a hard cube, and on random groups of every kernel (with
+// carving elements) every sign change of the field found by dense sampling along random lines lies inside its
+// cell's region; a cell without a region has none.
+#include "geometry/implicit/surface_region.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "geometry/implicit/blob_cells.h"
+#include "geometry/implicit/implicit_test_support.h"
+
+namespace isotrace {
+namespace {
+
+bool inside(const WorldBounds& box, const Vec3d& p, double slack) {
+    for (int k = 0; k < 3; ++k)
+        if (p[k] < box.lower[k] - slack || p[k] > box.upper[k] + slack) return false;
+    return true;
+}
+
+TEST(SurfaceRegion, LoneMetaballRegionIsItsIsoSphereBoundsWithinOneSubBox) {
+    const auto kernel = make_field_function("wyvill", 0);
+    const std::vector<Metacube> ball{Metacube::metaball({0, 0, 0}, 1, 1)};
+    const std::uint32_t id = 0;
+    const double iso = *kernel->iso_radius(1, 1, 0.5);
+    // The support's box, halved 6 times: sub-boxes of side 0.5.
+    const auto region = surface_region({{-1, -1, -1}, {1, 1, 1}}, {&id, 1}, ball, *kernel, 0.5);
+    ASSERT_TRUE(region);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_LE(region->lower[k], -iso);
+        EXPECT_GE(region->lower[k], -iso - 0.5 - 1e-6);  // one sub-box and the padding
+        EXPECT_GE(region->upper[k], iso);
+        EXPECT_LE(region->upper[k], iso + 0.5 + 1e-6);
+    }
+    // All inside, all outside (but within the support), all beyond the support: no region.
+    const double in = iso / 2;
+    EXPECT_FALSE(surface_region({{-in, -in, -in}, {in, in, in}}, {&id, 1}, ball, *kernel, 0.5));
+    EXPECT_FALSE(surface_region({{0.9, 0, 0}, {0.95, 0.05, 0.05}}, {&id, 1}, ball, *kernel, 0.5));
+    EXPECT_FALSE(surface_region({{2, 2, 2}, {3, 3, 3}}, {&id, 1}, ball, *kernel, 0.5));
+}
+
+// Regression: a lone hard cube's cell is the cube itself, so its surface (the step of its field) lies on the
+// cell's faces, where every sub-box is inside the closed cube; the region must still cover the whole cube
+// (metacube_gallery lost its hard cube when it did not).
+TEST(SurfaceRegion, HardCubeRegionCoversTheCubeWhenTheCellIsTheCube) {
+    const auto kernel = make_field_function("kim", 0);
+    OrientedBox box;
+    box.centre = {3, 1, 1};
+    box.half_size = {1, 1, 1};
+    const std::vector<Metacube> cube{Metacube(box, 0, 1)};
+    const std::uint32_t id = 0;
+    const WorldBounds support = cube[0].support_bounds();
+    const auto region = surface_region(support, {&id, 1}, cube, *kernel, 0.5);
+    ASSERT_TRUE(region);
+    EXPECT_EQ(region->lower, support.lower);
+    EXPECT_EQ(region->upper, support.upper);
+    const BlobGroup group({cube[0]}, make_field_function("kim", 0), 0.5);
+    BlobQueryWork work;
+    const auto hit = group.first_crossing({3, 1, -5}, {0, 0, 1}, 0, 100, work);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->t, 5);
+    EXPECT_TRUE(hit->entering);
+}
+
+TEST(SurfaceRegion, EverySignChangeAlongRandomLinesLiesInItsCellsRegion) {
+    std::mt19937_64 rng(21);
+    for (const std::string_view name : field_function_names()) {
+        const BlobGroup group = random_blob_group(80, 7, std::string(name), 6);
+        BlobCells cells;  // the cells before restriction: the whole of each kd cell is examined
+        cells.build(group.elements());
+        std::size_t changes = 0;
+        for (const BlobCells::Cell& cell : cells.cells()) {
+            const WorldBounds box{cell.lower, cell.upper};
+            const auto region =
+                surface_region(box, cells.elements_of(cell), group.elements(), group.kernel(), group.threshold());
+            const double spacing = length(box.upper - box.lower) / 4000;
+            for (int line = 0; line < 24; ++line) {
+                // A segment between two random points of the box, sampled every `spacing`.
+                std::uniform_real_distribution<double> u(0, 1);
+                const Vec3d a = box.lower + (box.upper - box.lower) * Vec3d(u(rng), u(rng), u(rng));
+                const Vec3d b = box.lower + (box.upper - box.lower) * Vec3d(u(rng), u(rng), u(rng));
+                const int samples = int(length(b - a) / spacing) + 2;
+                bool was_inside = group.field(a) > group.threshold();
+                for (int s = 1; s <= samples; ++s) {
+                    const Vec3d p = a + (b - a) * (double(s) / samples);
+                    const bool is_inside = group.field(p) > group.threshold();
+                    if (is_inside == was_inside) continue;
+                    was_inside = is_inside;
+                    ++changes;
+                    ASSERT_TRUE(region) << name << ": a crossing in a cell without a region";
+                    EXPECT_TRUE(inside(*region, p, 2 * spacing)) << name;
+                }
+            }
+        }
+        EXPECT_GT(changes, 200u) << name;
+    }
+}
+
+}  // namespace
+}  // namespace isotrace
