@@ -232,8 +232,13 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, con
             // The stretch's point nearest the centre (the middle of the sphere's chord, clamped); the skeleton
             // box is no nearer than that distance less its half-diagonal.
             const double t_near = std::clamp(0.5 * (t_in + t_out), stretch.t_begin, stretch.t_end);
-            const double gap = std::max(0.0, length(o + d * t_near - element.skeleton().centre) - half_diagonal);
-            f_max = unit_value(gap * gap / (element.radius() * element.radius()));
+            const Vec3d to_centre = o + d * t_near - element.skeleton().centre;
+            double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
+            if (half_diagonal > 0) {
+                const double gap = std::max(0.0, std::sqrt(gap2) - half_diagonal);
+                gap2 = gap * gap;
+            }
+            f_max = unit_value(gap2 / (element.radius() * element.radius()));
         }
         upper += element.weight() * f_max;
     };
