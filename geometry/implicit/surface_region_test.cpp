@@ -23,21 +23,36 @@ TEST(SurfaceRegion, LoneMetaballRegionIsItsIsoSphereBoundsWithinOneSubBox) {
     const auto kernel = make_field_function("wyvill", 0);
     const std::vector<Metacube> ball{Metacube::metaball({0, 0, 0}, 1, 1)};
     const std::uint32_t id = 0;
-    const double iso = *kernel->iso_radius(1, 1, 0.5);
-    // The support's box, halved 6 times: sub-boxes of side 0.5.
-    const auto region = surface_region({{-1, -1, -1}, {1, 1, 1}}, {&id, 1}, ball, *kernel, 0.5);
+    const double threshold = 0.6;
+    const double iso = *kernel->iso_radius(1, 1, threshold);
+    ASSERT_LT(iso, 0.5);
+    // The support's box, halved 4 times: x twice, then y and z, sub-boxes of 0.5 × 1 × 1.
+    const auto region = surface_region({{-1, -1, -1}, {1, 1, 1}}, {&id, 1}, ball, *kernel, threshold);
     ASSERT_TRUE(region);
+    const Vec3d side{0.5, 1, 1};
     for (int k = 0; k < 3; ++k) {
         EXPECT_LE(region->lower[k], -iso);
-        EXPECT_GE(region->lower[k], -iso - 0.5 - 1e-6);  // one sub-box and the padding
+        EXPECT_GE(region->lower[k], -iso - side[k] - 1e-6);  // one sub-box and the padding
         EXPECT_GE(region->upper[k], iso);
-        EXPECT_LE(region->upper[k], iso + 0.5 + 1e-6);
+        EXPECT_LE(region->upper[k], iso + side[k] + 1e-6);
     }
+    EXPECT_NEAR(region->lower.x, -0.5, 1e-6);  // the sub-boxes beyond |x| = 0.5 are all outside
+    EXPECT_NEAR(region->upper.x, 0.5, 1e-6);
     // All inside, all outside (but within the support), all beyond the support: no region.
     const double in = iso / 2;
-    EXPECT_FALSE(surface_region({{-in, -in, -in}, {in, in, in}}, {&id, 1}, ball, *kernel, 0.5));
-    EXPECT_FALSE(surface_region({{0.9, 0, 0}, {0.95, 0.05, 0.05}}, {&id, 1}, ball, *kernel, 0.5));
-    EXPECT_FALSE(surface_region({{2, 2, 2}, {3, 3, 3}}, {&id, 1}, ball, *kernel, 0.5));
+    EXPECT_FALSE(surface_region({{-in, -in, -in}, {in, in, in}}, {&id, 1}, ball, *kernel, threshold));
+    EXPECT_FALSE(surface_region({{0.9, 0, 0}, {0.95, 0.05, 0.05}}, {&id, 1}, ball, *kernel, threshold));
+    EXPECT_FALSE(surface_region({{2, 2, 2}, {3, 3, 3}}, {&id, 1}, ball, *kernel, threshold));
+    // In a blob group the region is the cell's box: a ray through the support but outside the region makes no
+    // query; one through the region hits at the iso-sphere.
+    const BlobGroup group(ball, make_field_function("wyvill", 0), threshold);
+    BlobQueryWork outside, through;
+    EXPECT_FALSE(group.first_crossing({0.75, -5, 0}, {0, 1, 0}, 0, 100, outside));
+    EXPECT_EQ(outside.queries, 0u);
+    const auto hit = group.first_crossing({0, -5, 0}, {0, 1, 0}, 0, 100, through);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 5 - iso, 1e-9);
+    EXPECT_EQ(through.queries, 1u);
 }
 
 // Regression: a lone hard cube's cell is the cube itself, so its surface (the step of its field) lies on the
