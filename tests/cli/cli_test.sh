@@ -390,6 +390,14 @@ wait_exit() {
   wait "$pid" || status=$?
 }
 
+# wait_for_file <path>: waits until $pid has created <path>. Returns 1 if the render ended first.
+wait_for_file() {
+  until [[ -e "$1" ]]; do
+    kill -0 "$pid" 2>/dev/null || return 1
+    sleep 0.01
+  done
+}
+
 # checkpoint_number <checkpoint> <field>: a count from the checkpoint's metadata (JSON at the start of the file:
 # completed_spp, samples), 0 while there is no checkpoint. Every checkpoint is renamed over the previous one
 # complete, so the file read is always a whole one.
@@ -463,8 +471,7 @@ case_second_signal() {
       -o "$work/a.exr" -o "$work/a.tif" --checkpoint "$work/ck.bin"
     sleep 0.5  # rendering (the handler is installed right after "loaded in" is printed)
     kill -"$signal" "$pid"
-    wait_for_checkpoint_past "$work/ck.bin" samples 0 ||
-      { show_output; fail "isotrace ended without the checkpoint of a first SIG$signal"; }
+    wait_for_file "$work/ck.bin" || { show_output; fail "isotrace ended without the checkpoint of a first SIG$signal"; }
     kill -"$signal" "$pid"
     wait_exit 20
     local expected=143
@@ -502,7 +509,7 @@ case_checkpoint_resume_identical() {
       --checkpoint "$work/ck.bin" --checkpoint-every 0.05
     if [[ $kill_at == write ]]; then
       # The first checkpoint complete, then kill during the next write: the checkpoint must be the previous one.
-      until [[ -f "$work/ck.bin" ]] || ! kill -0 "$pid" 2>/dev/null; do sleep 0.01; done
+      wait_for_file "$work/ck.bin" || true
       kill_during_checkpoint_write && during_write=$((during_write + 1))
     else
       wait_for_checkpoint_past "$work/ck.bin" completed_spp "$kill_at" ||
