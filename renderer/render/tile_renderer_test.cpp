@@ -20,13 +20,10 @@
 #include "renderer/plugin/integrator.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tests/support/scene_files.h"
+#include "tests/support/test_time_scale.h"
 
 namespace isotrace {
 namespace {
-
-// Wall-clock budgets and limits below are multiplied by this: instrumented builds run 3-15 times slower
-// (ISOTRACE_TEST_TIMEOUT_SCALE, cmake/Sanitizers.cmake; 1 in normal builds).
-constexpr double kTimeScale = ISOTRACE_TEST_TIMEOUT_SCALE;
 
 // ---- test-only integrators --------------------------------------------------------------------------------
 
@@ -87,6 +84,7 @@ ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_wait_for_cancel", "test only
 
 namespace {
 
+using testing::kTestTimeScale;
 using testing::SceneFile;
 
 // Spheres (baked and instanced), meshes, point and directional lights, an emitter and the preview integrator.
@@ -284,7 +282,7 @@ TEST(TileRenderer, CancellingFromTheProgressCallbackStopsMidPass) {
         EXPECT_TRUE(result.partial);
         EXPECT_EQ(result.completed_spp, 2);
         EXPECT_EQ(result.passes, 3);
-        EXPECT_LT(seconds_after_cancel, 1.5 * kTimeScale);
+        EXPECT_LT(seconds_after_cancel, 1.5 * kTestTimeScale);
         // Every pixel has the completed samples; the samples in flight when the flag was raised (one per
         // thread) were finished, and nothing after them was started.
         EXPECT_EQ(result.max_spp, 3);
@@ -324,7 +322,7 @@ TEST(TileRenderer, TimeBudgetEndsTheRender) {
     const SceneFile file(test_scene());
     const auto scene = load_scene(file.path(), overrides);
     RenderOptions options = options_for(*scene, 4);
-    const double budget = 0.3 * kTimeScale;
+    const double budget = 0.3 * kTestTimeScale;
     options.time_budget_seconds = budget;
     std::vector<RenderProgress> reports;
     std::mutex mutex;
@@ -338,7 +336,7 @@ TEST(TileRenderer, TimeBudgetEndsTheRender) {
     EXPECT_GT(result.completed_spp, 1);
     EXPECT_LT(result.completed_spp, 1 << 24);
     EXPECT_GT(result.seconds, 0.5 * budget);
-    EXPECT_LT(result.seconds, budget + 0.5 * kTimeScale);
+    EXPECT_LT(result.seconds, budget + 0.5 * kTestTimeScale);
     const PixelBounds& crop = scene->film.crop;
     for (int y = crop.y0; y < crop.y1; ++y)
         for (int x = crop.x0; x < crop.x1; ++x)
@@ -358,7 +356,7 @@ TEST(TileRenderer, TimeBudgetEndsTheRender) {
 TEST(TileRenderer, TimeBudgetStopsTheFirstPassWithinASample) {
     const auto scene = load_test_scene(1000, RasterSize{64, 48}, R"({"type": "test_slow_random"})");
     RenderOptions options = options_for(*scene, 64);  // one tile: only a check inside the tile can stop it
-    options.time_budget_seconds = 0.005 * kTimeScale;
+    options.time_budget_seconds = 0.005 * kTestTimeScale;
     const RenderResult result = render_with_threads(*scene, 2, options);
     EXPECT_TRUE(result.out_of_time);
     EXPECT_FALSE(result.cancelled);
