@@ -13,7 +13,7 @@ source_dir=$2
 case_name=$3
 cd "$source_dir"
 
-# $work, fail, run, show_output
+# $work, $time_scale, fail, run, show_output
 source "$(dirname "${BASH_SOURCE[0]}")/test_script_helpers.sh"
 cornell=scenes/cornell_box.json
 
@@ -361,9 +361,7 @@ case_interrupt() {
 # ---- long renders: hard budgets, signals, checkpoints (issue 16) -------------------------------------------
 
 # The renders below wait for events (a line printed, a checkpoint written), never for fixed delays, so that the
-# slower instrumented builds pass too. Their bounds only catch hangs; CTest scales them like its own time limits
-# (cmake/Sanitizers.cmake), 1 when the script is run by hand.
-time_scale=${ISOTRACE_TEST_TIMEOUT_SCALE:-1}
+# slower instrumented builds pass too. Their bounds only catch hangs and are multiplied by $time_scale.
 
 # start_render <stderr file> <isotrace render arguments...>: starts a render in the background, sets $pid, and
 # returns once it has loaded the scene (isotrace prints "... loaded in ..." just before it starts rendering).
@@ -459,22 +457,24 @@ case_sigterm() {
   expect_no_partial_files "$work"
 }
 
-# A second signal ends at once, whatever is happening — here writing the large outputs: exit 128 + the signal, no
-# temporary file left in the output directory, and the second output never written. The second signal is sent
-# once the first has been handled, shown by the checkpoint the interrupted render writes just before its outputs
-# (sent sooner, ThreadSanitizer's runtime, which delivers signals at its next safe point, merges the two).
+# A second signal ends at once, whatever is happening — here writing the large checkpoint and outputs: exit 128 +
+# the signal, no temporary file left in the output directory, and the last output never written. The second
+# signal is sent once isotrace has said that the first one stopped the render (sent sooner, ThreadSanitizer's
+# runtime, which delivers signals at its next safe point, merges the two).
 case_second_signal() {
   # 2048x2048 with every AOV takes seconds to write. Instrumented builds get 1/time_scale of the pixels: they
   # take as long to write them, and ThreadSanitizer would need 16 GB for the whole film.
   local signal size
   size=$(awk -v scale="$time_scale" 'BEGIN { printf "%d", 2048 / sqrt(scale) }')
   for signal in TERM INT; do
-    rm -f "$work/ck.bin" "$work/a.exr" "$work/a.tif"
     start_render "$work/stderr" "$cornell" --res "${size}x$size" --spp 100000 --threads 2 --aov all \
       -o "$work/a.exr" -o "$work/a.tif" --checkpoint "$work/ck.bin"
     sleep 0.5  # rendering (the handler is installed right after "loaded in" is printed)
     kill -"$signal" "$pid"
-    wait_for_file "$work/ck.bin" || { show_output; fail "isotrace ended without the checkpoint of a first SIG$signal"; }
+    until grep -q "SIG$signal: stopped; writing" "$work/stderr"; do
+      kill -0 "$pid" 2>/dev/null || { show_output; fail "isotrace ended without saying it stopped for SIG$signal"; }
+      sleep 0.01
+    done
     kill -"$signal" "$pid"
     wait_exit 20
     local expected=143
