@@ -462,10 +462,10 @@ case_sigterm() {
 # signal is sent once isotrace has said that the first one stopped the render (sent sooner, ThreadSanitizer's
 # runtime, which delivers signals at its next safe point, merges the two).
 case_second_signal() {
-  # 2048x2048 with every AOV takes seconds to write. Instrumented builds get 1/time_scale of the pixels: they
-  # take as long to write them, and ThreadSanitizer would need 16 GB for the whole film.
+  # 1024x1024 with every AOV takes seconds to write (a 360 MB checkpoint, then the images). Instrumented builds
+  # get 1/time_scale of the pixels: they take as long to write them, and ThreadSanitizer needs 16 GB for 2048².
   local signal size
-  size=$(awk -v scale="$time_scale" 'BEGIN { printf "%d", 2048 / sqrt(scale) }')
+  size=$(awk -v scale="$time_scale" 'BEGIN { printf "%d", 1024 / sqrt(scale) }')
   for signal in TERM INT; do
     start_render "$work/stderr" "$cornell" --res "${size}x$size" --spp 100000 --threads 2 --aov all \
       -o "$work/a.exr" -o "$work/a.tif" --checkpoint "$work/ck.bin"
