@@ -16,7 +16,8 @@ if(ISOTRACE_FUZZ)
 endif()
 
 # Instrumented code runs several times slower (AddressSanitizer ~3x, ThreadSanitizer 5-15x): every test's time
-# limit is multiplied by this (isotrace_test_timeout).
+# limit is multiplied by this (isotrace_test_timeout), and so are the few wall-clock budgets and bounds inside
+# tests that get it as ISOTRACE_TEST_TIMEOUT_SCALE (tile_renderer_test.cpp, tests/cli/cli_test.sh).
 set(ISOTRACE_TEST_TIMEOUT_SCALE 1)
 if(isotrace_sanitize_list)
   set(ISOTRACE_TEST_TIMEOUT_SCALE 10)

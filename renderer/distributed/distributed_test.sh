@@ -7,7 +7,7 @@ set -euo pipefail
 (($# == 4)) || { echo "usage: $0 <isotrace binary> <source dir> <mpirun> <case>" >&2; exit 64; }
 cli=$1 source_dir=$2 mpirun=$3 case_name=$4
 cd "$source_dir"
-# $work, fail, run, show_output
+# $work, $time_scale, fail, run, show_output
 source "$source_dir/tests/cli/test_script_helpers.sh"
 cornell=scenes/cornell_box.json
 # Test machines and containers often run as root, which Open MPI refuses unless told.
@@ -108,7 +108,7 @@ case_killed_rank() {
   "${mpi[@]}" -np 2 "$cli" render "${arguments[@]}" --threads 1 -o "$work/killed.exr" \
     --checkpoint "$work/ck.bin" --checkpoint-every 0.1 >"$work/stdout" 2>"$work/stderr" &
   local launcher=$! rank1="" waited
-  for waited in $(seq 100); do  # until rank 1 runs and a checkpoint exists (10 s at most)
+  for waited in $(seq $((100 * time_scale))); do  # until rank 1 runs and a checkpoint exists (10 s at most, scaled)
     rank1=$(grep -lz '^OMPI_COMM_WORLD_RANK=1$' /proc/[0-9]*/environ 2>/dev/null |
       while read -r environ; do
         pid=${environ#/proc/}
@@ -118,7 +118,7 @@ case_killed_rank() {
     [[ -n "$rank1" && -f "$work/ck.bin" ]] && break
     sleep 0.1
   done
-  [[ -n "$rank1" && -f "$work/ck.bin" ]] || { kill "$launcher"; wait "$launcher" || true; fail "no rank 1 or no checkpoint after 10 s"; }
+  [[ -n "$rank1" && -f "$work/ck.bin" ]] || { kill "$launcher"; wait "$launcher" || true; fail "no rank 1 or no checkpoint after $((10 * time_scale)) s"; }
   kill -KILL "$rank1"
   status=0
   wait "$launcher" || status=$?

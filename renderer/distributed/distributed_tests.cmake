@@ -8,6 +8,7 @@ if(ISOTRACE_MPI AND MPIEXEC_EXECUTABLE)
     add_test(NAME mpi_${case}
              COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/distributed_test.sh $<TARGET_FILE:isotrace_cli>
                      ${CMAKE_SOURCE_DIR} ${MPIEXEC_EXECUTABLE} ${case})
-    set_tests_properties(mpi_${case} PROPERTIES LABELS "cli;mpi" TIMEOUT ${mpi_test_timeout} RUN_SERIAL TRUE)
+    set_tests_properties(mpi_${case} PROPERTIES LABELS "cli;mpi" TIMEOUT ${mpi_test_timeout} RUN_SERIAL TRUE
+                                                ENVIRONMENT ISOTRACE_TEST_TIMEOUT_SCALE=${ISOTRACE_TEST_TIMEOUT_SCALE})
   endforeach()
 endif()

@@ -20,6 +20,7 @@
 #include "renderer/plugin/integrator.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tests/support/scene_files.h"
+#include "tests/support/test_time_scale.h"
 
 namespace isotrace {
 namespace {
@@ -40,13 +41,17 @@ public:
 
 // Renders black, but once `g_free_calls` calls have been made every further call waits until the render's
 // cancel flag is raised: the first passes complete, and the pass after them is cut short deterministically.
+// `g_waiting_calls` counts the calls that have started waiting, so a test can cancel only once one has.
 std::atomic<std::int64_t> g_free_calls{0};
 std::atomic<bool> g_cancel{false};
+std::atomic<int> g_waiting_calls{0};
 class WaitForCancelIntegrator final : public Integrator {
 public:
     Rgb radiance(const Ray&, const RenderScene&, SampleStream&, PrimaryHitRecord&) const override {
-        if (g_free_calls.fetch_sub(1) <= 0)
+        if (g_free_calls.fetch_sub(1) <= 0) {
+            ++g_waiting_calls;
             while (!g_cancel.load()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
         return Rgb(0.5f);
     }
 };
@@ -79,6 +84,7 @@ ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_wait_for_cancel", "test only
 
 namespace {
 
+using testing::kTestTimeScale;
 using testing::SceneFile;
 
 // Spheres (baked and instanced), meshes, point and directional lights, an emitter and the preview integrator.
@@ -252,24 +258,31 @@ TEST(TileRenderer, CancellingFromTheProgressCallbackStopsMidPass) {
     for (int threads : {1, 2}) {
         g_cancel = false;
         g_free_calls = 2 * pixels;  // passes 1 and 2 (one sample each) run freely; pass 3 waits
+        g_waiting_calls = 0;
         RenderOptions options = options_for(*scene, 2);
         options.cancel = &g_cancel;
         std::atomic<int> calls{0};
+        std::chrono::steady_clock::time_point cancelled_at;  // read after the render joined the watcher thread
+        // Cancels at the first report after pass 3 began waiting, however slowly passes 1 and 2 ran (the
+        // watcher reports about 5 times a second for as long as the render lasts).
         options.on_progress = [&](const RenderProgress& progress) {
             ++calls;
             EXPECT_GE(progress.fraction, 0.0);
             EXPECT_LE(progress.fraction, 1.0);
-            g_cancel = true;
+            if (g_waiting_calls > 0 && !g_cancel) {
+                cancelled_at = std::chrono::steady_clock::now();
+                g_cancel = true;
+            }
         };
-        const auto start = std::chrono::steady_clock::now();
         const RenderResult result = render_with_threads(*scene, threads, options);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double seconds_after_cancel =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - cancelled_at).count();
         EXPECT_GE(calls.load(), 1);
         EXPECT_TRUE(result.cancelled);
         EXPECT_TRUE(result.partial);
         EXPECT_EQ(result.completed_spp, 2);
         EXPECT_EQ(result.passes, 3);
-        EXPECT_LT(seconds, 1.5);
+        EXPECT_LT(seconds_after_cancel, 1.5 * kTestTimeScale);
         // Every pixel has the completed samples; the samples in flight when the flag was raised (one per
         // thread) were finished, and nothing after them was started.
         EXPECT_EQ(result.max_spp, 3);
@@ -309,7 +322,7 @@ TEST(TileRenderer, TimeBudgetEndsTheRender) {
     const SceneFile file(test_scene());
     const auto scene = load_scene(file.path(), overrides);
     RenderOptions options = options_for(*scene, 4);
-    const double budget = 0.3;
+    const double budget = 0.3 * kTestTimeScale;
     options.time_budget_seconds = budget;
     std::vector<RenderProgress> reports;
     std::mutex mutex;
@@ -323,7 +336,7 @@ TEST(TileRenderer, TimeBudgetEndsTheRender) {
     EXPECT_GT(result.completed_spp, 1);
     EXPECT_LT(result.completed_spp, 1 << 24);
     EXPECT_GT(result.seconds, 0.5 * budget);
-    EXPECT_LT(result.seconds, budget + 0.5);
+    EXPECT_LT(result.seconds, budget + 0.5 * kTestTimeScale);
     const PixelBounds& crop = scene->film.crop;
     for (int y = crop.y0; y < crop.y1; ++y)
         for (int x = crop.x0; x < crop.x1; ++x)
@@ -338,12 +351,12 @@ TEST(TileRenderer, TimeBudgetEndsTheRender) {
     }
 }
 
-// The first pass of this scene takes at least 16 x 12 x 300 us / 2 threads = 29 ms of sleeping alone; a 5 ms
-// budget must stop it part-way instead of letting it run to the end.
+// The first pass of this scene (about 51 x 43 pixels in the crop) takes at least 2200 x 300 us / 2 threads =
+// 0.33 s of sleeping alone; a 5 ms budget must stop it part-way instead of letting it run to the end.
 TEST(TileRenderer, TimeBudgetStopsTheFirstPassWithinASample) {
-    const auto scene = load_test_scene(1000, RasterSize{16, 12}, R"({"type": "test_slow_random"})");
+    const auto scene = load_test_scene(1000, RasterSize{64, 48}, R"({"type": "test_slow_random"})");
     RenderOptions options = options_for(*scene, 64);  // one tile: only a check inside the tile can stop it
-    options.time_budget_seconds = 0.005;
+    options.time_budget_seconds = 0.005 * kTestTimeScale;
     const RenderResult result = render_with_threads(*scene, 2, options);
     EXPECT_TRUE(result.out_of_time);
     EXPECT_FALSE(result.cancelled);

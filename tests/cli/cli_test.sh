@@ -13,7 +13,7 @@ source_dir=$2
 case_name=$3
 cd "$source_dir"
 
-# $work, fail, run, show_output
+# $work, $time_scale, fail, run, show_output
 source "$(dirname "${BASH_SOURCE[0]}")/test_script_helpers.sh"
 cornell=scenes/cornell_box.json
 
@@ -360,6 +360,9 @@ case_interrupt() {
 
 # ---- long renders: hard budgets, signals, checkpoints (issue 16) -------------------------------------------
 
+# The renders below wait for events (a line printed, a checkpoint written), never for fixed delays, so that the
+# slower instrumented builds pass too. Their bounds only catch hangs and are multiplied by $time_scale.
+
 # start_render <stderr file> <isotrace render arguments...>: starts a render in the background, sets $pid, and
 # returns once it has loaded the scene (isotrace prints "... loaded in ..." just before it starts rendering).
 start_render() {
@@ -369,20 +372,46 @@ start_render() {
   pid=$!
   until grep -q "loaded in" "$err"; do
     kill -0 "$pid" 2>/dev/null || { cat "$err" >&2; fail "isotrace ended before rendering"; }
-    ((waited++ < 300)) || { kill -KILL "$pid"; fail "scene did not load within 30 s"; }
+    ((waited++ < 300 * time_scale)) || { kill -KILL "$pid"; fail "scene did not load within $((30 * time_scale)) s"; }
     sleep 0.1
   done
 }
 
-# wait_exit <seconds>: waits for $pid (killing it after that long), sets $status.
+# wait_exit <seconds>: waits for $pid (killing it after that long, scaled), sets $status.
 wait_exit() {
-  local waited=0
+  local waited=0 limit=$(($1 * time_scale))
   while kill -0 "$pid" 2>/dev/null; do
-    ((waited++ < $1 * 10)) || { kill -KILL "$pid"; show_output; fail "isotrace did not stop within $1 s"; }
+    ((waited++ < limit * 10)) || { kill -KILL "$pid"; show_output; fail "isotrace did not stop within $limit s"; }
     sleep 0.1
   done
   status=0
   wait "$pid" || status=$?
+}
+
+# wait_for_file <path>: waits until $pid has created <path>. Returns 1 if the render ended first.
+wait_for_file() {
+  until [[ -e "$1" ]]; do
+    kill -0 "$pid" 2>/dev/null || return 1
+    sleep 0.01
+  done
+}
+
+# checkpoint_number <checkpoint> <field>: a count from the checkpoint's metadata (JSON at the start of the file:
+# completed_spp, samples), 0 while there is no checkpoint. Every checkpoint is renamed over the previous one
+# complete, so the file read is always a whole one.
+checkpoint_number() {
+  local found
+  found=$(grep -a -o -m 1 "\"$2\": [0-9]*" "$1" 2>/dev/null | head -n 1) || true
+  echo "${found##* }" | sed 's/^$/0/'
+}
+
+# wait_for_checkpoint_past <checkpoint> <field> <value>: waits until $pid has written a checkpoint whose <field>
+# is above <value>. Returns 1 if the render ended first (a render that never gets there hits CTest's limit).
+wait_for_checkpoint_past() {
+  until (($(checkpoint_number "$1" "$2") > $3)); do
+    kill -0 "$pid" 2>/dev/null || return 1
+    sleep 0.01
+  done
 }
 
 exr_attribute() {  # exr_attribute <exr> <name>: the value of an isotrace: attribute
@@ -428,22 +457,31 @@ case_sigterm() {
   expect_no_partial_files "$work"
 }
 
-# A second signal ends at once, whatever is happening (most likely writing the large outputs): exit 128 + the
-# signal, and no temporary file left in the output directory.
+# A second signal ends at once, whatever is happening — here writing the large checkpoint and outputs: exit 128 +
+# the signal, no temporary file left in the output directory, and the last output never written. The second
+# signal is sent once isotrace has said that the first one stopped the render (sent sooner, ThreadSanitizer's
+# runtime, which delivers signals at its next safe point, merges the two).
 case_second_signal() {
-  local signal
+  # 1024x1024 with every AOV takes seconds to write (a 360 MB checkpoint, then the images). Instrumented builds
+  # get 1/time_scale of the pixels: they take as long to write them, and ThreadSanitizer needs 16 GB for 2048².
+  local signal size
+  size=$(awk -v scale="$time_scale" 'BEGIN { printf "%d", 1024 / sqrt(scale) }')
   for signal in TERM INT; do
-    start_render "$work/stderr" "$cornell" --res 2048x2048 --spp 100000 --threads 2 --aov all \
+    start_render "$work/stderr" "$cornell" --res "${size}x$size" --spp 100000 --threads 2 --aov all \
       -o "$work/a.exr" -o "$work/a.tif" --checkpoint "$work/ck.bin"
-    sleep 0.5
+    sleep 0.5  # rendering (the handler is installed right after "loaded in" is printed)
     kill -"$signal" "$pid"
-    sleep 0.2
-    kill -"$signal" "$pid" 2>/dev/null || true
+    until grep -q "SIG$signal: stopped; writing" "$work/stderr"; do
+      kill -0 "$pid" 2>/dev/null || { show_output; fail "isotrace ended without saying it stopped for SIG$signal"; }
+      sleep 0.01
+    done
+    kill -"$signal" "$pid"
     wait_exit 20
     local expected=143
     [[ $signal == INT ]] && expected=130
     ((status == expected)) || { show_output; fail "exit code $status after two SIG$signal, expected $expected"; }
     expect_no_partial_files "$work"
+    expect_no_file "$work/a.tif"
   done
 }
 
@@ -460,40 +498,45 @@ kill_during_checkpoint_write() {
   return 1
 }
 
-# SIGKILL at several moments, then resume, possibly killed again: the final image is bit-identical to the
-# uninterrupted render. Some kills come at chosen delays (a checkpoint is written every 50 ms), others exactly
-# while a checkpoint is being written; no kill leaves a temporary file behind.
+# SIGKILL at several moments, then resume, killed again, and resume to the end: the final image is bit-identical
+# to the uninterrupted render. Three kills come right after the first checkpoint (one every 50 ms) past 0, 31
+# and 127 completed samples per pixel: early, in the pass from 32 to 64 and in the last pass from 128 to 256,
+# however fast the build renders; two come exactly while a checkpoint is being written. No kill leaves a
+# temporary file behind.
 case_checkpoint_resume_identical() {
   cli_expect 0 render "$cornell" --res 48x48 --spp 256 --threads 2 --quiet -o "$work/reference.exr"
-  local delay resumed=0 during_write=0
-  for delay in 0.1 0.4 0.7 write write; do  # the render itself takes about 1 s
+  local kill_at resumed=0 during_write=0 samples
+  for kill_at in 0 31 127 write write; do
     rm -f "$work/ck.bin"
     start_render "$work/stderr" "$cornell" --res 48x48 --spp 256 --threads 2 -o "$work/a.exr" \
       --checkpoint "$work/ck.bin" --checkpoint-every 0.05
-    if [[ $delay == write ]]; then
+    if [[ $kill_at == write ]]; then
       # The first checkpoint complete, then kill during the next write: the checkpoint must be the previous one.
-      until [[ -f "$work/ck.bin" ]] || ! kill -0 "$pid" 2>/dev/null; do sleep 0.01; done
+      wait_for_file "$work/ck.bin" || true
       kill_during_checkpoint_write && during_write=$((during_write + 1))
     else
-      sleep "$delay"
+      wait_for_checkpoint_past "$work/ck.bin" completed_spp "$kill_at" ||
+        echo "the render ended before a checkpoint past $kill_at spp" >&2
       kill -KILL "$pid" 2>/dev/null || true
       wait "$pid" 2>/dev/null || true
     fi
-    [[ -z "$(find "$work" -name '.*partial-*')" ]] || fail "a SIGKILL ($delay) left a temporary file behind"
-    [[ -f "$work/ck.bin" ]] || { echo "killed ($delay): no checkpoint yet" >&2; continue; }
-    # Resume and kill once more mid-way, then resume to the end.
+    [[ -z "$(find "$work" -name '.*partial-*')" ]] || fail "a SIGKILL ($kill_at) left a temporary file behind"
+    [[ -f "$work/ck.bin" ]] || { echo "killed ($kill_at): no checkpoint yet" >&2; continue; }
+    # Resume and kill once more after the resumed render checkpointed samples of its own, then resume to the end.
+    samples=$(checkpoint_number "$work/ck.bin" samples)
     start_render "$work/stderr" "$cornell" --resume "$work/ck.bin" --threads 1 -o "$work/b.exr" --checkpoint-every 0.05
-    sleep 0.2
+    wait_for_checkpoint_past "$work/ck.bin" samples "$samples" ||
+      echo "the resumed render ($kill_at) ended before its first checkpoint" >&2
     kill -KILL "$pid" 2>/dev/null || true
     wait "$pid" 2>/dev/null || true
     cli_expect 0 render "$cornell" --resume "$work/ck.bin" --threads 2 --tile-size 7 --quiet -o "$work/b.exr"
     idiff -fail 0 -failpercent 0 -warn 0 "$work/reference.exr" "$work/b.exr" >"$work/idiff" 2>&1 ||
-      { cat "$work/idiff" >&2; fail "killed after $delay s: the resumed image differs from the uninterrupted one"; }
+      { cat "$work/idiff" >&2; fail "killed ($kill_at): the resumed image differs from the uninterrupted one"; }
     [[ "$(exr_attribute "$work/b.exr" spp)" == 256 ]] || fail "the resumed image does not have 256 spp"
     resumed=$((resumed + 1))
   done
   echo "resumed and identical after $resumed of 5 kills ($during_write of them during a checkpoint write)" >&2
-  ((resumed >= 4)) || fail "only $resumed of 5 kills left a checkpoint to resume"
+  ((resumed == 5)) || fail "only $resumed of 5 kills left a checkpoint to resume"
   ((during_write >= 1)) || fail "no kill landed during a checkpoint write"
 }
 

@@ -1,6 +1,10 @@
 # Helpers of the end-to-end test scripts (tests/cli/cli_test.sh, renderer/distributed/distributed_test.sh), sourced
 # once they have set $case_name: $work, a temporary directory removed on exit, and the reporting helpers.
 
+# Instrumented builds run 3-15 times slower: the scripts' bounds on waiting for an event are multiplied by this
+# (CTest sets it from cmake/Sanitizers.cmake, like its own time limits; 1 when a script is run by hand).
+time_scale=${ISOTRACE_TEST_TIMEOUT_SCALE:-1}
+
 work=$(mktemp -d "${TMPDIR:-/tmp}/isotrace-test.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 

@@ -42,6 +42,8 @@ extern "C" void on_stop_signal(int signal_number) {
     ::_exit(128 + signal_number);
 }
 
+const char* stop_signal_name(int signal_number) { return signal_number == SIGTERM ? "SIGTERM" : "SIGINT"; }
+
 // Installs on_stop_signal for SIGINT and SIGTERM for its lifetime.
 class StopSignals {
 public:
@@ -292,6 +294,10 @@ int run_render(const RenderArguments& args) {
     const RenderResult result = ranks.render(*scene, options, std::move(film), work_split(args.distribution));
     bar.finish();
     times.render = result.seconds;
+    // Writing a large film takes a while: say that the signal was heard, and what a second one does.
+    if (const int signal_number = g_first_signal.load())
+        std::fprintf(stderr, "isotrace: %s: stopped; writing what was rendered (a second signal ends at once)\n",
+                     stop_signal_name(signal_number));
 
     const CounterTotals counts = ranks.counter_totals();
     const auto write_start = std::chrono::steady_clock::now();
@@ -317,8 +323,7 @@ int run_render(const RenderArguments& args) {
     }
     if (const int signal_number = g_first_signal.load()) {
         std::fprintf(stderr, "isotrace: interrupted by %s: wrote the %s image rendered so far\n",
-                     signal_number == SIGTERM ? "SIGTERM" : "SIGINT",
-                     result.partial ? "partial" : "completed-pass");
+                     stop_signal_name(signal_number), result.partial ? "partial" : "completed-pass");
         return 128 + signal_number;
     }
     return kExitOk;
