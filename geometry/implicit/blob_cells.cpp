@@ -25,9 +25,7 @@ bool support_meets(const Metacube& element, const WorldBounds& box) {
     for (int k = 0; k < 3; ++k)
         if (support.lower[k] > box.upper[k] || support.upper[k] < box.lower[k]) return false;
     if (element.skeleton().half_size != Vec3d(0, 0, 0)) return true;
-    const Vec3d& c = element.skeleton().centre;
-    const Vec3d gap = max(max(box.lower - c, c - box.upper), Vec3d(0, 0, 0));
-    return dot(gap, gap) <= element.radius() * element.radius();
+    return element.nearest_squared_distance(box) <= element.radius() * element.radius();
 }
 
 }  // namespace

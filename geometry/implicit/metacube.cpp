@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geometry/implicit/parameter_check.h"
+#include "renderer/math/box_corner.h"
 
 namespace isotrace {
 namespace {
@@ -93,11 +94,8 @@ double Metacube::nearest_squared_distance_from_ball(const WorldBounds& box) cons
 
 double Metacube::farthest_squared_distance_at_corners(const WorldBounds& box) const {
     double farthest = 0;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3d p{(corner & 1 ? box.upper : box.lower).x, (corner & 2 ? box.upper : box.lower).y,
-                      (corner & 4 ? box.upper : box.lower).z};
-        farthest = std::max(farthest, distance_squared(p));
-    }
+    for (int corner = 0; corner < 8; ++corner)
+        farthest = std::max(farthest, distance_squared(box_corner(box.lower, box.upper, corner)));
     return farthest;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/math/box_corner.h"
+
 namespace isotrace {
 
 OriginCorrection correct_origin(const ImplicitField& field, const Vec3d& origin, int depth) {
@@ -26,10 +28,7 @@ SphericalRange spherical_range(const ImplicitField& field, const Vec3d& origin) 
     const FieldBox box = field.bounds();
     double r_max = 0;
     for (int corner = 0; corner < 8; ++corner)
-        r_max = std::max(r_max, length(Vec3d(corner & 1 ? box.upper.x : box.lower.x,
-                                             corner & 2 ? box.upper.y : box.lower.y,
-                                             corner & 4 ? box.upper.z : box.lower.z) -
-                                       origin));
+        r_max = std::max(r_max, length(box_corner(box.lower, box.upper, corner) - origin));
     r_max *= 1.02;
     double clear = 0, reached = r_max;  // no surface within `clear`; maybe some within `reached`
     for (int iteration = 0; iteration < 40; ++iteration) {

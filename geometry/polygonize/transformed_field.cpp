@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "renderer/math/box_corner.h"
+
 namespace isotrace {
 namespace {
 
@@ -23,9 +25,7 @@ public:
         const FieldBox inner = inner_->bounds();
         FieldBox box = FieldBox::none();
         for (int corner = 0; corner < 8; ++corner)
-            box.extend(to_outer_.point(Vec3d{corner & 1 ? inner.upper.x : inner.lower.x,
-                                        corner & 2 ? inner.upper.y : inner.lower.y,
-                                        corner & 4 ? inner.upper.z : inner.lower.z}));
+            box.extend(to_outer_.point(box_corner(inner.lower, inner.upper, corner)));
         return box;
     }
     bool may_reach_surface(const Vec3d& centre, double radius) const override {
