@@ -16,7 +16,7 @@ constexpr std::size_t kLeafElements = 16;
 constexpr double kSmallestCellInRadii = 2.0;
 
 // Support radius: R plus the half-diagonal of the skeleton box.
-double reach(const Metacube& element) { return element.radius() + length(element.skeleton().half_size); }
+double reach(const Metacube& element) { return element.radius() + length(element.half_size()); }
 
 // Does the element's support reach into the closed box? Exact for metaballs (distance from the centre to the box
 // ≤ R); the support's bounding box for metacubes (a few extra elements in corner cells, never a missing one).
@@ -24,7 +24,7 @@ bool support_meets(const Metacube& element, const WorldBounds& box) {
     const WorldBounds support = element.support_bounds();
     for (int k = 0; k < 3; ++k)
         if (support.lower[k] > box.upper[k] || support.upper[k] < box.lower[k]) return false;
-    if (element.skeleton().half_size != Vec3d(0, 0, 0)) return true;
+    if (!element.is_metaball()) return true;
     return element.nearest_squared_distance(box) <= element.radius() * element.radius();
 }
 

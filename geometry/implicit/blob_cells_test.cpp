@@ -39,8 +39,8 @@ TEST(BlobCells, CellsAreDisjointAndListEveryElementTheyMeet) {
     for (std::uint32_t e = 0; e < elements.size(); ++e) {
         const Metacube& element = elements[e];
         for (int s = 0; s < 40; ++s) {
-            const Vec3d p = element.skeleton().centre + Vec3d(u(rng), u(rng), u(rng)) * (element.radius() * 0.6) +
-                            element.skeleton().to_world_vector(element.skeleton().half_size * u(rng));
+            const Vec3d p = element.centre() + Vec3d(u(rng), u(rng), u(rng)) * (element.radius() * 0.6) +
+                            element.skeleton().to_world_vector(element.half_size() * u(rng));
             if (element.distance_squared(p) >= element.radius() * element.radius()) continue;
             const auto near = cells.elements_near(p);
             EXPECT_TRUE(std::find(near.begin(), near.end(), e) != near.end()) << "element " << e;

@@ -164,7 +164,7 @@ Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& p
     for (std::uint32_t j : near) {
         const Metacube& element = elements_[j];
         if (!element.is_hard_cube()) continue;
-        const OrientedBox& box = element.skeleton();
+        const OrientedBox box = element.skeleton();
         const Vec3d p = box.to_local(point);
         for (int axis = 0; axis < 3; ++axis) {
             const double gap = std::abs(std::abs(p[axis]) - box.half_size[axis]);

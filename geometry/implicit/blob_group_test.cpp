@@ -173,7 +173,7 @@ TEST(BlobGroup, RaysFromInsideCrossAnOddNumberOfTimes) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int tested = 0;
     for (const Metacube& element : group.elements()) {
-        const Vec3d origin = element.skeleton().centre;
+        const Vec3d origin = element.centre();
         double inside = -group.threshold();
         for (const Metacube& e : group.elements()) inside += e.field(group.kernel(), origin);
         if (inside <= 0) continue;  // carved or too weak here

@@ -217,11 +217,11 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, con
         // The element's support lies in the sphere of radius R + |half-size| about its centre: entry and exit of
         // the line through that sphere (exact for metaballs, whose support is the sphere).
         const Metacube& element = elements_[index];
-        const Vec3d& half = element.skeleton().half_size;
+        const Vec3d& half = element.half_size();
         const double half2 = dot(half, half);
         const double half_diagonal = half2 > 0 ? std::sqrt(half2) : 0.0;
         const double reach = element.radius() + half_diagonal;
-        const auto roots = intersect_sphere(o, d, element.skeleton().centre, reach);
+        const auto roots = intersect_sphere(o, d, element.centre(), reach);
         if (!roots) return;
         const double t_in = roots->t0, t_out = roots->t1;
         if (!(t_out > stretch.t_begin && t_in < stretch.t_end)) return;
@@ -232,7 +232,7 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, con
             // The stretch's point nearest the centre (the middle of the sphere's chord, clamped); the skeleton
             // box is no nearer than that distance less its half-diagonal.
             const double t_near = std::clamp(0.5 * (t_in + t_out), stretch.t_begin, stretch.t_end);
-            const Vec3d to_centre = o + d * t_near - element.skeleton().centre;
+            const Vec3d to_centre = o + d * t_near - element.centre();
             double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
             if (half_diagonal > 0) {
                 const double gap = std::max(0.0, std::sqrt(gap2) - half_diagonal);
@@ -259,9 +259,9 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
         const Candidate& candidate = candidates_[next_candidate_++];
         const Metacube& element = elements_[candidate.index];
         // A metaball's support is its bounding sphere: its slices are the roots gather found.
-        const auto slices = element.skeleton().half_size == Vec3d(0, 0, 0)
+        const auto slices = element.is_metaball()
                                 ? std::optional(MetacubeRaySlices::metaball(stretch.origin, stretch.direction,
-                                                                            element.skeleton().centre,
+                                                                            element.centre(),
                                                                             candidate.t_enter, candidate.t_exit))
                                 : MetacubeRaySlices::slice(element, stretch.origin, stretch.direction);
         if (!slices || slices->t_out() <= t) continue;

@@ -35,7 +35,7 @@ Vec3d OrientedBox::to_world_vector(const Vec3d& local_vector) const {
 }
 
 Metacube::Metacube(const OrientedBox& skeleton, double radius, double weight)
-    : skeleton_(skeleton), radius_(radius), weight_(weight) {
+    : centre_(skeleton.centre), radius_(radius), weight_(weight), half_size_(skeleton.half_size) {
     require_components(skeleton.centre, [](double c) { return std::isfinite(c); }, "centre", "must be finite");
     if (!is_orthonormal(skeleton.axes))
         throw std::invalid_argument("rotation: the local axes must be finite and orthonormal");
@@ -46,6 +46,16 @@ Metacube::Metacube(const OrientedBox& skeleton, double radius, double weight)
     const Vec3d& d = skeleton.half_size;
     require_parameter(radius > 0 || (d.x > 0 && d.y > 0 && d.z > 0), "radius",
                       "may be 0 (a hard cube) only when every half_size is > 0", radius);
+    // A quaternion holds rotations only; the box is symmetric, so a reflected frame is the same box with its last
+    // axis turned round. A metaball has no frame.
+    const std::array<Vec3d, 3>& a = skeleton.axes;
+    const bool right_handed = dot(cross(a[0], a[1]), a[2]) > 0;
+    orientation_ =
+        is_metaball() ? Quaternion::identity() : Quaternion::from_axes(a[0], a[1], right_handed ? a[2] : -a[2]);
+}
+
+OrientedBox Metacube::skeleton() const {
+    return {centre_, {orientation_.axis_x(), orientation_.axis_y(), orientation_.axis_z()}, half_size_};
 }
 
 Metacube Metacube::metaball(const Vec3d& centre, double radius, double weight) {
@@ -55,9 +65,10 @@ Metacube Metacube::metaball(const Vec3d& centre, double radius, double weight) {
 }
 
 Vec3d Metacube::offset_beyond_box(const Vec3d& world_point) const {
-    const Vec3d p = skeleton_.to_local(world_point);
+    if (is_metaball()) return world_point - centre_;
+    const Vec3d p = orientation_.rotate_back(world_point - centre_);
     Vec3d offset;
-    for (int k = 0; k < 3; ++k) offset[k] = std::copysign(std::max(0.0, std::abs(p[k]) - skeleton_.half_size[k]), p[k]);
+    for (int k = 0; k < 3; ++k) offset[k] = std::copysign(std::max(0.0, std::abs(p[k]) - half_size_[k]), p[k]);
     return offset;
 }
 
@@ -76,15 +87,16 @@ Vec3d Metacube::field_gradient(const FieldFunction& kernel, const Vec3d& point) 
     if (is_hard_cube()) return {};
     const Vec3d offset = offset_beyond_box(point);
     const double slope = weight_ * kernel.derivative(dot(offset, offset), radius_);
-    return skeleton_.to_world_vector(offset * (2 * slope));
+    return orientation_.rotate(offset * (2 * slope));
 }
 
 // The support is the box swept by a ball of radius R: per world axis j the box reaches Σₖ |axes[k]ⱼ|·dₖ from
 // the centre, and the ball adds R whatever the rotation.
 WorldBounds Metacube::support_bounds() const {
+    const OrientedBox box = skeleton();
     Vec3d reach{radius_, radius_, radius_};
-    for (int k = 0; k < 3; ++k) reach += abs(skeleton_.axes[k]) * skeleton_.half_size[k];
-    return {skeleton_.centre - reach, skeleton_.centre + reach};
+    for (int k = 0; k < 3; ++k) reach += abs(box.axes[k]) * half_size_[k];
+    return {centre_ - reach, centre_ + reach};
 }
 
 double Metacube::nearest_squared_distance_from_ball(const WorldBounds& box) const {
@@ -98,5 +110,7 @@ double Metacube::farthest_squared_distance_at_corners(const WorldBounds& box) co
         farthest = std::max(farthest, distance_squared(box_corner(box.lower, box.upper, corner)));
     return farthest;
 }
+
+static_assert(sizeof(Metacube) == 96, "the per-element budget (see the members)");
 
 }  // namespace isotrace

@@ -36,12 +36,12 @@ std::optional<std::pair<double, double>> where_at_most(const QuadraticAbout& q, 
 
 std::optional<MetacubeRaySlices> MetacubeRaySlices::slice(const Metacube& element, const Vec3d& origin,
                                                           const Vec3d& direction) {
-    const OrientedBox& box = element.skeleton();
-    if (box.half_size == Vec3d(0, 0, 0)) {
-        const auto roots = intersect_sphere(origin, direction, box.centre, element.radius());
+    if (element.is_metaball()) {
+        const auto roots = intersect_sphere(origin, direction, element.centre(), element.radius());
         if (!roots || !(roots->t0 < roots->t1)) return std::nullopt;
-        return metaball(origin, direction, box.centre, roots->t0, roots->t1);
+        return metaball(origin, direction, element.centre(), roots->t0, roots->t1);
     }
+    const OrientedBox box = element.skeleton();
     MetacubeRaySlices slices;
     const Vec3d o = box.to_local(origin), v = box.to_local_vector(direction), d = box.half_size;
     slices.local_origin_ = o;

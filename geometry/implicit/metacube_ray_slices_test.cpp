@@ -21,8 +21,8 @@ struct RandomRay {
 // Origins around the element, directions of random length (0.1 to 10) aimed roughly at it.
 RandomRay random_ray(std::mt19937_64& rng, const Metacube& element) {
     std::uniform_real_distribution<double> log_length(std::log(0.1), std::log(10.0));
-    const Vec3d origin = element.skeleton().centre + random_vector(rng, -5, 5);
-    const Vec3d target = element.skeleton().centre + random_vector(rng, -2, 2);
+    const Vec3d origin = element.centre() + random_vector(rng, -5, 5);
+    const Vec3d target = element.centre() + random_vector(rng, -2, 2);
     return {origin, normalize(target - origin) * std::exp(log_length(rng))};
 }
 
@@ -55,7 +55,7 @@ TEST(MetacubeRaySlices, PiecesReproduceTheSquaredDistanceAndAreOrderedAndContigu
                 const double s = t - q.t_ref;
                 const double terms = std::abs(q.c0) + std::abs(q.c1 * s) + q.c2 * s * s;
                 const double coordinate_error =
-                    1e-15 * (length(ray.origin - element.skeleton().centre) + length(ray.direction * t) + 1);
+                    1e-15 * (length(ray.origin - element.centre()) + length(ray.direction * t) + 1);
                 return 1e-12 * expected + 1e-15 * terms + 2 * std::sqrt(expected) * coordinate_error;
             };
             const QuadraticAbout from_start = slices->distance_squared(piece, piece.t_begin);
@@ -70,7 +70,7 @@ TEST(MetacubeRaySlices, PiecesReproduceTheSquaredDistanceAndAreOrderedAndContigu
             const double middle = 0.5 * (piece.t_begin + piece.t_end);
             const Vec3d local = element.skeleton().to_local(ray.origin + ray.direction * middle);
             for (int k = 0; k < 3; ++k) {
-                const double d = element.skeleton().half_size[k];
+                const double d = element.half_size()[k];
                 const int expected = d == 0 ? 1 : (local[k] > d ? 1 : (local[k] < -d ? -1 : 0));
                 if (std::abs(std::abs(local[k]) - d) > 1e-9) {
                     EXPECT_EQ(piece.region[k], expected);

@@ -71,7 +71,7 @@ TEST(Metacube, DistanceIsZeroInsideTheBox) {
     std::uniform_real_distribution<double> u(-1, 1);
     for (int i = 0; i < 200; ++i) {
         const Metacube element = random_metacube(rng);
-        const OrientedBox& box = element.skeleton();
+        const OrientedBox box = element.skeleton();
         Vec3d p = box.centre;
         for (int k = 0; k < 3; ++k) p += box.axes[k] * (0.999 * u(rng) * box.half_size[k]);
         EXPECT_LT(element.distance_squared(p), 1e-28);
@@ -83,13 +83,13 @@ TEST(Metacube, DistanceMatchesBruteForceInFaceEdgeAndVertexRegions) {
     int regions_seen[4] = {};
     for (int i = 0; i < 5000; ++i) {
         const Metacube element = random_metacube(rng);
-        const Vec3d p = element.skeleton().centre + random_vector(rng, -2, 2);
+        const Vec3d p = element.centre() + random_vector(rng, -2, 2);
         const BruteForceDistance expected = brute_force_distance(element.skeleton(), p);
         const double d2 = element.distance_squared(p);
         EXPECT_NEAR(d2, expected.distance_squared, 1e-12 * (1 + expected.distance_squared));
 
         // The paper's region vector: the number of axes with |pₖ| > dₖ says face (1), edge (2) or vertex (3).
-        const Vec3d local = element.skeleton().to_local(p), d = element.skeleton().half_size;
+        const Vec3d local = element.skeleton().to_local(p), d = element.half_size();
         if (std::min({d.x, d.y, d.z}) < 0.05) continue;  // a thin box makes the nearest feature a near tie
         int outside_axes = 0;
         double margin = std::numeric_limits<double>::infinity();
@@ -128,7 +128,7 @@ TEST(Metacube, SingleElementSurfaceIsTheBoxOffsetByTheIsoRadius) {
             if (element.weight() < 0) continue;
             const double rho = *kernel->iso_radius(element.radius(), element.weight(), threshold);
             // Walk from the nearest box point outwards by ρ (the nearest point is clamping in local coordinates).
-            const OrientedBox& box = element.skeleton();
+            const OrientedBox box = element.skeleton();
             const Vec3d p = box.centre + random_vector(rng, -4, 4);
             Vec3d local = box.to_local(p);
             for (int k = 0; k < 3; ++k) local[k] = std::clamp(local[k], -box.half_size[k], box.half_size[k]);
@@ -147,7 +147,7 @@ TEST(Metacube, GradientMatchesFiniteDifferences) {
         int checked = 0;
         for (int i = 0; i < 400; ++i) {
             const Metacube element = random_metacube(rng);
-            const Vec3d p = element.skeleton().centre + random_vector(rng, -2.5, 2.5);
+            const Vec3d p = element.centre() + random_vector(rng, -2.5, 2.5);
             const double r2 = element.distance_squared(p), radius2 = element.radius() * element.radius();
             // Away from the support edge (Blinn's kink) and from Nishimura's breakpoint (C¹ only).
             if (r2 > 0.95 * radius2 || std::abs(r2 / radius2 - NishimuraQuadratic::kUnitBreakpoint) < 0.01) continue;
@@ -195,7 +195,7 @@ TEST(Metacube, SupportBoundsAreTightAndContainTheSupport) {
     for (int i = 0; i < 200; ++i) {
         const Metacube element = random_metacube(rng);
         const WorldBounds bounds = element.support_bounds();
-        const OrientedBox& box = element.skeleton();
+        const OrientedBox box = element.skeleton();
         for (int j = 0; j < 3; ++j) {
             // The box vertex furthest along world axis j, pushed R further, is on the support's boundary.
             Vec3d vertex = box.centre;
@@ -223,7 +223,7 @@ TEST(Metacube, SquaredDistanceRangeBoundsEveryPointOfTheBox) {
     std::uniform_real_distribution<double> u(0, 1);
     for (int i = 0; i < 400; ++i) {
         const Metacube element = random_metacube(rng);
-        const Vec3d corner = element.skeleton().centre + random_vector(rng, -3, 2);
+        const Vec3d corner = element.centre() + random_vector(rng, -3, 2);
         const WorldBounds box{corner, corner + random_vector(rng, 0.05, 1.5)};
         const double nearest = element.nearest_squared_distance(box);
         const double farthest = element.farthest_squared_distance(box);
@@ -250,6 +250,47 @@ TEST(Metacube, SquaredDistanceRangeOfAMetaballIsExact) {
     EXPECT_EQ(ball.nearest_squared_distance(box), 1);
     EXPECT_EQ(ball.farthest_squared_distance(box), 6);
     EXPECT_EQ(ball.nearest_squared_distance({{-1, -1, -1}, {1, 1, 1}}), 0);  // the centre is inside
+}
+
+// The frame is stored as a quaternion (96 bytes per element): the world axes come back exactly, so axis-aligned
+// boxes compute exactly as before; a rotated frame comes back within rounding.
+TEST(Metacube, FrameKeptAsAQuaternionComesBackExactOrWithinRounding) {
+    OrientedBox aligned;
+    aligned.centre = {0.25, -1, 3};
+    aligned.half_size = {0.5, 1, 2};
+    const OrientedBox back = Metacube(aligned, 0.5, 1).skeleton();
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(back.axes[k], aligned.axes[k]) << "axis " << k;
+    EXPECT_EQ(back.centre, aligned.centre);
+    EXPECT_EQ(back.half_size, aligned.half_size);
+
+    std::mt19937_64 rng(37);
+    for (int trial = 0; trial < 1000; ++trial) {
+        OrientedBox rotated = aligned;
+        rotated.axes = random_axes(rng);
+        const OrientedBox again = Metacube(rotated, 0.5, 1).skeleton();
+        for (int k = 0; k < 3; ++k) EXPECT_LT(length(again.axes[k] - rotated.axes[k]), 4e-15) << "axis " << k;
+    }
+}
+
+// A quaternion holds no reflection: a mirrored frame is kept as the rotation with its last axis turned round,
+// which is the same (symmetric) box, so the field and its gradient do not change.
+TEST(Metacube, MirroredFrameIsTheSameBox) {
+    std::mt19937_64 rng(41);
+    const NishimuraQuadratic kernel;
+    for (int trial = 0; trial < 200; ++trial) {
+        OrientedBox box;
+        box.centre = random_vector(rng, -1, 1);
+        box.axes = random_axes(rng);
+        box.half_size = random_vector(rng, 0.1, 1);
+        OrientedBox mirrored = box;
+        mirrored.axes[2] = -box.axes[2];
+        const Metacube element(box, 0.8, 1), reflection(mirrored, 0.8, 1);
+        for (int point = 0; point < 20; ++point) {
+            const Vec3d p = box.centre + random_vector(rng, -2, 2);
+            EXPECT_NEAR(reflection.distance_squared(p), element.distance_squared(p), 1e-12);
+            EXPECT_LT(length(reflection.field_gradient(kernel, p) - element.field_gradient(kernel, p)), 1e-12);
+        }
+    }
 }
 
 TEST(Metacube, RejectsInvalidParametersNamingTheField) {

@@ -5,7 +5,7 @@
 // k+1 … n along (the paper's Fig. 2).
 #include <vector>
 
-#include "geometry/sweep/quaternion.h"
+#include "renderer/math/quaternion.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {

@@ -7,7 +7,7 @@
 
 #include "geometry/mesh/mesh_crossing_scene.h"
 #include "geometry/mesh/triangle_mesh_data.h"
-#include "geometry/sweep/quaternion.h"
+#include "renderer/math/quaternion.h"
 
 namespace isotrace {
 

@@ -8,7 +8,7 @@
 
 #include "geometry/curves/bspline_curve.h"
 #include "geometry/sweep/key_section.h"
-#include "geometry/sweep/quaternion.h"
+#include "renderer/math/quaternion.h"
 #include "geometry/sweep/radius_function.h"
 
 namespace isotrace {

@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/sweep/quaternion.h"
+#include "renderer/math/quaternion.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {

@@ -1,6 +1,7 @@
 #pragma once
-// Quaternions for the orientations of key sections: q = w + (x, y, z); a unit q rotates v to q·v·q̄. They are also
-// the control points of the sweep's orientation curve (a B-spline in R⁴), hence the vector-space operators.
+// Quaternions for orientations (sweep key sections, metacube frames): q = w + (x, y, z); a unit q rotates v to
+// q·v·q̄. They are also the control points of the sweep's orientation curve (a B-spline in R⁴), hence the
+// vector-space operators.
 #include <cmath>
 
 #include "renderer/math/vec3.h"
