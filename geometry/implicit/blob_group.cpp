@@ -133,17 +133,22 @@ void BlobGroup::for_each_reaching(std::span<const std::uint32_t> listed, const V
 }
 
 double BlobGroup::field(const Vec3d& point) const {
-    double sum = 0;
-    for_each_reaching(cells_.elements_near(point), point,
-                      [&](const Metacube& element) { sum += element.field(*kernel_, point); });
-    return sum;
+    return with_kernel([&](const auto& kernel) {
+        double sum = 0;
+        for_each_reaching(cells_.elements_near(point), point,
+                          [&](const Metacube& element) { sum += element.field(kernel, point); });
+        return sum;
+    });
 }
 
-Vec3d BlobGroup::gradient(const Vec3d& point) const {
-    Vec3d sum(0, 0, 0);
-    for_each_reaching(cells_.elements_near(point), point,
-                      [&](const Metacube& element) { sum += element.field_gradient(*kernel_, point); });
-    return sum;
+Vec3d BlobGroup::gradient(const Vec3d& point) const { return gradient_from(cells_.elements_near(point), point); }
+
+Vec3d BlobGroup::gradient_from(std::span<const std::uint32_t> near, const Vec3d& point) const {
+    return with_kernel([&](const auto& kernel) {
+        Vec3d sum(0, 0, 0);
+        for_each_reaching(near, point, [&](const Metacube& element) { sum += element.field_gradient(kernel, point); });
+        return sum;
+    });
 }
 
 Vec3d BlobGroup::normal(const Vec3d& point) const { return normal_from(cells_.elements_near(point), point); }
@@ -153,9 +158,7 @@ Vec3d BlobGroup::normal_in_cell(std::uint32_t cell, const Vec3d& point) const {
 }
 
 Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const {
-    Vec3d g(0, 0, 0);
-    // The bounding spheres skip the listed elements that add exactly 0 here.
-    for_each_reaching(near, point, [&](const Metacube& element) { g += element.field_gradient(*kernel_, point); });
+    const Vec3d g = gradient_from(near, point);
     const double len = length(g);
     if (len > 0 && std::isfinite(len)) return -g / len;
     // Only hard cubes (step fields) meet here: take the face of the nearest hard-cube boundary.

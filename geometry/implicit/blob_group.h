@@ -70,6 +70,8 @@ private:
     void sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                     BlobQueryWork& work, Report&& report) const;
     Vec3d normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const;
+    // ∇(F + T) from the `near` elements (a list that holds every element whose support contains the point).
+    Vec3d gradient_from(std::span<const std::uint32_t> near, const Vec3d& point) const;
     // Calls visit(element) for the `listed` elements whose support may contain the point, in list order.
     template <class Visit>
     void for_each_reaching(std::span<const std::uint32_t> listed, const Vec3d& point, Visit&& visit) const;

@@ -13,17 +13,6 @@
 
 namespace isotrace {
 
-double FieldFunction::value(double r2, double radius) const {
-    const double x = r2 / (radius * radius);
-    return x < 1 ? unit_value(x) : 0;
-}
-
-double FieldFunction::derivative(double r2, double radius) const {
-    const double radius2 = radius * radius;
-    const double x = r2 / radius2;
-    return x < 1 ? unit_derivative(x) / radius2 : 0;
-}
-
 FieldPieces FieldFunction::pieces(double radius) const {
     const double radius2 = radius * radius;
     FieldPieces scaled;

@@ -46,8 +46,21 @@ public:
     virtual std::string_view name() const = 0;
 
     // f and df/d(r²) at squared distance r2 ≥ 0 from an element of field radius R > 0; both 0 for r2 ≥ R².
-    double value(double r2, double radius) const;
-    double derivative(double r2, double radius) const;
+    double value(double r2, double radius) const { return kernel_value(*this, r2, radius); }
+    double derivative(double r2, double radius) const { return kernel_derivative(*this, r2, radius); }
+    // The same for a kernel given as its concrete (final) class, whose unit profile then inlines: the blob
+    // group's hot loops call these once per element.
+    template <class Kernel>
+    static double kernel_value(const Kernel& kernel, double r2, double radius) {
+        const double x = r2 / (radius * radius);
+        return x < 1 ? kernel.unit_value(x) : 0;
+    }
+    template <class Kernel>
+    static double kernel_derivative(const Kernel& kernel, double r2, double radius) {
+        const double radius2 = radius * radius;
+        const double x = r2 / radius2;
+        return x < 1 ? kernel.unit_derivative(x) / radius2 : 0;
+    }
 
     // The kernel's closed forms over [0, R²], with polynomial coefficients scaled to powers of r² (R > 0).
     FieldPieces pieces(double radius) const;

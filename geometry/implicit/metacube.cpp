@@ -77,25 +77,14 @@ double Metacube::distance_squared(const Vec3d& point) const {
     return dot(offset, offset);
 }
 
-double Metacube::field(const FieldFunction& kernel, const Vec3d& point) const {
-    const double r2 = distance_squared(point);
-    if (is_hard_cube()) return r2 == 0 ? weight_ : 0;
-    return weight_ * kernel.value(r2, radius_);
-}
-
-Vec3d Metacube::field_gradient(const FieldFunction& kernel, const Vec3d& point) const {
-    if (is_hard_cube()) return {};
-    const Vec3d offset = offset_beyond_box(point);
-    const double slope = weight_ * kernel.derivative(dot(offset, offset), radius_);
-    return orientation_.rotate(offset * (2 * slope));
-}
-
 // The support is the box swept by a ball of radius R: per world axis j the box reaches Σₖ |axes[k]ⱼ|·dₖ from
 // the centre, and the ball adds R whatever the rotation.
 WorldBounds Metacube::support_bounds() const {
-    const OrientedBox box = skeleton();
     Vec3d reach{radius_, radius_, radius_};
-    for (int k = 0; k < 3; ++k) reach += abs(box.axes[k]) * half_size_[k];
+    if (!is_metaball()) {  // the cell build asks this of every element many times: no frame for a metaball
+        const OrientedBox box = skeleton();
+        for (int k = 0; k < 3; ++k) reach += abs(box.axes[k]) * half_size_[k];
+    }
     return {centre_ - reach, centre_ + reach};
 }
 

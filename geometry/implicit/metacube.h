@@ -56,11 +56,24 @@ public:
 
     // Squared distance from a world point to the solid box.
     double distance_squared(const Vec3d& point) const;
-    // w·f(dist²), or for a hard cube w on the closed box and 0 outside.
-    double field(const FieldFunction& kernel, const Vec3d& point) const;
+    // w·f(dist²), or for a hard cube w on the closed box and 0 outside. Kernel is FieldFunction or, for direct
+    // calls, one of its final classes.
+    template <class Kernel>
+    double field(const Kernel& kernel, const Vec3d& point) const {
+        const double r2 = distance_squared(point);
+        if (is_hard_cube()) return r2 == 0 ? weight_ : 0;
+        return weight_ * FieldFunction::kernel_value(kernel, r2, radius_);
+    }
     // ∇(w·f(dist²)) = w·f'(dist²)·∇dist²; the surface normal of a blob group is −Σ of these. Zero for a hard
     // cube (see above) and wherever dist ≥ R.
-    Vec3d field_gradient(const FieldFunction& kernel, const Vec3d& point) const;
+    template <class Kernel>
+    Vec3d field_gradient(const Kernel& kernel, const Vec3d& point) const {
+        if (is_hard_cube()) return {};
+        const Vec3d offset = offset_beyond_box(point);
+        const double slope = weight_ * FieldFunction::kernel_derivative(kernel, dot(offset, offset), radius_);
+        const Vec3d gradient = offset * (2 * slope);
+        return is_metaball() ? gradient : orientation_.rotate(gradient);  // a metaball has no frame to turn by
+    }
     // The tight world bounds of the support {dist ≤ R} (the per-primitive bounds for Embree).
     WorldBounds support_bounds() const;
     // Bounds of dist² over the closed box: no point of the box is nearer than the first (exact for a metaball),
