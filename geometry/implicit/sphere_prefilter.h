@@ -5,6 +5,7 @@
 // they never reject a sphere that the exact double test would keep; callers run the exact test on the survivors,
 // which keeps every result bit-identical to testing each sphere exactly.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -123,9 +124,11 @@ template <class Test, class Visit>
     for (std::size_t first = 0; first < n; first += 4) {
         // The last group repeats its last element in the lanes beyond the list (their bits are not read).
         const auto sphere = [&](std::size_t k) -> const BoundingSphere& { return spheres[ids[std::min(first + k, n - 1)]]; };
-        const unsigned near = test.test(SphereLanes(sphere(0), sphere(1), sphere(2), sphere(3)));
-        for (std::size_t k = 0; k < 4 && first + k < n; ++k)
-            if (near & (1u << k)) visit(ids[first + k]);
+        // Most groups have no lane set: walking the set bits skips them at once.
+        const unsigned lanes_in_list = n - first >= 4 ? 0xfu : (1u << (n - first)) - 1;
+        for (unsigned near = test.test(SphereLanes(sphere(0), sphere(1), sphere(2), sphere(3))) & lanes_in_list;
+             near != 0; near &= near - 1)
+            visit(ids[first + std::size_t(std::countr_zero(near))]);
     }
 }
 
