@@ -114,10 +114,12 @@ inline Polynomial compose_with_quadratic(const FieldPiece& piece, double weight,
 struct Range {
     double low, high;
 };
-inline Range quadratic_range(const QuadraticAbout& q, double s0, double s1) {
+// `vertex` is quadratic_vertex(q), kept by the caller: q changes once per piece, its range is asked per event.
+inline double quadratic_vertex(const QuadraticAbout& q) { return q.c2 > 0 ? q.t_ref - q.c1 / (2 * q.c2) : q.t_ref; }
+inline Range quadratic_range(const QuadraticAbout& q, double vertex, double s0, double s1) {
     const double at_s0 = q(s0), at_s1 = q(s1);
-    const double vertex = q.c2 > 0 ? std::clamp(q.t_ref - q.c1 / (2 * q.c2), s0, s1) : s0;
-    return {std::max(0.0, std::min({at_s0, at_s1, q(vertex)})), std::max(at_s0, at_s1)};
+    const double nearest = q.c2 > 0 ? std::clamp(vertex, s0, s1) : s0;
+    return {std::max(0.0, std::min({at_s0, at_s1, q(nearest)})), std::max(at_s0, at_s1)};
 }
 
 // Σ |cᵢ|·xⁱ: bounds |p(s)| for |s| ≤ x, and the effect of coefficient errors.
@@ -154,15 +156,19 @@ private:
     // An element the sweep has reached. Before its support it does not count; from there its pieces follow each
     // other until the support ends.
     struct Active {
-        Active(std::uint32_t index, const MetacubeRaySlices& slices) : index(index), slices(slices) {}
+        Active(std::uint32_t index, const Metacube& element, const MetacubeRaySlices& slices)
+            : index(index), slices(slices),
+              inverse_radius2(element.is_hard_cube() ? 0 : 1 / (element.radius() * element.radius())) {}
         std::uint32_t index;
         MetacubeRaySlices slices;
+        double inverse_radius2;  // 1/R², for x = r²/R² (0 for a hard cube); divisions cost more than the rest
         int region = -1;                           // current region piece, −1 before the support
         const FieldPiece* kernel_piece = nullptr;  // nullptr: not counting on the current piece
         double next_event = 0;                     // where its current piece ends (kUnset: never again)
         bool composed = false;                     // contribution is up to date
         Polynomial contribution;                   // its term of the sum on the current piece (polynomial pieces)
         QuadraticAbout q;                          // dist² on the current piece, in s = t − t_ref_
+        double q_vertex = 0;                       // quadratic_vertex(q)
     };
 
     // Lists the candidates by entry; returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's nearest
@@ -266,7 +272,7 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
                                 : MetacubeRaySlices::slice(element, stretch.origin, stretch.direction);
         if (!slices || slices->t_out() <= t) continue;
         ++work.joined;
-        enter_piece(joined_.emplace_back(candidate.index, *slices), t);
+        enter_piece(joined_.emplace_back(candidate.index, element, *slices), t);
     }
 }
 
@@ -295,9 +301,8 @@ const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
                 a.contribution = Polynomial{elements_[a.index].weight()};
             } else {
                 // The unit piece is a polynomial in x = r²/R²: compose it with the quadratic x(s) = q(s)/R².
-                const double inverse_radius2 = 1 / (elements_[a.index].radius() * elements_[a.index].radius());
-                const QuadraticAbout x{a.q.t_ref, a.q.c0 * inverse_radius2, a.q.c1 * inverse_radius2,
-                                       a.q.c2 * inverse_radius2};
+                const QuadraticAbout x{a.q.t_ref, a.q.c0 * a.inverse_radius2, a.q.c1 * a.inverse_radius2,
+                                       a.q.c2 * a.inverse_radius2};
                 a.contribution =
                     field_sweep_detail::compose_with_quadratic(*a.kernel_piece, elements_[a.index].weight(), x);
             }
@@ -341,6 +346,7 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
     const RegionPiece& region = pieces[std::size_t(a.region)];
     a.next_event = region.t_end;
     a.q = slices.distance_squared(region, t_ref_);
+    a.q_vertex = field_sweep_detail::quadratic_vertex(a.q);
     const double radius = element.radius();
     if (element.is_hard_cube()) {
         // A hard cube counts w inside its box (the region piece with U = 0) and nothing elsewhere.
@@ -381,10 +387,9 @@ field_sweep_detail::Range FieldSweep<Kernel>::elements_range(double t0, double t
         const Metacube& element = elements_[a.index];
         double f_near = 1, f_far = 1;  // a hard cube counts its weight wherever it counts
         if (!element.is_hard_cube()) {
-            const double inverse_radius2 = 1 / (element.radius() * element.radius());
-            const field_sweep_detail::Range r2 = field_sweep_detail::quadratic_range(a.q, t0, t1);
-            f_near = unit_value(r2.low * inverse_radius2);
-            f_far = unit_value(r2.high * inverse_radius2);
+            const field_sweep_detail::Range r2 = field_sweep_detail::quadratic_range(a.q, a.q_vertex, t0, t1);
+            f_near = unit_value(r2.low * a.inverse_radius2);
+            f_far = unit_value(r2.high * a.inverse_radius2);
         }
         const double w = element.weight();
         low += std::min(w * f_near, w * f_far);
@@ -566,7 +571,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                     const double slope =
                         std::max(std::abs(a.q.c1 + 2 * a.q.c2 * s0), std::abs(a.q.c1 + 2 * a.q.c2 * (s0 + width)));
                     lipschitz += std::abs(element.weight()) *
-                                 std::abs(unit_derivative(quadratic_range(a.q, t0, t1).low / radius2) /
+                                 std::abs(unit_derivative(quadratic_range(a.q, a.q_vertex, t0, t1).low / radius2) /
                                           radius2) *
                                  slope;
                 }
