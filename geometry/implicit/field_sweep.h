@@ -178,7 +178,9 @@ private:
     void join_until(double t, const SweepStretch& stretch, BlobQueryWork& work);
     // Brings element `a` to the piece that starts at t (it counts from there on), updating the sum.
     void enter_piece(Active& a, double t);
-    // Drops the elements whose support the sweep has left.
+    // Drops the elements whose support the sweep has left, once they are half the list. Until then they stay, inert
+    // (no piece, no event: every loop skips them); dropping at once moved half a kilobyte per element behind each
+    // one that left, a third of the sweep's own instructions on shadow rays (callgrind). The order is kept.
     void drop_finished();
     // Σ of the counting elements' polynomial terms − T (composing the terms not yet composed), and in
     // sum_magnitude_ the Σ of their coefficients' magnitudes (for the rounding bounds).
@@ -278,6 +280,10 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
 
 template <class Kernel>
 void FieldSweep<Kernel>::drop_finished() {
+    const auto finished = std::count_if(joined_.begin(), joined_.end(), [](const Active& a) {
+        return a.next_event == field_sweep_detail::kUnset;
+    });
+    if (2 * std::size_t(finished) < joined_.size()) return;
     std::size_t kept = 0;
     for (std::size_t i = 0; i < joined_.size(); ++i) {
         if (joined_[i].next_event == field_sweep_detail::kUnset) continue;
