@@ -14,6 +14,13 @@ cornell=scenes/cornell_box.json
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # Two ranks on however few cores: one thread each, no binding to cores.
 mpi=("$mpirun" --oversubscribe --bind-to none)
+# Under AddressSanitizer (tools/test --sanitize address,undefined) the ranks run without leak checking: Open MPI
+# 4.1 leaks ~120 KB at exit in its own allocations (hwloc bitmaps, opal_argv, ompi_op_base_op_select, and its MCA
+# components, which it unloads first, so their stacks show only "<unknown module>" and no suppression can name
+# them). Memory errors and UBSan still stop the ranks; the single-process renders beside them keep leak checks.
+if [[ -n ${ASAN_OPTIONS:-} ]]; then
+  mpi=(env "ASAN_OPTIONS=$ASAN_OPTIONS:detect_leaks=0" "${mpi[@]}")
+fi
 
 expect_status() {  # expect_status <code> <what>
   ((status == $1)) || { show_output; fail "$2 exited with $status, expected $1"; }
