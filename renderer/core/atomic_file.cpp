@@ -127,17 +127,23 @@ int open_unnamed_beside(const std::filesystem::path& target) {
     return ::open(directory.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
 }
 
-// Gives the unnamed file `fd` a fresh random hidden name beside the target (for the instant before the rename).
-// False when it cannot be linked (no /proc): the caller then writes a named file instead.
-bool link_unnamed(int fd, const std::filesystem::path& target, std::filesystem::path& temporary) {
+// Gives the unnamed file `fd` a fresh random hidden name beside the target (for the instant before the rename),
+// registered in `slot` before it exists so that nothing but the link and the rename themselves runs while it has
+// that name. A SIGKILL between those two system calls is the one way a write can leave a file behind (complete,
+// under the hidden name): Linux cannot link an unnamed file over an existing name. False when it cannot be linked
+// (no /proc): the caller then writes a named file instead.
+bool link_unnamed(int fd, const std::filesystem::path& target, std::filesystem::path& temporary, int& slot) {
     const std::string self = "/proc/self/fd/" + std::to_string(fd);
     constexpr int kAttempts = 16;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         temporary = target;
         temporary.replace_filename("." + target.stem().string() + ".partial-" + random_suffix() +
                                    target.extension().string());
+        slot = g_temporaries.publish(temporary);
         if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
-        if (errno != EEXIST) return false;
+        const int error = errno;
+        g_temporaries.withdraw(slot);
+        if (error != EEXIST) return false;
     }
     return false;
 }
@@ -155,15 +161,18 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
             ::close(fd);  // an unnamed file disappears with its last descriptor
             throw;
         }
-        if (link_unnamed(fd, target, temporary)) {
-            const int slot = g_temporaries.publish(temporary);
-            try {
-                publish_as_target(fd, temporary, target, slot);
-            } catch (...) {
+        int slot = -1;
+        if (link_unnamed(fd, target, temporary, slot)) {
+            // Renamed at once, closed after: the data is on disk already (fsync above).
+            if (::rename(temporary.c_str(), target.c_str()) != 0) {
+                const int error = errno;
                 ::unlink(temporary.c_str());
                 g_temporaries.withdraw(slot);
-                throw;
+                ::close(fd);
+                fail(target, "cannot rename the temporary file", error);
             }
+            g_temporaries.withdraw(slot);
+            if (::close(fd) != 0) fail(target, "closing failed", errno);
             return;
         }
         ::close(fd);
