@@ -17,7 +17,14 @@ constexpr Uint4 kDimensionSalt = {1 * kSeedStep, 2 * kSeedStep, 3 * kSeedStep, 4
 // x86-64, whose SSE2 has no 32-bit lane multiply (each of the six here is emulated in about six instructions); the
 // AVX2 clone, chosen once at load time on CPUs that have it, multiplies in one. Integer arithmetic and an exact
 // conversion: both clones give the same bits.
-[[gnu::target_clones("avx2", "default")]] Float4 scrambled_block(Uint4 reversed_sobol, uint32_t block_seed) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+// Not in sanitizer builds: the clones' resolver runs while the library is relocated, before the sanitizer runtime
+// is set up, and its instrumented code crashed every ThreadSanitizer test binary at load.
+#define ISOTRACE_AVX2_CLONE
+#else
+#define ISOTRACE_AVX2_CLONE [[gnu::target_clones("avx2", "default")]]
+#endif
+ISOTRACE_AVX2_CLONE Float4 scrambled_block(Uint4 reversed_sobol, uint32_t block_seed) {
     const Uint4 seeds = mix32(block_seed ^ kDimensionSalt);
     const Uint4 scrambled = nested_uniform_scramble_of_reversed(reversed_sobol, seeds);
     // uint_to_unit_float per lane: the top 24 bits, exact in float.
