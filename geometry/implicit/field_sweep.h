@@ -110,12 +110,13 @@ inline Polynomial compose_with_quadratic(const FieldPiece& piece, double weight,
     return Polynomial(std::span<const double>(acc.data(), degree + 1));
 }
 
-// Smallest and largest value of the quadratic q (a squared distance, never below 0) on [s0, s1].
 struct Range {
     double low, high;
 };
-// `vertex` is quadratic_vertex(q), kept by the caller: q changes once per piece, its range is asked per event.
+// Where q is least when it opens upwards (c2 > 0; any t otherwise, unused).
 inline double quadratic_vertex(const QuadraticAbout& q) { return q.c2 > 0 ? q.t_ref - q.c1 / (2 * q.c2) : q.t_ref; }
+// Smallest and largest value of the quadratic q (a squared distance, never below 0) on [s0, s1]. `vertex` is
+// quadratic_vertex(q), kept by the caller: q changes once per piece, its range is asked per event.
 inline Range quadratic_range(const QuadraticAbout& q, double vertex, double s0, double s1) {
     const double at_s0 = q(s0), at_s1 = q(s1);
     const double nearest = q.c2 > 0 ? std::clamp(vertex, s0, s1) : s0;

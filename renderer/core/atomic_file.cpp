@@ -111,13 +111,20 @@ void check_atomically_writable(const std::filesystem::path& target) {
 
 namespace {
 
-// The file's new contents in `fd` (flushed) become the target: renamed over it from the temporary path.
+// The flushed file `fd`, named `temporary` (registered in `slot`), becomes the target: renamed over it at once, so
+// nothing else runs while the contents have a name of their own, and closed after (the data is on disk already).
+// A failed rename removes the temporary file and closes `fd`.
 void publish_as_target(int fd, const std::filesystem::path& temporary, const std::filesystem::path& target,
                        int slot) {
-    const int closed = ::close(fd);
-    if (closed != 0) fail(target, "closing failed", errno);
-    if (::rename(temporary.c_str(), target.c_str()) != 0) fail(target, "cannot rename the temporary file", errno);
+    if (::rename(temporary.c_str(), target.c_str()) != 0) {
+        const int error = errno;
+        ::unlink(temporary.c_str());
+        g_temporaries.withdraw(slot);
+        ::close(fd);
+        fail(target, "cannot rename the temporary file", error);
+    }
     g_temporaries.withdraw(slot);
+    if (::close(fd) != 0) fail(target, "closing failed", errno);
 }
 
 // An unnamed file in the target's directory (O_TMPFILE): whatever happens to the process while it is written —
@@ -163,16 +170,7 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
         }
         int slot = -1;
         if (link_unnamed(fd, target, temporary, slot)) {
-            // Renamed at once, closed after: the data is on disk already (fsync above).
-            if (::rename(temporary.c_str(), target.c_str()) != 0) {
-                const int error = errno;
-                ::unlink(temporary.c_str());
-                g_temporaries.withdraw(slot);
-                ::close(fd);
-                fail(target, "cannot rename the temporary file", error);
-            }
-            g_temporaries.withdraw(slot);
-            if (::close(fd) != 0) fail(target, "closing failed", errno);
+            publish_as_target(fd, temporary, target, slot);
             return;
         }
         ::close(fd);
@@ -183,15 +181,13 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
     try {
         write_all(fd, bytes, target);
         if (::fsync(fd) != 0) fail(target, "flushing to disk failed", errno);
-        const int owned = fd;
-        fd = -1;
-        publish_as_target(owned, temporary, target, slot);
     } catch (...) {
-        if (fd >= 0) ::close(fd);
+        ::close(fd);
         ::unlink(temporary.c_str());
         g_temporaries.withdraw(slot);
         throw;
     }
+    publish_as_target(fd, temporary, target, slot);
 }
 
 }  // namespace isotrace
