@@ -157,8 +157,11 @@ private:
     // An element the sweep has reached. Before its support it does not count; from there its pieces follow each
     // other until the support ends.
     struct Active {
-        Active(std::uint32_t index, const Metacube& element, const MetacubeRaySlices& slices)
-            : index(index), slices(slices),
+        // `slice()` returns the element's slices, built in place: an Active is ~0.5 KB, and copying the slices
+        // twice (into an optional, then into the list) was 45 % of join_until's time (perf, blobs_10k).
+        template <class Slice>
+        Active(std::uint32_t index, const Metacube& element, Slice&& slice)
+            : index(index), slices(slice()),
               inverse_radius2(element.is_hard_cube() ? 0 : 1 / (element.radius() * element.radius())) {}
         std::uint32_t index;
         MetacubeRaySlices slices;
@@ -267,15 +270,20 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
     while (next_candidate_ < candidates_.size() && candidates_[next_candidate_].t_enter <= t) {
         const Candidate& candidate = candidates_[next_candidate_++];
         const Metacube& element = elements_[candidate.index];
-        // A metaball's support is its bounding sphere: its slices are the roots gather found.
-        const auto slices = element.is_metaball()
-                                ? std::optional(MetacubeRaySlices::metaball(stretch.origin, stretch.direction,
-                                                                            element.centre(),
-                                                                            candidate.t_enter, candidate.t_exit))
-                                : MetacubeRaySlices::slice(element, stretch.origin, stretch.direction);
+        if (element.is_metaball()) {
+            // Its support is its bounding sphere: its slices are the roots gather found.
+            if (candidate.t_exit <= t) continue;
+            ++work.joined;
+            enter_piece(joined_.emplace_back(candidate.index, element, [&] {
+                return MetacubeRaySlices::metaball(stretch.origin, stretch.direction, element.centre(),
+                                                   candidate.t_enter, candidate.t_exit);
+            }), t);
+            continue;
+        }
+        const auto slices = MetacubeRaySlices::slice(element, stretch.origin, stretch.direction);
         if (!slices || slices->t_out() <= t) continue;
         ++work.joined;
-        enter_piece(joined_.emplace_back(candidate.index, element, *slices), t);
+        enter_piece(joined_.emplace_back(candidate.index, element, [&] { return *slices; }), t);
     }
 }
 
