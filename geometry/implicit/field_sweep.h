@@ -179,9 +179,13 @@ private:
         MetacubeRaySlices slices;
     };
 
-    // Lists the candidates by entry; returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's nearest
-    // approach (f is non-increasing in r², negative weights only lower F).
-    double gather(std::span<const std::uint32_t> candidates, const SweepStretch& stretch);
+    // Keeps in near_ the listed elements whose support's bounding sphere the stretch may meet; returns an upper
+    // bound of Σ wᵢ·fᵢ on the stretch from each one's nearest approach (f is non-increasing in r², negative
+    // weights only lower F). No square root or division per element for a metaball: nearly half the queries end
+    // at this bound, and the chords are found only for the others (order_candidates).
+    double gather(std::span<const std::uint32_t> listed, const SweepStretch& stretch);
+    // Lists the elements of near_ whose bounding sphere the stretch meets, by entry.
+    void order_candidates(const SweepStretch& stretch);
     // Joins every candidate whose entry is ≤ t, each brought to its piece at t.
     void join_until(double t, const SweepStretch& stretch, BlobQueryWork& work);
     // Brings element `a` to the piece that starts at t (it counts from there on), updating the sum.
@@ -212,6 +216,7 @@ private:
     std::span<const FieldPiece> unit_pieces_;
     double t_ref_ = 0;  // the sum is a polynomial in s = t − t_ref_
 
+    InlineVector<std::uint32_t, 64> near_;    // the elements gather kept
     InlineVector<Candidate, 64> candidates_;  // by entry
     std::size_t next_candidate_ = 0;
     InlineVector<Active, 24> joined_;
@@ -223,33 +228,36 @@ private:
 };
 
 template <class Kernel>
-double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, const SweepStretch& stretch) {
-    candidates_.clear();
-    next_candidate_ = 0;
+double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const SweepStretch& stretch) {
+    near_.clear();
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
-    double upper = 0;  // Σ wᵢ·max fᵢ on the stretch over candidates of positive weight
+    const double inverse_length2 = 1 / dot(d, d);
+    // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept
+    // because of it that misses the stretch is dropped by order_candidates' exact chord.
+    const double rounding = 1e-12 * (max_component(abs(o)) +
+                                     length(d) * std::max(std::abs(stretch.t_begin), std::abs(stretch.t_end)) +
+                                     centre_bound_);
+    double upper = 0;  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     const auto consider = [&](std::uint32_t index) {
-        // The element's support lies in the sphere of radius R + |half-size| about its centre: entry and exit of
-        // the line through that sphere (exact for metaballs, whose support is the sphere).
+        // The element's support lies in the sphere of radius R + |half-size| about its centre. The stretch's point
+        // nearest the centre (its projection on the line, clamped) decides whether the stretch may meet that
+        // sphere, and bounds the field: the skeleton box is no nearer than that distance less its half-diagonal.
         const Metacube& element = elements_[index];
         const Vec3d& half = element.half_size();
         const double half2 = dot(half, half);
         const double half_diagonal = half2 > 0 ? std::sqrt(half2) : 0.0;
         const double reach = element.radius() + half_diagonal;
-        const auto roots = intersect_sphere(o, d, element.centre(), reach);
-        if (!roots) return;
-        const double t_in = roots->t0, t_out = roots->t1;
-        if (!(t_out > stretch.t_begin && t_in < stretch.t_end)) return;
-        candidates_.push_back({t_in, t_out, index});
+        const double t_near =
+            std::clamp(dot(element.centre() - o, d) * inverse_length2, stretch.t_begin, stretch.t_end);
+        const Vec3d to_centre = o + d * t_near - element.centre();
+        double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
+        const double keep = reach * (1 + 1e-9) + rounding;
+        if (gap2 > keep * keep) return;
+        near_.push_back(index);
         if (element.weight() <= 0) return;
         double f_max = 1;  // a hard cube's step
         if (!element.is_hard_cube()) {
-            // The stretch's point nearest the centre (the middle of the sphere's chord, clamped); the skeleton
-            // box is no nearer than that distance less its half-diagonal.
-            const double t_near = std::clamp(0.5 * (t_in + t_out), stretch.t_begin, stretch.t_end);
-            const Vec3d to_centre = o + d * t_near - element.centre();
-            double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
             if (half_diagonal > 0) {
                 const double gap = std::max(0.0, std::sqrt(gap2) - half_diagonal);
                 gap2 = gap * gap;
@@ -262,11 +270,28 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> candidates, con
     const double length_d = length(d);
     const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
                                      0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
-    for_each_near(candidates, spheres_, segment, consider);
+    for_each_near(listed, spheres_, segment, consider);
+    return upper;
+}
+
+template <class Kernel>
+void FieldSweep<Kernel>::order_candidates(const SweepStretch& stretch) {
+    candidates_.clear();
+    next_candidate_ = 0;
+    for (const std::uint32_t index : near_) {
+        // Entry and exit of the line through the support's bounding sphere (exact for metaballs, whose support is
+        // the sphere).
+        const Metacube& element = elements_[index];
+        const Vec3d& half = element.half_size();
+        const double half2 = dot(half, half);
+        const double reach = element.radius() + (half2 > 0 ? std::sqrt(half2) : 0.0);
+        const auto roots = intersect_sphere(stretch.origin, stretch.direction, element.centre(), reach);
+        if (!roots || !(roots->t1 > stretch.t_begin && roots->t0 < stretch.t_end)) continue;
+        candidates_.push_back({roots->t0, roots->t1, index});
+    }
     std::sort(candidates_.begin(), candidates_.end(), [](const Candidate& x, const Candidate& y) {
         return x.t_enter < y.t_enter || (x.t_enter == y.t_enter && x.index < y.index);
     });
-    return upper;
 }
 
 template <class Kernel>
@@ -454,12 +479,14 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
     using namespace field_sweep_detail;
     const double upper = gather(candidates, stretch);
     ++work.queries;
-    work.candidates += candidates_.size();
     // F < T on the whole stretch (the margin dwarfs the rounding of the nearest approaches): no crossing.
     if (upper * (1 + 1e-9) < threshold_) {
         ++work.queries_bounded;
+        work.candidates += near_.size();
         return;
     }
+    order_candidates(stretch);
+    work.candidates += candidates_.size();
     joined_.clear();
     non_polynomial_ = 0;
     t_ref_ = stretch.t_begin;
