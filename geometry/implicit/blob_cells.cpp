@@ -15,9 +15,6 @@ constexpr std::size_t kLeafElements = 16;
 // nearly the same elements again (supports overlap), costing memory for little less work per ray.
 constexpr double kSmallestCellInRadii = 2.0;
 
-// Support radius: R plus the half-diagonal of the skeleton box.
-double reach(const Metacube& element) { return element.radius() + length(element.half_size()); }
-
 // Does the element's support reach into the closed box? Exact for metaballs (distance from the centre to the box
 // ≤ R); the support's bounding box for metacubes (a few extra elements in corner cells, never a missing one).
 bool support_meets(const Metacube& element, const WorldBounds& box) {
@@ -80,7 +77,7 @@ void BlobCells::build_node(std::span<const Metacube> elements, std::uint32_t nod
     const Vec3d extent = box.upper - box.lower;
     const int axis = longest_axis(extent);
     double mean_reach = 0;
-    for (std::uint32_t id : ids) mean_reach += reach(elements[id]);
+    for (std::uint32_t id : ids) mean_reach += elements[id].support_radius();
     mean_reach /= double(std::max<std::size_t>(ids.size(), 1));
 
     std::vector<std::uint32_t> below, above;

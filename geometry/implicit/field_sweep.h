@@ -244,9 +244,7 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const S
         // nearest the centre (its projection on the line, clamped) decides whether the stretch may meet that
         // sphere, and bounds the field: the skeleton box is no nearer than that distance less its half-diagonal.
         const Metacube& element = elements_[index];
-        const Vec3d& half = element.half_size();
-        const double half2 = dot(half, half);
-        const double half_diagonal = half2 > 0 ? std::sqrt(half2) : 0.0;
+        const double half_diagonal = element.half_diagonal();
         const double reach = element.radius() + half_diagonal;
         const double t_near =
             std::clamp(dot(element.centre() - o, d) * inverse_length2, stretch.t_begin, stretch.t_end);
@@ -282,10 +280,8 @@ void FieldSweep<Kernel>::order_candidates(const SweepStretch& stretch) {
         // Entry and exit of the line through the support's bounding sphere (exact for metaballs, whose support is
         // the sphere).
         const Metacube& element = elements_[index];
-        const Vec3d& half = element.half_size();
-        const double half2 = dot(half, half);
-        const double reach = element.radius() + (half2 > 0 ? std::sqrt(half2) : 0.0);
-        const auto roots = intersect_sphere(stretch.origin, stretch.direction, element.centre(), reach);
+        const auto roots =
+            intersect_sphere(stretch.origin, stretch.direction, element.centre(), element.support_radius());
         if (!roots || !(roots->t1 > stretch.t_begin && roots->t0 < stretch.t_end)) continue;
         candidates_.push_back({roots->t0, roots->t1, index});
     }

@@ -53,6 +53,9 @@ public:
     double radius() const { return radius_; }
     double weight() const { return weight_; }
     bool is_hard_cube() const { return radius_ == 0; }
+    // Half the skeleton box's diagonal, and the radius of the sphere about the centre that holds the support.
+    double half_diagonal() const { return length(half_size_); }
+    double support_radius() const { return radius_ + half_diagonal(); }
 
     // Squared distance from a world point to the solid box.
     double distance_squared(const Vec3d& point) const;

@@ -26,10 +26,9 @@ struct alignas(16) BoundingSphere {
 
     static BoundingSphere of(const Metacube& element) {
         const Vec3d& c = element.centre();
-        const Vec3d& half = element.half_size();
         BoundingSphere sphere{{float(c.x), float(c.y), float(c.z)}, 0};
         const Vec3d rounding = c - Vec3d(sphere.centre[0], sphere.centre[1], sphere.centre[2]);
-        const double reach = element.radius() + std::sqrt(dot(half, half)) + length(rounding);
+        const double reach = element.support_radius() + length(rounding);
         sphere.radius = std::nextafter(float(reach * (1 + 1e-9)), std::numeric_limits<float>::infinity());
         return sphere;
     }
