@@ -512,7 +512,9 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
             const double s0 = t0 - t_ref_, width = t1 - t0;
             bool solve = true;
             int start_sign = 0;
-            Polynomial on_piece;  // F on the piece in u ∈ [0,1] (polynomial pieces that were not settled by ranges)
+            // F on the piece in u ∈ [0,1] (polynomial pieces that were not settled by ranges). Optional, so that the
+            // pieces settled by ranges do not zero a polynomial (a rep stos per piece, perf).
+            std::optional<Polynomial> piece_polynomial;
             int variations = kUntrustedSign;  // of its Bernstein control polygon
             // First each element's own range: it proves most pieces free of crossings (F far below T along most
             // of a ray) at a fraction of the cost of the sums below.
@@ -525,11 +527,11 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 // Bernstein test on the sum, allowing for the rounding of its terms' sum and of the shift to the
                 // piece (2·degree + 2 operations per coefficient).
                 const Polynomial& sum = polynomial_sum();
-                on_piece = sum.compose_linear(s0, width);
+                piece_polynomial = sum.compose_linear(s0, width);
                 const double rounding = 4 * kEpsilon * (sum_terms_ + 2 * sum.degree() + 2) *
                                         magnitude_at(sum_magnitude_, std::abs(s0) + width);
-                start_sign = sign_of(on_piece[0]);
-                variations = bernstein_sign_variations(on_piece, rounding);
+                start_sign = sign_of((*piece_polynomial)[0]);
+                variations = bernstein_sign_variations(*piece_polynomial, rounding);
                 solve = variations != 0;
             } else {
                 // Tighter: the polynomial part (with −T) bounded by its Bernstein hull, the non-polynomial
@@ -551,6 +553,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 previous_sign = start_sign;
             } else if (non_polynomial_ == 0) {
                 ++work.polynomial_solves;
+                const Polynomial& on_piece = *piece_polynomial;
                 // A start within rounding of zero is a root at t0 the previous piece already ended on: no step.
                 if (!on_piece.is_zero_within_rounding(0)) {
                     const int sign_at_start = sign_of(on_piece[0]);
