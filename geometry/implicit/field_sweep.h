@@ -174,8 +174,9 @@ private:
         std::uint32_t index;
         int region = -1;         // current region piece, −1 before the support
         bool hard_cube;          // the element's
-        bool composed = false;   // contribution is up to date
-        Polynomial contribution;  // its term of the sum on the current piece (polynomial pieces)
+        // Its term of the sum on the current piece (polynomial pieces), once composed. Optional, so that joining
+        // zeroes no polynomial (a rep stos per element, perf).
+        std::optional<Polynomial> contribution;
         MetacubeRaySlices slices;
     };
 
@@ -336,7 +337,7 @@ const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
     sum_terms_ = 1;
     for (Active& a : joined_) {
         if (!a.kernel_piece || !a.kernel_piece->is_polynomial) continue;
-        if (!a.composed) {
+        if (!a.contribution) {
             if (a.hard_cube) {
                 a.contribution = Polynomial{a.weight};
             } else {
@@ -346,11 +347,10 @@ const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
                 a.contribution =
                     field_sweep_detail::compose_with_quadratic(*a.kernel_piece, a.weight, x);
             }
-            a.composed = true;
         }
-        sum_ += a.contribution;
-        for (int i = 0; i <= a.contribution.degree(); ++i)
-            sum_magnitude_[std::size_t(i)] += std::abs(a.contribution[i]);
+        const Polynomial& term = *a.contribution;
+        sum_ += term;
+        for (int i = 0; i <= term.degree(); ++i) sum_magnitude_[std::size_t(i)] += std::abs(term[i]);
         ++sum_terms_;
     }
     sum_valid_ = true;
@@ -369,7 +369,7 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
         }
         a.kernel_piece = nullptr;
     }
-    a.composed = false;
+    a.contribution.reset();
     const MetacubeRaySlices& slices = a.slices;
     const auto pieces = slices.pieces();
     if (t >= slices.t_out()) {
