@@ -1,7 +1,9 @@
 #pragma once
 // The summed field F(t) = Σ wᵢ·fᵢ(dist²ᵢ(o + t·d)) − T of a blob group along one stretch [t_begin, t_end] of a
 // ray (one cell's part of it, blob_cells.h), swept once from front to back:
-//   1. the cell's elements whose bounding sphere the stretch meets become candidates, ordered by entry;
+//   1. the cell's elements whose bounding sphere the stretch may meet bound F from above at their nearest approach
+//      (below T the stretch holds no crossing: nearly half the queries end here); otherwise those the stretch meets
+//      become candidates, ordered by entry;
 //   2. a candidate joins the sweep when the sweep reaches its entry: it is cut into pieces on which its field is
 //      one closed form (metacube region pieces, metacube_ray_slices.h; kernel pieces such as Nishimura's r = R/3);
 //   3. between consecutive events (an entry, an exit, a piece boundary) F is a polynomial in t when every kernel
@@ -296,20 +298,21 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
     while (next_candidate_ < candidates_.size() && candidates_[next_candidate_].t_enter <= t) {
         const Candidate& candidate = candidates_[next_candidate_++];
         const Metacube& element = elements_[candidate.index];
-        if (element.is_metaball()) {
-            // Its support is its bounding sphere: its slices are the roots gather found.
-            if (candidate.t_exit <= t) continue;
+        const auto join = [&](auto&& slice) {
             ++work.joined;
-            enter_piece(joined_.emplace_back(candidate.index, element, [&] {
-                return MetacubeRaySlices::metaball(stretch.origin, stretch.direction, element.centre(),
-                                                   candidate.t_enter, candidate.t_exit);
-            }), t);
+            enter_piece(joined_.emplace_back(candidate.index, element, slice), t);
+        };
+        if (element.is_metaball()) {
+            // Its support is its bounding sphere: its slices are the chord order_candidates found.
+            if (candidate.t_exit > t)
+                join([&] {
+                    return MetacubeRaySlices::metaball(stretch.origin, stretch.direction, element.centre(),
+                                                       candidate.t_enter, candidate.t_exit);
+                });
             continue;
         }
         const auto slices = MetacubeRaySlices::slice(element, stretch.origin, stretch.direction);
-        if (!slices || slices->t_out() <= t) continue;
-        ++work.joined;
-        enter_piece(joined_.emplace_back(candidate.index, element, [&] { return *slices; }), t);
+        if (slices && slices->t_out() > t) join([&] { return *slices; });
     }
 }
 
