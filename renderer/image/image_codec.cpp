@@ -34,4 +34,15 @@ const ImageCodec& image_codec() {
     return codec;
 }
 
+ImageCodecPreload::ImageCodecPreload(std::function<void()> on_failure)
+    : thread_([on_failure = std::move(on_failure)] {
+          try {
+              image_codec();
+          } catch (const std::exception&) {
+              if (on_failure) on_failure();
+          }
+      }) {}
+
+ImageCodecPreload::~ImageCodecPreload() { thread_.join(); }
+
 }  // namespace isotrace

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "renderer/image/image_metadata.h"
@@ -88,5 +89,21 @@ const ImageCodec& image_codec();
 // Loads the codec from the module at `module_path` (image_codec() passes the one beside libisotrace).
 // Throws std::runtime_error naming the path and the loader's reason when that fails.
 const ImageCodec& load_image_codec(const std::filesystem::path& module_path);
+
+// Loads the module (image_codec()) on a thread of its own, so that its ~0.4 s of dynamic linking overlaps other
+// work (a render: with a core to spare, it then costs no wall time). image_codec() called before the load ends
+// waits for it; a load that failed calls `on_failure` from that thread and is tried again by the next
+// image_codec() call, which throws its error. The destructor waits for the thread. While the module loads, the
+// loader's lock is held and any thread being created waits: start this after the threads it should overlap.
+class ImageCodecPreload {
+public:
+    explicit ImageCodecPreload(std::function<void()> on_failure);
+    ~ImageCodecPreload();
+    ImageCodecPreload(const ImageCodecPreload&) = delete;
+    ImageCodecPreload& operator=(const ImageCodecPreload&) = delete;
+
+private:
+    std::thread thread_;
+};
 
 }  // namespace isotrace

@@ -128,6 +128,7 @@ private:
         std::unique_lock lock(mutex_);
         for (int tick = 1; !wake_.wait_for(lock, kTick, [this] { return done_; }); ++tick) {
             check();
+            if (options_.on_started && tick == 1) options_.on_started();
             if (options_.on_progress && tick % kTicksPerReport == 0) options_.on_progress(snapshot_());
         }
     }

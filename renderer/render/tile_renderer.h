@@ -30,6 +30,10 @@ struct RenderOptions {
     std::optional<double> time_budget_seconds;     // hard: the render stops within a sample of running out
     const std::atomic<bool>* cancel = nullptr;     // set asynchronously to stop within a sample
     std::function<void(const RenderProgress&)> on_progress;  // called about 5 times a second from one thread
+    // Called once, from the same thread, when the render has run for a moment (its worker threads have started):
+    // for work meant to overlap the render without holding up its start (creating a thread waits while a library
+    // is being loaded, so loading one earlier would delay the workers).
+    std::function<void()> on_started;
     // Called from the rendering thread with the film in a consistent state (no sample in flight) every
     // checkpoint_interval_seconds of rendering; the render waits while it runs.
     std::optional<double> checkpoint_interval_seconds;

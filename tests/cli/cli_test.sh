@@ -284,6 +284,10 @@ case_image_module_on_demand() {
   LD_LIBRARY_PATH="$work/lib" cli_expect 1 render "$cornell" --res 8x8 --spp 1 --quiet -o "$work/b.png"
   expect_in "$work/stderr" "cannot load the image module $work/lib/libisotrace_oiio.so" stderr
   expect_no_file "$work/b.png"
+  # A longer render loads the module while it runs: the failed load stops it, and it fails the same way.
+  LD_LIBRARY_PATH="$work/lib" cli_expect 1 render "$cornell" --res 96x96 --spp 256 --quiet -o "$work/c.png"
+  expect_in "$work/stderr" "cannot load the image module $work/lib/libisotrace_oiio.so" stderr
+  expect_no_file "$work/c.png"
   expect_no_partial_files "$work"
 }
 

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "renderer/colour/chromaticities.h"
 #include "renderer/core/atomic_file.h"
@@ -224,7 +225,6 @@ int run_render(const RenderArguments& args) {
     }
     if (reference.enabled) require_reference_output(args.outputs);
     if (!checkpoint_path.empty()) check_output_directory(checkpoint_path, "--checkpoint");
-    if (!args.outputs.empty()) image_codec();  // a missing image module fails now, not after the render
 
     const ThreadLimit limit(args.threads);
     const int threads = limit.threads();
@@ -291,6 +291,10 @@ int run_render(const RenderArguments& args) {
     if (show_progress) options.on_progress = [&](const RenderProgress& p) { bar.update(p); };
     else if (ranks.distributed() && !args.quiet) options.on_progress = progress_lines(10);
     const StopSignals signals;  // until the outputs are written: a second signal then removes the temporary file
+    // The image module loads while the render runs (not before: the render's threads would wait for it to start).
+    // A module that cannot be loaded stops the render, and writing the images then fails with the loader's reason.
+    std::optional<ImageCodecPreload> image_module;
+    if (!args.outputs.empty()) options.on_started = [&] { image_module.emplace([] { g_interrupted = true; }); };
     const RenderResult result = ranks.render(*scene, options, std::move(film), work_split(args.distribution));
     bar.finish();
     times.render = result.seconds;
