@@ -37,6 +37,7 @@
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/quadratic_roots.h"
 #include "geometry/sphere/sphere_intersection.h"
+#include "renderer/math/branch_free.h"
 #include "renderer/core/inline_vector.h"
 
 namespace isotrace {
@@ -115,14 +116,18 @@ inline Polynomial compose_with_quadratic(const FieldPiece& piece, double weight,
 struct Range {
     double low, high;
 };
-// Where q is least when it opens upwards (c2 > 0; any t otherwise, unused).
-inline double quadratic_vertex(const QuadraticAbout& q) { return q.c2 > 0 ? q.t_ref - q.c1 / (2 * q.c2) : q.t_ref; }
+// Where q is least when it opens upwards (c2 > 0); −∞ otherwise, which quadratic_range clamps to the start.
+inline double quadratic_vertex(const QuadraticAbout& q) {
+    return q.c2 > 0 ? q.t_ref - q.c1 / (2 * q.c2) : -std::numeric_limits<double>::infinity();
+}
 // Smallest and largest value of the quadratic q (a squared distance, never below 0) on [s0, s1]. `vertex` is
-// quadratic_vertex(q), kept by the caller: q changes once per piece, its range is asked per event.
+// quadratic_vertex(q), kept by the caller: q changes once per piece, its range is asked per event. Branch free:
+// it is asked for every joined element at every event, and which end is nearer is data.
 inline Range quadratic_range(const QuadraticAbout& q, double vertex, double s0, double s1) {
     const double at_s0 = q(s0), at_s1 = q(s1);
-    const double nearest = q.c2 > 0 ? std::clamp(vertex, s0, s1) : s0;
-    return {std::max(0.0, std::min({at_s0, at_s1, q(nearest)})), std::max(at_s0, at_s1)};
+    const double nearest = min_branch_free(max_branch_free(vertex, s0), s1);
+    return {max_branch_free(min_branch_free(min_branch_free(at_s0, at_s1), q(nearest)), 0.0),
+            max_branch_free(at_s0, at_s1)};
 }
 
 // Σ |cᵢ|·xⁱ: bounds |p(s)| for |s| ≤ x, and the effect of coefficient errors.
@@ -430,12 +435,13 @@ field_sweep_detail::Range FieldSweep<Kernel>::elements_range(double t0, double t
         double f_near = 1, f_far = 1;  // a hard cube counts its weight wherever it counts
         if (!a.hard_cube) {
             const field_sweep_detail::Range r2 = field_sweep_detail::quadratic_range(a.q, a.q_vertex, t0, t1);
-            f_near = unit_value(r2.low * a.inverse_radius2);
-            f_far = unit_value(r2.high * a.inverse_radius2);
+            const double x_near = r2.low * a.inverse_radius2, x_far = r2.high * a.inverse_radius2;
+            f_near = zero_unless_less(kernel_.unit_value(min_branch_free(x_near, 1.0)), x_near, 1.0);
+            f_far = zero_unless_less(kernel_.unit_value(min_branch_free(x_far, 1.0)), x_far, 1.0);
         }
         const double w = a.weight;
-        low += std::min(w * f_near, w * f_far);
-        high += std::max(w * f_near, w * f_far);
+        low += min_branch_free(w * f_near, w * f_far);
+        high += max_branch_free(w * f_near, w * f_far);
     }
     return {low, high};
 }
