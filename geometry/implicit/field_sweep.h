@@ -37,8 +37,8 @@
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/quadratic_roots.h"
 #include "geometry/sphere/sphere_intersection.h"
-#include "renderer/math/branch_free.h"
 #include "renderer/core/inline_vector.h"
+#include "renderer/math/branch_free.h"
 
 namespace isotrace {
 
