@@ -212,8 +212,9 @@ private:
     // range. A few operations per element, no polynomial formed.
     field_sweep_detail::Range elements_range(double t0, double t1, bool non_polynomial_only) const;
     double hard_cube_step_before(double t) const;
-    // The kernel on x = r²/R², zero beyond the support (rounding can put a support end a hair past x = 1).
-    double unit_value(double x) const { return x < 1 ? kernel_.unit_value(x) : 0; }
+    // The kernel on x = r²/R², zero beyond the support (rounding can put a support end a hair past x = 1). Without a
+    // branch: in elements_range which side of 1 an element's range ends on is data (evaluated at min(x, 1), masked).
+    double unit_value(double x) const { return zero_unless_less(kernel_.unit_value(min_branch_free(x, 1.0)), x, 1.0); }
     double unit_derivative(double x) const { return x < 1 ? kernel_.unit_derivative(x) : 0; }
 
     const Kernel& kernel_;
@@ -435,9 +436,8 @@ field_sweep_detail::Range FieldSweep<Kernel>::elements_range(double t0, double t
         double f_near = 1, f_far = 1;  // a hard cube counts its weight wherever it counts
         if (!a.hard_cube) {
             const field_sweep_detail::Range r2 = field_sweep_detail::quadratic_range(a.q, a.q_vertex, t0, t1);
-            const double x_near = r2.low * a.inverse_radius2, x_far = r2.high * a.inverse_radius2;
-            f_near = zero_unless_less(kernel_.unit_value(min_branch_free(x_near, 1.0)), x_near, 1.0);
-            f_far = zero_unless_less(kernel_.unit_value(min_branch_free(x_far, 1.0)), x_far, 1.0);
+            f_near = unit_value(r2.low * a.inverse_radius2);
+            f_far = unit_value(r2.high * a.inverse_radius2);
         }
         const double w = a.weight;
         low += min_branch_free(w * f_near, w * f_far);
