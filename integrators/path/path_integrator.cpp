@@ -3,8 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "renderer/bsdf/bsdf.h"
-#include "renderer/core/scratch_arena.h"
+#include "renderer/bsdf/surface_bsdf.h"
 #include "renderer/plugin/material.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/scene/render_scene.h"
@@ -48,8 +47,6 @@ private:
 
 Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                              PrimaryHitRecord& primary) const {
-    thread_local ScratchArena arena;
-    arena.reset();
     Rgb result;
     Contributions contributions(result, settings_.clamp);
     Rgb throughput(1.0f);
@@ -92,8 +89,8 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
             contributions.add(throughput * emitted * weight);
         }
         if (depth >= settings_.max_depth) break;
-        const Bsdf* bsdf = hit.material->bsdf(hit, arena);
-        if (!bsdf) break;
+        const SurfaceBsdf bsdf = hit.material->bsdf(hit);
+        if (!bsdf.scatters()) break;
 
         const ShadingFrame frame(hit.shading_normal);
         const Vec3f wo = frame.to_local(towards_viewer);
@@ -107,19 +104,19 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         const float u_roulette = samples.next_1d();
 
         // Next-event estimation: one light, chosen in proportion to power.
-        if (!bsdf->is_fully_delta()) {
+        if (!bsdf.is_fully_delta()) {
             const LightChoice choice = scene.choose_light(u_light);
             if (choice.light) {
                 const LightSample light = choice.light->sample(hit.position, u_light_point);
                 const Vec3f wi = frame.to_local(light.direction);
                 if (light.pdf > 0 && !light.radiance.is_black()) {
-                    const Rgb f = bsdf->eval(wo, wi) * std::abs(wi.z);
+                    const Rgb f = bsdf.eval(wo, wi) * std::abs(wi.z);
                     if (!f.is_black() && sides_agree(light.direction, hit.geometric_normal, wi.z)) {
                         const float t_far = std::isinf(light.distance) ? light.distance : light.distance * (1 - 1e-4f);
                         const Ray shadow{hit.spawn_origin(light.direction), light.direction, 0, t_far};
                         if (!scene.occluded(shadow)) {
                             const float light_pdf = choice.probability * light.pdf;
-                            const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf->pdf(wo, wi));
+                            const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, wi));
                             contributions.add(throughput * f * light.radiance * (weight / light_pdf));
                         }
                     }
@@ -132,7 +129,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         if (depth + 1 >= settings_.max_depth && !scene.emission_can_be_hit()) break;
 
         // Continue the path by sampling the BSDF.
-        const std::optional<BsdfSample> scattered = bsdf->sample(wo, u_lobe, u_direction);
+        const std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction);
         if (!scattered || scattered->pdf <= 0 || scattered->weight.is_black()) break;
         const Vec3f direction = normalize(frame.to_world(scattered->wi));
         if (!sides_agree(direction, hit.geometric_normal, scattered->wi.z)) break;

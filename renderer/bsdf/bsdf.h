@@ -1,8 +1,15 @@
 #pragma once
-// Bsdf: how a surface scatters light, in the local shading frame (z = shading normal). Directions are unit
-// vectors pointing away from the surface: wo towards the viewer / previous path vertex, wi towards the light /
-// next vertex. Materials build one of the models in this folder per shading point.
+// The scattering models in this folder (LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf) describe
+// how a surface scatters light, in the local shading frame (z = shading normal). Directions are unit vectors
+// pointing away from the surface: wo towards the viewer / previous path vertex, wi towards the light / next
+// vertex. Each model has the same members, called without virtual dispatch (SurfaceBsdf holds one by value):
+//   Rgb eval(wo, wi, mode)         f(wo, wi) without the cosine; 0 for delta lobes
+//   float pdf(wo, wi)              solid-angle density with which sample() returns wi (its non-delta part)
+//   sample(wo, u_lobe, u, mode)    u_lobe picks a lobe, u the direction within it; empty when none is produced
+//   bool has_delta_lobe()          some lobe is a Dirac delta (light sampling cannot reach it)
+//   bool is_fully_delta()          every lobe is a Dirac delta (light sampling is useless)
 #include <array>
+#include <cmath>
 #include <optional>
 
 #include "renderer/math/rgb.h"
@@ -23,26 +30,22 @@ struct BsdfSample {
     float eta = 1;                 // IOR on wi's side over IOR on wo's side (1 for reflection), for Russian roulette
 };
 
-class Bsdf {
-public:
-    virtual ~Bsdf() = default;
-    // f(wo, wi) without the cosine; 0 for delta lobes.
-    virtual Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode = TransportMode::Radiance) const = 0;
-    // Solid-angle density with which sample() returns wi (its non-delta part); 0 for delta lobes.
-    virtual float pdf(const Vec3f& wo, const Vec3f& wi) const = 0;
-    // u_lobe picks a lobe, u the direction within it. Empty when no direction is produced.
-    virtual std::optional<BsdfSample> sample(const Vec3f& wo, float u_lobe, std::array<float, 2> u,
-                                             TransportMode mode = TransportMode::Radiance) const = 0;
-    // Some lobe is a Dirac delta (light sampling cannot reach it).
-    virtual bool has_delta_lobe() const = 0;
-    // Every lobe is a Dirac delta (light sampling is useless).
-    virtual bool is_fully_delta() const = 0;
-};
-
-// The sample of a non-delta lobe towards wi, its weight and pdf taken from bsdf.eval() and bsdf.pdf() so the
+// The sample of a non-delta lobe towards wi, its weight and pdf taken from model.eval() and model.pdf() so the
 // three can never disagree. Empty when the pdf is zero (wi unreachable, e.g. lost to rounding at a horizon).
 // `eta` is BsdfSample::eta for a transmitted wi.
-std::optional<BsdfSample> sample_towards(const Bsdf& bsdf, const Vec3f& wo, const Vec3f& wi, TransportMode mode,
-                                         float eta = 1);
+template <class Model>
+std::optional<BsdfSample> sample_towards(const Model& model, const Vec3f& wo, const Vec3f& wi, TransportMode mode,
+                                         float eta = 1) {
+    const float pdf = model.pdf(wo, wi);
+    if (!(pdf > 0)) return std::nullopt;
+    const bool is_transmission = wo.z * wi.z < 0;
+    BsdfSample sample;
+    sample.weight = model.eval(wo, wi, mode) * (std::abs(wi.z) / pdf);
+    sample.wi = wi;
+    sample.pdf = pdf;
+    sample.is_transmission = is_transmission;
+    sample.eta = is_transmission ? eta : 1.0f;
+    return sample;
+}
 
 }  // namespace isotrace

@@ -21,23 +21,24 @@
 
 namespace isotrace {
 
-class CoatedDiffuseBsdf final : public TwoSidedBsdf {
+class CoatedDiffuseBsdf final : public TwoSidedBsdf<CoatedDiffuseBsdf> {
 public:
     // The coating must outlive the BSDF. reflectance in [0, 1] per channel.
     CoatedDiffuseBsdf(const DielectricCoating& coating, const Rgb& reflectance);
 
-    bool has_delta_lobe() const override { return coating_.is_smooth(); }
-    bool is_fully_delta() const override { return false; }
+    bool has_delta_lobe() const { return coating_->is_smooth(); }
+    bool is_fully_delta() const { return false; }
 
 private:
-    Rgb eval_upper(const Vec3f& wo, const Vec3f& wi) const override;
-    float pdf_upper(const Vec3f& wo, const Vec3f& wi) const override;
-    std::optional<BsdfSample> sample_upper(const Vec3f& wo, float u_lobe, std::array<float, 2> u) const override;
+    friend class TwoSidedBsdf<CoatedDiffuseBsdf>;
+    Rgb eval_upper(const Vec3f& wo, const Vec3f& wi) const;
+    float pdf_upper(const Vec3f& wo, const Vec3f& wi) const;
+    std::optional<BsdfSample> sample_upper(const Vec3f& wo, float u_lobe, std::array<float, 2> u) const;
 
     // Probability of sampling the coating rather than the base: their albedos' share at wo.
     float coating_probability(const Vec3f& wo) const;
 
-    const DielectricCoating& coating_;
+    const DielectricCoating* coating_;
     Rgb effective_reflectance_;  // R_eff
 };
 

@@ -8,18 +8,19 @@
 
 namespace isotrace {
 
-class ConductorBsdf final : public TwoSidedBsdf {
+class ConductorBsdf final : public TwoSidedBsdf<ConductorBsdf> {
 public:
     // Alphas >= 0, both zero or both positive.
     ConductorBsdf(const ComplexIor& ior, float alpha_x, float alpha_y);
 
-    bool has_delta_lobe() const override { return smooth_; }
-    bool is_fully_delta() const override { return smooth_; }
+    bool has_delta_lobe() const { return smooth_; }
+    bool is_fully_delta() const { return smooth_; }
 
 private:
-    Rgb eval_upper(const Vec3f& wo, const Vec3f& wi) const override;
-    float pdf_upper(const Vec3f& wo, const Vec3f& wi) const override;
-    std::optional<BsdfSample> sample_upper(const Vec3f& wo, float u_lobe, std::array<float, 2> u) const override;
+    friend class TwoSidedBsdf<ConductorBsdf>;
+    Rgb eval_upper(const Vec3f& wo, const Vec3f& wi) const;
+    float pdf_upper(const Vec3f& wo, const Vec3f& wi) const;
+    std::optional<BsdfSample> sample_upper(const Vec3f& wo, float u_lobe, std::array<float, 2> u) const;
 
     ComplexIor ior_;
     GgxDistribution ggx_;

@@ -12,18 +12,18 @@
 
 namespace isotrace {
 
-class DielectricBsdf final : public Bsdf {
+class DielectricBsdf final {
 public:
     // eta > 0, eta != 1 when rough; alphas >= 0, both zero or both positive. The tint multiplies transmission
     // only (a coloured glass body; the surface reflection stays white).
     DielectricBsdf(float eta, float alpha_x, float alpha_y, const Rgb& transmission_tint = Rgb(1.0f));
 
-    Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode = TransportMode::Radiance) const override;
-    float pdf(const Vec3f& wo, const Vec3f& wi) const override;
+    Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode = TransportMode::Radiance) const;
+    float pdf(const Vec3f& wo, const Vec3f& wi) const;
     std::optional<BsdfSample> sample(const Vec3f& wo, float u_lobe, std::array<float, 2> u,
-                                     TransportMode mode = TransportMode::Radiance) const override;
-    bool has_delta_lobe() const override { return smooth_; }
-    bool is_fully_delta() const override { return smooth_; }
+                                     TransportMode mode = TransportMode::Radiance) const;
+    bool has_delta_lobe() const { return smooth_; }
+    bool is_fully_delta() const { return smooth_; }
 
 private:
     // IOR on the far side over IOR on wo's side.

@@ -2,7 +2,6 @@
 // ("metal": "Au") or explicitly ("eta", "k" as RGB triples).
 #include "renderer/bsdf/conductor_bsdf.h"
 #include "renderer/bsdf/conductor_presets.h"
-#include "renderer/core/scratch_arena.h"
 #include "renderer/materials/roughness_parameters.h"
 #include "renderer/plugin/material.h"
 
@@ -13,8 +12,8 @@ class ConductorMaterial final : public Material {
 public:
     ConductorMaterial(const ComplexIor& ior, MicrofacetAlphas alphas) : ior_(ior), alphas_(alphas) {}
     Rgb albedo(const SurfaceHit&) const override { return normal_incidence_reflectance(); }
-    const Bsdf* bsdf(const SurfaceHit&, ScratchArena& arena) const override {
-        return arena.make<ConductorBsdf>(ior_, alphas_.x, alphas_.y);
+    SurfaceBsdf bsdf(const SurfaceHit&) const override {
+        return ConductorBsdf(ior_, alphas_.x, alphas_.y);
     }
 
 private:

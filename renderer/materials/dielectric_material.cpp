@@ -1,7 +1,6 @@
 // Glass-like dielectric: smooth (delta reflection and refraction) or rough GGX (Walter et al. 2007), with
 // interior index of refraction "ior" (exterior: vacuum) and an optional transmission tint.
 #include "renderer/bsdf/dielectric_bsdf.h"
-#include "renderer/core/scratch_arena.h"
 #include "renderer/materials/roughness_parameters.h"
 #include "renderer/plugin/material.h"
 
@@ -12,8 +11,8 @@ class DielectricMaterial final : public Material {
 public:
     DielectricMaterial(float ior, MicrofacetAlphas alphas, const Rgb& tint) : ior_(ior), alphas_(alphas), tint_(tint) {}
     Rgb albedo(const SurfaceHit&) const override { return tint_; }
-    const Bsdf* bsdf(const SurfaceHit&, ScratchArena& arena) const override {
-        return arena.make<DielectricBsdf>(ior_, alphas_.x, alphas_.y, tint_);
+    SurfaceBsdf bsdf(const SurfaceHit&) const override {
+        return DielectricBsdf(ior_, alphas_.x, alphas_.y, tint_);
     }
 
 private:

@@ -2,7 +2,6 @@
 // texture.
 
 #include "renderer/bsdf/lambert_bsdf.h"
-#include "renderer/core/scratch_arena.h"
 #include "renderer/materials/emission_profile.h"
 #include "renderer/plugin/material.h"
 #include "renderer/textures/colour_source.h"
@@ -20,8 +19,8 @@ public:
         return emission_.towards(hit, towards_viewer);
     }
     bool is_emissive() const override { return emission_.emits(); }
-    const Bsdf* bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        return arena.make<LambertBsdf>(albedo(hit));
+    SurfaceBsdf bsdf(const SurfaceHit& hit) const override {
+        return LambertBsdf(albedo(hit));
     }
 
 private:

@@ -1,7 +1,6 @@
 // Coated diffuse ("plastic"): a clear dielectric coating, smooth or rough, over a Lambertian base. The coating's
 // tables are built once per material.
 #include "renderer/bsdf/coated_diffuse_bsdf.h"
-#include "renderer/core/scratch_arena.h"
 #include "renderer/materials/roughness_parameters.h"
 #include "renderer/plugin/material.h"
 #include "renderer/textures/colour_source.h"
@@ -14,8 +13,8 @@ public:
     PlasticMaterial(ColourSource reflectance, float ior, float alpha)
         : reflectance_(std::move(reflectance)), coating_(ior, alpha) {}
     Rgb albedo(const SurfaceHit& hit) const override { return reflectance_.evaluate_reflectance(hit); }
-    const Bsdf* bsdf(const SurfaceHit& hit, ScratchArena& arena) const override {
-        return arena.make<CoatedDiffuseBsdf>(coating_, albedo(hit));
+    SurfaceBsdf bsdf(const SurfaceHit& hit) const override {
+        return CoatedDiffuseBsdf(coating_, albedo(hit));
     }
 
 private:

@@ -1,6 +1,7 @@
 #pragma once
-// Material: surface appearance. At a hit it provides the BSDF (allocated in the caller's scratch arena), the
-// albedo for the AOV and previews, and emitted radiance.
+// Material: surface appearance. At a hit it provides the BSDF (by value), the albedo for the AOV and previews,
+// and emitted radiance.
+#include "renderer/bsdf/surface_bsdf.h"
 #include "renderer/math/rgb.h"
 #include "renderer/math/vec3.h"
 #include "renderer/plugin/registry.h"
@@ -8,8 +9,6 @@
 namespace isotrace {
 
 struct SurfaceHit;
-class Bsdf;
-class ScratchArena;
 
 class Material {
 public:
@@ -22,10 +21,10 @@ public:
         return {};
     }
     virtual bool is_emissive() const { return false; }
-    // The scattering function at `hit`, or nullptr when the surface absorbs everything (pure emitters).
-    virtual const Bsdf* bsdf(const SurfaceHit& hit, ScratchArena& arena) const {
-        (void)hit, (void)arena;
-        return nullptr;
+    // The scattering function at `hit`; empty when the surface absorbs everything (pure emitters).
+    virtual SurfaceBsdf bsdf(const SurfaceHit& hit) const {
+        (void)hit;
+        return {};
     }
 };
 

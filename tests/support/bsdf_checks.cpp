@@ -116,7 +116,7 @@ SamplingFit direction_sampling_fit(const std::function<std::optional<Vec3f>(cons
     return fit;
 }
 
-SamplingFit sampling_fit(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
+SamplingFit sampling_fit(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
                          const std::function<double(const Vec3f&)>& pdf) {
     const auto sample = [&](const BsdfRandom& r) -> std::optional<Vec3f> {
         const std::optional<BsdfSample> s = bsdf.sample(wo, r.u_lobe, r.u);
@@ -126,7 +126,7 @@ SamplingFit sampling_fit(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_c
     return direction_sampling_fit(sample, sample_count, pdf);
 }
 
-SamplingFit sampling_fit(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count) {
+SamplingFit sampling_fit(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count) {
     return sampling_fit(bsdf, wo, sample_count, [&](const Vec3f& wi) { return double(bsdf.pdf(wo, wi)); });
 }
 
@@ -135,11 +135,11 @@ double sphere_integral(const std::function<double(const Vec3f&)>& f) {
     return std::accumulate(cells.begin(), cells.end(), 0.0);
 }
 
-double pdf_integral(const Bsdf& bsdf, const Vec3f& wo) {
+double pdf_integral(const SurfaceBsdf& bsdf, const Vec3f& wo) {
     return sphere_integral([&](const Vec3f& wi) { return double(bsdf.pdf(wo, wi)); });
 }
 
-AlbedoEstimate estimate_albedo(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count, TransportMode mode) {
+AlbedoEstimate estimate_albedo(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count, TransportMode mode) {
     double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
     for (std::size_t i = 0; i < sample_count; ++i) {
         const BsdfRandom r = bsdf_random(i);
@@ -160,7 +160,7 @@ AlbedoEstimate estimate_albedo(const Bsdf& bsdf, const Vec3f& wo, std::size_t sa
     return {Rgb(float(mean[0]), float(mean[1]), float(mean[2])), Rgb(float(error[0]), float(error[1]), float(error[2]))};
 }
 
-std::size_t count_bad_samples(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count, TransportMode mode) {
+std::size_t count_bad_samples(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count, TransportMode mode) {
     const auto close = [](float a, float b) { return std::abs(a - b) <= 1e-4f * std::max(std::abs(a), std::abs(b)) + 1e-12f; };
     std::size_t bad = 0;
     for (std::size_t i = 0; i < sample_count; ++i) {

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer/bsdf/bsdf.h"
+#include "renderer/bsdf/surface_bsdf.h"
 #include "tests/support/chi_square.h"
 
 namespace isotrace::test_support {
@@ -43,10 +43,10 @@ struct SamplingFit {
 // Histograms sample_count directions from bsdf.sample(wo, ...) over (cos theta, phi) of the whole sphere and
 // tests them against `pdf` integrated over each cell. Delta samples and failed samples land outside the grid,
 // where the expectation is the mass the pdf leaves unclaimed (1 - pdf_integral).
-SamplingFit sampling_fit(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
+SamplingFit sampling_fit(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
                          const std::function<double(const Vec3f&)>& pdf);
 // The same against bsdf.pdf().
-SamplingFit sampling_fit(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count);
+SamplingFit sampling_fit(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count);
 
 // Directions sampled by `sample` (empty = no direction) against `pdf`, as above; for samplers that are not
 // BSDFs (microfacet normals).
@@ -57,19 +57,19 @@ SamplingFit direction_sampling_fit(const std::function<std::optional<Vec3f>(cons
 // absolute 1e-7 per grid cell, so within 3e-4 for a density).
 double sphere_integral(const std::function<double(const Vec3f&)>& f);
 // Integral of bsdf.pdf(wo, .) over the sphere.
-double pdf_integral(const Bsdf& bsdf, const Vec3f& wo);
+double pdf_integral(const SurfaceBsdf& bsdf, const Vec3f& wo);
 
 struct AlbedoEstimate {
     Rgb mean;             // integral of f |cos| over the sphere, delta lobes included, in `mode`
     Rgb standard_error;   // of the mean
 };
 // Monte Carlo estimate from the weights of sample_count samples (the white furnace test).
-AlbedoEstimate estimate_albedo(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
+AlbedoEstimate estimate_albedo(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
                                TransportMode mode = TransportMode::Radiance);
 
 // Number of sample_count samples from wo that are non-finite, or non-delta yet disagree with eval() and pdf()
 // (weight != eval |cos| / pdf or pdf != pdf(), beyond float rounding).
-std::size_t count_bad_samples(const Bsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
+std::size_t count_bad_samples(const SurfaceBsdf& bsdf, const Vec3f& wo, std::size_t sample_count,
                               TransportMode mode = TransportMode::Radiance);
 
 }  // namespace isotrace::test_support

@@ -114,11 +114,12 @@ std::vector<Workload> suite_workloads() {
     using K = WorkloadKind;
     const std::vector<K> rays = {K::PrimaryRays, K::ShadowRays, K::BounceRays};
     const std::vector<K> rays_and_paths = {K::PrimaryRays, K::ShadowRays, K::BounceRays, K::PathTracer};
-    // Triangles (the Cornell box; the sweep-deformed bunny, traced as its mesh), blob groups of growing size
-    // (their scenes use the AOV integrator, so no path tracer workload), metacubes (and the polygoniser),
-    // superquadrics, CSG and multi-sided patches.
+    // Triangles (the Cornell box; Embree's tutorial box lit by a point, as tools/compare-embree renders it; the
+    // sweep-deformed bunny, traced as its mesh), blob groups of growing size (their scenes use the AOV integrator,
+    // so no path tracer workload), metacubes (and the polygoniser), superquadrics, CSG and multi-sided patches.
     const std::vector<std::pair<std::string, std::vector<K>>> scenes = {
         {"cornell_box", rays_and_paths},
+        {"embree_cornell_box", {K::PathTracer}},
         {"sweep_bunny", rays_and_paths},
         {"blobs_1k", rays},
         {"blobs_10k", rays},

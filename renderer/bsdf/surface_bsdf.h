@@ -1,0 +1,58 @@
+#pragma once
+// SurfaceBsdf: the scattering model a material builds at one shading point, held by value. The path tracer asks
+// it for several values per bounce; one switch on the model's type per call (a variant) lets each model's code
+// be inlined there, rather than a model allocated per hit and called through virtual functions, whose calls
+// could not be inlined (docs/decisions.md). Empty for surfaces that scatter nothing (pure emitters).
+#include <utility>
+#include <variant>
+
+#include "renderer/bsdf/coated_diffuse_bsdf.h"
+#include "renderer/bsdf/conductor_bsdf.h"
+#include "renderer/bsdf/dielectric_bsdf.h"
+#include "renderer/bsdf/lambert_bsdf.h"
+
+namespace isotrace {
+
+class SurfaceBsdf {
+public:
+    SurfaceBsdf() = default;  // scatters nothing
+    template <class Model>
+    SurfaceBsdf(Model model) : model_(std::move(model)) {}  // NOLINT(google-explicit-constructor): any model is one
+
+    bool scatters() const { return !std::holds_alternative<std::monostate>(model_); }
+
+    // The members of every model (renderer/bsdf/bsdf.h); for an empty SurfaceBsdf: black, zero, no sample.
+    Rgb eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode = TransportMode::Radiance) const {
+        return dispatch([&](const auto& m) { return m.eval(wo, wi, mode); }, Rgb());
+    }
+    float pdf(const Vec3f& wo, const Vec3f& wi) const {
+        return dispatch([&](const auto& m) { return m.pdf(wo, wi); }, 0.0f);
+    }
+    std::optional<BsdfSample> sample(const Vec3f& wo, float u_lobe, std::array<float, 2> u,
+                                     TransportMode mode = TransportMode::Radiance) const {
+        return dispatch([&](const auto& m) { return m.sample(wo, u_lobe, u, mode); }, std::optional<BsdfSample>());
+    }
+    bool has_delta_lobe() const {
+        return dispatch([](const auto& m) { return m.has_delta_lobe(); }, false);
+    }
+    bool is_fully_delta() const {
+        return dispatch([](const auto& m) { return m.is_fully_delta(); }, false);
+    }
+
+private:
+    template <class Call, class Result>
+    Result dispatch(Call&& call, Result none) const {
+        return std::visit(
+            [&](const auto& m) -> Result {
+                if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
+                    return none;
+                else
+                    return call(m);
+            },
+            model_);
+    }
+
+    std::variant<std::monostate, LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf> model_;
+};
+
+}  // namespace isotrace
