@@ -97,11 +97,13 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
 
         // Every bounce draws the same eight dimensions (two Sobol' blocks), used or not: the light point and
         // the BSDF direction each get a stratified pair, the three choices share the rest.
-        const std::array<float, 2> u_light_point = samples.next_2d();
-        const float u_light = samples.next_1d();
-        const float u_lobe = samples.next_1d();
-        const std::array<float, 2> u_direction = samples.next_2d();
-        const float u_roulette = samples.next_1d();
+        const Sampler::Block light_block = samples.next_block();
+        const Sampler::Block scatter_block = samples.next_block();
+        const std::array<float, 2> u_light_point = {light_block[0], light_block[1]};
+        const float u_light = light_block[2];
+        const float u_lobe = light_block[3];
+        const std::array<float, 2> u_direction = {scatter_block[0], scatter_block[1]};
+        const float u_roulette = scatter_block[2];
 
         // Next-event estimation: one light, chosen in proportion to power.
         if (!bsdf.is_fully_delta()) {

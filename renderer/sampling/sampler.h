@@ -59,6 +59,13 @@ public:
         dimension_ += 2;
         return pair;
     }
+    // The four dimensions of the next whole block (skipping to its start), as one Sobol' block: the path tracer
+    // takes a bounce's dimensions this way rather than one value at a time.
+    Sampler::Block next_block() {
+        const uint32_t block = (dimension_ + Sampler::kBlockDimensions - 1) / Sampler::kBlockDimensions;
+        dimension_ = (block + 1) * Sampler::kBlockDimensions;
+        return sampler_.sample_block(context_, block);
+    }
     // The dimension the next next_1d() call will use.
     uint32_t dimension() const { return dimension_; }
 

@@ -37,6 +37,20 @@ TEST(SampleStream, PairsStartOnEvenDimensions) {
     EXPECT_EQ(stream.dimension(), 4u);
 }
 
+TEST(SampleStream, BlocksStartOnMultiplesOfFour) {
+    const DimensionEchoSampler sampler;
+    SampleStream stream(sampler, {0, 0, 0});
+    const Sampler::Block first = stream.next_block();  // at a block start: dimensions 0-3
+    EXPECT_EQ(first[0], 0 / 1024.0f);
+    EXPECT_EQ(first[3], 3 / 1024.0f);
+    stream.next_1d();                                    // dimension 4; 5-7 are skipped
+    const Sampler::Block second = stream.next_block();
+    EXPECT_EQ(second[0], 8 / 1024.0f);
+    EXPECT_EQ(second[3], 11 / 1024.0f);
+    EXPECT_EQ(stream.dimension(), 12u);
+    EXPECT_EQ(stream.next_1d(), 12 / 1024.0f);
+}
+
 // Properties every sampler must have, checked for each concrete sampler.
 template <class ConcreteSampler>
 class EverySampler : public ::testing::Test {};
@@ -53,6 +67,8 @@ TYPED_TEST(EverySampler, StreamsMatchDirectSampleCalls) {
         EXPECT_EQ(pair[0], sampler.sample(key, 2));
         EXPECT_EQ(pair[1], sampler.sample(key, 3));
         for (uint32_t d = 4; d < 40; ++d) EXPECT_EQ(stream.next_1d(), sampler.sample(key, d)) << d;
+        const Sampler::Block block = stream.next_block();
+        for (uint32_t i = 0; i < Sampler::kBlockDimensions; ++i) EXPECT_EQ(block[i], sampler.sample(key, 40 + i)) << i;
     }
 }
 
