@@ -95,9 +95,15 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         const ShadingFrame frame(hit.shading_normal);
         const Vec3f wo = frame.to_local(towards_viewer);
 
-        // Every bounce draws the same eight dimensions (two Sobol' blocks), used or not: the light point and
-        // the BSDF direction each get a stratified pair, the three choices share the rest.
-        const Sampler::Block light_block = samples.next_block();
+        // Every bounce owns the same eight dimensions (two Sobol' blocks), used or not: the light point and
+        // the BSDF direction each get a stratified pair, the three choices share the rest. The first block is
+        // computed only when something reads it (with one delta light and a single-lobe BSDF nothing does); its
+        // dimensions are skipped either way, so every value keeps its dimension.
+        Sampler::Block light_block{};
+        if (!scene.light_sampling_is_deterministic() || bsdf.chooses_lobe())
+            light_block = samples.next_block();
+        else
+            samples.skip_block();
         const Sampler::Block scatter_block = samples.next_block();
         const std::array<float, 2> u_light_point = {light_block[0], light_block[1]};
         const float u_light = light_block[2];

@@ -8,6 +8,7 @@
 //   sample(wo, u_lobe, u, mode)    u_lobe picks a lobe, u the direction within it; empty when none is produced
 //   bool has_delta_lobe()          some lobe is a Dirac delta (light sampling cannot reach it)
 //   bool is_fully_delta()          every lobe is a Dirac delta (light sampling is useless)
+//   bool chooses_lobe()            sample() reads u_lobe (it picks one of several lobes); false: u_lobe is ignored
 #include <array>
 #include <cmath>
 #include <optional>

@@ -28,6 +28,7 @@ public:
 
     bool has_delta_lobe() const { return coating_->is_smooth(); }
     bool is_fully_delta() const { return false; }
+    bool chooses_lobe() const { return true; }  // coating or base
 
 private:
     friend class TwoSidedBsdf<CoatedDiffuseBsdf>;

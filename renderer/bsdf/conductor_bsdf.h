@@ -15,6 +15,7 @@ public:
 
     bool has_delta_lobe() const { return smooth_; }
     bool is_fully_delta() const { return smooth_; }
+    bool chooses_lobe() const { return false; }
 
 private:
     friend class TwoSidedBsdf<ConductorBsdf>;

@@ -24,6 +24,7 @@ public:
                                      TransportMode mode = TransportMode::Radiance) const;
     bool has_delta_lobe() const { return smooth_; }
     bool is_fully_delta() const { return smooth_; }
+    bool chooses_lobe() const { return true; }  // reflection or transmission
 
 private:
     // IOR on the far side over IOR on wo's side.

@@ -14,6 +14,7 @@ public:
 
     bool has_delta_lobe() const { return false; }
     bool is_fully_delta() const { return false; }
+    bool chooses_lobe() const { return false; }
 
 private:
     friend class TwoSidedBsdf<LambertBsdf>;

@@ -38,6 +38,9 @@ public:
     bool is_fully_delta() const {
         return dispatch([](const auto& m) { return m.is_fully_delta(); }, false);
     }
+    bool chooses_lobe() const {
+        return dispatch([](const auto& m) { return m.chooses_lobe(); }, false);
+    }
 
 private:
     template <class Call, class Result>

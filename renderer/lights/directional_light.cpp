@@ -12,6 +12,7 @@ public:
     DirectionalLight(const Vec3f& towards_light, const Rgb& irradiance)
         : towards_light_(towards_light), irradiance_(irradiance) {}
 
+    bool is_delta() const override { return true; }
     LightSample sample(const Vec3f&, std::array<float, 2>) const override {
         return {irradiance_, towards_light_, std::numeric_limits<float>::infinity(), 1.0f, true};
     }

@@ -20,6 +20,7 @@ public:
     SpotLight(const Vec3f& position, const Vec3f& axis, const Rgb& intensity, float cos_outer, float cos_inner)
         : position_(position), axis_(axis), intensity_(intensity), cos_outer_(cos_outer), cos_inner_(cos_inner) {}
 
+    bool is_delta() const override { return true; }
     LightSample sample(const Vec3f& point, std::array<float, 2>) const override {
         const Vec3f offset = position_ - point;
         const float distance_squared = dot(offset, offset);

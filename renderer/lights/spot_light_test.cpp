@@ -1,5 +1,6 @@
 // Spot light: full intensity / d^2 inside the inner cone, nothing outside the outer cone, a smooth falloff
-// between, and scene-format errors.
+// between, and scene-format errors. With the point and directional lights: delta lights say so, and sample the
+// same for every random pair (the path tracer then leaves the light's dimensions uncomputed).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,13 +12,14 @@
 namespace isotrace {
 namespace {
 
-std::unique_ptr<Light> spot(const std::string& json) {
+std::unique_ptr<Light> light_from(const std::string& json) {
     const testing::ParsedScene parsed(json);
     return light_registry().create(parsed.root());
 }
 
 TEST(SpotLight, IntensityFallsWithDistanceSquaredOnTheAxis) {
-    const auto light = spot(R"({"type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0], "intensity": 8})");
+    const auto light =
+        light_from(R"({"type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0], "intensity": 8})");
     const LightSample s = light->sample({0, 0, 0}, {0.5f, 0.5f});
     EXPECT_TRUE(s.is_delta);
     EXPECT_FLOAT_EQ(s.radiance.r, 8.0f / 16.0f);
@@ -26,7 +28,7 @@ TEST(SpotLight, IntensityFallsWithDistanceSquaredOnTheAxis) {
 }
 
 TEST(SpotLight, ConeAndFalloff) {
-    const auto light = spot(
+    const auto light = light_from(
         R"({"type": "spot", "position": [0, 1, 0], "target": [0, 0, 0], "intensity": 1, "cone_angle": 40, "falloff_start": 20})");
     const auto radiance_at_angle = [&](double degrees) {
         const double a = degrees * std::numbers::pi / 180;
@@ -43,12 +45,34 @@ TEST(SpotLight, ConeAndFalloff) {
 }
 
 TEST(SpotLight, BadParametersAreReported) {
-    EXPECT_THROW(spot(R"({"type": "spot", "position": [0, 1, 0]})"), InputError);
-    EXPECT_THROW(spot(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "target": [0, 0, 0]})"),
+    EXPECT_THROW(light_from(R"({"type": "spot", "position": [0, 1, 0]})"), InputError);
+    EXPECT_THROW(light_from(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "target": [0, 0, 0]})"),
                  InputError);
-    EXPECT_THROW(spot(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0]})"), InputError);
-    EXPECT_THROW(spot(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "cone_angle": 20, "falloff_start": 30})"),
+    EXPECT_THROW(light_from(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0]})"), InputError);
+    EXPECT_THROW(light_from(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "cone_angle": 20, "falloff_start": 30})"),
                  InputError);
+}
+
+TEST(DeltaLights, SampleTheSameForEveryRandomPair) {
+    for (const char* json : {R"({"type": "point", "position": [0, 2, 0], "intensity": 3})",
+                             R"({"type": "spot", "position": [0, 2, 0], "target": [0, 0, 0], "intensity": 3})",
+                             R"({"type": "directional", "direction": [0, -1, 0.2], "irradiance": 2})"}) {
+        const auto light = light_from(json);
+        light->preprocess(Bounds3f{{-1, -1, -1}, {1, 1, 1}});
+        EXPECT_TRUE(light->is_delta()) << json;
+        const Vec3f point{0.1f, 0.0f, -0.2f};
+        const LightSample first = light->sample(point, {0.0f, 0.0f});
+        for (const std::array<float, 2> u : {std::array{0.3f, 0.9f}, std::array{0.99f, 0.01f}}) {
+            const LightSample other = light->sample(point, u);
+            EXPECT_TRUE(other.radiance == first.radiance && other.direction == first.direction &&
+                        other.distance == first.distance && other.pdf == first.pdf)
+                << json;
+        }
+    }
+}
+
+TEST(DeltaLights, AnEnvironmentIsNotOne) {
+    EXPECT_FALSE(light_from(R"({"type": "environment", "radiance": 1})")->is_delta());
 }
 
 }  // namespace

@@ -40,6 +40,8 @@ public:
         return {};
     }
     virtual bool is_infinite() const { return false; }
+    // A point or a direction (point, spot, directional): sample() returns the same for every u.
+    virtual bool is_delta() const { return false; }
 
     // Emitted power (max over channels), for choosing lights in proportion to it. Lights at infinity need the
     // scene's extent, given to preprocess() after the scene is built.

@@ -66,6 +66,12 @@ public:
         dimension_ = (block + 1) * Sampler::kBlockDimensions;
         return sampler_.sample_block(context_, block);
     }
+    // Moves past the next whole block as next_block() does, without computing it: for dimensions that no one
+    // reads this time, so that the dimensions after them keep their numbers.
+    void skip_block() {
+        dimension_ = ((dimension_ + Sampler::kBlockDimensions - 1) / Sampler::kBlockDimensions + 1) *
+                     Sampler::kBlockDimensions;
+    }
     // The dimension the next next_1d() call will use.
     uint32_t dimension() const { return dimension_; }
 

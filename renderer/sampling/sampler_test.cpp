@@ -51,6 +51,17 @@ TEST(SampleStream, BlocksStartOnMultiplesOfFour) {
     EXPECT_EQ(stream.next_1d(), 12 / 1024.0f);
 }
 
+TEST(SampleStream, SkippingABlockKeepsTheDimensionsThatFollow) {
+    const DimensionEchoSampler sampler;
+    SampleStream skipping(sampler, {0, 0, 0}), reading(sampler, {0, 0, 0});
+    skipping.next_1d();
+    reading.next_1d();
+    skipping.skip_block();  // dimensions 4-7, as next_block() would give them
+    reading.next_block();
+    EXPECT_EQ(skipping.dimension(), reading.dimension());
+    EXPECT_EQ(skipping.next_block(), reading.next_block());
+}
+
 // Properties every sampler must have, checked for each concrete sampler.
 template <class ConcreteSampler>
 class EverySampler : public ::testing::Test {};

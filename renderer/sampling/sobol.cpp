@@ -92,7 +92,9 @@ constexpr ByteTables kByteTables = bit_reversed_byte_tables();
 
 Uint4 sobol_point_bit_reversed(uint32_t reversed_index) {
     static_assert(kSobolDimensions == 4);
-    const auto entry = [](std::size_t position, uint32_t byte) { return std::bit_cast<Uint4>(kByteTables[position][byte]); };
+    const auto entry = [](std::size_t position, uint32_t byte) {
+        return std::bit_cast<Uint4>(kByteTables[position][byte]);
+    };
     return entry(0, reversed_index & 0xFFu) ^ entry(1, (reversed_index >> 8) & 0xFFu) ^
            entry(2, (reversed_index >> 16) & 0xFFu) ^ entry(3, reversed_index >> 24);
 }

@@ -195,6 +195,7 @@ void RenderScene::build_lights() {
         }
         powers.push_back(std::max(0.0f, light->power()));
     }
+    light_sampling_is_deterministic_ = all_lights_.size() <= 1 && (all_lights_.empty() || all_lights_[0]->is_delta());
     if (powers.empty()) return;
     light_distribution_ = std::make_unique<Distribution1D>(powers);
     for (std::size_t i = 0; i < all_lights_.size(); ++i)

@@ -83,6 +83,8 @@ public:
     // False when no ray can gather emission by hitting something (only delta lights: no emissive surface, no
     // environment): a path's last ray, which would only look for emission, need not be traced.
     bool emission_can_be_hit() const { return emission_can_be_hit_; }
+    // True when choosing and sampling a light reads no random number: at most one light, and that a delta light.
+    bool light_sampling_is_deterministic() const { return light_sampling_is_deterministic_; }
 
     const std::vector<SceneObject>& objects() const { return objects_; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
@@ -101,6 +103,7 @@ private:
     std::unique_ptr<Distribution1D> light_distribution_;
     std::unordered_map<const Light*, float> light_probabilities_;
     bool emission_can_be_hit_ = false;
+    bool light_sampling_is_deterministic_ = true;
     BuildStatistics build_statistics_;
 
     void build_lights();

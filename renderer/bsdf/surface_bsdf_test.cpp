@@ -1,0 +1,55 @@
+// SurfaceBsdf: the one switch in front of the models. Its empty state scatters nothing, and a model's
+// chooses_lobe() is what the path tracer trusts to leave u_lobe's dimensions uncomputed: when it says false,
+// sample() must not depend on u_lobe; when it says true, it must (or the flag costs work for nothing).
+#include "renderer/bsdf/surface_bsdf.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "tests/support/bsdf_checks.h"
+
+namespace isotrace {
+namespace {
+
+// Whether sample() gives anything different for a low and a high u_lobe, over a spread of wo and u.
+bool sample_depends_on_u_lobe(const SurfaceBsdf& bsdf) {
+    for (const double theta : {0.0, 30.0, 60.0, 85.0, 120.0, 170.0})
+        for (std::size_t i = 0; i < 64; ++i) {
+            const Vec3f wo = test_support::view_at(theta);
+            const test_support::BsdfRandom r = test_support::bsdf_random(i);
+            const auto low = bsdf.sample(wo, 0.02f, r.u), high = bsdf.sample(wo, 0.98f, r.u);
+            if (low.has_value() != high.has_value()) return true;
+            if (low && (low->wi != high->wi || !(low->weight == high->weight) || low->pdf != high->pdf)) return true;
+        }
+    return false;
+}
+
+TEST(SurfaceBsdf, EmptyScattersNothing) {
+    const SurfaceBsdf none;
+    EXPECT_FALSE(none.scatters());
+    EXPECT_TRUE(none.eval({0, 0, 1}, {0, 0, 1}).is_black());
+    EXPECT_EQ(none.pdf({0, 0, 1}, {0, 0, 1}), 0.0f);
+    EXPECT_FALSE(none.sample({0, 0, 1}, 0.5f, {0.5f, 0.5f}));
+    EXPECT_FALSE(none.chooses_lobe());
+}
+
+TEST(SurfaceBsdf, ChoosesLobeExactlyWhenSamplingReadsTheLobeNumber) {
+    const DielectricCoating smooth_coating(1.5f, 0), rough_coating(1.5f, 0.3f);
+    const std::vector<SurfaceBsdf> models = {
+        LambertBsdf(Rgb(0.5f)),
+        ConductorBsdf({Rgb(0.2f), Rgb(3.0f)}, 0, 0),
+        ConductorBsdf({Rgb(0.2f), Rgb(3.0f)}, 0.3f, 0.3f),
+        DielectricBsdf(1.5f, 0, 0),
+        DielectricBsdf(1.5f, 0.3f, 0.3f),
+        CoatedDiffuseBsdf(smooth_coating, Rgb(0.5f)),
+        CoatedDiffuseBsdf(rough_coating, Rgb(0.5f)),
+    };
+    for (std::size_t m = 0; m < models.size(); ++m) {
+        EXPECT_TRUE(models[m].scatters()) << m;
+        EXPECT_EQ(models[m].chooses_lobe(), sample_depends_on_u_lobe(models[m])) << "model " << m;
+    }
+}
+
+}  // namespace
+}  // namespace isotrace
