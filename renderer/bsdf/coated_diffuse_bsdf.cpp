@@ -18,7 +18,8 @@ Rgb effective_reflectance(const Rgb& r, float internal_reflectance) {
 }  // namespace
 
 CoatedDiffuseBsdf::CoatedDiffuseBsdf(const DielectricCoating& coating, const Rgb& reflectance)
-    : coating_(&coating), effective_reflectance_(effective_reflectance(reflectance, coating.internal_diffuse_reflectance())) {}
+    : coating_(&coating),
+      effective_reflectance_(effective_reflectance(reflectance, coating.internal_diffuse_reflectance())) {}
 
 float CoatedDiffuseBsdf::coating_probability(const Vec3f& wo) const {
     const float coat = coating_->reflectance(wo.z);

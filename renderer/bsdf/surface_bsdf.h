@@ -3,6 +3,7 @@
 // it for several values per bounce; one switch on the model's type per call (a variant) lets each model's code
 // be inlined there, rather than a model allocated per hit and called through virtual functions, whose calls
 // could not be inlined (docs/decisions.md). Empty for surfaces that scatter nothing (pure emitters).
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -14,10 +15,14 @@
 namespace isotrace {
 
 class SurfaceBsdf {
+    using Models = std::variant<std::monostate, LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf>;
+
 public:
     SurfaceBsdf() = default;  // scatters nothing
+    // Implicit: any of the models is a SurfaceBsdf.
     template <class Model>
-    SurfaceBsdf(Model model) : model_(std::move(model)) {}  // NOLINT(google-explicit-constructor): any model is one
+        requires(!std::is_same_v<Model, SurfaceBsdf> && std::is_constructible_v<Models, Model>)
+    SurfaceBsdf(Model model) : model_(std::move(model)) {}  // NOLINT(google-explicit-constructor)
 
     bool scatters() const { return !std::holds_alternative<std::monostate>(model_); }
 
@@ -55,7 +60,7 @@ private:
             model_);
     }
 
-    std::variant<std::monostate, LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf> model_;
+    Models model_;
 };
 
 }  // namespace isotrace
