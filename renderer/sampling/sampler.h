@@ -61,21 +61,20 @@ public:
     }
     // The four dimensions of the next whole block (skipping to its start), as one Sobol' block: the path tracer
     // takes a bounce's dimensions this way rather than one value at a time.
-    Sampler::Block next_block() {
-        const uint32_t block = (dimension_ + Sampler::kBlockDimensions - 1) / Sampler::kBlockDimensions;
-        dimension_ = (block + 1) * Sampler::kBlockDimensions;
-        return sampler_.sample_block(context_, block);
-    }
+    Sampler::Block next_block() { return sampler_.sample_block(context_, take_block()); }
     // Moves past the next whole block as next_block() does, without computing it: for dimensions that no one
     // reads this time, so that the dimensions after them keep their numbers.
-    void skip_block() {
-        dimension_ = ((dimension_ + Sampler::kBlockDimensions - 1) / Sampler::kBlockDimensions + 1) *
-                     Sampler::kBlockDimensions;
-    }
+    void skip_block() { take_block(); }
     // The dimension the next next_1d() call will use.
     uint32_t dimension() const { return dimension_; }
 
 private:
+    // The index of the next whole block (the current one if the counter is at its start), the counter moved past it.
+    uint32_t take_block() {
+        const uint32_t block = (dimension_ + Sampler::kBlockDimensions - 1) / Sampler::kBlockDimensions;
+        dimension_ = (block + 1) * Sampler::kBlockDimensions;
+        return block;
+    }
     // Inline: several calls per bounce on the path tracer's hottest loop.
     float value(uint32_t dimension) {
         const uint32_t block = dimension / Sampler::kBlockDimensions;
