@@ -67,6 +67,7 @@ Distribution1D::ContinuousSample Distribution1D::sample_continuous(float u) cons
 }
 
 Distribution1D::DiscreteSample Distribution1D::sample_discrete(float u) const {
+    if (weights_.size() == 1) return {0, 1.0f};  // what the search and the division give (w / w), without them
     const size_t index = find_bin(u);
     return {index, probability(index)};
 }

@@ -108,6 +108,13 @@ TEST(Distribution1D, SingleBinIsUniform) {
     const auto sample = distribution.sample_continuous(0.25f);
     EXPECT_FLOAT_EQ(sample.x, 0.25f);
     EXPECT_FLOAT_EQ(sample.pdf, 1.0f);
+    for (const float u : {0.0f, 0.5f, 0.999f}) {
+        EXPECT_EQ(distribution.sample_discrete(u).index, 0u);
+        EXPECT_EQ(distribution.sample_discrete(u).probability, distribution.probability(0));
+        EXPECT_EQ(distribution.probability(0), 1.0f);
+    }
+    const Distribution1D all_zero(std::vector<float>{0});
+    EXPECT_EQ(all_zero.sample_discrete(0.3f).probability, all_zero.probability(0));
 }
 
 }  // namespace

@@ -204,7 +204,6 @@ void RenderScene::build_lights() {
 
 LightChoice RenderScene::choose_light(float u) const {
     if (!light_distribution_) return {};
-    if (all_lights_.size() == 1) return {all_lights_.front(), 1.0f};  // what the distribution gives, without the search
     const Distribution1D::DiscreteSample pick = light_distribution_->sample_discrete(u);
     return {all_lights_[pick.index], pick.probability};
 }
