@@ -94,20 +94,19 @@ constexpr double kUnset = std::numeric_limits<double>::infinity();
 inline int sign_of(double value) { return value > 0 ? 1 : -1; }
 
 // w·Σₖ βₖ·xᵏ as a polynomial in s, for a kernel piece Σₖ βₖ·xᵏ and a quadratic x(s) (Horner on coefficients).
+// Each step multiplies by x(s) in place, from the highest coefficient down (a new coefficient reads only lower old
+// ones): no array is cleared or copied.
 inline Polynomial compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
     constexpr std::size_t kSize = 2 * (std::tuple_size_v<decltype(piece.coefficients)> - 1) + 1;
-    std::array<double, kSize> acc{};
+    std::array<double, kSize> acc;
     acc[0] = weight * piece.coefficients[std::size_t(piece.degree)];
-    std::size_t degree = 0;
+    std::size_t degree = 0;  // even
     for (int k = piece.degree - 1; k >= 0; --k) {
-        std::array<double, kSize> next{};
-        for (std::size_t i = 0; i <= degree; ++i) {
-            next[i] += acc[i] * q.c0;
-            next[i + 1] += acc[i] * q.c1;
-            next[i + 2] += acc[i] * q.c2;
-        }
-        next[0] += weight * piece.coefficients[std::size_t(k)];
-        acc = next;
+        acc[degree + 2] = acc[degree] * q.c2;
+        acc[degree + 1] = degree == 0 ? acc[0] * q.c1 : acc[degree - 1] * q.c2 + acc[degree] * q.c1;
+        for (std::size_t i = degree; i >= 2; --i) acc[i] = acc[i - 2] * q.c2 + acc[i - 1] * q.c1 + acc[i] * q.c0;
+        if (degree > 0) acc[1] = acc[0] * q.c1 + acc[1] * q.c0;
+        acc[0] = acc[0] * q.c0 + weight * piece.coefficients[std::size_t(k)];
         degree += 2;
     }
     return Polynomial(std::span<const double>(acc.data(), degree + 1));

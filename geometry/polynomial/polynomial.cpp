@@ -35,22 +35,6 @@ Polynomial Polynomial::from_roots(std::span<const double> roots, double leading)
     return product;
 }
 
-double Polynomial::evaluate(double t) const {
-    double value = coefficients_[degree_];
-    for (int i = degree_ - 1; i >= 0; --i) value = value * t + coefficients_[i];
-    return value;
-}
-
-ValueAndDerivative Polynomial::evaluate_with_derivative(double t) const {
-    double value = coefficients_[degree_];
-    double derivative = 0;
-    for (int i = degree_ - 1; i >= 0; --i) {
-        derivative = derivative * t + value;
-        value = value * t + coefficients_[i];
-    }
-    return {value, derivative};
-}
-
 double Polynomial::evaluation_error_bound(double t) const {
     const double magnitude_t = std::abs(t);
     double magnitude = std::abs(coefficients_[degree_]);
@@ -69,19 +53,6 @@ Polynomial Polynomial::derivative() const {
     if (degree_ == 0) return result;
     for (int i = 1; i <= degree_; ++i) result.coefficients_[i - 1] = i * coefficients_[i];
     result.degree_ = degree_ - 1;
-    return result;
-}
-
-Polynomial Polynomial::compose_linear(double offset, double scale) const {
-    // Horner's scheme on polynomials: result = (...(cₙ·s + cₙ₋₁)·s + ...) with s = offset + scale·u.
-    Polynomial result{coefficients_[degree_]};
-    for (int i = degree_ - 1; i >= 0; --i) {
-        for (int k = result.degree_ + 1; k >= 1; --k)
-            result.coefficients_[k] = result.coefficients_[k] * offset + result.coefficients_[k - 1] * scale;
-        result.coefficients_[0] = result.coefficients_[0] * offset + coefficients_[i];
-        ++result.degree_;
-    }
-    result.drop_zero_leading_coefficients();
     return result;
 }
 
@@ -106,13 +77,6 @@ Polynomial Polynomial::normalised() const {
     Polynomial result = *this;
     for (int i = 0; i <= degree_; ++i) result.coefficients_[i] = std::ldexp(coefficients_[i], -exponent);
     return result;
-}
-
-Polynomial& Polynomial::operator+=(const Polynomial& other) {
-    degree_ = std::max(degree_, other.degree_);
-    for (int i = 0; i <= other.degree_; ++i) coefficients_[i] += other.coefficients_[i];
-    drop_zero_leading_coefficients();
-    return *this;
 }
 
 Polynomial& Polynomial::operator-=(const Polynomial& other) {
@@ -174,10 +138,6 @@ Polynomial Polynomial::divide(const Polynomial& divisor, double relative_noise, 
     rest.degree_ = std::min(degree_, std::max(n - 1, 0));
     rest.drop_zero_leading_coefficients();
     return rest;
-}
-
-void Polynomial::drop_zero_leading_coefficients() {
-    while (degree_ > 0 && coefficients_[degree_] == 0) --degree_;
 }
 
 }  // namespace isotrace

@@ -1,6 +1,7 @@
 #pragma once
 // A real polynomial of bounded degree in double precision, stored in a fixed array so that root finders can
 // build derivatives and reparametrisations on the stack (no heap, cheap to copy).
+#include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <span>
@@ -77,5 +78,47 @@ private:
     std::array<double, kMaxPolynomialDegree + 1> coefficients_{};
     int degree_ = 0;
 };
+
+// The operations of the blob sweep's inner loops, inline so that they fold into their callers.
+inline double Polynomial::evaluate(double t) const {
+    double value = coefficients_[degree_];
+    for (int i = degree_ - 1; i >= 0; --i) value = value * t + coefficients_[i];
+    return value;
+}
+
+inline ValueAndDerivative Polynomial::evaluate_with_derivative(double t) const {
+    double value = coefficients_[degree_];
+    double derivative = 0;
+    for (int i = degree_ - 1; i >= 0; --i) {
+        derivative = derivative * t + value;
+        value = value * t + coefficients_[i];
+    }
+    return {value, derivative};
+}
+
+inline Polynomial Polynomial::compose_linear(double offset, double scale) const {
+    // Horner's scheme on polynomials: result = (...(cₙ·s + cₙ₋₁)·s + ...) with s = offset + scale·u.
+    Polynomial result;
+    result.coefficients_[0] = coefficients_[degree_];
+    for (int i = degree_ - 1; i >= 0; --i) {
+        for (int k = result.degree_ + 1; k >= 1; --k)
+            result.coefficients_[k] = result.coefficients_[k] * offset + result.coefficients_[k - 1] * scale;
+        result.coefficients_[0] = result.coefficients_[0] * offset + coefficients_[i];
+        ++result.degree_;
+    }
+    result.drop_zero_leading_coefficients();
+    return result;
+}
+
+inline Polynomial& Polynomial::operator+=(const Polynomial& other) {
+    degree_ = std::max(degree_, other.degree_);
+    for (int i = 0; i <= other.degree_; ++i) coefficients_[i] += other.coefficients_[i];
+    drop_zero_leading_coefficients();
+    return *this;
+}
+
+inline void Polynomial::drop_zero_leading_coefficients() {
+    while (degree_ > 0 && coefficients_[degree_] == 0) --degree_;
+}
 
 }  // namespace isotrace
