@@ -93,12 +93,20 @@ constexpr double kUnset = std::numeric_limits<double>::infinity();
 
 inline int sign_of(double value) { return value > 0 ? 1 : -1; }
 
+// An element's term of the sum on one piece: a kernel piece (degree ≤ 3 in x = r²/R²) composed with x(s), a
+// quadratic in s, so of degree ≤ 6. A plain array: the sum adds whole arrays, and no Polynomial is built per term.
+struct Term {
+    static constexpr std::size_t kSize = 2 * (std::tuple_size_v<decltype(FieldPiece::coefficients)> - 1) + 1;
+    std::array<double, kSize> coefficients;  // [0, degree] are set
+    int degree;
+};
+
 // w·Σₖ βₖ·xᵏ as a polynomial in s, for a kernel piece Σₖ βₖ·xᵏ and a quadratic x(s) (Horner on coefficients).
 // Each step multiplies by x(s) in place, from the highest coefficient down (a new coefficient reads only lower old
 // ones): no array is cleared or copied.
-inline Polynomial compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
-    constexpr std::size_t kSize = 2 * (std::tuple_size_v<decltype(piece.coefficients)> - 1) + 1;
-    std::array<double, kSize> acc;
+inline Term compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
+    Term term;
+    auto& acc = term.coefficients;
     acc[0] = weight * piece.coefficients[std::size_t(piece.degree)];
     std::size_t degree = 0;  // even
     for (int k = piece.degree - 1; k >= 0; --k) {
@@ -109,7 +117,8 @@ inline Polynomial compose_with_quadratic(const FieldPiece& piece, double weight,
         acc[0] = acc[0] * q.c0 + weight * piece.coefficients[std::size_t(k)];
         degree += 2;
     }
-    return Polynomial(std::span<const double>(acc.data(), degree + 1));
+    term.degree = int(degree);
+    return term;
 }
 
 struct Range {
@@ -182,7 +191,7 @@ private:
         bool hard_cube;          // the element's
         // Its term of the sum on the current piece (polynomial pieces), once composed. Optional, so that joining
         // zeroes no polynomial (a rep stos per element, perf).
-        std::optional<Polynomial> contribution;
+        std::optional<field_sweep_detail::Term> contribution;
         MetacubeRaySlices slices;
     };
 
@@ -339,7 +348,9 @@ void FieldSweep<Kernel>::drop_finished() {
 template <class Kernel>
 const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
     if (sum_valid_) return sum_;
-    sum_ = Polynomial{-threshold_};
+    std::array<double, field_sweep_detail::Term::kSize> sum{};
+    sum[0] = -threshold_;
+    int degree = 0;
     sum_magnitude_ = {};
     sum_magnitude_[0] = threshold_;
     sum_terms_ = 1;
@@ -347,20 +358,23 @@ const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
         if (!a.kernel_piece || !a.kernel_piece->is_polynomial) continue;
         if (!a.contribution) {
             if (a.hard_cube) {
-                a.contribution = Polynomial{a.weight};
+                a.contribution = field_sweep_detail::Term{{a.weight}, 0};
             } else {
                 // The unit piece is a polynomial in x = r²/R²: compose it with the quadratic x(s) = q(s)/R².
                 const QuadraticAbout x{a.q.t_ref, a.q.c0 * a.inverse_radius2, a.q.c1 * a.inverse_radius2,
                                        a.q.c2 * a.inverse_radius2};
-                a.contribution =
-                    field_sweep_detail::compose_with_quadratic(*a.kernel_piece, a.weight, x);
+                a.contribution = field_sweep_detail::compose_with_quadratic(*a.kernel_piece, a.weight, x);
             }
         }
-        const Polynomial& term = *a.contribution;
-        sum_ += term;
-        for (int i = 0; i <= term.degree(); ++i) sum_magnitude_[std::size_t(i)] += std::abs(term[i]);
+        const field_sweep_detail::Term& term = *a.contribution;
+        for (int i = 0; i <= term.degree; ++i) {
+            sum[std::size_t(i)] += term.coefficients[std::size_t(i)];
+            sum_magnitude_[std::size_t(i)] += std::abs(term.coefficients[std::size_t(i)]);
+        }
+        degree = std::max(degree, term.degree);
         ++sum_terms_;
     }
+    sum_ = Polynomial(std::span<const double>(sum.data(), std::size_t(degree) + 1));
     sum_valid_ = true;
     return sum_;
 }
