@@ -906,6 +906,11 @@ problems = []
 machine = report["machine"]
 for key in ("cpu", "cores", "embree_isa", "embree_version", "compiler", "flags", "isotrace_version", "commit"):
     if not machine.get(key): problems.append("machine lacks " + key)
+# The commit of the build, not of the last configure (regression: it was recorded when CMake configured).
+import subprocess
+head = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True)
+if head.returncode == 0 and machine.get("commit", "").split("-")[0] != head.stdout.strip():
+    problems.append("commit %r is not HEAD %s" % (machine.get("commit"), head.stdout.strip()))
 if report["isotrace_bench"] != 2: problems.append("format version")
 if report["settings"]["threads"] != [1, 2]: problems.append("threads %r" % report["settings"]["threads"])
 names = [w["name"] for w in report["workloads"]]

@@ -1,7 +1,7 @@
 #pragma once
-// How this isotrace binary was built, recorded by CMake when the build was configured (tools/CMakeLists.txt):
-// the compiler, its flags and the git commit of the checkout ("unknown" outside a git checkout; a commit made
-// after configuring shows only after CMake runs again).
+// How this isotrace binary was built (tools/CMakeLists.txt): the compiler and its flags, recorded when CMake
+// configured the build, and the git commit of the checkout, recorded at every build ("unknown" outside a git
+// checkout, "-dirty" appended when tracked files had uncommitted changes).
 #include <string>
 
 namespace isotrace::cli {
@@ -10,7 +10,7 @@ struct BuildDescription {
     std::string compiler;    // CMAKE_CXX_COMPILER_ID and version: "GNU 12.2.0"
     std::string flags;       // CMAKE_CXX_FLAGS with the build type's flags
     std::string build_type;  // "Release"
-    std::string commit;      // git rev-parse HEAD at configure time
+    std::string commit;      // git rev-parse HEAD when built, e.g. "0123…cdef" or "0123…cdef-dirty"
 };
 
 BuildDescription build_description();

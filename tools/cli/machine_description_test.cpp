@@ -14,7 +14,11 @@ TEST(MachineDescription, HasEveryField) {
     EXPECT_FALSE(machine["compiler"].get<std::string>().empty());
     EXPECT_EQ(machine["embree_version"].get<std::string>().substr(0, 2), "3.");
     const std::string commit = machine["commit"].get<std::string>();
-    EXPECT_TRUE(commit == "unknown" || commit.size() == 40) << commit;
+    // 40 hex digits, "-dirty" after them for a build of uncommitted changes, or "unknown" outside a git checkout.
+    const std::string hash = commit.substr(0, commit.find('-'));
+    EXPECT_TRUE(commit == "unknown" || (hash.size() == 40 && hash.find_first_not_of("0123456789abcdef") == std::string::npos &&
+                                        (commit.size() == 40 || commit.substr(40) == "-dirty")))
+        << commit;
 }
 
 TEST(MachineDescription, IsaFromCpuFlags) {
