@@ -219,6 +219,10 @@ private:
     // from each element's own range: f is monotone in r², so its extremes are at the ends of the element's r²
     // range. A few operations per element, no polynomial formed.
     field_sweep_detail::Range elements_range(double t0, double t1, bool non_polynomial_only) const;
+    // Only the upper bound of elements_range(t0, t1, false), one kernel evaluation per element: where the sweep is
+    // outside (F ≤ T) and no hard cube's step can lift F, only F < T needs proving, and about a third of the
+    // range's work is the lower bound.
+    double elements_upper_bound(double t0, double t1) const;
     double hard_cube_step_before(double t) const;
     // The kernel on x = r²/R², zero beyond the support (rounding can put a support end a hair past x = 1). Without a
     // branch: in elements_range which side of 1 an element's range ends on is data (evaluated at min(x, 1), masked).
@@ -242,6 +246,7 @@ private:
     std::array<double, kMaxPolynomialDegree + 1> sum_magnitude_{};  // Σ |coefficients| of its terms and T
     int sum_terms_ = 0;
     int non_polynomial_ = 0;  // counting elements whose current kernel piece is not a polynomial
+    bool hard_cube_joined_ = false;  // a hard cube joined this sweep (F may step)
 };
 
 template <class Kernel>
@@ -314,6 +319,7 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
         const Metacube& element = elements_[candidate.index];
         const auto join = [&](auto&& slice) {
             ++work.joined;
+            hard_cube_joined_ = hard_cube_joined_ || element.is_hard_cube();
             enter_piece(joined_.emplace_back(candidate.index, element, slice), t);
         };
         if (element.is_metaball()) {
@@ -460,6 +466,23 @@ field_sweep_detail::Range FieldSweep<Kernel>::elements_range(double t0, double t
 }
 
 template <class Kernel>
+double FieldSweep<Kernel>::elements_upper_bound(double t0, double t1) const {
+    double high = 0;
+    for (const Active& a : joined_) {
+        if (!a.kernel_piece) continue;
+        double f = 1;  // a hard cube counts its weight wherever it counts
+        if (!a.hard_cube) {
+            // f is non-increasing in r²: largest at the nearest point for a positive weight, at the farthest for a
+            // negative one.
+            const field_sweep_detail::Range r2 = field_sweep_detail::quadratic_range(a.q, a.q_vertex, t0, t1);
+            f = unit_value((a.weight > 0 ? r2.low : r2.high) * a.inverse_radius2);
+        }
+        high += a.weight * f;
+    }
+    return high;
+}
+
+template <class Kernel>
 double FieldSweep<Kernel>::value(double t) const {
     double sum = -threshold_;
     for (const Active& a : joined_) {
@@ -507,6 +530,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
     work.candidates += candidates_.size();
     joined_.clear();
     non_polynomial_ = 0;
+    hard_cube_joined_ = false;
     t_ref_ = stretch.t_begin;
     sum_valid_ = false;
 
@@ -539,12 +563,21 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
             std::optional<Polynomial> piece_polynomial;
             int variations = kUntrustedSign;  // of its Bernstein control polygon
             // First each element's own range: it proves most pieces free of crossings (F far below T along most
-            // of a ray) at a fraction of the cost of the sums below.
-            const Range range = elements_range(t0, t1, false);
-            const double slack = 1e-12 * (std::abs(range.low) + std::abs(range.high) + threshold_);
-            if (range.high - threshold_ < -slack || range.low - threshold_ > slack) {
-                solve = false;
+            // of a ray) at a fraction of the cost of the sums below. Coming from outside, F is continuous unless a
+            // hard cube steps, so it cannot be above T on the whole piece: only its upper bound is needed.
+            bool settled = false;
+            if (previous_sign < 0 && !hard_cube_joined_) {
+                const double high = elements_upper_bound(t0, t1);
+                settled = high - threshold_ < -1e-12 * (2 * std::abs(high) + threshold_);
+                start_sign = -1;
+            } else {
+                const Range range = elements_range(t0, t1, false);
+                const double slack = 1e-12 * (std::abs(range.low) + std::abs(range.high) + threshold_);
+                settled = range.high - threshold_ < -slack || range.low - threshold_ > slack;
                 start_sign = sign_of(range.low - threshold_);
+            }
+            if (settled) {
+                solve = false;
             } else if (non_polynomial_ == 0) {
                 // Bernstein test on the sum, allowing for the rounding of its terms' sum and of the shift to the
                 // piece (2·degree + 2 operations per coefficient).
