@@ -70,9 +70,9 @@ std::size_t BlobGroup::memory_bytes() const {
            cells_.memory_bytes();
 }
 
-template <class Report>
+template <class Report, class CrossedBefore>
 void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
-                           double t_max, BlobQueryWork& work, Report&& report) const {
+                           double t_max, BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) const {
     if (cell >= cells_.surface_cell_count()) return;  // all inside or all outside: no crossing
     const BlobCells::Cell& box = cells_.cells()[cell];
     const auto clip = clip_line_to_box(box.lower, box.upper, origin, direction, t_min, t_max);
@@ -82,7 +82,7 @@ void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d&
     with_kernel([&](const auto& kernel) {
         FieldSweep sweep(kernel, threshold_, std::span<const Metacube>(elements_),
                          std::span<const BoundingSphere>(spheres_), centre_bound_);
-        sweep.run(cells_.elements_of(cell), stretch, work, report);
+        sweep.run(cells_.elements_of(cell), stretch, work, report, crossed_before);
     });
 }
 
@@ -90,11 +90,34 @@ std::optional<FieldCrossing> BlobGroup::first_crossing_in_cell(std::uint32_t cel
                                                                const Vec3d& direction, double t_min, double t_max,
                                                                BlobQueryWork& work) const {
     std::optional<FieldCrossing> found;
-    sweep_cell(cell, origin, direction, t_min, t_max, work, [&](const FieldCrossing& c) {
-        found = c;
-        return true;
-    });
+    sweep_cell(
+        cell, origin, direction, t_min, t_max, work,
+        [&](const FieldCrossing& c) {
+            found = c;
+            return true;
+        },
+        [] { return false; });  // where the crossing is matters
     return found;
+}
+
+bool BlobGroup::occluded_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
+                                 double t_max, BlobQueryWork& work) const {
+    bool occluded = false;
+    sweep_cell(
+        cell, origin, direction, t_min, t_max, work,
+        [&](const FieldCrossing&) { return occluded = true; },
+        // Inside at the cell, outside at the ray's start (F ≤ T, the sweep's sign convention): an odd number of
+        // crossings lies between them. A ray that starts within rounding of the surface (a shadow ray) counts as
+        // outside only if it leaves the surface: one heading inwards crosses it at t_min itself, which the sweep
+        // does not report.
+        [&] {
+            const Vec3d start = origin + direction * t_min;
+            const double f = field(start);
+            occluded = f <= threshold_ && (f < threshold_ * (1 - 1e-6) || dot(gradient(start), direction) < 0);
+            work.roots += occluded ? 1 : 0;
+            return occluded;
+        });
+    return occluded;
 }
 
 std::optional<FieldCrossing> BlobGroup::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
@@ -112,13 +135,16 @@ int BlobGroup::crossings(const Vec3d& origin, const Vec3d& direction, double t_m
     const int sign_at_start = field(origin + direction * t_min) > threshold_ ? 1 : -1;
     const std::size_t first = out.size();
     cells_.walk(origin, direction, t_min, t_max, [&](std::uint32_t cell, double, double) {
-        sweep_cell(cell, origin, direction, t_min, t_max, work, [&](const FieldCrossing& c) {
-            // A crossing on the face between two cells is found by both: keep it once.
-            const bool repeated = out.size() > first && c.entering == out.back().entering &&
-                                  c.t - out.back().t <= 1e-12 * (1 + std::abs(c.t));
-            if (!repeated) out.push_back(c);
-            return false;
-        });
+        sweep_cell(
+            cell, origin, direction, t_min, t_max, work,
+            [&](const FieldCrossing& c) {
+                // A crossing on the face between two cells is found by both: keep it once.
+                const bool repeated = out.size() > first && c.entering == out.back().entering &&
+                                      c.t - out.back().t <= 1e-12 * (1 + std::abs(c.t));
+                if (!repeated) out.push_back(c);
+                return false;
+            },
+            [] { return false; });  // every crossing is wanted
         return true;
     });
     return sign_at_start;

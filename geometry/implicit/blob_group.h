@@ -38,6 +38,12 @@ public:
     std::optional<FieldCrossing> first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin,
                                                         const Vec3d& direction, double t_min, double t_max,
                                                         BlobQueryWork& work) const;
+    // Whether F crosses T anywhere along o + t·d with t in (t_min, t_max) inside cell `cell` (Embree's occlusion
+    // query). A cell that starts inside the surface after a ray start outside it ends at once: the ray crossed the
+    // surface before the cell (shadow rays meet cells in the order of Embree's hierarchy, not along the ray, and
+    // sweeping the inside of a blob to its far side was most of their work).
+    bool occluded_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
+                          double t_max, BlobQueryWork& work) const;
     // The first crossing along the whole ray, walking its cells in order.
     std::optional<FieldCrossing> first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
                                                 double t_max, BlobQueryWork& work) const;
@@ -65,10 +71,11 @@ private:
     // Calls f with the kernel as its concrete class, so that the sweep's kernel calls are direct.
     template <class F>
     decltype(auto) with_kernel(F&& f) const;
-    // Sweeps cell `cell`'s part of [t_min, t_max]; report(crossing) returns true to stop.
-    template <class Report>
+    // Sweeps cell `cell`'s part of [t_min, t_max]; report(crossing) returns true to stop. When the part starts
+    // inside after t_min, crossed_before() is asked whether that ends the sweep (FieldSweep::run).
+    template <class Report, class CrossedBefore>
     void sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                    BlobQueryWork& work, Report&& report) const;
+                    BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) const;
     Vec3d normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const;
     // ∇(F + T) from the `near` elements (a list that holds every element whose support contains the point).
     Vec3d gradient_from(std::span<const std::uint32_t> near, const Vec3d& point) const;

@@ -92,7 +92,11 @@ void BlobGroupShape::occluded_callback(const RTCOccludedFunctionNArguments* args
     const auto* self = static_cast<const BlobGroupShape*>(args->geometryUserPtr);
     user_geometry::occlude_rays(args, self->counter_slot_,
                                 [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
-                                    return self->first_hit(args->primID, origin, direction, t_near, t_far);
+                                    BlobQueryWork work;
+                                    const bool occluded = self->group_.occluded_in_cell(args->primID, origin,
+                                                                                        direction, t_near, t_far, work);
+                                    self->count_work(work);
+                                    return occluded;
                                 });
 }
 

@@ -53,7 +53,7 @@ struct BlobQueryWork {
     std::uint64_t polynomial_solves = 0;
     std::uint64_t lipschitz_searches = 0;
     std::uint64_t root_iterations = 0;  // Newton/bisection steps of the polynomial solves and Lipschitz searches
-    std::uint64_t roots = 0;            // crossings reported
+    std::uint64_t roots = 0;            // crossings reported (for occlusion, also those proven before a stretch)
 
     BlobQueryWork& operator+=(const BlobQueryWork& other) {
         queries += other.queries;
@@ -158,10 +158,12 @@ public:
 
     // Sweeps `stretch` over the field of the elements `candidates` (every element whose support may reach the
     // stretch must be among them). Calls report(crossing) for each crossing in increasing t; report returns
-    // true to stop. `work` collects the statistics.
-    template <class Report>
+    // true to stop. When the stretch starts inside (F > T beyond rounding) after t_min, crossed_before() is called
+    // and the sweep stops if it returns true: a query that needs no crossing's place (occlusion) can tell from the
+    // sign at t_min that one lies before the stretch. `work` collects the statistics.
+    template <class Report, class CrossedBefore>
     void run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch, BlobQueryWork& work,
-             Report&& report);
+             Report&& report, CrossedBefore&& crossed_before);
 
 private:
     // An element whose bounding sphere the stretch meets, waiting for the sweep to reach its entry.
@@ -224,6 +226,13 @@ private:
     // range's work is the lower bound.
     double elements_upper_bound(double t0, double t1) const;
     double hard_cube_step_before(double t) const;
+    // Σ |wᵢ| over the counting elements: F + T cannot exceed it (f ≤ 1), so it scales the rounding of value().
+    double counting_weights() const {
+        double sum = 0;
+        for (const Active& a : joined_)
+            if (a.kernel_piece) sum += std::abs(a.weight);
+        return sum;
+    }
     // The kernel on x = r²/R², zero beyond the support (rounding can put a support end a hair past x = 1). Without a
     // branch: in elements_range which side of 1 an element's range ends on is data (evaluated at min(x, 1), masked).
     double unit_value(double x) const { return zero_unless_less(kernel_.unit_value(min_branch_free(x, 1.0)), x, 1.0); }
@@ -499,24 +508,27 @@ double FieldSweep<Kernel>::value(double t) const {
 }
 
 // The hard cubes' share of F just before t minus just after it: a hard cube's closed box counts at its faces,
-// so entering one is a step up at t itself and leaving one a step down just after it.
+// so entering one is a step up at t itself and leaving one a step down just after it. A face within rounding of t
+// counts as at t: a lone hard cube's cell is the cube, so a stretch starts and ends on its faces, and a face found
+// a hair before the start (in the cube's frame, the start in world coordinates) would hide the step from every cell.
 template <class Kernel>
 double FieldSweep<Kernel>::hard_cube_step_before(double t) const {
+    const double tolerance = 1e-12 * (1 + std::abs(t));
     double step = 0;
     for (const Active& a : joined_) {
         const Metacube& element = elements_[a.index];
         if (!element.is_hard_cube()) continue;
         const bool inside_after = a.kernel_piece != nullptr;
-        const bool inside_before = a.slices.t_in() < t && t <= a.slices.t_out();
+        const bool inside_before = a.slices.t_in() < t - tolerance && t <= a.slices.t_out() + tolerance;
         step += element.weight() * ((inside_before ? 1 : 0) - (inside_after ? 1 : 0));
     }
     return step;
 }
 
 template <class Kernel>
-template <class Report>
+template <class Report, class CrossedBefore>
 void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch,
-                             BlobQueryWork& work, Report&& report) {
+                             BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
     using namespace field_sweep_detail;
     const double upper = gather(candidates, stretch);
     ++work.queries;
@@ -544,7 +556,12 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
 
     double t0 = stretch.t_begin;
     join_until(t0, stretch, work);
-    int previous_sign = sign_of(value(t0) + hard_cube_step_before(t0));
+    const double at_start = value(t0) + hard_cube_step_before(t0);
+    int previous_sign = sign_of(at_start);
+    // Inside beyond any rounding (a ray grazing the surface where the stretch starts is not inside there).
+    if (previous_sign > 0 && t0 > stretch.t_min && at_start > 1e-9 * (threshold_ + counting_weights()) &&
+        crossed_before())
+        return;
     while (t0 < stretch.t_end) {
         // The piece [t0, t1] ends at the next event.
         double t1 = stretch.t_end;
