@@ -79,6 +79,13 @@ Polynomial Polynomial::normalised() const {
     return result;
 }
 
+Polynomial& Polynomial::operator+=(const Polynomial& other) {
+    degree_ = std::max(degree_, other.degree_);
+    for (int i = 0; i <= other.degree_; ++i) coefficients_[i] += other.coefficients_[i];
+    drop_zero_leading_coefficients();
+    return *this;
+}
+
 Polynomial& Polynomial::operator-=(const Polynomial& other) {
     degree_ = std::max(degree_, other.degree_);
     for (int i = 0; i <= other.degree_; ++i) coefficients_[i] -= other.coefficients_[i];

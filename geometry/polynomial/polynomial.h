@@ -79,7 +79,8 @@ private:
     int degree_ = 0;
 };
 
-// The operations of the blob sweep's inner loops, inline so that they fold into their callers.
+// The operations of the blob sweep's inner loops and its root refinement, inline so that they fold into their
+// callers.
 inline double Polynomial::evaluate(double t) const {
     double value = coefficients_[degree_];
     for (int i = degree_ - 1; i >= 0; --i) value = value * t + coefficients_[i];
@@ -108,13 +109,6 @@ inline Polynomial Polynomial::compose_linear(double offset, double scale) const 
     }
     result.drop_zero_leading_coefficients();
     return result;
-}
-
-inline Polynomial& Polynomial::operator+=(const Polynomial& other) {
-    degree_ = std::max(degree_, other.degree_);
-    for (int i = 0; i <= other.degree_; ++i) coefficients_[i] += other.coefficients_[i];
-    drop_zero_leading_coefficients();
-    return *this;
 }
 
 inline void Polynomial::drop_zero_leading_coefficients() {
