@@ -140,7 +140,7 @@ int BlobGroup::crossings(const Vec3d& origin, const Vec3d& direction, double t_m
             [&](const FieldCrossing& c) {
                 // A crossing on the face between two cells is found by both: keep it once.
                 const bool repeated = out.size() > first && c.entering == out.back().entering &&
-                                      c.t - out.back().t <= 1e-12 * (1 + std::abs(c.t));
+                                      c.t - out.back().t <= field_sweep_detail::same_place_tolerance(c.t);
                 if (!repeated) out.push_back(c);
                 return false;
             },

@@ -69,6 +69,14 @@ std::optional<double> BlobGroupShape::first_hit(std::uint32_t cell, const Vec3d&
     return crossing->t;
 }
 
+bool BlobGroupShape::occludes(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near,
+                              float t_far) const {
+    BlobQueryWork work;
+    const bool occluded = group_.occluded_in_cell(cell, origin, direction, t_near, t_far, work);
+    count_work(work);
+    return occluded;
+}
+
 LocalShading BlobGroupShape::shading(const RTCHit& hit, const Vec3f&, const Vec3d& point) const {
     const Vec3f normal(group_.normal_in_cell(hit.primID, point));
     return {normal, normal};
@@ -92,11 +100,7 @@ void BlobGroupShape::occluded_callback(const RTCOccludedFunctionNArguments* args
     const auto* self = static_cast<const BlobGroupShape*>(args->geometryUserPtr);
     user_geometry::occlude_rays(args, self->counter_slot_,
                                 [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
-                                    BlobQueryWork work;
-                                    const bool occluded = self->group_.occluded_in_cell(args->primID, origin,
-                                                                                        direction, t_near, t_far, work);
-                                    self->count_work(work);
-                                    return occluded;
+                                    return self->occludes(args->primID, origin, direction, t_near, t_far);
                                 });
 }
 

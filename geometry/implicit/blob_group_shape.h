@@ -41,6 +41,8 @@ private:
     // The first crossing in (t_near, t_far) within cell `cell`, its work counted.
     std::optional<double> first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near,
                                     float t_far) const;
+    // Whether any crossing lies in (t_near, t_far) within cell `cell`, its work counted.
+    bool occludes(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) const;
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);
     static void occluded_callback(const RTCOccludedFunctionNArguments* args);

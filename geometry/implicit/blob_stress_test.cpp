@@ -211,12 +211,10 @@ void compare_with_oracle(long long first_group, long long rays) {
                 first_expected += 2;
                 ++graze_pairs;
             }
-            // Occlusion, as Embree asks it (each cell on its own, in any order; a cell that starts inside after a
-            // ray start outside ends at once): the same answer as the first crossing.
-            bool occluded = false;
-            for (std::uint32_t cell = 0; cell < group.cells().surface_cell_count() && !occluded; ++cell)
-                occluded = group.occluded_in_cell(cell, origin, direction, 0, t_max, work);
-            EXPECT_EQ(occluded, first.has_value()) << context() << " occlusion";
+            // Occlusion (a cell that starts inside after a ray start outside ends at once): the same answer as the
+            // first crossing.
+            EXPECT_EQ(occluded_in_any_cell(group, origin, direction, 0, t_max, work), first.has_value())
+                << context() << " occlusion";
             if (first_expected >= expected.size()) {
                 ASSERT_FALSE(first) << context() << " spurious crossing at " << first->t;
                 continue;

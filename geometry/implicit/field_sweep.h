@@ -121,6 +121,10 @@ inline Term compose_with_quadratic(const FieldPiece& piece, double weight, const
     return term;
 }
 
+// Two ray parameters this close are one place: a crossing that two cells find on their shared face, or a hard-cube
+// face found in the cube's frame against a stretch start found in world coordinates.
+inline double same_place_tolerance(double t) { return 1e-12 * (1 + std::abs(t)); }
+
 struct Range {
     double low, high;
 };
@@ -513,7 +517,7 @@ double FieldSweep<Kernel>::value(double t) const {
 // a hair before the start (in the cube's frame, the start in world coordinates) would hide the step from every cell.
 template <class Kernel>
 double FieldSweep<Kernel>::hard_cube_step_before(double t) const {
-    const double tolerance = 1e-12 * (1 + std::abs(t));
+    const double tolerance = field_sweep_detail::same_place_tolerance(t);
     double step = 0;
     for (const Active& a : joined_) {
         const Metacube& element = elements_[a.index];

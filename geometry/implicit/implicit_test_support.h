@@ -1,8 +1,10 @@
 #pragma once
-// Helpers shared by the implicit-surface tests: random elements and rays, and the error-naming check.
+// Helpers shared by the implicit-surface tests: random elements and rays, occlusion over every cell, and the
+// error-naming check.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <random>
 #include <stdexcept>
@@ -32,6 +34,14 @@ inline std::array<Vec3d, 3> random_axes(std::mt19937_64& rng) {
     return {Vec3d{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
             Vec3d{2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
             Vec3d{2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}};
+}
+
+// Occlusion as Embree asks it: each surface cell on its own, in any order, until one is occluded.
+inline bool occluded_in_any_cell(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction, double t_min,
+                                 double t_max, BlobQueryWork& work) {
+    for (std::uint32_t cell = 0; cell < group.cells().surface_cell_count(); ++cell)
+        if (group.occluded_in_cell(cell, origin, direction, t_min, t_max, work)) return true;
+    return false;
 }
 
 inline Vec3d random_vector(std::mt19937_64& rng, double low, double high) {
