@@ -118,14 +118,16 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
                 const LightSample light = choice.light->sample(hit.position, u_light_point);
                 const Vec3f wi = frame.to_local(light.direction);
                 if (light.pdf > 0 && !light.radiance.is_black()) {
-                    const Rgb f = bsdf.eval(wo, wi) * std::abs(wi.z);
-                    if (!f.is_black() && sides_agree(light.direction, hit.geometric_normal, wi.z)) {
+                    // What the light would add is a multiple of the throughput times f: when that is black in
+                    // every channel (a red wall seen along a green path), the shadow ray cannot change the result.
+                    const Rgb throughput_f = throughput * (bsdf.eval(wo, wi) * std::abs(wi.z));
+                    if (!throughput_f.is_black() && sides_agree(light.direction, hit.geometric_normal, wi.z)) {
                         const float t_far = std::isinf(light.distance) ? light.distance : light.distance * (1 - 1e-4f);
                         const Ray shadow{hit.spawn_origin(light.direction), light.direction, 0, t_far};
                         if (!scene.occluded(shadow)) {
                             const float light_pdf = choice.probability * light.pdf;
                             const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, wi));
-                            contributions.add(throughput * f * light.radiance * (weight / light_pdf));
+                            contributions.add(throughput_f * light.radiance * (weight / light_pdf));
                         }
                     }
                 }
@@ -142,6 +144,9 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         const Vec3f direction = normalize(frame.to_world(scattered->wi));
         if (!sides_agree(direction, hit.geometric_normal, scattered->wi.z)) break;
         throughput *= scattered->weight;
+        // Every later contribution is a multiple of the throughput: a black one ends the path with the same result
+        // (a green path after a red bounce), so its remaining rays are not traced.
+        if (throughput.is_black()) break;
         if (scattered->is_transmission) eta_scale *= scattered->eta * scattered->eta;
         previous_was_delta = scattered->is_delta;
         previous_pdf = scattered->pdf;

@@ -255,5 +255,41 @@ TEST(PathIntegrator, TracesNoLastRayWhenOnlyDeltaLightsEmit) {
     EXPECT_EQ(lit_by_sky.secondary_rays, samples);
 }
 
+// A path's contributions are all multiples of its throughput. Between a red floor and a green ceiling, a path
+// that has bounced off the floor and reaches the ceiling carries red only and the ceiling reflects green only:
+// nothing it could add is non-zero, so it traces no shadow ray there and no ray beyond. Each sample then casts
+// one shadow ray (at the floor) and one bounce ray (to the ceiling; a grazing one may escape) instead of a path
+// of eight.
+TEST(PathIntegrator, TracesNothingMoreOnceTheThroughputIsBlack) {
+    const int spp = 4;
+    const std::uint64_t samples = 8 * 8 * spp;
+    const std::string scene = R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [8, 8], "filter": {"type": "box"}},
+      "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
+      "sampler": {"type": "independent"},
+      "integrator": {"type": "path", "max_depth": 8, "russian_roulette_depth": 1024},
+      "materials": {"red": {"type": "diffuse", "reflectance": [1, 0, 0]},
+                    "green": {"type": "diffuse", "reflectance": [0, 1, 0]}},
+      "lights": [{"type": "point", "position": [1, 2, 3], "intensity": 10}],
+      "objects": [
+        {"material": "red", "shape": {"type": "mesh", "positions": [[-1000, -1000, -1], [1000, -1000, -1], [1000, 1000, -1], [-1000, 1000, -1]],
+                                      "triangles": [[0, 1, 2], [0, 2, 3]]}},
+        {"material": "green", "shape": {"type": "mesh", "positions": [[-1000, -1000, 10], [1000, -1000, 10], [1000, 1000, 10], [-1000, 1000, 10]],
+                                        "triangles": [[0, 1, 2], [0, 2, 3]]}}]})";
+    const CounterTotals rays = rays_of(scene, spp);
+    EXPECT_EQ(rays.camera_rays, samples);
+    EXPECT_EQ(rays.shadow_rays, samples);
+    EXPECT_LE(rays.secondary_rays, samples);
+    EXPECT_GE(rays.secondary_rays, samples * 99 / 100);
+
+    // The image is what the floor's own shadow rays give: the red channel only.
+    const Rendered image = render_text(scene, spp);
+    for (std::size_t p = 0; p < image.alpha.size(); ++p) {
+        EXPECT_GT(image.rgb[p * 3], 0.0f);
+        EXPECT_EQ(image.rgb[p * 3 + 1], 0.0f);
+        EXPECT_EQ(image.rgb[p * 3 + 2], 0.0f);
+    }
+}
+
 }  // namespace
 }  // namespace isotrace
