@@ -59,6 +59,25 @@ TEST(CsgOperands, BlobGroupCutByABoxHasAFlatFace) {
     EXPECT_EQ(hit_sequence(*scene, make_ray({-3, 0, -0.1}, {1, 0, 0})).size(), 2u);
 }
 
+// A sphere minus a slab that is a lone hard cube (radius 0): the slab's cell is the slab itself, so its exit face
+// lies on the cell's far end. Before the sweep reported a hard cube's exit at a stretch's end, the slab was
+// entered and never left: everything beyond it vanished, the lower part's cut face included (a visible gap).
+TEST(CsgOperands, SphereMinusAHardCubeSlabKeepsBothCutFaces) {
+    const auto scene = scene_of(shape_from_json(R"({"type": "csg", "op": "difference", "children": [
+        {"shape": {"type": "sphere", "radius": 1.2}},
+        {"shape": {"type": "blobs",
+                   "elements": [{"center": [0, 0.2, 0], "half_size": [2, 0.25, 2], "radius": 0}]}}]})"));
+    // Straight down, off the axis: the upper cap, its cut face at y = 0.45, then the lower part's at y = −0.05 and
+    // the sphere's bottom.
+    const double x = 0.3, z = 0.2, r2 = 1.2 * 1.2 - x * x - z * z;
+    const auto hits = hit_sequence(*scene, make_ray({x, 3, z}, {0, -1, 0}));
+    ASSERT_EQ(hits.size(), 4u);
+    const double expected[] = {3 - std::sqrt(r2), 3 - 0.45, 3 + 0.05, 3 + std::sqrt(r2)};
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(hits[std::size_t(k)].t, expected[k], 1e-6) << "hit " << k;
+    EXPECT_LT(hits[1].geometric_normal.y, -0.9999f);  // the cap's cut face looks down into the slab
+    EXPECT_GT(hits[2].geometric_normal.y, 0.9999f);   // the lower part's looks up
+}
+
 // Shadow rays see the same solid: occluded exactly when a nearest hit exists inside the interval.
 TEST(CsgOperands, OcclusionAgreesWithNearestHitsForImplicitOperands) {
     const auto scene = scene_of(shape_from_json(R"({"type": "csg", "op": "intersection", "children": [

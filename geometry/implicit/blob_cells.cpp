@@ -129,8 +129,14 @@ std::size_t BlobCells::memory_bytes() const {
 
 std::span<const std::uint32_t> BlobCells::elements_near(const Vec3d& p) const {
     if (nodes_.empty()) return {};
-    for (int k = 0; k < 3; ++k)
-        if (p[k] < root_.lower[k] || p[k] > root_.upper[k]) return {};
+    // A point a hair outside the supports' bounds still gets the cell at their edge: a lone hard cube's faces are
+    // those bounds, and a point computed on a face rounds to either side of it. Its elements add nothing there (no
+    // support reaches out), but a hard cube's normal is taken from the cube's nearest face, which must be listed.
+    for (int k = 0; k < 3; ++k) {
+        const double pad =
+            1e-9 * (root_.upper[k] - root_.lower[k] + std::abs(root_.lower[k]) + std::abs(root_.upper[k]));
+        if (p[k] < root_.lower[k] - pad || p[k] > root_.upper[k] + pad) return {};
+    }
     std::uint32_t index = 0;
     while (nodes_[index].axis != 3) {
         const Node& node = nodes_[index];

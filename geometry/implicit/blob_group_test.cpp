@@ -280,6 +280,36 @@ TEST(BlobGroup, RaysThroughALoneHardCubeHitItAndAreOccluded) {
     }
 }
 
+// CSG asks a blob group for every crossing. A lone hard cube's cell is the cube itself, so its exit face lies on
+// the cell's far end: in no piece of the sweep, and with no cell beyond to find it at its start (before the fix,
+// every one of these rays entered the cube and never left).
+TEST(BlobGroup, EveryRayThroughALoneHardCubeCrossesItTwice) {
+    OrientedBox box;
+    box.centre = {3.2, 1.0, 1.6};
+    box.half_size = {1, 1, 1};
+    const BlobGroup group = lone(Metacube(box, 0, 1), "wyvill");
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int missed = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const Vec3d target = box.centre + Vec3d(unit(random), unit(random), unit(random)) * 0.999;
+        const Vec3d origin = box.centre + normalize(Vec3d(unit(random), unit(random), unit(random))) * 6.0;
+        const Vec3d direction = normalize(target - origin);
+        std::vector<FieldCrossing> crossings;
+        BlobQueryWork work;
+        group.crossings(origin, direction, 0, 100, crossings, work);
+        if (crossings.size() != 2 || !crossings[0].entering || crossings[1].entering) {
+            if (missed < 5) {
+                std::string list;
+                for (const auto& c : crossings) list += " " + std::to_string(c.t) + (c.entering ? "in" : "out");
+                ADD_FAILURE() << "ray " << i << ":" << list;
+            }
+            ++missed;
+        }
+    }
+    EXPECT_EQ(missed, 0);
+}
+
 TEST(BlobGroup, BadElementsAndThresholdsAreReported) {
     const auto load = [](const std::string& shape) {
         testing::SceneFile file(R"({"isotrace": 1, "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},

@@ -230,6 +230,12 @@ private:
     // range's work is the lower bound.
     double elements_upper_bound(double t0, double t1) const;
     double hard_cube_step_before(double t) const;
+    // A hard cube's exit face within rounding of the stretch's end t_end: its step down lies just after t_end, in no
+    // piece of this stretch. A lone hard cube's cell is the cube, so its exit is always there and no later cell
+    // would report it (CSG then saw every such cube entered and never left). Reports the crossing at t_end when the
+    // step changes F's sign.
+    template <class Crossing>
+    void hard_cube_exit_at_end(double t_end, int previous_sign, Crossing&& crossing) const;
     // Σ |wᵢ| over the counting elements: F + T cannot exceed it (f ≤ 1), so it scales the rounding of value().
     double counting_weights() const {
         double sum = 0;
@@ -530,6 +536,19 @@ double FieldSweep<Kernel>::hard_cube_step_before(double t) const {
 }
 
 template <class Kernel>
+template <class Crossing>
+void FieldSweep<Kernel>::hard_cube_exit_at_end(double t_end, int previous_sign, Crossing&& crossing) const {
+    const double tolerance = field_sweep_detail::same_place_tolerance(t_end);
+    double step = 0;
+    for (const Active& a : joined_)
+        if (a.hard_cube && a.kernel_piece && a.slices.t_out() <= t_end + tolerance) step += a.weight;
+    if (step == 0) return;
+    using field_sweep_detail::sign_of;
+    const double before = value(t_end);
+    if (sign_of(before) == previous_sign && sign_of(before - step) != previous_sign) crossing(t_end, previous_sign);
+}
+
+template <class Kernel>
 template <class Report, class CrossedBefore>
 void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch,
                              BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
@@ -727,7 +746,10 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
                 previous_sign = sign_of(value(t1));
             }
         }
-        if (t1 >= stretch.t_end) return;
+        if (t1 >= stretch.t_end) {
+            if (hard_cube_joined_) hard_cube_exit_at_end(stretch.t_end, previous_sign, crossing);
+            return;
+        }
         // Events at t1: pieces that end there move on (exits leave the sum), then newcomers join.
         for (Active& a : joined_)
             if (a.next_event <= t1) enter_piece(a, t1);
