@@ -1,6 +1,6 @@
 // A blob group as a CSG operand: the spans of a ray inside the surface (F > T), against closed forms for a lone
-// metaball and against dense sampling of the summed field for a random group. Also: the per-ray cache of the
-// Embree queries gives the same nearest hit whatever order the elements are asked in.
+// metaball and against dense sampling of the summed field for a random group; hard cubes among metacubes entered
+// and left in turn. Also: the nearest hit does not depend on the order in which Embree offers the cells.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -117,6 +117,71 @@ TEST(BlobGroupSolid, SpansOfARandomGroupMatchDenseSampling) {
 
 // Embree asks the cells in its own order while t_far shrinks: the nearest hit must not depend on that order, and
 // must be the first of all crossings.
+// Groups of hard cubes (radius 0: the box itself, F steps at its faces) and metacubes, half of them axis-aligned on
+// a quarter grid, and rays from outside, half of them axis-aligned on the same grid (as cameras meet such boxes).
+// Every ray's crossings enter and leave in turn and end outside; F has the expected side just before and after each;
+// the nearest hit is the first crossing and occlusion is their existence. Hard cubes' faces often lie on cell faces
+// and on the group's bounds: a lone cube's exit was missed on every ray once.
+TEST(BlobGroupSolid, HardCubesAmongMetacubesAreEnteredAndLeftInTurn) {
+    std::mt19937_64 rng(12345);
+    std::uniform_real_distribution<double> u(0, 1);
+    const auto on_grid = [](const Vec3d& v) {
+        return Vec3d(std::round(v.x * 4) / 4, std::round(v.y * 4) / 4, std::round(v.z * 4) / 4);
+    };
+    const char* kernels[] = {"kim", "wyvill", "murakami", "nishimura", "blinn"};
+    int rays = 0, out_of_turn = 0, wrong_side = 0, wrong_first = 0, wrong_occlusion = 0;
+    for (int g = 0; g < 300; ++g) {
+        std::vector<Metacube> elements;
+        const int count = 1 + int(u(rng) * 5);
+        for (int e = 0; e < count; ++e) {
+            OrientedBox box;
+            box.centre = random_vector(rng, -1.5, 1.5);
+            if (u(rng) < 0.2) box.axes = random_axes(rng);
+            if (u(rng) < 0.5) box.centre = on_grid(box.centre);
+            for (int k = 0; k < 3; ++k)
+                box.half_size[k] = u(rng) < 0.5 ? 0.25 * (1 + int(u(rng) * 3)) : 0.2 + 0.8 * u(rng);
+            elements.emplace_back(box, u(rng) < 0.5 ? 0.0 : 0.3 + u(rng), 1.0);
+        }
+        const BlobGroup group(elements, make_field_function(kernels[g % 5], 4.0), 0.5);
+        for (int r = 0; r < 200; ++r) {
+            Vec3d origin = normalize(random_vector(rng, -1, 1)) * 10.0;
+            Vec3d direction = normalize(random_vector(rng, -1.5, 1.5) - origin);
+            if (r % 2 == 0) {
+                const int axis = r / 2 % 3;
+                origin = random_vector(rng, -2, 2);
+                if (r % 4 == 0) origin = on_grid(origin);
+                origin[axis] = r % 8 < 4 ? -10 : 10;
+                direction = Vec3d(0, 0, 0);
+                direction[axis] = r % 8 < 4 ? 1 : -1;
+            }
+            ++rays;
+            std::vector<FieldCrossing> crossings;
+            BlobQueryWork work;
+            group.crossings(origin, direction, 0, 30, crossings, work);
+            bool in_turn = crossings.size() % 2 == 0;
+            for (std::size_t i = 0; i < crossings.size(); ++i)
+                in_turn = in_turn && crossings[i].entering == (i % 2 == 0);
+            if (!in_turn) ++out_of_turn;
+            for (const FieldCrossing& c : crossings) {
+                const double step = 1e-7 * (1 + c.t);
+                const bool inside_before = group.field(origin + direction * (c.t - step)) > 0.5;
+                const bool inside_after = group.field(origin + direction * (c.t + step)) > 0.5;
+                if (inside_before == c.entering || inside_after != c.entering) ++wrong_side;
+            }
+            const auto first = group.first_crossing(origin, direction, 0, 30, work);
+            if (first.has_value() != !crossings.empty() ||
+                (first && std::abs(first->t - crossings[0].t) > 1e-9 * (1 + first->t)))
+                ++wrong_first;
+            if (occluded_in_any_cell(group, origin, direction, 0, 30, work) != !crossings.empty()) ++wrong_occlusion;
+        }
+    }
+    EXPECT_EQ(rays, 60000);
+    EXPECT_EQ(out_of_turn, 0);
+    EXPECT_EQ(wrong_side, 0);
+    EXPECT_EQ(wrong_first, 0);
+    EXPECT_EQ(wrong_occlusion, 0);
+}
+
 TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfCellQueries) {
     const BlobGroup group = random_blob_group(80, 12, "wyvill", 7);
     std::mt19937 random(7);
