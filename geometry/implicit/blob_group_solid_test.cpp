@@ -181,7 +181,8 @@ TEST(BlobGroupSolid, HardCubesAmongMetacubesAreEnteredAndLeftInTurn) {
             if (first.has_value() != !crossings.empty() ||
                 (first && std::abs(first->t - crossings[0].t) > 1e-9 * (1 + first->t)))
                 ++wrong_first;
-            if (occluded_in_any_cell(group, origin, direction, t_min, 30, work) != !crossings.empty()) ++wrong_occlusion;
+            const bool occluded = occluded_in_any_cell(group, origin, direction, t_min, 30, work);
+            if (occluded != !crossings.empty()) ++wrong_occlusion;
         }
     }
     EXPECT_EQ(rays, 60000);
