@@ -175,9 +175,13 @@ void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double 
         const bool bounds_result = operation_ == CsgOperation::Intersection || i == 0;
         if (narrows && bounds_result) {
             if (operand_spans.empty()) return;
-            // Later children only matter where this one is inside.
-            t_min = std::max(t_min, operand_spans.front().enter.t);
-            t_max = std::min(t_max, operand_spans.back().exit.t);
+            // Later children only matter where this one is inside, give or take the tolerance within which span
+            // ends are simultaneous: a later child's surface that coincides with this one's end must be seen as
+            // a surface there, not as a query that starts or ends exactly on it (where the side it is on is a
+            // matter of rounding).
+            const double enter = operand_spans.front().enter.t, exit = operand_spans.back().exit.t;
+            t_min = std::max(t_min, enter - kCoincidentRelative * std::abs(enter));
+            t_max = std::min(t_max, exit + kCoincidentRelative * std::abs(exit));
         }
         append_span_events(i, operand.first_part, operand_spans, events);
     }

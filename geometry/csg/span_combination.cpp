@@ -65,18 +65,28 @@ void combine_span_events(CsgOperation operation, std::uint32_t operand_count, st
         if (now_inside != inside) {
             // The event that moves the result the same way: an operand entering (or a subtracted one exiting)
             // when the result is entered, the opposite when it is left. The operators are monotone in each
-            // operand, so the group holds one.
+            // operand, so the group holds one. A surface is preferred to a cut end: a query range that starts or
+            // ends a hair from a surface (CSG widens a later operand's range by the tolerance) must not hide it.
+            const auto moves_result = [&](const SpanEvent& event) {
+                return (event.enters != subtracted(operation, event.operand)) == now_inside;
+            };
+            std::size_t chosen = end;
             for (std::size_t k = first; k < end; ++k) {
-                const SpanEvent& event = events[k];
-                if ((event.enters != subtracted(operation, event.operand)) != now_inside) continue;
-                BoundaryPoint point = event.point;
-                if (subtracted(operation, event.operand)) point.normal = -point.normal;
+                if (!moves_result(events[k])) continue;
+                if (chosen == end) chosen = k;
+                if (events[k].point.on_surface()) {
+                    chosen = k;
+                    break;
+                }
+            }
+            if (chosen != end) {
+                BoundaryPoint point = events[chosen].point;
+                if (subtracted(operation, events[chosen].operand)) point.normal = -point.normal;
                 if (now_inside) {
                     enter = point;
                 } else {
                     result.push_back({enter, point});
                 }
-                break;
             }
             inside = now_inside;
         }

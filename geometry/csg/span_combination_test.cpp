@@ -85,5 +85,19 @@ TEST(CsgSpanCombination, CutEndsStayCuts) {
     EXPECT_TRUE(result[1].enter.on_surface());
 }
 
+// CSG queries a later operand over the first one's span widened by the tolerance, so the later one can start with
+// a cut a hair before the first one's surface. The surface bounds the result, not the cut that sorts before it.
+TEST(CsgSpanCombination, ASurfaceSimultaneousWithACutBoundsTheResult) {
+    const double t = 5, hair = 0.5 * kCoincidentRelative * t;
+    InsideSpan widened = span(t - hair, 7 + hair, 2);
+    widened.enter.primitive = widened.exit.primitive = BoundaryPoint::kCut;
+    const auto result = combine(CsgOperation::Intersection, {{span(t, 7, 1)}, {widened}});
+    ASSERT_EQ(result.size(), 1u);
+    EXPECT_TRUE(result[0].enter.on_surface());
+    EXPECT_EQ(result[0].enter.primitive, 1u);
+    EXPECT_TRUE(result[0].exit.on_surface());
+    EXPECT_EQ(result[0].exit.primitive, 1u);
+}
+
 }  // namespace
 }  // namespace isotrace
