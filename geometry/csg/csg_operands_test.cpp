@@ -5,7 +5,6 @@
 #include <cmath>
 #include <random>
 #include <string>
-#include <utility>
 
 #include "geometry/csg/csg_test_support.h"
 #include "renderer/plugin/shape.h"
@@ -85,7 +84,9 @@ TEST(CsgOperands, SphereMinusAHardCubeSlabKeepsBothCutFaces) {
 // and intersect to the solid itself. CSG queries a later operand only where the first is inside, so the later
 // one's surface lies at the very start and end of its query, where the side a point is on is a matter of rounding:
 // a hard cube against the equal box once left a box face behind on half the rays, a superquadric minus itself on
-// one ray in eleven.
+// one ray in ten. A mesh box is the same box only up to its float vertices (−0.4f is 6e-9 from −0.4) and Embree's
+// float t: its events carry that precision, without which 70 % of rays saw a sliver. A ray that grazes a face
+// near an edge can still cross the gap between the two faces over more than that (1 ray in 1000 here).
 TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
     const std::string box = R"({"type": "box", "center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1]})";
     const std::string hard_cube = R"({"type": "blobs", "elements":
@@ -94,8 +95,18 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
         "center": [0.1, 0.2, 0.3]})";
     const std::string blobs = R"({"type": "blobs", "elements": [{"center": [0.1, 0.2, 0.3], "radius": 1.3},
         {"center": [0.5, 0.2, 0.3], "half_size": 0.3, "radius": 0.8}]})";
-    const std::pair<std::string, std::string> pairs[] = {
-        {box, hard_cube}, {hard_cube, box}, {superquadric, superquadric}, {blobs, blobs}};
+    const std::string mesh_box = R"({"type": "mesh",
+        "positions": [[-0.4, -0.55, -0.7], [0.6, -0.55, -0.7], [0.6, 0.95, -0.7], [-0.4, 0.95, -0.7],
+                      [-0.4, -0.55, 1.3], [0.6, -0.55, 1.3], [0.6, 0.95, 1.3], [-0.4, 0.95, 1.3]],
+        "triangles": [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [3, 7, 6], [3, 6, 2],
+                      [0, 4, 7], [0, 7, 3], [1, 2, 6], [1, 6, 5]]})";
+    struct Pair {
+        std::string a, b;
+        int grazing_allowance;  // rays that may leave a sliver (float meshes only, see above)
+    };
+    const Pair pairs[] = {{box, hard_cube, 0},      {hard_cube, box, 0}, {superquadric, superquadric, 0},
+                          {blobs, blobs, 0},        {mesh_box, box, 3},  {box, mesh_box, 3},
+                          {mesh_box, hard_cube, 3}, {hard_cube, mesh_box, 3}};
     const auto combined = [](const std::string& op, const std::string& a, const std::string& b) {
         return scene_of(shape_from_json(R"({"type": "csg", "op": ")" + op + R"(", "children": [{"shape": )" + a +
                                         R"(}, {"shape": )" + b + "}]}"));
@@ -103,7 +114,7 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-1, 1);
     for (std::size_t p = 0; p < std::size(pairs); ++p) {
-        const auto& [a, b] = pairs[p];
+        const auto& [a, b, grazing_allowance] = pairs[p];
         const auto alone = scene_of(shape_from_json(a));
         const auto difference = combined("difference", a, b);
         const auto intersection = combined("intersection", a, b);
@@ -122,7 +133,7 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
             for (std::size_t k = 0; same && k < own.size(); ++k) same = std::abs(own[k].t - both[k].t) <= 1e-5f;
             if (!same) ++not_itself;
         }
-        EXPECT_EQ(left_behind, 0) << "pair " << p;
+        EXPECT_LE(left_behind, grazing_allowance) << "pair " << p;
         EXPECT_EQ(not_itself, 0) << "pair " << p;
     }
 }

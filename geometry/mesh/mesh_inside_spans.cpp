@@ -6,8 +6,8 @@
 namespace isotrace {
 namespace {
 
-BoundaryPoint boundary_point(const MeshCrossing& crossing) {
-    return {crossing.t, normalize(crossing.normal), crossing.triangle, 0};
+BoundaryPoint boundary_point(const MeshCrossing& crossing, double tolerance) {
+    return {crossing.t, normalize(crossing.normal), crossing.triangle, 0, tolerance};
 }
 
 }  // namespace
@@ -35,10 +35,10 @@ void mesh_inside_spans(std::vector<MeshCrossing>& crossings, const Vec3d& direct
             }
         }
         if (!inside && net_entries > 0) {
-            enter = boundary_point(*entering);
+            enter = boundary_point(*entering, tolerance);
             inside = true;
         } else if (inside && net_entries < 0) {
-            spans.push_back({enter, boundary_point(*leaving)});
+            spans.push_back({enter, boundary_point(*leaving, tolerance)});
             inside = false;
         }
         first = end;

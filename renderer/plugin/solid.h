@@ -22,6 +22,10 @@ struct BoundaryPoint {
     std::uint32_t primitive = 0;  // the shape's primitive (element, triangle, ...) the point lies on; kCut when
                                   // the span was cut at the query range instead of ending on the surface
     std::uint32_t part = 0;       // for composite solids (CSG): which leaf surface the point lies on
+    // How far t may be from where the surface really is, beyond the relative tolerance every CSG event gets
+    // (kCoincidentRelative): 0 for solids computed in double, more for those whose crossings come from Embree in
+    // float (meshes). Another operand's surface within it is the same surface.
+    double t_tolerance = 0;
 
     bool on_surface() const { return primitive != kCut; }
 };
