@@ -4,9 +4,10 @@
 // how many operands the ray is inside and emits a boundary wherever the combined membership changes.
 //
 // Coincident surfaces: events whose t agree to kCoincidentRelative·|t| happen at once (their t was computed by
-// different code for the same point). So A − A and A ∩ ¬A are empty, A ∪ A and A ∩ A are A, and solids of a union
-// that touch merge into one span (no surface inside the union). The tolerance is far below the float precision
-// of the t that Embree reports, so no visible surface moves.
+// different code for the same point), and so do events within the precision either end reports
+// (BoundaryPoint::t_tolerance: a float mesh's). So A − A and A ∩ ¬A are empty, A ∪ A and A ∩ A are A, and solids
+// of a union that touch merge into one span (no surface inside the union). The relative tolerance is far below the
+// float precision of the t that Embree reports, so no visible surface moves.
 #include <cstdint>
 #include <vector>
 
