@@ -81,7 +81,7 @@ TEST(CsgOperands, SphereMinusAHardCubeSlabKeepsBothCutFaces) {
 }
 
 // Two descriptions of one solid, by different code or by the same code queried differently, subtract to nothing
-// and intersect to the solid itself. CSG queries a later operand only where the first is inside, so the later
+// and intersect to the solid itself (shadow rays agree). CSG queries a later operand only where the first is inside, so the later
 // one's surface lies at the very start and end of its query, where the side a point is on is a matter of rounding:
 // a hard cube against the equal box once left a box face behind on half the rays, a superquadric minus itself on
 // one ray in ten. A mesh box is the same box only up to its float vertices (−0.4f is 6e-9 from −0.4) and Embree's
@@ -118,7 +118,7 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
         const auto alone = scene_of(shape_from_json(a));
         const auto difference = combined("difference", a, b);
         const auto intersection = combined("intersection", a, b);
-        int left_behind = 0, not_itself = 0;
+        int left_behind = 0, not_itself = 0, occlusion_disagrees = 0;
         for (int i = 0; i < 1000; ++i) {
             const Vec3d target(0.1 + 0.49 * u(rng), 0.2 + 0.74 * u(rng), 0.3 + 0.99 * u(rng));
             Vec3d origin = target + normalize(Vec3d(u(rng), u(rng), u(rng))) * 8.0;
@@ -127,13 +127,16 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
                 origin[i / 2 % 3] -= 8;
             }
             const Ray ray = make_ray(origin, normalize(target - origin));
-            if (!hit_sequence(*difference, ray).empty()) ++left_behind;
+            const bool hit = !hit_sequence(*difference, ray).empty();
+            if (hit) ++left_behind;
+            if (difference->occluded(ray) != hit) ++occlusion_disagrees;
             const auto own = hit_sequence(*alone, ray), both = hit_sequence(*intersection, ray);
             bool same = own.size() == both.size();
             for (std::size_t k = 0; same && k < own.size(); ++k) same = std::abs(own[k].t - both[k].t) <= 1e-5f;
             if (!same) ++not_itself;
         }
         EXPECT_LE(left_behind, grazing_allowance) << "pair " << p;
+        EXPECT_EQ(occlusion_disagrees, 0) << "pair " << p;
         EXPECT_EQ(not_itself, 0) << "pair " << p;
     }
 }
