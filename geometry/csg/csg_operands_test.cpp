@@ -81,12 +81,13 @@ TEST(CsgOperands, SphereMinusAHardCubeSlabKeepsBothCutFaces) {
 }
 
 // Two descriptions of one solid, by different code or by the same code queried differently, subtract to nothing
-// and intersect to the solid itself (shadow rays agree). CSG queries a later operand only where the first is inside, so the later
-// one's surface lies at the very start and end of its query, where the side a point is on is a matter of rounding:
-// a hard cube against the equal box once left a box face behind on half the rays, a superquadric minus itself on
-// one ray in ten. A mesh box is the same box only up to its float vertices (−0.4f is 6e-9 from −0.4) and Embree's
-// float t: its events carry that precision, without which 70 % of rays saw a sliver. A ray that grazes a face
-// near an edge can still cross the gap between the two faces over more than that (1 ray in 1000 here).
+// and intersect to the solid itself, and shadow rays agree. CSG queries a later operand only where the first is
+// inside, so the later one's surface lies at the very start and end of its query, where the side a point is on
+// is a matter of rounding: a hard cube against the equal box once left a box face behind on half the rays, a
+// superquadric minus itself on one ray in ten. A mesh box is the same box only up to its float vertices (−0.4f
+// is 6e-9 from −0.4) and Embree's float t: its events carry that precision, without which 70 % of rays saw a
+// sliver. A ray that grazes a face near an edge can still cross the gap between the two faces over more than
+// that (1 ray in 1000 here).
 TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
     const std::string box = R"({"type": "box", "center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1]})";
     const std::string hard_cube = R"({"type": "blobs", "elements":
