@@ -180,8 +180,8 @@ void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double 
             // a surface there, not as a query that starts or ends exactly on it (where the side it is on is a
             // matter of rounding).
             const BoundaryPoint &enter = operand_spans.front().enter, &exit = operand_spans.back().exit;
-            t_min = std::max(t_min, enter.t - std::max(kCoincidentRelative * std::abs(enter.t), enter.t_tolerance));
-            t_max = std::min(t_max, exit.t + std::max(kCoincidentRelative * std::abs(exit.t), exit.t_tolerance));
+            t_min = std::max(t_min, enter.t - coincidence_tolerance(enter));
+            t_max = std::min(t_max, exit.t + coincidence_tolerance(exit));
         }
         append_span_events(i, operand.first_part, operand_spans, events);
     }

@@ -58,15 +58,13 @@ void combine_span_events(CsgOperation operation, std::uint32_t operand_count, st
     bool inside = false;
     BoundaryPoint enter;
     for (std::size_t first = 0; first < events.size();) {
-        // Within the relative tolerance of the first event, or within the precision either event was found with.
+        // Simultaneous with the first event: within its coincidence tolerance or the later event's own.
         const BoundaryPoint& first_point = events[first].point;
-        const double simultaneous =
-            first_point.t + std::max(kCoincidentRelative * std::abs(first_point.t), first_point.t_tolerance);
+        const auto simultaneous = [&](const BoundaryPoint& point) {
+            return point.t - first_point.t <= std::max(coincidence_tolerance(first_point), point.t_tolerance);
+        };
         std::size_t end = first;
-        for (; end < events.size() && events[end].point.t <= std::max(simultaneous, first_point.t +
-                                                                                        events[end].point.t_tolerance);
-             ++end)
-            membership.apply(events[end]);
+        for (; end < events.size() && simultaneous(events[end].point); ++end) membership.apply(events[end]);
         const bool now_inside = membership.inside(operation, operand_count);
         if (now_inside != inside) {
             // The event that moves the result the same way: an operand entering (or a subtracted one exiting)

@@ -8,6 +8,8 @@
 // (BoundaryPoint::t_tolerance: a float mesh's). So A − A and A ∩ ¬A are empty, A ∪ A and A ∩ A are A, and solids
 // of a union that touch merge into one span (no surface inside the union). The relative tolerance is far below the
 // float precision of the t that Embree reports, so no visible surface moves.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +31,12 @@ struct SpanEvent {
 };
 
 inline constexpr double kCoincidentRelative = 1e-9;
+
+// How far from `end` another operand's surface is still the same surface: the relative tolerance, or the precision
+// the end was found with, whichever is larger.
+inline double coincidence_tolerance(const BoundaryPoint& end) {
+    return std::max(kCoincidentRelative * std::abs(end.t), end.t_tolerance);
+}
 
 // Appends the events of `spans`, the inside spans of operand `operand`, with `part_offset` added to their parts.
 void append_span_events(std::uint32_t operand, std::uint32_t part_offset, const std::vector<InsideSpan>& spans,
