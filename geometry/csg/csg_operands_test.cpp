@@ -142,6 +142,53 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
     }
 }
 
+// The same through nested trees, whose spans carry their leaves' ends: identities of sets built from a box, the
+// equal hard cube and superquadric, and a sphere overlapping them give the same hits on both sides.
+TEST(CsgOperands, NestedTreesKeepTheIdentitiesOfCoincidentSolids) {
+    const std::string box = R"({"type": "box", "center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1]})";
+    const std::string hard_cube = R"({"type": "blobs", "elements":
+        [{"center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1], "radius": 0}]})";
+    const std::string superquadric = R"({"type": "superquadric", "radii": [0.5, 0.75, 1], "exponents": [0.3, 0.6],
+        "center": [0.1, 0.2, 0.3]})";
+    const std::string sphere = R"({"type": "sphere", "radius": 0.6, "center": [0.6, 0.2, 0.3]})";
+    const auto op = [](const std::string& operation, const std::string& a, const std::string& b) {
+        return R"({"type": "csg", "op": ")" + operation + R"(", "children": [{"shape": )" + a + R"(}, {"shape": )" +
+               b + "}]}";
+    };
+    struct Identity {
+        std::string name, left, right;
+    };
+    const Identity identities[] = {
+        {"(box ∪ sphere) − hard cube = sphere − box", op("difference", op("union", box, sphere), hard_cube),
+         op("difference", sphere, box)},
+        {"(hard cube ∪ sphere) ∩ box = box", op("intersection", op("union", hard_cube, sphere), box), box},
+        {"box − (hard cube − sphere) = box ∩ sphere", op("difference", box, op("difference", hard_cube, sphere)),
+         op("intersection", box, sphere)},
+        {"(superquadric ∩ box) − superquadric = ∅",
+         op("difference", op("intersection", superquadric, box), superquadric), op("difference", box, box)},
+    };
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (const Identity& identity : identities) {
+        const auto left = scene_of(shape_from_json(identity.left)), right = scene_of(shape_from_json(identity.right));
+        int differ = 0;
+        for (int i = 0; i < 1000; ++i) {
+            const Vec3d target(0.1 + 0.6 * u(rng), 0.2 + 0.8 * u(rng), 0.3 + u(rng));
+            Vec3d origin = target + normalize(Vec3d(u(rng), u(rng), u(rng))) * 8.0;
+            if (i % 2 == 0) {
+                origin = target;
+                origin[i / 2 % 3] -= 8;
+            }
+            const Ray ray = make_ray(origin, normalize(target - origin));
+            const auto a = hit_sequence(*left, ray), b = hit_sequence(*right, ray);
+            bool same = a.size() == b.size();
+            for (std::size_t k = 0; same && k < a.size(); ++k) same = std::abs(a[k].t - b[k].t) <= 1e-5f;
+            if (!same) ++differ;
+        }
+        EXPECT_EQ(differ, 0) << identity.name;
+    }
+}
+
 // Shadow rays see the same solid: occluded exactly when a nearest hit exists inside the interval.
 TEST(CsgOperands, OcclusionAgreesWithNearestHitsForImplicitOperands) {
     const auto scene = scene_of(shape_from_json(R"({"type": "csg", "op": "intersection", "children": [
