@@ -115,8 +115,6 @@ TEST(BlobGroupSolid, SpansOfARandomGroupMatchDenseSampling) {
     EXPECT_GT(spans_seen, 30);
 }
 
-// Embree asks the cells in its own order while t_far shrinks: the nearest hit must not depend on that order, and
-// must be the first of all crossings.
 // Groups of hard cubes (radius 0: the box itself, F steps at its faces) and metacubes, some carving (w < 0), half
 // of them axis-aligned on a quarter grid, and rays from outside or from among the elements, half of them
 // axis-aligned on the same grid (as cameras meet such boxes). Every ray's crossings enter and leave in turn from
@@ -192,6 +190,8 @@ TEST(BlobGroupSolid, HardCubesAmongMetacubesAreEnteredAndLeftInTurn) {
     EXPECT_EQ(wrong_occlusion, 0);
 }
 
+// Embree asks the cells in its own order while t_far shrinks: the nearest hit must not depend on that order, and
+// must be the first of all crossings.
 TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfCellQueries) {
     const BlobGroup group = random_blob_group(80, 12, "wyvill", 7);
     std::mt19937 random(7);
