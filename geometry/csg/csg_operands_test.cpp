@@ -80,6 +80,40 @@ TEST(CsgOperands, SphereMinusAHardCubeSlabKeepsBothCutFaces) {
     EXPECT_GT(hits[2].geometric_normal.y, 0.9999f);   // the lower part's looks up
 }
 
+// The box about (0.1, 0.2, 0.3) with half-sizes (0.5, 0.75, 1) as an analytic box and as a lone hard cube, and a
+// superquadric in the same bounds: the coincidence tests' solids.
+const std::string kBox = R"({"type": "box", "center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1]})";
+const std::string kHardCube = R"({"type": "blobs", "elements":
+    [{"center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1], "radius": 0}]})";
+const std::string kSuperquadric = R"({"type": "superquadric", "radii": [0.5, 0.75, 1], "exponents": [0.3, 0.6],
+    "center": [0.1, 0.2, 0.3]})";
+
+std::string csg_json(const std::string& operation, const std::string& a, const std::string& b) {
+    return R"({"type": "csg", "op": ")" + operation + R"(", "children": [{"shape": )" + a + R"(}, {"shape": )" + b +
+           "}]}";
+}
+
+// Ray `i` of a coincidence test: towards a random point of the box centre ± half, from 8 away; every other one
+// along a coordinate axis, as cameras meet boxes.
+Ray coincidence_ray(std::mt19937_64& rng, int i, const Vec3d& centre, const Vec3d& half) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    const Vec3d target(centre.x + half.x * u(rng), centre.y + half.y * u(rng), centre.z + half.z * u(rng));
+    Vec3d origin = target + normalize(Vec3d(u(rng), u(rng), u(rng))) * 8.0;
+    if (i % 2 == 0) {
+        origin = target;
+        origin[i / 2 % 3] -= 8;
+    }
+    return make_ray(origin, normalize(target - origin));
+}
+
+// The same surfaces along the ray, at the same t.
+bool same_hits(const RenderScene& a, const RenderScene& b, const Ray& ray) {
+    const auto hits_a = hit_sequence(a, ray), hits_b = hit_sequence(b, ray);
+    bool same = hits_a.size() == hits_b.size();
+    for (std::size_t k = 0; same && k < hits_a.size(); ++k) same = std::abs(hits_a[k].t - hits_b[k].t) <= 1e-5f;
+    return same;
+}
+
 // Two descriptions of one solid, by different code or by the same code queried differently, subtract to nothing
 // and intersect to the solid itself, and shadow rays agree. CSG queries a later operand only where the first is
 // inside, so the later one's surface lies at the very start and end of its query, where the side a point is on
@@ -89,11 +123,7 @@ TEST(CsgOperands, SphereMinusAHardCubeSlabKeepsBothCutFaces) {
 // sliver. A ray that grazes a face near an edge can still cross the gap between the two faces over more than
 // that (1 ray in 1000 here).
 TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
-    const std::string box = R"({"type": "box", "center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1]})";
-    const std::string hard_cube = R"({"type": "blobs", "elements":
-        [{"center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1], "radius": 0}]})";
-    const std::string superquadric = R"({"type": "superquadric", "radii": [0.5, 0.75, 1], "exponents": [0.3, 0.6],
-        "center": [0.1, 0.2, 0.3]})";
+    const std::string &box = kBox, &hard_cube = kHardCube, &superquadric = kSuperquadric;
     const std::string blobs = R"({"type": "blobs", "elements": [{"center": [0.1, 0.2, 0.3], "radius": 1.3},
         {"center": [0.5, 0.2, 0.3], "half_size": 0.3, "radius": 0.8}]})";
     const std::string mesh_box = R"({"type": "mesh",
@@ -108,33 +138,19 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
     const Pair pairs[] = {{box, hard_cube, 0},      {hard_cube, box, 0}, {superquadric, superquadric, 0},
                           {blobs, blobs, 0},        {mesh_box, box, 3},  {box, mesh_box, 3},
                           {mesh_box, hard_cube, 3}, {hard_cube, mesh_box, 3}};
-    const auto combined = [](const std::string& op, const std::string& a, const std::string& b) {
-        return scene_of(shape_from_json(R"({"type": "csg", "op": ")" + op + R"(", "children": [{"shape": )" + a +
-                                        R"(}, {"shape": )" + b + "}]}"));
-    };
     std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> u(-1, 1);
     for (std::size_t p = 0; p < std::size(pairs); ++p) {
         const auto& [a, b, grazing_allowance] = pairs[p];
         const auto alone = scene_of(shape_from_json(a));
-        const auto difference = combined("difference", a, b);
-        const auto intersection = combined("intersection", a, b);
+        const auto difference = scene_of(shape_from_json(csg_json("difference", a, b)));
+        const auto intersection = scene_of(shape_from_json(csg_json("intersection", a, b)));
         int left_behind = 0, not_itself = 0, occlusion_disagrees = 0;
         for (int i = 0; i < 1000; ++i) {
-            const Vec3d target(0.1 + 0.49 * u(rng), 0.2 + 0.74 * u(rng), 0.3 + 0.99 * u(rng));
-            Vec3d origin = target + normalize(Vec3d(u(rng), u(rng), u(rng))) * 8.0;
-            if (i % 2 == 0) {  // along an axis, as cameras meet boxes
-                origin = target;
-                origin[i / 2 % 3] -= 8;
-            }
-            const Ray ray = make_ray(origin, normalize(target - origin));
+            const Ray ray = coincidence_ray(rng, i, {0.1, 0.2, 0.3}, {0.49, 0.74, 0.99});
             const bool hit = !hit_sequence(*difference, ray).empty();
             if (hit) ++left_behind;
             if (difference->occluded(ray) != hit) ++occlusion_disagrees;
-            const auto own = hit_sequence(*alone, ray), both = hit_sequence(*intersection, ray);
-            bool same = own.size() == both.size();
-            for (std::size_t k = 0; same && k < own.size(); ++k) same = std::abs(own[k].t - both[k].t) <= 1e-5f;
-            if (!same) ++not_itself;
+            if (!same_hits(*alone, *intersection, ray)) ++not_itself;
         }
         EXPECT_LE(left_behind, grazing_allowance) << "pair " << p;
         EXPECT_EQ(occlusion_disagrees, 0) << "pair " << p;
@@ -145,16 +161,9 @@ TEST(CsgOperands, CoincidentSurfacesOfDifferentSolidsCancel) {
 // The same through nested trees, whose spans carry their leaves' ends: identities of sets built from a box, the
 // equal hard cube and superquadric, and a sphere overlapping them give the same hits on both sides.
 TEST(CsgOperands, NestedTreesKeepTheIdentitiesOfCoincidentSolids) {
-    const std::string box = R"({"type": "box", "center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1]})";
-    const std::string hard_cube = R"({"type": "blobs", "elements":
-        [{"center": [0.1, 0.2, 0.3], "half_size": [0.5, 0.75, 1], "radius": 0}]})";
-    const std::string superquadric = R"({"type": "superquadric", "radii": [0.5, 0.75, 1], "exponents": [0.3, 0.6],
-        "center": [0.1, 0.2, 0.3]})";
+    const std::string &box = kBox, &hard_cube = kHardCube, &superquadric = kSuperquadric;
     const std::string sphere = R"({"type": "sphere", "radius": 0.6, "center": [0.6, 0.2, 0.3]})";
-    const auto op = [](const std::string& operation, const std::string& a, const std::string& b) {
-        return R"({"type": "csg", "op": ")" + operation + R"(", "children": [{"shape": )" + a + R"(}, {"shape": )" +
-               b + "}]}";
-    };
+    const auto op = csg_json;
     struct Identity {
         std::string name, left, right;
     };
@@ -168,22 +177,11 @@ TEST(CsgOperands, NestedTreesKeepTheIdentitiesOfCoincidentSolids) {
          op("difference", op("intersection", superquadric, box), superquadric), op("difference", box, box)},
     };
     std::mt19937_64 rng(9);
-    std::uniform_real_distribution<double> u(-1, 1);
     for (const Identity& identity : identities) {
         const auto left = scene_of(shape_from_json(identity.left)), right = scene_of(shape_from_json(identity.right));
         int differ = 0;
         for (int i = 0; i < 1000; ++i) {
-            const Vec3d target(0.1 + 0.6 * u(rng), 0.2 + 0.8 * u(rng), 0.3 + u(rng));
-            Vec3d origin = target + normalize(Vec3d(u(rng), u(rng), u(rng))) * 8.0;
-            if (i % 2 == 0) {
-                origin = target;
-                origin[i / 2 % 3] -= 8;
-            }
-            const Ray ray = make_ray(origin, normalize(target - origin));
-            const auto a = hit_sequence(*left, ray), b = hit_sequence(*right, ray);
-            bool same = a.size() == b.size();
-            for (std::size_t k = 0; same && k < a.size(); ++k) same = std::abs(a[k].t - b[k].t) <= 1e-5f;
-            if (!same) ++differ;
+            if (!same_hits(*left, *right, coincidence_ray(rng, i, {0.1, 0.2, 0.3}, {0.6, 0.8, 1.0}))) ++differ;
         }
         EXPECT_EQ(differ, 0) << identity.name;
     }
