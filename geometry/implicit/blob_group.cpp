@@ -86,14 +86,15 @@ void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d&
     });
 }
 
-std::optional<FieldCrossing> BlobGroup::first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin,
-                                                               const Vec3d& direction, double t_min, double t_max,
-                                                               BlobQueryWork& work) const {
-    std::optional<FieldCrossing> found;
+std::optional<CellHit> BlobGroup::first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin,
+                                                         const Vec3d& direction, double t_min, double t_max,
+                                                         BlobQueryWork& work) const {
+    std::optional<CellHit> found;
     sweep_cell(
         cell, origin, direction, t_min, t_max, work,
-        [&](const FieldCrossing& c) {
-            found = c;
+        [&](const FieldCrossing& c, const auto& sweep) {
+            const Vec3d hit_point = origin + direction * double(float(c.t));
+            found = CellHit{c, field_sweep_detail::outward_normal(sweep.gradient_at(hit_point))};
             return true;
         },
         [] { return false; });  // where the crossing is matters
@@ -105,7 +106,7 @@ bool BlobGroup::occluded_in_cell(std::uint32_t cell, const Vec3d& origin, const 
     bool occluded = false;
     sweep_cell(
         cell, origin, direction, t_min, t_max, work,
-        [&](const FieldCrossing&) { return occluded = true; },
+        [&](const FieldCrossing&, const auto&) { return occluded = true; },
         // Inside at the cell, outside at the ray's start (F ≤ T, the sweep's sign convention): an odd number of
         // crossings lies between them. A ray that starts within rounding of the surface (a shadow ray) counts as
         // outside only if it leaves the surface: one heading inwards crosses it at t_min itself, which the sweep
@@ -124,7 +125,7 @@ std::optional<FieldCrossing> BlobGroup::first_crossing(const Vec3d& origin, cons
                                                        double t_max, BlobQueryWork& work) const {
     std::optional<FieldCrossing> found;
     cells_.walk(origin, direction, t_min, t_max, [&](std::uint32_t cell, double, double) {
-        found = first_crossing_in_cell(cell, origin, direction, t_min, t_max, work);
+        if (const auto hit = first_crossing_in_cell(cell, origin, direction, t_min, t_max, work)) found = hit->crossing;
         return !found;
     });
     return found;
@@ -137,7 +138,7 @@ int BlobGroup::crossings(const Vec3d& origin, const Vec3d& direction, double t_m
     cells_.walk(origin, direction, t_min, t_max, [&](std::uint32_t cell, double, double) {
         sweep_cell(
             cell, origin, direction, t_min, t_max, work,
-            [&](const FieldCrossing& c) {
+            [&](const FieldCrossing& c, const auto&) {
                 // A crossing on the face between two cells is found by both: keep it once.
                 const bool repeated = out.size() > first && c.entering == out.back().entering &&
                                       c.t - out.back().t <= field_sweep_detail::same_place_tolerance(c.t);
@@ -184,9 +185,7 @@ Vec3d BlobGroup::normal_in_cell(std::uint32_t cell, const Vec3d& point) const {
 }
 
 Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const {
-    const Vec3d g = gradient_from(near, point);
-    const double len = length(g);
-    if (len > 0 && std::isfinite(len)) return -g / len;
+    if (const std::optional<Vec3d> normal = field_sweep_detail::outward_normal(gradient_from(near, point))) return *normal;
     // Only hard cubes (step fields) meet here: take the face of the nearest hard-cube boundary.
     double best = std::numeric_limits<double>::infinity();
     Vec3d result(0, 0, 1);

@@ -18,6 +18,14 @@
 
 namespace isotrace {
 
+// A cell's first crossing, with the outward unit normal at the point where a renderer places it.
+struct CellHit {
+    FieldCrossing crossing;
+    // At o + d·float(t) (Embree keeps a hit's t as a float, and the shading point is computed from it); std::nullopt
+    // where −∇F vanishes there (a hard cube's face: normal_in_cell takes the face's normal).
+    std::optional<Vec3d> normal;
+};
+
 class BlobGroup {
 public:
     // Throws std::invalid_argument (field "threshold") for a threshold that is not finite and > 0.
@@ -34,10 +42,11 @@ public:
     // (docs/reliability.md). The memory budget is charged with it before a "generate" allocates.
     static constexpr std::uint64_t kPeakBytesPerElement = 328;
 
-    // The first crossing of F along o + t·d with t in (t_min, t_max) inside cell `cell` (Embree's query).
-    std::optional<FieldCrossing> first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin,
-                                                        const Vec3d& direction, double t_min, double t_max,
-                                                        BlobQueryWork& work) const;
+    // The first crossing of F along o + t·d with t in (t_min, t_max) inside cell `cell` (Embree's query), and its
+    // normal, summed from the sweep's own elements (candidate hits are nearly all accepted: 31,330 crossings for
+    // 31,302 hits on blobs_10k at 320×180, so a normal per crossing costs less than a second search of the cell).
+    std::optional<CellHit> first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
+                                                  double t_min, double t_max, BlobQueryWork& work) const;
     // Whether F crosses T anywhere along o + t·d with t in (t_min, t_max) inside cell `cell` (Embree's occlusion
     // query). A cell that starts inside the surface after a ray start outside it ends at once: the ray crossed the
     // surface before the cell (shadow rays meet cells in the order of Embree's hierarchy, not along the ray, and
@@ -71,7 +80,7 @@ private:
     // Calls f with the kernel as its concrete class, so that the sweep's kernel calls are direct.
     template <class F>
     decltype(auto) with_kernel(F&& f) const;
-    // Sweeps cell `cell`'s part of [t_min, t_max]; report(crossing) returns true to stop. When the part starts
+    // Sweeps cell `cell`'s part of [t_min, t_max]; report(crossing, sweep) returns true to stop. When the part starts
     // inside after t_min, crossed_before() is asked whether that ends the sweep (FieldSweep::run).
     template <class Report, class CrossedBefore>
     void sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,

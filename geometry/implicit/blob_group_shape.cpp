@@ -60,13 +60,12 @@ void BlobGroupShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
     user_geometry::store_bounds(args->bounds_o, cell.lower, cell.upper);
 }
 
-std::optional<double> BlobGroupShape::first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
-                                                double t_near, float t_far) const {
+std::optional<CellHit> BlobGroupShape::first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
+                                                 double t_near, float t_far) const {
     BlobQueryWork work;
-    const auto crossing = group_.first_crossing_in_cell(cell, origin, direction, t_near, t_far, work);
+    const auto hit = group_.first_crossing_in_cell(cell, origin, direction, t_near, t_far, work);
     count_work(work);
-    if (!crossing) return std::nullopt;
-    return crossing->t;
+    return hit;
 }
 
 bool BlobGroupShape::occludes(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near,
@@ -78,21 +77,26 @@ bool BlobGroupShape::occludes(std::uint32_t cell, const Vec3d& origin, const Vec
 }
 
 LocalShading BlobGroupShape::shading(const RTCHit& hit, const Vec3f&, const Vec3d& point) const {
-    const Vec3f normal(group_.normal_in_cell(hit.primID, point));
+    // The intersect callback stored the normal of the hit point; a zero one means −∇F vanishes there (a hard cube's
+    // face), whose normal the cell's hard cubes give.
+    const Vec3f stored(hit.Ng_x, hit.Ng_y, hit.Ng_z);
+    const Vec3f normal = stored != Vec3f(0, 0, 0) ? stored : Vec3f(group_.normal_in_cell(hit.primID, point));
     return {normal, normal};
 }
 
 void BlobGroupShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const BlobGroupShape*>(args->geometryUserPtr);
+    std::optional<Vec3d> normal;  // of the hit first_hit just found, for record
     user_geometry::intersect_rays(
         args, self->counter_slot_,
         [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) -> std::optional<double> {
-            const auto t = self->first_hit(args->primID, origin, direction, t_near, t_far);
-            if (!t || !(float(*t) < t_far)) return std::nullopt;
-            return t;
+            const auto hit = self->first_hit(args->primID, origin, direction, t_near, t_far);
+            if (!hit || !(float(hit->crossing.t) < t_far)) return std::nullopt;
+            normal = hit->normal;
+            return hit->crossing.t;
         },
         [&](unsigned i, const Vec3d&, const Vec3d&, double t) {
-            user_geometry::store_hit(args, i, float(t), {0, 0, 1});  // the normal comes with shading()
+            user_geometry::store_hit(args, i, float(t), normal.value_or(Vec3d(0, 0, 0)));
         });
 }
 

@@ -2,7 +2,8 @@
 // The "blobs" shape: a BlobGroup as one Embree user geometry, one primitive per cell (blob_cells.h), bounds =
 // the cell's box. A cell's intersect callback reports the first crossing of the summed field within the cell;
 // cells are disjoint, so Embree's shrinking t_far makes the nearest of them the hit and culls the cells behind
-// it. Normals are computed for the accepted hit only (shading). As a CSG operand the group is a solid: inside is
+// it. The callback also stores the hit's normal in Embree's Ng, summed from the elements its sweep holds (a hit
+// that a nearer cell later replaces wasted that sum, which is rare); shading() reads it back. As a CSG operand the group is a solid: inside is
 // where the summed field exceeds the threshold.
 #include <array>
 
@@ -38,9 +39,9 @@ public:
 private:
     void register_counters();
     void count_work(const BlobQueryWork& work) const;
-    // The first crossing in (t_near, t_far) within cell `cell`, its work counted.
-    std::optional<double> first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near,
-                                    float t_far) const;
+    // The first crossing in (t_near, t_far) within cell `cell` and its normal, its work counted.
+    std::optional<CellHit> first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near,
+                                     float t_far) const;
     // Whether any crossing lies in (t_near, t_far) within cell `cell`, its work counted.
     bool occludes(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) const;
     static void bounds_callback(const RTCBoundsFunctionArguments* args);

@@ -211,7 +211,7 @@ TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfCellQueries) {
             std::optional<double> best;
             for (std::uint32_t cell : order)
                 if (const auto c = group.first_crossing_in_cell(cell, origin, direction, 0, best.value_or(1e30), work))
-                    best = c->t;
+                    best = c->crossing.t;
             ASSERT_EQ(best.has_value(), expected.has_value()) << "ray " << ray << " trial " << trial;
             if (best) {
                 EXPECT_NEAR(*best, *expected, 1e-9) << "ray " << ray << " trial " << trial;

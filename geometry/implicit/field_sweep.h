@@ -26,6 +26,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "geometry/implicit/field_function.h"
@@ -125,6 +126,14 @@ inline Term compose_with_quadratic(const FieldPiece& piece, double weight, const
 // face found in the cube's frame against a stretch start found in world coordinates.
 inline double same_place_tolerance(double t) { return 1e-12 * (1 + std::abs(t)); }
 
+// −g/|g|, the outward unit normal of F = 0 for g = ∇(F + T); std::nullopt where g vanishes (only on a hard cube's
+// face, where F steps) or overflows.
+inline std::optional<Vec3d> outward_normal(const Vec3d& gradient) {
+    const double len = length(gradient);
+    if (len > 0 && std::isfinite(len)) return -gradient / len;
+    return std::nullopt;
+}
+
 struct Range {
     double low, high;
 };
@@ -161,13 +170,21 @@ public:
           centre_bound_(centre_bound), unit_pieces_(kernel.unit_pieces()) {}
 
     // Sweeps `stretch` over the field of the elements `candidates` (every element whose support may reach the
-    // stretch must be among them). Calls report(crossing) for each crossing in increasing t; report returns
-    // true to stop. When the stretch starts inside (F > T beyond rounding) after t_min, crossed_before() is called
+    // stretch must be among them). Calls report(crossing, sweep) for each crossing in increasing t, `sweep` being
+    // this sweep as it stands there (for normal_at); report returns true to stop. When the stretch starts inside (F > T beyond rounding) after t_min, crossed_before() is called
     // and the sweep stops if it returns true: a query that needs no crossing's place (occlusion) can tell from the
     // sign at t_min that one lies before the stretch. `work` collects the statistics.
     template <class Report, class CrossedBefore>
     void run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch, BlobQueryWork& work,
              Report&& report, CrossedBefore&& crossed_before);
+
+    // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece: every
+    // element whose support contains the point does (its entry is an event at or before the piece), and the others
+    // (hard cubes too) add 0, so this is the sum BlobGroup::gradient makes over a cell's list, and in the same order
+    // (ascending element index), hence the same bits; a hit's normal then needs no second search of the cell's
+    // list. A point a rounding away from the crossing (a hit's t kept as a float) can miss an element whose support
+    // begins between them, whose term there is within rounding of 0.
+    Vec3d gradient_at(const Vec3d& point) const;
 
 private:
     // An element whose bounding sphere the stretch meets, waiting for the sweep to reach its entry.
@@ -517,6 +534,17 @@ double FieldSweep<Kernel>::value(double t) const {
     return sum;
 }
 
+template <class Kernel>
+Vec3d FieldSweep<Kernel>::gradient_at(const Vec3d& point) const {
+    InlineVector<std::uint32_t, 24> ascending;  // the elements counting on the crossing's piece (the rest add 0)
+    for (const Active& a : joined_)
+        if (a.kernel_piece && !a.hard_cube) ascending.push_back(a.index);
+    std::sort(ascending.begin(), ascending.end());
+    Vec3d sum(0, 0, 0);
+    for (const std::uint32_t index : ascending) sum += elements_[index].field_gradient(kernel_, point);
+    return sum;
+}
+
 // The hard cubes' share of F just before t minus just after it: a hard cube's closed box counts at its faces,
 // so entering one is a step up at t itself and leaving one a step down just after it. A face within rounding of t
 // counts as at t: a lone hard cube's cell is the cube, so a stretch starts and ends on its faces, and a face found
@@ -574,7 +602,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
     const auto crossing = [&](double t, int before) {
         if (!(t > stretch.t_min && t < stretch.t_max)) return false;
         ++work.roots;
-        return report(FieldCrossing{t, before < 0, witness});
+        return report(FieldCrossing{t, before < 0, witness}, std::as_const(*this));
     };
 
     double t0 = stretch.t_begin;
