@@ -287,9 +287,19 @@ private:
 
 template <class Kernel>
 double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const SweepStretch& stretch) {
-    near_.clear();
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
+    // Most listed elements are far from the stretch: their compact bounding spheres reject them, four at a time.
+    // The survivors' elements are fetched as they are found and examined only after the whole list: their loads
+    // (a cache miss each, most often) then overlap instead of each waiting behind the tests of the one before.
+    near_.clear();
+    const double length_d = length(d);
+    const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
+                                     0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
+    for_each_near(listed, spheres_, segment, [&](std::uint32_t index) {
+        __builtin_prefetch(&elements_[index]);
+        near_.push_back(index);
+    });
     const double inverse_length2 = 1 / dot(d, d);
     // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept
     // because of it that misses the stretch is dropped by order_candidates' exact chord.
@@ -297,7 +307,8 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const S
                                      length(d) * std::max(std::abs(stretch.t_begin), std::abs(stretch.t_end)) +
                                      centre_bound_);
     double upper = 0;  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
-    const auto consider = [&](std::uint32_t index) {
+    std::size_t kept = 0;
+    for (const std::uint32_t index : near_) {
         // The element's support lies in the sphere of radius R + |half-size| about its centre. The stretch's point
         // nearest the centre (its projection on the line, clamped) decides whether the stretch may meet that
         // sphere, and bounds the field: the skeleton box is no nearer than that distance less its half-diagonal.
@@ -309,9 +320,9 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const S
         const Vec3d to_centre = o + d * t_near - element.centre();
         double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
         const double keep = reach * (1 + 1e-9) + rounding;
-        if (gap2 > keep * keep) return;
-        near_.push_back(index);
-        if (element.weight() <= 0) return;
+        if (gap2 > keep * keep) continue;
+        near_[kept++] = index;
+        if (element.weight() <= 0) continue;
         double f_max = 1;  // a hard cube's step
         if (!element.is_hard_cube()) {
             if (half_diagonal > 0) {
@@ -321,12 +332,8 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const S
             f_max = unit_value(gap2 / (element.radius() * element.radius()));
         }
         upper += element.weight() * f_max;
-    };
-    // Most listed elements are far from the stretch: their compact bounding spheres reject them, four at a time.
-    const double length_d = length(d);
-    const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
-                                     0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
-    for_each_near(listed, spheres_, segment, consider);
+    }
+    near_.truncate(kept);
     return upper;
 }
 
