@@ -125,7 +125,8 @@ std::optional<FieldCrossing> BlobGroup::first_crossing(const Vec3d& origin, cons
                                                        double t_max, BlobQueryWork& work) const {
     std::optional<FieldCrossing> found;
     cells_.walk(origin, direction, t_min, t_max, [&](std::uint32_t cell, double, double) {
-        if (const auto hit = first_crossing_in_cell(cell, origin, direction, t_min, t_max, work)) found = hit->crossing;
+        if (const auto hit = first_crossing_in_cell(cell, origin, direction, t_min, t_max, work))
+            found = hit->crossing;
         return !found;
     });
     return found;
@@ -185,7 +186,8 @@ Vec3d BlobGroup::normal_in_cell(std::uint32_t cell, const Vec3d& point) const {
 }
 
 Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const {
-    if (const std::optional<Vec3d> normal = field_sweep_detail::outward_normal(gradient_from(near, point))) return *normal;
+    if (const std::optional<Vec3d> normal = field_sweep_detail::outward_normal(gradient_from(near, point)))
+        return *normal;
     // Only hard cubes (step fields) meet here: take the face of the nearest hard-cube boundary.
     double best = std::numeric_limits<double>::infinity();
     Vec3d result(0, 0, 1);

@@ -171,9 +171,10 @@ public:
 
     // Sweeps `stretch` over the field of the elements `candidates` (every element whose support may reach the
     // stretch must be among them). Calls report(crossing, sweep) for each crossing in increasing t, `sweep` being
-    // this sweep as it stands there (for normal_at); report returns true to stop. When the stretch starts inside (F > T beyond rounding) after t_min, crossed_before() is called
-    // and the sweep stops if it returns true: a query that needs no crossing's place (occlusion) can tell from the
-    // sign at t_min that one lies before the stretch. `work` collects the statistics.
+    // this sweep as it stands there (for gradient_at); report returns true to stop. When the stretch starts inside
+    // (F > T beyond rounding) after t_min, crossed_before() is called and the sweep stops if it returns true: a query
+    // that needs no crossing's place (occlusion) can tell from the sign at t_min that one lies before the stretch.
+    // `work` collects the statistics.
     template <class Report, class CrossedBefore>
     void run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch, BlobQueryWork& work,
              Report&& report, CrossedBefore&& crossed_before);
