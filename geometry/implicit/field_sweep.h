@@ -194,29 +194,29 @@ private:
         std::uint32_t index;
     };
     // An element the sweep has reached. Before its support it does not count; from there its pieces follow each
-    // other until the support ends.
+    // other until the support ends. A metaball has one piece, its support's chord, and carries no slices: a
+    // metacube's slices (~300 bytes) are kept aside in box_slices_, so that the list of joined elements, read at
+    // every event, stays small (blob groups are mostly metaballs).
     struct Active {
-        // `slice()` returns the element's slices, built in place: an Active is ~0.5 KB, and copying the slices
-        // twice (into an optional, then into the list) was 45 % of join_until's time (perf, blobs_10k).
-        template <class Slice>
-        Active(std::uint32_t index, const Metacube& element, Slice&& slice)
+        Active(std::uint32_t index, const Metacube& element, double t_in, double t_out, int box_slices)
             : inverse_radius2(element.is_hard_cube() ? 0 : 1 / (element.radius() * element.radius())),
-              weight(element.weight()), index(index), hard_cube(element.is_hard_cube()), slices(slice()) {}
-        // First what every loop over the joined elements reads (the next event, the ranges), in one cache line
-        // rather than spread over the half kilobyte.
+              weight(element.weight()), t_in(t_in), t_out(t_out), index(index), box_slices(box_slices),
+              hard_cube(element.is_hard_cube()) {}
+        // First what every loop over the joined elements reads (the next event, the ranges), in one cache line.
         const FieldPiece* kernel_piece = nullptr;  // nullptr: not counting on the current piece
         double next_event = 0;                     // where its current piece ends (kUnset: never again)
         QuadraticAbout q;                          // dist² on the current piece, in s = t − t_ref_
         double q_vertex = 0;                       // quadratic_vertex(q)
         double inverse_radius2;  // 1/R², for x = r²/R² (0 for a hard cube); divisions cost more than the rest
         double weight;           // the element's
+        double t_in, t_out;      // its support along the line
         std::uint32_t index;
+        int box_slices;          // its slices in box_slices_, or −1 for a metaball (one piece, [t_in, t_out])
         int region = -1;         // current region piece, −1 before the support
         bool hard_cube;          // the element's
         // Its term of the sum on the current piece (polynomial pieces), once composed. Optional, so that joining
         // zeroes no polynomial (a rep stos per element, perf).
         std::optional<field_sweep_detail::Term> contribution;
-        MetacubeRaySlices slices;
     };
 
     // Keeps in near_ the listed elements whose support's bounding sphere the stretch may meet; returns an upper
@@ -278,6 +278,8 @@ private:
     InlineVector<Candidate, 64> candidates_;  // by entry
     std::size_t next_candidate_ = 0;
     InlineVector<Active, 24> joined_;
+    InlineVector<MetacubeRaySlices, 4> box_slices_;  // of the joined metacubes and hard cubes
+    Vec3d origin_, direction_;                        // the swept line
     bool sum_valid_ = false;                                        // sum_ matches the counting elements
     Polynomial sum_;                                                // Σ contributions − T, in s
     std::array<double, kMaxPolynomialDegree + 1> sum_magnitude_{};  // Σ |coefficients| of its terms and T
@@ -361,22 +363,20 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
     while (next_candidate_ < candidates_.size() && candidates_[next_candidate_].t_enter <= t) {
         const Candidate& candidate = candidates_[next_candidate_++];
         const Metacube& element = elements_[candidate.index];
-        const auto join = [&](auto&& slice) {
+        const auto join = [&](double t_in, double t_out, int box_slices) {
             ++work.joined;
             hard_cube_joined_ = hard_cube_joined_ || element.is_hard_cube();
-            enter_piece(joined_.emplace_back(candidate.index, element, slice), t);
+            enter_piece(joined_.emplace_back(candidate.index, element, t_in, t_out, box_slices), t);
         };
         if (element.is_metaball()) {
-            // Its support is its bounding sphere: its slices are the chord order_candidates found.
-            if (candidate.t_exit > t)
-                join([&] {
-                    return MetacubeRaySlices::metaball(stretch.origin, stretch.direction, element.centre(),
-                                                       candidate.t_enter, candidate.t_exit);
-                });
+            // Its support is its bounding sphere: the chord order_candidates found.
+            if (candidate.t_exit > t) join(candidate.t_enter, candidate.t_exit, -1);
             continue;
         }
         const auto slices = MetacubeRaySlices::slice(element, stretch.origin, stretch.direction);
-        if (slices && slices->t_out() > t) join([&] { return *slices; });
+        if (!slices || !(slices->t_out() > t)) continue;
+        box_slices_.push_back(*slices);
+        join(slices->t_in(), slices->t_out(), int(box_slices_.size() - 1));
     }
 }
 
@@ -442,33 +442,40 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
         a.kernel_piece = nullptr;
     }
     a.contribution.reset();
-    const MetacubeRaySlices& slices = a.slices;
-    const auto pieces = slices.pieces();
-    if (t >= slices.t_out()) {
+    if (t >= a.t_out) {
         a.next_event = field_sweep_detail::kUnset;
         return;
     }
-    if (t < slices.t_in()) {  // not yet inside its support
+    if (t < a.t_in) {  // not yet inside its support
         a.region = -1;
-        a.next_event = slices.t_in();
+        a.next_event = a.t_in;
         return;
     }
-    if (a.region < 0) a.region = 0;
-    while (a.region + 1 < int(pieces.size()) && pieces[std::size_t(a.region)].t_end <= t) ++a.region;
-    const RegionPiece& region = pieces[std::size_t(a.region)];
-    a.next_event = region.t_end;
-    a.q = slices.distance_squared(region, t_ref_);
-    a.q_vertex = field_sweep_detail::quadratic_vertex(a.q);
-    const double radius = element.radius();
-    if (element.is_hard_cube()) {
-        // A hard cube counts w inside its box (the region piece with U = 0) and nothing elsewhere.
-        static constexpr FieldPiece kConstant{0, 0, true, 0, {1, 0, 0, 0}};
-        if (region.region == std::array<int, 3>{0, 0, 0}) {
-            a.kernel_piece = &kConstant;
-            sum_valid_ = false;
+    if (a.box_slices < 0) {
+        a.region = 0;
+        a.next_event = a.t_out;
+        a.q = MetacubeRaySlices::metaball_distance_squared(origin_, direction_, element.centre(), t_ref_);
+        a.q_vertex = field_sweep_detail::quadratic_vertex(a.q);
+    } else {
+        const MetacubeRaySlices& slices = box_slices_[std::size_t(a.box_slices)];
+        const auto pieces = slices.pieces();
+        if (a.region < 0) a.region = 0;
+        while (a.region + 1 < int(pieces.size()) && pieces[std::size_t(a.region)].t_end <= t) ++a.region;
+        const RegionPiece& region = pieces[std::size_t(a.region)];
+        a.next_event = region.t_end;
+        a.q = slices.distance_squared(region, t_ref_);
+        a.q_vertex = field_sweep_detail::quadratic_vertex(a.q);
+        if (element.is_hard_cube()) {
+            // A hard cube counts w inside its box (the region piece with U = 0) and nothing elsewhere.
+            static constexpr FieldPiece kConstant{0, 0, true, 0, {1, 0, 0, 0}};
+            if (region.region == std::array<int, 3>{0, 0, 0}) {
+                a.kernel_piece = &kConstant;
+                sum_valid_ = false;
+            }
+            return;
         }
-        return;
     }
+    const double radius = element.radius();
     // Kernel piece boundaries (levels of r²) split the region piece further.
     const double radius2 = radius * radius;
     for (std::size_t k = 1; k < unit_pieces_.size(); ++k) {
@@ -565,7 +572,7 @@ double FieldSweep<Kernel>::hard_cube_step_before(double t) const {
         const Metacube& element = elements_[a.index];
         if (!element.is_hard_cube()) continue;
         const bool inside_after = a.kernel_piece != nullptr;
-        const bool inside_before = a.slices.t_in() < t - tolerance && t <= a.slices.t_out() + tolerance;
+        const bool inside_before = a.t_in < t - tolerance && t <= a.t_out + tolerance;
         step += element.weight() * ((inside_before ? 1 : 0) - (inside_after ? 1 : 0));
     }
     return step;
@@ -577,7 +584,7 @@ void FieldSweep<Kernel>::hard_cube_exit_at_end(double t_end, int previous_sign, 
     const double tolerance = field_sweep_detail::same_place_tolerance(t_end);
     double step = 0;
     for (const Active& a : joined_)
-        if (a.hard_cube && a.kernel_piece && a.slices.t_out() <= t_end + tolerance) step += a.weight;
+        if (a.hard_cube && a.kernel_piece && a.t_out <= t_end + tolerance) step += a.weight;
     if (step == 0) return;
     using field_sweep_detail::sign_of;
     const double before = value(t_end);
@@ -600,6 +607,9 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
     order_candidates(stretch);
     work.candidates += candidates_.size();
     joined_.clear();
+    box_slices_.clear();
+    origin_ = stretch.origin;
+    direction_ = stretch.direction;
     non_polynomial_ = 0;
     hard_cube_joined_ = false;
     t_ref_ = stretch.t_begin;

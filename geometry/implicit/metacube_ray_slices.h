@@ -48,9 +48,6 @@ public:
     // misses the support (or only touches it). A zero direction misses.
     static std::optional<MetacubeRaySlices> slice(const Metacube& element, const Vec3d& origin,
                                                   const Vec3d& direction);
-    // A metaball's single piece, when the roots t_in < t_out of its support sphere are known already.
-    static MetacubeRaySlices metaball(const Vec3d& origin, const Vec3d& direction, const Vec3d& centre, double t_in,
-                                      double t_out);
 
     // The support interval: dist(o + t·dir) ≤ R exactly for t in [t_in, t_out] (up to rounding).
     double t_in() const { return pieces_[0].t_begin; }
@@ -59,10 +56,21 @@ public:
     std::span<const RegionPiece> pieces() const { return {pieces_.data(), std::size_t(count_)}; }
     // dist²(o + t·dir) on `piece` (valid for t in the piece), written about t_ref.
     QuadraticAbout distance_squared(const RegionPiece& piece, double t_ref) const;
+    // A metaball's dist² along o + t·dir, written about t_ref: the same bits as distance_squared gives on the one
+    // piece of a metaball's slices, without building them.
+    static QuadraticAbout metaball_distance_squared(const Vec3d& origin, const Vec3d& direction,
+                                                    const Vec3d& centre, double t_ref);
 
 private:
     MetacubeRaySlices() = default;
+    // A metaball's single piece, between the roots t_in < t_out of its support sphere.
+    static MetacubeRaySlices metaball(const Vec3d& origin, const Vec3d& direction, const Vec3d& centre, double t_in,
+                                      double t_out);
     std::array<int, 3> region_at(double t) const;
+    // Σ over the axes with region[k] ≠ 0 of (local_origin[k] + local_direction[k]·t − region[k]·half_size[k])²,
+    // expanded about t_ref.
+    static QuadraticAbout squared_offsets(const Vec3d& local_origin, const Vec3d& local_direction,
+                                          const Vec3d& half_size, const std::array<int, 3>& region, double t_ref);
 
     Vec3d local_origin_, local_direction_, half_size_;
     std::array<RegionPiece, kMaxPieces> pieces_;  // [0, count_) are set; the rest is never read
