@@ -29,11 +29,10 @@ void BlobGroupShape::register_counters() {
     static constexpr const char* kWorkNames[] = {
         ".cell_queries",      ".cell_queries_bounded", ".candidates",      ".elements_joined", ".pieces",
         ".pieces_skipped_by_bounds", ".polynomial_solves", ".lipschitz_searches", ".root_iterations", ".roots"};
-    const std::string prefixes[] = {type_name(),
-                                    type_name() + "[" + (object_name().empty() ? "unnamed" : object_name()) + "]"};
-    std::size_t slot = 0;
-    for (const std::string& prefix : prefixes)
-        for (const char* name : kWorkNames) work_slots_[slot++] = counters::named_counter_slot(prefix + name);
+    const std::string group = type_name() + "[" + (object_name().empty() ? "unnamed" : object_name()) + "]";
+    for (std::size_t k = 0; k < work_slots_.size(); ++k)
+        work_slots_[k] = counters::named_counter_slot(group + kWorkNames[k],
+                                                      counters::named_counter_slot(type_name() + kWorkNames[k]));
 }
 
 void BlobGroupShape::count_work(const BlobQueryWork& work) const {
@@ -42,10 +41,7 @@ void BlobGroupShape::count_work(const BlobQueryWork& work) const {
                                                 work.joined,         work.pieces,             work.skipped_pieces,
                                                 work.polynomial_solves, work.lipschitz_searches, work.root_iterations,
                                                 work.roots};
-    std::array<std::uint64_t, 20> for_both;  // all groups, then this one
-    std::copy(amounts.begin(), amounts.end(), for_both.begin());
-    std::copy(amounts.begin(), amounts.end(), for_both.begin() + amounts.size());
-    counters::add_to_named(work_slots_, for_both);
+    counters::add_to_named(work_slots_, amounts);
 }
 
 RTCGeometry BlobGroupShape::create_geometry(RTCDevice device) {

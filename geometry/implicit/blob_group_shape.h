@@ -52,7 +52,7 @@ private:
     int counter_slot_ = 0;
     // Work counters for all blob groups ("blobs.pieces", ...) and for this one ("blobs[name].pieces", ...).
     // Counter slots of every BlobQueryWork field, for all blob groups and then for this one.
-    std::array<int, 20> work_slots_{};
+    std::array<int, 10> work_slots_{};  // this group's counters (each adds into the type's total)
 };
 
 }  // namespace isotrace

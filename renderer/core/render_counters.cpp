@@ -42,6 +42,7 @@ struct Registry {
     std::vector<std::string> type_names;
     std::vector<bool> type_counts_tests;
     std::vector<std::string> counter_names;
+    std::vector<int> counter_totals;  // per named counter: the slot it also adds into, or −1
 };
 
 Registry& registry() {
@@ -77,15 +78,20 @@ int geometry_type_slot(const std::string& type_name, bool counts_tests) {
     return int(r.type_names.size() - 1);
 }
 
-int named_counter_slot(const std::string& name) {
+int named_counter_slot(const std::string& name, int total_slot) {
     Registry& r = registry();
     std::lock_guard lock(r.mutex);
+    if (total_slot >= int(r.counter_names.size())) throw std::logic_error("counter total registered after its part");
     for (std::size_t i = 0; i < r.counter_names.size(); ++i)
         if (r.counter_names[i] == name) return int(i);
     // Full: every further name adds to one overflow counter rather than failing the render.
-    if (r.counter_names.size() + 1 == kMaxNamedCounters) r.counter_names.push_back(kOverflowCounter);
+    if (r.counter_names.size() + 1 == kMaxNamedCounters) {
+        r.counter_names.push_back(kOverflowCounter);
+        r.counter_totals.push_back(-1);
+    }
     if (r.counter_names.size() == kMaxNamedCounters) return kMaxNamedCounters - 1;
     r.counter_names.push_back(name);
+    r.counter_totals.push_back(total_slot);
     return int(r.counter_names.size() - 1);
 }
 
@@ -123,11 +129,13 @@ CounterTotals totals() {
         }
         result.geometry[r.type_names[slot]] = counts;
     }
-    for (std::size_t slot = 0; slot < r.counter_names.size(); ++slot) {
-        std::uint64_t sum = 0;
-        for (const auto& block : r.blocks) sum += read(block->named[slot]);
-        result.named[r.counter_names[slot]] = sum;
-    }
+    std::vector<std::uint64_t> sums(r.counter_names.size(), 0);
+    for (std::size_t slot = 0; slot < sums.size(); ++slot)
+        for (const auto& block : r.blocks) sums[slot] += read(block->named[slot]);
+    // A total's slot precedes its parts': from the last slot down, a part is complete before it is added.
+    for (std::size_t slot = sums.size(); slot-- > 0;)
+        if (r.counter_totals[slot] >= 0) sums[std::size_t(r.counter_totals[slot])] += sums[slot];
+    for (std::size_t slot = 0; slot < sums.size(); ++slot) result.named[r.counter_names[slot]] = sums[slot];
     return result;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -57,6 +59,28 @@ TEST_F(RenderCounters, CountsFromSeveralThreadsAddUpExactly) {
     EXPECT_EQ(geometry.candidate_hits, std::uint64_t(kThreads) * kPerThread / 4);
     EXPECT_EQ(geometry.closest_hits, std::uint64_t(kThreads) * kPerThread / 8);
     EXPECT_TRUE(geometry.counts_tests);
+}
+
+// Per-object counters add into their type's total when totals are read (the hot path counts each amount once):
+// the total is the sum of its parts plus what was added to it directly, from every thread, and a part of a part
+// reaches the top.
+TEST_F(RenderCounters, PartsAddIntoTheirTotalWhenTotalsAreRead) {
+    const int total = counters::named_counter_slot("counters_test.total");
+    const int first = counters::named_counter_slot("counters_test[a].total", total);
+    const int second = counters::named_counter_slot("counters_test[b].total", total);
+    const int nested = counters::named_counter_slot("counters_test[b][x].total", second);
+    EXPECT_EQ(counters::named_counter_slot("counters_test[a].total", total), first);  // registered once
+    std::thread worker([&] {
+        counters::add_to_named(std::array{first, second}, std::array<std::uint64_t, 2>{3, 5});
+    });
+    worker.join();
+    counters::add_to_named(std::array{first, total, nested}, std::array<std::uint64_t, 3>{7, 11, 13});
+    const CounterTotals totals = counters::totals();
+    EXPECT_EQ(totals.named.at("counters_test[a].total"), 10u);
+    EXPECT_EQ(totals.named.at("counters_test[b][x].total"), 13u);
+    EXPECT_EQ(totals.named.at("counters_test[b].total"), 18u);
+    EXPECT_EQ(totals.named.at("counters_test.total"), 39u);
+    EXPECT_THROW(counters::named_counter_slot("counters_test.early", 100000), std::logic_error);
 }
 
 TEST_F(RenderCounters, ResetZeroesEveryCounterOfEveryThread) {
