@@ -131,24 +131,4 @@ QuadraticAbout MetacubeRaySlices::distance_squared(const RegionPiece& piece, dou
     return squared_offsets(local_origin_, local_direction_, half_size_, piece.region, t_ref);
 }
 
-QuadraticAbout MetacubeRaySlices::metaball_distance_squared(const Vec3d& origin, const Vec3d& direction,
-                                                            const Vec3d& centre, double t_ref) {
-    return squared_offsets(origin - centre, direction, {0, 0, 0}, {1, 1, 1}, t_ref);  // as metaball() sets them
-}
-
-QuadraticAbout MetacubeRaySlices::squared_offsets(const Vec3d& local_origin, const Vec3d& local_direction,
-                                                  const Vec3d& half_size, const std::array<int, 3>& region,
-                                                  double t_ref) {
-    QuadraticAbout q{t_ref};
-    for (int k = 0; k < 3; ++k) {
-        if (region[k] == 0) continue;
-        const double v = local_direction[k];
-        const double a = local_origin[k] + v * t_ref - region[k] * half_size[k];
-        q.c0 += a * a;
-        q.c1 += 2 * a * v;
-        q.c2 += v * v;
-    }
-    return q;
-}
-
 }  // namespace isotrace

@@ -57,9 +57,11 @@ public:
     // dist²(o + t·dir) on `piece` (valid for t in the piece), written about t_ref.
     QuadraticAbout distance_squared(const RegionPiece& piece, double t_ref) const;
     // A metaball's dist² along o + t·dir, written about t_ref: the same bits as distance_squared gives on the one
-    // piece of a metaball's slices, without building them.
+    // piece of a metaball's slices, without building them. Inline: the sweep asks it for every metaball it joins.
     static QuadraticAbout metaball_distance_squared(const Vec3d& origin, const Vec3d& direction,
-                                                    const Vec3d& centre, double t_ref);
+                                                    const Vec3d& centre, double t_ref) {
+        return squared_offsets(origin - centre, direction, {0, 0, 0}, {1, 1, 1}, t_ref);  // as metaball() sets them
+    }
 
 private:
     MetacubeRaySlices() = default;
@@ -70,7 +72,18 @@ private:
     // Σ over the axes with region[k] ≠ 0 of (local_origin[k] + local_direction[k]·t − region[k]·half_size[k])²,
     // expanded about t_ref.
     static QuadraticAbout squared_offsets(const Vec3d& local_origin, const Vec3d& local_direction,
-                                          const Vec3d& half_size, const std::array<int, 3>& region, double t_ref);
+                                          const Vec3d& half_size, const std::array<int, 3>& region, double t_ref) {
+        QuadraticAbout q{t_ref};
+        for (int k = 0; k < 3; ++k) {
+            if (region[k] == 0) continue;
+            const double v = local_direction[k];
+            const double a = local_origin[k] + v * t_ref - region[k] * half_size[k];
+            q.c0 += a * a;
+            q.c1 += 2 * a * v;
+            q.c2 += v * v;
+        }
+        return q;
+    }
 
     Vec3d local_origin_, local_direction_, half_size_;
     std::array<RegionPiece, kMaxPieces> pieces_;  // [0, count_) are set; the rest is never read
