@@ -39,7 +39,7 @@ void count_nan_sample();
 // Plugin-specific counters: register a name once, then add to its slot from any thread. Names beyond the table's
 // 1023 share the slot "counters.overflow". A counter registered with `total_slot` (a slot registered before it) is
 // also added into that slot when totals are read: a per-object counter and its type's total are then counted once
-// on the hot path, not twice.
+// on the hot path, not twice. (A part that lands in the overflow slot no longer reaches its total.)
 int named_counter_slot(const std::string& name, int total_slot = -1);
 // Adds amounts[i] to slot slots[i] (one lookup of the thread's block for all of them: hot paths count several).
 void add_to_named(std::span<const int> slots, std::span<const std::uint64_t> amounts);
