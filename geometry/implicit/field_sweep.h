@@ -212,7 +212,7 @@ private:
         double t_in, t_out;      // its support along the line
         std::uint32_t index;
         int box_slices;          // its slices in box_slices_, or −1 for a metaball (one piece, [t_in, t_out])
-        int region = -1;         // current region piece, −1 before the support
+        int region = -1;         // current piece of its slices, −1 before the support (metacubes only)
         bool hard_cube;          // the element's
         // Its term of the sum on the current piece (polynomial pieces), once composed. Optional, so that joining
         // zeroes no polynomial (a rep stos per element, perf).
@@ -452,7 +452,6 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
         return;
     }
     if (a.box_slices < 0) {
-        a.region = 0;
         a.next_event = a.t_out;
         a.q = MetacubeRaySlices::metaball_distance_squared(origin_, direction_, element.centre(), t_ref_);
         a.q_vertex = field_sweep_detail::quadratic_vertex(a.q);
