@@ -3,8 +3,8 @@
 // the cell's box. A cell's intersect callback reports the first crossing of the summed field within the cell;
 // cells are disjoint, so Embree's shrinking t_far makes the nearest of them the hit and culls the cells behind
 // it. The callback also stores the hit's normal in Embree's Ng, summed from the elements its sweep holds (a hit
-// that a nearer cell later replaces wasted that sum, which is rare); shading() reads it back. As a CSG operand the group is a solid: inside is
-// where the summed field exceeds the threshold.
+// that a nearer cell later replaces wasted that sum, which is rare); shading() reads it back. As a CSG operand the
+// group is a solid: inside is where the summed field exceeds the threshold.
 #include <array>
 
 #include "geometry/implicit/blob_group.h"
@@ -50,9 +50,9 @@ private:
 
     BlobGroup group_;
     int counter_slot_ = 0;
-    // Work counters for all blob groups ("blobs.pieces", ...) and for this one ("blobs[name].pieces", ...).
-    // Counter slots of every BlobQueryWork field, for all blob groups and then for this one.
-    std::array<int, 10> work_slots_{};  // this group's counters (each adds into the type's total)
+    // Counter slots of every BlobQueryWork field for this group ("blobs[name].pieces", ...), each registered to add
+    // into the total of all blob groups ("blobs.pieces", ...) when totals are read.
+    std::array<int, 10> work_slots_{};
 };
 
 }  // namespace isotrace
