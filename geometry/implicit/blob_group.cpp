@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "geometry/implicit/blinn_exponential.h"
 #include "geometry/implicit/kim_sextic.h"
@@ -43,6 +44,8 @@ decltype(auto) BlobGroup::with_kernel(F&& f) const {
 void BlobGroup::build_index() {
     spheres_.resize(elements_.size());
     centre_bound_ = 0;
+    metaballs_only_ = std::all_of(elements_.begin(), elements_.end(),
+                                  [](const Metacube& element) { return element.is_metaball(); });
     for (std::size_t i = 0; i < elements_.size(); ++i) {
         spheres_[i] = BoundingSphere::of(elements_[i]);
         const BoundingSphere& s = spheres_[i];
@@ -80,9 +83,14 @@ void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d&
     if (!clip || !std::isfinite(clip->t_enter) || !std::isfinite(clip->t_exit)) return;
     const SweepStretch stretch{origin, direction, clip->t_enter, clip->t_exit, t_min, t_max};
     with_kernel([&](const auto& kernel) {
-        FieldSweep sweep(kernel, threshold_, std::span<const Metacube>(elements_),
-                         std::span<const BoundingSphere>(spheres_), centre_bound_);
-        sweep.run(cells_.elements_of(cell), stretch, work, report, crossed_before);
+        const auto sweep_with = [&]<bool kMetaballsOnly>() {
+            FieldSweep<std::decay_t<decltype(kernel)>, kMetaballsOnly> sweep(
+                kernel, threshold_, std::span<const Metacube>(elements_), std::span<const BoundingSphere>(spheres_),
+                centre_bound_);
+            sweep.run(cells_.elements_of(cell), stretch, work, report, crossed_before);
+        };
+        if (metaballs_only_) sweep_with.template operator()<true>();
+        else sweep_with.template operator()<false>();
     });
 }
 

@@ -98,6 +98,7 @@ private:
     double threshold_;
     std::vector<BoundingSphere> spheres_;  // per element, for the sweep's first test
     double centre_bound_ = 0;              // the largest |centre| of spheres_ (scales that test's float margin)
+    bool metaballs_only_ = false;          // no metacube, no hard cube: the sweep compiles their cases out
     BlobCells cells_;
 };
 

@@ -1,8 +1,8 @@
-// Random rays against random dense blob groups (all five kernels, rotated non-uniform metacubes, negative weights,
-// coincident elements), compared with a slow oracle that shares nothing with the cell sweep but the element
-// slices: every element of the group on every piece (no cells, no candidates), each piece's field built by
-// polynomial products and solved by Sturm sequences (or sampled densely where a kernel piece is not a
-// polynomial). Occlusion queries are checked against the first crossing. 10⁴ rays in the default suite;
+// Random rays against random dense blob groups (all five kernels; metaballs alone, and with rotated non-uniform
+// metacubes; negative weights, coincident elements), compared with a slow oracle that shares nothing with the cell
+// sweep but the element slices: every element of the group on every piece (no cells, no candidates), each piece's
+// field built by polynomial products and solved by Sturm sequences (or sampled densely where a kernel piece is not
+// a polynomial). Occlusion queries are checked against the first crossing. 10⁴ rays in the default suite;
 // ISOTRACE_BLOB_STRESS_RAYS raises it (the `long` CTest label runs 10⁶).
 #include <gtest/gtest.h>
 
@@ -137,8 +137,9 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
 }
 
 // A dense random group: `count` elements in a 2 m cube, metaballs and rotated non-uniform metacubes, one in six
-// carving, one in ten a copy of an earlier one (coincident).
-BlobGroup dense_group(std::mt19937_64& rng, const std::string& kernel, int count) {
+// carving, one in ten a copy of an earlier one (coincident). With `metaballs_only` the boxes drawn are dropped
+// (the same random numbers are drawn): the group then takes the sweep compiled for metaballs alone.
+BlobGroup dense_group(std::mt19937_64& rng, const std::string& kernel, int count, bool metaballs_only) {
     std::uniform_real_distribution<double> u(0, 1);
     std::vector<Metacube> elements;
     for (int i = 0; i < count; ++i) {
@@ -151,6 +152,7 @@ BlobGroup dense_group(std::mt19937_64& rng, const std::string& kernel, int count
         if (u(rng) < 0.4) {
             box.axes = random_axes(rng);
             for (int k = 0; k < 3; ++k) box.half_size[k] = u(rng) < 0.2 ? 0 : 0.3 * u(rng);
+            if (metaballs_only) box = OrientedBox{box.centre};
         }
         elements.emplace_back(box, 0.3 + 0.5 * u(rng), u(rng) < 1.0 / 6 ? -0.6 : 0.7 + 0.6 * u(rng));
     }
@@ -178,7 +180,8 @@ void compare_with_oracle(long long first_group, long long rays) {
     const long long rays_per_group = 50;
     for (long long group_index = 0; compared < rays; ++group_index) {
         const std::string kernel(kernels[std::size_t(group_index) % kernels.size()]);
-        const BlobGroup group = dense_group(rng, kernel, 20 + int(u(rng) * 60));
+        // Odd groups are metaballs alone (the kernels cycle through five, so each kernel gets both kinds).
+        const BlobGroup group = dense_group(rng, kernel, 20 + int(u(rng) * 60), group_index % 2 == 1);
         for (long long r = 0; r < rays_per_group && compared < rays; ++r, ++compared) {
             // Half the rays from outside aimed into the cloud, half from a point inside it.
             const bool from_inside = u(rng) < 0.5;

@@ -19,6 +19,9 @@
 // F > 0 is inside. Every crossing is a sign change of F: a tangent touch (a double root) is not one.
 //
 // Kernel is the concrete FieldFunction class, so that its calls inline (no virtual call per evaluation).
+// kMetaballsOnly is set for groups of metaballs alone (no metacube, no hard cube: the benchmark clouds and most
+// scenes): the metacube slices and the hard cubes' steps are then compiled out, with the same arithmetic for
+// everything else, so the results are the same bits as the general sweep's.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -102,15 +105,16 @@ struct Term {
     int degree;
 };
 
-// w·Σₖ βₖ·xᵏ as a polynomial in s, for a kernel piece Σₖ βₖ·xᵏ and a quadratic x(s) (Horner on coefficients).
-// Each step multiplies by x(s) in place, from the highest coefficient down (a new coefficient reads only lower old
-// ones): no array is cleared or copied.
-inline Term compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
+// w·Σₖ βₖ·xᵏ as a polynomial in s, for a kernel piece Σₖ βₖ·xᵏ of degree kDegree and a quadratic x(s) (Horner on
+// coefficients). Each step multiplies by x(s) in place, from the highest coefficient down (a new coefficient reads
+// only lower old ones): no array is cleared or copied. The degree is a template argument so that the loops unroll.
+template <int kDegree>
+Term compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
     Term term;
     auto& acc = term.coefficients;
-    acc[0] = weight * piece.coefficients[std::size_t(piece.degree)];
+    acc[0] = weight * piece.coefficients[std::size_t(kDegree)];
     std::size_t degree = 0;  // even
-    for (int k = piece.degree - 1; k >= 0; --k) {
+    for (int k = kDegree - 1; k >= 0; --k) {
         acc[degree + 2] = acc[degree] * q.c2;
         acc[degree + 1] = degree == 0 ? acc[0] * q.c1 : acc[degree - 1] * q.c2 + acc[degree] * q.c1;
         for (std::size_t i = degree; i >= 2; --i) acc[i] = acc[i - 2] * q.c2 + acc[i - 1] * q.c1 + acc[i] * q.c0;
@@ -120,6 +124,16 @@ inline Term compose_with_quadratic(const FieldPiece& piece, double weight, const
     }
     term.degree = int(degree);
     return term;
+}
+
+inline Term compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
+    static_assert(std::tuple_size_v<decltype(FieldPiece::coefficients)> == 4, "kernel pieces of degree <= 3");
+    switch (piece.degree) {
+        case 0: return compose_with_quadratic<0>(piece, weight, q);
+        case 1: return compose_with_quadratic<1>(piece, weight, q);
+        case 2: return compose_with_quadratic<2>(piece, weight, q);
+        default: return compose_with_quadratic<3>(piece, weight, q);
+    }
 }
 
 // Two ray parameters this close are one place: a crossing that two cells find on their shared face, or a hard-cube
@@ -160,7 +174,7 @@ inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c
 
 }  // namespace field_sweep_detail
 
-template <class Kernel>
+template <class Kernel, bool kMetaballsOnly>
 class FieldSweep {
 public:
     // centre_bound ≥ the largest |centre| of the spheres.
@@ -199,9 +213,9 @@ private:
     // every event, stays small (blob groups are mostly metaballs).
     struct Active {
         Active(std::uint32_t index, const Metacube& element, double t_in, double t_out, int box_slices)
-            : inverse_radius2(element.is_hard_cube() ? 0 : 1 / (element.radius() * element.radius())),
+            : inverse_radius2(is_hard_cube(element) ? 0 : 1 / (element.radius() * element.radius())),
               weight(element.weight()), t_in(t_in), t_out(t_out), index(index), box_slices(box_slices),
-              hard_cube(element.is_hard_cube()) {}
+              hard_cube(is_hard_cube(element)) {}
         // First what every loop over the joined elements reads (the next event, the ranges), in one cache line.
         const FieldPiece* kernel_piece = nullptr;  // nullptr: not counting on the current piece
         double next_event = 0;                     // where its current piece ends (kUnset: never again)
@@ -218,6 +232,14 @@ private:
         // zeroes no polynomial (a rep stos per element, perf).
         std::optional<field_sweep_detail::Term> contribution;
     };
+
+    // The element kinds, constant for a group of metaballs alone (a metaball is never a hard cube).
+    static bool is_hard_cube(const Metacube& element) { return !kMetaballsOnly && element.is_hard_cube(); }
+    static bool is_hard_cube(const Active& a) { return !kMetaballsOnly && a.hard_cube; }
+    static bool is_metaball(const Metacube& element) { return kMetaballsOnly || element.is_metaball(); }
+    static double half_diagonal(const Metacube& element) { return kMetaballsOnly ? 0 : element.half_diagonal(); }
+    // A hard cube joined this sweep (F may step).
+    bool hard_cube_joined() const { return !kMetaballsOnly && hard_cube_joined_; }
 
     // Keeps in near_ the listed elements whose support's bounding sphere the stretch may meet; returns an upper
     // bound of Σ wᵢ·fᵢ on the stretch from each one's nearest approach (f is non-increasing in r², negative
@@ -288,8 +310,8 @@ private:
     bool hard_cube_joined_ = false;  // a hard cube joined this sweep (F may step)
 };
 
-template <class Kernel>
-double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const SweepStretch& stretch) {
+template <class Kernel, bool kMetaballsOnly>
+double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t> listed, const SweepStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     // Most listed elements are far from the stretch: their compact bounding spheres reject them, four at a time.
@@ -316,7 +338,7 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const S
         // nearest the centre (its projection on the line, clamped) decides whether the stretch may meet that
         // sphere, and bounds the field: the skeleton box is no nearer than that distance less its half-diagonal.
         const Metacube& element = elements_[index];
-        const double half_diagonal = element.half_diagonal();
+        const double half_diagonal = FieldSweep::half_diagonal(element);
         const double reach = element.radius() + half_diagonal;
         const double t_near =
             std::clamp(dot(element.centre() - o, d) * inverse_length2, stretch.t_begin, stretch.t_end);
@@ -327,7 +349,7 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const S
         near_[kept++] = index;
         if (element.weight() <= 0) continue;
         double f_max = 1;  // a hard cube's step
-        if (!element.is_hard_cube()) {
+        if (!is_hard_cube(element)) {
             if (half_diagonal > 0) {
                 const double gap = std::max(0.0, std::sqrt(gap2) - half_diagonal);
                 gap2 = gap * gap;
@@ -340,8 +362,8 @@ double FieldSweep<Kernel>::gather(std::span<const std::uint32_t> listed, const S
     return upper;
 }
 
-template <class Kernel>
-void FieldSweep<Kernel>::order_candidates(const SweepStretch& stretch) {
+template <class Kernel, bool kMetaballsOnly>
+void FieldSweep<Kernel, kMetaballsOnly>::order_candidates(const SweepStretch& stretch) {
     candidates_.clear();
     next_candidate_ = 0;
     for (const std::uint32_t index : near_) {
@@ -358,17 +380,17 @@ void FieldSweep<Kernel>::order_candidates(const SweepStretch& stretch) {
     });
 }
 
-template <class Kernel>
-void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQueryWork& work) {
+template <class Kernel, bool kMetaballsOnly>
+void FieldSweep<Kernel, kMetaballsOnly>::join_until(double t, const SweepStretch& stretch, BlobQueryWork& work) {
     while (next_candidate_ < candidates_.size() && candidates_[next_candidate_].t_enter <= t) {
         const Candidate& candidate = candidates_[next_candidate_++];
         const Metacube& element = elements_[candidate.index];
         const auto join = [&](double t_in, double t_out, int box_slices) {
             ++work.joined;
-            hard_cube_joined_ = hard_cube_joined_ || element.is_hard_cube();
+            hard_cube_joined_ = hard_cube_joined_ || is_hard_cube(element);
             enter_piece(joined_.emplace_back(candidate.index, element, t_in, t_out, box_slices), t);
         };
-        if (element.is_metaball()) {
+        if (is_metaball(element)) {
             // Its support is its bounding sphere: the chord order_candidates found.
             if (candidate.t_exit > t) join(candidate.t_enter, candidate.t_exit, -1);
             continue;
@@ -380,8 +402,8 @@ void FieldSweep<Kernel>::join_until(double t, const SweepStretch& stretch, BlobQ
     }
 }
 
-template <class Kernel>
-void FieldSweep<Kernel>::drop_finished() {
+template <class Kernel, bool kMetaballsOnly>
+void FieldSweep<Kernel, kMetaballsOnly>::drop_finished() {
     const auto finished = std::count_if(joined_.begin(), joined_.end(), [](const Active& a) {
         return a.next_event == field_sweep_detail::kUnset;
     });
@@ -395,8 +417,8 @@ void FieldSweep<Kernel>::drop_finished() {
     joined_.truncate(kept);
 }
 
-template <class Kernel>
-const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
+template <class Kernel, bool kMetaballsOnly>
+const Polynomial& FieldSweep<Kernel, kMetaballsOnly>::polynomial_sum() {
     if (sum_valid_) return sum_;
     std::array<double, field_sweep_detail::Term::kSize> sum{};
     sum[0] = -threshold_;
@@ -407,7 +429,7 @@ const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
     for (Active& a : joined_) {
         if (!a.kernel_piece || !a.kernel_piece->is_polynomial) continue;
         if (!a.contribution) {
-            if (a.hard_cube) {
+            if (is_hard_cube(a)) {
                 a.contribution = field_sweep_detail::Term{{a.weight}, 0};
             } else {
                 // The unit piece is a polynomial in x = r²/R²: compose it with the quadratic x(s) = q(s)/R².
@@ -429,8 +451,8 @@ const Polynomial& FieldSweep<Kernel>::polynomial_sum() {
     return sum_;
 }
 
-template <class Kernel>
-void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
+template <class Kernel, bool kMetaballsOnly>
+void FieldSweep<Kernel, kMetaballsOnly>::enter_piece(Active& a, double t) {
     const Metacube& element = elements_[a.index];
     // Leave the previous piece.
     if (a.kernel_piece) {
@@ -451,7 +473,7 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
         a.next_event = a.t_in;
         return;
     }
-    if (a.box_slices < 0) {
+    if (kMetaballsOnly || a.box_slices < 0) {
         a.next_event = a.t_out;
         a.q = MetacubeRaySlices::metaball_distance_squared(origin_, direction_, element.centre(), t_ref_);
         a.q_vertex = field_sweep_detail::quadratic_vertex(a.q);
@@ -464,7 +486,7 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
         a.next_event = region.t_end;
         a.q = slices.distance_squared(region, t_ref_);
         a.q_vertex = field_sweep_detail::quadratic_vertex(a.q);
-        if (element.is_hard_cube()) {
+        if (is_hard_cube(element)) {
             // A hard cube counts w inside its box (the region piece with U = 0) and nothing elsewhere.
             static constexpr FieldPiece kConstant{0, 0, true, 0, {1, 0, 0, 0}};
             if (region.region == std::array<int, 3>{0, 0, 0}) {
@@ -497,13 +519,13 @@ void FieldSweep<Kernel>::enter_piece(Active& a, double t) {
     }
 }
 
-template <class Kernel>
-field_sweep_detail::Range FieldSweep<Kernel>::elements_range(double t0, double t1, bool non_polynomial_only) const {
+template <class Kernel, bool kMetaballsOnly>
+field_sweep_detail::Range FieldSweep<Kernel, kMetaballsOnly>::elements_range(double t0, double t1, bool non_polynomial_only) const {
     double low = 0, high = 0;
     for (const Active& a : joined_) {
         if (!a.kernel_piece || (non_polynomial_only && a.kernel_piece->is_polynomial)) continue;
         double f_near = 1, f_far = 1;  // a hard cube counts its weight wherever it counts
-        if (!a.hard_cube) {
+        if (!is_hard_cube(a)) {
             const field_sweep_detail::Range r2 = field_sweep_detail::quadratic_range(a.q, a.q_vertex, t0, t1);
             f_near = unit_value(r2.low * a.inverse_radius2);
             f_far = unit_value(r2.high * a.inverse_radius2);
@@ -515,13 +537,13 @@ field_sweep_detail::Range FieldSweep<Kernel>::elements_range(double t0, double t
     return {low, high};
 }
 
-template <class Kernel>
-double FieldSweep<Kernel>::elements_upper_bound(double t0, double t1) const {
+template <class Kernel, bool kMetaballsOnly>
+double FieldSweep<Kernel, kMetaballsOnly>::elements_upper_bound(double t0, double t1) const {
     double high = 0;
     for (const Active& a : joined_) {
         if (!a.kernel_piece) continue;
         double f = 1;  // a hard cube counts its weight wherever it counts
-        if (!a.hard_cube) {
+        if (!is_hard_cube(a)) {
             // f is non-increasing in r²: largest at the nearest point for a positive weight, at the farthest for a
             // negative one.
             const field_sweep_detail::Range r2 = field_sweep_detail::quadratic_range(a.q, a.q_vertex, t0, t1);
@@ -532,13 +554,13 @@ double FieldSweep<Kernel>::elements_upper_bound(double t0, double t1) const {
     return high;
 }
 
-template <class Kernel>
-double FieldSweep<Kernel>::value(double t) const {
+template <class Kernel, bool kMetaballsOnly>
+double FieldSweep<Kernel, kMetaballsOnly>::value(double t) const {
     double sum = -threshold_;
     for (const Active& a : joined_) {
         if (!a.kernel_piece) continue;
         const Metacube& element = elements_[a.index];
-        if (element.is_hard_cube()) {
+        if (is_hard_cube(element)) {
             sum += element.weight();  // it counts only inside its box
             continue;
         }
@@ -548,11 +570,11 @@ double FieldSweep<Kernel>::value(double t) const {
     return sum;
 }
 
-template <class Kernel>
-Vec3d FieldSweep<Kernel>::gradient_at(const Vec3d& point) const {
+template <class Kernel, bool kMetaballsOnly>
+Vec3d FieldSweep<Kernel, kMetaballsOnly>::gradient_at(const Vec3d& point) const {
     InlineVector<std::uint32_t, 24> ascending;  // the elements counting on the crossing's piece (the rest add 0)
     for (const Active& a : joined_)
-        if (a.kernel_piece && !a.hard_cube) ascending.push_back(a.index);
+        if (a.kernel_piece && !is_hard_cube(a)) ascending.push_back(a.index);
     std::sort(ascending.begin(), ascending.end());
     Vec3d sum(0, 0, 0);
     for (const std::uint32_t index : ascending) sum += elements_[index].field_gradient(kernel_, point);
@@ -563,13 +585,14 @@ Vec3d FieldSweep<Kernel>::gradient_at(const Vec3d& point) const {
 // so entering one is a step up at t itself and leaving one a step down just after it. A face within rounding of t
 // counts as at t: a lone hard cube's cell is the cube, so a stretch starts and ends on its faces, and a face found
 // a hair before the start (in the cube's frame, the start in world coordinates) would hide the step from every cell.
-template <class Kernel>
-double FieldSweep<Kernel>::hard_cube_step_before(double t) const {
+template <class Kernel, bool kMetaballsOnly>
+double FieldSweep<Kernel, kMetaballsOnly>::hard_cube_step_before(double t) const {
+    if constexpr (kMetaballsOnly) return 0;
     const double tolerance = field_sweep_detail::same_place_tolerance(t);
     double step = 0;
     for (const Active& a : joined_) {
         const Metacube& element = elements_[a.index];
-        if (!element.is_hard_cube()) continue;
+        if (!is_hard_cube(element)) continue;
         const bool inside_after = a.kernel_piece != nullptr;
         const bool inside_before = a.t_in < t - tolerance && t <= a.t_out + tolerance;
         step += element.weight() * ((inside_before ? 1 : 0) - (inside_after ? 1 : 0));
@@ -577,22 +600,22 @@ double FieldSweep<Kernel>::hard_cube_step_before(double t) const {
     return step;
 }
 
-template <class Kernel>
+template <class Kernel, bool kMetaballsOnly>
 template <class Crossing>
-void FieldSweep<Kernel>::hard_cube_exit_at_end(double t_end, int previous_sign, Crossing&& crossing) const {
+void FieldSweep<Kernel, kMetaballsOnly>::hard_cube_exit_at_end(double t_end, int previous_sign, Crossing&& crossing) const {
     const double tolerance = field_sweep_detail::same_place_tolerance(t_end);
     double step = 0;
     for (const Active& a : joined_)
-        if (a.hard_cube && a.kernel_piece && a.t_out <= t_end + tolerance) step += a.weight;
+        if (is_hard_cube(a) && a.kernel_piece && a.t_out <= t_end + tolerance) step += a.weight;
     if (step == 0) return;
     using field_sweep_detail::sign_of;
     const double before = value(t_end);
     if (sign_of(before) == previous_sign && sign_of(before - step) != previous_sign) crossing(t_end, previous_sign);
 }
 
-template <class Kernel>
+template <class Kernel, bool kMetaballsOnly>
 template <class Report, class CrossedBefore>
-void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch,
+void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> candidates, const SweepStretch& stretch,
                              BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
     using namespace field_sweep_detail;
     const double upper = gather(candidates, stretch);
@@ -651,7 +674,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
             // of a ray) at a fraction of the cost of the sums below. Coming from outside, F is continuous unless a
             // hard cube steps, so it cannot be above T on the whole piece: only its upper bound is needed.
             bool settled = false;
-            if (previous_sign < 0 && !hard_cube_joined_) {
+            if (previous_sign < 0 && !hard_cube_joined()) {
                 const double high = elements_upper_bound(t0, t1);
                 settled = high - threshold_ < -1e-12 * (2 * std::abs(high) + threshold_);
                 start_sign = -1;
@@ -792,7 +815,7 @@ void FieldSweep<Kernel>::run(std::span<const std::uint32_t> candidates, const Sw
             }
         }
         if (t1 >= stretch.t_end) {
-            if (hard_cube_joined_) hard_cube_exit_at_end(stretch.t_end, previous_sign, crossing);
+            if (hard_cube_joined()) hard_cube_exit_at_end(stretch.t_end, previous_sign, crossing);
             return;
         }
         // Events at t1: pieces that end there move on (exits leave the sum), then newcomers join.

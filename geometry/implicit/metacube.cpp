@@ -64,8 +64,7 @@ Metacube Metacube::metaball(const Vec3d& centre, double radius, double weight) {
     return Metacube(point, radius, weight);
 }
 
-Vec3d Metacube::offset_beyond_box(const Vec3d& world_point) const {
-    if (is_metaball()) return world_point - centre_;
+Vec3d Metacube::offset_beyond_rotated_box(const Vec3d& world_point) const {
     const Vec3d p = orientation_.rotate_back(world_point - centre_);
     Vec3d offset;
     for (int k = 0; k < 3; ++k) offset[k] = std::copysign(std::max(0.0, std::abs(p[k]) - half_size_[k]), p[k]);

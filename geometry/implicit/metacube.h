@@ -103,8 +103,12 @@ private:
     // farthest_squared_distance of a metacube: dist² is convex in P, so its largest value is at a corner.
     double farthest_squared_distance_at_corners(const WorldBounds& box) const;
     // Per local axis, the signed amount by which p lies beyond the box's slab (0 inside the slab): its squared
-    // length is dist² and twice it is ∇dist² in local coordinates.
-    Vec3d offset_beyond_box(const Vec3d& world_point) const;
+    // length is dist² and twice it is ∇dist² in local coordinates. Inline for a metaball (the normal of every blob
+    // hit sums these), out of line through the frame otherwise.
+    Vec3d offset_beyond_box(const Vec3d& world_point) const {
+        return is_metaball() ? world_point - centre_ : offset_beyond_rotated_box(world_point);
+    }
+    Vec3d offset_beyond_rotated_box(const Vec3d& world_point) const;
 
     // What the ray sweep reads first comes first. The frame is a unit quaternion rather than three axes: 96 bytes
     // per element instead of 136 (issue 9's memory budget is 256 bytes per element, cells and Embree included).
