@@ -569,16 +569,11 @@ double FieldSweep<Kernel, kMetaballsOnly>::elements_upper_bound(double t0, doubl
 
 template <class Kernel, bool kMetaballsOnly>
 double FieldSweep<Kernel, kMetaballsOnly>::value(double t) const {
+    // From the joined elements' own copies of w and 1/R²: no element read, no division.
     double sum = -threshold_;
     for (const Active& a : joined_) {
         if (!a.kernel_piece) continue;
-        const Metacube& element = elements_[a.index];
-        if (is_hard_cube(element)) {
-            sum += element.weight();  // it counts only inside its box
-            continue;
-        }
-        const double radius = element.radius();
-        sum += element.weight() * unit_value(std::max(0.0, a.q(t)) / (radius * radius));
+        sum += a.weight * (is_hard_cube(a) ? 1 : unit_value(std::max(0.0, a.q(t)) * a.inverse_radius2));
     }
     return sum;
 }
