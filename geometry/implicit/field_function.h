@@ -57,9 +57,9 @@ public:
     }
     template <class Kernel>
     static double kernel_derivative(const Kernel& kernel, double r2, double radius) {
-        const double radius2 = radius * radius;
-        const double x = r2 / radius2;
-        return x < 1 ? kernel.unit_derivative(x) / radius2 : 0;
+        const double inverse_radius2 = 1 / (radius * radius);  // one division, not two (every blob hit's normal)
+        const double x = r2 * inverse_radius2;
+        return x < 1 ? kernel.unit_derivative(x) * inverse_radius2 : 0;
     }
 
     // The kernel's closed forms over [0, R²], with polynomial coefficients scaled to powers of r² (R > 0).
