@@ -41,6 +41,9 @@ struct alignas(16) BoundingSphere {
 
 static_assert(sizeof(BoundingSphere) == 16, "one vector load per sphere");
 
+// |x| + |y| + |z| ≥ |p|: scales the float tests' margins without a square root at the head of every query.
+inline double magnitude_bound(const Vec3d& p) { return std::abs(p.x) + std::abs(p.y) + std::abs(p.z); }
+
 // Four spheres as lanes: one 16-byte load per sphere, then a 4×4 transpose.
 struct SphereLanes {
     Float4 x, y, z, radius;
@@ -77,13 +80,13 @@ inline unsigned lane_mask(Int4 lanes) {
 
 // Which of four bounding spheres may the segment p + s·u (|u| = 1, |s| ≤ half_length) come within: the squared
 // distance from a centre c is |(c − p) × u|² across the line plus (|s_c| − half_length)² beyond an end, where
-// s_c = (c − p)·u. `margin` must cover float rounding: 2⁻¹⁸·(2|p| + max |centre|) is far above it (the rounding
-// of p, u, c − p, the cross and dot products is a few 2⁻²⁴ of |p| and |c − p|), so a sphere the segment meets is
-// never rejected; it widens both the reach and the half-length.
+// s_c = (c − p)·u. `margin` must cover float rounding: 2⁻¹⁸·(2|p| + max |centre|), with magnitude_bound(p) for |p|,
+// is far above it (the rounding of p, u, c − p, the cross and dot products is a few 2⁻²⁴ of |p| and |c − p|), so a
+// sphere the segment meets is never rejected; it widens both the reach and the half-length.
 struct SegmentNearSpheres {
     SegmentNearSpheres(const Vec3d& p, const Vec3d& u, double half_length, double centre_bound)
         : px(float(p.x)), py(float(p.y)), pz(float(p.z)), ux(float(u.x)), uy(float(u.y)), uz(float(u.z)),
-          margin(float(0x1p-18 * (2 * length(p) + centre_bound))),
+          margin(float(0x1p-18 * (2 * magnitude_bound(p) + centre_bound))),
           half(float(half_length * (1 + 0x1p-18)) + margin) {}
 
     unsigned test(const SphereLanes& s) const {
@@ -103,7 +106,8 @@ struct SegmentNearSpheres {
 // c − p is a few 2⁻²⁴ of |p| + |c|).
 struct PointNearSpheres {
     PointNearSpheres(const Vec3d& p, double centre_bound)
-        : px(float(p.x)), py(float(p.y)), pz(float(p.z)), margin(float(0x1p-18 * (2 * length(p) + centre_bound))) {}
+        : px(float(p.x)), py(float(p.y)), pz(float(p.z)),
+          margin(float(0x1p-18 * (2 * magnitude_bound(p) + centre_bound))) {}
 
     unsigned test(const SphereLanes& s) const {
         const Float4 fx = s.x - px, fy = s.y - py, fz = s.z - pz;
