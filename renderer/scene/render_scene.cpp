@@ -1,5 +1,6 @@
 #include "renderer/scene/render_scene.h"
 
+#include <atomic>
 #include <bit>
 #include <cfloat>
 #include <chrono>
@@ -132,31 +133,27 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const SceneObject& object = objects_[object_index];
     counters::count_closest_hit(object.counter_slot);
 
-    // Built in the returned optional: a copy of it would reload as vectors what was just stored field by field.
-    std::optional<SurfaceHit> result(std::in_place);
-    SurfaceHit& hit = *result;
-    hit.t = query.ray.tfar;
-    hit.position = ray.at(hit.t);
-    hit.object_index = object_index;
-    hit.primitive_id = query.hit.primID;
-    const Vec3f embree_ng = safe_normalize(Vec3f(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z), {0, 0, 1});
+    // Embree stored the hit's fields one by one, and a load wider than one of those stores waits until they are
+    // written (a failed store forwarding): the normal is read a float at a time (relaxed atomic loads are never
+    // merged), and the result is built once from registers rather than in pieces on the stack.
+    const auto scalar = [](float& field) { return std::atomic_ref<float>(field).load(std::memory_order_relaxed); };
+    const float t = query.ray.tfar;
+    const Vec3f embree_ng =
+        safe_normalize(Vec3f(scalar(query.hit.Ng_x), scalar(query.hit.Ng_y), scalar(query.hit.Ng_z)), {0, 0, 1});
     // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
-    const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(hit.t);
+    const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
     const Vec3d local_point = object.instanced ? object.to_world.inverse().point(world_point) : world_point;
     const LocalShading local = object.shape->shading(query.hit, embree_ng, local_point);
-    hit.material = object.material_of_part(local.part);
-    hit.uv = local.uv;
+    Vec3f geometric_normal = local.geometric_normal, shading_normal = local.normal;
     if (object.instanced) {  // Embree reports Ng in the instanced object's space
-        hit.geometric_normal = safe_normalize(object.to_world.normal(local.geometric_normal), local.geometric_normal);
-        hit.shading_normal = safe_normalize(object.to_world.normal(local.normal), hit.geometric_normal);
-    } else {
-        hit.geometric_normal = local.geometric_normal;
-        hit.shading_normal = local.normal;
+        geometric_normal = safe_normalize(object.to_world.normal(local.geometric_normal), local.geometric_normal);
+        shading_normal = safe_normalize(object.to_world.normal(local.normal), geometric_normal);
     }
-    if (dot(hit.shading_normal, hit.geometric_normal) < 0) hit.shading_normal = -hit.shading_normal;
-    hit.position_error =
-        kPositionErrorScale * (max_component(abs(hit.position)) + hit.t * length(ray.direction));
-    return result;
+    if (dot(shading_normal, geometric_normal) < 0) shading_normal = -shading_normal;
+    const Vec3f position = ray.at(t);
+    const float position_error = kPositionErrorScale * (max_component(abs(position)) + t * length(ray.direction));
+    return SurfaceHit{t,        position,         geometric_normal, shading_normal, local.uv, object_index,
+                      query.hit.primID, object.material_of_part(local.part), position_error};
 }
 
 bool RenderScene::occluded(const Ray& ray) const {
