@@ -14,7 +14,7 @@ public:
 
     bool is_delta() const override { return true; }
     LightSample sample(const Vec3f&, std::array<float, 2>) const override {
-        return {irradiance_, towards_light_, std::numeric_limits<float>::infinity(), 1.0f, true};
+        return {towards_light_, std::numeric_limits<float>::infinity(), irradiance_, 1.0f, true};
     }
     // The light crossing the scene's bounding disk.
     float power() const override {

@@ -15,7 +15,7 @@ public:
         const Vec3f offset = position_ - point;
         const float distance_squared = dot(offset, offset);
         const float distance = std::sqrt(distance_squared);
-        return {intensity_ * (1.0f / distance_squared), offset / distance, distance, 1.0f, true};
+        return {offset / distance, distance, intensity_ * (1.0f / distance_squared), 1.0f, true};
     }
     float power() const override { return float(4 * std::numbers::pi) * intensity_.max(); }
 

@@ -27,7 +27,7 @@ public:
         const float distance = std::sqrt(distance_squared);
         const Vec3f towards_light = offset / distance;
         const float falloff = smoothstep(cos_outer_, cos_inner_, dot(-towards_light, axis_));
-        return {intensity_ * (falloff / distance_squared), towards_light, distance, 1.0f, true};
+        return {towards_light, distance, intensity_ * (falloff / distance_squared), 1.0f, true};
     }
     // Integral of the falloff over the sphere, approximated by the cone half-way between the two angles.
     float power() const override {
