@@ -105,33 +105,40 @@ struct Term {
 };
 
 // w·Σₖ βₖ·xᵏ as a polynomial in s, for a kernel piece Σₖ βₖ·xᵏ of degree kDegree and a quadratic x(s) (Horner on
-// coefficients). Each step multiplies by x(s) in place, from the highest coefficient down (a new coefficient reads
-// only lower old ones): no array is cleared or copied. The degree is a template argument so that the loops unroll.
+// coefficients), written to `term`, where it is kept. Each step multiplies by x(s) in place, upwards, carrying the
+// two old coefficients below in registers: every coefficient is loaded and stored 8 bytes at a time. Returned by
+// value, or updated downwards (which GCC vectorised), the term was re-read in 16-byte loads of what had just been
+// stored 8 bytes at a time, each waiting for those stores (a failed store forwarding; perf: half of polynomial_sum's
+// samples). The same operations as plain Horner, so the same bits.
 template <int kDegree>
-Term compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
-    Term term;
-    auto& acc = term.coefficients;
-    acc[0] = weight * piece.coefficients[std::size_t(kDegree)];
+void compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q, Term& term) {
+    auto& c = term.coefficients;
+    c[0] = weight * piece.coefficients[std::size_t(kDegree)];
     std::size_t degree = 0;  // even
     for (int k = kDegree - 1; k >= 0; --k) {
-        acc[degree + 2] = acc[degree] * q.c2;
-        acc[degree + 1] = degree == 0 ? acc[0] * q.c1 : acc[degree - 1] * q.c2 + acc[degree] * q.c1;
-        for (std::size_t i = degree; i >= 2; --i) acc[i] = acc[i - 2] * q.c2 + acc[i - 1] * q.c1 + acc[i] * q.c0;
-        if (degree > 0) acc[1] = acc[0] * q.c1 + acc[1] * q.c0;
-        acc[0] = acc[0] * q.c0 + weight * piece.coefficients[std::size_t(k)];
+        // new cᵢ = old cᵢ₋₂·c2 + old cᵢ₋₁·c1 + old cᵢ·c0 (terms absent below 0 and above the old degree).
+        double below2 = 0, below1 = c[0];  // old cᵢ₋₂, old cᵢ₋₁
+        c[0] = below1 * q.c0 + weight * piece.coefficients[std::size_t(k)];
+        for (std::size_t i = 1; i <= degree; ++i) {
+            const double old = c[i];
+            c[i] = i == 1 ? below1 * q.c1 + old * q.c0 : below2 * q.c2 + below1 * q.c1 + old * q.c0;
+            below2 = below1;
+            below1 = old;
+        }
+        c[degree + 1] = degree == 0 ? below1 * q.c1 : below2 * q.c2 + below1 * q.c1;
+        c[degree + 2] = below1 * q.c2;
         degree += 2;
     }
     term.degree = int(degree);
-    return term;
 }
 
-inline Term compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q) {
+inline void compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q, Term& term) {
     static_assert(std::tuple_size_v<decltype(FieldPiece::coefficients)> == 4, "kernel pieces of degree <= 3");
     switch (piece.degree) {
-        case 0: return compose_with_quadratic<0>(piece, weight, q);
-        case 1: return compose_with_quadratic<1>(piece, weight, q);
-        case 2: return compose_with_quadratic<2>(piece, weight, q);
-        default: return compose_with_quadratic<3>(piece, weight, q);
+        case 0: return compose_with_quadratic<0>(piece, weight, q, term);
+        case 1: return compose_with_quadratic<1>(piece, weight, q, term);
+        case 2: return compose_with_quadratic<2>(piece, weight, q, term);
+        default: return compose_with_quadratic<3>(piece, weight, q, term);
     }
 }
 
@@ -448,7 +455,7 @@ const Polynomial& FieldSweep<Kernel, kMetaballsOnly>::polynomial_sum() {
                 // The unit piece is a polynomial in x = r²/R²: compose it with the quadratic x(s) = q(s)/R².
                 const QuadraticAbout x{a.q.t_ref, a.q.c0 * a.inverse_radius2, a.q.c1 * a.inverse_radius2,
                                        a.q.c2 * a.inverse_radius2};
-                a.contribution = field_sweep_detail::compose_with_quadratic(*a.kernel_piece, a.weight, x);
+                field_sweep_detail::compose_with_quadratic(*a.kernel_piece, a.weight, x, a.contribution.emplace());
             }
         }
         const field_sweep_detail::Term& term = *a.contribution;
