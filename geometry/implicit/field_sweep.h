@@ -105,31 +105,30 @@ struct Term {
 };
 
 // w·Σₖ βₖ·xᵏ as a polynomial in s, for a kernel piece Σₖ βₖ·xᵏ of degree kDegree and a quadratic x(s) (Horner on
-// coefficients), written to `term`, where it is kept. Each step multiplies by x(s) in place, upwards, carrying the
-// two old coefficients below in registers: every coefficient is loaded and stored 8 bytes at a time. Returned by
-// value, or updated downwards (which GCC vectorised), the term was re-read in 16-byte loads of what had just been
-// stored 8 bytes at a time, each waiting for those stores (a failed store forwarding; perf: half of polynomial_sum's
-// samples). The same operations as plain Horner, so the same bits.
+// coefficients), written to `term`, where it is kept. Each step multiplies by x(s), every new coefficient from the
+// old ones (cᵢ ← cᵢ₋₂·c2 + cᵢ₋₁·c1 + cᵢ·c0). The loops unroll completely, so the coefficients stay in registers and
+// are stored once: kept in memory between steps, or returned by value, they were re-read in 16-byte loads of what
+// had just been stored 8 bytes at a time, each waiting for those stores (a failed store forwarding; perf: half of
+// polynomial_sum's samples). The same operations as plain Horner, so the same bits.
 template <int kDegree>
 void compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q, Term& term) {
-    auto& c = term.coefficients;
+    std::array<double, Term::kSize> c{};
     c[0] = weight * piece.coefficients[std::size_t(kDegree)];
-    std::size_t degree = 0;  // even
+#pragma GCC unroll 4
     for (int k = kDegree - 1; k >= 0; --k) {
-        // new cᵢ = old cᵢ₋₂·c2 + old cᵢ₋₁·c1 + old cᵢ·c0 (terms absent below 0 and above the old degree).
-        double below2 = 0, below1 = c[0];  // old cᵢ₋₂, old cᵢ₋₁
-        c[0] = below1 * q.c0 + weight * piece.coefficients[std::size_t(k)];
-        for (std::size_t i = 1; i <= degree; ++i) {
-            const double old = c[i];
-            c[i] = i == 1 ? below1 * q.c1 + old * q.c0 : below2 * q.c2 + below1 * q.c1 + old * q.c0;
-            below2 = below1;
-            below1 = old;
+        const std::size_t degree = std::size_t(2 * (kDegree - 1 - k));  // of c before this step
+        const std::array<double, Term::kSize> old = c;
+        c[0] = old[0] * q.c0 + weight * piece.coefficients[std::size_t(k)];
+#pragma GCC unroll 8
+        for (std::size_t i = 1; i <= degree + 2; ++i) {
+            if (i == 1) c[1] = degree == 0 ? old[0] * q.c1 : old[0] * q.c1 + old[1] * q.c0;
+            else if (i == degree + 2) c[i] = old[degree] * q.c2;
+            else if (i == degree + 1) c[i] = old[degree - 1] * q.c2 + old[degree] * q.c1;
+            else c[i] = old[i - 2] * q.c2 + old[i - 1] * q.c1 + old[i] * q.c0;
         }
-        c[degree + 1] = degree == 0 ? below1 * q.c1 : below2 * q.c2 + below1 * q.c1;
-        c[degree + 2] = below1 * q.c2;
-        degree += 2;
     }
-    term.degree = int(degree);
+    for (std::size_t i = 0; i <= std::size_t(2 * kDegree); ++i) term.coefficients[i] = c[i];
+    term.degree = 2 * kDegree;
 }
 
 inline void compose_with_quadratic(const FieldPiece& piece, double weight, const QuadraticAbout& q, Term& term) {
@@ -315,8 +314,10 @@ private:
     Vec3d origin_, direction_;                        // the swept line
     double inverse_length2_ = 0;                      // 1/|direction|²
     bool sum_valid_ = false;                                        // sum_ matches the counting elements
-    Polynomial sum_;                                                // Σ contributions − T, in s
-    std::array<double, kMaxPolynomialDegree + 1> sum_magnitude_{};  // Σ |coefficients| of its terms and T
+    // Σ contributions − T, in s; built in place when asked for (a copy of it re-read, as 16-byte loads, what its
+    // constructor had just stored 8 bytes at a time).
+    std::optional<Polynomial> sum_;
+    std::array<double, kMaxPolynomialDegree + 1> sum_magnitude_;  // Σ |coefficients| of its terms and T
     int sum_terms_ = 0;
     int non_polynomial_ = 0;  // counting elements whose current kernel piece is not a polynomial
     bool hard_cube_joined_ = false;  // a hard cube joined this sweep (F may step)
@@ -439,7 +440,7 @@ void FieldSweep<Kernel, kMetaballsOnly>::drop_finished() {
 
 template <class Kernel, bool kMetaballsOnly>
 const Polynomial& FieldSweep<Kernel, kMetaballsOnly>::polynomial_sum() {
-    if (sum_valid_) return sum_;
+    if (sum_valid_) return *sum_;
     std::array<double, field_sweep_detail::Term::kSize> sum{};
     sum[0] = -threshold_;
     int degree = 0;
@@ -466,9 +467,9 @@ const Polynomial& FieldSweep<Kernel, kMetaballsOnly>::polynomial_sum() {
         degree = std::max(degree, term.degree);
         ++sum_terms_;
     }
-    sum_ = Polynomial(std::span<const double>(sum.data(), std::size_t(degree) + 1));
+    sum_.emplace(std::span<const double>(sum.data(), std::size_t(degree) + 1));
     sum_valid_ = true;
-    return sum_;
+    return *sum_;
 }
 
 template <class Kernel, bool kMetaballsOnly>
@@ -668,6 +669,9 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
     if (previous_sign > 0 && t0 > stretch.t_min && at_start > 1e-9 * (threshold_ + counting_weights()) &&
         crossed_before())
         return;
+    // F on the current piece in u ∈ [0,1], set for the polynomial pieces that ranges do not settle. Declared once per
+    // stretch: declared per piece, even as an optional, GCC cleared its 104 bytes (a rep stos) on every piece.
+    std::optional<Polynomial> piece_polynomial;
     while (t0 < stretch.t_end) {
         // The piece [t0, t1] ends at the next event.
         double t1 = stretch.t_end;
@@ -681,9 +685,6 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
             const double s0 = t0 - t_ref_, width = t1 - t0;
             bool solve = true;
             int start_sign = 0;
-            // F on the piece in u ∈ [0,1] (polynomial pieces that were not settled by ranges). Optional, so that the
-            // pieces settled by ranges do not zero a polynomial (a rep stos per piece, perf).
-            std::optional<Polynomial> piece_polynomial;
             int variations = kUntrustedSign;  // of its Bernstein control polygon
             // First each element's own range: it proves most pieces free of crossings (F far below T along most
             // of a ray) at a fraction of the cost of the sums below. Coming from outside, F is continuous unless a
