@@ -255,8 +255,8 @@ private:
     // projection on the line ± the half chord, from the distance to the line (no cancellation, as in Haines et al.'s
     // ray–sphere test) and the 1/|d|² gather found: a square root and no division per element. Divisions were most
     // of this step's time (perf); the roots of the quadratic agree to a few ulps, and an end off by ulps moves where
-    // an element is summed by as little, where its field is 0 to far below rounding (f and f' vanish at the edge of
-    // the support).
+    // an element is summed by as little, where its field is within rounding of 0 (every kernel vanishes at the edge
+    // of its support, all but Blinn's with a zero slope too).
     void order_candidates(const SweepStretch& stretch);
     // Joins every candidate whose entry is ≤ t, each brought to its piece at t.
     void join_until(double t, const SweepStretch& stretch, BlobQueryWork& work);
