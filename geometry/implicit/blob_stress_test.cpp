@@ -152,7 +152,10 @@ BlobGroup dense_group(std::mt19937_64& rng, const std::string& kernel, int count
         if (u(rng) < 0.4) {
             box.axes = random_axes(rng);
             for (int k = 0; k < 3; ++k) box.half_size[k] = u(rng) < 0.2 ? 0 : 0.3 * u(rng);
-            if (metaballs_only) box = OrientedBox{box.centre};
+            if (metaballs_only) {
+                box.axes = OrientedBox{}.axes;
+                box.half_size = {};
+            }
         }
         elements.emplace_back(box, 0.3 + 0.5 * u(rng), u(rng) < 1.0 / 6 ? -0.6 : 0.7 + 0.6 * u(rng));
     }

@@ -16,34 +16,12 @@
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
 #include "renderer/image/image_reader.h"
+#include "tests/support/scene_files.h"
 
 namespace isotrace {
 namespace {
 
 namespace fs = std::filesystem;
-
-class ScratchDirectory {
-public:
-    ScratchDirectory() {
-        std::random_device random;
-        path_ = fs::temp_directory_path() / ("isotrace_image_" + std::to_string(random()) + std::to_string(random()));
-        fs::create_directories(path_);
-    }
-    ~ScratchDirectory() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    const fs::path& path() const { return path_; }
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(path_)) names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path path_;
-};
 
 // A 5x3 image with beauty and every kind of AOV channel; values that half floats cannot hold exactly.
 ImageBuffer test_image() {
@@ -115,7 +93,7 @@ void expect_same_channels(const DecodedImage& back, const ImageBuffer& image, bo
 }
 
 TEST(ImageWriter, ExrKeepsChannelNamesOrderAndFloatValues) {
-    const ScratchDirectory dir;
+    const testing::TemporaryDirectory dir("image-writer");
     const ImageBuffer image = test_image();
     const fs::path path = dir.path() / "out.exr";
     write_exr(path, image, {{5, 3}, 0, 0}, false, test_metadata());
@@ -130,7 +108,7 @@ TEST(ImageWriter, ExrKeepsChannelNamesOrderAndFloatValues) {
 }
 
 TEST(ImageWriter, HalfExrKeepsIdsCountsDepthAndPositionsAsFloat) {
-    const ScratchDirectory dir;
+    const testing::TemporaryDirectory dir("image-writer");
     const ImageBuffer image = test_image();
     const fs::path path = dir.path() / "half.exr";
     write_exr(path, image, {{5, 3}, 0, 0}, true, test_metadata());
@@ -153,7 +131,7 @@ TEST(ImageWriter, HalfExrKeepsIdsCountsDepthAndPositionsAsFloat) {
 }
 
 TEST(ImageWriter, CropWindowBecomesTheDataWindowInsideTheDisplayWindow) {
-    const ScratchDirectory dir;
+    const testing::TemporaryDirectory dir("image-writer");
     const ImageBuffer image = test_image();
     const fs::path path = dir.path() / "crop.exr";
     write_exr(path, image, {{48, 40}, 7, 11}, false, {});
@@ -170,7 +148,7 @@ TEST(ImageWriter, CropWindowBecomesTheDataWindowInsideTheDisplayWindow) {
 }
 
 TEST(ImageWriter, MetadataAttributesArePresent) {
-    const ScratchDirectory dir;
+    const testing::TemporaryDirectory dir("image-writer");
     const fs::path path = dir.path() / "meta.exr";
     ImageMetadata metadata = test_metadata();
     metadata.set("isotrace:big", std::int64_t(1) << 40);  // beyond a 32-bit attribute
@@ -187,7 +165,7 @@ TEST(ImageWriter, MetadataAttributesArePresent) {
 }
 
 TEST(ImageWriter, DisplayImageMatchesTheColourSystemsDisplayTransform) {
-    const ScratchDirectory dir;
+    const testing::TemporaryDirectory dir("image-writer");
     const ColourSystem colours("");
     ImageBuffer image;
     image.width = 7;
@@ -224,7 +202,7 @@ TEST(ImageWriter, DisplayImageMatchesTheColourSystemsDisplayTransform) {
 // PNG, JPEG and TIFF carried no isotrace:partial/spp/render_seconds, so an interrupted render could not be told
 // from a finished one. (TIFFs encoded through an OIIO memory proxy lose their size tags: they must read back.)
 TEST(ImageWriter, DisplayImagesOfEveryFormatCarryTheRenderMetadata) {
-    const ScratchDirectory dir;
+    const testing::TemporaryDirectory dir("image-writer");
     const ColourSystem colours("");
     ImageMetadata metadata = test_metadata();
     metadata.set("isotrace:partial", std::int64_t(1));
@@ -246,7 +224,7 @@ TEST(ImageWriter, DisplayImagesOfEveryFormatCarryTheRenderMetadata) {
 }
 
 TEST(ImageWriter, FailedWriteLeavesNoFile) {
-    const ScratchDirectory dir;
+    const testing::TemporaryDirectory dir("image-writer");
     const ImageBuffer image = test_image();
     // Missing directory.
     const fs::path missing = dir.path() / "no" / "such" / "dir" / "out.exr";

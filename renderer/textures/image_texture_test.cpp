@@ -18,11 +18,10 @@ namespace {
 
 MemoryBudget memory;  // the default limit (80 % of physical memory)
 
-std::filesystem::path temp_dir() {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("isotrace_texture_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-    std::filesystem::create_directories(dir);
-    return dir;
+// The images the tests write, removed when the test process exits (it was left behind in /tmp, once per run).
+const std::filesystem::path& temp_dir() {
+    static const testing::TemporaryDirectory directory("texture");
+    return directory.path();
 }
 
 template <class T>
