@@ -73,8 +73,8 @@ TEST(BoxShape, AffineTransformsBakeExactlyAndMatchTheTriangleMeshBox) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int hits = 0;
     for (int i = 0; i < 3000; ++i) {
-        const Vec3d origin(unit(random) * 5, unit(random) * 5, unit(random) * 5);
-        const Vec3d target(unit(random), unit(random), unit(random));
+        const Vec3d origin{unit(random) * 5, unit(random) * 5, unit(random) * 5};
+        const Vec3d target{unit(random), unit(random), unit(random)};
         const Ray ray = make_ray(origin, target - origin);
         const auto a = boxed->intersect(ray, RayKind::Camera), b = meshed->intersect(ray, RayKind::Camera);
         if (a.has_value() != b.has_value()) {

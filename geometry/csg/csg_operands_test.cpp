@@ -97,8 +97,8 @@ std::string csg_json(const std::string& operation, const std::string& a, const s
 // along a coordinate axis, as cameras meet boxes.
 Ray coincidence_ray(std::mt19937_64& rng, int i, const Vec3d& centre, const Vec3d& half) {
     std::uniform_real_distribution<double> u(-1, 1);
-    const Vec3d target(centre.x + half.x * u(rng), centre.y + half.y * u(rng), centre.z + half.z * u(rng));
-    Vec3d origin = target + normalize(Vec3d(u(rng), u(rng), u(rng))) * 8.0;
+    const Vec3d target{centre.x + half.x * u(rng), centre.y + half.y * u(rng), centre.z + half.z * u(rng)};
+    Vec3d origin = target + normalize(Vec3d{u(rng), u(rng), u(rng)}) * 8.0;
     if (i % 2 == 0) {
         origin = target;
         origin[i / 2 % 3] -= 8;

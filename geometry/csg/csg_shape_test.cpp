@@ -25,10 +25,10 @@ std::vector<RandomRay> random_rays(int count, unsigned seed) {
     std::uniform_real_distribution<double> unit(-1, 1), distance(4, 6);
     std::vector<RandomRay> rays;
     while (int(rays.size()) < count) {
-        const Vec3d from(unit(random), unit(random), unit(random));
+        const Vec3d from{unit(random), unit(random), unit(random)};
         if (length(from) < 0.1 || length(from) > 1) continue;
         const Vec3d origin = normalize(from) * distance(random);
-        const Vec3d target(unit(random) * 1.5, unit(random) * 1.5, unit(random) * 1.5);
+        const Vec3d target{unit(random) * 1.5, unit(random) * 1.5, unit(random) * 1.5};
         rays.push_back({Vec3d(Vec3f(origin)), Vec3d(Vec3f(target - origin))});
     }
     return rays;

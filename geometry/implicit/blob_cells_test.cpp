@@ -40,7 +40,7 @@ TEST(BlobCells, CellsAreDisjointAndListEveryElementTheyMeet) {
     for (std::uint32_t e = 0; e < elements.size(); ++e) {
         const Metacube& element = elements[e];
         for (int s = 0; s < 40; ++s) {
-            const Vec3d p = element.centre() + Vec3d(u(rng), u(rng), u(rng)) * (element.radius() * 0.6) +
+            const Vec3d p = element.centre() + Vec3d{u(rng), u(rng), u(rng)} * (element.radius() * 0.6) +
                             element.skeleton().to_world_vector(element.half_size() * u(rng));
             if (element.distance_squared(p) >= element.radius() * element.radius()) continue;
             const auto near = cells.elements_near(p);

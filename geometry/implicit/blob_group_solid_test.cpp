@@ -33,8 +33,8 @@ TEST(BlobGroupSolid, LoneMetaballGivesOneSpanBetweenTheSphereHits) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int hits = 0;
     for (int i = 0; i < 300; ++i) {
-        const Vec3d origin = centre + normalize(Vec3d(unit(random), unit(random), unit(random))) * 5.0;
-        const Vec3d direction = (centre + Vec3d(unit(random), unit(random), unit(random)) * iso - origin) * 0.6;
+        const Vec3d origin = centre + normalize(Vec3d{unit(random), unit(random), unit(random)}) * 5.0;
+        const Vec3d direction = (centre + Vec3d{unit(random), unit(random), unit(random)} * iso - origin) * 0.6;
         std::vector<InsideSpan> spans;
         shape.inside_spans(origin, direction, 0, 100, spans);
         const auto expected = intersect_sphere(origin, direction, centre, iso);
@@ -81,8 +81,8 @@ TEST(BlobGroupSolid, SpansOfARandomGroupMatchDenseSampling) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int spans_seen = 0;
     for (int ray = 0; ray < 60; ++ray) {
-        const Vec3d origin(unit(random) * 1.5, unit(random) * 1.5, 4.0);
-        const Vec3d direction = normalize(Vec3d(unit(random) * 0.3, unit(random) * 0.3, -1.0));
+        const Vec3d origin{unit(random) * 1.5, unit(random) * 1.5, 4.0};
+        const Vec3d direction = normalize(Vec3d{unit(random) * 0.3, unit(random) * 0.3, -1.0});
         std::vector<InsideSpan> spans;
         shape.inside_spans(origin, direction, 0, 8, spans);
         std::vector<double> reference;  // sign changes by sampling every 5e-4 and bisecting
@@ -139,7 +139,9 @@ TEST(BlobGroupSolid, HardCubesAmongMetacubesAreEnteredAndLeftInTurn) {
             if (u(rng) < 0.5) box.centre = on_grid(box.centre);
             for (int k = 0; k < 3; ++k)
                 box.half_size[k] = u(rng) < 0.5 ? 0.25 * (1 + int(u(rng) * 3)) : 0.2 + 0.8 * u(rng);
-            elements.emplace_back(box, u(rng) < 0.5 ? 0.0 : 0.3 + u(rng), u(rng) < 0.3 ? -0.7 : 1.0);
+            const double radius = u(rng) < 0.5 ? 0.0 : 0.3 + u(rng);
+            const double weight = u(rng) < 0.3 ? -0.7 : 1.0;
+            elements.emplace_back(box, radius, weight);
         }
         const BlobGroup group(elements, make_field_function(kernels[g % 5], 4.0), 0.5);
         for (int r = 0; r < 200; ++r) {
@@ -200,8 +202,8 @@ TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfCellQueries) {
     std::iota(order.begin(), order.end(), 0);
     int hits = 0;
     for (int ray = 0; ray < 120; ++ray) {
-        const Vec3d origin(unit(random) * 1.8, unit(random) * 1.8, 4.0);
-        const Vec3d direction(unit(random) * 0.2, unit(random) * 0.2, -1.0);
+        const Vec3d origin{unit(random) * 1.8, unit(random) * 1.8, 4.0};
+        const Vec3d direction{unit(random) * 0.2, unit(random) * 0.2, -1.0};
         std::vector<FieldCrossing> all;
         BlobQueryWork work;
         group.crossings(origin, direction, 0, 10, all, work);

@@ -37,9 +37,9 @@ TEST(BlobGroup, LoneMetaballOfEveryKernelIsASphereOfTheIsoRadius) {
         const double iso = *group.kernel().iso_radius(radius, weight, 0.5);
         int hits = 0;
         for (int i = 0; i < 500; ++i) {
-            const Vec3d origin = centre + normalize(Vec3d(unit(random), unit(random), unit(random))) * 4.0;
+            const Vec3d origin = centre + normalize(Vec3d{unit(random), unit(random), unit(random)}) * 4.0;
             // Aim near the centre, some rays grazing (offsets up to 1.05 * iso), direction not unit length.
-            const Vec3d aim = centre + Vec3d(unit(random), unit(random), unit(random)) * (0.6 * iso);
+            const Vec3d aim = centre + Vec3d{unit(random), unit(random), unit(random)} * (0.6 * iso);
             const Vec3d direction = (aim - origin) * 0.37;
             const auto expected = intersect_sphere(origin, direction, centre, iso);
             const auto t = first_t(group, origin, direction, 0, 1e30);
@@ -178,7 +178,7 @@ TEST(BlobGroup, RaysFromInsideCrossAnOddNumberOfTimes) {
         double inside = -group.threshold();
         for (const Metacube& e : group.elements()) inside += e.field(group.kernel(), origin);
         if (inside <= 0) continue;  // carved or too weak here
-        const Vec3d direction = normalize(Vec3d(unit(random), unit(random), unit(random)));
+        const Vec3d direction = normalize(Vec3d{unit(random), unit(random), unit(random)});
         int crossings = 0;
         double t = 0;
         while (const auto next = first_t(group, origin, direction, t, 1e30)) {
@@ -292,8 +292,8 @@ TEST(BlobGroup, EveryRayThroughALoneHardCubeCrossesItTwice) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int missed = 0;
     for (int i = 0; i < 100000; ++i) {
-        const Vec3d target = box.centre + Vec3d(unit(random), unit(random), unit(random)) * 0.999;
-        const Vec3d origin = box.centre + normalize(Vec3d(unit(random), unit(random), unit(random))) * 6.0;
+        const Vec3d target = box.centre + Vec3d{unit(random), unit(random), unit(random)} * 0.999;
+        const Vec3d origin = box.centre + normalize(Vec3d{unit(random), unit(random), unit(random)}) * 6.0;
         const Vec3d direction = normalize(target - origin);
         std::vector<FieldCrossing> crossings;
         BlobQueryWork work;

@@ -157,7 +157,9 @@ BlobGroup dense_group(std::mt19937_64& rng, const std::string& kernel, int count
                 box.half_size = {};
             }
         }
-        elements.emplace_back(box, 0.3 + 0.5 * u(rng), u(rng) < 1.0 / 6 ? -0.6 : 0.7 + 0.6 * u(rng));
+        const double radius = 0.3 + 0.5 * u(rng);
+        const double weight = u(rng) < 1.0 / 6 ? -0.6 : 0.7 + 0.6 * u(rng);
+        elements.emplace_back(box, radius, weight);
     }
     return BlobGroup(std::move(elements), make_field_function(kernel, 4.0), 0.5);
 }

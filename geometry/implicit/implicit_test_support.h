@@ -56,7 +56,9 @@ inline Metacube random_metacube(std::mt19937_64& rng) {
     box.centre = random_vector(rng, -2, 2);
     box.axes = random_axes(rng);
     for (int k = 0; k < 3; ++k) box.half_size[k] = u(rng) < 0.15 ? 0 : 1.5 * u(rng);
-    return Metacube(box, 0.1 + 1.9 * u(rng), u(rng) < 0.2 ? -1.0 : 1.0);
+    const double radius = 0.1 + 1.9 * u(rng);
+    const double weight = u(rng) < 0.2 ? -1.0 : 1.0;
+    return Metacube(box, radius, weight);
 }
 
 // `count` elements in a 3 m cube, a third of them metacubes (non-uniform half-sizes up to 0.3), radii 0.35–0.7,

@@ -229,7 +229,7 @@ TEST(Metacube, SquaredDistanceRangeBoundsEveryPointOfTheBox) {
         const double farthest = element.farthest_squared_distance(box);
         ASSERT_LE(nearest, farthest);
         for (int n = 0; n < 200; ++n) {
-            const Vec3d p = box.lower + (box.upper - box.lower) * Vec3d(u(rng), u(rng), u(rng));
+            const Vec3d p = box.lower + (box.upper - box.lower) * Vec3d{u(rng), u(rng), u(rng)};
             const double d2 = element.distance_squared(p);
             EXPECT_GE(d2, nearest * (1 - 1e-12)) << "element " << i;
             EXPECT_LE(d2, farthest * (1 + 1e-12)) << "element " << i;

@@ -93,8 +93,8 @@ TEST(SurfaceRegion, EverySignChangeAlongRandomLinesLiesInItsCellsRegion) {
             for (int line = 0; line < 24; ++line) {
                 // A segment between two random points of the box, sampled every `spacing`.
                 std::uniform_real_distribution<double> u(0, 1);
-                const Vec3d a = box.lower + (box.upper - box.lower) * Vec3d(u(rng), u(rng), u(rng));
-                const Vec3d b = box.lower + (box.upper - box.lower) * Vec3d(u(rng), u(rng), u(rng));
+                const Vec3d a = box.lower + (box.upper - box.lower) * Vec3d{u(rng), u(rng), u(rng)};
+                const Vec3d b = box.lower + (box.upper - box.lower) * Vec3d{u(rng), u(rng), u(rng)};
                 const int samples = int(length(b - a) / spacing) + 2;
                 bool was_inside = group.field(a) > group.threshold();
                 for (int s = 1; s <= samples; ++s) {

@@ -78,9 +78,9 @@ void check_box(const RenderScene& scene, const Transform& to_world, std::uint32_
             outward[axis] = side ? 1 : -1;
             const Vec3d world_normal = normalize(to_world.normal(outward));
             for (int i = 0; i < 20; ++i) {
-                Vec3d on_face(inner(random), inner(random), inner(random));
+                Vec3d on_face{inner(random), inner(random), inner(random)};
                 on_face[axis] = side;
-                Vec3d start = on_face + outward * 1.5 + Vec3d(inner(random) - 0.5, inner(random) - 0.5, inner(random) - 0.5) * 0.2;
+                Vec3d start = on_face + outward * 1.5 + Vec3d{inner(random) - 0.5, inner(random) - 0.5, inner(random) - 0.5} * 0.2;
                 start[axis] = side ? 2.0 : -1.0;
                 // From outside towards the face point.
                 const Vec3f o(to_world.point(start));

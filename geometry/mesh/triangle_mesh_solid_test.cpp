@@ -85,8 +85,8 @@ TEST(TriangleMeshSolid, CubeSpansMatchTheBoxIncludingRaysFromInsideAndThroughEdg
     std::mt19937 random(23);
     std::uniform_real_distribution<double> unit(-1, 1);
     for (int i = 0; i < 2000; ++i) {
-        const Vec3d o(unit(random) * 3, unit(random) * 3, unit(random) * 3);
-        const Vec3d d(unit(random), unit(random), unit(random));
+        const Vec3d o{unit(random) * 3, unit(random) * 3, unit(random) * 3};
+        const Vec3d d{unit(random), unit(random), unit(random)};
         compare(o, d, 0, "random ray " + std::to_string(i));
     }
     // Through the diagonals of faces (shared edges of two triangles) and through corners.
@@ -109,8 +109,8 @@ TEST(TriangleMeshSolid, MeshChildInACsgMatchesTheBoxChild) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int hits = 0;
     for (int i = 0; i < 2000; ++i) {
-        const Vec3d o = normalize(Vec3d(unit(random), unit(random), unit(random))) * 4.0;
-        const Ray ray = csg_test::make_ray(o, Vec3d(unit(random), unit(random), unit(random)) - o);
+        const Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 4.0;
+        const Ray ray = csg_test::make_ray(o, Vec3d{unit(random), unit(random), unit(random)} - o);
         const auto a = with_mesh->intersect(ray, RayKind::Camera), b = with_box->intersect(ray, RayKind::Camera);
         ASSERT_EQ(a.has_value(), b.has_value()) << "ray " << i;
         if (!a) continue;
@@ -122,7 +122,8 @@ TEST(TriangleMeshSolid, MeshChildInACsgMatchesTheBoxChild) {
 }
 
 // Rays leaving a CSG surface from SurfaceHit::spawn_origin, onwards and reflected back, do not find the surface
-// they left again: the mesh child's crossings (float queries) are as precise as the offset assumes.
+// they left again: the mesh child's crossings (float queries) are as precise as the offset assumes. Another surface
+// may be that near where two meet (ray 2550 leaves the sphere's cavity 0.0009 from the mesh cube's).
 TEST(TriangleMeshSolid, RaysSpawnedFromCsgSurfacesDoNotHitThemAgain) {
     const auto scene = csg_test::scene_of(csg_test::csg(
         CsgOperation::Difference, csg_test::child(csg_test::box({0, 0, 0}, {1.2, 1.2, 1.2})),
@@ -133,8 +134,8 @@ TEST(TriangleMeshSolid, RaysSpawnedFromCsgSurfacesDoNotHitThemAgain) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int spawned = 0;
     for (int i = 0; i < 3000; ++i) {
-        const Vec3d o = normalize(Vec3d(unit(random), unit(random), unit(random))) * 5.0;
-        const Vec3d d = Vec3d(unit(random), unit(random), unit(random)) - o;
+        const Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 5.0;
+        const Vec3d d = Vec3d{unit(random), unit(random), unit(random)} - o;
         const auto hit = scene->intersect(csg_test::make_ray(o, d), RayKind::Camera);
         if (!hit) continue;
         const Vec3f onwards = normalize(Vec3f(d));
@@ -143,8 +144,10 @@ TEST(TriangleMeshSolid, RaysSpawnedFromCsgSurfacesDoNotHitThemAgain) {
             const auto next = scene->intersect(csg_test::make_ray(Vec3d(hit->spawn_origin(direction)),
                                                                   Vec3d(direction)),
                                                RayKind::Secondary);
-            if (next) {
-                EXPECT_GT(next->t, 1e-3f) << "ray " << i << " found the surface it left";
+            if (next && next->t <= 1e-3f) {
+                const bool same_surface = next->primitive_id == hit->primitive_id &&
+                                          dot(next->geometric_normal, hit->geometric_normal) > 0.99f;
+                EXPECT_FALSE(same_surface) << "ray " << i << " found the surface it left, at t = " << next->t;
             }
             ++spawned;
         }

@@ -29,8 +29,8 @@ std::vector<Vec3d> surface_points(const ImplicitField& field, std::size_t wanted
         std::uniform_real_distribution<double> u(0, 1);
         std::normal_distribution<double> g;
         // Through a random point of the box in a random direction, across the whole box.
-        const Vec3d a = box.lower + box.extent() * Vec3d(u(random), u(random), u(random));
-        const Vec3d direction = normalize(Vec3d(g(random), g(random), g(random)));
+        const Vec3d a = box.lower + box.extent() * Vec3d{u(random), u(random), u(random)};
+        const Vec3d direction = normalize(Vec3d{g(random), g(random), g(random)});
         const double reach = length(box.extent());
         const Vec3d start = a - direction * reach, step = direction * (2 * reach / kStepsPerLine);
         double previous = field.value(start);

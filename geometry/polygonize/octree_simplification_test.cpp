@@ -34,14 +34,14 @@ TEST(Qef, MergedQefsEqualTheQefOfAllThePlanes) {
     std::uniform_real_distribution<double> u(-1, 1);
     Qef all, first, second;
     for (int i = 0; i < 10; ++i) {
-        const Vec3d p(3 + u(random), -2 + u(random), 5 + u(random)), n(u(random), u(random), u(random));
+        const Vec3d p{3 + u(random), -2 + u(random), 5 + u(random)}, n(u(random), u(random), u(random));
         all.add(p, n);
         (i < 4 ? first : second).add(p, n);
     }
     Qef merged = first;
     merged.merge(second);
     for (int k = 0; k < 5; ++k) {
-        const Vec3d x(3 + u(random), -2 + u(random), 5 + u(random));
+        const Vec3d x{3 + u(random), -2 + u(random), 5 + u(random)};
         EXPECT_NEAR(merged.error(x), all.error(x), 1e-12);
     }
     EXPECT_NEAR(length(merged.solve() - all.solve()), 0, 1e-12);

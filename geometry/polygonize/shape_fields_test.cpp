@@ -95,7 +95,7 @@ TEST_P(ShapeFields, SignMatchesTheShapesInsideTest) {
     std::uniform_real_distribution<double> u(0, 1);
     int inside = 0, disagreements = 0;
     for (int i = 0; i < 2000; ++i) {
-        const Vec3d p = b.lower - b.extent() * 0.1 + b.extent() * 1.2 * Vec3d(u(random), u(random), u(random));
+        const Vec3d p = b.lower - b.extent() * 0.1 + b.extent() * 1.2 * Vec3d{u(random), u(random), u(random)};
         const double v = field->value(p);
         if (std::abs(v) < 1e-6) continue;  // on the surface either answer is right
         inside += v < 0;
@@ -114,7 +114,7 @@ TEST_P(ShapeFields, GradientMatchesFiniteDifferencesNearTheSurface) {
     std::uniform_real_distribution<double> u(0, 1);
     int checked = 0, bad = 0;
     for (int i = 0; i < 4000 && checked < 200; ++i) {
-        const Vec3d p = b.lower + b.extent() * Vec3d(u(random), u(random), u(random));
+        const Vec3d p = b.lower + b.extent() * Vec3d{u(random), u(random), u(random)};
         // Away from creases (CSG, box edges, mesh edges) the field is smooth: compare where it is.
         const double v = field->value(p);
         if (std::abs(v) > 0.2 * max_component(b.extent())) continue;
@@ -140,13 +140,13 @@ TEST_P(ShapeFields, MayReachSurfaceNeverMissesASignChange) {
     std::uniform_real_distribution<double> u(0, 1);
     int denied = 0;
     for (int i = 0; i < 300; ++i) {
-        const Vec3d c = b.lower - b.extent() * 0.2 + b.extent() * 1.4 * Vec3d(u(random), u(random), u(random));
+        const Vec3d c = b.lower - b.extent() * 0.2 + b.extent() * 1.4 * Vec3d{u(random), u(random), u(random)};
         const double r = 0.15 * max_component(b.extent()) * u(random);
         if (field->may_reach_surface(c, r)) continue;
         ++denied;
         const bool centre_inside = field->value(c) < 0;
         for (int k = 0; k < 50; ++k) {
-            const Vec3d d = normalize(Vec3d(u(random) - 0.5, u(random) - 0.5, u(random) - 0.5));
+            const Vec3d d = normalize(Vec3d{u(random) - 0.5, u(random) - 0.5, u(random) - 0.5});
             const Vec3d p = c + d * (r * std::cbrt(u(random)));
             ASSERT_EQ(field->value(p) < 0, centre_inside) << "at " << p.x << "," << p.y << "," << p.z;
         }

@@ -68,8 +68,8 @@ TEST(SphereShape, RandomRaysHitAtTheClosedFormDistanceWithRadialNormals) {
     int hits = 0, misses = 0;
     for (int i = 0; i < 4000; ++i) {
         // Float-exact ray: the reference uses exactly the origin and direction the renderer sees.
-        const Vec3d o(Vec3f(Vec3d(coordinate(random), coordinate(random), coordinate(random))));
-        const Vec3d towards = centre + Vec3d(unit(random), unit(random), unit(random)) * (1.6 * radius);
+        const Vec3d o(Vec3f(Vec3d{coordinate(random), coordinate(random), coordinate(random)}));
+        const Vec3d towards = centre + Vec3d{unit(random), unit(random), unit(random)} * (1.6 * radius);
         const Vec3d d(Vec3f((towards - o) * scale(random) / length(towards - o)));  // not unit length
         const double relative = relative_line_distance(o, d, centre, radius);
         if (std::abs(relative - 1) < 1e-3) continue;  // grazing rays have their own test
@@ -141,8 +141,8 @@ TEST(SphereShape, RayStartingInsideReportsTheExitWithTheOutwardNormal) {
     std::mt19937 random(11);
     std::uniform_real_distribution<double> unit(-1, 1);
     for (int i = 0; i < 500; ++i) {
-        const Vec3d o(Vec3f(centre + Vec3d(unit(random), unit(random), unit(random)) * (0.5 * radius)));
-        const Vec3d d(Vec3f(Vec3d(unit(random), unit(random), unit(random))));
+        const Vec3d o(Vec3f(centre + Vec3d{unit(random), unit(random), unit(random)} * (0.5 * radius)));
+        const Vec3d d(Vec3f(Vec3d{unit(random), unit(random), unit(random)}));
         if (length(d) < 0.1) continue;
         const auto expected = reference_hit(o, d, centre, radius);
         ASSERT_TRUE(expected);
@@ -240,9 +240,9 @@ TEST(SphereIntersection, RootsAreOrderedAndSolveTheEquation) {
     std::mt19937 random(3);
     std::uniform_real_distribution<double> unit(-1, 1);
     for (int i = 0; i < 1000; ++i) {
-        const Vec3d o(unit(random) * 4, unit(random) * 4, unit(random) * 4);
-        const Vec3d d(unit(random), unit(random), unit(random));
-        const Vec3d c(unit(random), unit(random), unit(random));
+        const Vec3d o{unit(random) * 4, unit(random) * 4, unit(random) * 4};
+        const Vec3d d{unit(random), unit(random), unit(random)};
+        const Vec3d c{unit(random), unit(random), unit(random)};
         const double r = 0.5 + std::abs(unit(random));
         const auto roots = intersect_sphere(o, d, c, r);
         const double rel = relative_line_distance(o, d, c, r);
@@ -306,8 +306,8 @@ TEST(SphereShape, NonUniformScaleIsInstancedAndHitsTheEllipsoidExactly) {
     std::uniform_real_distribution<double> unit(-1, 1);
     int hits = 0;
     for (int i = 0; i < 500; ++i) {
-        const Vec3d o(Vec3f(Vec3d(unit(random), unit(random), unit(random)) * 8.0));
-        const Vec3d target = to_world.point(Vec3d(unit(random), unit(random), unit(random)) * 0.8);
+        const Vec3d o(Vec3f(Vec3d{unit(random), unit(random), unit(random)} * 8.0));
+        const Vec3d target = to_world.point(Vec3d{unit(random), unit(random), unit(random)} * 0.8);
         const Vec3d d(Vec3f(target - o));
         // Object space: the ellipsoid is the unit sphere and t is unchanged by the affine map.
         const Vec3d oo = to_world.inverse().point(o), od = to_world.inverse().vector(d);

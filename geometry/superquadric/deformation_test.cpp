@@ -20,7 +20,7 @@ const Vec3d kRadii(0.8, 0.5, 1.5);
 Vec3d random_point_of(std::mt19937& random, const Superellipsoid& shape) {
     std::uniform_real_distribution<double> unit(-1, 1);
     for (;;) {
-        const Vec3d p(shape.radii.x * unit(random), shape.radii.y * unit(random), shape.radii.z * unit(random));
+        const Vec3d p{shape.radii.x * unit(random), shape.radii.y * unit(random), shape.radii.z * unit(random)};
         if (shape.gauge(p) <= 1) return p;
     }
 }
@@ -122,6 +122,28 @@ TEST(SuperquadricDeformation, BoxesMapConservativelyBothWays) {
             }
         }
     }
+}
+
+// Regression: sin_range took the cosine of θ − π/2, which rounds to the ulp of π/2 and so keeps only ~10⁻⁴ of a
+// 10⁻¹² sine's relative precision; the bend's forward box divides that sine by the curvature, and an identity bend
+// (k = 10⁻¹²) cut 5·10⁻⁵ off its object's bottom face (the stage box then said "outside" there, and rays missed a
+// sliver of the object).
+TEST(SuperquadricDeformation, ASlightBendsBoxHoldsItsObject) {
+    const Interval tiny = sin_range({-1.1e-12, 1.1e-12});
+    EXPECT_LE(tiny.lo, std::sin(-1.1e-12));
+    EXPECT_GE(tiny.hi, std::sin(1.1e-12));
+    const Bend bend(1e-12, 0.4, 0, {-1.1, 1.1});
+    const IntervalBox box{{-0.8, 0.8}, {-0.5, 0.5}, {-1.1, 1.1}};
+    const IntervalBox image = bend.forward_box(box);
+    for (const double x : {box.x.lo, box.x.hi})
+        for (const double y : {box.y.lo, box.y.hi})
+            for (const double z : {box.z.lo, box.z.hi}) {
+                const Vec3d q = bend.forward({x, y, z});
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_GE(q[a], image[a].lo - 1e-12) << x << " " << y << " " << z;
+                    EXPECT_LE(q[a], image[a].hi + 1e-12) << x << " " << y << " " << z;
+                }
+            }
 }
 
 std::string problem_of(const Deformation& stage) {

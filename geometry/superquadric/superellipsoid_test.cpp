@@ -22,7 +22,7 @@ TEST(SuperquadricSuperellipsoid, GaugeIsTheInsideOutsideFunctionToThePowerEpsilo
     for (int i = 0; i < 2000; ++i) {
         const Superellipsoid s{{1 + unit(random) * 0.5, 1.5 + unit(random), 0.8 + 0.5 * unit(random)}, exponent(random),
                                exponent(random)};
-        const Vec3d p(1.5 * unit(random), 2 * unit(random), unit(random));
+        const Vec3d p{1.5 * unit(random), 2 * unit(random), unit(random)};
         const double expected = direct_inside_outside(s, p);
         EXPECT_NEAR(s.inside_outside(p), expected, 1e-12 * expected) << i;
         EXPECT_EQ(s.gauge(p) < 1, expected < 1) << i;
@@ -52,7 +52,8 @@ TEST(SuperquadricSuperellipsoid, ParametricSurfacePointsHaveUnitGaugeAndTheGauge
     std::uniform_real_distribution<double> eta(-1.5707963, 1.5707963), omega(-3.14159265, 3.14159265), exponent(0.02, 4);
     for (int i = 0; i < 3000; ++i) {
         const Superellipsoid s{{0.5, 1.5, 2}, exponent(random), exponent(random)};
-        const Vec3d p = s.surface_point(eta(random), omega(random));
+        const double e = eta(random), w = omega(random);
+        const Vec3d p = s.surface_point(e, w);
         EXPECT_NEAR(s.gauge(p), 1.0, 1e-12) << i;
         const IntervalBox around{{std::abs(p.x) * 0.9, std::abs(p.x) * 1.1}, {std::abs(p.y) * 0.9, std::abs(p.y)},
                                  {std::abs(p.z), std::abs(p.z) * 1.2}};
@@ -79,7 +80,8 @@ TEST(SuperquadricSuperellipsoid, NormalsFollowTheGradient) {
     int checked = 0;
     for (int i = 0; i < 2000; ++i) {
         const Superellipsoid s{{1, 0.7, 1.3}, exponent(random), exponent(random)};
-        const Vec3d p = s.surface_point(eta(random), omega(random));
+        const double e = eta(random), w = omega(random);
+        const Vec3d p = s.surface_point(e, w);
         // Stay away from the planes, where the gradient may be unbounded.
         if (std::min({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) < 0.05) continue;
         const Vec3d expected = normalize(finite_difference_gradient(s, p, 1e-7));
@@ -124,7 +126,7 @@ TEST(SuperquadricSuperellipsoid, PolynomialCasesAreExactlyTheEvenPowers) {
     EXPECT_EQ((Superellipsoid{{1, 1, 1}, 1, 0.5}).polynomial_degree(), 0);  // mixed exponents
     EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.1, 0.1}).polynomial_degree(), 0);  // degree 20 is too high
     // The polynomial is F − 1 along the ray.
-    const Superellipsoid s({1, 2, 0.5}, 0.5, 0.5);
+    const Superellipsoid s{{1, 2, 0.5}, 0.5, 0.5};
     const Vec3d o(0.3, -1, 0.2), d(0.1, 0.4, -0.3);
     const Polynomial p = s.polynomial_along(o, d);
     for (double t : {-1.0, 0.0, 0.7, 2.5}) EXPECT_NEAR(p.evaluate(t), s.inside_outside(o + d * t) - 1, 1e-12);

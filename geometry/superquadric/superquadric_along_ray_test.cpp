@@ -27,10 +27,12 @@ struct RandomCase {
 // around it toward a point near it.
 RandomCase random_case(std::mt19937& random) {
     std::uniform_real_distribution<double> unit(-1, 1), exponent(0.1, 4), size(0.4, 1.5);
-    const Vec3d radii(size(random), size(random), size(random));
-    Superquadric s = make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii));
-    const Vec3d target(unit(random) * radii.x, unit(random) * radii.y, unit(random) * radii.z);
-    const Vec3d origin = normalize(Vec3d(unit(random), unit(random), unit(random))) * 5.0;
+    const Vec3d radii{size(random), size(random), size(random)};
+    const double e1 = exponent(random), e2 = exponent(random);
+    auto deformations = random_deformations(random, radii);
+    Superquadric s = make_superquadric(radii, e1, e2, std::move(deformations));
+    const Vec3d target{unit(random) * radii.x, unit(random) * radii.y, unit(random) * radii.z};
+    const Vec3d origin = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 5.0;
     return {std::move(s), origin, (target - origin) * (0.5 + std::abs(unit(random)))};
 }
 

@@ -96,11 +96,11 @@ TEST(SuperquadricSpans, PinchedStarsGiveTheSpansThatDenseSamplingSees) {
         const SuperquadricShape shape({make_superquadric(radii, star(random), star(random), stages)});
         for (int i = 0; i < 30; ++i) {
             // Rays close to the star's arms cross them several times.
-            const Vec3d o(unit(random) * 0.3, unit(random) * 0.3, 4);
-            const Vec3d d = Vec3d(unit(random) * 0.2, unit(random) * 0.2, -1) - Vec3d(0, 0, 0);
-            const Vec3d sideways(5 * unit(random), 5 * unit(random), unit(random) * 0.4);
+            const Vec3d o{unit(random) * 0.3, unit(random) * 0.3, 4};
+            const Vec3d d = Vec3d{unit(random) * 0.2, unit(random) * 0.2, -1} - Vec3d(0, 0, 0);
+            const Vec3d sideways{5 * unit(random), 5 * unit(random), unit(random) * 0.4};
             const Vec3d side_origin = sideways;
-            const Vec3d side_direction = Vec3d(unit(random) * 0.3, unit(random) * 0.3, unit(random) * 0.1) - sideways * 0.2;
+            const Vec3d side_direction = Vec3d{unit(random) * 0.3, unit(random) * 0.3, unit(random) * 0.1} - sideways * 0.2;
             expect_spans_match_sampling(shape, o, d, 8, "down " + std::to_string(shape_index));
             expect_spans_match_sampling(shape, side_origin, side_direction, 10, "side " + std::to_string(shape_index));
             if (spans_of(shape, side_origin, side_direction, 0, 10).size() > 1) ++several;
@@ -157,8 +157,8 @@ TEST(SuperquadricShape, InstancedAndBakedPlacementsGiveTheSameHits) {
         const Superquadric reference = make_superquadric(radii, 0.4, 2.6, stages, to_world);
         int hits = 0;
         for (int i = 0; i < 400; ++i) {
-            const Vec3d o = Vec3d(Vec3f(Vec3d(unit(random), unit(random), unit(random)) * 7.0));
-            const Vec3d d = Vec3d(Vec3f(to_world.point(Vec3d(unit(random), unit(random), unit(random)) * 0.8) - o));
+            const Vec3d o = Vec3d(Vec3f(Vec3d{unit(random), unit(random), unit(random)} * 7.0));
+            const Vec3d d = Vec3d(Vec3f(to_world.point(Vec3d{unit(random), unit(random), unit(random)} * 0.8) - o));
             const auto hit = scene->intersect(make_ray(o, d), RayKind::Camera);
             SuperquadricWork work;
             const auto expected = reference.first_crossing(o, d, 0, 1e30, work);

@@ -40,10 +40,10 @@ struct RandomRay {
 // Rays from a shell around the object toward random points near it (some miss, some graze), and rays from inside.
 RandomRay random_ray(std::mt19937& random, const Vec3d& radii, bool from_inside) {
     std::uniform_real_distribution<double> unit(-1, 1);
-    const Vec3d target(unit(random) * radii.x * 1.2, unit(random) * radii.y * 1.2, unit(random) * radii.z * 1.2);
-    Vec3d origin(unit(random), unit(random), unit(random));
+    const Vec3d target{unit(random) * radii.x * 1.2, unit(random) * radii.y * 1.2, unit(random) * radii.z * 1.2};
+    Vec3d origin{unit(random), unit(random), unit(random)};
     origin = from_inside ? origin * 0.3 * std::min({radii.x, radii.y, radii.z}) : normalize(origin) * 6.0;
-    Vec3d direction = from_inside ? Vec3d(unit(random), unit(random), unit(random)) : target - origin;
+    Vec3d direction = from_inside ? Vec3d{unit(random), unit(random), unit(random)} : target - origin;
     return {origin, direction * (0.5 + std::abs(unit(random)))};  // not unit length on purpose
 }
 
@@ -179,8 +179,10 @@ TEST(SuperquadricIntersection, EveryHitIsTheFirstSignChangeOnRandomDeformedShape
     std::uniform_real_distribution<double> exponent(0.1, 4), size(0.4, 1.5);
     int hits = 0;
     for (int shape = 0; shape < 40; ++shape) {
-        const Vec3d radii(size(random), size(random), size(random));
-        const Superquadric s = make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii));
+        const Vec3d radii{size(random), size(random), size(random)};
+        const double e1 = exponent(random), e2 = exponent(random);
+        auto deformations = random_deformations(random, radii);
+        const Superquadric s = make_superquadric(radii, e1, e2, std::move(deformations));
         for (int i = 0; i < 40; ++i) {
             const RandomRay ray = random_ray(random, radii, i % 5 == 0);
             SuperquadricWork work;
@@ -272,7 +274,9 @@ TEST(SuperquadricIntersection, NormalsMatchFiniteDifferencesOfTheDeformedField) 
     int checked = 0;
     for (int shape = 0; shape < 30; ++shape) {
         const Vec3d radii(0.9, 0.6, 1.2);
-        const Superquadric s = make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii));
+        const double e1 = exponent(random), e2 = exponent(random);
+        auto deformations = random_deformations(random, radii);
+        const Superquadric s = make_superquadric(radii, e1, e2, std::move(deformations));
         for (int i = 0; i < 30; ++i) {
             const double e = eta(random), w = omega(random);
             const Vec3d undeformed = s.shape().surface_point(e, w);
@@ -298,14 +302,17 @@ TEST(SuperquadricBounds, ContainSampledSurfacePointsOfRandomDeformations) {
     std::uniform_real_distribution<double> exponent(0.02, 4), size(0.3, 2), eta(-1.5707963, 1.5707963),
         omega(-3.14159265, 3.14159265);
     for (int shape = 0; shape < 100; ++shape) {
-        const Vec3d radii(size(random), size(random), size(random));
+        const Vec3d radii{size(random), size(random), size(random)};
         const Transform placement = Transform::translate({size(random), -size(random), 0}) * Transform::rotate({1, 1, 0}, 30);
+        const double e1 = exponent(random), e2 = exponent(random);
+        auto deformations = random_deformations(random, radii);
         const Superquadric s =
-            make_superquadric(radii, exponent(random), exponent(random), random_deformations(random, radii), placement);
+            make_superquadric(radii, e1, e2, std::move(deformations), placement);
         const IntervalBox bounds = s.bounds();
         Vec3d lowest = bounds.upper(), highest = bounds.lower();
         for (int i = 0; i < 2000; ++i) {
-            const Vec3d p = s.surface_point(eta(random), omega(random));
+            const double e = eta(random), w = omega(random);
+            const Vec3d p = s.surface_point(e, w);
             ASSERT_TRUE(bounds.contains(p)) << shape << " " << i;
             lowest = min(lowest, p);
             highest = max(highest, p);

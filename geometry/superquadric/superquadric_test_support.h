@@ -21,12 +21,14 @@ inline std::vector<Deformation> random_deformations(std::mt19937& random, const 
     std::uniform_real_distribution<double> unit(-1, 1);
     const double a3 = radii.z;
     std::vector<Deformation> stages;
-    stages.push_back(Taper(0.6 * unit(random), 0.6 * unit(random), a3));
+    const double taper_x = 0.6 * unit(random), taper_y = 0.6 * unit(random);
+    stages.push_back(Taper(taper_x, taper_y, a3));
     stages.push_back(Twist(1.5 * unit(random) / a3, a3));
     // Curvature kept well inside the validity limit (k · lateral extent < 1).
     const double lateral = 1.7 * std::max(radii.x, radii.y);
-    stages.push_back(Bend(0.5 * (0.2 + 0.8 * std::abs(unit(random))) / std::max(lateral, a3),
-                          3.14159 * unit(random), 0.3 * a3 * unit(random), {-a3, a3}));
+    const double curvature = 0.5 * (0.2 + 0.8 * std::abs(unit(random))) / std::max(lateral, a3);
+    const double angle = 3.14159 * unit(random), centre = 0.3 * a3 * unit(random);
+    stages.push_back(Bend(curvature, angle, centre, {-a3, a3}));
     return stages;
 }
 

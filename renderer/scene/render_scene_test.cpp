@@ -101,8 +101,8 @@ TEST(RenderScene, OcclusionAgreesWithIntersection) {
     std::mt19937 random(7);
     std::uniform_real_distribution<float> coordinate(-6, 6);
     for (int i = 0; i < 2000; ++i) {
-        const Vec3f origin(coordinate(random), 4, coordinate(random));
-        const Vec3f target(coordinate(random), -1, coordinate(random));
+        const Vec3f origin{coordinate(random), 4, coordinate(random)};
+        const Vec3f target{coordinate(random), -1, coordinate(random)};
         Ray ray = ray_between(origin, target - origin);
         ray.t_far = 1.0f;
         EXPECT_EQ(scene->occluded(ray), scene->intersect(ray, RayKind::Shadow).has_value()) << i;
@@ -120,10 +120,10 @@ TEST(RenderScene, SpawnedRaysDoNotRehitTheirOwnSurface) {
     std::uniform_real_distribution<float> unit(-1, 1);
     int tested = 0;
     for (int i = 0; i < 4000; ++i) {
-        const Vec3f towards = normalize(Vec3f(unit(random), unit(random), unit(random)));
+        const Vec3f towards = normalize(Vec3f{unit(random), unit(random), unit(random)});
         const auto hit = scene->intersect(ray_between(Vec3f(100, 50, -30) + towards * 60.0f, -towards), RayKind::Camera);
         ASSERT_TRUE(hit);
-        Vec3f direction = normalize(Vec3f(unit(random), unit(random), unit(random)));
+        Vec3f direction = normalize(Vec3f{unit(random), unit(random), unit(random)});
         if (dot(direction, hit->geometric_normal) < 0) direction = -direction;
         Ray leaving = ray_between(hit->spawn_origin(direction), direction);
         EXPECT_FALSE(scene->intersect(leaving, RayKind::Secondary)) << i;
