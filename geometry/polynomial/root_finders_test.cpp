@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@ struct NamedRootFinder {
     std::string name;
     RootFinder find;
 };
+
+// GoogleTest prints a parameter; without this it dumps the struct's bytes, uninitialised ones included (valgrind
+// reported each such read).
+void PrintTo(const NamedRootFinder& finder, std::ostream* out) { *out << finder.name; }
 
 // Simple roots agree with the oracle to this relative accuracy.
 constexpr double kSimpleRootTolerance = 1e-9;
