@@ -339,7 +339,6 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
         near_.push_back(index);
     });
     inverse_length2_ = 1 / dot(d, d);
-    const double inverse_length2 = inverse_length2_;
     // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept
     // because of it that misses the stretch is dropped by order_candidates' exact chord.
     const double rounding = 1e-12 * (max_component(abs(o)) +
@@ -355,7 +354,7 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
         const double half_diagonal = FieldSweep::half_diagonal(element);
         const double reach = element.radius() + half_diagonal;
         const double t_near =
-            std::clamp(dot(element.centre() - o, d) * inverse_length2, stretch.t_begin, stretch.t_end);
+            std::clamp(dot(element.centre() - o, d) * inverse_length2_, stretch.t_begin, stretch.t_end);
         const Vec3d to_centre = o + d * t_near - element.centre();
         double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
         const double keep = reach * (1 + 1e-9) + rounding;
@@ -607,11 +606,10 @@ double FieldSweep<Kernel, kMetaballsOnly>::hard_cube_step_before(double t) const
     const double tolerance = field_sweep_detail::same_place_tolerance(t);
     double step = 0;
     for (const Active& a : joined_) {
-        const Metacube& element = elements_[a.index];
-        if (!is_hard_cube(element)) continue;
+        if (!is_hard_cube(a)) continue;
         const bool inside_after = a.kernel_piece != nullptr;
         const bool inside_before = a.t_in < t - tolerance && t <= a.t_out + tolerance;
-        step += element.weight() * ((inside_before ? 1 : 0) - (inside_after ? 1 : 0));
+        step += a.weight * ((inside_before ? 1 : 0) - (inside_after ? 1 : 0));
     }
     return step;
 }

@@ -16,7 +16,7 @@ namespace isotrace {
 namespace {
 
 using superquadric_test::make_superquadric;
-using superquadric_test::random_deformations;
+using superquadric_test::random_deformed_superquadric;
 
 struct RandomCase {
     Superquadric superquadric;
@@ -28,9 +28,7 @@ struct RandomCase {
 RandomCase random_case(std::mt19937& random) {
     std::uniform_real_distribution<double> unit(-1, 1), exponent(0.1, 4), size(0.4, 1.5);
     const Vec3d radii{size(random), size(random), size(random)};
-    const double e1 = exponent(random), e2 = exponent(random);
-    auto deformations = random_deformations(random, radii);
-    Superquadric s = make_superquadric(radii, e1, e2, std::move(deformations));
+    Superquadric s = random_deformed_superquadric(random, radii, exponent);
     const Vec3d target{unit(random) * radii.x, unit(random) * radii.y, unit(random) * radii.z};
     const Vec3d origin = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 5.0;
     return {std::move(s), origin, (target - origin) * (0.5 + std::abs(unit(random)))};

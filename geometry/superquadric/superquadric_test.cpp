@@ -15,7 +15,7 @@ namespace isotrace {
 namespace {
 
 using superquadric_test::make_superquadric;
-using superquadric_test::random_deformations;
+using superquadric_test::random_deformed_superquadric;
 using superquadric_test::sampled_crossings;
 
 // Roots of |(o + t d) / a| = 1 in long double (the ellipsoid as a unit sphere in scaled coordinates).
@@ -180,9 +180,7 @@ TEST(SuperquadricIntersection, EveryHitIsTheFirstSignChangeOnRandomDeformedShape
     int hits = 0;
     for (int shape = 0; shape < 40; ++shape) {
         const Vec3d radii{size(random), size(random), size(random)};
-        const double e1 = exponent(random), e2 = exponent(random);
-        auto deformations = random_deformations(random, radii);
-        const Superquadric s = make_superquadric(radii, e1, e2, std::move(deformations));
+        const Superquadric s = random_deformed_superquadric(random, radii, exponent);
         for (int i = 0; i < 40; ++i) {
             const RandomRay ray = random_ray(random, radii, i % 5 == 0);
             SuperquadricWork work;
@@ -274,9 +272,7 @@ TEST(SuperquadricIntersection, NormalsMatchFiniteDifferencesOfTheDeformedField) 
     int checked = 0;
     for (int shape = 0; shape < 30; ++shape) {
         const Vec3d radii(0.9, 0.6, 1.2);
-        const double e1 = exponent(random), e2 = exponent(random);
-        auto deformations = random_deformations(random, radii);
-        const Superquadric s = make_superquadric(radii, e1, e2, std::move(deformations));
+        const Superquadric s = random_deformed_superquadric(random, radii, exponent);
         for (int i = 0; i < 30; ++i) {
             const double e = eta(random), w = omega(random);
             const Vec3d undeformed = s.shape().surface_point(e, w);
@@ -304,10 +300,7 @@ TEST(SuperquadricBounds, ContainSampledSurfacePointsOfRandomDeformations) {
     for (int shape = 0; shape < 100; ++shape) {
         const Vec3d radii{size(random), size(random), size(random)};
         const Transform placement = Transform::translate({size(random), -size(random), 0}) * Transform::rotate({1, 1, 0}, 30);
-        const double e1 = exponent(random), e2 = exponent(random);
-        auto deformations = random_deformations(random, radii);
-        const Superquadric s =
-            make_superquadric(radii, e1, e2, std::move(deformations), placement);
+        const Superquadric s = random_deformed_superquadric(random, radii, exponent, placement);
         const IntervalBox bounds = s.bounds();
         Vec3d lowest = bounds.upper(), highest = bounds.lower();
         for (int i = 0; i < 2000; ++i) {

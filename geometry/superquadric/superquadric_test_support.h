@@ -32,6 +32,15 @@ inline std::vector<Deformation> random_deformations(std::mt19937& random, const 
     return stages;
 }
 
+// A superquadric of these radii with both exponents drawn from `exponent`, then a random deformation chain (the
+// draws in that order, so a seed gives the same shape with every compiler).
+inline Superquadric random_deformed_superquadric(std::mt19937& random, const Vec3d& radii,
+                                                 std::uniform_real_distribution<double>& exponent,
+                                                 const Transform& placement = {}) {
+    const double north_south = exponent(random), east_west = exponent(random);
+    return make_superquadric(radii, north_south, east_west, random_deformations(random, radii), placement);
+}
+
 // Sign changes of the field along origin + t·direction on [t0, t1] by dense sampling (the crossings' midpoints).
 inline std::vector<double> sampled_crossings(const Superquadric& s, const Vec3d& origin, const Vec3d& direction,
                                              double t0, double t1, int samples = 20000) {
