@@ -233,7 +233,10 @@ int run_render(const RenderArguments& args) {
     const auto load_start = std::chrono::steady_clock::now();
     RenderRanks ranks;  // one of several when started by mpirun or srun (docs/distributed.md)
     std::unique_ptr<LoadedScene> scene = ranks.load_scene(args.scene, overrides);
-    if (!scene) return kExitBadInput;  // this rank could not take part; rank 0 says why
+    // This rank may not take part (rank 0 refused the run). Rank 0 says why and exits with 2, which becomes the job's
+    // status; a worker that left with 2 first made the launcher kill rank 0 before its message was out (a flaky
+    // mpi_bad_input), so the worker leaves quietly.
+    if (!scene) return kExitOk;
     if (reference.enabled) scene->film.half_float = false;  // a reference keeps every bit of its mean and variance
     if (!ranks.coordinator()) {
         ranks.serve(*scene, args.tile_size);
