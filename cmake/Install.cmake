@@ -5,7 +5,7 @@ install(TARGETS isotrace EXPORT isotraceTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace)
 # The image module goes beside the library, where image_codec() looks for it.
-install(TARGETS isotrace_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS isotrace_oiio isotrace_exr LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(folder renderer geometry integrators)
   install(DIRECTORY ${folder} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace
           FILES_MATCHING PATTERN "*.h" PATTERN "*_test*" EXCLUDE)

@@ -20,6 +20,19 @@ function(isotrace_test_timeout variable seconds)
   set(${variable} ${scaled} PARENT_SCOPE)
 endfunction()
 
+# An image module `target` built from `source` and linked with the image libraries `ARGN`: a MODULE library that
+# libisotrace loads with dlopen from its own directory on first use (renderer/image/image_codec.h). Only its entry
+# point is exported (fewer symbols to relocate when it loads), and every program linking libisotrace may read or
+# write images, so building the library builds it.
+function(isotrace_image_module target source)
+  add_library(${target} MODULE ${source})
+  target_compile_options(${target} PRIVATE -Wall -Wextra)
+  target_include_directories(${target} PRIVATE ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/include)
+  target_link_libraries(${target} PRIVATE ${ARGN})
+  set_target_properties(${target} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  add_dependencies(isotrace ${target})
+endfunction()
+
 # A Google Benchmark executable `name` from `source`, built on request (EXCLUDE_FROM_ALL) and not run by ctest:
 # cmake --build <dir> --target <name> && <dir>/bin/<name>
 function(isotrace_benchmark name source)

@@ -2,7 +2,10 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cctype>
 #include <stdexcept>
+#include <type_traits>
 
 #include "renderer/core/library_directory.h"
 #include "renderer/core/version.h"
@@ -10,23 +13,55 @@
 #ifndef ISOTRACE_IMAGE_MODULE
 #error "the build must define ISOTRACE_IMAGE_MODULE (the image module's file name)"
 #endif
+#ifndef ISOTRACE_EXR_MODULE
+#error "the build must define ISOTRACE_EXR_MODULE (the EXR writer module's file name)"
+#endif
 
 namespace isotrace {
+namespace {
 
-const ImageCodec& load_image_codec(const std::filesystem::path& module_path) {
+// What module `module_path`'s entry `entry_name` returns for this isotrace version (never unloaded).
+template <class Interface>
+const Interface& load_module(const std::filesystem::path& module_path, const char* entry_name, const char* role,
+                             const char* purpose) {
     const auto fail = [&](const std::string& reason) {
-        return std::runtime_error("cannot load the image module " + module_path.string() +
-                                  ", which reads and writes every image file: " + reason +
-                                  " (it is built and installed beside libisotrace)");
+        return std::runtime_error("cannot load the " + std::string(role) + " " + module_path.string() + ", which " +
+                                  purpose + ": " + reason + " (it is built and installed beside libisotrace)");
     };
-    // RTLD_LOCAL: OpenImageIO's symbols stay out of the global namespace; the module is never unloaded.
+    // RTLD_LOCAL: the image libraries' symbols stay out of the global namespace.
     void* module = dlopen(module_path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module) throw fail(dlerror());
-    const auto entry = reinterpret_cast<ImageCodecEntry>(dlsym(module, kImageCodecEntry));
+    using Entry = const Interface* (*)(const char*);
+    const auto entry = reinterpret_cast<Entry>(dlsym(module, entry_name));
     if (!entry) throw fail(dlerror());
-    const ImageCodec* codec = entry(kIsotraceVersion);
-    if (!codec) throw fail(std::string("it was built for another isotrace version than ") + kIsotraceVersion);
-    return *codec;
+    const Interface* loaded = entry(kIsotraceVersion);
+    if (!loaded) throw fail(std::string("it was built for another isotrace version than ") + kIsotraceVersion);
+    return *loaded;
+}
+
+bool is_exr(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension == ".exr";
+}
+
+const ImageEncoder& exr_encoder() {
+    static const ImageEncoder& encoder = load_exr_encoder(library_directory() / ISOTRACE_EXR_MODULE);
+    return encoder;
+}
+
+}  // namespace
+
+const ImageCodec& load_image_codec(const std::filesystem::path& module_path) {
+    static_assert(std::is_same_v<ImageCodecEntry, const ImageCodec* (*)(const char*)>);
+    return load_module<ImageCodec>(module_path, kImageCodecEntry, "image module",
+                                   "reads every image file and writes all but EXR");
+}
+
+const ImageEncoder& load_exr_encoder(const std::filesystem::path& module_path) {
+    static_assert(std::is_same_v<ImageEncoderEntry, const ImageEncoder* (*)(const char*)>);
+    return load_module<ImageEncoder>(module_path, kImageEncoderEntry, "EXR writer module", "writes every EXR file");
 }
 
 const ImageCodec& image_codec() {
@@ -34,10 +69,14 @@ const ImageCodec& image_codec() {
     return codec;
 }
 
-ImageCodecPreload::ImageCodecPreload(std::function<void()> on_failure)
-    : thread_([on_failure = std::move(on_failure)] {
+const ImageEncoder& image_encoder_for(const std::filesystem::path& path) {
+    return is_exr(path) ? exr_encoder() : static_cast<const ImageEncoder&>(image_codec());
+}
+
+ImageCodecPreload::ImageCodecPreload(std::vector<std::filesystem::path> outputs, std::function<void()> on_failure)
+    : thread_([outputs = std::move(outputs), on_failure = std::move(on_failure)] {
           try {
-              image_codec();
+              for (const std::filesystem::path& output : outputs) image_encoder_for(output);
           } catch (const std::exception&) {
               if (on_failure) on_failure();
           }

@@ -1,11 +1,12 @@
 #pragma once
-// The narrow interface between libisotrace and the image module, the only code that links OpenImageIO.
+// The narrow interface between libisotrace and its two image modules, the only code that links image libraries.
 // OpenImageIO's Debian package pulls in ~260 shared libraries whose loading and relocation cost every process
-// ~0.4 s before main(), so libisotrace does not link it: image_codec() loads the module (libisotrace_oiio.so,
-// installed beside libisotrace) with dlopen the first time an image is encoded or decoded. Nothing here names
-// an OpenImageIO type, and the module is built from the same sources, so plain C++ types cross the boundary.
-// Most code wants the functions built on it: write_image_file() (image_writer.h), read_image_file()
-// (image_reader.h).
+// ~0.4 s before main(), so libisotrace does not link it: image_codec() loads the image module (libisotrace_oiio.so,
+// installed beside libisotrace) with dlopen the first time an image is decoded, or encoded in a format other than
+// EXR. EXR, what every render writes, is encoded by the EXR writer module (libisotrace_exr.so, OpenEXR alone: ~10
+// libraries), which writes the bytes the image module would. Nothing here names a library's type, and the modules
+// are built from the same sources, so plain C++ types cross the boundary. Most code wants the functions built on
+// it: write_image_file() (image_writer.h), read_image_file() (image_reader.h).
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -65,12 +66,16 @@ struct DecodedImage {
 // budget charges the pixels' memory here).
 using BeforePixels = std::function<void(const ImageHeader&)>;
 
-class ImageCodec {
+class ImageEncoder {
 public:
-    virtual ~ImageCodec() = default;
+    virtual ~ImageEncoder() = default;
     // The file bytes of `image` in the format of `path`'s extension (nothing is written to `path`). Throws
     // std::runtime_error "cannot write <path>: <reason>".
     virtual std::vector<unsigned char> encode(const std::filesystem::path& path, const ImageEncoding& image) const = 0;
+};
+
+class ImageCodec : public ImageEncoder {
+public:
     // Reads the first 2-D image of `path` into `image`; returns "" or what is wrong with the file (it cannot
     // be opened or read, is not 2-D, has no channels). Exceptions from `before_pixels` pass through.
     virtual std::string decode(const std::filesystem::path& path, const BeforePixels& before_pixels,
@@ -82,22 +87,33 @@ public:
 using ImageCodecEntry = const ImageCodec* (*)(const char* isotrace_version);
 inline constexpr const char* kImageCodecEntry = "isotrace_image_codec";
 
+// The EXR writer module (libisotrace_exr.so, OpenEXR alone) exports this one: every .exr file is encoded there, so
+// that writing EXR does not load OpenImageIO (whose dynamic linking costs ~1 G instructions, docs/benchmarks.md).
+using ImageEncoderEntry = const ImageEncoder* (*)(const char* isotrace_version);
+inline constexpr const char* kImageEncoderEntry = "isotrace_image_encoder";
+
 // The module's codec, loaded once, on first use, from the directory of the loaded libisotrace (thread-safe).
 // Throws std::runtime_error naming the module's path if it is missing or cannot be loaded.
 const ImageCodec& image_codec();
+// The encoder for files like `path`: the EXR writer module for .exr, image_codec() for any other (each loaded
+// once, on first use, like image_codec()).
+const ImageEncoder& image_encoder_for(const std::filesystem::path& path);
 
 // Loads the codec from the module at `module_path` (image_codec() passes the one beside libisotrace).
 // Throws std::runtime_error naming the path and the loader's reason when that fails.
 const ImageCodec& load_image_codec(const std::filesystem::path& module_path);
+// The same for the EXR writer module.
+const ImageEncoder& load_exr_encoder(const std::filesystem::path& module_path);
 
-// Loads the module (image_codec()) on a thread of its own, so that its ~0.4 s of dynamic linking overlaps other
-// work (a render: with a core to spare, it then costs no wall time). image_codec() called before the load ends
-// waits for it; a load that failed calls `on_failure` from that thread and is tried again by the next
-// image_codec() call, which throws its error. The destructor waits for the thread. While the module loads, the
-// loader's lock is held and any thread being created waits: start this after the threads it should overlap.
+// Loads the encoders that files like `outputs` need (image_encoder_for()) on a thread of their own, so that their
+// dynamic linking (~0.4 s for OpenImageIO's) overlaps other work (a render: with a core to spare, it then costs no
+// wall time). image_encoder_for() called before the load ends waits for it; a load that failed calls
+// `on_failure` from that thread and is tried again by the next call, which throws its error. The destructor waits
+// for the thread. While a module loads, the loader's lock is held and any thread being created waits: start this
+// after the threads it should overlap.
 class ImageCodecPreload {
 public:
-    explicit ImageCodecPreload(std::function<void()> on_failure);
+    ImageCodecPreload(std::vector<std::filesystem::path> outputs, std::function<void()> on_failure);
     ~ImageCodecPreload();
     ImageCodecPreload(const ImageCodecPreload&) = delete;
     ImageCodecPreload& operator=(const ImageCodecPreload&) = delete;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <string>
 #include <vector>
 
@@ -91,14 +93,18 @@ TEST(ImageReader, MissingFilesAndFilesThatAreNoImagesAreInputErrorsNamingThem) {
 
 TEST(ImageReader, AMissingImageModuleIsAnErrorNamingIt) {
     const testing::TemporaryDirectory directory("image_reader");
-    const auto module = directory / "libisotrace_oiio.so";
-    try {
-        load_image_codec(module);
-        FAIL() << "a missing module was loaded";
-    } catch (const std::runtime_error& error) {
-        EXPECT_NE(std::string(error.what()).find("cannot load the image module " + module.string()), std::string::npos)
-            << error.what();
-    }
+    const auto expect_error = [](const std::function<void()>& load, const std::string& expected) {
+        try {
+            load();
+            ADD_FAILURE() << "a missing module was loaded";
+        } catch (const std::runtime_error& error) {
+            EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+        }
+    };
+    const auto image_module = directory / "libisotrace_oiio.so";
+    expect_error([&] { load_image_codec(image_module); }, "cannot load the image module " + image_module.string());
+    const auto exr_module = directory / "libisotrace_exr.so";
+    expect_error([&] { load_exr_encoder(exr_module); }, "cannot load the EXR writer module " + exr_module.string());
 }
 
 }  // namespace

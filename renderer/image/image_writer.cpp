@@ -66,7 +66,7 @@ ImageKind image_kind_for(const std::filesystem::path& path) {
 // disk is one checked write() and not an error deep inside libpng/libjpeg (libjpeg calls exit() on a failed
 // write; libpng wrote a truncated file and reported success).
 void write_image_file(const std::filesystem::path& path, const ImageEncoding& image) {
-    const std::vector<unsigned char> encoded = image_codec().encode(path, image);
+    const std::vector<unsigned char> encoded = image_encoder_for(path).encode(path, image);
     write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 

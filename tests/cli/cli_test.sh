@@ -276,6 +276,13 @@ case_image_module_on_demand() {
   LD_DEBUG=files "$cli" render "$cornell" --res 8x8 --spp 1 --quiet -o "$work/a.png" >/dev/null 2>"$work/loader"
   expect_in "$work/loader" "libisotrace_oiio.so" "the loader's log of a render"
   [[ -s "$work/a.png" ]] || fail "render wrote no PNG"
+  # EXR is written by a module of its own that links OpenEXR alone: no OpenImageIO for an EXR render.
+  LD_DEBUG=files "$cli" render "$cornell" --res 8x8 --spp 1 --quiet -o "$work/a.exr" >/dev/null 2>"$work/loader"
+  expect_in "$work/loader" "libisotrace_exr.so" "the loader's log of an EXR render"
+  if grep -Eq 'libisotrace_oiio|libOpenImageIO' "$work/loader"; then
+    fail "a render to EXR loaded the image module or OpenImageIO"
+  fi
+  [[ -s "$work/a.exr" ]] || fail "render wrote no EXR"
 
   # The library alone, without the module beside it (LD_LIBRARY_PATH comes before the binary's RUNPATH).
   mkdir "$work/lib"
@@ -284,6 +291,9 @@ case_image_module_on_demand() {
   LD_LIBRARY_PATH="$work/lib" cli_expect 1 render "$cornell" --res 8x8 --spp 1 --quiet -o "$work/b.png"
   expect_in "$work/stderr" "cannot load the image module $work/lib/libisotrace_oiio.so" stderr
   expect_no_file "$work/b.png"
+  LD_LIBRARY_PATH="$work/lib" cli_expect 1 render "$cornell" --res 8x8 --spp 1 --quiet -o "$work/b.exr"
+  expect_in "$work/stderr" "cannot load the EXR writer module $work/lib/libisotrace_exr.so" stderr
+  expect_no_file "$work/b.exr"
   # A longer render loads the module while it runs: the failed load stops it, and it fails the same way.
   LD_LIBRARY_PATH="$work/lib" cli_expect 1 render "$cornell" --res 96x96 --spp 256 --quiet -o "$work/c.png"
   expect_in "$work/stderr" "cannot load the image module $work/lib/libisotrace_oiio.so" stderr

@@ -83,11 +83,16 @@ run_step("running the installed CLI" "${prefix}/bin/isotrace" --version)
 if(NOT step_output MATCHES "isotrace [0-9]+\\.[0-9]+\\.[0-9]+")
   message(FATAL_ERROR "unexpected output of ${prefix}/bin/isotrace --version: ${step_output}")
 endif()
-# The installed CLI writes images through the image module installed beside the library.
-run_step("rendering a PNG with the installed CLI"
-  "${prefix}/bin/isotrace" render "${SCENE}" --res 8x8 --spp 1 --quiet -o "${WORK_DIR}/installed.png")
-file(GLOB installed_module "${prefix}/*/libisotrace_oiio.so")
-if(NOT installed_module OR NOT EXISTS "${WORK_DIR}/installed.png")
-  message(FATAL_ERROR "the installed image module is missing or the installed CLI wrote no PNG")
-endif()
+# The installed CLI writes images through the modules installed beside the library: PNG through the image
+# module, EXR through the EXR writer module.
+foreach(format_and_module "png;libisotrace_oiio.so" "exr;libisotrace_exr.so")
+  list(GET format_and_module 0 format)
+  list(GET format_and_module 1 module)
+  run_step("rendering a ${format} with the installed CLI"
+    "${prefix}/bin/isotrace" render "${SCENE}" --res 8x8 --spp 1 --quiet -o "${WORK_DIR}/installed.${format}")
+  file(GLOB installed_module "${prefix}/*/${module}")
+  if(NOT installed_module OR NOT EXISTS "${WORK_DIR}/installed.${format}")
+    message(FATAL_ERROR "the installed ${module} is missing or the installed CLI wrote no ${format}")
+  endif()
+endforeach()
 message(STATUS "package test passed")

@@ -64,7 +64,9 @@ int run_depth(const DepthArguments& args) {
     if (!args.exr.empty()) check_output_file(args.exr, ".exr", "--exr");
     if (args.near && args.far && !(*args.near < *args.far))
         throw InputError({}, "--far", "must be greater than --near");
-    image_codec();  // a missing image module fails now, not after the depth map
+    // A missing image module fails now, not after the depth map.
+    image_encoder_for(args.output);
+    if (!args.exr.empty()) image_encoder_for(args.exr);
     SceneOverrides overrides;
     if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
 

@@ -297,7 +297,11 @@ int run_render(const RenderArguments& args) {
     // The image module loads while the render runs (not before: the render's threads would wait for it to start).
     // A module that cannot be loaded stops the render, and writing the images then fails with the loader's reason.
     std::optional<ImageCodecPreload> image_module;
-    if (!args.outputs.empty()) options.on_started = [&] { image_module.emplace([] { g_interrupted = true; }); };
+    if (!args.outputs.empty())
+        options.on_started = [&] {
+            image_module.emplace(std::vector<std::filesystem::path>(args.outputs.begin(), args.outputs.end()),
+                                 [] { g_interrupted = true; });
+        };
     const RenderResult result = ranks.render(*scene, options, std::move(film), work_split(args.distribution));
     bar.finish();
     times.render = result.seconds;

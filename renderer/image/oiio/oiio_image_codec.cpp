@@ -1,5 +1,7 @@
 // The image module (libisotrace_oiio.so): ImageCodec implemented with OpenImageIO, loaded by image_codec() on
-// first use so that processes which read and write no image never load OpenImageIO's ~260 libraries.
+// first use so that processes which read and write no image never load OpenImageIO's ~260 libraries. It reads
+// every image and writes every format but EXR (the EXR writer module's, renderer/image/openexr/), though it can
+// write EXR too: the test of that module compares their bytes.
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
