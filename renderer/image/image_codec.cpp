@@ -2,12 +2,11 @@
 
 #include <dlfcn.h>
 
-#include <algorithm>
-#include <cctype>
 #include <stdexcept>
 #include <type_traits>
 
 #include "renderer/core/library_directory.h"
+#include "renderer/core/lower_extension.h"
 #include "renderer/core/version.h"
 
 #ifndef ISOTRACE_IMAGE_MODULE
@@ -39,13 +38,6 @@ const Interface& load_module(const std::filesystem::path& module_path, const cha
     return *loaded;
 }
 
-bool is_exr(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return extension == ".exr";
-}
-
 const ImageEncoder& exr_encoder() {
     static const ImageEncoder& encoder = load_exr_encoder(library_directory() / ISOTRACE_EXR_MODULE);
     return encoder;
@@ -70,7 +62,7 @@ const ImageCodec& image_codec() {
 }
 
 const ImageEncoder& image_encoder_for(const std::filesystem::path& path) {
-    return is_exr(path) ? exr_encoder() : static_cast<const ImageEncoder&>(image_codec());
+    return lower_extension(path) == ".exr" ? exr_encoder() : static_cast<const ImageEncoder&>(image_codec());
 }
 
 ImageCodecPreload::ImageCodecPreload(std::vector<std::filesystem::path> outputs, std::function<void()> on_failure)

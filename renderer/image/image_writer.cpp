@@ -1,7 +1,6 @@
 #include "renderer/image/image_writer.h"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -9,16 +8,11 @@
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/lower_extension.h"
 #include "renderer/image/image_codec.h"
 
 namespace isotrace {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 // Shortest text that reads back as the same number (of the same type: a float prints as "0.708", not "0.70800000429").
 template <class Real>

@@ -7,6 +7,7 @@
 #include "geometry/mesh/mesh_deformer.h"
 #include "geometry/mesh/mesh_file.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/lower_extension.h"
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/obj_writer.h"
@@ -23,12 +24,6 @@ struct DeformArguments {
     int threads = 0;
     bool quiet = false;
 };
-
-std::string lower_extension(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return extension;
-}
 
 int run_deform(const DeformArguments& args) {
     const std::string extension = lower_extension(args.output);

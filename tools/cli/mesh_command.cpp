@@ -14,6 +14,7 @@
 #include "geometry/polygonize/mesh_error.h"
 #include "geometry/polygonize/polygonize_field.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/lower_extension.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
@@ -93,8 +94,7 @@ void write_mesh(const std::string& path, const std::string& extension, const std
 }
 
 int run_mesh(const MeshArguments& args) {
-    std::string extension = std::filesystem::path(args.output).extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string extension = lower_extension(args.output);
     check_output_file(args.output, extension == ".obj" ? ".obj" : ".ply", "--output");
     const bool traced = args.method == "traced";
     const std::optional<PolygonizeOptions> options = traced ? std::nullopt : std::optional(options_from(args));
