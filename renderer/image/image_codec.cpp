@@ -3,7 +3,6 @@
 #include <dlfcn.h>
 
 #include <stdexcept>
-#include <type_traits>
 
 #include "renderer/core/library_directory.h"
 #include "renderer/core/lower_extension.h"
@@ -19,9 +18,9 @@
 namespace isotrace {
 namespace {
 
-// What module `module_path`'s entry `entry_name` returns for this isotrace version (never unloaded).
-template <class Interface>
-const Interface& load_module(const std::filesystem::path& module_path, const char* entry_name, const char* role,
+// What module `module_path`'s entry `entry_name` (of type Entry) returns for this isotrace version (never unloaded).
+template <class Entry>
+const auto& load_module(const std::filesystem::path& module_path, const char* entry_name, const char* role,
                              const char* purpose) {
     const auto fail = [&](const std::string& reason) {
         return std::runtime_error("cannot load the " + std::string(role) + " " + module_path.string() + ", which " +
@@ -30,10 +29,9 @@ const Interface& load_module(const std::filesystem::path& module_path, const cha
     // RTLD_LOCAL: the image libraries' symbols stay out of the global namespace.
     void* module = dlopen(module_path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module) throw fail(dlerror());
-    using Entry = const Interface* (*)(const char*);
     const auto entry = reinterpret_cast<Entry>(dlsym(module, entry_name));
     if (!entry) throw fail(dlerror());
-    const Interface* loaded = entry(kIsotraceVersion);
+    const auto* loaded = entry(kIsotraceVersion);
     if (!loaded) throw fail(std::string("it was built for another isotrace version than ") + kIsotraceVersion);
     return *loaded;
 }
@@ -46,14 +44,12 @@ const ImageEncoder& exr_encoder() {
 }  // namespace
 
 const ImageCodec& load_image_codec(const std::filesystem::path& module_path) {
-    static_assert(std::is_same_v<ImageCodecEntry, const ImageCodec* (*)(const char*)>);
-    return load_module<ImageCodec>(module_path, kImageCodecEntry, "image module",
+    return load_module<ImageCodecEntry>(module_path, kImageCodecEntry, "image module",
                                    "reads every image file and writes all but EXR");
 }
 
 const ImageEncoder& load_exr_encoder(const std::filesystem::path& module_path) {
-    static_assert(std::is_same_v<ImageEncoderEntry, const ImageEncoder* (*)(const char*)>);
-    return load_module<ImageEncoder>(module_path, kImageEncoderEntry, "EXR writer module", "writes every EXR file");
+    return load_module<ImageEncoderEntry>(module_path, kImageEncoderEntry, "EXR writer module", "writes every EXR file");
 }
 
 const ImageCodec& image_codec() {

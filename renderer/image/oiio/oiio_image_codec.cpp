@@ -61,11 +61,9 @@ void apply_metadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
         if (const auto* text = std::get_if<std::string>(&value)) spec.attribute(name, *text);
         else if (const auto* real = std::get_if<double>(&value)) spec.attribute(name, float(*real));
         else if (const auto* integer = std::get_if<std::int64_t>(&value)) {
-            // EXR integer attributes are 32-bit: write larger values as text rather than wrapping them.
-            if (*integer >= std::numeric_limits<int>::min() && *integer <= std::numeric_limits<int>::max())
-                spec.attribute(name, int(*integer));
-            else
-                spec.attribute(name, std::to_string(*integer));
+            const std::variant<int, std::string> stored = integer_attribute(*integer);
+            if (const int* small = std::get_if<int>(&stored)) spec.attribute(name, *small);
+            else spec.attribute(name, std::get<std::string>(stored));
         }
         else {
             const auto& floats = std::get<std::vector<float>>(value);

@@ -21,9 +21,9 @@
 #include <cstdint>
 #include <cstring>
 #include <ctime>
-#include <limits>
 #include <stdexcept>
 #include <thread>
+#include <variant>
 
 #include "renderer/core/version.h"
 #include "renderer/image/image_codec.h"
@@ -87,11 +87,9 @@ void add_metadata(Imf::Header& header, const ImageMetadata& metadata) {
         } else if (const auto* real = std::get_if<double>(&value)) {
             header.insert(name, Imf::FloatAttribute(float(*real)));
         } else if (const auto* integer = std::get_if<std::int64_t>(&value)) {
-            // EXR integer attributes are 32-bit: larger values go as text rather than wrapping.
-            if (*integer >= std::numeric_limits<int>::min() && *integer <= std::numeric_limits<int>::max())
-                header.insert(name, Imf::IntAttribute(int(*integer)));
-            else
-                header.insert(name, Imf::StringAttribute(std::to_string(*integer)));
+            const std::variant<int, std::string> stored = integer_attribute(*integer);
+            if (const int* small = std::get_if<int>(&stored)) header.insert(name, Imf::IntAttribute(*small));
+            else header.insert(name, Imf::StringAttribute(std::get<std::string>(stored)));
         } else {
             // Float lists as OpenImageIO stores them: 2 and 3 floats as vectors, 9 and 16 as matrices, the
             // working space's primaries as chromaticities, any other length as a float vector.
@@ -128,11 +126,14 @@ public:
             header.compression() = exr_compression(image.compression);
             add_metadata(header, image.metadata);
             const std::size_t channels = image.channel_names.size();
-            const std::size_t x_stride = channels * sizeof(float);
-            const std::size_t y_stride = x_stride * std::size_t(image.width);
-            // The frame buffer addresses pixel (x, y) of the data window: its base is offset by the window's origin.
-            const char* base = static_cast<const char*>(image.pixels) - std::ptrdiff_t(image.x) * std::ptrdiff_t(x_stride) -
-                               std::ptrdiff_t(image.y) * std::ptrdiff_t(y_stride);
+            // A slice addresses pixel (x, y) of the data window: its base is the first pixel less the window's origin.
+            const auto slice = [&](Imf::PixelType type, const void* first, std::size_t x_stride) {
+                const std::size_t y_stride = x_stride * std::size_t(image.width);
+                char* base = static_cast<char*>(const_cast<void*>(first)) -
+                             std::ptrdiff_t(image.x) * std::ptrdiff_t(x_stride) -
+                             std::ptrdiff_t(image.y) * std::ptrdiff_t(y_stride);
+                return Imf::Slice(type, base, x_stride, y_stride);
+            };
             Imf::FrameBuffer frame;
             // OpenEXR writes a channel from memory of its own type: half channels are converted here, each to a
             // plane of its own (Imath's rounding, as OpenImageIO converts).
@@ -143,19 +144,14 @@ public:
                 const PixelType file = image.channel_file_types.empty() ? image.file_type : image.channel_file_types[c];
                 const Imf::PixelType type = exr_type(file);
                 header.channels().insert(image.channel_names[c], Imf::Channel(type));
+                const float* source = static_cast<const float*>(image.pixels) + c;
                 if (type == Imf::FLOAT) {
-                    frame.insert(image.channel_names[c],
-                                 Imf::Slice(Imf::FLOAT, const_cast<char*>(base) + c * sizeof(float), x_stride, y_stride));
+                    frame.insert(image.channel_names[c], slice(Imf::FLOAT, source, channels * sizeof(float)));
                     continue;
                 }
                 std::vector<Imath::half>& plane = half_planes.emplace_back(pixel_count);
-                const float* source = static_cast<const float*>(image.pixels) + c;
                 for (std::size_t i = 0; i < pixel_count; ++i) plane[i] = Imath::half(source[i * channels]);
-                const std::size_t half_y_stride = sizeof(Imath::half) * std::size_t(image.width);
-                char* plane_base = reinterpret_cast<char*>(plane.data()) -
-                                   std::ptrdiff_t(image.x) * std::ptrdiff_t(sizeof(Imath::half)) -
-                                   std::ptrdiff_t(image.y) * std::ptrdiff_t(half_y_stride);
-                frame.insert(image.channel_names[c], Imf::Slice(Imf::HALF, plane_base, sizeof(Imath::half), half_y_stride));
+                frame.insert(image.channel_names[c], slice(Imf::HALF, plane.data(), sizeof(Imath::half)));
             }
             std::vector<unsigned char> bytes;
             MemoryStream stream(bytes);
