@@ -307,6 +307,7 @@ private:
     double t_ref_ = 0;  // the sum is a polynomial in s = t − t_ref_
 
     InlineVector<std::uint32_t, 64> near_;    // the elements gather kept
+    InlineVector<double, 64> near_middle_;    // per kept element: its centre's projection on the line (t)
     InlineVector<Candidate, 64> candidates_;  // by entry
     std::size_t next_candidate_ = 0;
     InlineVector<Active, 24> joined_;
@@ -331,12 +332,14 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
     // The survivors' elements are fetched as they are found and examined only after the whole list: their loads
     // (a cache miss each, most often) then overlap instead of each waiting behind the tests of the one before.
     near_.clear();
+    near_middle_.clear();
     const double length_d = length(d);
     const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
                                      0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
     for_each_near(listed, spheres_, segment, [&](std::uint32_t index) {
         __builtin_prefetch(&elements_[index]);
         near_.push_back(index);
+        near_middle_.push_back(0);  // written for the elements kept below
     });
     inverse_length2_ = 1 / dot(d, d);
     // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept
@@ -353,12 +356,12 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
         const Metacube& element = elements_[index];
         const double half_diagonal = FieldSweep::half_diagonal(element);
         const double reach = element.radius() + half_diagonal;
-        const double t_near =
-            std::clamp(dot(element.centre() - o, d) * inverse_length2_, stretch.t_begin, stretch.t_end);
-        const Vec3d to_centre = o + d * t_near - element.centre();
+        const double t_middle = dot(element.centre() - o, d) * inverse_length2_;
+        const Vec3d to_centre = o + d * std::clamp(t_middle, stretch.t_begin, stretch.t_end) - element.centre();
         double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
         const double keep = reach * (1 + 1e-9) + rounding;
         if (gap2 > keep * keep) continue;
+        near_middle_[kept] = t_middle;
         near_[kept++] = index;
         if (element.weight() <= 0) continue;
         double f_max = 1;  // a hard cube's step
@@ -372,6 +375,7 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
         upper += element.weight() * f_max;
     }
     near_.truncate(kept);
+    near_middle_.truncate(kept);
     return upper;
 }
 
@@ -381,12 +385,13 @@ void FieldSweep<Kernel, kMetaballsOnly>::order_candidates(const SweepStretch& st
     next_candidate_ = 0;
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
-    for (const std::uint32_t index : near_) {
+    for (std::size_t i = 0; i < near_.size(); ++i) {
         // Entry and exit of the line through the support's bounding sphere (exact for metaballs, whose support is
         // the sphere).
+        const std::uint32_t index = near_[i];
         const Metacube& element = elements_[index];
         const double reach = element.radius() + half_diagonal(element);
-        const double t_middle = dot(element.centre() - o, d) * inverse_length2_;
+        const double t_middle = near_middle_[i];
         const Vec3d to_line = o + d * t_middle - element.centre();
         const double half_chord2 = (reach * reach - dot(to_line, to_line)) * inverse_length2_;
         if (!(half_chord2 >= 0)) continue;
