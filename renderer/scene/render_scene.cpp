@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "renderer/embree/embree_device.h"
+#include "renderer/embree/embree_ray.h"
 #include "renderer/lights/area_light.h"
 #include "renderer/math/lanes4.h"
 
@@ -26,20 +27,6 @@ void set_instance_transform(RTCGeometry instance, const Transform& to_world) {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 4; ++j) row_major[i * 4 + j] = float(m[i][j]);
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, row_major);
-}
-
-// Writes `ray` into Embree's layout in three 16-byte stores, the way Embree loads it: built field by field, the
-// ray was stored as scalars and reloaded as vectors, and a load wider than the stores before it waits for them
-// (a failed store forwarding; perf put a tenth of the path tracer's time in RenderScene::intersect on such loads).
-void set_embree_ray(RTCRay& r, const Ray& ray) {
-    static_assert(offsetof(RTCRay, tnear) == 12 && offsetof(RTCRay, time) == 28 && offsetof(RTCRay, flags) == 44);
-    const Float4 origin_and_near{ray.origin.x, ray.origin.y, ray.origin.z, ray.t_near};
-    const Float4 direction_and_time{ray.direction.x, ray.direction.y, ray.direction.z, 0.0f};
-    // Debian's Embree is built with ray masks on: every geometry is seen (mask all ones); id and flags 0.
-    const Uint4 far_mask_id_flags{std::bit_cast<std::uint32_t>(ray.t_far), 0xFFFFFFFFu, 0, 0};
-    std::memcpy(&r.org_x, &origin_and_near, sizeof origin_and_near);
-    std::memcpy(&r.dir_x, &direction_and_time, sizeof direction_and_time);
-    std::memcpy(&r.tfar, &far_mask_id_flags, sizeof far_mask_id_flags);
 }
 
 Vec3f safe_normalize(const Vec3f& v, const Vec3f& fallback) {
@@ -122,12 +109,21 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit query{};
-    set_embree_ray(query.ray, ray);
+    // The path tracer stores a ray's fields one or two at a time just before asking: each is read alone, since a
+    // wider load would span several of those stores and wait until they are written (a failed store forwarding).
+    const auto alone = [](const float& field) { return *static_cast<const volatile float*>(&field); };
+    const Ray fields{{alone(ray.origin.x), alone(ray.origin.y), alone(ray.origin.z)},
+                     {alone(ray.direction.x), alone(ray.direction.y), alone(ray.direction.z)},
+                     alone(ray.t_near), alone(ray.t_far)};
+    set_embree_ray(query.ray, fields);
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &query);
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return complete_hit(ray, query);
+}
 
+std::optional<SurfaceHit> RenderScene::complete_hit(const Ray& ray, RTCRayHit& query) const {
     const bool via_instance = query.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
     const std::uint32_t object_index = object_of_geometry_[via_instance ? query.hit.instID[0] : query.hit.geomID];
     const SceneObject& object = objects_[object_index];
@@ -154,16 +150,6 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const float position_error = kPositionErrorScale * (max_component(abs(position)) + t * length(ray.direction));
     return SurfaceHit{t,        position,         geometric_normal, shading_normal, local.uv, object_index,
                       query.hit.primID, object.material_of_part(local.part), position_error};
-}
-
-bool RenderScene::occluded(const Ray& ray) const {
-    counters::count_ray(RayKind::Shadow);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRay query;
-    set_embree_ray(query, ray);
-    rtcOccluded1(scene_, &context, &query);
-    return query.tfar == -std::numeric_limits<float>::infinity();
 }
 
 void RenderScene::build_lights() {

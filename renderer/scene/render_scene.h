@@ -3,6 +3,7 @@
 // Embree scene that holds their geometry; answers nearest-hit and occlusion queries.
 #include <embree3/rtcore.h>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 
 #include "renderer/core/ray.h"
 #include "renderer/core/render_counters.h"
+#include "renderer/embree/embree_ray.h"
 #include "renderer/math/transform.h"
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
@@ -73,7 +75,17 @@ public:
     void commit();
 
     std::optional<SurfaceHit> intersect(const Ray& ray, RayKind kind) const;
-    bool occluded(const Ray& ray) const;
+    // Inline: the path tracer builds a shadow ray just before asking, and through a call the ray went to memory
+    // field by field and came back in the 16-byte loads that build Embree's ray, each waiting for those stores.
+    bool occluded(const Ray& ray) const {
+        counters::count_ray(RayKind::Shadow);
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRay query;
+        set_embree_ray(query, ray);
+        rtcOccluded1(scene_, &context, &query);
+        return query.tfar == -std::numeric_limits<float>::infinity();
+    }
 
     // Lights in proportion to their power (all lights: scene-file lights and area lights).
     LightChoice choose_light(float u) const;
@@ -107,6 +119,8 @@ private:
     BuildStatistics build_statistics_;
 
     void build_lights();
+    // The surface hit Embree found for `ray` (query.hit valid).
+    std::optional<SurfaceHit> complete_hit(const Ray& ray, RTCRayHit& query) const;
 };
 
 }  // namespace isotrace
