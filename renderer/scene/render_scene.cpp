@@ -120,10 +120,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &query);
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return complete_hit(ray, query);
-}
 
-std::optional<SurfaceHit> RenderScene::complete_hit(const Ray& ray, RTCRayHit& query) const {
     const bool via_instance = query.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
     const std::uint32_t object_index = object_of_geometry_[via_instance ? query.hit.instID[0] : query.hit.geomID];
     const SceneObject& object = objects_[object_index];

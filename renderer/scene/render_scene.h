@@ -119,8 +119,6 @@ private:
     BuildStatistics build_statistics_;
 
     void build_lights();
-    // The surface hit Embree found for `ray` (query.hit valid).
-    std::optional<SurfaceHit> complete_hit(const Ray& ray, RTCRayHit& query) const;
 };
 
 }  // namespace isotrace
