@@ -56,6 +56,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
     bool previous_was_delta = true;             // camera rays and delta bounces: no MIS on emitter hits
     float previous_pdf = 0;
     Vec3f previous_point = ray.origin;
+    Sampler::Block pair_directions{}, pair_roulette{};  // of the current pair of bounces (below)
 
     for (int depth = 0;; ++depth) {
         const std::optional<SurfaceHit> found = scene.intersect(ray, depth == 0 ? RayKind::Camera : RayKind::Secondary);
@@ -95,21 +96,33 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         const ShadingFrame frame(hit.shading_normal);
         const Vec3f wo = frame.to_local(towards_viewer);
 
-        // Every bounce owns the same eight dimensions (two Sobol' blocks), used or not: the light point and
-        // the BSDF direction each get a stratified pair, the three choices share the rest. The first block is
-        // computed only when something reads it (with one delta light and a single-lobe BSDF nothing does); its
+        // Two bounces own four Sobol' blocks, in this order, used or not: the first bounce's light block (a point
+        // on the light, the choice among lights, the BSDF's lobe choice), both bounces' directions as one 4-D
+        // point, both bounces' Russian roulette, the second bounce's light block. Consecutive directions are so
+        // stratified jointly, not only each on its own (docs/decisions.md). A block is computed only when
+        // something reads it (a delta light and a single-lobe BSDF read no light block; roulette may be off); its
         // dimensions are skipped either way, so every value keeps its dimension.
-        Sampler::Block light_block{};
+        const bool first_of_pair = depth % 2 == 0;
+        Sampler::Block light{};
         if (!scene.light_sampling_is_deterministic() || bsdf.chooses_lobe())
-            light_block = samples.next_block();
+            light = samples.next_block();
         else
             samples.skip_block();
-        const Sampler::Block scatter_block = samples.next_block();
-        const std::array<float, 2> u_light_point = {light_block[0], light_block[1]};
-        const float u_light = light_block[2];
-        const float u_lobe = light_block[3];
-        const std::array<float, 2> u_direction = {scatter_block[0], scatter_block[1]};
-        const float u_roulette = scatter_block[2];
+        if (first_of_pair) {
+            pair_directions = samples.next_block();
+            pair_roulette = {};
+            if (depth + 2 >= settings_.russian_roulette_depth)
+                pair_roulette = samples.next_block();
+            else
+                samples.skip_block();
+        }
+        const std::array<float, 2> u_light_point = {light[0], light[1]};
+        const float u_light = light[2];
+        const float u_lobe = light[3];
+        const std::array<float, 2> u_direction =
+            first_of_pair ? std::array<float, 2>{pair_directions[0], pair_directions[1]}
+                          : std::array<float, 2>{pair_directions[2], pair_directions[3]};
+        const float u_roulette = pair_roulette[std::size_t(depth % 2)];
 
         // Next-event estimation: one light, chosen in proportion to power.
         if (!bsdf.is_fully_delta()) {

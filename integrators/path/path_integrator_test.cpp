@@ -6,11 +6,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "renderer/core/render_counters.h"
 #include "renderer/render/tile_renderer.h"
+#include "renderer/sampling/sampler.h"
 #include "renderer/scene/loaded_scene.h"
 #include "tests/support/scene_files.h"
 
@@ -96,6 +98,41 @@ TEST(PathIntegrator, ViewerInsideAGlowingDiffuseSphereSeesOne) {
     double sum = 0;
     for (float v : image.rgb) sum += v;
     EXPECT_NEAR(sum / double(image.rgb.size()), 1.0, 0.01);
+}
+
+// Records every dimension asked for; the values walk [0, 1) so that the paths go on.
+class RecordingSampler final : public Sampler {
+public:
+    RecordingSampler() : Sampler(0) {}
+    float sample(const PixelSampleKey&, uint32_t dimension) const override {
+        asked.insert(dimension);
+        return std::fmod(0.618034f * float(dimension + 1), 1.0f);
+    }
+    mutable std::set<uint32_t> asked;
+};
+
+// Inside a closed diffuse sphere lit by one point light, every path makes max_depth bounces. Two bounces own
+// four blocks (light, the pair's directions, the pair's roulette, the second bounce's light): the light blocks
+// are skipped (a delta light and Lambert read nothing from them), so is the roulette (off), and the directions of
+// bounces 0-1 and 2-3 are the blocks 2 and 6, one 4-D point each.
+TEST(PathIntegrator, TwoBouncesTakeTheirDirectionsFromOneBlockAndNothingUnread) {
+    TemporaryDirectory directory("path_integrator");
+    const auto path = directory.write("scene.json", R"({"isotrace": 1, "colour": {"working_space": "lin_rec709"},
+      "film": {"resolution": [4, 4]},
+      "camera": {"type": "perspective", "fov": 60, "look_at": {"eye": [0, 0, 0], "target": [0, 0, 1]}},
+      "integrator": {"type": "path", "max_depth": 4, "russian_roulette_depth": 1024},
+      "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+      "lights": [{"type": "point", "position": [0, 0.5, 0], "intensity": 1}],
+      "objects": [{"material": "m", "shape": {"type": "sphere", "radius": 2}}]})");
+    const auto scene = load_scene(path.string(), {});
+    RecordingSampler sampler;
+    SampleStream samples(sampler, {0, 0, 0});
+    samples.next_2d();  // the camera's block: dimensions 0-3
+    samples.next_2d();
+    PrimaryHitRecord primary;
+    scene->integrator->radiance(Ray{{0, 0, 0}, {0, 0, 1}}, *scene->scene, samples, primary);
+    EXPECT_TRUE(primary.hit);
+    EXPECT_EQ(sampler.asked, (std::set<uint32_t>{0, 1, 2, 3, 8, 9, 10, 11, 24, 25, 26, 27}));
 }
 
 // Irradiance at a point under the centre of a parallel square light (half side c, height h, radiance L), from the
