@@ -332,14 +332,12 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
     // The survivors' elements are fetched as they are found and examined only after the whole list: their loads
     // (a cache miss each, most often) then overlap instead of each waiting behind the tests of the one before.
     near_.clear();
-    near_middle_.clear();
     const double length_d = length(d);
     const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
                                      0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
     for_each_near(listed, spheres_, segment, [&](std::uint32_t index) {
         __builtin_prefetch(&elements_[index]);
         near_.push_back(index);
-        near_middle_.push_back(0);  // written for the elements kept below
     });
     inverse_length2_ = 1 / dot(d, d);
     // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept
@@ -349,6 +347,7 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
                                      centre_bound_);
     double upper = 0;  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     std::size_t kept = 0;
+    near_middle_.clear();
     for (const std::uint32_t index : near_) {
         // The element's support lies in the sphere of radius R + |half-size| about its centre. The stretch's point
         // nearest the centre (its projection on the line, clamped) decides whether the stretch may meet that
@@ -361,8 +360,8 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
         double gap2 = dot(to_centre, to_centre);  // a metaball's own distance: no square root
         const double keep = reach * (1 + 1e-9) + rounding;
         if (gap2 > keep * keep) continue;
-        near_middle_[kept] = t_middle;
         near_[kept++] = index;
+        near_middle_.push_back(t_middle);
         if (element.weight() <= 0) continue;
         double f_max = 1;  // a hard cube's step
         if (!is_hard_cube(element)) {
@@ -375,7 +374,6 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
         upper += element.weight() * f_max;
     }
     near_.truncate(kept);
-    near_middle_.truncate(kept);
     return upper;
 }
 

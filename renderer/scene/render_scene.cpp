@@ -1,6 +1,5 @@
 #include "renderer/scene/render_scene.h"
 
-#include <atomic>
 #include <bit>
 #include <cfloat>
 #include <chrono>
@@ -109,8 +108,9 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit query{};
-    // The path tracer stores a ray's fields one or two at a time just before asking: each is read alone, since a
-    // wider load would span several of those stores and wait until they are written (a failed store forwarding).
+    // The path tracer stores a ray's fields one or two at a time just before asking, and Embree stores the hit's
+    // one by one: each is read alone (a volatile load is never merged with its neighbours), since a wider load would
+    // span several of those stores and wait until they are written (a failed store forwarding).
     const auto alone = [](const float& field) { return *static_cast<const volatile float*>(&field); };
     const Ray fields{{alone(ray.origin.x), alone(ray.origin.y), alone(ray.origin.z)},
                      {alone(ray.direction.x), alone(ray.direction.y), alone(ray.direction.z)},
@@ -126,13 +126,11 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const SceneObject& object = objects_[object_index];
     counters::count_closest_hit(object.counter_slot);
 
-    // Embree stored the hit's fields one by one, and a load wider than one of those stores waits until they are
-    // written (a failed store forwarding): the normal is read a float at a time (relaxed atomic loads are never
-    // merged), and the result is built once from registers rather than in pieces on the stack.
-    const auto scalar = [](float& field) { return std::atomic_ref<float>(field).load(std::memory_order_relaxed); };
+    // The normal is read a float at a time, and the result is built once from registers rather than in pieces on
+    // the stack.
     const float t = query.ray.tfar;
     const Vec3f embree_ng =
-        safe_normalize(Vec3f(scalar(query.hit.Ng_x), scalar(query.hit.Ng_y), scalar(query.hit.Ng_z)), {0, 0, 1});
+        safe_normalize(Vec3f(alone(query.hit.Ng_x), alone(query.hit.Ng_y), alone(query.hit.Ng_z)), {0, 0, 1});
     // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
     const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
     const Vec3d local_point = object.instanced ? object.to_world.inverse().point(world_point) : world_point;
