@@ -1,18 +1,14 @@
 #include "renderer/scene/render_scene.h"
 
-#include <bit>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
-#include <limits>
 #include <stdexcept>
 
 #include "renderer/embree/embree_device.h"
 #include "renderer/embree/embree_ray.h"
 #include "renderer/lights/area_light.h"
-#include "renderer/math/lanes4.h"
 
 namespace isotrace {
 namespace {
