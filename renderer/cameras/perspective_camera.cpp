@@ -15,7 +15,8 @@ public:
         : Camera(to_world),
           raster_(raster),
           aperture_radius_(float(aperture_radius)),
-          focus_distance_(float(focus_distance)) {
+          focus_distance_(float(focus_distance)),
+          pinhole_origin_(Vec3f(to_world.point(Vec3d(0, 0, 0)))) {
         const double tan_half = std::tan(fov_degrees * std::numbers::pi / 360.0);
         const double w = raster.width, h = raster.height;
         std::string axis = fov_axis;
@@ -37,17 +38,17 @@ public:
     Ray generate_ray(float raster_x, float raster_y, std::array<float, 2> lens_u) const override {
         const double x = (2.0 * raster_x / raster_.width - 1.0) * half_width_;
         const double y = (1.0 - 2.0 * raster_y / raster_.height) * half_height_;
-        Vec3d origin(0, 0, 0);
         Vec3d direction(x, y, -1);
+        const Transform& to_world = camera_to_world();
+        Ray ray;
+        ray.origin = pinhole_origin_;
         if (aperture_radius_ > 0) {
             // Thin lens: rays through every lens point meet again on the plane of focus.
             const auto disk = square_to_uniform_disk_concentric(lens_u);
-            origin = Vec3d(disk[0] * aperture_radius_, disk[1] * aperture_radius_, 0);
+            const Vec3d origin(disk[0] * aperture_radius_, disk[1] * aperture_radius_, 0);
             direction = direction * double(focus_distance_) - origin;
+            ray.origin = Vec3f(to_world.point(origin));
         }
-        const Transform& to_world = camera_to_world();
-        Ray ray;
-        ray.origin = Vec3f(to_world.point(origin));
         ray.direction = Vec3f(normalize(to_world.vector(direction)));
         return ray;
     }
@@ -57,6 +58,7 @@ private:
     double half_width_ = 1, half_height_ = 1;  // image-plane extent at distance 1
     float aperture_radius_;
     float focus_distance_;
+    Vec3f pinhole_origin_;  // the camera's position in the world: every pinhole ray's origin
 };
 
 std::unique_ptr<Camera> create(const SceneNode& node, const RasterSize& raster) {

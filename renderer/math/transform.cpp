@@ -145,23 +145,6 @@ Transform Transform::operator*(const Transform& rhs) const {
     return {multiply(m_, rhs.m_), multiply(rhs.inv_, inv_)};
 }
 
-Vec3d Transform::point(const Vec3d& p) const {
-    return {m_[0][0] * p.x + m_[0][1] * p.y + m_[0][2] * p.z + m_[0][3],
-            m_[1][0] * p.x + m_[1][1] * p.y + m_[1][2] * p.z + m_[1][3],
-            m_[2][0] * p.x + m_[2][1] * p.y + m_[2][2] * p.z + m_[2][3]};
-}
-
-Vec3d Transform::vector(const Vec3d& v) const {
-    return {m_[0][0] * v.x + m_[0][1] * v.y + m_[0][2] * v.z, m_[1][0] * v.x + m_[1][1] * v.y + m_[1][2] * v.z,
-            m_[2][0] * v.x + m_[2][1] * v.y + m_[2][2] * v.z};
-}
-
-Vec3d Transform::normal(const Vec3d& n) const {
-    return {inv_[0][0] * n.x + inv_[1][0] * n.y + inv_[2][0] * n.z,
-            inv_[0][1] * n.x + inv_[1][1] * n.y + inv_[2][1] * n.z,
-            inv_[0][2] * n.x + inv_[1][2] * n.y + inv_[2][2] * n.z};
-}
-
 bool Transform::is_identity() const { return m_ == identity_matrix(); }
 
 double Transform::determinant() const {

@@ -25,9 +25,21 @@ public:
     Transform inverse() const;
     Transform operator*(const Transform& rhs) const;  // (A * B)(p) = A(B(p))
 
-    Vec3d point(const Vec3d& p) const;
-    Vec3d vector(const Vec3d& v) const;
-    Vec3d normal(const Vec3d& n) const;  // inverse transpose; not normalised
+    // Inline: cameras transform every camera ray, and hit completion every hit on an instance.
+    Vec3d point(const Vec3d& p) const {
+        return {m_[0][0] * p.x + m_[0][1] * p.y + m_[0][2] * p.z + m_[0][3],
+                m_[1][0] * p.x + m_[1][1] * p.y + m_[1][2] * p.z + m_[1][3],
+                m_[2][0] * p.x + m_[2][1] * p.y + m_[2][2] * p.z + m_[2][3]};
+    }
+    Vec3d vector(const Vec3d& v) const {
+        return {m_[0][0] * v.x + m_[0][1] * v.y + m_[0][2] * v.z, m_[1][0] * v.x + m_[1][1] * v.y + m_[1][2] * v.z,
+                m_[2][0] * v.x + m_[2][1] * v.y + m_[2][2] * v.z};
+    }
+    Vec3d normal(const Vec3d& n) const {  // inverse transpose; not normalised
+        return {inv_[0][0] * n.x + inv_[1][0] * n.y + inv_[2][0] * n.z,
+                inv_[0][1] * n.x + inv_[1][1] * n.y + inv_[2][1] * n.z,
+                inv_[0][2] * n.x + inv_[1][2] * n.y + inv_[2][2] * n.z};
+    }
     Vec3f point(const Vec3f& p) const { return Vec3f(point(Vec3d(p))); }
     Vec3f vector(const Vec3f& v) const { return Vec3f(vector(Vec3d(v))); }
     Vec3f normal(const Vec3f& n) const { return Vec3f(normal(Vec3d(n))); }

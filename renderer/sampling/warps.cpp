@@ -17,30 +17,6 @@ Vec3f direction_from_cos_theta(float z, float phi) {
 
 }  // namespace
 
-std::array<float, 2> square_to_uniform_disk_concentric(std::array<float, 2> u) {
-    const float a = 2.0f * u[0] - 1.0f;
-    const float b = 2.0f * u[1] - 1.0f;
-    if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
-    float r, phi;
-    if (std::abs(a) > std::abs(b)) {
-        r = a;
-        phi = (kPi / 4.0f) * (b / a);
-    } else {
-        r = b;
-        phi = (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
-    }
-    return {r * std::cos(phi), r * std::sin(phi)};
-}
-
-Vec3f square_to_cosine_hemisphere(std::array<float, 2> u) {
-    const auto [x, y] = square_to_uniform_disk_concentric(u);
-    return {x, y, std::sqrt(std::max(0.0f, 1.0f - x * x - y * y))};
-}
-
-float square_to_cosine_hemisphere_pdf(const Vec3f& direction) {
-    return direction.z > 0.0f ? direction.z / kPi : 0.0f;
-}
-
 Vec3f square_to_uniform_sphere(std::array<float, 2> u) {
     return direction_from_cos_theta(1.0f - 2.0f * u[0], 2.0f * kPi * u[1]);
 }

@@ -103,7 +103,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     counters::count_ray(kind);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit query{};
+    RTCRayHit query;  // set_embree_ray writes the whole ray; Embree reads only geomID and instID of the hit
     // The path tracer stores a ray's fields one or two at a time just before asking, and Embree stores the hit's
     // one by one: each is read alone (a volatile load is never merged with its neighbours), since a wider load would
     // span several of those stores and wait until they are written (a failed store forwarding).
