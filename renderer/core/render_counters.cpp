@@ -8,33 +8,31 @@
 #include <vector>
 
 namespace isotrace::counters {
+namespace detail {
+
+__thread ThreadBlock* thread_block __attribute__((tls_model("initial-exec"))) = nullptr;
+
+void ThreadBlock::clear() {
+    for (auto& c : rays) c.store(0, std::memory_order_relaxed);
+    nan_samples.store(0, std::memory_order_relaxed);
+    for (auto& type : geometry)
+        for (auto& c : type) c.store(0, std::memory_order_relaxed);
+    for (auto& c : named) c.store(0, std::memory_order_relaxed);
+}
+
+}  // namespace detail
+
 namespace {
 
-constexpr int kMaxGeometryTypes = 64;
-constexpr int kMaxNamedCounters = 1024;  // per-object counters of large scenes share the last slot
+using detail::Counter;
+using detail::kMaxGeometryTypes;
+using detail::kMaxNamedCounters;
+using detail::local_block;
+using detail::ThreadBlock;
+
 constexpr const char* kOverflowCounter = "counters.overflow";
 
-// Relaxed atomics written only by the owning thread: plain loads/stores in machine code, yet the progress
-// display may read them mid-render without a data race.
-using Counter = std::atomic<std::uint64_t>;
-
-void bump(Counter& counter) { counter.store(counter.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed); }
 std::uint64_t read(const Counter& counter) { return counter.load(std::memory_order_relaxed); }
-
-struct ThreadBlock {
-    Counter rays[3] = {0, 0, 0};
-    Counter nan_samples{0};
-    std::array<std::array<Counter, 3>, kMaxGeometryTypes> geometry{};  // tests, candidates, closest
-    std::array<Counter, kMaxNamedCounters> named{};
-
-    void clear() {
-        for (auto& c : rays) c.store(0, std::memory_order_relaxed);
-        nan_samples.store(0, std::memory_order_relaxed);
-        for (auto& type : geometry)
-            for (auto& c : type) c.store(0, std::memory_order_relaxed);
-        for (auto& c : named) c.store(0, std::memory_order_relaxed);
-    }
-};
 
 struct Registry {
     std::mutex mutex;
@@ -50,22 +48,14 @@ Registry& registry() {
     return instance;
 }
 
-ThreadBlock* new_block() {
+}  // namespace
+
+detail::ThreadBlock* detail::new_block() {
     Registry& r = registry();
     std::lock_guard lock(r.mutex);
     r.blocks.push_back(std::make_unique<ThreadBlock>());
     return r.blocks.back().get();
 }
-
-// Initial-exec TLS and a plain null test: the default model of a shared library calls __tls_get_addr and a
-// guarded initialiser on every count (measured: ~40 instructions per call on the blob hot path).
-ThreadBlock& local_block() {
-    static thread_local ThreadBlock* block __attribute__((tls_model("initial-exec"))) = nullptr;
-    if (!block) [[unlikely]] block = new_block();
-    return *block;
-}
-
-}  // namespace
 
 int geometry_type_slot(const std::string& type_name, bool counts_tests) {
     Registry& r = registry();
@@ -102,12 +92,6 @@ void add_to_named(std::span<const int> slots, std::span<const std::uint64_t> amo
         counter.store(counter.load(std::memory_order_relaxed) + amounts[i], std::memory_order_relaxed);
     }
 }
-
-void count_ray(RayKind kind) { bump(local_block().rays[int(kind)]); }
-void count_test(int slot) { bump(local_block().geometry[std::size_t(slot)][0]); }
-void count_candidate_hit(int slot) { bump(local_block().geometry[std::size_t(slot)][1]); }
-void count_closest_hit(int slot) { bump(local_block().geometry[std::size_t(slot)][2]); }
-void count_nan_sample() { bump(local_block().nan_samples); }
 
 CounterTotals totals() {
     Registry& r = registry();
