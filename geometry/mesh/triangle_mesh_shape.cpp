@@ -118,9 +118,9 @@ void TriangleMeshShape::inside_spans(const Vec3d& origin, const Vec3d& direction
 }
 
 LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_normal, const Vec3d&) const {
-    LocalShading result;
-    result.geometric_normal = embree_normal;  // Embree's Ng = (v1-v0)x(v2-v0): the counter-clockwise front
-    result.normal = result.geometric_normal;
+    // Embree's Ng = (v1-v0)x(v2-v0): the counter-clockwise front. Its (u, v) are the barycentrics of the second and
+    // third corners, of the original triangle's third and second after a mirroring bake reversed it.
+    LocalShading result = shading_of_embree_hit(hit, embree_normal, winding_swapped_);
     const auto& triangle = mesh_.triangles[hit.primID];
     const float w = 1 - hit.u - hit.v;
     if (!mesh_.normals.empty()) {
@@ -134,12 +134,13 @@ LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_n
             result.uv[std::size_t(k)] = mesh_.uvs[triangle[0]][std::size_t(k)] * w +
                                         mesh_.uvs[triangle[1]][std::size_t(k)] * hit.u +
                                         mesh_.uvs[triangle[2]][std::size_t(k)] * hit.v;
-    } else if (winding_swapped_) {
-        result.uv = {hit.v, hit.u};  // barycentrics of the original second and third corners
-    } else {
-        result.uv = {hit.u, hit.v};
     }
     return result;
+}
+
+HitShading TriangleMeshShape::hit_shading() const {
+    if (!mesh_.normals.empty() || !mesh_.uvs.empty()) return HitShading::Computed;
+    return winding_swapped_ ? HitShading::EmbreeHitSwappedUv : HitShading::EmbreeHit;
 }
 
 namespace {

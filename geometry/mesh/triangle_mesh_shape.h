@@ -25,6 +25,8 @@ public:
     RTCGeometry create_geometry(RTCDevice device) override;
     // Embree's Ng is (v1-v0)x(v2-v0), the counter-clockwise front, which is what we report.
     LocalShading shading(const RTCHit& hit, const Vec3f& embree_normal, const Vec3d& point) const override;
+    // Without vertex normals and uvs a hit's shading is Embree's own (uv swapped after a mirroring bake).
+    HitShading hit_shading() const override;
 
     // Uniform by area over all triangles (for area lights): a triangle is picked in proportion to its area,
     // u[0] is rescaled within the picked triangle's share and, with u[1], placed by the low-distortion

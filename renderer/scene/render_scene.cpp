@@ -70,6 +70,7 @@ void RenderScene::commit() {
         build_statistics_.shape_bytes += object.shape->memory_bytes();
         object.instanced = !object.shape->can_bake(object.to_world);
         if (!object.instanced) object.shape->bake(object.to_world);
+        object.hit_shading = object.shape->hit_shading();
         object.shape->set_object_name(object.name);
         RTCGeometry geometry = object.shape->create_geometry(device);
         check_embree("building object \"" + object.name + "\"");
@@ -127,10 +128,16 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const float t = query.ray.tfar;
     const Vec3f embree_ng =
         safe_normalize(Vec3f(alone(query.hit.Ng_x), alone(query.hit.Ng_y), alone(query.hit.Ng_z)), {0, 0, 1});
-    // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
-    const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
-    const Vec3d local_point = object.instanced ? object.to_world.inverse().point(world_point) : world_point;
-    const LocalShading local = object.shape->shading(query.hit, embree_ng, local_point);
+    const auto shape_shading = [&] {
+        // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
+        const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
+        const Vec3d local_point = object.instanced ? object.to_world.inverse().point(world_point) : world_point;
+        return object.shape->shading(query.hit, embree_ng, local_point);
+    };
+    const LocalShading local =
+        object.hit_shading == HitShading::Computed
+            ? shape_shading()
+            : shading_of_embree_hit(query.hit, embree_ng, object.hit_shading == HitShading::EmbreeHitSwappedUv);
     Vec3f geometric_normal = local.geometric_normal, shading_normal = local.normal;
     if (object.instanced) {  // Embree reports Ng in the instanced object's space
         geometric_normal = safe_normalize(object.to_world.normal(local.geometric_normal), local.geometric_normal);

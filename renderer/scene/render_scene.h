@@ -30,6 +30,7 @@ struct SceneObject {
     std::vector<const Material*> part_materials;  // per Shape::part_materials() entry; null: `material`
     Transform to_world;
     bool instanced = false;  // true: shape in object space inside an Embree instance
+    HitShading hit_shading = HitShading::Computed;  // the shape's, after any bake (set by commit)
     int counter_slot = 0;
     const Light* area_light = nullptr;  // set when the object emits and its surface can be sampled
 

@@ -1,5 +1,6 @@
 // RenderScene as a whole: mapping hits back to objects when baked and instanced objects mix, build statistics,
-// occlusion agreeing with intersection, and secondary rays leaving a surface without re-hitting it.
+// occlusion agreeing with intersection, secondary rays leaving a surface without re-hitting it, and flat meshes'
+// hits completed without the shape.
 #include "renderer/scene/render_scene.h"
 
 #include <gtest/gtest.h>
@@ -132,5 +133,28 @@ TEST(RenderScene, SpawnedRaysDoNotRehitTheirOwnSurface) {
     EXPECT_EQ(tested, 4000);
 }
 
+
+// A flat mesh's hits are completed from Embree's hit without asking the shape (Shape::hit_shading): uv must still
+// be the barycentrics of the triangle as written, also after a mirroring bake reversed it, and the normal its
+// counter-clockwise front. The floor's first triangle (corners 0, 2, 1) holds (2, 0, -1) at barycentrics 0.4 of
+// corner 2 and 0.3 of corner 1; mirrored in x, the same corner point is (-2, 0, -1).
+TEST(RenderScene, FlatMeshHitsKeepTheirUvAndFrontWhenMirrored) {
+    for (const bool mirrored : {false, true}) {
+        RenderScene scene;
+        scene.add_object(make_object("floor", floor_quad(), mirrored ? Transform::scale({-1, 1, 1}) : Transform()));
+        scene.commit();
+        ASSERT_FALSE(scene.objects()[0].instanced);
+        EXPECT_EQ(scene.objects()[0].hit_shading,
+                  mirrored ? HitShading::EmbreeHitSwappedUv : HitShading::EmbreeHit);
+        const float x = mirrored ? -2.0f : 2.0f;
+        const auto hit = scene.intersect(ray_between({x, 1, -1}, {0, -1, 0}), RayKind::Camera);
+        ASSERT_TRUE(hit.has_value()) << "mirrored " << mirrored;
+        EXPECT_NEAR(hit->uv[0], 0.4f, 1e-6f) << "mirrored " << mirrored;
+        EXPECT_NEAR(hit->uv[1], 0.3f, 1e-6f) << "mirrored " << mirrored;
+        EXPECT_NEAR(hit->geometric_normal.y, 1.0f, 1e-6f) << "mirrored " << mirrored;
+        EXPECT_NEAR(hit->shading_normal.y, 1.0f, 1e-6f) << "mirrored " << mirrored;
+        EXPECT_NEAR(hit->t, 1.0f, 1e-6f);
+    }
+}
 }  // namespace
 }  // namespace isotrace
