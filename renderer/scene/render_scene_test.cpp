@@ -133,7 +133,6 @@ TEST(RenderScene, SpawnedRaysDoNotRehitTheirOwnSurface) {
     EXPECT_EQ(tested, 4000);
 }
 
-
 // A flat mesh's hits are completed from Embree's hit without asking the shape (Shape::hit_shading): uv must still
 // be the barycentrics of the triangle as written, also after a mirroring bake reversed it, and the normal its
 // counter-clockwise front. The floor's first triangle (corners 0, 2, 1) holds (2, 0, -1) at barycentrics 0.4 of
@@ -156,5 +155,6 @@ TEST(RenderScene, FlatMeshHitsKeepTheirUvAndFrontWhenMirrored) {
         EXPECT_NEAR(hit->t, 1.0f, 1e-6f);
     }
 }
+
 }  // namespace
 }  // namespace isotrace
