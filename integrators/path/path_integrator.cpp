@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "integrators/path/flat_lambertian_packets.h"
 #include "renderer/bsdf/surface_bsdf.h"
 #include "renderer/plugin/material.h"
 #include "renderer/sampling/sampler.h"
@@ -173,6 +174,19 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         }
     }
     return result;
+}
+
+std::size_t PathIntegrator::samples_traced_together(const RenderScene& scene) const {
+    return scene.flat_lambertian() ? kMaxSamplesTogether : 1;
+}
+
+void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
+                                         std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
+                                         std::span<Rgb> radiance) const {
+    if (const FlatLambertianScene* flat = scene.flat_lambertian())
+        trace_flat_lambertian_paths(settings_, camera_rays, scene, *flat, samples, primary, radiance);
+    else
+        Integrator::radiance_of_samples(camera_rays, scene, samples, primary, radiance);
 }
 
 std::map<std::string, std::string> PathIntegrator::settings() const {

@@ -21,6 +21,11 @@ public:
     explicit PathIntegrator(const PathSettings& settings) : settings_(settings) {}
     Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                  PrimaryHitRecord& primary) const override;
+    // On flat Lambertian scenes (RenderScene::flat_lambertian()) eight samples are traced together, paths in SIMD
+    // lanes (flat_lambertian_packets.h), with radiance()'s results; elsewhere one at a time.
+    std::size_t samples_traced_together(const RenderScene& scene) const override;
+    void radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene, std::span<SampleStream> samples,
+                             std::span<PrimaryHitRecord> primary, std::span<Rgb> radiance) const override;
     std::map<std::string, std::string> settings() const override;
 
 private:

@@ -22,6 +22,10 @@ public:
     SurfaceBsdf bsdf(const SurfaceHit& hit) const override {
         return LambertBsdf(albedo(hit));
     }
+    std::optional<Rgb> constant_lambertian_reflectance() const override {
+        if (!reflectance_.is_constant() || emission_.emits()) return std::nullopt;
+        return reflectance_.evaluate_reflectance(SurfaceHit{});  // the same for every hit
+    }
 
 private:
     ColourSource reflectance_;

@@ -1,17 +1,18 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 
 #include "renderer/core/ray.h"
 #include "renderer/math/rgb.h"
 #include "renderer/plugin/registry.h"
+#include "renderer/sampling/sampler.h"
 #include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
 
 class RenderScene;
-class SampleStream;
 
 // What the camera ray saw first, for the AOVs. Integrators fill it from their primary intersection.
 struct PrimaryHitRecord {
@@ -40,6 +41,22 @@ public:
     // Radiance arriving along `camera_ray` (in the working space).
     virtual Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                          PrimaryHitRecord& primary) const = 0;
+    // How many samples of one pixel radiance_of_samples() traces together in `scene` (1 to kMaxSamplesTogether):
+    // the renderer hands it groups of that size. 1 by default.
+    static constexpr std::size_t kMaxSamplesTogether = 8;
+    virtual std::size_t samples_traced_together(const RenderScene& scene) const {
+        (void)scene;
+        return 1;
+    }
+    // Several samples of one pixel at once (consecutive sample indices): radiance[i] for camera_rays[i] with
+    // samples[i] and primary[i]. A sample's result must not depend on its companions. By default, radiance() for
+    // each in turn.
+    virtual void radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
+                                     std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
+                                     std::span<Rgb> radiance) const {
+        for (std::size_t i = 0; i < camera_rays.size(); ++i)
+            radiance[i] = this->radiance(camera_rays[i], scene, samples[i], primary[i]);
+    }
     // Settings worth recording in the image metadata ("isotrace:integrator:<key>").
     virtual std::map<std::string, std::string> settings() const { return {}; }
 };

@@ -3,6 +3,7 @@
 // come from the scene's "lights"; area lights are made by the scene for emissive objects whose shape can be
 // sampled (see renderer/lights/area_light.h).
 #include <array>
+#include <optional>
 
 #include "renderer/math/rgb.h"
 #include "renderer/math/vec3.h"
@@ -21,6 +22,13 @@ struct LightSample {
     Rgb radiance;          // incident radiance (delta lights: the irradiance-like term that cos(theta) multiplies)
     float pdf = 0;         // solid-angle pdf at the shading point; 1 for delta lights; 0 = no sample
     bool is_delta = false;
+};
+
+// An isotropic point light as sample() uses it: the path tracer's packets sample such lights eight shading points
+// at a time (integrators/path/flat_lambertian_packets.h).
+struct IsotropicPoint {
+    Vec3f position;
+    Rgb intensity;
 };
 
 class Light {
@@ -45,6 +53,8 @@ public:
     virtual bool is_infinite() const { return false; }
     // A point or a direction (point, spot, directional): sample() returns the same for every u.
     virtual bool is_delta() const { return false; }
+    // Set for isotropic point lights only, whose sample() is that of IsotropicPoint (renderer/lights/point_light.cpp).
+    virtual std::optional<IsotropicPoint> isotropic_point() const { return std::nullopt; }
 
     // Emitted power (max over channels), for choosing lights in proportion to it. Lights at infinity need the
     // scene's extent, given to preprocess() after the scene is built.

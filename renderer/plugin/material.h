@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 // Material: surface appearance. At a hit it provides the BSDF (by value), the albedo for the AOV and previews,
 // and emitted radiance.
 #include "renderer/bsdf/surface_bsdf.h"
@@ -26,6 +28,9 @@ public:
         (void)hit;
         return {};
     }
+    // R when, at every hit, bsdf() is LambertBsdf(R), albedo() is R and nothing is emitted: the path tracer can then
+    // shade such surfaces eight paths at a time. nullopt for every other material.
+    virtual std::optional<Rgb> constant_lambertian_reflectance() const { return std::nullopt; }
 };
 
 Registry<Material>& material_registry();

@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <chrono>
 #include <condition_variable>
@@ -43,31 +44,51 @@ struct StopFlags {
 };
 
 // Brings every pixel of `tile` up to `last` samples, continuing from the samples it already has, in sample
-// order. Reads the stop flags before each sample (two relaxed loads), so even a tile at high spp stops within one
-// sample; returns the samples it took.
+// order, as many of a pixel's samples at a time as the integrator traces together (mostly one). Reads the stop
+// flags before each group (two relaxed loads), so even a tile at high spp stops within one group; returns the
+// samples it took.
 std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile, std::uint32_t last,
                          const StopFlags& flags) {
+    constexpr std::size_t kGroup = Integrator::kMaxSamplesTogether;
+    const std::size_t group = std::clamp<std::size_t>(loaded.integrator->samples_traced_together(*loaded.scene), 1, kGroup);
+    std::array<SampleStream, kGroup> streams;
+    std::array<Ray, kGroup> rays;
+    std::array<CameraSample, kGroup> samples;
+    std::array<PrimaryHitRecord, kGroup> primary;
+    std::array<Rgb, kGroup> radiance;
     std::int64_t taken = 0;
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
-            for (std::uint32_t s = film.sample_count(x, y); s < last; ++s) {
+            for (std::uint32_t first = film.sample_count(x, y); first < last;) {
                 if (flags.raised()) return taken;
-                SampleStream samples(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), s});
-                const FilterSample offset = loaded.filter->sample(samples.next_2d());
-                const Ray ray = loaded.camera->generate_ray(float(x) + 0.5f + offset.dx, float(y) + 0.5f + offset.dy,
-                                                            samples.next_2d());
-                CameraSample sample;
-                sample.filter_weight = offset.weight;
-                sample.offset_squared = offset.dx * offset.dx + offset.dy * offset.dy;
-                sample.radiance = loaded.integrator->radiance(ray, *loaded.scene, samples, sample.primary);
-                // Integrators do not know the camera: the depth AOV is filled in here from the hit position.
-                if (sample.primary.hit) sample.primary.depth = loaded.camera->view_depth(sample.primary.position);
-                if (!sample.radiance.is_finite()) {  // counted and dropped, so one bad path cannot poison a pixel
-                    counters::count_nan_sample();
-                    sample.radiance = Rgb();
+                const std::size_t count = std::min<std::size_t>(group, last - first);
+                for (std::size_t i = 0; i < count; ++i) {
+                    streams[i] = SampleStream(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
+                    const FilterSample offset = loaded.filter->sample(streams[i].next_2d());
+                    rays[i] = loaded.camera->generate_ray(float(x) + 0.5f + offset.dx, float(y) + 0.5f + offset.dy,
+                                                          streams[i].next_2d());
+                    samples[i] = CameraSample{};
+                    samples[i].filter_weight = offset.weight;
+                    samples[i].offset_squared = offset.dx * offset.dx + offset.dy * offset.dy;
+                    primary[i] = PrimaryHitRecord{};
                 }
-                film.add_sample(x, y, sample);
-                ++taken;
+                loaded.integrator->radiance_of_samples(std::span(rays.data(), count), *loaded.scene,
+                                                       std::span(streams.data(), count),
+                                                       std::span(primary.data(), count), std::span(radiance.data(), count));
+                for (std::size_t i = 0; i < count; ++i) {
+                    CameraSample& sample = samples[i];
+                    sample.radiance = radiance[i];
+                    sample.primary = primary[i];
+                    // Integrators do not know the camera: the depth AOV is filled in here from the hit position.
+                    if (sample.primary.hit) sample.primary.depth = loaded.camera->view_depth(sample.primary.position);
+                    if (!sample.radiance.is_finite()) {  // counted and dropped, so one bad path cannot poison a pixel
+                        counters::count_nan_sample();
+                        sample.radiance = Rgb();
+                    }
+                    film.add_sample(x, y, sample);
+                }
+                taken += std::int64_t(count);
+                first += std::uint32_t(count);
             }
         }
     }

@@ -14,6 +14,6 @@ PixelSampleContext Sampler::context(const PixelSampleKey& key) const {
 }
 
 SampleStream::SampleStream(const Sampler& sampler, PixelSampleKey key)
-    : sampler_(sampler), context_(sampler.context(key)) {}
+    : sampler_(&sampler), context_(sampler.context(key)) {}
 
 }  // namespace isotrace

@@ -45,9 +45,10 @@ private:
 
 // Hands out consecutive dimensions for one pixel sample. Values are fetched a block of four dimensions at a
 // time and cached; the values themselves depend only on (pixel, index, dimension, seed). The sampler must
-// outlive the stream.
+// outlive the stream. Default-constructed streams only serve to be assigned (arrays of a packet's streams).
 class SampleStream {
 public:
+    SampleStream() = default;
     SampleStream(const Sampler& sampler, PixelSampleKey key);
 
     float next_1d() { return value(dimension_++); }
@@ -61,7 +62,7 @@ public:
     }
     // The four dimensions of the next whole block (skipping to its start), as one Sobol' block: the path tracer
     // takes a bounce's dimensions this way rather than one value at a time.
-    Sampler::Block next_block() { return sampler_.sample_block(context_, take_block()); }
+    Sampler::Block next_block() { return sampler_->sample_block(context_, take_block()); }
     // Moves past the next whole block as next_block() does, without computing it: for dimensions that no one
     // reads this time, so that the dimensions after them keep their numbers.
     void skip_block() { take_block(); }
@@ -79,14 +80,14 @@ private:
     float value(uint32_t dimension) {
         const uint32_t block = dimension / Sampler::kBlockDimensions;
         if (block != cached_block_) {
-            cache_ = sampler_.sample_block(context_, block);
+            cache_ = sampler_->sample_block(context_, block);
             cached_block_ = block;
         }
         return cache_[dimension % Sampler::kBlockDimensions];
     }
 
-    const Sampler& sampler_;
-    PixelSampleContext context_;
+    const Sampler* sampler_ = nullptr;
+    PixelSampleContext context_{};
     uint32_t dimension_ = 0;
     uint32_t cached_block_ = UINT32_MAX;
     Sampler::Block cache_{};

@@ -6,27 +6,34 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/math/lanes8.h"
+#include "renderer/math/sin_cos_quarter_pi.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
 
 // Shirley-Chiu concentric map: area-preserving and low distortion, so square strata stay compact on the disk.
-// Uniform on the unit disk (density 1/pi). Inline, as are the cosine-weighted warps below: every diffuse bounce
-// and every thin-lens camera ray takes one.
+// Uniform on the unit disk (density 1/pi). (a, b) = 2u - 1 in [-1, 1)^2; the point is at radius r = the larger of
+// |a|, |b| (signed), pi/4 * (smaller / larger) from that axis. One template for a float and for eight lanes
+// (the path tracer's packets), branch-free, so both give the same bits.
+template <class T>
+inline void concentric_disk_point(T a, T b, T& x, T& y) {
+    constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.0f;
+    const auto a_major = abs(a) > abs(b);
+    const T r = select(a_major, a, b);
+    // r = 0 only at the centre, where the point is (0, 0) whatever the angle.
+    const T angle = kQuarterPi * select(r != 0.0f, select(a_major, b, a) / r, T{});
+    T sine, cosine;
+    sin_cos_quarter_pi(angle, sine, cosine);
+    x = r * select(a_major, cosine, sine);
+    y = r * select(a_major, sine, cosine);
+}
+
+// Inline, as are the cosine-weighted warps below: every diffuse bounce and every thin-lens camera ray takes one.
 inline std::array<float, 2> square_to_uniform_disk_concentric(std::array<float, 2> u) {
-    constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.0f, kHalfPi = std::numbers::pi_v<float> / 2.0f;
-    const float a = 2.0f * u[0] - 1.0f;
-    const float b = 2.0f * u[1] - 1.0f;
-    if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
-    float r, phi;
-    if (std::abs(a) > std::abs(b)) {
-        r = a;
-        phi = kQuarterPi * (b / a);
-    } else {
-        r = b;
-        phi = kHalfPi - kQuarterPi * (a / b);
-    }
-    return {r * std::cos(phi), r * std::sin(phi)};
+    float x, y;
+    concentric_disk_point(2.0f * u[0] - 1.0f, 2.0f * u[1] - 1.0f, x, y);
+    return {x, y};
 }
 
 // Malley's method: a uniform disk point lifted to the hemisphere gives density cos(theta)/pi.

@@ -1,6 +1,5 @@
 #include "renderer/scene/render_scene.h"
 
-#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -14,7 +13,6 @@ namespace isotrace {
 namespace {
 
 // Secondary rays start this many float ulps of the hit's magnitude away from the surface (see spawn_origin).
-constexpr float kPositionErrorScale = 64.0f * FLT_EPSILON;
 
 void set_instance_transform(RTCGeometry instance, const Transform& to_world) {
     float row_major[12];
@@ -95,6 +93,7 @@ void RenderScene::commit() {
     rtcCommitScene(scene_);
     check_embree("building the scene BVH");
     build_lights();
+    describe_flat_lambertian();
     build_statistics_.objects = objects_.size();
     build_statistics_.embree_bytes = embree_bytes_in_use() - bytes_before;
     build_statistics_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -150,6 +149,59 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
                       query.hit.primID, object.material_of_part(local.part), position_error};
 }
 
+void RenderScene::intersect8(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcIntersect8(valid, scene_, &context, &query);
+    // Counted per packet: counting lane by lane chains eight stores and loads of the same counter.
+    int slot = -1, hits = 0, rays = 0;
+    for (int lane = 0; lane < 8; ++lane) {
+        if (!valid[lane]) continue;
+        ++rays;
+        if (query.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
+        const int lane_slot = objects_[object_of_geometry_[query.hit.geomID[lane]]].counter_slot;
+        if (slot != lane_slot && hits > 0) {
+            counters::count_closest_hits(slot, std::uint64_t(hits));
+            hits = 0;
+        }
+        slot = lane_slot;
+        ++hits;
+    }
+    counters::count_rays(kind, std::uint64_t(rays));
+    if (hits > 0) counters::count_closest_hits(slot, std::uint64_t(hits));
+}
+
+void RenderScene::occluded8(const std::int32_t* valid, RTCRay8& query) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcOccluded8(valid, scene_, &context, &query);
+    int rays = 0;
+    for (int lane = 0; lane < 8; ++lane) rays += valid[lane] != 0;
+    counters::count_rays(RayKind::Shadow, std::uint64_t(rays));
+}
+
+void RenderScene::describe_flat_lambertian() {
+    FlatLambertianScene flat;
+    for (const Light* light : all_lights_) {
+        const std::optional<IsotropicPoint> point = light->isotropic_point();
+        if (!point) return;
+        flat.lights.push_back(*point);
+    }
+    flat.reflectance_of_geometry.resize(object_of_geometry_.size());
+    flat.object_of_geometry = object_of_geometry_;
+    for (std::size_t id = 0; id < object_of_geometry_.size(); ++id) {
+        const SceneObject& object = objects_[object_of_geometry_[id]];
+        // Embree-hit shading has no parts: its material is that of part 0.
+        const Material* material = object.material_of_part(0);
+        if (object.instanced || object.hit_shading == HitShading::Computed || !material) return;
+        const std::optional<Rgb> reflectance = material->constant_lambertian_reflectance();
+        if (!reflectance) return;
+        flat.reflectance_of_geometry[id] = *reflectance;
+    }
+    if (emission_can_be_hit_) return;
+    flat_lambertian_ = std::move(flat);
+}
+
 void RenderScene::build_lights() {
     for (SceneObject& object : objects_) {
         // Emission found by rays: every emissive material, also per-part ones and those of unsampled emitters.
@@ -186,7 +238,7 @@ void RenderScene::build_lights() {
 LightChoice RenderScene::choose_light(float u) const {
     if (!light_distribution_) return {};
     const Distribution1D::DiscreteSample pick = light_distribution_->sample_discrete(u);
-    return {all_lights_[pick.index], pick.probability};
+    return {all_lights_[pick.index], pick.probability, std::uint32_t(pick.index)};
 }
 
 float RenderScene::light_probability(const Light* light) const {

@@ -56,6 +56,16 @@ struct BuildStatistics {
 struct LightChoice {
     const Light* light = nullptr;
     float probability = 0;
+    std::uint32_t index = 0;  // in all_lights()
+};
+
+// A scene whose every object is a flat triangle mesh in world space (Embree's own hit is its shading) with a
+// constant, non-emissive Lambertian material, and whose every light is an isotropic point light: what the path
+// tracer needs to shade eight paths at a time with Embree's packet queries (integrators/path/flat_lambertian_packets.h).
+struct FlatLambertianScene {
+    std::vector<Rgb> reflectance_of_geometry;         // by Embree geometry id
+    std::vector<std::uint32_t> object_of_geometry;    // by Embree geometry id
+    std::vector<IsotropicPoint> lights;               // as all_lights() orders them
 };
 
 class RenderScene {
@@ -76,6 +86,8 @@ public:
     void commit();
 
     std::optional<SurfaceHit> intersect(const Ray& ray, RayKind kind) const;
+    // The hit's position error bound is this times (the largest |coordinate| of the hit + t |direction|).
+    static constexpr float kPositionErrorScale = 64.0f * std::numeric_limits<float>::epsilon();
     // Inline: the path tracer builds a shadow ray just before asking, and through a call the ray went to memory
     // field by field and came back in the 16-byte loads that build Embree's ray, each waiting for those stores.
     bool occluded(const Ray& ray) const {
@@ -99,6 +111,13 @@ public:
     // True when choosing and sampling a light reads no random number: at most one light, and that a delta light.
     bool light_sampling_is_deterministic() const { return light_sampling_is_deterministic_; }
 
+    // Set by commit for scenes of that kind (see FlatLambertianScene), null otherwise.
+    const FlatLambertianScene* flat_lambertian() const { return flat_lambertian_ ? &*flat_lambertian_ : nullptr; }
+    // Embree's packet queries, counted as intersect() and occluded() count, for the lanes `valid` marks (-1): only
+    // for flat Lambertian scenes (no user geometry, no instances). `query`'s rays are set by the caller.
+    void intersect8(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const;
+    void occluded8(const std::int32_t* valid, RTCRay8& query) const;
+
     const std::vector<SceneObject>& objects() const { return objects_; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
     const BuildStatistics& build_statistics() const { return build_statistics_; }
@@ -117,9 +136,11 @@ private:
     std::unordered_map<const Light*, float> light_probabilities_;
     bool emission_can_be_hit_ = false;
     bool light_sampling_is_deterministic_ = true;
+    std::optional<FlatLambertianScene> flat_lambertian_;
     BuildStatistics build_statistics_;
 
     void build_lights();
+    void describe_flat_lambertian();
 };
 
 }  // namespace isotrace
