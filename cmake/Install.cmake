@@ -4,8 +4,8 @@ install(TARGETS isotrace EXPORT isotraceTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace)
-# The image module goes beside the library, where image_codec() looks for it.
-install(TARGETS isotrace_oiio isotrace_exr LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The modules go beside the library, where it looks for them.
+install(TARGETS isotrace_oiio isotrace_exr isotrace_paths_avx2 LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(folder renderer geometry integrators)
   install(DIRECTORY ${folder} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace
           FILES_MATCHING PATTERN "*.h" PATTERN "*_test*" EXCLUDE)

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <string_view>
 
+#include "renderer/core/version.h"
 #include "renderer/math/lanes8.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/sampling/warps.h"
@@ -124,6 +126,9 @@ BounceNumbers draw_bounce_numbers(int depth, const std::int32_t* alive, bool lig
 }
 
 }  // namespace
+
+// ISOTRACE_PACKETS_ISA names the build: baseline_isa in the library, avx2_isa in the module.
+namespace ISOTRACE_PACKETS_ISA {
 
 void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const Ray> camera_rays,
                                  const RenderScene& scene, const FlatLambertianScene& flat,
@@ -293,5 +298,13 @@ void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const R
     }
     for (std::size_t lane = 0; lane < count; ++lane) radiance[lane] = {result.r[lane], result.g[lane], result.b[lane]};
 }
+
+}  // namespace ISOTRACE_PACKETS_ISA
+
+#ifdef ISOTRACE_PACKETS_MODULE
+extern "C" [[gnu::visibility("default")]] FlatLambertianKernel isotrace_flat_lambertian_kernel(const char* version) {
+    return std::string_view(version) == kIsotraceVersion ? &ISOTRACE_PACKETS_ISA::trace_flat_lambertian_paths : nullptr;
+}
+#endif
 
 }  // namespace isotrace

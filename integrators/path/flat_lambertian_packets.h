@@ -5,6 +5,10 @@
 // same order, so it gives the same bits (tested); what it gains is the per-path overhead of the general loop (hit
 // completion into a SurfaceHit, the BSDF variant, the virtual light and material calls), which on such scenes
 // was about as large as Embree's own time (docs/benchmarks.md, issue 14).
+//
+// The kernel is built twice: into the library for baseline x86-64 and, for AVX2, into a module beside it that is
+// loaded on CPUs that have AVX2 (a module, so that the inline functions it compiles for AVX2 stay its own; no FMA,
+// so both round alike). flat_lambertian_kernel() picks one once.
 #include <span>
 
 #include "integrators/path/path_integrator.h"
@@ -12,9 +16,25 @@
 
 namespace isotrace {
 
+using FlatLambertianKernel = void (*)(const PathSettings& settings, std::span<const Ray> camera_rays,
+                                      const RenderScene& scene, const FlatLambertianScene& flat,
+                                      std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
+                                      std::span<Rgb> radiance);
+
+// The module's entry: given the library's version, its kernel (null for another version).
+inline constexpr const char* kFlatLambertianKernelEntry = "isotrace_flat_lambertian_kernel";
+using FlatLambertianKernelEntry = FlatLambertianKernel (*)(const char* isotrace_version);
+
+// The AVX2 module's kernel where the CPU has AVX2 and the module loads, else the baseline one.
+FlatLambertianKernel flat_lambertian_kernel();
+// Which of them that is: "avx2" or "baseline x86-64".
+const char* flat_lambertian_kernel_name();
+
+namespace baseline_isa {
 void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const Ray> camera_rays,
                                  const RenderScene& scene, const FlatLambertianScene& flat,
                                  std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                  std::span<Rgb> radiance);
+}  // namespace baseline_isa
 
 }  // namespace isotrace

@@ -56,8 +56,9 @@ const std::string kTwoLights = kOneLight + R"(, {"type": "point", "position": [-
 std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
 
 // Per pixel, samples [0, count) traced one at a time by radiance() and in groups of eight (the last group
-// shorter) by radiance_of_samples(); returns how many samples carried light, and fails on any differing bit.
-int expect_packets_match_single_paths(const LoadedScene& loaded, std::uint32_t count) {
+// shorter) by `kernel`; returns how many samples carried light, and fails on any differing bit.
+int expect_packets_match_single_paths(const LoadedScene& loaded, std::uint32_t count, FlatLambertianKernel kernel,
+                                      const PathSettings& settings) {
     EXPECT_NE(loaded.scene->flat_lambertian(), nullptr);
     int lit = 0;
     for (int y = 0; y < 16; y += 3) {
@@ -77,7 +78,7 @@ int expect_packets_match_single_paths(const LoadedScene& loaded, std::uint32_t c
                     streams[i] = SampleStream(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
                     rays[i] = camera_ray(streams[i]);
                 }
-                loaded.integrator->radiance_of_samples(rays, *loaded.scene, streams, primary, radiance);
+                kernel(settings, rays, *loaded.scene, *loaded.scene->flat_lambertian(), streams, primary, radiance);
                 for (std::size_t i = 0; i < group; ++i) {
                     SampleStream single(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
                     const Ray ray = camera_ray(single);
@@ -103,34 +104,51 @@ int expect_packets_match_single_paths(const LoadedScene& loaded, std::uint32_t c
     return lit;
 }
 
+std::string path_integrator(const PathSettings& settings) {
+    return R"({"type": "path", "max_depth": )" + std::to_string(settings.max_depth) +
+           R"(, "russian_roulette_depth": )" + std::to_string(settings.russian_roulette_depth) +
+           R"(, "clamp": )" + std::to_string(settings.clamp) + "}";
+}
+
 struct Case {
-    std::string name, integrator, lights;
+    std::string name;
+    PathSettings settings;
+    std::string lights;
     friend void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 };
 
 class PacketsMatchSinglePaths : public ::testing::TestWithParam<Case> {};
 
+// Both builds of the kernel (on a CPU without AVX2 the chosen one is the baseline one).
 TEST_P(PacketsMatchSinglePaths, BitForBit) {
-    const SceneFile file(room(GetParam().integrator, GetParam().lights));
+    const SceneFile file(room(path_integrator(GetParam().settings), GetParam().lights));
     const auto loaded = load_scene(file.path());
-    EXPECT_GT(expect_packets_match_single_paths(*loaded, 19), 100);
+    EXPECT_GT(expect_packets_match_single_paths(*loaded, 19, &baseline_isa::trace_flat_lambertian_paths,
+                                                GetParam().settings), 100);
+    SCOPED_TRACE(flat_lambertian_kernel_name());
+    EXPECT_GT(expect_packets_match_single_paths(*loaded, 19, flat_lambertian_kernel(), GetParam().settings), 100);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Settings, PacketsMatchSinglePaths,
-    ::testing::Values(
-        Case{"OneLightNoRoulette", R"({"type": "path", "max_depth": 8, "russian_roulette_depth": 1024})", kOneLight},
-        Case{"TwoLightsWithRoulette", R"({"type": "path", "max_depth": 12, "russian_roulette_depth": 2})", kTwoLights},
-        Case{"OneLightClamped", R"({"type": "path", "max_depth": 5, "clamp": 0.05})", kOneLight},
-        Case{"TwoLightsDirect", R"({"type": "direct"})", kTwoLights},
-        Case{"OddDepth", R"({"type": "path", "max_depth": 3, "russian_roulette_depth": 1})", kTwoLights}),
+    ::testing::Values(Case{"OneLightNoRoulette", {8, 1024, 0}, kOneLight},
+                      Case{"TwoLightsWithRoulette", {12, 2, 0}, kTwoLights},
+                      Case{"OneLightClamped", {5, 4, 0.05f}, kOneLight},
+                      Case{"TwoLightsDirect", {1, 1024, 0}, kTwoLights},
+                      Case{"OddDepth", {3, 1, 0}, kTwoLights}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 // Scenes without lights trace paths that carry nothing, packets or not.
 TEST(FlatLambertianPackets, SceneWithoutLightsIsBlack) {
-    const SceneFile file(room(R"({"type": "path", "max_depth": 4})", ""));
+    const PathSettings settings{4, 4, 0};
+    const SceneFile file(room(path_integrator(settings), ""));
     const auto loaded = load_scene(file.path());
-    EXPECT_EQ(expect_packets_match_single_paths(*loaded, 9), 0);
+    EXPECT_EQ(expect_packets_match_single_paths(*loaded, 9, flat_lambertian_kernel(), settings), 0);
+}
+
+// The AVX2 build is the one chosen where the CPU has AVX2.
+TEST(FlatLambertianPackets, KernelForThisCpu) {
+    EXPECT_EQ(std::string(flat_lambertian_kernel_name()), __builtin_cpu_supports("avx2") ? "avx2" : "baseline x86-64");
 }
 
 // Whole renders through the tile renderer: the same bits for any thread count and tile size, and for a render

@@ -184,7 +184,7 @@ void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const
                                          std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                          std::span<Rgb> radiance) const {
     if (const FlatLambertianScene* flat = scene.flat_lambertian())
-        trace_flat_lambertian_paths(settings_, camera_rays, scene, *flat, samples, primary, radiance);
+        flat_lambertian_kernel()(settings_, camera_rays, scene, *flat, samples, primary, radiance);
     else
         Integrator::radiance_of_samples(camera_rays, scene, samples, primary, radiance);
 }

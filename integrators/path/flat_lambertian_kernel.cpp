@@ -1,0 +1,43 @@
+// Which build of the packet kernel runs (flat_lambertian_packets.h): chosen once per process.
+#include <dlfcn.h>
+
+#include "integrators/path/flat_lambertian_packets.h"
+#include "renderer/core/library_directory.h"
+#include "renderer/core/version.h"
+
+#ifndef ISOTRACE_PACKETS_AVX2_MODULE
+#error "the build must define ISOTRACE_PACKETS_AVX2_MODULE (the AVX2 kernel module's file name)"
+#endif
+
+namespace isotrace {
+namespace {
+
+struct ChosenKernel {
+    FlatLambertianKernel kernel = &baseline_isa::trace_flat_lambertian_paths;
+    const char* name = "baseline x86-64";
+};
+
+// The module only speeds the render up: where it is missing or cannot load, the baseline kernel computes the
+// same bits.
+ChosenKernel choose() {
+    if (!__builtin_cpu_supports("avx2")) return {};
+    void* module = dlopen((library_directory() / ISOTRACE_PACKETS_AVX2_MODULE).c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!module) return {};
+    const auto entry = reinterpret_cast<FlatLambertianKernelEntry>(dlsym(module, kFlatLambertianKernelEntry));
+    const FlatLambertianKernel kernel = entry ? entry(kIsotraceVersion) : nullptr;
+    if (!kernel) return {};
+    return {kernel, "avx2"};
+}
+
+const ChosenKernel& chosen() {
+    static const ChosenKernel kernel = choose();
+    return kernel;
+}
+
+}  // namespace
+
+FlatLambertianKernel flat_lambertian_kernel() { return chosen().kernel; }
+
+const char* flat_lambertian_kernel_name() { return chosen().name; }
+
+}  // namespace isotrace
