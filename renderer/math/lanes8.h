@@ -36,16 +36,24 @@ inline Float8 join_halves(Float8Half lo, Float8Half hi) {
     return Float8{lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]};
 }
 
-// One bit per lane of a mask, lane 0 lowest (SSE's movmskps on each half: the same in GCC and clang).
+// One bit per lane of a mask, lane 0 lowest (movmskps, on each half without AVX: the same in GCC and clang).
 inline unsigned lane_bits(Int8 mask) {
     const Float8 bits = (Float8)mask;
+#ifdef __AVX__
+    return unsigned(__builtin_ia32_movmskps256(bits));
+#else
     return unsigned(__builtin_ia32_movmskps(low_half(bits))) | unsigned(__builtin_ia32_movmskps(high_half(bits))) << 4;
+#endif
 }
 inline bool any(Int8 mask) { return lane_bits(mask) != 0; }
 
 // The correctly rounded square root per lane, as std::sqrt gives it.
 inline Float8 sqrt(Float8 v) {
+#ifdef __AVX__
+    return __builtin_ia32_sqrtps256(v);
+#else
     return join_halves(__builtin_ia32_sqrtps(low_half(v)), __builtin_ia32_sqrtps(high_half(v)));
+#endif
 }
 inline float abs(float v) { return std::abs(v); }
 inline Float8 abs(Float8 v) { return (Float8)((Int8)v & splat8(0x7fffffff)); }

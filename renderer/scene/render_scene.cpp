@@ -153,22 +153,22 @@ void RenderScene::intersect8(const std::int32_t* valid, RTCRayHit8& query, RayKi
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     rtcIntersect8(valid, scene_, &context, &query);
-    // Counted per packet: counting lane by lane chains eight stores and loads of the same counter.
-    int slot = -1, hits = 0, rays = 0;
+    // Counted per packet, without branches where every object counts in one slot (counting lane by lane chains
+    // eight stores and loads of the same counter, and the branches on the lanes mispredict).
+    int rays = 0, hits = 0;
     for (int lane = 0; lane < 8; ++lane) {
-        if (!valid[lane]) continue;
-        ++rays;
-        if (query.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
-        const int lane_slot = objects_[object_of_geometry_[query.hit.geomID[lane]]].counter_slot;
-        if (slot != lane_slot && hits > 0) {
-            counters::count_closest_hits(slot, std::uint64_t(hits));
-            hits = 0;
-        }
-        slot = lane_slot;
-        ++hits;
+        const bool live = valid[lane] != 0;
+        rays += live;
+        hits += live && query.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
     }
     counters::count_rays(kind, std::uint64_t(rays));
-    if (hits > 0) counters::count_closest_hits(slot, std::uint64_t(hits));
+    if (flat_lambertian_->counter_slot >= 0) {
+        counters::count_closest_hits(flat_lambertian_->counter_slot, std::uint64_t(hits));
+        return;
+    }
+    for (int lane = 0; lane < 8; ++lane)
+        if (valid[lane] && query.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID)
+            counters::count_closest_hit(objects_[object_of_geometry_[query.hit.geomID[lane]]].counter_slot);
 }
 
 void RenderScene::occluded8(const std::int32_t* valid, RTCRay8& query) const {
@@ -188,6 +188,7 @@ void RenderScene::describe_flat_lambertian() {
         flat.lights.push_back(*point);
     }
     flat.reflectance_of_geometry.resize(object_of_geometry_.size());
+    flat.counter_slot = objects_.empty() ? -1 : objects_[0].counter_slot;
     flat.object_of_geometry = object_of_geometry_;
     for (std::size_t id = 0; id < object_of_geometry_.size(); ++id) {
         const SceneObject& object = objects_[object_of_geometry_[id]];
@@ -197,6 +198,7 @@ void RenderScene::describe_flat_lambertian() {
         const std::optional<Rgb> reflectance = material->constant_lambertian_reflectance();
         if (!reflectance) return;
         flat.reflectance_of_geometry[id] = *reflectance;
+        if (object.counter_slot != flat.counter_slot) flat.counter_slot = -1;
     }
     if (emission_can_be_hit_) return;
     flat_lambertian_ = std::move(flat);

@@ -66,6 +66,7 @@ struct FlatLambertianScene {
     std::vector<Rgb> reflectance_of_geometry;         // by Embree geometry id
     std::vector<std::uint32_t> object_of_geometry;    // by Embree geometry id
     std::vector<IsotropicPoint> lights;               // as all_lights() orders them
+    int counter_slot = -1;                            // the objects' counter slot if they all share one, else -1
 };
 
 class RenderScene {
