@@ -100,24 +100,30 @@ BounceNumbers draw_bounce_numbers(int depth, const std::int32_t* alive, bool lig
                                   std::span<SampleStream> samples, std::array<Sampler::Block, 8>& pair_directions,
                                   std::array<Sampler::Block, 8>& pair_roulette) {
     const bool first_of_pair = depth % 2 == 0;
+    unsigned live = 0;
+    for (std::size_t lane = 0; lane < samples.size(); ++lane) live |= unsigned(alive[lane] != 0) << lane;
+    // The lanes stand at the same dimension (they have taken the same blocks), so each block is drawn for all at once.
+    const auto skip = [&] {
+        for (std::size_t lane = 0; lane < samples.size(); ++lane)
+            if (live >> lane & 1u) samples[lane].skip_block();
+    };
+    std::array<Sampler::Block, 8> light{};
+    if (light_choice_is_random)
+        SampleStream::next_blocks(samples, live, light);
+    else
+        skip();
+    if (first_of_pair) {
+        SampleStream::next_blocks(samples, live, pair_directions);
+        pair_roulette = {};
+        if (depth + 2 >= roulette_depth)
+            SampleStream::next_blocks(samples, live, pair_roulette);
+        else
+            skip();
+    }
     alignas(32) float light_choice[8]{}, direction_0[8]{}, direction_1[8]{}, roulette[8]{};
     for (std::size_t lane = 0; lane < samples.size(); ++lane) {
         if (!alive[lane]) continue;
-        SampleStream& stream = samples[lane];
-        Sampler::Block light{};
-        if (light_choice_is_random)
-            light = stream.next_block();
-        else
-            stream.skip_block();
-        if (first_of_pair) {
-            pair_directions[lane] = stream.next_block();
-            pair_roulette[lane] = {};
-            if (depth + 2 >= roulette_depth)
-                pair_roulette[lane] = stream.next_block();
-            else
-                stream.skip_block();
-        }
-        light_choice[lane] = light[2];
+        light_choice[lane] = light[lane][2];
         direction_0[lane] = pair_directions[lane][first_of_pair ? 0 : 2];
         direction_1[lane] = pair_directions[lane][first_of_pair ? 1 : 3];
         roulette[lane] = pair_roulette[lane][std::size_t(depth % 2)];

@@ -62,8 +62,10 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
             for (std::uint32_t first = film.sample_count(x, y); first < last;) {
                 if (flags.raised()) return taken;
                 const std::size_t count = std::min<std::size_t>(group, last - first);
-                for (std::size_t i = 0; i < count; ++i) {
+                for (std::size_t i = 0; i < count; ++i)
                     streams[i] = SampleStream(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
+                SampleStream::fill_caches(std::span(streams.data(), count));  // the camera's block, for all at once
+                for (std::size_t i = 0; i < count; ++i) {
                     const FilterSample offset = loaded.filter->sample(streams[i].next_2d());
                     rays[i] = loaded.camera->generate_ray(float(x) + 0.5f + offset.dx, float(y) + 0.5f + offset.dy,
                                                           streams[i].next_2d());

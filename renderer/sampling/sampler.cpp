@@ -16,4 +16,35 @@ PixelSampleContext Sampler::context(const PixelSampleKey& key) const {
 SampleStream::SampleStream(const Sampler& sampler, PixelSampleKey key)
     : sampler_(&sampler), context_(sampler.context(key)) {}
 
+void SampleStream::next_blocks(std::span<SampleStream> streams, unsigned live, std::span<Sampler::Block> values) {
+    std::array<PixelSampleContext, kMaxStreamsTogether> contexts;
+    std::array<Sampler::Block, kMaxStreamsTogether> computed;
+    std::size_t count = 0;
+    uint32_t block = 0;
+    for (std::size_t i = 0; i < streams.size(); ++i) {
+        if (!(live >> i & 1u)) continue;
+        block = streams[i].take_block();
+        contexts[count++] = streams[i].context_;
+    }
+    if (count == 0) return;
+    streams[0].sampler_->sample_blocks(std::span(contexts.data(), count), block, std::span(computed.data(), count));
+    count = 0;
+    for (std::size_t i = 0; i < streams.size(); ++i)
+        if (live >> i & 1u) values[i] = computed[count++];
+}
+
+void SampleStream::fill_caches(std::span<SampleStream> streams) {
+    std::array<PixelSampleContext, kMaxStreamsTogether> contexts;
+    std::array<Sampler::Block, kMaxStreamsTogether> computed;
+    if (streams.empty()) return;
+    const uint32_t block = streams[0].dimension_ / Sampler::kBlockDimensions;
+    for (std::size_t i = 0; i < streams.size(); ++i) contexts[i] = streams[i].context_;
+    streams[0].sampler_->sample_blocks(std::span(contexts.data(), streams.size()), block,
+                                       std::span(computed.data(), streams.size()));
+    for (std::size_t i = 0; i < streams.size(); ++i) {
+        streams[i].cache_ = computed[i];
+        streams[i].cached_block_ = block;
+    }
+}
+
 }  // namespace isotrace

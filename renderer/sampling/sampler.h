@@ -3,6 +3,7 @@
 // (pixel, sample index, dimension, seed), so renders are reproducible regardless of thread scheduling.
 #include <array>
 #include <cstdint>
+#include <span>
 
 namespace isotrace {
 
@@ -37,6 +38,14 @@ public:
         return values;
     }
 
+    // sample_block for several samples of one pixel at once (the contexts of one pixel, any indices): values[i] for
+    // contexts[i]. Samplers may share work between them (the Sobol' sampler hashes the pixel's block once); by
+    // default one block at a time.
+    virtual void sample_blocks(std::span<const PixelSampleContext> contexts, uint32_t block,
+                               std::span<Block> values) const {
+        for (std::size_t i = 0; i < contexts.size(); ++i) values[i] = sample_block(contexts[i], block);
+    }
+
     uint64_t seed() const { return seed_; }
 
 private:
@@ -68,6 +77,14 @@ public:
     void skip_block() { take_block(); }
     // The dimension the next next_1d() call will use.
     uint32_t dimension() const { return dimension_; }
+
+    // Several streams of one pixel and sampler (at most kMaxStreamsTogether) whose counters stand in the same
+    // block, computed together with Sampler::sample_blocks; only the streams whose bit in `live` is set take part.
+    // next_blocks gives each what next_block() would; fill_caches computes the block each stream's next values
+    // come from, so that its next_1d() and next_2d() calls read them without computing.
+    static constexpr std::size_t kMaxStreamsTogether = 8;
+    static void next_blocks(std::span<SampleStream> streams, unsigned live, std::span<Sampler::Block> values);
+    static void fill_caches(std::span<SampleStream> streams);
 
 private:
     // The index of the next whole block (the current one if the counter is at its start), the counter moved past it.

@@ -33,12 +33,14 @@ ISOTRACE_AVX2_CLONE Float4 scrambled_block(Uint4 reversed_sobol, uint32_t block_
 
 }  // namespace
 
-SobolSampler::BlockPoint SobolSampler::block_point(const PixelSampleContext& context, uint32_t block) {
-    // One shuffle per block keeps the block's four dimensions a single 4-D Sobol' point; separate blocks
-    // are statistically independent (Burley's "padding"). The shuffle is nested_uniform_scramble(index), kept
-    // bit-reversed for the reversed Sobol' tables.
-    const uint64_t block_hash = hash_extend(context.pixel_hash, block);
-    return {block_hash, laine_karras_permutation(context.reversed_index, static_cast<uint32_t>(block_hash))};
+// Block `block_hash`'s four values for the sample whose reversed index is `reversed_index`. One shuffle per block
+// keeps the block's four dimensions a single 4-D Sobol' point; separate blocks are statistically independent
+// (Burley's "padding"). The shuffle is nested_uniform_scramble(index), kept bit-reversed for the reversed Sobol'
+// tables.
+Sampler::Block SobolSampler::block_values(uint64_t block_hash, uint32_t reversed_index) {
+    const uint32_t shuffled = laine_karras_permutation(reversed_index, static_cast<uint32_t>(block_hash));
+    const Float4 values = scrambled_block(sobol_point_bit_reversed(shuffled), static_cast<uint32_t>(block_hash >> 32));
+    return {values[0], values[1], values[2], values[3]};
 }
 
 float SobolSampler::sample(const PixelSampleKey& key, uint32_t dimension) const {
@@ -48,10 +50,18 @@ float SobolSampler::sample(const PixelSampleKey& key, uint32_t dimension) const 
 // The four dimensions in the four lanes of a vector: the scramble is the same bit arithmetic per lane.
 Sampler::Block SobolSampler::sample_block(const PixelSampleContext& context, uint32_t block) const {
     static_assert(kBlockDimensions == kSobolDimensions && kSobolDimensions == 4);
-    const BlockPoint point = block_point(context, block);
-    const Float4 values = scrambled_block(sobol_point_bit_reversed(point.reversed_shuffled_index),
-                                          static_cast<uint32_t>(point.block_hash >> 32));
-    return {values[0], values[1], values[2], values[3]};
+    return block_values(hash_extend(context.pixel_hash, block), context.reversed_index);
+}
+
+// The samples of one pixel share the block's hash: computed once for all of them.
+void SobolSampler::sample_blocks(std::span<const PixelSampleContext> contexts, uint32_t block,
+                                 std::span<Block> values) const {
+    if (contexts.empty()) return;
+    const uint64_t block_hash = hash_extend(contexts[0].pixel_hash, block);
+    for (std::size_t i = 0; i < contexts.size(); ++i)
+        values[i] = contexts[i].pixel_hash == contexts[0].pixel_hash
+                        ? block_values(block_hash, contexts[i].reversed_index)
+                        : sample_block(contexts[i], block);  // not one pixel after all
 }
 
 }  // namespace isotrace

@@ -19,13 +19,11 @@ public:
 
     float sample(const PixelSampleKey& key, uint32_t dimension) const override;
     Block sample_block(const PixelSampleContext& context, uint32_t block) const override;
+    void sample_blocks(std::span<const PixelSampleContext> contexts, uint32_t block,
+                       std::span<Block> values) const override;
 
 private:
-    struct BlockPoint {
-        uint64_t block_hash;
-        uint32_t reversed_shuffled_index;
-    };
-    static BlockPoint block_point(const PixelSampleContext& context, uint32_t block);
+    static Block block_values(uint64_t block_hash, uint32_t reversed_index);
 };
 
 }  // namespace isotrace
