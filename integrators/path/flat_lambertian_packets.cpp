@@ -96,12 +96,10 @@ struct LaneArrays3 {
 struct BounceNumbers {
     Float8 light_choice, direction_0, direction_1, roulette;
 };
-BounceNumbers draw_bounce_numbers(int depth, const std::int32_t* alive, bool light_choice_is_random, int roulette_depth,
+BounceNumbers draw_bounce_numbers(int depth, unsigned live, bool light_choice_is_random, int roulette_depth,
                                   std::span<SampleStream> samples, std::array<Sampler::Block, 8>& pair_directions,
                                   std::array<Sampler::Block, 8>& pair_roulette) {
     const bool first_of_pair = depth % 2 == 0;
-    unsigned live = 0;
-    for (std::size_t lane = 0; lane < samples.size(); ++lane) live |= unsigned(alive[lane] != 0) << lane;
     // The lanes stand at the same dimension (they have taken the same blocks), so each block is drawn for all at once.
     const auto skip = [&] {
         for (std::size_t lane = 0; lane < samples.size(); ++lane)
@@ -120,15 +118,13 @@ BounceNumbers draw_bounce_numbers(int depth, const std::int32_t* alive, bool lig
         else
             skip();
     }
-    alignas(32) float light_choice[8]{}, direction_0[8]{}, direction_1[8]{}, roulette[8]{};
-    for (std::size_t lane = 0; lane < samples.size(); ++lane) {
-        if (!alive[lane]) continue;
-        light_choice[lane] = light[lane][2];
-        direction_0[lane] = pair_directions[lane][first_of_pair ? 0 : 2];
-        direction_1[lane] = pair_directions[lane][first_of_pair ? 1 : 3];
-        roulette[lane] = pair_roulette[lane][std::size_t(depth % 2)];
-    }
-    return {load8(light_choice), load8(direction_0), load8(direction_1), load8(roulette)};
+    // Into registers lane by lane (dead lanes get stale values that nothing reads).
+    const auto dimension = [](const std::array<Sampler::Block, 8>& blocks, std::size_t d) {
+        return Float8{blocks[0][d], blocks[1][d], blocks[2][d], blocks[3][d],
+                      blocks[4][d], blocks[5][d], blocks[6][d], blocks[7][d]};
+    };
+    return {dimension(light, 2), dimension(pair_directions, first_of_pair ? 0 : 2),
+            dimension(pair_directions, first_of_pair ? 1 : 3), dimension(pair_roulette, std::size_t(depth % 2))};
 }
 
 }  // namespace
@@ -210,7 +206,7 @@ void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const R
 
         const Frame8 frame(normal);
         const Vec3x8 wo = frame.to_local(-direction);
-        const BounceNumbers numbers = draw_bounce_numbers(depth, valid, light_choice_is_random,
+        const BounceNumbers numbers = draw_bounce_numbers(depth, lane_bits(alive), light_choice_is_random,
                                                           settings.russian_roulette_depth, samples.first(count),
                                                           pair_directions, pair_roulette);
         const Rgb8 lambert{reflectance.r * kInvPi, reflectance.g * kInvPi, reflectance.b * kInvPi};  // f = R / pi
