@@ -12,6 +12,7 @@
 #include <span>
 
 #include "integrators/path/path_integrator.h"
+#include "renderer/math/lanes.h"
 #include "renderer/scene/render_scene.h"
 
 namespace isotrace {

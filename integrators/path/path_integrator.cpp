@@ -177,7 +177,8 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
 }
 
 std::size_t PathIntegrator::samples_traced_together(const RenderScene& scene) const {
-    return scene.flat_lambertian() ? kMaxSamplesTogether : 1;
+    static_assert(kLanes <= kMaxSamplesTogether && kLanes <= SampleStream::kMaxStreamsTogether);
+    return scene.flat_lambertian() ? std::size_t(kLanes) : 1;
 }
 
 void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,

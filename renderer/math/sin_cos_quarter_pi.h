@@ -1,6 +1,6 @@
 #pragma once
 // Sine and cosine of |x| <= pi/4 by polynomials (Cephes' single-precision coefficients; at most 1.25 ulp from the
-// exact values, measured over every float in the range). Written once for float and for Float8 lanes, so that a
+// exact values, measured over every float in the range). Written once for float and for FloatLanes, so that a
 // warp evaluated eight lanes at a time gives the bits of the scalar warp: libm has no vector sinf with its
 // scalar results.
 namespace isotrace {

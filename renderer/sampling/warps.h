@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/math/lanes8.h"
+#include "renderer/math/lanes.h"
 #include "renderer/math/sin_cos_quarter_pi.h"
 #include "renderer/math/vec3.h"
 

@@ -149,12 +149,12 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
                       query.hit.primID, object.material_of_part(local.part), position_error};
 }
 
-void RenderScene::intersect8(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const {
+void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     rtcIntersect8(valid, scene_, &context, &query);
     // Counted per packet, without branches where every object counts in one slot (counting lane by lane chains
-    // eight stores and loads of the same counter, and the branches on the lanes mispredict).
+    // stores and loads of the same counter, and the branches on the lanes mispredict).
     int rays = 0, hits = 0;
     for (int lane = 0; lane < 8; ++lane) {
         const bool live = valid[lane] != 0;
@@ -171,7 +171,7 @@ void RenderScene::intersect8(const std::int32_t* valid, RTCRayHit8& query, RayKi
             counters::count_closest_hit(objects_[object_of_geometry_[query.hit.geomID[lane]]].counter_slot);
 }
 
-void RenderScene::occluded8(const std::int32_t* valid, RTCRay8& query) const {
+void RenderScene::occluded_packet(const std::int32_t* valid, RTCRay8& query) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     rtcOccluded8(valid, scene_, &context, &query);

@@ -115,9 +115,9 @@ public:
     // Set by commit for scenes of that kind (see FlatLambertianScene), null otherwise.
     const FlatLambertianScene* flat_lambertian() const { return flat_lambertian_ ? &*flat_lambertian_ : nullptr; }
     // Embree's packet queries, counted as intersect() and occluded() count, for the lanes `valid` marks (-1): only
-    // for flat Lambertian scenes (no user geometry, no instances). `query`'s rays are set by the caller.
-    void intersect8(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const;
-    void occluded8(const std::int32_t* valid, RTCRay8& query) const;
+    // for flat Lambertian scenes (no user geometry, no instances). The caller sets the rays.
+    void intersect_packet(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const;
+    void occluded_packet(const std::int32_t* valid, RTCRay8& query) const;
 
     const std::vector<SceneObject>& objects() const { return objects_; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }

@@ -1,6 +1,6 @@
-// Eight lanes must round and compare exactly as the scalar operations they stand for: the packet path tracer's
-// bits depend on it.
-#include "renderer/math/lanes8.h"
+// Lanes must round and compare exactly as the scalar operations they stand for: the packet path tracer's bits
+// depend on it.
+#include "renderer/math/lanes.h"
 
 #include <gtest/gtest.h>
 
@@ -23,11 +23,13 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
 
-TEST(Lanes8, MinMaxSqrtAbsAndSignAreTheScalarOnesLaneByLane) {
-    const Float8 a{1.0f, -2.0f, kNaN, 3.0f, -0.0f, 0.0f, kInf, -kInf};
-    const Float8 b{2.0f, -3.0f, 1.0f, kNaN, 0.0f, -0.0f, 5.0f, kNaN};
-    const Float8 lo = min(a, b), hi = max(a, b), root = sqrt(abs(a)), s = sign_of(a);
-    for (int i = 0; i < 8; ++i) {
+TEST(Lanes, MinMaxSqrtAbsAndSignAreTheScalarOnesLaneByLane) {
+    const float as[] = {1.0f, -2.0f, kNaN, 3.0f, -0.0f, 0.0f, kInf, -kInf};
+    const float bs[] = {2.0f, -3.0f, 1.0f, kNaN, 0.0f, -0.0f, 5.0f, kNaN};
+    FloatLanes a, b;
+    for (int i = 0; i < kLanes; ++i) a[i] = as[i % 8] * float(1 + i / 8), b[i] = bs[i % 8] / float(1 + i / 8);
+    const FloatLanes lo = min(a, b), hi = max(a, b), root = sqrt(abs(a)), s = sign_of(a);
+    for (int i = 0; i < kLanes; ++i) {
         SCOPED_TRACE(i);
         EXPECT_EQ(bits(lo[i]), bits(std::min(a[i], b[i])));
         EXPECT_EQ(bits(hi[i]), bits(std::max(a[i], b[i])));
@@ -36,14 +38,18 @@ TEST(Lanes8, MinMaxSqrtAbsAndSignAreTheScalarOnesLaneByLane) {
     }
 }
 
-TEST(Lanes8, MasksSelectAndCount) {
-    const Float8 v{0, 1, 2, 3, 4, 5, 6, 7};
-    const Int8 odd = (Int8{0, 1, 0, 1, 0, 1, 0, 1}) != 0;
-    EXPECT_EQ(lane_bits(odd), 0b10101010u);
+TEST(Lanes, MasksSelectAndCount) {
+    FloatLanes v;
+    IntLanes parity;
+    unsigned odd_bits = 0;
+    for (int i = 0; i < kLanes; ++i) v[i] = float(i), parity[i] = i % 2, odd_bits |= unsigned(i % 2) << i;
+    const IntLanes odd = parity != 0;
+    EXPECT_EQ(lane_bits(odd), odd_bits);
+    EXPECT_EQ(lane_bits(v == float(kLanes - 1)), 1u << (kLanes - 1));
     EXPECT_TRUE(any(odd));
     EXPECT_FALSE(any(v < 0.0f));
-    const Float8 picked = select(odd, v, splat8(-1.0f));
-    for (int i = 0; i < 8; ++i) EXPECT_EQ(picked[i], i % 2 ? float(i) : -1.0f);
+    const FloatLanes picked = select(odd, v, splat(-1.0f));
+    for (int i = 0; i < kLanes; ++i) EXPECT_EQ(picked[i], i % 2 ? float(i) : -1.0f);
     EXPECT_EQ(select(true, 1.0f, 2.0f), 1.0f);
 }
 
@@ -68,17 +74,21 @@ TEST(SinCosQuarterPi, WithinAboutAnUlp) {
     EXPECT_GT(checked, 200000);
 }
 
-// The concentric map on eight lanes gives the scalar map's bits, centre and diagonals included.
-TEST(ConcentricDiskPoint, EightLanesGiveTheScalarBits) {
+// The concentric map on lanes gives the scalar map's bits, centre and diagonals included.
+TEST(ConcentricDiskPoint, LanesGiveTheScalarBits) {
     std::mt19937 random(5);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int round = 0; round < 2000; ++round) {
-        Float8 a, b;
-        for (int i = 0; i < 8; ++i) a[i] = 2 * unit(random) - 1, b[i] = 2 * unit(random) - 1;
-        if (round == 0) a = Float8{0, 0.5f, -0.5f, 0.25f, -1, 0, 1e-30f, 0.75f}, b = Float8{0, 0.5f, 0.5f, -0.25f, -1, 0.3f, 0, -0.75f};
-        Float8 x, y;
+        FloatLanes a, b;
+        for (int i = 0; i < kLanes; ++i) a[i] = 2 * unit(random) - 1, b[i] = 2 * unit(random) - 1;
+        if (round == 0) {
+            const float edge_a[] = {0, 0.5f, -0.5f, 0.25f, -1, 0, 1e-30f, 0.75f};
+            const float edge_b[] = {0, 0.5f, 0.5f, -0.25f, -1, 0.3f, 0, -0.75f};
+            for (int i = 0; i < 8; ++i) a[i] = edge_a[i], b[i] = edge_b[i];
+        }
+        FloatLanes x, y;
         concentric_disk_point(a, b, x, y);
-        for (int i = 0; i < 8; ++i) {
+        for (int i = 0; i < kLanes; ++i) {
             float ex, ey;
             concentric_disk_point(a[i], b[i], ex, ey);
             ASSERT_EQ(bits(x[i]), bits(ex)) << a[i] << ", " << b[i];
