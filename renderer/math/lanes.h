@@ -39,6 +39,7 @@ using FloatPart = float __attribute__((vector_size(32)));
 using FloatPart = float __attribute__((vector_size(16)));
 #endif
 inline constexpr int kPartLanes = int(sizeof(FloatPart) / sizeof(float));
+static_assert(kLanes % kPartLanes == 0, "the lanes must fill whole parts");
 
 template <class Op>
 inline FloatLanes by_parts(FloatLanes v, Op op) {

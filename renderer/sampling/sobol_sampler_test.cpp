@@ -193,5 +193,26 @@ TEST(SobolSampler, BlocksEqualTheDefinitionOfShuffledOwenScrambledSobol) {
     }
 }
 
+// Several samples drawn together (a packet's: one pixel, four at a time and the rest one by one; or of several
+// pixels) give what each draws alone.
+TEST(SobolSampler, BlocksDrawnTogetherEqualBlocksDrawnAlone) {
+    const SobolSampler sampler(0x5eedull);
+    for (std::size_t count : {1u, 3u, 4u, 7u, 8u}) {
+        for (bool one_pixel : {true, false}) {
+            std::vector<PixelSampleContext> contexts;
+            for (std::size_t i = 0; i < count; ++i) {
+                PixelSampleKey key = one_pixel ? kPixels[0] : kPixels[i % std::size(kPixels)];
+                key.index = 13 + std::uint32_t(i) * 977u;
+                contexts.push_back(sampler.context(key));
+            }
+            for (uint32_t block : {0u, 5u, 1000u}) {
+                std::vector<Sampler::Block> together(count);
+                sampler.sample_blocks(contexts, block, together);
+                for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(together[i], sampler.sample_block(contexts[i], block));
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace isotrace
