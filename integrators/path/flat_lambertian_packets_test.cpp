@@ -174,6 +174,18 @@ TEST(FlatLambertianPackets, RendersIdenticallyAcrossThreadsTilesAndResumption) {
     EXPECT_EQ(render(2, 16, render(1, 7, nullptr, 3), 13)->resolve().pixels, reference);
 }
 
+// The render statistics say when and how samples are traced together.
+TEST(FlatLambertianPackets, DescribedForTheStatistics) {
+    const SceneFile flat_file(room(R"({"type": "path"})", kOneLight));
+    const auto flat = load_scene(flat_file.path());
+    EXPECT_EQ(flat->integrator->samples_traced_together(*flat->scene), std::size_t(kLanes));
+    EXPECT_NE(flat->integrator->packet_description(*flat->scene).find(flat_lambertian_kernel_name()), std::string::npos);
+    const SceneFile other_file(room(R"({"type": "path"})", kOneLight + R"(, {"type": "environment", "radiance": 0.1})"));
+    const auto other = load_scene(other_file.path());
+    EXPECT_EQ(other->integrator->samples_traced_together(*other->scene), 1u);
+    EXPECT_EQ(other->integrator->packet_description(*other->scene), "");
+}
+
 // Anything the packets do not shade keeps the scene on the general loop.
 TEST(FlatLambertianPackets, OfferedOnlyForFlatMeshesDiffuseMaterialsAndPointLights) {
     const std::string path = R"({"type": "path"})";

@@ -181,6 +181,12 @@ std::size_t PathIntegrator::samples_traced_together(const RenderScene& scene) co
     return scene.flat_lambertian() ? std::size_t(kLanes) : 1;
 }
 
+std::string PathIntegrator::packet_description(const RenderScene& scene) const {
+    if (!scene.flat_lambertian()) return "";
+    return std::to_string(kLanes) + " samples of a pixel in SIMD lanes (flat Lambertian scene), " +
+           flat_lambertian_kernel_name() + " kernel";
+}
+
 void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
                                          std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                          std::span<Rgb> radiance) const {

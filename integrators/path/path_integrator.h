@@ -24,6 +24,7 @@ public:
     // On flat Lambertian scenes (RenderScene::flat_lambertian()) eight samples are traced together, paths in SIMD
     // lanes (flat_lambertian_packets.h), with radiance()'s results; elsewhere one at a time.
     std::size_t samples_traced_together(const RenderScene& scene) const override;
+    std::string packet_description(const RenderScene& scene) const override;
     void radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene, std::span<SampleStream> samples,
                              std::span<PrimaryHitRecord> primary, std::span<Rgb> radiance) const override;
     std::map<std::string, std::string> settings() const override;

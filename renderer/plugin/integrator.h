@@ -48,6 +48,11 @@ public:
         (void)scene;
         return 1;
     }
+    // How such groups are traced, for the render statistics ("" when samples are traced one at a time).
+    virtual std::string packet_description(const RenderScene& scene) const {
+        (void)scene;
+        return "";
+    }
     // Several samples of one pixel at once (consecutive sample indices): radiance[i] for camera_rays[i] with
     // samples[i] and primary[i]. A sample's result must not depend on its companions. By default, radiance() for
     // each in turn.

@@ -15,6 +15,7 @@ nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& r
     stats["sampler"] = scene.sampler_type;
     stats["seed"] = scene.seed;
     stats["threads"] = threads;
+    stats["packets"] = scene.integrator->packet_description(*scene.scene);
     stats["spp"] = result.completed_spp;
     stats["spp_max"] = result.max_spp;
     stats["spp_requested"] = scene.spp;
@@ -64,6 +65,8 @@ std::string format_statistics(const nlohmann::json& s) {
                   s["spp"].get<int>(), s["pixels_rendered"].get<long long>(), s["samples_per_second"].get<double>(),
                   s["threads"].get<int>(), s["partial"].get<bool>() ? " (partial)" : "");
     out << line;
+    if (s.contains("packets") && !s["packets"].get<std::string>().empty())
+        out << "  packets   " << s["packets"].get<std::string>() << "\n";
     std::snprintf(line, sizeof line, "  rays      %llu total (%llu camera, %llu secondary, %llu shadow), %.2f Mrays/s\n",
                   s["rays_total"].get<unsigned long long>(), s["camera_rays"].get<unsigned long long>(),
                   s["secondary_rays"].get<unsigned long long>(), s["shadow_rays"].get<unsigned long long>(),
