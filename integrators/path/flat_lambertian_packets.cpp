@@ -42,7 +42,9 @@ RgbLanes operator*(const RgbLanes& a, FloatLanes s) { return {a.r * s, a.g * s, 
 RgbLanes select(IntLanes mask, const RgbLanes& a, const RgbLanes& b) {
     return {select(mask, a.r, b.r), select(mask, a.g, b.g), select(mask, a.b, b.b)};
 }
-FloatLanes max_channel(const RgbLanes& c) { return select(c.r > c.g, select(c.r > c.b, c.r, c.b), select(c.g > c.b, c.g, c.b)); }
+FloatLanes max_channel(const RgbLanes& c) {
+    return select(c.r > c.g, select(c.r > c.b, c.r, c.b), select(c.g > c.b, c.g, c.b));
+}
 IntLanes is_black(const RgbLanes& c) { return (c.r == 0.0f) & (c.g == 0.0f) & (c.b == 0.0f); }
 
 // orthonormal_basis around the unit normal n, and the frame's changes of basis (ShadingFrame).
@@ -61,7 +63,8 @@ struct FrameLanes {
 };
 
 // SurfaceHit::spawn_origin: off the surface along the geometric normal, to the side `direction` leaves on.
-Vec3Lanes spawn_origin(const Vec3Lanes& position, const Vec3Lanes& normal, FloatLanes position_error, const Vec3Lanes& direction) {
+Vec3Lanes spawn_origin(const Vec3Lanes& position, const Vec3Lanes& normal, FloatLanes position_error,
+                       const Vec3Lanes& direction) {
     const FloatLanes side = select(dot(normal, direction) >= 0.0f, splat(1.0f), splat(-1.0f));
     return position + normal * (side * position_error);
 }
@@ -199,7 +202,9 @@ void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const R
         alignas(64) std::int32_t geometry[kLanes];
         store_lanes(geometry, select(alive, load_lanes(reinterpret_cast<const std::int32_t*>(query.hit.geomID)), splat(0)));
         const auto gather = [&](float Rgb::*channel) {
-            const auto r = [&](std::size_t lane) { return flat.reflectance_of_geometry[std::size_t(geometry[lane])].*channel; };
+            const auto r = [&](std::size_t lane) {
+                return flat.reflectance_of_geometry[std::size_t(geometry[lane])].*channel;
+            };
             return lanes_of(r);
         };
         const RgbLanes reflectance{gather(&Rgb::r), gather(&Rgb::g), gather(&Rgb::b)};
@@ -260,7 +265,8 @@ void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const R
             const Vec3Lanes wi = frame.to_local(to_light);
             const RgbLanes f_cos = select(wo.z * wi.z > 0.0f, lambert, RgbLanes{zero, zero, zero}) * abs(wi.z);
             const RgbLanes throughput_f = throughput * f_cos;
-            const IntLanes shadow = alive & ~is_black(incident) & ~is_black(throughput_f) & (dot(to_light, normal) * wi.z > 0.0f);
+            const IntLanes shadow =
+                alive & ~is_black(incident) & ~is_black(throughput_f) & (dot(to_light, normal) * wi.z > 0.0f);
             if (any(shadow)) {
                 alignas(64) EmbreeRays shadow_rays;
                 const FloatLanes shadow_far = select(distance == kInfinity, distance, distance * (1 - 1e-4f));

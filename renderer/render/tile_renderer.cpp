@@ -50,7 +50,8 @@ struct StopFlags {
 std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile, std::uint32_t last,
                          const StopFlags& flags) {
     constexpr std::size_t kGroup = Integrator::kMaxSamplesTogether;
-    const std::size_t group = std::clamp<std::size_t>(loaded.integrator->samples_traced_together(*loaded.scene), 1, kGroup);
+    const std::size_t group =
+        std::clamp<std::size_t>(loaded.integrator->samples_traced_together(*loaded.scene), 1, kGroup);
     std::array<SampleStream, kGroup> streams;
     std::array<Ray, kGroup> rays;
     std::array<CameraSample, kGroup> samples;
@@ -63,7 +64,8 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
                 if (flags.raised()) return taken;
                 const std::size_t count = std::min<std::size_t>(group, last - first);
                 for (std::size_t i = 0; i < count; ++i)
-                    streams[i] = SampleStream(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
+                    streams[i] = SampleStream(*loaded.sampler,
+                                              {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
                 SampleStream::fill_caches(std::span(streams.data(), count));  // the camera's block, for all at once
                 for (std::size_t i = 0; i < count; ++i) {
                     const FilterSample offset = loaded.filter->sample(streams[i].next_2d());

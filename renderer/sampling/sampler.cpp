@@ -1,5 +1,7 @@
 #include "renderer/sampling/sampler.h"
 
+#include <cassert>
+
 #include "renderer/sampling/hash.h"
 #include "renderer/sampling/owen_scramble.h"
 
@@ -23,7 +25,9 @@ void SampleStream::next_blocks(std::span<SampleStream> streams, unsigned live, s
     uint32_t block = 0;
     for (std::size_t i = 0; i < streams.size(); ++i) {
         if (!(live >> i & 1u)) continue;
-        block = streams[i].take_block();
+        const uint32_t taken = streams[i].take_block();
+        assert(count == 0 || taken == block);  // the streams stand in one block
+        block = taken;
         contexts[count++] = streams[i].context_;
     }
     if (count == 0) return;
