@@ -19,7 +19,7 @@ namespace {
 
 using isotrace::select;  // the lanes' own, beside the overloads for vectors and colours below
 
-// Vectors and colours of eight lanes. Each operation is the scalar one's, in the scalar one's order (Vec3f and
+// Vectors and colours in lanes. Each operation is the scalar one's, in the scalar one's order (Vec3f and
 // Rgb in renderer/math): that is what keeps the lanes' bits those of PathIntegrator::radiance.
 struct Vec3Lanes {
     FloatLanes x, y, z;
@@ -99,8 +99,10 @@ FloatLanes lanes_of(Value value) {
     }(std::make_index_sequence<kLanes>{});
 }
 
-// Values written one lane at a time go to an array and are loaded as a vector once: a lane inserted into a vector
-// in place is a store into it followed by a load of all of it, which waits for the store (failed store forwarding).
+// Values written one lane at a time (where a lane may be skipped) go to an array and are loaded as a vector once: a
+// lane inserted into a vector in place is a store into it followed by a load of all of it, which waits for the
+// store (failed store forwarding) once per lane instead of once per vector. Where every lane is read, lanes_of is
+// cheaper still.
 struct LaneArrays3 {
     alignas(64) float x[kLanes]{}, y[kLanes]{}, z[kLanes]{};
     void set(std::size_t lane, float a, float b, float c) { x[lane] = a, y[lane] = b, z[lane] = c; }
