@@ -218,7 +218,7 @@ void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const R
                 record.albedo = flat.reflectance_of_geometry[std::size_t(geometry[lane])];
                 record.shading_normal = {normal.x[lane], normal.y[lane], normal.z[lane]};
                 record.position = {position.x[lane], position.y[lane], position.z[lane]};
-                record.object_id = flat.object_of_geometry[std::size_t(geometry[lane])];
+                record.object_id = scene.object_of_geometry(unsigned(geometry[lane]));
                 record.primitive_id = query.hit.primID[lane];
             }
         }

@@ -63,23 +63,23 @@ inline ThreadBlock& local_block() {
     return *thread_block;
 }
 
-inline void bump(Counter& counter, std::uint64_t amount = 1) {
+inline void bump(Counter& counter, std::uint64_t amount) {
     counter.store(counter.load(std::memory_order_relaxed) + amount, std::memory_order_relaxed);
 }
 
 }  // namespace detail
 
 // Inline: the counts sit in the middle of a ray's arithmetic, where a call spills the caller's vector registers.
-inline void count_ray(RayKind kind) { detail::bump(detail::local_block().rays[int(kind)]); }
-// Several at once (packets of rays).
+// Several at once where rays travel in packets.
 inline void count_rays(RayKind kind, std::uint64_t count) { detail::bump(detail::local_block().rays[int(kind)], count); }
+inline void count_ray(RayKind kind) { count_rays(kind, 1); }
+inline void count_test(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][0], 1); }
+inline void count_candidate_hit(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][1], 1); }
 inline void count_closest_hits(int slot, std::uint64_t count) {
     detail::bump(detail::local_block().geometry[std::size_t(slot)][2], count);
 }
-inline void count_test(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][0]); }
-inline void count_candidate_hit(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][1]); }
-inline void count_closest_hit(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][2]); }
-inline void count_nan_sample() { detail::bump(detail::local_block().nan_samples); }
+inline void count_closest_hit(int slot) { count_closest_hits(slot, 1); }
+inline void count_nan_sample() { detail::bump(detail::local_block().nan_samples, 1); }
 
 // Plugin-specific counters: register a name once, then add to its slot from any thread. Names beyond the table's
 // 1023 share the slot "counters.overflow". A counter registered with `total_slot` (a slot registered before it) is

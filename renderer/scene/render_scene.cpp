@@ -189,7 +189,6 @@ void RenderScene::describe_flat_lambertian() {
     }
     flat.reflectance_of_geometry.resize(object_of_geometry_.size());
     flat.counter_slot = objects_.empty() ? -1 : objects_[0].counter_slot;
-    flat.object_of_geometry = object_of_geometry_;
     for (std::size_t id = 0; id < object_of_geometry_.size(); ++id) {
         const SceneObject& object = objects_[object_of_geometry_[id]];
         // Embree-hit shading has no parts: its material is that of part 0.

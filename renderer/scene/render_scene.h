@@ -64,7 +64,6 @@ struct LightChoice {
 // tracer needs to shade eight paths at a time with Embree's packet queries (integrators/path/flat_lambertian_packets.h).
 struct FlatLambertianScene {
     std::vector<Rgb> reflectance_of_geometry;         // by Embree geometry id
-    std::vector<std::uint32_t> object_of_geometry;    // by Embree geometry id
     std::vector<IsotropicPoint> lights;               // as all_lights() orders them
     int counter_slot = -1;                            // the objects' counter slot if they all share one, else -1
 };
@@ -120,6 +119,8 @@ public:
     void occluded_packet(const std::int32_t* valid, RTCRay8& query) const;
 
     const std::vector<SceneObject>& objects() const { return objects_; }
+    // The index in objects() of the object Embree knows as top-level geometry `id`.
+    std::uint32_t object_of_geometry(unsigned id) const { return object_of_geometry_[id]; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
     const BuildStatistics& build_statistics() const { return build_statistics_; }
     Bounds3f bounds() const;
