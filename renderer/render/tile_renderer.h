@@ -39,7 +39,8 @@ struct RenderOptions {
     std::optional<double> checkpoint_interval_seconds;
     std::function<void(const Film&)> on_checkpoint;
     // Called on the rendering thread at every pass boundary where all pixels have the same power-of-two sample
-    // count (passes end at 1, 2, 4, 8, ... samples), at most once per count; returning true ends the render.
+    // count (passes end at 1, 2, 4, 8, ... samples; the first at the number of samples the integrator traces
+    // together, 8 for SIMD lanes), at most once per count; returning true ends the render.
     // What it sees depends only on the image at those counts, never on timing or threads, so a stop it decides
     // is reproducible (isotrace render --target-error).
     std::function<bool(const Film&)> stop_at_pass_end;

@@ -540,5 +540,48 @@ TEST(TileRenderer, PassesRealignToPowersOfTwoAfterAnOddCount) {
     EXPECT_FALSE(result.stopped_at_pass_end);
 }
 
+
+// A scene whose path tracer traces eight samples of a pixel together (flat meshes, Lambertian, a point light): its
+// passes start at eight samples, so that no packet runs with lanes left empty, and then double as before.
+TEST(TileRenderer, FirstPassIsTheIntegratorsGroupOfSamples) {
+    const SceneFile file(R"({"isotrace": 1,
+  "film": {"resolution": [12, 10], "spp": 13},
+  "camera": {"type": "perspective", "fov": 50, "look_at": {"eye": [0, 1.5, 4], "target": [0, 0, 0]}},
+  "integrator": {"type": "path", "max_depth": 3},
+  "materials": {"grey": {"type": "diffuse", "reflectance": 0.6}},
+  "lights": [{"type": "point", "position": [1, 3, 1], "intensity": 10}],
+  "objects": [{"material": "grey", "shape": {"type": "mesh",
+    "positions": [[-4, 0, -4], [4, 0, -4], [4, 0, 4], [-4, 0, 4]], "triangles": [[0, 2, 1], [0, 3, 2]]}}]})");
+    const auto scene = load_scene(file.path(), {});
+    ASSERT_EQ(scene->integrator->samples_traced_together(*scene->scene), 8u);
+
+    const RenderResult thirteen = render_with_threads(*scene, 2, options_for(*scene, 4));
+    EXPECT_EQ(thirteen.completed_spp, 13);
+    EXPECT_FALSE(thirteen.partial);
+    EXPECT_EQ(thirteen.passes, 2);  // 8, then the 5 left
+
+    std::vector<std::uint32_t> asked;
+    RenderOptions options = options_for(*scene, 4);
+    options.spp = 32;
+    options.stop_at_pass_end = [&](const Film& film) {
+        asked.push_back(film.sample_count_range().min);
+        return false;
+    };
+    const RenderResult result = render_with_threads(*scene, 2, options);
+    EXPECT_EQ(asked, (std::vector<std::uint32_t>{8, 16, 32}));
+    EXPECT_EQ(result.passes, 3);
+
+    // A film left at 3 samples goes on to 8, then 16: the same boundaries as an uninterrupted render.
+    RenderOptions first = options_for(*scene, 4);
+    first.spp = 3;
+    RenderResult three = render_with_threads(*scene, 1, first);
+    ASSERT_EQ(three.completed_spp, 3);
+    asked.clear();
+    options.spp = 16;
+    const RenderResult resumed = render_with_threads(*scene, 2, options, std::move(three.film));
+    EXPECT_EQ(asked, (std::vector<std::uint32_t>{8, 16}));
+    EXPECT_EQ(resumed.passes, 2);
+}
+
 }  // namespace
 }  // namespace isotrace

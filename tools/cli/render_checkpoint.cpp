@@ -33,7 +33,9 @@ void save_checkpoint(const std::filesystem::path& path, const LoadedScene& scene
           {"completed_spp", counts.min},
           {"max_spp", counts.max},
           {"samples", counts.total}}},
-        {"pass_schedule", "passes end at 1, 2, 4, 8, ... samples; every pixel continues at its own sample count"},
+        {"pass_schedule",
+         "passes end at 1, 2, 4, 8, ... samples, the first at the integrator's group of samples traced together; every "
+         "pixel continues at its own sample count"},
     };
     write_checkpoint(path, {metadata.dump(1), film.state()});
 }
