@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "renderer/core/huge_page_allocator.h"
 #include "renderer/film/aov.h"
 #include "renderer/math/rgb.h"
 #include "renderer/plugin/camera.h"
@@ -157,8 +158,8 @@ private:
     static void copy_pixels(const Film& from, Film& to, const PixelBounds& area);
 
     FilmSettings settings_;
-    std::vector<Accumulator> beauty_;
-    std::vector<AovAccumulator> aovs_;  // empty unless AOVs that need them were requested
+    std::vector<Accumulator, HugePageAllocator<Accumulator>> beauty_;
+    std::vector<AovAccumulator, HugePageAllocator<AovAccumulator>> aovs_;  // empty unless AOVs need them
 };
 
 }  // namespace isotrace
