@@ -23,7 +23,8 @@ struct HugePageAllocator {
     HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
 
     T* allocate(std::size_t count) {
-        if (count > std::size_t(-1) / sizeof(T) - kHugePageBytes) throw std::bad_array_new_length();
+        // The size rounded up to whole huge pages must fit a size_t.
+        if (count > (std::size_t(-1) - kHugePageBytes) / sizeof(T)) throw std::bad_array_new_length();
         const std::size_t bytes = count * sizeof(T);
         if (bytes < kHugePageBytes) return std::allocator<T>().allocate(count);
         const std::size_t rounded = (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;

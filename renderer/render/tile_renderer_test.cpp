@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <set>
@@ -145,6 +146,14 @@ RenderOptions options_for(const LoadedScene& scene, int tile_size) {
     options.tile_size = tile_size;
     options.spp = scene.spp;
     return options;
+}
+
+// A stop_at_pass_end that never stops and records the sample count of each pass end it is asked at.
+std::function<bool(const Film&)> recording_pass_ends(std::vector<std::uint32_t>& asked) {
+    return [&asked](const Film& film) {
+        asked.push_back(film.sample_count_range().min);
+        return false;
+    };
 }
 
 int channel(const ImageBuffer& image, const std::string& name) {
@@ -530,16 +539,12 @@ TEST(TileRenderer, PassesRealignToPowersOfTwoAfterAnOddCount) {
     std::vector<std::uint32_t> asked;
     RenderOptions options = options_for(*scene, 8);
     options.spp = 32;
-    options.stop_at_pass_end = [&](const Film& film) {
-        asked.push_back(film.sample_count_range().min);
-        return false;
-    };
+    options.stop_at_pass_end = recording_pass_ends(asked);
     const RenderResult result = render_with_threads(*scene, 2, options, std::move(three.film));
     EXPECT_EQ(asked, (std::vector<std::uint32_t>{4, 8, 16, 32}));
     EXPECT_EQ(result.passes, 4);
     EXPECT_FALSE(result.stopped_at_pass_end);
 }
-
 
 // A scene whose path tracer traces eight samples of a pixel together (flat meshes, Lambertian, a point light): its
 // passes start at eight samples, so that no packet runs with lanes left empty, and then double as before.
@@ -563,10 +568,7 @@ TEST(TileRenderer, FirstPassIsTheIntegratorsGroupOfSamples) {
     std::vector<std::uint32_t> asked;
     RenderOptions options = options_for(*scene, 4);
     options.spp = 32;
-    options.stop_at_pass_end = [&](const Film& film) {
-        asked.push_back(film.sample_count_range().min);
-        return false;
-    };
+    options.stop_at_pass_end = recording_pass_ends(asked);
     const RenderResult result = render_with_threads(*scene, 2, options);
     EXPECT_EQ(asked, (std::vector<std::uint32_t>{8, 16, 32}));
     EXPECT_EQ(result.passes, 3);
