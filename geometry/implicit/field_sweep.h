@@ -734,8 +734,9 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
             } else if (non_polynomial_ == 0) {
                 ++work.polynomial_solves;
                 const Polynomial& on_piece = *piece_polynomial;
-                // A start within rounding of zero is a root at t0 the previous piece already ended on: no step.
-                if (!on_piece.is_zero_within_rounding(0)) {
+                // A start of exactly zero is a root at t0 the previous piece already ended on: no step. (Any other
+                // start is taken at its sign: near zero, a crossing at t0 is where the root lies, within rounding.)
+                if (on_piece[0] != 0) {
                     const int sign_at_start = sign_of(on_piece[0]);
                     if (sign_at_start != previous_sign && crossing(t0, previous_sign)) return;
                     previous_sign = sign_at_start;
