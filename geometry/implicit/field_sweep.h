@@ -328,17 +328,14 @@ template <class Kernel, bool kMetaballsOnly>
 double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t> listed, const SweepStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
-    // Most listed elements are far from the stretch: their compact bounding spheres reject them, four at a time.
-    // The survivors' elements are fetched as they are found and examined only after the whole list: their loads
-    // (a cache miss each, most often) then overlap instead of each waiting behind the tests of the one before.
+    // Most listed elements are far from the stretch (~15 of ~20 on blobs_1k): their compact bounding spheres reject
+    // them, four at a time and without a branch per element (walking each group's passing lanes instead
+    // mispredicted its exits; that cost 1–10 %, and prefetching the survivors' elements 3–4 % more, measured).
     near_.clear();
     const double length_d = length(d);
     const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
                                      0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
-    for_each_near(listed, spheres_, segment, [&](std::uint32_t index) {
-        __builtin_prefetch(&elements_[index]);
-        near_.push_back(index);
-    });
+    append_near(listed, spheres_, segment, near_);
     inverse_length2_ = 1 / dot(d, d);
     // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept
     // because of it that misses the stretch is dropped by order_candidates' exact chord.

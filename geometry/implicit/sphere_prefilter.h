@@ -135,4 +135,27 @@ template <class Test, class Visit>
     }
 }
 
+// Appends to `out` the listed elements (in list order) whose bounding sphere passes `test`, four at a time, without
+// a branch per element: each group writes all four and keeps those that passed.
+template <class Test, class Out>
+[[gnu::always_inline]] inline void append_near(std::span<const std::uint32_t> ids,
+                                               std::span<const BoundingSphere> spheres, const Test& test, Out& out) {
+    const std::size_t n = ids.size();
+    std::size_t kept = out.size();
+    std::uint32_t* slot = out.room_for(n + 4) - kept;
+    for (std::size_t first = 0; first < n; first += 4) {
+        std::uint32_t group[4];
+        for (std::size_t k = 0; k < 4; ++k) group[k] = ids[std::min(first + k, n - 1)];
+        const unsigned lanes_in_list = n - first >= 4 ? 0xfu : (1u << (n - first)) - 1;
+        const unsigned near =
+            test.test(SphereLanes(spheres[group[0]], spheres[group[1]], spheres[group[2]], spheres[group[3]])) &
+            lanes_in_list;
+        for (std::size_t k = 0; k < 4; ++k) {
+            slot[kept] = group[k];
+            kept += (near >> k) & 1u;
+        }
+    }
+    out.extend_to(kept);
+}
+
 }  // namespace isotrace

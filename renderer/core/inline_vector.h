@@ -39,6 +39,14 @@ public:
         return *new (data_ + size_++) T(std::forward<Args>(args)...);
     }
     T& push_back(const T& value) { return emplace_back(value); }
+    // Room for `count` more values past the end, written by a caller that then keeps them with truncate's
+    // counterpart extend_to: an append of a variable number of values without a branch per value.
+    T* room_for(std::size_t count) {
+        while (size_ + count > capacity_) grow();
+        return data_ + size_;
+    }
+    // Keeps the values written past the end up to `count` in all (count ≤ size() + the room asked for).
+    void extend_to(std::size_t count) { size_ = count; }
     // Keeps the first `count` elements.
     void truncate(std::size_t count) {
         if (count < size_) size_ = count;
