@@ -424,10 +424,9 @@ void FieldSweep<Kernel, kMetaballsOnly>::join_until(double t, const SweepStretch
 
 template <class Kernel, bool kMetaballsOnly>
 void FieldSweep<Kernel, kMetaballsOnly>::drop_finished() {
-    const auto finished = std::count_if(joined_.begin(), joined_.end(), [](const Active& a) {
-        return a.next_event == field_sweep_detail::kUnset;
-    });
-    if (2 * std::size_t(finished) < joined_.size()) return;
+    std::size_t finished = 0;  // counted without a branch per element (std::count_if's mispredicted, callgrind)
+    for (const Active& a : joined_) finished += a.next_event == field_sweep_detail::kUnset ? 1 : 0;
+    if (2 * finished < joined_.size()) return;
     std::size_t kept = 0;
     for (std::size_t i = 0; i < joined_.size(); ++i) {
         if (joined_[i].next_event == field_sweep_detail::kUnset) continue;

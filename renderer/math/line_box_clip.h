@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "renderer/math/branch_free.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
@@ -29,8 +30,12 @@ inline std::optional<LineBoxClip> clip_line_to_box(const Vec3d& lower, const Vec
         double t_near = (lower[axis] - origin[axis]) / direction[axis];
         double t_far = (upper[axis] - origin[axis]) / direction[axis];
         if (t_near > t_far) std::swap(t_near, t_far);
-        if (t_near > clip.t_enter) clip.t_enter = t_near, clip.enter_axis = axis;
-        if (t_far < clip.t_exit) clip.t_exit = t_far, clip.exit_axis = axis;
+        // Which slab ends the stretch is data (a blob ray clips a cell per query): selects, not branches.
+        const bool enters_later = t_near > clip.t_enter, exits_earlier = t_far < clip.t_exit;
+        clip.enter_axis = enters_later ? axis : clip.enter_axis;
+        clip.exit_axis = exits_earlier ? axis : clip.exit_axis;
+        clip.t_enter = max_branch_free(t_near, clip.t_enter);
+        clip.t_exit = min_branch_free(t_far, clip.t_exit);
     }
     if (!(clip.t_enter <= clip.t_exit)) return std::nullopt;
     return clip;
