@@ -51,6 +51,8 @@ void BlobGroup::build_index() {
         const BoundingSphere& s = spheres_[i];
         centre_bound_ = std::max(centre_bound_, length(Vec3d(s.centre[0], s.centre[1], s.centre[2])));
     }
+    metaball_sweep_ = with_kernel(
+        [&](const auto& kernel) { return MetaballSweep<std::decay_t<decltype(kernel)>>::applies(kernel, elements_); });
     cells_.build(elements_);
     cells_.restrict_to_surface([&](const WorldBounds& box, std::span<const std::uint32_t> ids) {
         return with_kernel([&](const auto& kernel) { return surface_region(box, ids, elements_, kernel, threshold_); });
@@ -83,10 +85,15 @@ void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d&
     if (!clip || !std::isfinite(clip->t_enter) || !std::isfinite(clip->t_exit)) return;
     const SweepStretch stretch{origin, direction, clip->t_enter, clip->t_exit, t_min, t_max};
     with_kernel([&](const auto& kernel) {
+        using Kernel = std::decay_t<decltype(kernel)>;
+        const std::span<const Metacube> elements(elements_);
+        const std::span<const BoundingSphere> spheres(spheres_);
+        if (metaball_sweep_) {
+            MetaballSweep<Kernel> sweep(kernel, threshold_, elements, spheres, centre_bound_);
+            if (sweep.run(cells_.elements_of(cell), stretch, work, report, crossed_before)) return;
+        }
         const auto sweep_with = [&]<bool kMetaballsOnly>() {
-            FieldSweep<std::decay_t<decltype(kernel)>, kMetaballsOnly> sweep(
-                kernel, threshold_, std::span<const Metacube>(elements_), std::span<const BoundingSphere>(spheres_),
-                centre_bound_);
+            FieldSweep<Kernel, kMetaballsOnly> sweep(kernel, threshold_, elements, spheres, centre_bound_);
             sweep.run(cells_.elements_of(cell), stretch, work, report, crossed_before);
         };
         if (metaballs_only_) sweep_with.template operator()<true>();

@@ -13,6 +13,7 @@
 #include "geometry/implicit/blob_cells.h"
 #include "geometry/implicit/field_function.h"
 #include "geometry/implicit/field_sweep.h"
+#include "geometry/implicit/metaball_sweep.h"
 #include "geometry/implicit/metacube.h"
 #include "renderer/math/transform.h"
 
@@ -99,6 +100,7 @@ private:
     std::vector<BoundingSphere> spheres_;  // per element, for the sweep's first test
     double centre_bound_ = 0;              // the largest |centre| of spheres_ (scales that test's float margin)
     bool metaballs_only_ = false;          // no metacube, no hard cube: the sweep compiles their cases out
+    bool metaball_sweep_ = false;          // metaballs of a one-piece polynomial kernel: MetaballSweep applies
     BlobCells cells_;
 };
 

@@ -36,65 +36,21 @@
 #include "geometry/implicit/metacube.h"
 #include "geometry/implicit/metacube_ray_slices.h"
 #include "geometry/implicit/sphere_prefilter.h"
+#include "geometry/implicit/sweep_piece.h"
 #include "geometry/polynomial/bernstein.h"
-#include "geometry/polynomial/bracketed_root.h"
-#include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/quadratic_roots.h"
 #include "renderer/core/inline_vector.h"
 #include "renderer/math/branch_free.h"
 
 namespace isotrace {
 
-// Work done by ray queries, for the statistics.
-struct BlobQueryWork {
-    std::uint64_t queries = 0;            // cells swept
-    std::uint64_t queries_bounded = 0;    // of which the candidates' bound proved free of crossings at once
-    std::uint64_t candidates = 0;         // listed elements whose bounding sphere the swept stretch meets
-    std::uint64_t joined = 0;             // of which the sweep reached (sliced and summed)
-    std::uint64_t pieces = 0;             // ray pieces examined
-    std::uint64_t skipped_pieces = 0;     // of which the Bernstein or interval bound proved free of crossings
-    std::uint64_t polynomial_solves = 0;
-    std::uint64_t lipschitz_searches = 0;
-    std::uint64_t root_iterations = 0;  // Newton/bisection steps of the polynomial solves and Lipschitz searches
-    std::uint64_t roots = 0;            // crossings reported (for occlusion, also those proven before a stretch)
-
-    BlobQueryWork& operator+=(const BlobQueryWork& other) {
-        queries += other.queries;
-        queries_bounded += other.queries_bounded;
-        candidates += other.candidates;
-        joined += other.joined;
-        pieces += other.pieces;
-        skipped_pieces += other.skipped_pieces;
-        polynomial_solves += other.polynomial_solves;
-        lipschitz_searches += other.lipschitz_searches;
-        root_iterations += other.root_iterations;
-        roots += other.roots;
-        return *this;
-    }
-};
-
-// A sign change of F: entering the surface (F becomes > 0) or leaving it.
-struct FieldCrossing {
-    double t = 0;
-    bool entering = false;
-    std::uint32_t element = 0;  // an element whose support contains the crossing
-};
-
-// The stretch of a ray one sweep examines.
-struct SweepStretch {
-    Vec3d origin, direction;  // direction need not be unit length
-    double t_begin = 0, t_end = 0;  // the part swept (a cell's part of the ray)
-    double t_min = 0, t_max = 0;    // crossings are reported only inside (t_min, t_max)
-};
-
 namespace field_sweep_detail {
 
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 // Depth of the Lipschitz search: 2⁻⁹⁰ of a piece is far below double resolution, so the stack never limits it.
 constexpr int kMaxSearchDepth = 90;
 constexpr double kUnset = std::numeric_limits<double>::infinity();
 
-inline int sign_of(double value) { return value > 0 ? 1 : -1; }
+using sweep_piece::sign_of;
 
 // An element's term of the sum on one piece: a kernel piece (degree ≤ 3 in x = r²/R²) composed with x(s), a
 // quadratic in s, so of degree ≤ 6. A plain array: the sum adds whole arrays, and no Polynomial is built per term.
@@ -168,13 +124,6 @@ inline Range quadratic_range(const QuadraticAbout& q, double vertex, double s0, 
     const double nearest = min_branch_free(max_branch_free(vertex, s0), s1);
     return {max_branch_free(min_branch_free(min_branch_free(at_s0, at_s1), q(nearest)), 0.0),
             max_branch_free(at_s0, at_s1)};
-}
-
-// Σ |cᵢ|·xⁱ: bounds |p(s)| for |s| ≤ x, and the effect of coefficient errors.
-inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c, double x) {
-    double m = 0;
-    for (int i = kMaxPolynomialDegree; i >= 0; --i) m = m * x + std::abs(c[std::size_t(i)]);
-    return m;
 }
 
 }  // namespace field_sweep_detail
@@ -666,9 +615,8 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
     if (previous_sign > 0 && t0 > stretch.t_min && at_start > 1e-9 * (threshold_ + counting_weights()) &&
         crossed_before())
         return;
-    // F on the current piece in u ∈ [0,1], set for the polynomial pieces that ranges do not settle. Declared once per
-    // stretch: declared per piece, even as an optional, GCC cleared its 104 bytes (a rep stos) on every piece.
-    std::optional<Polynomial> piece_polynomial;
+    // F on the current piece in u ∈ [0,1], set for the polynomial pieces that ranges do not settle.
+    Polynomial piece_polynomial;
     while (t0 < stretch.t_end) {
         // The piece [t0, t1] ends at the next event.
         double t1 = stretch.t_end;
@@ -700,14 +648,9 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
             if (settled) {
                 solve = false;
             } else if (non_polynomial_ == 0) {
-                // Bernstein test on the sum, allowing for the rounding of its terms' sum and of the shift to the
-                // piece (2·degree + 2 operations per coefficient).
-                const Polynomial& sum = polynomial_sum();
-                piece_polynomial = sum.compose_linear(s0, width);
-                const double rounding = 4 * kEpsilon * (sum_terms_ + 2 * sum.degree() + 2) *
-                                        magnitude_at(sum_magnitude_, std::abs(s0) + width);
-                start_sign = sign_of((*piece_polynomial)[0]);
-                variations = bernstein_sign_variations(*piece_polynomial, rounding);
+                variations = sweep_piece::bernstein_variations(polynomial_sum(), sum_magnitude_, sum_terms_, s0,
+                                                               width, piece_polynomial);
+                start_sign = sign_of(piece_polynomial[0]);
                 solve = variations != 0;
             } else {
                 // Tighter: the polynomial part (with −T) bounded by its Bernstein hull, the non-polynomial
@@ -728,50 +671,9 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
                 if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
                 previous_sign = start_sign;
             } else if (non_polynomial_ == 0) {
-                ++work.polynomial_solves;
-                const Polynomial& on_piece = *piece_polynomial;
-                // A start of exactly zero is a root at t0 the previous piece already ended on: no step. (Any other
-                // start is taken at its sign: near zero, a crossing at t0 is where the root lies, within rounding.)
-                if (on_piece[0] != 0) {
-                    const int sign_at_start = sign_of(on_piece[0]);
-                    if (sign_at_start != previous_sign && crossing(t0, previous_sign)) return;
-                    previous_sign = sign_at_start;
-                }
-                RootFinderWork root_work;
-                const double at_start = on_piece[0], at_end = on_piece.evaluate(1);
-                const bool bracketed = variations == 1 && sign_of(at_start) != sign_of(at_end);
-                if (bracketed) {
-                    // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points
-                    // to find first (a third of the cost of a hit, measured).
-                    const double root = refine_bracketed_root(on_piece, 0, 1, at_start, at_end, {}, &root_work);
-                    const int after = sign_of(at_end);
-                    if (after != previous_sign) {
-                        const int before = previous_sign;
-                        previous_sign = after;
-                        if (crossing(t0 + root * width, before)) {
-                            work.root_iterations += root_work.iterations;
-                            return;
-                        }
-                    }
-                }
-                // Roots in order; a tangent root touches without crossing, and a root whose direction repeats the
-                // last sign change is the piece-start step found again.
-                for (double from = 0; !bracketed && from <= 1;) {
-                    const auto root = first_root(on_piece, from, 1, {}, &root_work);
-                    if (!root) break;
-                    from = root->t + 1e-12;
-                    if (root->tangent) continue;
-                    const int after = on_piece.evaluate_with_derivative(root->t).derivative > 0 ? 1 : -1;
-                    if (after == previous_sign) continue;
-                    const int before = previous_sign;
-                    previous_sign = after;
-                    if (crossing(t0 + root->t * width, before)) {
-                        work.root_iterations += root_work.iterations;
-                        return;
-                    }
-                }
-                work.root_iterations += root_work.iterations;
-                if (!on_piece.is_zero_within_rounding(1)) previous_sign = sign_of(on_piece.evaluate(1));
+                if (sweep_piece::polynomial_piece_crossings(piece_polynomial, variations, t0, width, previous_sign,
+                                                            work, crossing))
+                    return;
             } else {
                 ++work.lipschitz_searches;
                 const int sign_at_start = sign_of(value(t0 + width * 1e-12));

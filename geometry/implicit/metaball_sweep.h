@@ -1,0 +1,428 @@
+#pragma once
+// The blob sweep for groups of metaballs alone whose kernel is one polynomial piece on its whole support (Kim's,
+// Wyvill's and Murakami's: the benchmark clouds and most scenes). The same pieces, bounds, Bernstein test and
+// solving as the general sweep (field_sweep.h, sweep_piece.h), with the cell's candidates side by side in lanes of
+// four (double4.h) instead of in a list of joined elements ordered by entry:
+//   1. the float sphere test keeps the listed elements the stretch may come near; their exact nearest approaches
+//      bound F from above (below T the stretch holds no crossing: nearly half the queries end here), and those
+//      whose support's chord meets the stretch become the candidates, in ascending element order;
+//   2. a metaball has one piece, its support's chord [t_enter, t_exit], so its term of the sum is one polynomial
+//      about the stretch's start for the whole sweep: every candidate's term is composed at once, four lanes at a
+//      time, when a piece first needs a polynomial;
+//   3. pieces run between consecutive entries and exits: the next event is the least entry or exit beyond the
+//      piece's start (a minimum over the lanes, no sort), and the elements that count on a piece are a mask of the
+//      lanes (entered, not left), so each bound and sum is a masked sum over whole lanes: no branch per element,
+//      where the general sweep's loops over 5–8 joined elements and its sort mispredicted (docs/decisions.md).
+// It takes at most kMaxLanes near elements (nearly every query of the benchmark clouds): run returns false for more,
+// having done nothing, and the general sweep takes the query. Its sums run in lane order rather than in order of
+// entry, so its crossings agree with the general sweep's to rounding, not bit for bit.
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <utility>
+
+#include "geometry/implicit/field_function.h"
+#include "geometry/implicit/metacube.h"
+#include "geometry/implicit/sphere_prefilter.h"
+#include "geometry/implicit/sweep_piece.h"
+#include "renderer/core/inline_vector.h"
+#include "renderer/math/double4.h"
+
+namespace isotrace {
+
+template <class Kernel>
+class MetaballSweep {
+public:
+    static constexpr std::size_t kMaxLanes = 16;
+
+    // Whether a group of `elements` with this kernel may be swept here: metaballs only, and a kernel that is one
+    // polynomial piece of degree ≤ 3 in r²/R² on the whole support.
+    static bool applies(const Kernel& kernel, std::span<const Metacube> elements) {
+        const auto pieces = kernel.unit_pieces();
+        if (pieces.size() != 1 || !pieces[0].is_polynomial || pieces[0].degree > 3) return false;
+        for (const Metacube& element : elements)
+            if (!element.is_metaball()) return false;
+        return true;
+    }
+
+    // centre_bound ≥ the largest |centre| of the spheres.
+    MetaballSweep(const Kernel& kernel, double threshold, std::span<const Metacube> elements,
+                  std::span<const BoundingSphere> spheres, double centre_bound)
+        : kernel_(kernel), threshold_(threshold), elements_(elements), spheres_(spheres),
+          centre_bound_(centre_bound), unit_(kernel.unit_pieces()[0]) {}
+
+    // As FieldSweep::run: sweeps `stretch` over the field of the `listed` elements (every element whose support
+    // may reach the stretch is among them), calling report(crossing, sweep) for each crossing in increasing t
+    // (true: stop) and crossed_before() when the stretch starts inside after t_min (true: stop). Returns false,
+    // having done nothing, when more than kMaxLanes listed elements may come near the stretch.
+    template <class Report, class CrossedBefore>
+    bool run(std::span<const std::uint32_t> listed, const SweepStretch& stretch, BlobQueryWork& work,
+             Report&& report, CrossedBefore&& crossed_before);
+
+    // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece, in
+    // ascending element order: the sum BlobGroup::gradient makes over the cell's list, hence the same bits (as
+    // FieldSweep::gradient_at).
+    Vec3d gradient_at(const Vec3d& point) const;
+
+private:
+    static constexpr std::size_t kTermSize = 7;  // a cubic in x composed with the quadratic x(s): degree 6
+
+    // Loads the near elements into the lanes and returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's
+    // nearest approach (as FieldSweep::gather): no square root or division per element, since nearly half the
+    // queries end at this bound.
+    double near_bound(const SweepStretch& stretch);
+    // Leaves in the lanes, compacted, the candidates (their support's chord meets the stretch) with their chords and
+    // dist² quadratics.
+    void make_candidates(const SweepStretch& stretch);
+    void compose_terms();
+    // The kernel on x = r²/R² per lane, zero from x = 1 on.
+    Double4 unit_value(Double4 x) const {
+        const Double4 clamped = min4(x, Double4{} + 1.0);
+        const auto& b = unit_.coefficients;
+        const Double4 value = ((b[3] * clamped + b[2]) * clamped + b[1]) * clamped + b[0];
+        return select(x < 1.0, value, Double4{});
+    }
+    // dist² per lane of group g at s (about the stretch's start).
+    Double4 distance2(std::size_t g, double s) const {
+        return load4(q0_ + 4 * g) + s * (load4(q1_ + 4 * g) + s * c2_);
+    }
+    // The smallest and largest dist² per lane of group g on [s0, s1] (branch free: which end is nearer is data).
+    std::pair<Double4, Double4> distance2_range(std::size_t g, double s0, double s1) const {
+        const Double4 at_s0 = distance2(g, s0), at_s1 = distance2(g, s1);
+        const Double4 nearest = min4(max4(load4(vertex_ + 4 * g), Double4{} + s0), Double4{} + s1);
+        const Double4 q1 = load4(q1_ + 4 * g);
+        const Double4 at_nearest = load4(q0_ + 4 * g) + nearest * (q1 + nearest * c2_);
+        return {max4(min4(min4(at_s0, at_s1), at_nearest), Double4{}), max4(at_s0, at_s1)};
+    }
+    // The elements counting on the piece that starts at t0, per group of four lanes (entered, not left).
+    Mask4 counting(std::size_t g, double t0) const {
+        return (load4(t_enter_ + 4 * g) <= t0) & (load4(t_exit_ + 4 * g) > t0);
+    }
+    double value(double t) const;
+    // Σ |wᵢ| over the elements counting at t: F + T cannot exceed it (f ≤ 1), so it scales the rounding of value().
+    double counting_weights(double t) const;
+
+    const Kernel& kernel_;
+    double threshold_;
+    std::span<const Metacube> elements_;
+    std::span<const BoundingSphere> spheres_;
+    double centre_bound_;
+    const FieldPiece& unit_;
+
+    InlineVector<std::uint32_t, 64> near_;  // the elements the float test kept
+    // The candidates, lanes [0, count_); the lanes up to the end of their group are inert (they never count).
+    unsigned kept_lanes_ = 0;  // of the near elements, those the exact test kept
+    double inverse_length2_ = 0;  // 1/|d|²
+    std::size_t count_ = 0, groups_ = 0;
+    double t_ref_ = 0, c2_ = 0;  // dist² = q0 + q1·s + c2·s² with s = t − t_ref_ (c2 = |d|² for every lane)
+    alignas(32) double x_[kMaxLanes], y_[kMaxLanes], z_[kMaxLanes];
+    alignas(32) double radius_[kMaxLanes], inverse_radius2_[kMaxLanes], weight_[kMaxLanes];
+    alignas(32) double middle_[kMaxLanes];  // where the line passes nearest the centre
+    alignas(32) double t_enter_[kMaxLanes], t_exit_[kMaxLanes];
+    alignas(32) double q0_[kMaxLanes], q1_[kMaxLanes], vertex_[kMaxLanes];  // vertex: where dist² is least, in s
+    std::uint32_t index_[kMaxLanes];
+    alignas(32) double term_[kTermSize][kMaxLanes];  // each candidate's w·f(x(s)), once composed
+    bool terms_composed_ = false;
+    std::array<unsigned, kMaxLanes / 4> counting_{};  // per group, the lanes counting on the current piece
+};
+
+template <class Kernel>
+double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
+    const Vec3d& o = stretch.origin;
+    const Vec3d& d = stretch.direction;
+    const std::size_t n = near_.size();
+    const std::size_t near_groups = (n + 3) / 4;
+    for (std::size_t i = 0; i < 4 * near_groups; ++i) {
+        // The lanes past the list repeat its last element; the exact test leaves them out.
+        const Metacube& element = elements_[near_[std::min(i, n - 1)]];
+        x_[i] = element.centre().x;
+        y_[i] = element.centre().y;
+        z_[i] = element.centre().z;
+        radius_[i] = element.radius();
+        weight_[i] = element.weight();
+    }
+    inverse_length2_ = 1 / dot(d, d);
+    // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept because
+    // of it that misses the stretch is dropped by its exact chord.
+    const double rounding = 1e-12 * (max_component(abs(o)) +
+                                     length(d) * std::max(std::abs(stretch.t_begin), std::abs(stretch.t_end)) +
+                                     centre_bound_);
+    Double4 upper{};  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
+    kept_lanes_ = 0;
+    for (std::size_t g = 0; g < near_groups; ++g) {
+        const std::int64_t first = std::int64_t(4 * g);
+        const Mask4 in_list = (Mask4{first, first + 1, first + 2, first + 3} < std::int64_t(n));
+        const Double4 x = load4(x_ + 4 * g), y = load4(y_ + 4 * g), z = load4(z_ + 4 * g);
+        const Double4 middle = ((x - o.x) * d.x + (y - o.y) * d.y + (z - o.z) * d.z) * inverse_length2_;
+        store4(middle_ + 4 * g, middle);
+        // The stretch's point nearest the centre: the element's field there bounds it on the whole stretch.
+        const Double4 nearest = min4(max4(middle, Double4{} + stretch.t_begin), Double4{} + stretch.t_end);
+        const Double4 gx = (o.x + d.x * nearest) - x, gy = (o.y + d.y * nearest) - y, gz = (o.z + d.z * nearest) - z;
+        const Double4 gap2 = gx * gx + gy * gy + gz * gz;
+        const Double4 radius = load4(radius_ + 4 * g), weight = load4(weight_ + 4 * g);
+        const Double4 keep = radius * (1 + 1e-9) + rounding;
+        const Mask4 kept = in_list & (gap2 <= keep * keep);
+        kept_lanes_ |= mask_bits(kept) << (4 * g);
+        upper += select(kept & (weight > 0.0), weight * unit_value(gap2 / (radius * radius)), Double4{});
+    }
+    return lane_sum(upper);
+}
+
+template <class Kernel>
+void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
+    const Vec3d& o = stretch.origin;
+    const Vec3d& d = stretch.direction;
+    const std::size_t n = near_.size();
+    unsigned candidates = 0;
+    for (std::size_t g = 0; g < (n + 3) / 4; ++g) {
+        // The chord through the support: the centre's projection on the line ± the half chord.
+        const Double4 middle = load4(middle_ + 4 * g), radius = load4(radius_ + 4 * g);
+        const Double4 lx = (o.x + d.x * middle) - load4(x_ + 4 * g), ly = (o.y + d.y * middle) - load4(y_ + 4 * g),
+                      lz = (o.z + d.z * middle) - load4(z_ + 4 * g);
+        const Double4 half_chord2 = (radius * radius - (lx * lx + ly * ly + lz * lz)) * inverse_length2_;
+        const Double4 half_chord = sqrt4(max4(half_chord2, Double4{}));
+        const Double4 t_enter = middle - half_chord, t_exit = middle + half_chord;
+        store4(t_enter_ + 4 * g, t_enter);
+        store4(t_exit_ + 4 * g, t_exit);
+        const Mask4 meets = (half_chord2 >= 0.0) & (t_exit > stretch.t_begin) & (t_enter < stretch.t_end);
+        candidates |= mask_bits(meets) << (4 * g);
+    }
+    candidates &= kept_lanes_;
+    // Compacted in place (lane k ≤ i), without a branch per lane; ascending element order is kept.
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        x_[k] = x_[i];
+        y_[k] = y_[i];
+        z_[k] = z_[i];
+        radius_[k] = radius_[i];
+        weight_[k] = weight_[i];
+        t_enter_[k] = t_enter_[i];
+        t_exit_[k] = t_exit_[i];
+        index_[k] = near_[i];
+        k += (candidates >> i) & 1u;
+    }
+    count_ = k;
+    groups_ = (k + 3) / 4;
+    for (std::size_t i = k; i < 4 * groups_; ++i) {  // inert: never entered, weight 0
+        x_[i] = y_[i] = z_[i] = 0;
+        radius_[i] = 1;
+        weight_[i] = 0;
+        t_enter_[i] = t_exit_[i] = std::numeric_limits<double>::infinity();
+        index_[i] = 0;
+    }
+    // dist² about the stretch's start, as MetacubeRaySlices::metaball_distance_squared writes it.
+    t_ref_ = stretch.t_begin;
+    c2_ = d.x * d.x + d.y * d.y + d.z * d.z;
+    for (std::size_t g = 0; g < groups_; ++g) {
+        const Double4 ax = (o.x - load4(x_ + 4 * g)) + d.x * t_ref_, ay = (o.y - load4(y_ + 4 * g)) + d.y * t_ref_,
+                      az = (o.z - load4(z_ + 4 * g)) + d.z * t_ref_;
+        const Double4 q1 = 2 * ax * d.x + 2 * ay * d.y + 2 * az * d.z;
+        store4(q0_ + 4 * g, ax * ax + ay * ay + az * az);
+        store4(q1_ + 4 * g, q1);
+        store4(vertex_ + 4 * g, -q1 / (2 * c2_));
+        const Double4 radius = load4(radius_ + 4 * g);
+        store4(inverse_radius2_ + 4 * g, 1 / (radius * radius));
+    }
+    terms_composed_ = false;
+}
+
+template <class Kernel>
+void MetaballSweep<Kernel>::compose_terms() {
+    // w·Σₖ βₖ·xᵏ with x(s) = dist²(s)/R², by Horner on polynomials: each step multiplies by x(s) (every new
+    // coefficient from the old ones, cᵢ ← cᵢ₋₂·x2 + cᵢ₋₁·x1 + cᵢ·x0) and adds w·βₖ. Four lanes at a time; the loops
+    // have constant bounds and unroll, so the coefficients stay in registers.
+    const auto& b = unit_.coefficients;
+    for (std::size_t g = 0; g < groups_; ++g) {
+        const Double4 weight = load4(weight_ + 4 * g), inverse_radius2 = load4(inverse_radius2_ + 4 * g);
+        const Double4 x0 = load4(q0_ + 4 * g) * inverse_radius2, x1 = load4(q1_ + 4 * g) * inverse_radius2,
+                      x2 = c2_ * inverse_radius2;
+        Double4 c[kTermSize] = {};
+        c[0] = weight * b[3];
+#pragma GCC unroll 4
+        for (int k = 2; k >= 0; --k) {
+            const std::size_t degree = std::size_t(2 * (2 - k));  // of c before this step
+            Double4 next[kTermSize] = {};
+#pragma GCC unroll 8
+            for (std::size_t i = 0; i <= degree + 2; ++i) {
+                Double4 sum{};
+                if (i >= 2) sum = c[i - 2] * x2;
+                if (i >= 1 && i - 1 <= degree) sum = i >= 2 ? sum + c[i - 1] * x1 : c[i - 1] * x1;
+                if (i <= degree) sum = i >= 1 ? sum + c[i] * x0 : c[i] * x0;
+                next[i] = sum;
+            }
+            next[0] = next[0] + weight * b[std::size_t(k)];
+            for (std::size_t i = 0; i < kTermSize; ++i) c[i] = next[i];
+        }
+        for (std::size_t i = 0; i < kTermSize; ++i) store4(term_[i] + 4 * g, c[i]);
+    }
+    terms_composed_ = true;
+}
+
+template <class Kernel>
+double MetaballSweep<Kernel>::value(double t) const {
+    const double s = t - t_ref_;
+    Double4 sum{};
+    for (std::size_t g = 0; g < groups_; ++g) {
+        const Double4 x = max4(distance2(g, s), Double4{}) * load4(inverse_radius2_ + 4 * g);
+        sum += select(counting(g, t), load4(weight_ + 4 * g) * unit_value(x), Double4{});
+    }
+    return lane_sum(sum) - threshold_;
+}
+
+template <class Kernel>
+double MetaballSweep<Kernel>::counting_weights(double t) const {
+    Double4 sum{};
+    for (std::size_t g = 0; g < groups_; ++g) {
+        const Double4 weight = load4(weight_ + 4 * g);
+        sum += select(counting(g, t), select(weight < 0.0, -weight, weight), Double4{});
+    }
+    return lane_sum(sum);
+}
+
+template <class Kernel>
+Vec3d MetaballSweep<Kernel>::gradient_at(const Vec3d& point) const {
+    Vec3d sum(0, 0, 0);
+    for (std::size_t g = 0; g < groups_; ++g)
+        for (unsigned lanes = counting_[g]; lanes != 0; lanes &= lanes - 1)
+            sum += elements_[index_[4 * g + std::size_t(std::countr_zero(lanes))]].field_gradient(kernel_, point);
+    return sum;
+}
+
+template <class Kernel>
+template <class Report, class CrossedBefore>
+bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const SweepStretch& stretch,
+                                BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
+    using sweep_piece::sign_of;
+    const Vec3d& o = stretch.origin;
+    const Vec3d& d = stretch.direction;
+    near_.clear();
+    const double length_d = length(d);
+    append_near(listed, spheres_,
+                SegmentNearSpheres(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
+                                   0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_),
+                near_);
+    if (near_.size() > kMaxLanes) return false;
+    ++work.queries;
+    kept_lanes_ = 0;
+    const double upper = near_.empty() ? 0 : near_bound(stretch);
+    // F < T on the whole stretch (the margin dwarfs the rounding of the nearest approaches): no crossing.
+    if (upper * (1 + 1e-9) < threshold_) {
+        ++work.queries_bounded;
+        work.candidates += std::uint64_t(std::popcount(kept_lanes_));
+        return true;
+    }
+    make_candidates(stretch);
+    work.candidates += count_;
+
+    unsigned entered = 0;  // lanes that counted on some piece, for the statistics
+    double t0 = stretch.t_begin;
+    // The elements counting on the piece from t0, and F's sign before it; returns true when the sweep must stop.
+    const auto sweep = [&] {
+        const auto witness = [&] {  // an element whose support contains the piece: the last counting one
+            for (std::size_t g = groups_; g-- > 0;)
+                if (counting_[g] != 0)
+                    return index_[4 * g + std::size_t(31 - std::countl_zero(counting_[g]))];
+            return std::uint32_t(0);
+        };
+        const auto crossing = [&](double t, int before) {
+            if (!(t > stretch.t_min && t < stretch.t_max)) return false;
+            ++work.roots;
+            return report(FieldCrossing{t, before < 0, witness()}, std::as_const(*this));
+        };
+        for (std::size_t g = 0; g < groups_; ++g) counting_[g] = mask_bits(counting(g, t0));
+        const double at_start = value(t0);
+        int previous_sign = sign_of(at_start);
+        // Inside beyond any rounding (a ray grazing the surface where the stretch starts is not inside there).
+        if (previous_sign > 0 && t0 > stretch.t_min && at_start > 1e-9 * (threshold_ + counting_weights(t0)) &&
+            crossed_before())
+            return;
+        Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
+        while (t0 < stretch.t_end) {
+            // The piece [t0, t1] ends at the next entry or exit.
+            double t1 = stretch.t_end;
+            const double s0 = t0 - t_ref_;
+            Double4 next = Double4{} + std::numeric_limits<double>::infinity();
+            for (std::size_t g = 0; g < groups_; ++g) {
+                const Double4 t_enter = load4(t_enter_ + 4 * g), t_exit = load4(t_exit_ + 4 * g);
+                const Double4 event = select(t_enter > t0, t_enter, t_exit);
+                next = min4(next, select(event > t0, event, next));
+                counting_[g] = mask_bits((t_enter <= t0) & (t_exit > t0));
+                entered |= counting_[g] << (4 * g);
+            }
+            t1 = std::min(t1, lane_min(next));
+            ++work.pieces;
+            const double s1 = t1 - t_ref_, width = t1 - t0;
+            // First each element's own range: f is monotone in r², so its extremes on the piece are at the ends of
+            // the element's r² range. Coming from outside, F is continuous, so it cannot be above T on the whole
+            // piece: only its upper bound is needed.
+            Double4 low{}, high{};
+            for (std::size_t g = 0; g < groups_; ++g) {
+                const Mask4 mask = counting(g, t0);
+                const auto [near, far] = distance2_range(g, s0, s1);
+                const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g), weight = load4(weight_ + 4 * g);
+                if (previous_sign < 0) {
+                    high += select(mask, weight * unit_value(select(weight > 0.0, near, far) * inverse_radius2),
+                                   Double4{});
+                } else {
+                    const Double4 w_near = weight * unit_value(near * inverse_radius2),
+                                  w_far = weight * unit_value(far * inverse_radius2);
+                    low += select(mask, min4(w_near, w_far), Double4{});
+                    high += select(mask, max4(w_near, w_far), Double4{});
+                }
+            }
+            const double range_low = lane_sum(low), range_high = lane_sum(high);
+            int start_sign = -1;
+            bool settled;
+            if (previous_sign < 0) {
+                settled = range_high - threshold_ < -1e-12 * (2 * std::abs(range_high) + threshold_);
+            } else {
+                const double slack = 1e-12 * (std::abs(range_low) + std::abs(range_high) + threshold_);
+                settled = range_high - threshold_ < -slack || range_low - threshold_ > slack;
+                start_sign = sign_of(range_low - threshold_);
+            }
+            int variations = 0;
+            if (!settled) {
+                // The sum of the counting elements' terms − T, and of their coefficients' magnitudes.
+                if (!terms_composed_) compose_terms();
+                std::array<double, kMaxPolynomialDegree + 1> magnitude{};
+                std::array<double, kTermSize> sum;
+                int terms = 1;
+                for (std::size_t i = 0; i < kTermSize; ++i) {
+                    Double4 total{}, size{};
+                    for (std::size_t g = 0; g < groups_; ++g) {
+                        const Mask4 mask = counting(g, t0);
+                        const Double4 c = load4(term_[i] + 4 * g);
+                        total += select(mask, c, Double4{});
+                        size += select(mask, select(c < 0.0, -c, c), Double4{});
+                    }
+                    sum[i] = lane_sum(total);
+                    magnitude[i] = lane_sum(size);
+                }
+                sum[0] -= threshold_;
+                magnitude[0] += threshold_;
+                for (std::size_t g = 0; g < groups_; ++g) terms += std::popcount(counting_[g]);
+                variations = sweep_piece::bernstein_variations(Polynomial(std::span<const double>(sum)), magnitude,
+                                                               terms, s0, width, on_piece);
+                start_sign = sign_of(on_piece[0]);
+            }
+            if (variations == 0) {
+                ++work.skipped_pieces;
+                // A root on the boundary with the previous piece, which that piece ended on within rounding.
+                if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
+                previous_sign = start_sign;
+            } else if (sweep_piece::polynomial_piece_crossings(on_piece, variations, t0, width, previous_sign, work,
+                                                               crossing)) {
+                return;
+            }
+            t0 = t1;
+        }
+    };
+    sweep();
+    work.joined += std::uint64_t(std::popcount(entered));
+    return true;
+}
+
+}  // namespace isotrace

@@ -1,0 +1,177 @@
+// The metaball sweep against known crossings and against the general sweep it stands in for: on every surface cell
+// of random metaball groups, the same crossings (to rounding: its sums run in another order) and the same normals.
+#include "geometry/implicit/metaball_sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "geometry/implicit/field_sweep.h"
+#include "geometry/implicit/implicit_test_support.h"
+#include "geometry/implicit/kim_sextic.h"
+#include "geometry/implicit/murakami_quartic.h"
+#include "geometry/implicit/nishimura_quadratic.h"
+#include "geometry/implicit/wyvill_sextic.h"
+
+namespace isotrace {
+namespace {
+
+struct Found {
+    std::vector<FieldCrossing> crossings;
+    std::vector<Vec3d> gradients;  // at each crossing's point
+    bool done = false;             // the sweep took the query
+};
+
+template <class Sweep>
+Found sweep_all(Sweep& sweep, std::span<const std::uint32_t> listed, const SweepStretch& stretch) {
+    Found found;
+    BlobQueryWork work;
+    const auto report = [&](const FieldCrossing& c, const auto& s) {
+        found.crossings.push_back(c);
+        found.gradients.push_back(s.gradient_at(stretch.origin + stretch.direction * c.t));
+        return false;
+    };
+    const auto crossed_before = [] { return false; };
+    if constexpr (std::is_same_v<decltype(sweep.run(listed, stretch, work, report, crossed_before)), bool>) {
+        found.done = sweep.run(listed, stretch, work, report, crossed_before);
+    } else {  // the general sweep takes every query
+        sweep.run(listed, stretch, work, report, crossed_before);
+        found.done = true;
+    }
+    return found;
+}
+
+std::vector<Metacube> random_metaballs(std::mt19937_64& rng, int count, double spread) {
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<Metacube> elements;
+    for (int i = 0; i < count; ++i) {
+        OrientedBox box;
+        box.centre = random_vector(rng, -spread, spread);
+        const double weight = u(rng) < 0.15 ? -0.6 : 0.7 + 0.6 * u(rng);
+        elements.emplace_back(box, 0.3 + 0.4 * u(rng), weight);
+    }
+    return elements;
+}
+
+// Every surface cell of the group's cells, each ray's stretch through it swept by both sweeps.
+template <class Kernel>
+void expect_same_as_general_sweep(const Kernel& kernel, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    const std::vector<Metacube> elements = random_metaballs(rng, 300, 2.0);
+    std::vector<BoundingSphere> spheres;
+    double centre_bound = 0;
+    for (const Metacube& e : elements) {
+        spheres.push_back(BoundingSphere::of(e));
+        centre_bound = std::max(centre_bound, length(e.centre()) + 1e-6);
+    }
+    BlobCells cells;
+    cells.build(elements);
+    const double threshold = 0.5;
+    int compared = 0, crossings = 0, declined = 0, identical_gradients = 0;
+    for (int r = 0; r < 400; ++r) {
+        const Vec3d origin = normalize(random_vector(rng, -1, 1)) * 5.0;
+        const Vec3d direction = (random_vector(rng, -1.5, 1.5) - origin) * 0.7;
+        cells.walk(origin, direction, 0, 1e3, [&](std::uint32_t cell, double t0, double t1) {
+            const SweepStretch stretch{origin, direction, t0, t1, 0, 1e3};
+            MetaballSweep<Kernel> fast(kernel, threshold, elements, spheres, centre_bound);
+            FieldSweep<Kernel, true> general(kernel, threshold, elements, spheres, centre_bound);
+            const Found a = sweep_all(fast, cells.elements_of(cell), stretch);
+            if (!a.done) {
+                ++declined;
+                return true;
+            }
+            const Found b = sweep_all(general, cells.elements_of(cell), stretch);
+            ++compared;
+            EXPECT_EQ(a.crossings.size(), b.crossings.size()) << "ray " << r << " cell " << cell;
+            for (std::size_t i = 0; i < std::min(a.crossings.size(), b.crossings.size()); ++i) {
+                EXPECT_NEAR(a.crossings[i].t, b.crossings[i].t, 1e-9 * (1 + std::abs(b.crossings[i].t)));
+                EXPECT_EQ(a.crossings[i].entering, b.crossings[i].entering);
+                EXPECT_LT(length(a.gradients[i] - b.gradients[i]), 1e-7 * (1 + length(b.gradients[i])));
+                // The sum BlobGroup::gradient makes over the cell's list, in ascending order, at the same point:
+                // the same bits unless an element's support begins a rounding away from the crossing.
+                const Vec3d point = origin + direction * a.crossings[i].t;
+                Vec3d expected(0, 0, 0);
+                for (const std::uint32_t j : cells.elements_of(cell))
+                    expected += elements[j].field_gradient(kernel, point);
+                identical_gradients += a.gradients[i] == expected;
+                ++crossings;
+            }
+            return true;
+        });
+    }
+    EXPECT_GT(compared, 1000);
+    EXPECT_GT(crossings, 200);
+    EXPECT_LT(declined, compared / 10);
+    EXPECT_GE(identical_gradients, crossings - crossings / 100);
+}
+
+TEST(MetaballSweep, FindsTheSameCrossingsAndNormalsAsTheGeneralSweep) {
+    expect_same_as_general_sweep(KimSextic{}, 1);
+    expect_same_as_general_sweep(WyvillSextic{}, 2);
+    expect_same_as_general_sweep(MurakamiQuartic{}, 3);
+}
+
+TEST(MetaballSweep, LoneMetaballIsCrossedAtItsIsoRadius) {
+    const KimSextic kernel;
+    const double radius = 2, weight = 1.5, threshold = 0.5;
+    OrientedBox box;
+    box.centre = {1, -2, 3};
+    const std::vector<Metacube> elements{Metacube(box, radius, weight)};
+    const std::vector<BoundingSphere> spheres{BoundingSphere::of(elements[0])};
+    const std::uint32_t listed[] = {0};
+    const double iso = *kernel.iso_radius(radius, weight, threshold);
+    // Along +x through the centre, not unit length: in at centre.x − iso, out at centre.x + iso.
+    const Vec3d origin(-10, -2, 3), direction(2, 0, 0);
+    MetaballSweep<KimSextic> sweep(kernel, threshold, elements, spheres, 4);
+    const Found found = sweep_all(sweep, listed, {origin, direction, 0, 20, 0, 20});
+    ASSERT_TRUE(found.done);
+    ASSERT_EQ(found.crossings.size(), 2u);
+    EXPECT_NEAR(found.crossings[0].t, (11 - iso) / 2, 1e-12);
+    EXPECT_TRUE(found.crossings[0].entering);
+    EXPECT_NEAR(found.crossings[1].t, (11 + iso) / 2, 1e-12);
+    EXPECT_FALSE(found.crossings[1].entering);
+    // ∇(F + T) points into the ball: +x on the near side.
+    EXPECT_GT(found.gradients[0].x, 0);
+    EXPECT_NEAR(found.gradients[0].y, 0, 1e-15);
+}
+
+TEST(MetaballSweep, LeavesMoreThanItsLanesToTheGeneralSweep) {
+    const KimSextic kernel;
+    std::vector<Metacube> elements;
+    std::vector<BoundingSphere> spheres;
+    std::vector<std::uint32_t> listed;
+    for (std::uint32_t i = 0; i <= MetaballSweep<KimSextic>::kMaxLanes; ++i) {
+        OrientedBox box;
+        box.centre = {0.01 * i, 0, 0};
+        elements.emplace_back(box, 1.0, 0.1);
+        spheres.push_back(BoundingSphere::of(elements.back()));
+        listed.push_back(i);
+    }
+    MetaballSweep<KimSextic> sweep(kernel, 0.5, elements, spheres, 1);
+    const SweepStretch through{{-5, 0, 0}, {1, 0, 0}, 0, 10, 0, 10};
+    EXPECT_FALSE(sweep_all(sweep, listed, through).done);
+    // One fewer fits, and the sum of sixteen nearly coincident balls of weight 0.1 reaches the threshold.
+    listed.pop_back();
+    const Found found = sweep_all(sweep, listed, through);
+    EXPECT_TRUE(found.done);
+    EXPECT_EQ(found.crossings.size(), 2u);
+}
+
+TEST(MetaballSweep, AppliesToMetaballsOfAOnePiecePolynomialKernel) {
+    std::vector<Metacube> balls{Metacube(OrientedBox{}, 1, 1)};
+    EXPECT_TRUE(MetaballSweep<KimSextic>::applies(KimSextic{}, balls));
+    EXPECT_TRUE(MetaballSweep<WyvillSextic>::applies(WyvillSextic{}, balls));
+    EXPECT_TRUE(MetaballSweep<MurakamiQuartic>::applies(MurakamiQuartic{}, balls));
+    EXPECT_FALSE(MetaballSweep<NishimuraQuadratic>::applies(NishimuraQuadratic{}, balls));  // two pieces
+    OrientedBox cube;
+    cube.half_size = {0.5, 0.5, 0.5};
+    balls.emplace_back(cube, 1, 1);
+    EXPECT_FALSE(MetaballSweep<KimSextic>::applies(KimSextic{}, balls));
+}
+
+}  // namespace
+}  // namespace isotrace

@@ -1,0 +1,139 @@
+#pragma once
+// What every blob sweep shares (the general one, field_sweep.h, and the one for metaballs of a single polynomial
+// kernel piece, metaball_sweep.h): the stretch swept, the crossings it reports, its statistics, and the work on one
+// piece on which F is a polynomial — its Bernstein test and, when that cannot rule a crossing out, its sign
+// changes in order. F > 0 is inside; F = 0 exactly counts as outside; a tangent touch (a double root) is no crossing.
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "geometry/polynomial/bernstein.h"
+#include "geometry/polynomial/bracketed_root.h"
+#include "geometry/polynomial/monotone_root_finder.h"
+#include "geometry/polynomial/polynomial.h"
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+// Work done by ray queries, for the statistics.
+struct BlobQueryWork {
+    std::uint64_t queries = 0;            // cells swept
+    std::uint64_t queries_bounded = 0;    // of which the candidates' bound proved free of crossings at once
+    std::uint64_t candidates = 0;         // listed elements whose bounding sphere the swept stretch meets
+    std::uint64_t joined = 0;             // of which the sweep reached (sliced and summed)
+    std::uint64_t pieces = 0;             // ray pieces examined
+    std::uint64_t skipped_pieces = 0;     // of which the Bernstein or interval bound proved free of crossings
+    std::uint64_t polynomial_solves = 0;
+    std::uint64_t lipschitz_searches = 0;
+    std::uint64_t root_iterations = 0;  // Newton/bisection steps of the polynomial solves and Lipschitz searches
+    std::uint64_t roots = 0;            // crossings reported (for occlusion, also those proven before a stretch)
+
+    BlobQueryWork& operator+=(const BlobQueryWork& other) {
+        queries += other.queries;
+        queries_bounded += other.queries_bounded;
+        candidates += other.candidates;
+        joined += other.joined;
+        pieces += other.pieces;
+        skipped_pieces += other.skipped_pieces;
+        polynomial_solves += other.polynomial_solves;
+        lipschitz_searches += other.lipschitz_searches;
+        root_iterations += other.root_iterations;
+        roots += other.roots;
+        return *this;
+    }
+};
+
+// A sign change of F: entering the surface (F becomes > 0) or leaving it.
+struct FieldCrossing {
+    double t = 0;
+    bool entering = false;
+    std::uint32_t element = 0;  // an element whose support contains the crossing
+};
+
+// The stretch of a ray one sweep examines.
+struct SweepStretch {
+    Vec3d origin, direction;  // direction need not be unit length
+    double t_begin = 0, t_end = 0;  // the part swept (a cell's part of the ray)
+    double t_min = 0, t_max = 0;    // crossings are reported only inside (t_min, t_max)
+};
+
+namespace sweep_piece {
+
+inline int sign_of(double value) { return value > 0 ? 1 : -1; }
+
+// Σ |cᵢ|·xⁱ: bounds |p(s)| for |s| ≤ x, and the effect of coefficient errors.
+inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c, double x) {
+    double m = 0;
+    for (int i = kMaxPolynomialDegree; i >= 0; --i) m = m * x + std::abs(c[std::size_t(i)]);
+    return m;
+}
+
+// The Bernstein test of the piece [s0, s0 + width] of `sum` (F as a polynomial in s, the sum of `terms` terms whose
+// coefficients' magnitudes add up to `magnitude`): writes F on the piece in u ∈ [0, 1] to `on_piece` and returns the
+// sign variations of its control polygon (0: no crossing), allowing for the rounding of the terms' sum and of the
+// shift to the piece (2·degree + 2 operations per coefficient). `on_piece` is the caller's, declared once per sweep:
+// declared per piece, even as an optional, its 104 bytes were cleared (a rep stos) on every piece.
+inline int bernstein_variations(const Polynomial& sum, const std::array<double, kMaxPolynomialDegree + 1>& magnitude,
+                                int terms, double s0, double width, Polynomial& on_piece) {
+    on_piece = sum.compose_linear(s0, width);
+    const double rounding = 4 * std::numeric_limits<double>::epsilon() * (terms + 2 * sum.degree() + 2) *
+                            magnitude_at(magnitude, std::abs(s0) + width);
+    return bernstein_sign_variations(on_piece, rounding);
+}
+
+// Reports the sign changes of F = on_piece(u) on the piece [t0, t0 + width] (u = (t − t0)/width) in increasing t,
+// through crossing(t, sign before), which returns true to stop the sweep; `variations` is bernstein_variations'
+// answer (not 0). previous_sign is F's sign just before the piece, and F's sign at its end on return. Returns true
+// when the sweep must stop.
+template <class Crossing>
+bool polynomial_piece_crossings(const Polynomial& on_piece, int variations, double t0, double width,
+                                int& previous_sign, BlobQueryWork& work, Crossing&& crossing) {
+    ++work.polynomial_solves;
+    // A start of exactly zero is a root at t0 the previous piece already ended on: no step. (Any other start is
+    // taken at its sign: near zero, a crossing at t0 is where the root lies, within rounding.)
+    if (on_piece[0] != 0) {
+        const int sign_at_start = sign_of(on_piece[0]);
+        if (sign_at_start != previous_sign && crossing(t0, previous_sign)) return true;
+        previous_sign = sign_at_start;
+    }
+    RootFinderWork root_work;
+    const double at_start = on_piece[0], at_end = on_piece.evaluate(1);
+    const bool bracketed = variations == 1 && sign_of(at_start) != sign_of(at_end);
+    if (bracketed) {
+        // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points to find first
+        // (a third of the cost of a hit, measured).
+        const double root = refine_bracketed_root(on_piece, 0, 1, at_start, at_end, {}, &root_work);
+        const int after = sign_of(at_end);
+        if (after != previous_sign) {
+            const int before = previous_sign;
+            previous_sign = after;
+            if (crossing(t0 + root * width, before)) {
+                work.root_iterations += root_work.iterations;
+                return true;
+            }
+        }
+    }
+    // Roots in order; a tangent root touches without crossing, and a root whose direction repeats the last sign
+    // change is the piece-start step found again.
+    for (double from = 0; !bracketed && from <= 1;) {
+        const auto root = first_root(on_piece, from, 1, {}, &root_work);
+        if (!root) break;
+        from = root->t + 1e-12;
+        if (root->tangent) continue;
+        const int after = on_piece.evaluate_with_derivative(root->t).derivative > 0 ? 1 : -1;
+        if (after == previous_sign) continue;
+        const int before = previous_sign;
+        previous_sign = after;
+        if (crossing(t0 + root->t * width, before)) {
+            work.root_iterations += root_work.iterations;
+            return true;
+        }
+    }
+    work.root_iterations += root_work.iterations;
+    if (!on_piece.is_zero_within_rounding(1)) previous_sign = sign_of(on_piece.evaluate(1));
+    return false;
+}
+
+}  // namespace sweep_piece
+}  // namespace isotrace
