@@ -36,7 +36,7 @@ namespace isotrace {
 template <class Kernel>
 class MetaballSweep {
 public:
-    static constexpr std::size_t kMaxLanes = 16;
+    static constexpr std::size_t kMaxLanes = 32;  // lane sets are bits of an unsigned
 
     // Whether a group of `elements` with this kernel may be swept here: metaballs only, and a kernel that is one
     // polynomial piece of degree ≤ 3 in r²/R² on the whole support.
@@ -345,11 +345,13 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             double t1 = stretch.t_end;
             const double s0 = t0 - t_ref_;
             Double4 next = Double4{} + std::numeric_limits<double>::infinity();
+            Mask4 counts[kMaxLanes / 4];
             for (std::size_t g = 0; g < groups_; ++g) {
                 const Double4 t_enter = load4(t_enter_ + 4 * g), t_exit = load4(t_exit_ + 4 * g);
                 const Double4 event = select(t_enter > t0, t_enter, t_exit);
                 next = min4(next, select(event > t0, event, next));
-                counting_[g] = mask_bits((t_enter <= t0) & (t_exit > t0));
+                counts[g] = (t_enter <= t0) & (t_exit > t0);
+                counting_[g] = mask_bits(counts[g]);
                 entered |= counting_[g] << (4 * g);
             }
             t1 = std::min(t1, lane_min(next));
@@ -360,7 +362,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             // piece: only its upper bound is needed.
             Double4 low{}, high{};
             for (std::size_t g = 0; g < groups_; ++g) {
-                const Mask4 mask = counting(g, t0);
+                const Mask4 mask = counts[g];
                 const auto [near, far] = distance2_range(g, s0, s1);
                 const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g), weight = load4(weight_ + 4 * g);
                 if (previous_sign < 0) {
@@ -393,7 +395,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                 for (std::size_t i = 0; i < kTermSize; ++i) {
                     Double4 total{}, size{};
                     for (std::size_t g = 0; g < groups_; ++g) {
-                        const Mask4 mask = counting(g, t0);
+                        const Mask4 mask = counts[g];
                         const Double4 c = load4(term_[i] + 4 * g);
                         total += select(mask, c, Double4{});
                         size += select(mask, select(c < 0.0, -c, c), Double4{});
