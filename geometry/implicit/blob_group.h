@@ -3,7 +3,8 @@
 // reaches the group's threshold: F(P) = Σ wᵢ·fᵢ(dist²ᵢ(P)) − T = 0, outward normal −∇F.
 //
 // Ray queries work per cell (blob_cells.h): space is cut into disjoint boxes, each listing the elements that
-// reach into it, and a cell's stretch of a ray is swept once, front to back (field_sweep.h). Cells are what
+// reach into it, and a cell's stretch of a ray is swept once, front to back (metaball_sweep.h for metaballs of a
+// one-piece polynomial kernel, field_sweep.h for everything else). Cells are what
 // Embree traverses (blob_group_shape.h); walking a ray's cells in order gives every crossing (CSG) or the first.
 #include <cstdint>
 #include <memory>

@@ -10,13 +10,16 @@
 //      piece is one;
 //   4. each piece is first bounded by every counting element's own range (most pieces end here, without any
 //      polynomial), then by the Bernstein coefficients of the summed polynomial (all of one sign beyond rounding:
-//      no crossing), and only the others are solved (monotone_root_finder.h), or searched with a Lipschitz bound
+//      no crossing), and only the others are solved (sweep_piece.h), or searched with a Lipschitz bound
 //      when a non-polynomial kernel piece (Blinn, Nishimura's outer piece) is present. An element's polynomial is
 //      composed only when a piece first needs it and kept until its piece changes; the sum is formed afresh from
 //      those terms whenever it is needed, so no rounding drift accumulates along the sweep;
 //   5. crossings are reported in increasing t; the caller's `report` decides whether the sweep goes on (a
 //      nearest-hit or shadow query stops at the first, CSG takes them all).
 // F > 0 is inside. Every crossing is a sign change of F: a tangent touch (a double root) is not one.
+//
+// Groups of metaballs alone whose kernel is one polynomial piece take MetaballSweep (metaball_sweep.h) instead, which
+// leaves queries with more near elements than its lanes to this one.
 //
 // Kernel is the concrete FieldFunction class, so that its calls inline (no virtual call per evaluation).
 // kMetaballsOnly is set for groups of metaballs alone (no metacube, no hard cube: the benchmark clouds and most
