@@ -16,6 +16,7 @@
 // It takes at most kMaxLanes near elements (nearly every query of the benchmark clouds): run returns false for more,
 // having done nothing, and the general sweep takes the query. Its sums run in lane order rather than in order of
 // entry, so its crossings agree with the general sweep's to rounding, not bit for bit.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -71,8 +72,8 @@ private:
     static constexpr std::size_t kTermSize = 7;  // a cubic in x composed with the quadratic x(s): degree 6
 
     // Loads the near elements into the lanes and returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's
-    // nearest approach (as FieldSweep::gather): no square root or division per element, since nearly half the
-    // queries end at this bound.
+    // nearest approach (as FieldSweep::gather), without the chords' square roots: nearly half the queries end at
+    // this bound.
     double near_bound(const SweepStretch& stretch);
     // Leaves in the lanes, compacted, the candidates (their support's chord meets the stretch) with their chords and
     // dist² quadratics.
@@ -113,9 +114,10 @@ private:
     const FieldPiece& unit_;
 
     InlineVector<std::uint32_t, 64> near_;  // the elements the float test kept
-    // The candidates, lanes [0, count_); the lanes up to the end of their group are inert (they never count).
-    unsigned kept_lanes_ = 0;  // of the near elements, those the exact test kept
-    double inverse_length2_ = 0;  // 1/|d|²
+    unsigned kept_lanes_ = 0;               // of those, the ones the exact test kept
+    double inverse_length2_ = 0;            // 1/|d|²
+    // The lanes hold the near elements, then the candidates, lanes [0, count_); the lanes up to the end of their
+    // group are inert (they never count).
     std::size_t count_ = 0, groups_ = 0;
     double t_ref_ = 0, c2_ = 0;  // dist² = q0 + q1·s + c2·s² with s = t − t_ref_ (c2 = |d|² for every lane)
     alignas(32) double x_[kMaxLanes], y_[kMaxLanes], z_[kMaxLanes];
