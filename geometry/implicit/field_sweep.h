@@ -284,16 +284,9 @@ double FieldSweep<Kernel, kMetaballsOnly>::gather(std::span<const std::uint32_t>
     // them, four at a time and without a branch per element (walking each group's passing lanes instead
     // mispredicted its exits; that cost 1–10 %, and prefetching the survivors' elements 3–4 % more, measured).
     near_.clear();
-    const double length_d = length(d);
-    const SegmentNearSpheres segment(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
-                                     0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_);
-    append_near(listed, spheres_, segment, near_);
+    append_near(listed, spheres_, near_stretch_test(stretch, centre_bound_), near_);
     inverse_length2_ = 1 / dot(d, d);
-    // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept
-    // because of it that misses the stretch is dropped by order_candidates' exact chord.
-    const double rounding = 1e-12 * (max_component(abs(o)) +
-                                     length(d) * std::max(std::abs(stretch.t_begin), std::abs(stretch.t_end)) +
-                                     centre_bound_);
+    const double rounding = nearest_approach_rounding(stretch, centre_bound_);
     double upper = 0;  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     std::size_t kept = 0;
     near_middle_.clear();
@@ -585,8 +578,7 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
     using namespace field_sweep_detail;
     const double upper = gather(candidates, stretch);
     ++work.queries;
-    // F < T on the whole stretch (the margin dwarfs the rounding of the nearest approaches): no crossing.
-    if (upper * (1 + 1e-9) < threshold_) {
+    if (stretch_below_threshold(upper, threshold_)) {
         ++work.queries_bounded;
         work.candidates += near_.size();
         return;
@@ -614,9 +606,8 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
     join_until(t0, stretch, work);
     const double at_start = value(t0) + hard_cube_step_before(t0);
     int previous_sign = sign_of(at_start);
-    // Inside beyond any rounding (a ray grazing the surface where the stretch starts is not inside there).
-    if (previous_sign > 0 && t0 > stretch.t_min && at_start > 1e-9 * (threshold_ + counting_weights()) &&
-        crossed_before())
+    if (previous_sign > 0 && t0 > stretch.t_min &&
+        sweep_piece::inside_beyond_rounding(at_start, threshold_, counting_weights()) && crossed_before())
         return;
     // F on the current piece in u ∈ [0,1], set for the polynomial pieces that ranges do not settle.
     Polynomial piece_polynomial;
@@ -639,13 +630,11 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
             // hard cube steps, so it cannot be above T on the whole piece: only its upper bound is needed.
             bool settled = false;
             if (previous_sign < 0 && !hard_cube_joined()) {
-                const double high = elements_upper_bound(t0, t1);
-                settled = high - threshold_ < -1e-12 * (2 * std::abs(high) + threshold_);
+                settled = sweep_piece::below_threshold(elements_upper_bound(t0, t1), threshold_);
                 start_sign = -1;
             } else {
                 const Range range = elements_range(t0, t1, false);
-                const double slack = 1e-12 * (std::abs(range.low) + std::abs(range.high) + threshold_);
-                settled = range.high - threshold_ < -slack || range.low - threshold_ > slack;
+                settled = sweep_piece::one_side_of_threshold(range.low, range.high, threshold_);
                 start_sign = sign_of(range.low - threshold_);
             }
             if (settled) {

@@ -147,11 +147,7 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
         weight_[i] = element.weight();
     }
     inverse_length2_ = 1 / dot(d, d);
-    // Far above the rounding of a nearest point (a few ulps of the coordinates' magnitudes): an element kept because
-    // of it that misses the stretch is dropped by its exact chord.
-    const double rounding = 1e-12 * (max_component(abs(o)) +
-                                     length(d) * std::max(std::abs(stretch.t_begin), std::abs(stretch.t_end)) +
-                                     centre_bound_);
+    const double rounding = nearest_approach_rounding(stretch, centre_bound_);
     Double4 upper{};  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     kept_lanes_ = 0;
     for (std::size_t g = 0; g < near_groups; ++g) {
@@ -298,20 +294,11 @@ template <class Report, class CrossedBefore>
 bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const SweepStretch& stretch,
                                 BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
     using sweep_piece::sign_of;
-    const Vec3d& o = stretch.origin;
-    const Vec3d& d = stretch.direction;
     near_.clear();
-    const double length_d = length(d);
-    append_near(listed, spheres_,
-                SegmentNearSpheres(o + d * (0.5 * (stretch.t_begin + stretch.t_end)), d / length_d,
-                                   0.5 * (stretch.t_end - stretch.t_begin) * length_d, centre_bound_),
-                near_);
+    append_near(listed, spheres_, near_stretch_test(stretch, centre_bound_), near_);
     if (near_.size() > kMaxLanes) return false;
     ++work.queries;
-    kept_lanes_ = 0;
-    const double upper = near_.empty() ? 0 : near_bound(stretch);
-    // F < T on the whole stretch (the margin dwarfs the rounding of the nearest approaches): no crossing.
-    if (upper * (1 + 1e-9) < threshold_) {
+    if (stretch_below_threshold(near_bound(stretch), threshold_)) {
         ++work.queries_bounded;
         work.candidates += std::uint64_t(std::popcount(kept_lanes_));
         return true;
@@ -337,9 +324,8 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
         for (std::size_t g = 0; g < groups_; ++g) counting_[g] = mask_bits(counting(g, t0));
         const double at_start = value(t0);
         int previous_sign = sign_of(at_start);
-        // Inside beyond any rounding (a ray grazing the surface where the stretch starts is not inside there).
-        if (previous_sign > 0 && t0 > stretch.t_min && at_start > 1e-9 * (threshold_ + counting_weights(t0)) &&
-            crossed_before())
+        if (previous_sign > 0 && t0 > stretch.t_min &&
+            sweep_piece::inside_beyond_rounding(at_start, threshold_, counting_weights(t0)) && crossed_before())
             return;
         Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
         while (t0 < stretch.t_end) {
@@ -352,7 +338,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                 const Double4 t_enter = load4(t_enter_ + 4 * g), t_exit = load4(t_exit_ + 4 * g);
                 const Double4 event = select(t_enter > t0, t_enter, t_exit);
                 next = min4(next, select(event > t0, event, next));
-                counts[g] = (t_enter <= t0) & (t_exit > t0);
+                counts[g] = counting(g, t0);
                 counting_[g] = mask_bits(counts[g]);
                 entered |= counting_[g] << (4 * g);
             }
@@ -381,10 +367,9 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             int start_sign = -1;
             bool settled;
             if (previous_sign < 0) {
-                settled = range_high - threshold_ < -1e-12 * (2 * std::abs(range_high) + threshold_);
+                settled = sweep_piece::below_threshold(range_high, threshold_);
             } else {
-                const double slack = 1e-12 * (std::abs(range_low) + std::abs(range_high) + threshold_);
-                settled = range_high - threshold_ < -slack || range_low - threshold_ > slack;
+                settled = sweep_piece::one_side_of_threshold(range_low, range_high, threshold_);
                 start_sign = sign_of(range_low - threshold_);
             }
             int variations = 0;

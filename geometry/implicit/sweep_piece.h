@@ -3,11 +3,13 @@
 // kernel piece, metaball_sweep.h): the stretch swept, the crossings it reports, its statistics, and the work on one
 // piece on which F is a polynomial — its Bernstein test and, when that cannot rule a crossing out, its sign
 // changes in order. F > 0 is inside; F = 0 exactly counts as outside; a tangent touch (a double root) is no crossing.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
+#include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/polynomial/bernstein.h"
 #include "geometry/polynomial/bracketed_root.h"
 #include "geometry/polynomial/monotone_root_finder.h"
@@ -58,9 +60,47 @@ struct SweepStretch {
     double t_min = 0, t_max = 0;    // crossings are reported only inside (t_min, t_max)
 };
 
+// The float test of the listed elements' bounding spheres against the stretch (sphere_prefilter.h).
+inline SegmentNearSpheres near_stretch_test(const SweepStretch& stretch, double centre_bound) {
+    const double length_d = length(stretch.direction);
+    return SegmentNearSpheres(stretch.origin + stretch.direction * (0.5 * (stretch.t_begin + stretch.t_end)),
+                              stretch.direction / length_d, 0.5 * (stretch.t_end - stretch.t_begin) * length_d,
+                              centre_bound);
+}
+
+// Far above the rounding of a nearest point of the stretch (a few ulps of the coordinates' magnitudes; the centres
+// are at most centre_bound from the origin): the margin of the exact test that keeps an element near the stretch.
+// An element kept because of it that misses the stretch is dropped by its exact chord.
+inline double nearest_approach_rounding(const SweepStretch& stretch, double centre_bound) {
+    return 1e-12 * (max_component(abs(stretch.origin)) +
+                    length(stretch.direction) * std::max(std::abs(stretch.t_begin), std::abs(stretch.t_end)) +
+                    centre_bound);
+}
+
+// An upper bound of Σ wᵢ·fᵢ on the whole stretch (from the elements' nearest approaches) below T: no crossing (the
+// margin dwarfs the rounding of the nearest approaches).
+inline bool stretch_below_threshold(double upper, double threshold) { return upper * (1 + 1e-9) < threshold; }
+
 namespace sweep_piece {
 
 inline int sign_of(double value) { return value > 0 ? 1 : -1; }
+
+// F + T at a stretch's start above T beyond any rounding (a ray grazing the surface where the stretch starts is
+// not inside there); `weights` is Σ |wᵢ| over the elements counting there (F + T cannot exceed it, f ≤ 1).
+inline bool inside_beyond_rounding(double f, double threshold, double weights) {
+    return f > 1e-9 * (threshold + weights);
+}
+
+// A piece settled by the counting elements' own ranges: an upper bound of Σ wᵢ·fᵢ on it below T beyond rounding
+// (no crossing, coming from outside) ...
+inline bool below_threshold(double high, double threshold) {
+    return high - threshold < -1e-12 * (2 * std::abs(high) + threshold);
+}
+// ... or bounds on both sides that keep it all below or all above T beyond rounding.
+inline bool one_side_of_threshold(double low, double high, double threshold) {
+    const double slack = 1e-12 * (std::abs(low) + std::abs(high) + threshold);
+    return high - threshold < -slack || low - threshold > slack;
+}
 
 // Σ |cᵢ|·xⁱ: bounds |p(s)| for |s| ≤ x, and the effect of coefficient errors.
 inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c, double x) {
