@@ -12,9 +12,13 @@ public:
         const double u = 1 - x;
         return u * u * u;
     }
-    double unit_derivative(double x) const override {
-        const double u = 1 - x;
-        return -3 * u * u;
+    double unit_derivative(double x) const override { return unit_derivative_of(x); }
+    // df/dx for a double or for lanes of doubles (double4.h: the blob sweep's normal sums four elements at a time),
+    // with the same operations, so the same bits.
+    template <class T>
+    static T unit_derivative_of(T x) {
+        const T u = 1.0 - x;
+        return -3.0 * u * u;
     }
     std::span<const FieldPiece> unit_pieces() const override;
     double unit_iso_level(double level) const override;

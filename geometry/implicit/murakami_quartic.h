@@ -12,7 +12,12 @@ public:
         const double u = 1 - x;
         return u * u;
     }
-    double unit_derivative(double x) const override { return -2 * (1 - x); }
+    double unit_derivative(double x) const override { return unit_derivative_of(x); }
+    // df/dx for a double or for lanes of doubles (as KimSextic's).
+    template <class T>
+    static T unit_derivative_of(T x) {
+        return -2.0 * (1.0 - x);
+    }
     std::span<const FieldPiece> unit_pieces() const override;
     double unit_iso_level(double level) const override;
 };

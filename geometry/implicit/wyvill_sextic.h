@@ -14,7 +14,12 @@ public:
         const double u = 1 - x;
         return u * u * (9 - 4 * x) / 9;
     }
-    double unit_derivative(double x) const override { return -(1 - x) * (22 - 12 * x) / 9; }
+    double unit_derivative(double x) const override { return unit_derivative_of(x); }
+    // df/dx for a double or for lanes of doubles (as KimSextic's).
+    template <class T>
+    static T unit_derivative_of(T x) {
+        return -(1.0 - x) * (22.0 - 12.0 * x) / 9.0;
+    }
     std::span<const FieldPiece> unit_pieces() const override;
     double unit_iso_level(double level) const override;
 };
