@@ -75,7 +75,7 @@ std::size_t BlobGroup::memory_bytes() const {
            cells_.memory_bytes();
 }
 
-template <class Report, class CrossedBefore>
+template <bool kPlaceNeeded, class Report, class CrossedBefore>
 void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
                            double t_max, BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) const {
     if (cell >= cells_.surface_cell_count()) return;  // all inside or all outside: no crossing
@@ -90,7 +90,8 @@ void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d&
         const std::span<const BoundingSphere> spheres(spheres_);
         if (metaball_sweep_) {
             MetaballSweep<Kernel> sweep(kernel, threshold_, elements, spheres, centre_bound_);
-            if (sweep.run(cells_.elements_of(cell), stretch, work, report, crossed_before)) return;
+            if (sweep.template run<kPlaceNeeded>(cells_.elements_of(cell), stretch, work, report, crossed_before))
+                return;
         }
         const auto sweep_with = [&]<bool kMetaballsOnly>() {
             FieldSweep<Kernel, kMetaballsOnly> sweep(kernel, threshold_, elements, spheres, centre_bound_);
@@ -119,7 +120,7 @@ std::optional<CellHit> BlobGroup::first_crossing_in_cell(std::uint32_t cell, con
 bool BlobGroup::occluded_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
                                  double t_max, BlobQueryWork& work) const {
     bool occluded = false;
-    sweep_cell(
+    sweep_cell<false>(
         cell, origin, direction, t_min, t_max, work,
         [&](const FieldCrossing&, const auto&) { return occluded = true; },
         // Inside at the cell, outside at the ray's start (F ≤ T, the sweep's sign convention): an odd number of

@@ -83,8 +83,9 @@ private:
     template <class F>
     decltype(auto) with_kernel(F&& f) const;
     // Sweeps cell `cell`'s part of [t_min, t_max]; report(crossing, sweep) returns true to stop. When the part starts
-    // inside after t_min, crossed_before() is asked whether that ends the sweep (FieldSweep::run).
-    template <class Report, class CrossedBefore>
+    // inside after t_min, crossed_before() is asked whether that ends the sweep (FieldSweep::run). Without
+    // kPlaceNeeded, a crossing's t may be any point of the piece it lies on (MetaballSweep::run).
+    template <bool kPlaceNeeded = true, class Report, class CrossedBefore>
     void sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                     BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) const;
     Vec3d normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const;

@@ -58,8 +58,10 @@ public:
     // As FieldSweep::run: sweeps `stretch` over the field of the `listed` elements (every element whose support
     // may reach the stretch is among them), calling report(crossing, sweep) for each crossing in increasing t
     // (true: stop) and crossed_before() when the stretch starts inside after t_min (true: stop). Returns false,
-    // having done nothing, when more than kMaxLanes listed elements may come near the stretch.
-    template <class Report, class CrossedBefore>
+    // having done nothing, when more than kMaxLanes listed elements may come near the stretch. Without
+    // kPlaceNeeded (occlusion) a crossing may be reported at any t of the piece it lies on: F beyond rounding on
+    // both sides of T at a piece's ends proves one there, with no polynomial composed or solved.
+    template <bool kPlaceNeeded = true, class Report, class CrossedBefore>
     bool run(std::span<const std::uint32_t> listed, const SweepStretch& stretch, BlobQueryWork& work,
              Report&& report, CrossedBefore&& crossed_before);
 
@@ -105,6 +107,8 @@ private:
     double value(double t) const;
     // Σ |wᵢ| over the elements counting at t: F + T cannot exceed it (f ≤ 1), so it scales the rounding of value().
     double counting_weights(double t) const;
+    // Σ |wᵢ| over the candidates.
+    double candidate_weights() const;
 
     const Kernel& kernel_;
     double threshold_;
@@ -281,6 +285,16 @@ double MetaballSweep<Kernel>::counting_weights(double t) const {
 }
 
 template <class Kernel>
+double MetaballSweep<Kernel>::candidate_weights() const {
+    Double4 sum{};
+    for (std::size_t g = 0; g < groups_; ++g) {  // inert lanes weigh 0
+        const Double4 weight = load4(weight_ + 4 * g);
+        sum += select(weight < 0.0, -weight, weight);
+    }
+    return lane_sum(sum);
+}
+
+template <class Kernel>
 Vec3d MetaballSweep<Kernel>::gradient_at(const Vec3d& point) const {
     Vec3d sum(0, 0, 0);
     if constexpr (requires(Double4 x) { Kernel::unit_derivative_of(x); }) {
@@ -314,7 +328,7 @@ Vec3d MetaballSweep<Kernel>::gradient_at(const Vec3d& point) const {
 }
 
 template <class Kernel>
-template <class Report, class CrossedBefore>
+template <bool kPlaceNeeded, class Report, class CrossedBefore>
 bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const SweepStretch& stretch,
                                 BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
     using sweep_piece::sign_of;
@@ -395,6 +409,17 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             } else {
                 settled = sweep_piece::one_side_of_threshold(range_low, range_high, threshold_);
                 start_sign = sign_of(range_low - threshold_);
+            }
+            if constexpr (!kPlaceNeeded) {
+                if (!settled) {
+                    // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside.
+                    // (Shadow rays: a third of their time went to composing and solving the piece.)
+                    const double margin = 1e-9 * (threshold_ + candidate_weights());
+                    const double at_start = value(t0), at_end = value(t1);
+                    if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
+                        crossing(0.5 * (t0 + t1), sign_of(at_start)))
+                        return;
+                }
             }
             int variations = 0;
             if (!settled) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -57,52 +58,66 @@ std::vector<Metacube> random_metaballs(std::mt19937_64& rng, int count, double s
     return elements;
 }
 
-// Every surface cell of the group's cells, each ray's stretch through it swept by both sweeps.
-template <class Kernel>
-void expect_same_as_general_sweep(const Kernel& kernel, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    const std::vector<Metacube> elements = random_metaballs(rng, 300, 2.0);
+// A random group of 300 metaballs with what a sweep reads (bounding spheres, cells), and 400 random rays through it:
+// visit(group, ray, cell, stretch) for each ray's stretch through each cell it meets.
+struct SweptGroup {
+    explicit SweptGroup(std::vector<Metacube> group) : elements(std::move(group)) {
+        for (const Metacube& e : elements) {
+            spheres.push_back(BoundingSphere::of(e));
+            centre_bound = std::max(centre_bound, length(e.centre()) + 1e-6);
+        }
+        cells.build(elements);
+    }
+    std::vector<Metacube> elements;
     std::vector<BoundingSphere> spheres;
     double centre_bound = 0;
-    for (const Metacube& e : elements) {
-        spheres.push_back(BoundingSphere::of(e));
-        centre_bound = std::max(centre_bound, length(e.centre()) + 1e-6);
-    }
     BlobCells cells;
-    cells.build(elements);
-    const double threshold = 0.5;
-    int compared = 0, crossings = 0, declined = 0, identical_gradients = 0;
-    for (int r = 0; r < 400; ++r) {
+};
+
+template <class Visit>
+void for_each_stretch(std::uint64_t seed, Visit&& visit) {
+    std::mt19937_64 rng(seed);
+    const SweptGroup group(random_metaballs(rng, 300, 2.0));
+    for (int ray = 0; ray < 400; ++ray) {
         const Vec3d origin = normalize(random_vector(rng, -1, 1)) * 5.0;
         const Vec3d direction = (random_vector(rng, -1.5, 1.5) - origin) * 0.7;
-        cells.walk(origin, direction, 0, 1e3, [&](std::uint32_t cell, double t0, double t1) {
-            const SweepStretch stretch{origin, direction, t0, t1, 0, 1e3};
-            MetaballSweep<Kernel> fast(kernel, threshold, elements, spheres, centre_bound);
-            FieldSweep<Kernel, true> general(kernel, threshold, elements, spheres, centre_bound);
-            const Found a = sweep_all(fast, cells.elements_of(cell), stretch);
-            if (!a.done) {
-                ++declined;
-                return true;
-            }
-            const Found b = sweep_all(general, cells.elements_of(cell), stretch);
-            ++compared;
-            EXPECT_EQ(a.crossings.size(), b.crossings.size()) << "ray " << r << " cell " << cell;
-            for (std::size_t i = 0; i < std::min(a.crossings.size(), b.crossings.size()); ++i) {
-                EXPECT_NEAR(a.crossings[i].t, b.crossings[i].t, 1e-9 * (1 + std::abs(b.crossings[i].t)));
-                EXPECT_EQ(a.crossings[i].entering, b.crossings[i].entering);
-                EXPECT_LT(length(a.gradients[i] - b.gradients[i]), 1e-7 * (1 + length(b.gradients[i])));
-                // The sum BlobGroup::gradient makes over the cell's list, in ascending order, at the same point:
-                // the same bits unless an element's support begins a rounding away from the crossing.
-                const Vec3d point = origin + direction * a.crossings[i].t;
-                Vec3d expected(0, 0, 0);
-                for (const std::uint32_t j : cells.elements_of(cell))
-                    expected += elements[j].field_gradient(kernel, point);
-                identical_gradients += a.gradients[i] == expected;
-                ++crossings;
-            }
+        group.cells.walk(origin, direction, 0, 1e3, [&](std::uint32_t cell, double t0, double t1) {
+            visit(group, ray, cell, SweepStretch{origin, direction, t0, t1, 0, 1e3});
             return true;
         });
     }
+}
+
+// Every surface cell of the group's cells, each ray's stretch through it swept by both sweeps.
+template <class Kernel>
+void expect_same_as_general_sweep(const Kernel& kernel, std::uint64_t seed) {
+    const double threshold = 0.5;
+    int compared = 0, crossings = 0, declined = 0, identical_gradients = 0;
+    for_each_stretch(seed, [&](const SweptGroup& group, int ray, std::uint32_t cell, const SweepStretch& stretch) {
+        MetaballSweep<Kernel> fast(kernel, threshold, group.elements, group.spheres, group.centre_bound);
+        FieldSweep<Kernel, true> general(kernel, threshold, group.elements, group.spheres, group.centre_bound);
+        const Found a = sweep_all(fast, group.cells.elements_of(cell), stretch);
+        if (!a.done) {
+            ++declined;
+            return;
+        }
+        const Found b = sweep_all(general, group.cells.elements_of(cell), stretch);
+        ++compared;
+        EXPECT_EQ(a.crossings.size(), b.crossings.size()) << "ray " << ray << " cell " << cell;
+        for (std::size_t i = 0; i < std::min(a.crossings.size(), b.crossings.size()); ++i) {
+            EXPECT_NEAR(a.crossings[i].t, b.crossings[i].t, 1e-9 * (1 + std::abs(b.crossings[i].t)));
+            EXPECT_EQ(a.crossings[i].entering, b.crossings[i].entering);
+            EXPECT_LT(length(a.gradients[i] - b.gradients[i]), 1e-7 * (1 + length(b.gradients[i])));
+            // The sum BlobGroup::gradient makes over the cell's list, in ascending order, at the same point:
+            // the same bits unless an element's support begins a rounding away from the crossing.
+            const Vec3d point = stretch.origin + stretch.direction * a.crossings[i].t;
+            Vec3d expected(0, 0, 0);
+            for (const std::uint32_t j : group.cells.elements_of(cell))
+                expected += group.elements[j].field_gradient(kernel, point);
+            identical_gradients += a.gradients[i] == expected;
+            ++crossings;
+        }
+    });
     EXPECT_GT(compared, 1000);
     EXPECT_GT(crossings, 200);
     EXPECT_LT(declined, compared / 10);
@@ -113,6 +128,45 @@ TEST(MetaballSweep, FindsTheSameCrossingsAndNormalsAsTheGeneralSweep) {
     expect_same_as_general_sweep(KimSextic{}, 1);
     expect_same_as_general_sweep(WyvillSextic{}, 2);
     expect_same_as_general_sweep(MurakamiQuartic{}, 3);
+}
+
+// Occlusion asks only whether a crossing lies on the stretch: the sweep without kPlaceNeeded gives the answer of the
+// one that places crossings, on every surface cell of random groups, and reports its crossing inside the stretch.
+template <class Kernel>
+void expect_same_occlusion(const Kernel& kernel, std::uint64_t seed) {
+    int occluded = 0, unsolved = 0;
+    for_each_stretch(seed, [&](const SweptGroup& group, int ray, std::uint32_t cell, const SweepStretch& stretch) {
+        const auto answer = [&]<bool kPlaceNeeded>(BlobQueryWork& work) {
+            MetaballSweep<Kernel> sweep(kernel, 0.5, group.elements, group.spheres, group.centre_bound);
+            std::optional<double> t;
+            sweep.template run<kPlaceNeeded>(
+                group.cells.elements_of(cell), stretch, work,
+                [&](const FieldCrossing& c, const auto&) {
+                    t = c.t;
+                    return true;
+                },
+                [] { return false; });
+            return t;
+        };
+        BlobQueryWork placing, asking;
+        const std::optional<double> placed = answer.template operator()<true>(placing);
+        const std::optional<double> any = answer.template operator()<false>(asking);
+        EXPECT_EQ(placed.has_value(), any.has_value()) << "ray " << ray << " cell " << cell;
+        if (any) {
+            EXPECT_GE(*any, stretch.t_begin);
+            EXPECT_LE(*any, stretch.t_end);
+            ++occluded;
+            unsolved += asking.polynomial_solves < placing.polynomial_solves;
+        }
+    });
+    EXPECT_GT(occluded, 200);
+    EXPECT_GT(unsolved, occluded / 4);  // most crossings are proven without a solve
+}
+
+TEST(MetaballSweep, AnswersOcclusionAsTheSweepThatPlacesCrossings) {
+    expect_same_occlusion(KimSextic{}, 4);
+    expect_same_occlusion(WyvillSextic{}, 5);
+    expect_same_occlusion(MurakamiQuartic{}, 6);
 }
 
 TEST(MetaballSweep, LoneMetaballIsCrossedAtItsIsoRadius) {
