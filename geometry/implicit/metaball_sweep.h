@@ -413,7 +413,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             if constexpr (!kPlaceNeeded) {
                 if (!settled) {
                     // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside.
-                    // (Shadow rays: a third of their time went to composing and solving the piece.)
+                    // (Composing, testing and solving the piece was a third of a shadow ray's swept query.)
                     const double margin = 1e-9 * (threshold_ + candidate_weights());
                     const double at_start = value(t0), at_end = value(t1);
                     if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
