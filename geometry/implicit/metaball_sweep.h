@@ -105,10 +105,10 @@ private:
         return (load4(t_enter_ + 4 * g) <= t0) & (load4(t_exit_ + 4 * g) > t0);
     }
     double value(double t) const;
-    // Σ |wᵢ| over the elements counting at t: F + T cannot exceed it (f ≤ 1), so it scales the rounding of value().
-    double counting_weights(double t) const;
-    // Σ |wᵢ| over the candidates.
-    double candidate_weights() const;
+    // Σ |wᵢ| over the lanes(g) of each group (elements counting at some t, or every candidate): F + T cannot exceed
+    // it where only those count (f ≤ 1), so it scales the rounding of value().
+    template <class Lanes>
+    double absolute_weights(Lanes&& lanes) const;
 
     const Kernel& kernel_;
     double threshold_;
@@ -275,21 +275,12 @@ double MetaballSweep<Kernel>::value(double t) const {
 }
 
 template <class Kernel>
-double MetaballSweep<Kernel>::counting_weights(double t) const {
+template <class Lanes>
+double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
     Double4 sum{};
     for (std::size_t g = 0; g < groups_; ++g) {
         const Double4 weight = load4(weight_ + 4 * g);
-        sum += select(counting(g, t), select(weight < 0.0, -weight, weight), Double4{});
-    }
-    return lane_sum(sum);
-}
-
-template <class Kernel>
-double MetaballSweep<Kernel>::candidate_weights() const {
-    Double4 sum{};
-    for (std::size_t g = 0; g < groups_; ++g) {  // inert lanes weigh 0
-        const Double4 weight = load4(weight_ + 4 * g);
-        sum += select(weight < 0.0, -weight, weight);
+        sum += select(lanes(g), select(weight < 0.0, -weight, weight), Double4{});
     }
     return lane_sum(sum);
 }
@@ -363,7 +354,9 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
         const double at_start = value(t0);
         int previous_sign = sign_of(at_start);
         if (previous_sign > 0 && t0 > stretch.t_min &&
-            sweep_piece::inside_beyond_rounding(at_start, threshold_, counting_weights(t0)) && crossed_before())
+            sweep_piece::inside_beyond_rounding(
+                at_start, threshold_, absolute_weights([&](std::size_t g) { return counting(g, t0); })) &&
+            crossed_before())
             return;
         Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
         while (t0 < stretch.t_end) {
@@ -414,7 +407,9 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                 if (!settled) {
                     // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside.
                     // (Composing, testing and solving the piece was a third of a shadow ray's swept query.)
-                    const double margin = 1e-9 * (threshold_ + candidate_weights());
+                    // Every candidate's weight (inert lanes weigh 0): both ends' rounding, whichever elements count.
+                    const double margin =
+                        1e-9 * (threshold_ + absolute_weights([](std::size_t) { return ~Mask4{}; }));
                     const double at_start = value(t0), at_end = value(t1);
                     if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
                         crossing(0.5 * (t0 + t1), sign_of(at_start)))

@@ -45,7 +45,8 @@ double refine(const Evaluate& evaluate, double lo, double hi, double value_at_lo
         if (hi - lo <= tolerance.width_at(t)) return 0.5 * (lo + hi);
         const double newton = t - at.value / at.derivative;
         // A step too small to move t: p(t) is zero within its rounding, here. (Left to bisection, which would be
-        // right too, it halved a bracket p's rounding cannot resolve, some 8 steps, on one blob hit in twenty.)
+        // right too, it halved a bracket p's rounding cannot resolve, some 8 steps: with Estrin's rounding, 1.6 M
+        // steps instead of 0.56 M on blobs_1k's blob hits.)
         if (newton == t) return t;
         // Newton is rejected when it leaves the bracket or fails to halve the step before last (slow convergence
         // near flat spots); bisection then guarantees progress.
