@@ -6,13 +6,9 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "geometry/implicit/blinn_exponential.h"
-#include "geometry/implicit/kim_sextic.h"
-#include "geometry/implicit/murakami_quartic.h"
-#include "geometry/implicit/nishimura_quadratic.h"
+#include "geometry/implicit/blob_cell_queries.h"
+#include "geometry/implicit/blob_group_with_kernel.h"
 #include "geometry/implicit/surface_region.h"
-#include "geometry/implicit/wyvill_sextic.h"
-#include "renderer/math/line_box_clip.h"
 
 namespace isotrace {
 
@@ -27,18 +23,6 @@ BlobGroup::BlobGroup(std::vector<Metacube> elements, std::unique_ptr<const Field
     else if (name == "kim") kernel_kind_ = KernelKind::Kim;
     else throw std::invalid_argument("field: unknown field function \"" + std::string(name) + "\"");
     build_index();
-}
-
-template <class F>
-decltype(auto) BlobGroup::with_kernel(F&& f) const {
-    switch (kernel_kind_) {
-        case KernelKind::Blinn: return f(static_cast<const BlinnExponential&>(*kernel_));
-        case KernelKind::Nishimura: return f(static_cast<const NishimuraQuadratic&>(*kernel_));
-        case KernelKind::Murakami: return f(static_cast<const MurakamiQuartic&>(*kernel_));
-        case KernelKind::Wyvill: return f(static_cast<const WyvillSextic&>(*kernel_));
-        case KernelKind::Kim: break;
-    }
-    return f(static_cast<const KimSextic&>(*kernel_));
 }
 
 void BlobGroup::build_index() {
@@ -75,66 +59,15 @@ std::size_t BlobGroup::memory_bytes() const {
            cells_.memory_bytes();
 }
 
-template <bool kPlaceNeeded, class Report, class CrossedBefore>
-void BlobGroup::sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
-                           double t_max, BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) const {
-    if (cell >= cells_.surface_cell_count()) return;  // all inside or all outside: no crossing
-    const BlobCells::Cell& box = cells_.cells()[cell];
-    const auto clip = clip_line_to_box(box.lower, box.upper, origin, direction, t_min, t_max);
-    // A zero direction, or an unbounded query along a line parallel to every slab, has no finite stretch.
-    if (!clip || !std::isfinite(clip->t_enter) || !std::isfinite(clip->t_exit)) return;
-    const SweepStretch stretch{origin, direction, clip->t_enter, clip->t_exit, t_min, t_max};
-    with_kernel([&](const auto& kernel) {
-        using Kernel = std::decay_t<decltype(kernel)>;
-        const std::span<const Metacube> elements(elements_);
-        const std::span<const BoundingSphere> spheres(spheres_);
-        if (metaball_sweep_) {
-            MetaballSweep<Kernel> sweep(kernel, threshold_, elements, spheres, centre_bound_);
-            if (sweep.template run<kPlaceNeeded>(cells_.elements_of(cell), stretch, work, report, crossed_before))
-                return;
-        }
-        const auto sweep_with = [&]<bool kMetaballsOnly>() {
-            FieldSweep<Kernel, kMetaballsOnly> sweep(kernel, threshold_, elements, spheres, centre_bound_);
-            sweep.run(cells_.elements_of(cell), stretch, work, report, crossed_before);
-        };
-        if (metaballs_only_) sweep_with.template operator()<true>();
-        else sweep_with.template operator()<false>();
-    });
-}
-
 std::optional<CellHit> BlobGroup::first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin,
                                                          const Vec3d& direction, double t_min, double t_max,
                                                          BlobQueryWork& work) const {
-    std::optional<CellHit> found;
-    sweep_cell(
-        cell, origin, direction, t_min, t_max, work,
-        [&](const FieldCrossing& c, const auto& sweep) {
-            const Vec3d hit_point = origin + direction * double(float(c.t));
-            found = CellHit{c, field_sweep_detail::outward_normal(sweep.gradient_at(hit_point))};
-            return true;
-        },
-        [] { return false; });  // where the crossing is matters
-    return found;
+    return blob_cell_queries().first_crossing(*this, cell, origin, direction, t_min, t_max, work);
 }
 
 bool BlobGroup::occluded_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
                                  double t_max, BlobQueryWork& work) const {
-    bool occluded = false;
-    sweep_cell<false>(
-        cell, origin, direction, t_min, t_max, work,
-        [&](const FieldCrossing&, const auto&) { return occluded = true; },
-        // Inside at the cell, outside at the ray's start (F ≤ T, the sweep's sign convention): an odd number of
-        // crossings lies between them. A ray that starts within rounding of the surface (a shadow ray) counts as
-        // outside only if it leaves the surface: one heading inwards crosses it at t_min itself, which the sweep
-        // does not report.
-        [&] {
-            const Vec3d start = origin + direction * t_min;
-            const double f = field(start);
-            occluded = f <= threshold_ && (f < threshold_ * (1 - 1e-6) || dot(gradient(start), direction) < 0);
-            work.roots += occluded ? 1 : 0;
-            return occluded;
-        });
-    return occluded;
+    return blob_cell_queries().occluded(*this, cell, origin, direction, t_min, t_max, work);
 }
 
 std::optional<FieldCrossing> BlobGroup::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
@@ -152,17 +85,9 @@ int BlobGroup::crossings(const Vec3d& origin, const Vec3d& direction, double t_m
                          std::vector<FieldCrossing>& out, BlobQueryWork& work) const {
     const int sign_at_start = field(origin + direction * t_min) > threshold_ ? 1 : -1;
     const std::size_t first = out.size();
+    const BlobCellQueries& queries = blob_cell_queries();
     cells_.walk(origin, direction, t_min, t_max, [&](std::uint32_t cell, double, double) {
-        sweep_cell(
-            cell, origin, direction, t_min, t_max, work,
-            [&](const FieldCrossing& c, const auto&) {
-                // A crossing on the face between two cells is found by both: keep it once.
-                const bool repeated = out.size() > first && c.entering == out.back().entering &&
-                                      c.t - out.back().t <= field_sweep_detail::same_place_tolerance(c.t);
-                if (!repeated) out.push_back(c);
-                return false;
-            },
-            [] { return false; });  // every crossing is wanted
+        queries.crossings(*this, cell, origin, direction, t_min, t_max, out, first, work);
         return true;
     });
     return sign_at_start;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/implicit/blob_cell_queries.h"
 #include "geometry/implicit/blob_cells.h"
 #include "geometry/implicit/field_function.h"
 #include "geometry/implicit/field_sweep.h"
@@ -77,17 +78,15 @@ public:
     void bake(const Transform& similarity, double scale);
 
 private:
+    template <BlobIsa>
+    friend class BlobCellSweep;  // the cell queries' sweeps, one build per instruction set
+
     void build_index();
     enum class KernelKind { Blinn, Nishimura, Murakami, Wyvill, Kim };
-    // Calls f with the kernel as its concrete class, so that the sweep's kernel calls are direct.
+    // Calls f with the kernel as its concrete class, so that the sweep's kernel calls are direct
+    // (blob_group_with_kernel.h).
     template <class F>
     decltype(auto) with_kernel(F&& f) const;
-    // Sweeps cell `cell`'s part of [t_min, t_max]; report(crossing, sweep) returns true to stop. When the part starts
-    // inside after t_min, crossed_before() is asked whether that ends the sweep (FieldSweep::run). Without
-    // kPlaceNeeded, a crossing's t may be any point of the piece it lies on (MetaballSweep::run).
-    template <bool kPlaceNeeded = true, class Report, class CrossedBefore>
-    void sweep_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                    BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) const;
     Vec3d normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const;
     // ∇(F + T) from the `near` elements (a list that holds every element whose support contains the point).
     Vec3d gradient_from(std::span<const std::uint32_t> near, const Vec3d& point) const;

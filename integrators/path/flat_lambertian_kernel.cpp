@@ -1,8 +1,6 @@
 // Which build of the packet kernel runs (flat_lambertian_packets.h): chosen once per process.
-#include <dlfcn.h>
-
 #include "integrators/path/flat_lambertian_packets.h"
-#include "renderer/core/library_directory.h"
+#include "renderer/core/avx2_module.h"
 #include "renderer/core/version.h"
 
 #ifndef ISOTRACE_PACKETS_AVX2_MODULE
@@ -20,10 +18,8 @@ struct ChosenKernel {
 // The module only speeds the render up: where it is missing or cannot load, the baseline kernel computes the
 // same bits.
 ChosenKernel choose() {
-    if (!__builtin_cpu_supports("avx2")) return {};
-    void* module = dlopen((library_directory() / ISOTRACE_PACKETS_AVX2_MODULE).c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!module) return {};
-    const auto entry = reinterpret_cast<FlatLambertianKernelEntry>(dlsym(module, kFlatLambertianKernelEntry));
+    const auto entry = reinterpret_cast<FlatLambertianKernelEntry>(
+        avx2_module_entry(ISOTRACE_PACKETS_AVX2_MODULE, kFlatLambertianKernelEntry));
     const FlatLambertianKernel kernel = entry ? entry(kIsotraceVersion) : nullptr;
     if (!kernel) return {};
     return {kernel, "avx2"};

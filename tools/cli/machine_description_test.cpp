@@ -7,8 +7,8 @@ namespace {
 
 TEST(MachineDescription, HasEveryField) {
     const nlohmann::json machine = machine_description();
-    for (const char* key : {"cpu", "cores", "embree_isa", "embree_native_packets", "embree_version", "compiler",
-                            "flags", "build_type", "isotrace_version", "commit"})
+    for (const char* key : {"cpu", "cores", "embree_isa", "embree_native_packets", "blob_sweep_isa", "embree_version",
+                            "compiler", "flags", "build_type", "isotrace_version", "commit"})
         EXPECT_TRUE(machine.contains(key)) << key;
     EXPECT_GE(machine["cores"].get<unsigned>(), 1u);
     EXPECT_FALSE(machine["compiler"].get<std::string>().empty());
