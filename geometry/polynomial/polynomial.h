@@ -6,6 +6,8 @@
 #include <initializer_list>
 #include <span>
 
+#include "renderer/math/double4.h"
+
 namespace isotrace {
 
 // The largest degree any Polynomial can have. Field polynomials of the metaball kernels reach 6; 10 leaves room.
@@ -72,6 +74,9 @@ public:
 
 private:
     void drop_zero_leading_coefficients();
+    // compose_linear with the coefficients in kQuads lanes of four (4·kQuads > degree).
+    template <int kQuads>
+    Polynomial compose_linear_in_quads(double offset, double scale) const;
     // Euclidean division: returns the remainder (noise-cleaned as in remainder()) and stores the quotient.
     Polynomial divide(const Polynomial& divisor, double relative_noise, Polynomial& quotient) const;
 
@@ -98,25 +103,31 @@ inline ValueAndDerivative Polynomial::evaluate_with_derivative(double t) const {
 }
 
 inline Polynomial Polynomial::compose_linear(double offset, double scale) const {
-    // Horner's scheme on polynomials: result = (...(cₙ·s + cₙ₋₁)·s + ...) with s = offset + scale·u. Each step
-    // updates the coefficients upwards, carrying the old lower one in a register: the downward loop was vectorised
-    // into 16-byte loads of pairs the step before had stored one by one, each waiting for those stores (a failed
-    // store forwarding: 9 % of the blob sweep's samples, perf). Same operations, same bits.
-    Polynomial result;
-    double* c = result.coefficients_.data();
-    c[0] = coefficients_[degree_];
+    if (degree_ < 4) return compose_linear_in_quads<1>(offset, scale);
+    if (degree_ < 8) return compose_linear_in_quads<2>(offset, scale);
+    return compose_linear_in_quads<(kMaxPolynomialDegree + 4) / 4>(offset, scale);
+}
+
+template <int kQuads>
+Polynomial Polynomial::compose_linear_in_quads(double offset, double scale) const {
+    // Horner's scheme on polynomials: result = (...(cₙ·s + cₙ₋₁)·s + ...) with s = offset + scale·u, every
+    // coefficient of a step at once in lanes of four: cₖ ← cₖ·offset + cₖ₋₁·scale (the coefficients above the
+    // degree so far are 0 and stay 0), and c₀ ← c₀·offset + aᵢ. The scalar scheme's operations, so its bits.
+    static_assert(4 * kQuads <= kMaxPolynomialDegree + 4, "lanes beyond the coefficient array");
+    Double4 c[kQuads] = {};
+    c[0][0] = coefficients_[degree_];
     for (int i = degree_ - 1; i >= 0; --i) {
-        const int top = result.degree_ + 1;  // its old coefficient is 0
-        double lower = c[0];
-        c[0] = c[0] * offset + coefficients_[i];
-        for (int k = 1; k < top; ++k) {
-            const double old = c[k];
-            c[k] = old * offset + lower * scale;
-            lower = old;
-        }
-        c[top] = 0.0 * offset + lower * scale;
-        ++result.degree_;
+        Double4 next[kQuads];
+        // Each coefficient's lower neighbour, one lane up (lane 0 of the first quad is overwritten below).
+        next[0] = c[0] * offset + __builtin_shufflevector(c[0], c[0], 0, 0, 1, 2) * scale;
+        for (int q = 1; q < kQuads; ++q)
+            next[q] = c[q] * offset + __builtin_shufflevector(c[q - 1], c[q], 3, 4, 5, 6) * scale;
+        next[0][0] = c[0][0] * offset + coefficients_[i];
+        for (int q = 0; q < kQuads; ++q) c[q] = next[q];
     }
+    Polynomial result;
+    for (int k = 0; k <= degree_; ++k) result.coefficients_[std::size_t(k)] = c[k / 4][k % 4];
+    result.degree_ = degree_;
     result.drop_zero_leading_coefficients();
     return result;
 }

@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <cstring>
 
-#if defined(__SSE2__)
+#if defined(__AVX__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
@@ -29,13 +31,19 @@ inline void store4(double* p, Double4 v) { std::memcpy(p, &v, sizeof v); }
 
 // mask ? a : b per lane.
 inline Double4 select(Mask4 mask, Double4 a, Double4 b) { return (Double4)((mask & (Mask4)a) | (~mask & (Mask4)b)); }
+// |v| per lane (the sign bit cleared, as std::abs does).
+inline Double4 abs4(Double4 v) { return (Double4)((Mask4)v & std::int64_t(0x7fffffffffffffff)); }
 // a < b ? a : b and a > b ? a : b per lane (minpd / maxpd).
 inline Double4 min4(Double4 a, Double4 b) { return select(a < b, a, b); }
 inline Double4 max4(Double4 a, Double4 b) { return select(a > b, a, b); }
 
 // Bit k set when lane k of the mask is.
 inline unsigned mask_bits(Mask4 mask) {
-#if defined(__SSE2__)
+#if defined(__AVX__)
+    __m256d all;
+    std::memcpy(&all, &mask, sizeof all);
+    return unsigned(_mm256_movemask_pd(all));
+#elif defined(__SSE2__)
     __m128d low, high;
     std::memcpy(&low, &mask, sizeof low);
     std::memcpy(&high, reinterpret_cast<const char*>(&mask) + sizeof low, sizeof high);
