@@ -280,7 +280,7 @@ double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
     Double4 sum{};
     for (std::size_t g = 0; g < groups_; ++g) {
         const Double4 weight = load4(weight_ + 4 * g);
-        sum += select(lanes(g), select(weight < 0.0, -weight, weight), Double4{});
+        sum += select(lanes(g), abs4(weight), Double4{});
     }
     return lane_sum(sum);
 }
@@ -429,7 +429,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                         const Mask4 mask = counts[g];
                         const Double4 c = load4(term_[i] + 4 * g);
                         total += select(mask, c, Double4{});
-                        size += select(mask, select(c < 0.0, -c, c), Double4{});
+                        size += select(mask, abs4(c), Double4{});
                     }
                     sum[i] = lane_sum(total);
                     magnitude[i] = lane_sum(size);
