@@ -25,7 +25,9 @@ TEST(BlobCellQueries, TheAvx2BuildIsUsedWhereTheCpuHasAvx2) {
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(const Vec3d& a, const Vec3d& b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
+bool same_bits(const Vec3d& a, const Vec3d& b) {
+    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
 
 BlobGroup random_metaball_group(std::uint32_t seed, const std::string& kernel) {
     std::mt19937_64 rng(seed);

@@ -141,30 +141,38 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
     const Vec3d& d = stretch.direction;
     const std::size_t n = near_.size();
     const std::size_t near_groups = (n + 3) / 4;
-    for (std::size_t i = 0; i < 4 * near_groups; ++i) {
-        // The lanes past the list repeat its last element; the exact test leaves them out.
-        const Metacube& element = elements_[near_[std::min(i, n - 1)]];
-        x_[i] = element.centre().x;
-        y_[i] = element.centre().y;
-        z_[i] = element.centre().z;
-        radius_[i] = element.radius();
-        weight_[i] = element.weight();
-    }
     inverse_length2_ = 1 / dot(d, d);
     const double rounding = nearest_approach_rounding(stretch, centre_bound_);
     Double4 upper{};  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     kept_lanes_ = 0;
     for (std::size_t g = 0; g < near_groups; ++g) {
+        // Each element's centre and radius in one load, four elements transposed into lanes in registers (stored for
+        // the steps after). The lanes past the list repeat its last element; the exact test leaves them out.
+        const double* e[4];
+        for (std::size_t k = 0; k < 4; ++k) e[k] = elements_[near_[std::min(4 * g + k, n - 1)]].centre_radius_weight();
+        const Double4 a = load4(e[0]), b = load4(e[1]), c = load4(e[2]), f = load4(e[3]);
+        const Double4 ab_even = __builtin_shufflevector(a, b, 0, 4, 2, 6);
+        const Double4 ab_odd = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+        const Double4 cf_even = __builtin_shufflevector(c, f, 0, 4, 2, 6);
+        const Double4 cf_odd = __builtin_shufflevector(c, f, 1, 5, 3, 7);
+        const Double4 x = __builtin_shufflevector(ab_even, cf_even, 0, 1, 4, 5);
+        const Double4 y = __builtin_shufflevector(ab_odd, cf_odd, 0, 1, 4, 5);
+        const Double4 z = __builtin_shufflevector(ab_even, cf_even, 2, 3, 6, 7);
+        const Double4 radius = __builtin_shufflevector(ab_odd, cf_odd, 2, 3, 6, 7);
+        const Double4 weight{e[0][4], e[1][4], e[2][4], e[3][4]};
+        store4(x_ + 4 * g, x);
+        store4(y_ + 4 * g, y);
+        store4(z_ + 4 * g, z);
+        store4(radius_ + 4 * g, radius);
+        store4(weight_ + 4 * g, weight);
         const std::int64_t first = std::int64_t(4 * g);
         const Mask4 in_list = (Mask4{first, first + 1, first + 2, first + 3} < std::int64_t(n));
-        const Double4 x = load4(x_ + 4 * g), y = load4(y_ + 4 * g), z = load4(z_ + 4 * g);
         const Double4 middle = ((x - o.x) * d.x + (y - o.y) * d.y + (z - o.z) * d.z) * inverse_length2_;
         store4(middle_ + 4 * g, middle);
         // The stretch's point nearest the centre: the element's field there bounds it on the whole stretch.
         const Double4 nearest = min4(max4(middle, Double4{} + stretch.t_begin), Double4{} + stretch.t_end);
         const Double4 gx = (o.x + d.x * nearest) - x, gy = (o.y + d.y * nearest) - y, gz = (o.z + d.z * nearest) - z;
         const Double4 gap2 = gx * gx + gy * gy + gz * gz;
-        const Double4 radius = load4(radius_ + 4 * g), weight = load4(weight_ + 4 * g);
         const Double4 keep = radius * (1 + 1e-9) + rounding;
         const Mask4 kept = in_list & (gap2 <= keep * keep);
         kept_lanes_ |= mask_bits(kept) << (4 * g);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 
 #include "geometry/implicit/parameter_check.h"
@@ -36,6 +37,9 @@ Vec3d OrientedBox::to_world_vector(const Vec3d& local_vector) const {
 
 Metacube::Metacube(const OrientedBox& skeleton, double radius, double weight)
     : centre_(skeleton.centre), radius_(radius), weight_(weight), half_size_(skeleton.half_size) {
+    static_assert(offsetof(Metacube, radius_) == 3 * sizeof(double) &&
+                      offsetof(Metacube, weight_) == 4 * sizeof(double),
+                  "centre_radius_weight(): five doubles side by side");
     require_components(skeleton.centre, [](double c) { return std::isfinite(c); }, "centre", "must be finite");
     if (!is_orthonormal(skeleton.axes))
         throw std::invalid_argument("rotation: the local axes must be finite and orthonormal");

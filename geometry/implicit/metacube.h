@@ -52,6 +52,9 @@ public:
     bool is_metaball() const { return half_size_ == Vec3d(0, 0, 0); }
     double radius() const { return radius_; }
     double weight() const { return weight_; }
+    // The centre's x, y, z, the radius and the weight, side by side: the metaball sweep loads the first four of
+    // several elements as lanes and transposes them.
+    const double* centre_radius_weight() const { return &centre_.x; }
     bool is_hard_cube() const { return radius_ == 0; }
     // Half the skeleton box's diagonal, and the radius of the sphere about the centre that holds the support.
     double half_diagonal() const { return length(half_size_); }
