@@ -201,18 +201,23 @@ void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
         candidates |= mask_bits(meets) << (4 * g);
     }
     candidates &= kept_lanes_;
-    // Compacted in place (lane k ≤ i), without a branch per lane; ascending element order is kept.
     std::size_t k = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        x_[k] = x_[i];
-        y_[k] = y_[i];
-        z_[k] = z_[i];
-        radius_[k] = radius_[i];
-        weight_[k] = weight_[i];
-        t_enter_[k] = t_enter_[i];
-        t_exit_[k] = t_exit_[i];
-        index_[k] = near_[i];
-        k += (candidates >> i) & 1u;
+    if (candidates == unsigned((std::uint64_t(1) << n) - 1)) {
+        // Every near element is a candidate, in its lane already.
+        for (; k < n; ++k) index_[k] = near_[k];
+    } else {
+        // Compacted in place (lane k ≤ i), without a branch per lane; ascending element order is kept.
+        for (std::size_t i = 0; i < n; ++i) {
+            x_[k] = x_[i];
+            y_[k] = y_[i];
+            z_[k] = z_[i];
+            radius_[k] = radius_[i];
+            weight_[k] = weight_[i];
+            t_enter_[k] = t_enter_[i];
+            t_exit_[k] = t_exit_[i];
+            index_[k] = near_[i];
+            k += (candidates >> i) & 1u;
+        }
     }
     count_ = k;
     groups_ = (k + 3) / 4;
