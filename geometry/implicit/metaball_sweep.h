@@ -436,16 +436,20 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                 std::array<double, kMaxPolynomialDegree + 1> magnitude{};
                 std::array<double, kTermSize> sum;
                 int terms = 1;
-                for (std::size_t i = 0; i < kTermSize; ++i) {
-                    Double4 total{}, size{};
-                    for (std::size_t g = 0; g < groups_; ++g) {
-                        const Mask4 mask = counts[g];
+                // Group by group, every coefficient at once (each lane's sum still runs in ascending group order).
+                Double4 total[kTermSize] = {}, size[kTermSize] = {};
+                for (std::size_t g = 0; g < groups_; ++g) {
+                    const Mask4 mask = counts[g];
+#pragma GCC unroll 7
+                    for (std::size_t i = 0; i < kTermSize; ++i) {
                         const Double4 c = load4(term_[i] + 4 * g);
-                        total += select(mask, c, Double4{});
-                        size += select(mask, abs4(c), Double4{});
+                        total[i] += select(mask, c, Double4{});
+                        size[i] += select(mask, abs4(c), Double4{});
                     }
-                    sum[i] = lane_sum(total);
-                    magnitude[i] = lane_sum(size);
+                }
+                for (std::size_t i = 0; i < kTermSize; ++i) {
+                    sum[i] = lane_sum(total[i]);
+                    magnitude[i] = lane_sum(size[i]);
                 }
                 sum[0] -= threshold_;
                 magnitude[0] += threshold_;
