@@ -4,8 +4,9 @@
 //
 // Ray queries work per cell (blob_cells.h): space is cut into disjoint boxes, each listing the elements that
 // reach into it, and a cell's stretch of a ray is swept once, front to back (metaball_sweep.h for metaballs of a
-// one-piece polynomial kernel, field_sweep.h for everything else). Cells are what
-// Embree traverses (blob_group_shape.h); walking a ray's cells in order gives every crossing (CSG) or the first.
+// one-piece polynomial kernel, field_sweep.h for everything else), by the cell queries of blob_cell_sweep.cpp, built
+// for baseline x86-64 and for AVX2 (blob_cell_queries.h). Cells are what Embree traverses (blob_group_shape.h);
+// walking a ray's cells in order gives every crossing (CSG) or the first.
 #include <cstdint>
 #include <memory>
 #include <optional>
