@@ -2,7 +2,6 @@
 #include "geometry/implicit/blob_cell_queries.h"
 
 #include "renderer/core/avx2_module.h"
-#include "renderer/core/version.h"
 
 #ifndef ISOTRACE_BLOB_AVX2_MODULE
 #error "the build must define ISOTRACE_BLOB_AVX2_MODULE (the AVX2 blob module's file name)"
@@ -12,9 +11,8 @@ namespace isotrace {
 
 const BlobCellQueries& blob_cell_queries() {
     static const BlobCellQueries& chosen = []() -> const BlobCellQueries& {
-        const auto entry =
-            reinterpret_cast<BlobCellQueriesEntry>(avx2_module_entry(ISOTRACE_BLOB_AVX2_MODULE, kBlobCellQueriesEntry));
-        const BlobCellQueries* queries = entry ? entry(kIsotraceVersion) : nullptr;
+        const BlobCellQueries* queries =
+            avx2_module_build<const BlobCellQueries*>(ISOTRACE_BLOB_AVX2_MODULE, kBlobCellQueriesEntry);
         return queries ? *queries : baseline_blob_cell_queries();
     }();
     return chosen;

@@ -36,9 +36,9 @@ struct BlobCellQueries {
     const char* isa;  // "baseline x86-64" or "avx2"
 };
 
-// The module exports this entry; it returns its queries when the library's version is its own, else nullptr.
+// The module exports this entry, const BlobCellQueries*(const char* isotrace_version): its queries when the
+// library's version is its own, else nullptr (avx2_module_build).
 inline constexpr const char* kBlobCellQueriesEntry = "isotrace_blob_cell_queries";
-using BlobCellQueriesEntry = const BlobCellQueries* (*)(const char* isotrace_version);
 
 // The queries of the library's own build, and the ones this process uses (the AVX2 module's where the CPU has AVX2
 // and the module loads).

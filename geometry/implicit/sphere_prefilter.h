@@ -80,9 +80,6 @@ private:
     }
 };
 
-// Bit k of the result set when lane k is true.
-inline unsigned lane_mask(IntLanes lanes) { return lane_bits(lanes); }
-
 // Which of eight bounding spheres may the segment p + s·u (|u| = 1, |s| ≤ half_length) come within: the squared
 // distance from a centre c is |(c − p) × u|² across the line plus (|s_c| − half_length)² beyond an end, where
 // s_c = (c − p)·u. `margin` must cover float rounding: 2⁻¹⁸·(2|p| + max |centre|), with magnitude_bound(p) for |p|,
@@ -101,7 +98,7 @@ struct SegmentNearSpheres {
         const FloatLanes excess = abs(along) - half;
         const FloatLanes beyond = max(excess, FloatLanes{});
         const FloatLanes reach = s.radius * (1 + 0x1p-18f) + margin;
-        return lane_mask((ax * ax + ay * ay + az * az + beyond * beyond) <= reach * reach);
+        return lane_bits((ax * ax + ay * ay + az * az + beyond * beyond) <= reach * reach);
     }
 
     float px, py, pz, ux, uy, uz, margin, half;
@@ -117,7 +114,7 @@ struct PointNearSpheres {
     unsigned test(const SphereLanes& s) const {
         const FloatLanes fx = s.x - px, fy = s.y - py, fz = s.z - pz;
         const FloatLanes reach = s.radius * (1 + 0x1p-18f) + margin;
-        return lane_mask((fx * fx + fy * fy + fz * fz) <= reach * reach);
+        return lane_bits((fx * fx + fy * fy + fz * fz) <= reach * reach);
     }
 
     float px, py, pz, margin;

@@ -14,7 +14,7 @@ namespace {
 // Passes the spheres whose radius exceeds a level.
 struct RadiusAbove {
     float level;
-    unsigned test(const SphereLanes& s) const { return lane_mask(s.radius > level); }
+    unsigned test(const SphereLanes& s) const { return lane_bits(s.radius > level); }
 };
 
 TEST(SpherePrefilter, AppendNearKeepsThePassingElementsInListOrderAfterWhatWasThere) {

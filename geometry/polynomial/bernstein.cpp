@@ -1,13 +1,11 @@
 #include "geometry/polynomial/bernstein.h"
 
-#include <cmath>
-
 namespace isotrace {
 
 BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval) {
     using namespace bernstein_detail;
     const int n = on_unit_interval.degree();
-    Double4 value[kQuads], magnitude[kQuads];
+    Double4 value[kCoefficientQuads], magnitude[kCoefficientQuads];
     bernstein_values(on_unit_interval, n, value, magnitude);
     const double relative_error = relative_conversion_error(n);
     BernsteinCoefficients result;

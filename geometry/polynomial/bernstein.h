@@ -34,7 +34,6 @@ inline int bernstein_sign_variations(const Polynomial& on_unit_interval, double 
 namespace bernstein_detail {
 
 constexpr int kSize = kMaxPolynomialDegree + 1;
-constexpr int kQuads = (kSize + 3) / 4;  // lanes of four doubles that hold kSize coefficients
 
 constexpr auto kBinomials = [] {
     std::array<std::array<double, kSize>, kSize> table{};
@@ -48,7 +47,7 @@ constexpr auto kBinomials = [] {
 // The conversion weight C(k,i)/C(n,i) of coefficient i in Bernstein value k, per degree n, as columns: kColumns[n][i]
 // holds it for every k (0 where k < i or k > n), in lanes of four.
 constexpr auto kColumns = [] {
-    std::array<std::array<std::array<double, 4 * kQuads>, kSize>, kSize> table{};
+    std::array<std::array<std::array<double, 4 * kCoefficientQuads>, kSize>, kSize> table{};
     for (int n = 0; n <= kMaxPolynomialDegree; ++n)
         for (int i = 0; i <= n; ++i)
             for (int k = i; k <= n; ++k) table[n][i][k] = kBinomials[k][i] / kBinomials[n][i];
@@ -99,10 +98,9 @@ int sign_variations(const Polynomial& p, double coefficient_error) {
 inline int bernstein_sign_variations(const Polynomial& on_unit_interval, double coefficient_error) {
     // All values at once in lanes (the blob sweep's pieces are of degree ≤ 6: two lanes of four). Inline, so that
     // the AVX2 build of the blob cell queries has its own (blob_cell_queries.h).
-    const int n = on_unit_interval.degree();
-    if (n < 4) return bernstein_detail::sign_variations<1>(on_unit_interval, coefficient_error);
-    if (n < 8) return bernstein_detail::sign_variations<2>(on_unit_interval, coefficient_error);
-    return bernstein_detail::sign_variations<bernstein_detail::kQuads>(on_unit_interval, coefficient_error);
+    return with_coefficient_quads(on_unit_interval.degree(), [&]<int kQuads>() {
+        return bernstein_detail::sign_variations<kQuads>(on_unit_interval, coefficient_error);
+    });
 }
 
 }  // namespace isotrace

@@ -13,6 +13,18 @@ namespace isotrace {
 // The largest degree any Polynomial can have. Field polynomials of the metaball kernels reach 6; 10 leaves room.
 inline constexpr int kMaxPolynomialDegree = 10;
 
+// Lanes of four doubles (double4.h) that hold every coefficient of any Polynomial.
+inline constexpr int kCoefficientQuads = (kMaxPolynomialDegree + 4) / 4;
+
+// f.template operator()<kQuads>() with the fewest lanes of four that hold the coefficients 0 … degree: the lane code
+// on coefficients (compose_linear, the Bernstein test) does no work for the lanes a low degree leaves empty.
+template <class F>
+decltype(auto) with_coefficient_quads(int degree, F&& f) {
+    if (degree < 4) return f.template operator()<1>();
+    if (degree < 8) return f.template operator()<2>();
+    return f.template operator()<kCoefficientQuads>();
+}
+
 struct ValueAndDerivative {
     double value;
     double derivative;
@@ -103,9 +115,8 @@ inline ValueAndDerivative Polynomial::evaluate_with_derivative(double t) const {
 }
 
 inline Polynomial Polynomial::compose_linear(double offset, double scale) const {
-    if (degree_ < 4) return compose_linear_in_quads<1>(offset, scale);
-    if (degree_ < 8) return compose_linear_in_quads<2>(offset, scale);
-    return compose_linear_in_quads<(kMaxPolynomialDegree + 4) / 4>(offset, scale);
+    return with_coefficient_quads(
+        degree_, [&]<int kQuads>() { return compose_linear_in_quads<kQuads>(offset, scale); });
 }
 
 template <int kQuads>
@@ -113,7 +124,7 @@ Polynomial Polynomial::compose_linear_in_quads(double offset, double scale) cons
     // Horner's scheme on polynomials: result = (...(cₙ·s + cₙ₋₁)·s + ...) with s = offset + scale·u, every
     // coefficient of a step at once in lanes of four: cₖ ← cₖ·offset + cₖ₋₁·scale (the coefficients above the
     // degree so far are 0 and stay 0), and c₀ ← c₀·offset + aᵢ. The scalar scheme's operations, so its bits.
-    static_assert(4 * kQuads <= kMaxPolynomialDegree + 4, "lanes beyond the coefficient array");
+    static_assert(kQuads <= kCoefficientQuads, "lanes beyond the coefficient array");
     Double4 c[kQuads] = {};
     c[0][0] = coefficients_[degree_];
     for (int i = degree_ - 1; i >= 0; --i) {

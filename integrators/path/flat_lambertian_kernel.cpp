@@ -1,7 +1,6 @@
 // Which build of the packet kernel runs (flat_lambertian_packets.h): chosen once per process.
 #include "integrators/path/flat_lambertian_packets.h"
 #include "renderer/core/avx2_module.h"
-#include "renderer/core/version.h"
 
 #ifndef ISOTRACE_PACKETS_AVX2_MODULE
 #error "the build must define ISOTRACE_PACKETS_AVX2_MODULE (the AVX2 kernel module's file name)"
@@ -18,9 +17,8 @@ struct ChosenKernel {
 // The module only speeds the render up: where it is missing or cannot load, the baseline kernel computes the
 // same bits.
 ChosenKernel choose() {
-    const auto entry = reinterpret_cast<FlatLambertianKernelEntry>(
-        avx2_module_entry(ISOTRACE_PACKETS_AVX2_MODULE, kFlatLambertianKernelEntry));
-    const FlatLambertianKernel kernel = entry ? entry(kIsotraceVersion) : nullptr;
+    const FlatLambertianKernel kernel =
+        avx2_module_build<FlatLambertianKernel>(ISOTRACE_PACKETS_AVX2_MODULE, kFlatLambertianKernelEntry);
     if (!kernel) return {};
     return {kernel, "avx2"};
 }

@@ -22,9 +22,9 @@ using FlatLambertianKernel = void (*)(const PathSettings& settings, std::span<co
                                       std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                       std::span<Rgb> radiance);
 
-// The module's entry: given the library's version, its kernel (null for another version).
+// The module's entry, FlatLambertianKernel(const char* isotrace_version): its kernel when the library's version is
+// its own, else nullptr (avx2_module_build).
 inline constexpr const char* kFlatLambertianKernelEntry = "isotrace_flat_lambertian_kernel";
-using FlatLambertianKernelEntry = FlatLambertianKernel (*)(const char* isotrace_version);
 
 // The AVX2 module's kernel where the CPU has AVX2 and the module loads, else the baseline one.
 FlatLambertianKernel flat_lambertian_kernel();
