@@ -85,14 +85,6 @@ int named_counter_slot(const std::string& name, int total_slot) {
     return int(r.counter_names.size() - 1);
 }
 
-void add_to_named(std::span<const int> slots, std::span<const std::uint64_t> amounts) {
-    ThreadBlock& block = local_block();
-    for (std::size_t i = 0; i < slots.size(); ++i) {
-        Counter& counter = block.named[std::size_t(slots[i])];
-        counter.store(counter.load(std::memory_order_relaxed) + amounts[i], std::memory_order_relaxed);
-    }
-}
-
 CounterTotals totals() {
     Registry& r = registry();
     std::lock_guard lock(r.mutex);
