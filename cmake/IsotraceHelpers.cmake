@@ -33,14 +33,15 @@ function(isotrace_image_module target source)
   add_dependencies(isotrace ${target})
 endfunction()
 
-# A kernel built a second time, for AVX2 without FMA (so that it rounds as the library's baseline build of the same
-# source does): the MODULE `target` from `source` with the compile definitions `ARGN`, which libisotrace loads from
-# its own directory where the CPU has AVX2 (renderer/core/avx2_module.h). Its inline functions, compiled for AVX2,
+# A kernel built a second time, for AVX2 and FMA without contraction (so that it rounds as the library's baseline
+# build of the same source does; only the bounds that renderer/math/fused_bounds.h marks fuse): the MODULE `target`
+# from `source` with the compile definitions `ARGN`, which libisotrace loads from its own directory where the CPU has
+# AVX2 and FMA (renderer/core/avx2_module.h). Its inline functions, compiled for AVX2,
 # stay inside it (hidden), never replacing the library's; its calls into the library resolve against the
 # libisotrace the process has loaded.
 function(isotrace_avx2_module target source)
   add_library(${target} MODULE ${source})
-  target_compile_options(${target} PRIVATE -mavx2 -mno-fma -Wall -Wextra)
+  target_compile_options(${target} PRIVATE -mavx2 -mfma -ffp-contract=off -Wall -Wextra)
   target_compile_definitions(${target} PRIVATE ${ARGN})
   target_include_directories(${target} PRIVATE ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/include)
   set_target_properties(${target} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)

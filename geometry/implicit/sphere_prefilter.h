@@ -15,6 +15,7 @@
 #include <span>
 
 #include "geometry/implicit/metacube.h"
+#include "renderer/math/fused_bounds.h"
 #include "renderer/math/lanes.h"
 
 #if defined(__AVX2__)
@@ -92,6 +93,7 @@ struct SegmentNearSpheres {
           half(float(half_length * (1 + 0x1p-18)) + margin) {}
 
     unsigned test(const SphereLanes& s) const {
+        ISOTRACE_FUSED_BOUNDS  // its margin is far above a rounding: fused or not, it keeps what the exact test keeps
         const FloatLanes fx = s.x - px, fy = s.y - py, fz = s.z - pz;
         const FloatLanes ax = fy * uz - fz * uy, ay = fz * ux - fx * uz, az = fx * uy - fy * ux;
         const FloatLanes along = fx * ux + fy * uy + fz * uz;

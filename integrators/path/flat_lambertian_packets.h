@@ -7,8 +7,8 @@
 // was about as large as Embree's own time (docs/benchmarks.md, issue 14).
 //
 // The kernel is built twice: into the library for baseline x86-64 and, for AVX2, into a module beside it that is
-// loaded on CPUs that have AVX2 (a module, so that the inline functions it compiles for AVX2 stay its own; no FMA,
-// so both round alike). flat_lambertian_kernel() picks one once.
+// loaded on CPUs that have AVX2 and FMA (a module, so that the inline functions it compiles for AVX2 stay its own;
+// no contraction, so both round alike). flat_lambertian_kernel() picks one once.
 #include <span>
 
 #include "integrators/path/path_integrator.h"

@@ -6,8 +6,8 @@
 namespace isotrace {
 
 // Loads the module `file_name` from beside the loaded libisotrace and returns the address of its `entry`; nullptr
-// where the CPU lacks AVX2 or the module is missing, cannot load or lacks the entry (the caller then keeps its
-// baseline build, which computes the same bits). Callers choose once per process.
+// where the CPU lacks AVX2 or FMA (the modules are built for both) or the module is missing, cannot load or lacks the
+// entry (the caller then keeps its baseline build, which computes the same bits). Callers choose once per process.
 void* avx2_module_entry(const char* file_name, const char* entry);
 
 // What the module's `entry`, a function Result(const char* isotrace_version), gives this library: its build of a
