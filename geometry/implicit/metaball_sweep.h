@@ -82,34 +82,26 @@ private:
     // dist² quadratics.
     void make_candidates(const SweepStretch& stretch);
     void compose_terms();
-    // The kernel on x = r²/R² per lane, zero from x = 1 on.
-    Double4 unit_value(Double4 x) const {
+    // The kernel on x = r²/R² per lane, zero from x = 1 on, by Horner's rule with `mul_add`: RoundedMulAdd for values,
+    // BoundMulAdd (fused where the build has FMA, fused_bounds.h) for bounds.
+    template <class MulAdd = RoundedMulAdd>
+    Double4 unit_value(Double4 x, MulAdd mul_add = {}) const {
         const Double4 clamped = min4(x, Double4{} + 1.0);
         const auto& b = unit_.coefficients;
-        const Double4 value = ((b[3] * clamped + b[2]) * clamped + b[1]) * clamped + b[0];
+        const Double4 value = mul_add(mul_add(mul_add(clamped, b[3], Double4{} + b[2]), clamped, b[1]), clamped, b[0]);
         return select(x < 1.0, value, Double4{});
     }
-    // unit_value for the bounds: the same polynomial, its multiply–adds fused where the build has FMA
-    // (fused_bounds.h).
-    Double4 unit_bound(Double4 x) const {
-        ISOTRACE_FUSED_BOUNDS
-        const Double4 clamped = min4(x, Double4{} + 1.0);
-        const auto& b = unit_.coefficients;
-        const Double4 value = ((b[3] * clamped + b[2]) * clamped + b[1]) * clamped + b[0];
-        return select(x < 1.0, value, Double4{});
-    }
-    // dist² per lane of group g at s (about the stretch's start).
-    Double4 distance2(std::size_t g, double s) const {
-        return load4(q0_ + 4 * g) + s * (load4(q1_ + 4 * g) + s * c2_);
+    // dist² per lane of group g at s (about the stretch's start; a number or one per lane).
+    template <class S, class MulAdd = RoundedMulAdd>
+    Double4 distance2(std::size_t g, S s, MulAdd mul_add = {}) const {
+        return mul_add(s, mul_add(s, c2_, load4(q1_ + 4 * g)), load4(q0_ + 4 * g));
     }
     // The smallest and largest dist² per lane of group g on [s0, s1] (branch free: which end is nearer is data), for
-    // the piece's bounds: fused where the build has FMA (fused_bounds.h).
+    // the piece's bounds.
     std::pair<Double4, Double4> distance2_range(std::size_t g, double s0, double s1) const {
-        ISOTRACE_FUSED_BOUNDS
-        const Double4 q0 = load4(q0_ + 4 * g), q1 = load4(q1_ + 4 * g);
-        const Double4 at_s0 = q0 + s0 * (q1 + s0 * c2_), at_s1 = q0 + s1 * (q1 + s1 * c2_);
+        const Double4 at_s0 = distance2(g, s0, BoundMulAdd{}), at_s1 = distance2(g, s1, BoundMulAdd{});
         const Double4 nearest = min4(max4(load4(vertex_ + 4 * g), Double4{} + s0), Double4{} + s1);
-        const Double4 at_nearest = q0 + nearest * (q1 + nearest * c2_);
+        const Double4 at_nearest = distance2(g, nearest, BoundMulAdd{});
         return {max4(min4(min4(at_s0, at_s1), at_nearest), Double4{}), max4(at_s0, at_s1)};
     }
     // The elements counting on the piece that starts at t0, per group of four lanes (entered, not left).
@@ -188,7 +180,8 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
         const Double4 keep = radius * (1 + 1e-9) + rounding;
         const Mask4 kept = in_list & (gap2 <= keep * keep);
         kept_lanes_ |= mask_bits(kept) << (4 * g);
-        upper += select(kept & (weight > 0.0), weight * unit_bound(gap2 / (radius * radius)), Double4{});
+        const Double4 bound = weight * unit_value(gap2 / (radius * radius), BoundMulAdd{});
+        upper += select(kept & (weight > 0.0), bound, Double4{});
     }
     return lane_sum(upper);
 }
@@ -410,11 +403,11 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                 const auto [near, far] = distance2_range(g, s0, s1);
                 const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g), weight = load4(weight_ + 4 * g);
                 if (previous_sign < 0) {
-                    high += select(mask, weight * unit_bound(select(weight > 0.0, near, far) * inverse_radius2),
-                                   Double4{});
+                    const Double4 x = select(weight > 0.0, near, far) * inverse_radius2;
+                    high += select(mask, weight * unit_value(x, BoundMulAdd{}), Double4{});
                 } else {
-                    const Double4 w_near = weight * unit_bound(near * inverse_radius2),
-                                  w_far = weight * unit_bound(far * inverse_radius2);
+                    const Double4 w_near = weight * unit_value(near * inverse_radius2, BoundMulAdd{}),
+                                  w_far = weight * unit_value(far * inverse_radius2, BoundMulAdd{});
                     low += select(mask, min4(w_near, w_far), Double4{});
                     high += select(mask, max4(w_near, w_far), Double4{});
                 }

@@ -11,3 +11,23 @@
 #else
 #define ISOTRACE_FUSED_BOUNDS
 #endif
+
+namespace isotrace {
+
+// a·b + c as written (two roundings), and the same fused where the build has FMA: the one formula written once for
+// values and for bounds (the multiply–add chosen by the caller).
+struct RoundedMulAdd {
+    template <class A, class B, class C>
+    auto operator()(A a, B b, C c) const {
+        return a * b + c;
+    }
+};
+struct BoundMulAdd {
+    template <class A, class B, class C>
+    auto operator()(A a, B b, C c) const {
+        ISOTRACE_FUSED_BOUNDS
+        return a * b + c;
+    }
+};
+
+}  // namespace isotrace
