@@ -20,32 +20,33 @@ function(isotrace_test_timeout variable seconds)
   set(${variable} ${scaled} PARENT_SCOPE)
 endfunction()
 
-# An image module `target` built from `source` and linked with the image libraries `ARGN`: a MODULE library that
-# libisotrace loads with dlopen from its own directory on first use (renderer/image/image_codec.h). Only its entry
-# point is exported (fewer symbols to relocate when it loads), and every program linking libisotrace may read or
-# write images, so building the library builds it.
-function(isotrace_image_module target source)
+# A MODULE library `target` from `source` that libisotrace loads with dlopen from its own directory: only its entry
+# point is exported (hidden visibility: fewer symbols to relocate when it loads, and its inline functions stay its
+# own), and building the library builds it.
+function(isotrace_module target source)
   add_library(${target} MODULE ${source})
   target_compile_options(${target} PRIVATE -Wall -Wextra)
   target_include_directories(${target} PRIVATE ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/include)
-  target_link_libraries(${target} PRIVATE ${ARGN})
   set_target_properties(${target} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
   add_dependencies(isotrace ${target})
 endfunction()
 
+# An image module `target` built from `source` and linked with the image libraries `ARGN`, loaded on first use
+# (renderer/image/image_codec.h): every program linking libisotrace may read or write images.
+function(isotrace_image_module target source)
+  isotrace_module(${target} ${source})
+  target_link_libraries(${target} PRIVATE ${ARGN})
+endfunction()
+
 # A kernel built a second time, for AVX2 and FMA without contraction (so that it rounds as the library's baseline
-# build of the same source does; only the bounds that renderer/math/fused_bounds.h marks fuse): the MODULE `target`
-# from `source` with the compile definitions `ARGN`, which libisotrace loads from its own directory where the CPU has
-# AVX2 and FMA (renderer/core/avx2_module.h). Its inline functions, compiled for AVX2,
-# stay inside it (hidden), never replacing the library's; its calls into the library resolve against the
-# libisotrace the process has loaded.
+# build of the same source does; only the bounds that renderer/math/fused_bounds.h marks fuse): the module `target`
+# from `source` with the compile definitions `ARGN`, loaded where the CPU has AVX2 and FMA
+# (renderer/core/avx2_module.h). Its inline functions, compiled for AVX2, never replace the library's; its calls into
+# the library resolve against the libisotrace the process has loaded.
 function(isotrace_avx2_module target source)
-  add_library(${target} MODULE ${source})
-  target_compile_options(${target} PRIVATE -mavx2 -mfma -ffp-contract=off -Wall -Wextra)
+  isotrace_module(${target} ${source})
+  target_compile_options(${target} PRIVATE -mavx2 -mfma -ffp-contract=off)
   target_compile_definitions(${target} PRIVATE ${ARGN})
-  target_include_directories(${target} PRIVATE ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/include)
-  set_target_properties(${target} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
-  add_dependencies(isotrace ${target})
 endfunction()
 
 # A Google Benchmark executable `name` from `source`, built on request (EXCLUDE_FROM_ALL) and not run by ctest:
