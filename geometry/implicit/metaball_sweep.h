@@ -69,18 +69,46 @@ public:
     // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece, in
     // ascending element order: the sum BlobGroup::gradient makes over the cell's list, hence the same bits (as
     // FieldSweep::gradient_at).
-    Vec3d gradient_at(const Vec3d& point) const;
+    Vec3d gradient_at(const Vec3d& point) const { return gradient<0>(point); }
 
 private:
+    // What a report is given while sweep_pieces<kGroups> runs: the sweep, with its count of groups known.
+    template <std::size_t kGroups>
+    struct PiecesView {
+        const MetaballSweep& sweep;
+        Vec3d gradient_at(const Vec3d& point) const { return sweep.template gradient<kGroups>(point); }
+    };
+    template <std::size_t kGroups>
+    Vec3d gradient(const Vec3d& point) const;
+
     static constexpr std::size_t kTermSize = 7;  // a cubic in x composed with the quadratic x(s): degree 6
+    // The loops over groups of four lanes take their count as a template argument, 1 to kUnrolledGroups (nearly nine
+    // queries in ten), so that they unroll and leave no loop exit to mispredict, and 0 for "read it from the query"
+    // (the count varies from query to query, and a query runs some twenty such loops: ×1.03 on blobs_1k).
+    static constexpr std::size_t kUnrolledGroups = 4;
+    template <std::size_t kGroups>
+    std::size_t groups() const { return kGroups != 0 ? kGroups : groups_; }
+
+    // run once the near elements are known, with kNearGroups groups of them (0: as many as there are).
+    template <std::size_t kNearGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
+    void sweep_near(const SweepStretch& stretch, BlobQueryWork& work, Report& report, CrossedBefore& crossed_before);
+    // The pieces of the stretch, in order, over kGroups groups of candidates (0: groups_).
+    template <std::size_t kGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
+    void sweep_pieces(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
+                      CrossedBefore& crossed_before);
 
     // Loads the near elements into the lanes and returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's
     // nearest approach (as FieldSweep::gather), without the chords' square roots: nearly half the queries end at
     // this bound.
+    template <std::size_t kNearGroups>
     double near_bound(const SweepStretch& stretch);
-    // Leaves in the lanes, compacted, the candidates (their support's chord meets the stretch) with their chords and
-    // dist² quadratics.
+    // Leaves in the lanes, compacted, the candidates (their support's chord meets the stretch) with their chords.
+    template <std::size_t kNearGroups>
     void make_candidates(const SweepStretch& stretch);
+    // The candidates' dist² quadratics about the stretch's start and their 1/R².
+    template <std::size_t kGroups>
+    void prepare_pieces(const SweepStretch& stretch);
+    template <std::size_t kGroups>
     void compose_terms();
     // The kernel on x = r²/R² per lane, zero from x = 1 on, by Horner's rule with `mul_add`: RoundedMulAdd for values,
     // BoundMulAdd (fused where the build has FMA, fused_bounds.h) for bounds.
@@ -108,10 +136,11 @@ private:
     Mask4 counting(std::size_t g, double t0) const {
         return (load4(t_enter_ + 4 * g) <= t0) & (load4(t_exit_ + 4 * g) > t0);
     }
+    template <std::size_t kGroups>
     double value(double t) const;
     // Σ |wᵢ| over the lanes(g) of each group (elements counting at some t, or every candidate): F + T cannot exceed
     // it where only those count (f ≤ 1), so it scales the rounding of value().
-    template <class Lanes>
+    template <std::size_t kGroups, class Lanes>
     double absolute_weights(Lanes&& lanes) const;
 
     const Kernel& kernel_;
@@ -140,11 +169,12 @@ private:
 };
 
 template <class Kernel>
+template <std::size_t kNearGroups>
 double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     const std::size_t n = near_.size();
-    const std::size_t near_groups = (n + 3) / 4;
+    const std::size_t near_groups = kNearGroups != 0 ? kNearGroups : (n + 3) / 4;
     inverse_length2_ = 1 / dot(d, d);
     const double rounding = nearest_approach_rounding(stretch, centre_bound_);
     Double4 upper{};  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
@@ -187,12 +217,13 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
 }
 
 template <class Kernel>
+template <std::size_t kNearGroups>
 void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     const std::size_t n = near_.size();
     unsigned candidates = 0;
-    for (std::size_t g = 0; g < (n + 3) / 4; ++g) {
+    for (std::size_t g = 0; g < (kNearGroups != 0 ? kNearGroups : (n + 3) / 4); ++g) {
         // The chord through the support: the centre's projection on the line ± the half chord.
         const Double4 middle = load4(middle_ + 4 * g), radius = load4(radius_ + 4 * g);
         const Double4 lx = (o.x + d.x * middle) - load4(x_ + 4 * g), ly = (o.y + d.y * middle) - load4(y_ + 4 * g),
@@ -226,17 +257,27 @@ void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
     }
     count_ = k;
     groups_ = (k + 3) / 4;
-    for (std::size_t i = k; i < 4 * groups_; ++i) {  // inert: never entered, weight 0
-        x_[i] = y_[i] = z_[i] = 0;
-        radius_[i] = 1;
-        weight_[i] = 0;
-        t_enter_[i] = t_exit_[i] = std::numeric_limits<double>::infinity();
-        index_[i] = 0;
-    }
-    // dist² about the stretch's start, as MetacubeRaySlices::metaball_distance_squared writes it.
     t_ref_ = stretch.t_begin;
     c2_ = d.x * d.x + d.y * d.y + d.z * d.z;
-    for (std::size_t g = 0; g < groups_; ++g) {
+    if (groups_ == 0) return;
+    // The lanes after the last candidate, up to the end of its group, are inert: never entered, weight 0 (their
+    // index is never read). Masked in one pass over the group rather than lane by lane.
+    const std::size_t last = 4 * (groups_ - 1);
+    const Mask4 inert = Mask4{0, 1, 2, 3} >= std::int64_t(k - last);
+    const Double4 never = Double4{} + std::numeric_limits<double>::infinity();
+    for (double* lanes : {x_, y_, z_, weight_}) store4(lanes + last, select(inert, Double4{}, load4(lanes + last)));
+    store4(radius_ + last, select(inert, Double4{} + 1, load4(radius_ + last)));
+    store4(t_enter_ + last, select(inert, never, load4(t_enter_ + last)));
+    store4(t_exit_ + last, select(inert, never, load4(t_exit_ + last)));
+}
+
+template <class Kernel>
+template <std::size_t kGroups>
+void MetaballSweep<Kernel>::prepare_pieces(const SweepStretch& stretch) {
+    const Vec3d& o = stretch.origin;
+    const Vec3d& d = stretch.direction;
+    // dist² about the stretch's start, as MetacubeRaySlices::metaball_distance_squared writes it.
+    for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 ax = (o.x - load4(x_ + 4 * g)) + d.x * t_ref_, ay = (o.y - load4(y_ + 4 * g)) + d.y * t_ref_,
                       az = (o.z - load4(z_ + 4 * g)) + d.z * t_ref_;
         const Double4 q1 = 2 * ax * d.x + 2 * ay * d.y + 2 * az * d.z;
@@ -250,12 +291,13 @@ void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
 }
 
 template <class Kernel>
+template <std::size_t kGroups>
 void MetaballSweep<Kernel>::compose_terms() {
     // w·Σₖ βₖ·xᵏ with x(s) = dist²(s)/R², by Horner on polynomials: each step multiplies by x(s) (every new
     // coefficient from the old ones, cᵢ ← cᵢ₋₂·x2 + cᵢ₋₁·x1 + cᵢ·x0) and adds w·βₖ. Four lanes at a time; the loops
     // have constant bounds and unroll, so the coefficients stay in registers.
     const auto& b = unit_.coefficients;
-    for (std::size_t g = 0; g < groups_; ++g) {
+    for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 weight = load4(weight_ + 4 * g), inverse_radius2 = load4(inverse_radius2_ + 4 * g);
         const Double4 x0 = load4(q0_ + 4 * g) * inverse_radius2, x1 = load4(q1_ + 4 * g) * inverse_radius2,
                       x2 = c2_ * inverse_radius2;
@@ -282,10 +324,11 @@ void MetaballSweep<Kernel>::compose_terms() {
 }
 
 template <class Kernel>
+template <std::size_t kGroups>
 double MetaballSweep<Kernel>::value(double t) const {
     const double s = t - t_ref_;
     Double4 sum{};
-    for (std::size_t g = 0; g < groups_; ++g) {
+    for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 x = max4(distance2(g, s), Double4{}) * load4(inverse_radius2_ + 4 * g);
         sum += select(counting(g, t), load4(weight_ + 4 * g) * unit_value(x), Double4{});
     }
@@ -293,10 +336,10 @@ double MetaballSweep<Kernel>::value(double t) const {
 }
 
 template <class Kernel>
-template <class Lanes>
+template <std::size_t kGroups, class Lanes>
 double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
     Double4 sum{};
-    for (std::size_t g = 0; g < groups_; ++g) {
+    for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 weight = load4(weight_ + 4 * g);
         sum += select(lanes(g), abs4(weight), Double4{});
     }
@@ -304,32 +347,30 @@ double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
 }
 
 template <class Kernel>
-Vec3d MetaballSweep<Kernel>::gradient_at(const Vec3d& point) const {
+template <std::size_t kGroups>
+Vec3d MetaballSweep<Kernel>::gradient(const Vec3d& point) const {
     Vec3d sum(0, 0, 0);
     if constexpr (requires(Double4 x) { Kernel::unit_derivative_of(x); }) {
         // Each element's w·f'(r²)·2(P − C) four lanes at a time, with Metacube::field_gradient's operations in its
-        // order (so its bits), then summed in ascending element order as BlobGroup::gradient sums them.
+        // order (so its bits), 0 in the lanes that do not count, then summed in ascending element order as
+        // BlobGroup::gradient sums them (adding the zeros changes no bit), with no branch on which lanes count.
         alignas(32) double gx[kMaxLanes], gy[kMaxLanes], gz[kMaxLanes];
-        for (std::size_t g = 0; g < groups_; ++g) {
-            if (counting_[g] == 0) continue;
+        for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
+            const Mask4 counts = (Mask4{1, 2, 4, 8} & std::int64_t(counting_[g])) != 0;
             const Double4 ox = point.x - load4(x_ + 4 * g), oy = point.y - load4(y_ + 4 * g),
                           oz = point.z - load4(z_ + 4 * g);
             const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g);
             const Double4 x = (ox * ox + oy * oy + oz * oz) * inverse_radius2;
             const Double4 slope =
                 load4(weight_ + 4 * g) * select(x < 1.0, Kernel::unit_derivative_of(x) * inverse_radius2, Double4{});
-            const Double4 twice = 2 * slope;
+            const Double4 twice = select(counts, 2 * slope, Double4{});
             store4(gx + 4 * g, ox * twice);
             store4(gy + 4 * g, oy * twice);
             store4(gz + 4 * g, oz * twice);
         }
-        for (std::size_t g = 0; g < groups_; ++g)
-            for (unsigned lanes = counting_[g]; lanes != 0; lanes &= lanes - 1) {
-                const std::size_t lane = 4 * g + std::size_t(std::countr_zero(lanes));
-                sum += Vec3d(gx[lane], gy[lane], gz[lane]);
-            }
+        for (std::size_t lane = 0; lane < 4 * groups<kGroups>(); ++lane) sum += Vec3d(gx[lane], gy[lane], gz[lane]);
     } else {
-        for (std::size_t g = 0; g < groups_; ++g)
+        for (std::size_t g = 0; g < groups<kGroups>(); ++g)
             for (unsigned lanes = counting_[g]; lanes != 0; lanes &= lanes - 1)
                 sum += elements_[index_[4 * g + std::size_t(std::countr_zero(lanes))]].field_gradient(kernel_, point);
     }
@@ -340,40 +381,69 @@ template <class Kernel>
 template <bool kPlaceNeeded, class Report, class CrossedBefore>
 bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const SweepStretch& stretch,
                                 BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
-    using sweep_piece::sign_of;
     near_.clear();
     append_near(listed, spheres_, near_stretch_test(stretch, centre_bound_), near_);
     if (near_.size() > kMaxLanes) return false;
     ++work.queries;
-    if (stretch_below_threshold(near_bound(stretch), threshold_)) {
+    const auto with_near_groups = [&]<std::size_t kNearGroups>() {
+        sweep_near<kNearGroups, kPlaceNeeded>(stretch, work, report, crossed_before);
+    };
+    static_assert(kUnrolledGroups == 4, "one case per unrolled count");
+    switch ((near_.size() + 3) / 4) {
+        case 1: with_near_groups.template operator()<1>(); break;
+        case 2: with_near_groups.template operator()<2>(); break;
+        case 3: with_near_groups.template operator()<3>(); break;
+        case 4: with_near_groups.template operator()<4>(); break;
+        default: with_near_groups.template operator()<0>(); break;
+    }
+    return true;
+}
+
+template <class Kernel>
+template <std::size_t kNearGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
+void MetaballSweep<Kernel>::sweep_near(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
+                                       CrossedBefore& crossed_before) {
+    if (stretch_below_threshold(near_bound<kNearGroups>(stretch), threshold_)) {
         ++work.queries_bounded;
         work.candidates += std::uint64_t(std::popcount(kept_lanes_));
-        return true;
+        return;
     }
-    make_candidates(stretch);
+    make_candidates<kNearGroups>(stretch);
     work.candidates += count_;
+    // Nearly every near element is a candidate: the count of groups stays.
+    if (kNearGroups != 0 && groups_ == kNearGroups)
+        sweep_pieces<kNearGroups, kPlaceNeeded>(stretch, work, report, crossed_before);
+    else
+        sweep_pieces<0, kPlaceNeeded>(stretch, work, report, crossed_before);
+}
 
+template <class Kernel>
+template <std::size_t kGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
+void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
+                                         CrossedBefore& crossed_before) {
+    using sweep_piece::sign_of;
+    prepare_pieces<kGroups>(stretch);
     unsigned entered = 0;  // lanes that counted on some piece, for the statistics
     double t0 = stretch.t_begin;
-    // The elements counting on the piece from t0, and F's sign before it; returns true when the sweep must stop.
+    const auto witness = [&] {  // an element whose support contains the piece: the last counting one
+        for (std::size_t g = groups<kGroups>(); g-- > 0;)
+            if (counting_[g] != 0)
+                return index_[4 * g + std::size_t(31 - std::countl_zero(counting_[g]))];
+        return std::uint32_t(0);
+    };
+    const auto crossing = [&](double t, int before) {
+        if (!(t > stretch.t_min && t < stretch.t_max)) return false;
+        ++work.roots;
+        return report(FieldCrossing{t, before < 0, witness()}, PiecesView<kGroups>{*this});
+    };
+    // The elements counting on the piece from t0, and F's sign before it; returns when the sweep must stop.
     const auto sweep = [&] {
-        const auto witness = [&] {  // an element whose support contains the piece: the last counting one
-            for (std::size_t g = groups_; g-- > 0;)
-                if (counting_[g] != 0)
-                    return index_[4 * g + std::size_t(31 - std::countl_zero(counting_[g]))];
-            return std::uint32_t(0);
-        };
-        const auto crossing = [&](double t, int before) {
-            if (!(t > stretch.t_min && t < stretch.t_max)) return false;
-            ++work.roots;
-            return report(FieldCrossing{t, before < 0, witness()}, std::as_const(*this));
-        };
-        for (std::size_t g = 0; g < groups_; ++g) counting_[g] = mask_bits(counting(g, t0));
-        const double at_start = value(t0);
+        for (std::size_t g = 0; g < groups<kGroups>(); ++g) counting_[g] = mask_bits(counting(g, t0));
+        const double at_start = value<kGroups>(t0);
         int previous_sign = sign_of(at_start);
         if (previous_sign > 0 && t0 > stretch.t_min &&
             sweep_piece::inside_beyond_rounding(
-                at_start, threshold_, absolute_weights([&](std::size_t g) { return counting(g, t0); })) &&
+                at_start, threshold_, absolute_weights<kGroups>([&](std::size_t g) { return counting(g, t0); })) &&
             crossed_before())
             return;
         Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
@@ -383,7 +453,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             const double s0 = t0 - t_ref_;
             Double4 next = Double4{} + std::numeric_limits<double>::infinity();
             Mask4 counts[kMaxLanes / 4];
-            for (std::size_t g = 0; g < groups_; ++g) {
+            for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
                 const Double4 t_enter = load4(t_enter_ + 4 * g), t_exit = load4(t_exit_ + 4 * g);
                 const Double4 event = select(t_enter > t0, t_enter, t_exit);
                 next = min4(next, select(event > t0, event, next));
@@ -398,7 +468,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             // the element's r² range. Coming from outside, F is continuous, so it cannot be above T on the whole
             // piece: only its upper bound is needed.
             Double4 low{}, high{};
-            for (std::size_t g = 0; g < groups_; ++g) {
+            for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
                 const Mask4 mask = counts[g];
                 const auto [near, far] = distance2_range(g, s0, s1);
                 const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g), weight = load4(weight_ + 4 * g);
@@ -427,8 +497,8 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                     // (Composing, testing and solving the piece was a third of a shadow ray's swept query.)
                     // Every candidate's weight (inert lanes weigh 0): both ends' rounding, whichever elements count.
                     const double margin =
-                        1e-9 * (threshold_ + absolute_weights([](std::size_t) { return ~Mask4{}; }));
-                    const double at_start = value(t0), at_end = value(t1);
+                        1e-9 * (threshold_ + absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
+                    const double at_start = value<kGroups>(t0), at_end = value<kGroups>(t1);
                     if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
                         crossing(0.5 * (t0 + t1), sign_of(at_start)))
                         return;
@@ -437,13 +507,13 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
             int variations = 0;
             if (!settled) {
                 // The sum of the counting elements' terms − T, and of their coefficients' magnitudes.
-                if (!terms_composed_) compose_terms();
+                if (!terms_composed_) compose_terms<kGroups>();
                 std::array<double, kMaxPolynomialDegree + 1> magnitude{};
                 std::array<double, kTermSize> sum;
                 int terms = 1;
                 // Group by group, every coefficient at once (each lane's sum still runs in ascending group order).
                 Double4 total[kTermSize] = {}, size[kTermSize] = {};
-                for (std::size_t g = 0; g < groups_; ++g) {
+                for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
                     const Mask4 mask = counts[g];
 #pragma GCC unroll 7
                     for (std::size_t i = 0; i < kTermSize; ++i) {
@@ -458,7 +528,7 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                 }
                 sum[0] -= threshold_;
                 magnitude[0] += threshold_;
-                for (std::size_t g = 0; g < groups_; ++g) terms += std::popcount(counting_[g]);
+                for (std::size_t g = 0; g < groups<kGroups>(); ++g) terms += std::popcount(counting_[g]);
                 variations = sweep_piece::bernstein_variations(Polynomial(std::span<const double>(sum)), magnitude,
                                                                terms, s0, width, on_piece);
                 start_sign = sign_of(on_piece[0]);
@@ -470,14 +540,13 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
                 previous_sign = start_sign;
             } else if (sweep_piece::polynomial_piece_crossings(on_piece, variations, t0, width, previous_sign, work,
                                                                crossing)) {
-                return;
+                    return;
             }
             t0 = t1;
         }
     };
     sweep();
     work.joined += std::uint64_t(std::popcount(entered));
-    return true;
 }
 
 }  // namespace isotrace
