@@ -45,7 +45,7 @@ public:
             // does not report.
             [&] {
                 const Vec3d start = origin + direction * t_min;
-                const double f = group.field(start);
+                const double f = field(group, start);
                 const double threshold = group.threshold();
                 occluded = f <= threshold &&
                            (f < threshold * (1 - 1e-6) || dot(group.gradient(start), direction) < 0);
@@ -71,6 +71,18 @@ public:
     }
 
 private:
+    // F + T at a point: in lanes, with this build's instruction set, where the group's metaballs take MetaballSweep
+    // (a tenth of a shadow ray went to BlobGroup::field at its start, one element at a time); else BlobGroup::field.
+    static double field(const BlobGroup& group, const Vec3d& point) {
+        if (!group.metaball_sweep_) return group.field(point);
+        return group.with_kernel([&](const auto& kernel) {
+            using Kernel = std::decay_t<decltype(kernel)>;
+            const MetaballSweep<Kernel> sweep(kernel, group.threshold_, group.elements_, group.spheres_,
+                                              group.centre_bound_);
+            return sweep.field_at(point, group.cells_.elements_near(point));
+        });
+    }
+
     // Sweeps cell `cell`'s part of [t_min, t_max]; report(crossing, sweep) returns true to stop. When the part starts
     // inside after t_min, crossed_before() is asked whether that ends the sweep (FieldSweep::run). Without
     // kPlaceNeeded, a crossing's t may be any point of the piece it lies on (MetaballSweep::run).

@@ -71,6 +71,11 @@ public:
     // FieldSweep::gradient_at).
     Vec3d gradient_at(const Vec3d& point) const { return gradient<0>(point); }
 
+    // F + T at a point, from `listed` (every element whose support may contain the point), four elements at a time:
+    // an occlusion query asks it whether its ray started outside. BlobGroup::field sums the same terms one by one, so
+    // the last bits may differ; the question allows 10⁻⁶ of T.
+    double field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const;
+
 private:
     // What a report is given while sweep_pieces<kGroups> runs: the sweep, with its count of groups known.
     template <std::size_t kGroups>
@@ -80,6 +85,12 @@ private:
     };
     template <std::size_t kGroups>
     Vec3d gradient(const Vec3d& point) const;
+    // The centres, radii and weights of four listed elements (`listed[first…]`, the last one repeated past the end of
+    // the list), each read in one load and transposed into lanes in registers.
+    struct ElementLanes {
+        Double4 x, y, z, radius, weight;
+    };
+    ElementLanes element_lanes(std::span<const std::uint32_t> listed, std::size_t first) const;
 
     static constexpr std::size_t kTermSize = 7;  // a cubic in x composed with the quadratic x(s): degree 6
     // The loops over groups of four lanes take their count as a template argument, 1 to kUnrolledGroups (nearly nine
@@ -187,6 +198,38 @@ private:
 };
 
 template <class Kernel>
+typename MetaballSweep<Kernel>::ElementLanes MetaballSweep<Kernel>::element_lanes(std::span<const std::uint32_t> listed,
+                                                                                  std::size_t first) const {
+    const std::size_t n = listed.size();
+    const double* e[4];
+    for (std::size_t k = 0; k < 4; ++k) e[k] = elements_[listed[std::min(first + k, n - 1)]].centre_radius_weight();
+    const Double4 a = load4(e[0]), b = load4(e[1]), c = load4(e[2]), f = load4(e[3]);
+    const Double4 ab_even = __builtin_shufflevector(a, b, 0, 4, 2, 6);
+    const Double4 ab_odd = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+    const Double4 cf_even = __builtin_shufflevector(c, f, 0, 4, 2, 6);
+    const Double4 cf_odd = __builtin_shufflevector(c, f, 1, 5, 3, 7);
+    return {__builtin_shufflevector(ab_even, cf_even, 0, 1, 4, 5), __builtin_shufflevector(ab_odd, cf_odd, 0, 1, 4, 5),
+            __builtin_shufflevector(ab_even, cf_even, 2, 3, 6, 7), __builtin_shufflevector(ab_odd, cf_odd, 2, 3, 6, 7),
+            Double4{e[0][4], e[1][4], e[2][4], e[3][4]}};
+}
+
+template <class Kernel>
+double MetaballSweep<Kernel>::field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const {
+    InlineVector<std::uint32_t, 64> near;
+    append_near(listed, spheres_, PointNearSpheres(point, centre_bound_), near);
+    const std::span<const std::uint32_t> ids(near.begin(), near.size());
+    Double4 sum{};
+    for (std::size_t first = 0; first < ids.size(); first += 4) {
+        const auto [x, y, z, radius, weight] = element_lanes(ids, first);
+        const std::int64_t lane = std::int64_t(first);
+        const Mask4 in_list = Mask4{lane, lane + 1, lane + 2, lane + 3} < std::int64_t(ids.size());
+        const Double4 dx = point.x - x, dy = point.y - y, dz = point.z - z;
+        sum += select(in_list, weight * unit_value((dx * dx + dy * dy + dz * dz) / (radius * radius)), Double4{});
+    }
+    return lane_sum(sum);
+}
+
+template <class Kernel>
 template <std::size_t kNearGroups>
 double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
     const Vec3d& o = stretch.origin;
@@ -198,20 +241,8 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
     Double4 upper{};  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     kept_lanes_ = 0;
     for (std::size_t g = 0; g < near_groups; ++g) {
-        // Each element's centre and radius in one load, four elements transposed into lanes in registers (stored for
-        // the steps after). The lanes past the list repeat its last element; the exact test leaves them out.
-        const double* e[4];
-        for (std::size_t k = 0; k < 4; ++k) e[k] = elements_[near_[std::min(4 * g + k, n - 1)]].centre_radius_weight();
-        const Double4 a = load4(e[0]), b = load4(e[1]), c = load4(e[2]), f = load4(e[3]);
-        const Double4 ab_even = __builtin_shufflevector(a, b, 0, 4, 2, 6);
-        const Double4 ab_odd = __builtin_shufflevector(a, b, 1, 5, 3, 7);
-        const Double4 cf_even = __builtin_shufflevector(c, f, 0, 4, 2, 6);
-        const Double4 cf_odd = __builtin_shufflevector(c, f, 1, 5, 3, 7);
-        const Double4 x = __builtin_shufflevector(ab_even, cf_even, 0, 1, 4, 5);
-        const Double4 y = __builtin_shufflevector(ab_odd, cf_odd, 0, 1, 4, 5);
-        const Double4 z = __builtin_shufflevector(ab_even, cf_even, 2, 3, 6, 7);
-        const Double4 radius = __builtin_shufflevector(ab_odd, cf_odd, 2, 3, 6, 7);
-        const Double4 weight{e[0][4], e[1][4], e[2][4], e[3][4]};
+        // Stored for the steps after. The lanes past the list repeat its last element; the exact test leaves them out.
+        const auto [x, y, z, radius, weight] = element_lanes({near_.begin(), n}, 4 * g);
         store4(x_ + 4 * g, x);
         store4(y_ + 4 * g, y);
         store4(z_ + 4 * g, z);
