@@ -54,7 +54,7 @@ public:
     MetaballSweep(const Kernel& kernel, double threshold, std::span<const Metacube> elements,
                   std::span<const BoundingSphere> spheres, double centre_bound)
         : kernel_(kernel), threshold_(threshold), elements_(elements), spheres_(spheres),
-          centre_bound_(centre_bound), unit_(kernel.unit_pieces()[0]), chords_bound_(convex_and_falling(unit_)) {}
+          centre_bound_(centre_bound), unit_(kernel.unit_pieces()[0]) {}
 
     // As FieldSweep::run: sweeps `stretch` over the field of the `listed` elements (every element whose support
     // may reach the stretch is among them), calling report(crossing, sweep) for each crossing in increasing t
@@ -177,7 +177,6 @@ private:
     std::span<const BoundingSphere> spheres_;
     double centre_bound_;
     const FieldPiece& unit_;
-    bool chords_bound_;  // chord_upper_bound applies
 
     InlineVector<std::uint32_t, 64> near_;  // the elements the float test kept
     unsigned kept_lanes_ = 0;               // of those, the ones the exact test kept
@@ -590,7 +589,7 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
             // ranges leave open: the chords' bound before the polynomial. It settles 85–90 % of them on blobs_1k (the
             // start of a ray leaving the surface is within a hair of T); elsewhere nearly every piece left open holds
             // a crossing.
-            if (!settled && previous_sign < 0 && chords_bound_ && (!kPlaceNeeded || t0 == stretch.t_min)) {
+            if (!settled && previous_sign < 0 && (!kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(unit_)) {
                 const double upper = chord_upper_bound<kGroups>(s0, width, counts);
                 // Beyond its rounding: a few ulps of the terms, which Σ |wᵢ| of the counting elements bounds.
                 settled = threshold_ - upper >
