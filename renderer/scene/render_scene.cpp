@@ -12,8 +12,6 @@
 namespace isotrace {
 namespace {
 
-// Secondary rays start this many float ulps of the hit's magnitude away from the surface (see spawn_origin).
-
 void set_instance_transform(RTCGeometry instance, const Transform& to_world) {
     float row_major[12];
     const auto& m = to_world.matrix();
