@@ -86,16 +86,17 @@ private:
     template <std::size_t kGroups>
     Vec3d gradient(const Vec3d& point) const;
     // The centres, radii and weights of four listed elements (`listed[first…]`, the last one repeated past the end of
-    // the list), each read in one load and transposed into lanes in registers.
+    // the list), each read in one load and transposed into lanes in registers, and the lanes that hold a listed one.
     struct ElementLanes {
         Double4 x, y, z, radius, weight;
+        Mask4 in_list;
     };
     ElementLanes element_lanes(std::span<const std::uint32_t> listed, std::size_t first) const;
 
     static constexpr std::size_t kTermSize = 7;  // a cubic in x composed with the quadratic x(s): degree 6
     // The loops over groups of four lanes take their count as a template argument, 1 to kUnrolledGroups (nearly nine
     // queries in ten), so that they unroll and leave no loop exit to mispredict, and 0 for "read it from the query"
-    // (the count varies from query to query, and a query runs some twenty such loops: ×1.03 on blobs_1k).
+    // (the count varies from query to query, and a query runs some twenty such loops: ×1.04 on blobs_1k).
     static constexpr std::size_t kUnrolledGroups = 4;
     template <std::size_t kGroups>
     std::size_t groups() const { return kGroups != 0 ? kGroups : groups_; }
@@ -207,9 +208,11 @@ typename MetaballSweep<Kernel>::ElementLanes MetaballSweep<Kernel>::element_lane
     const Double4 ab_odd = __builtin_shufflevector(a, b, 1, 5, 3, 7);
     const Double4 cf_even = __builtin_shufflevector(c, f, 0, 4, 2, 6);
     const Double4 cf_odd = __builtin_shufflevector(c, f, 1, 5, 3, 7);
+    const std::int64_t lane = std::int64_t(first);
     return {__builtin_shufflevector(ab_even, cf_even, 0, 1, 4, 5), __builtin_shufflevector(ab_odd, cf_odd, 0, 1, 4, 5),
             __builtin_shufflevector(ab_even, cf_even, 2, 3, 6, 7), __builtin_shufflevector(ab_odd, cf_odd, 2, 3, 6, 7),
-            Double4{e[0][4], e[1][4], e[2][4], e[3][4]}};
+            Double4{e[0][4], e[1][4], e[2][4], e[3][4]},
+            Mask4{lane, lane + 1, lane + 2, lane + 3} < std::int64_t(n)};
 }
 
 template <class Kernel>
@@ -219,9 +222,7 @@ double MetaballSweep<Kernel>::field_at(const Vec3d& point, std::span<const std::
     const std::span<const std::uint32_t> ids(near.begin(), near.size());
     Double4 sum{};
     for (std::size_t first = 0; first < ids.size(); first += 4) {
-        const auto [x, y, z, radius, weight] = element_lanes(ids, first);
-        const std::int64_t lane = std::int64_t(first);
-        const Mask4 in_list = Mask4{lane, lane + 1, lane + 2, lane + 3} < std::int64_t(ids.size());
+        const auto [x, y, z, radius, weight, in_list] = element_lanes(ids, first);
         const Double4 dx = point.x - x, dy = point.y - y, dz = point.z - z;
         sum += select(in_list, weight * unit_value((dx * dx + dy * dy + dz * dz) / (radius * radius)), Double4{});
     }
@@ -241,14 +242,12 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
     kept_lanes_ = 0;
     for (std::size_t g = 0; g < near_groups; ++g) {
         // Stored for the steps after. The lanes past the list repeat its last element; the exact test leaves them out.
-        const auto [x, y, z, radius, weight] = element_lanes({near_.begin(), n}, 4 * g);
+        const auto [x, y, z, radius, weight, in_list] = element_lanes({near_.begin(), n}, 4 * g);
         store4(x_ + 4 * g, x);
         store4(y_ + 4 * g, y);
         store4(z_ + 4 * g, z);
         store4(radius_ + 4 * g, radius);
         store4(weight_ + 4 * g, weight);
-        const std::int64_t first = std::int64_t(4 * g);
-        const Mask4 in_list = (Mask4{first, first + 1, first + 2, first + 3} < std::int64_t(n));
         const Double4 middle = ((x - o.x) * d.x + (y - o.y) * d.y + (z - o.z) * d.z) * inverse_length2_;
         store4(middle_ + 4 * g, middle);
         // The stretch's point nearest the centre: the element's field there bounds it on the whole stretch.
