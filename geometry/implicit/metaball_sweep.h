@@ -516,6 +516,10 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
         ++work.roots;
         return report(FieldCrossing{t, before < 0, witness()}, PiecesView<kGroups>{*this});
     };
+    // Beyond the rounding of F at any point of the stretch: a few ulps of every candidate's term (inert lanes weigh 0).
+    const auto rounding = [&] {
+        return 1e-9 * (threshold_ + absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
+    };
     // The elements counting on the piece from t0, and F's sign before it; returns when the sweep must stop.
     const auto sweep = [&] {
         for (std::size_t g = 0; g < groups<kGroups>(); ++g) counting_[g] = mask_bits(counting(g, t0));
@@ -526,6 +530,14 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
                 at_start, threshold_, absolute_weights<kGroups>([&](std::size_t g) { return counting(g, t0); })) &&
             crossed_before())
             return;
+        if constexpr (!kPlaceNeeded) {
+            // Outside at the start and inside at the end, both beyond rounding: a crossing lies between, and no piece
+            // need be examined. Tight cell boxes start many a shadow ray's stretch just outside a blob it then enters
+            // (blobs_10k: 17,489 of 64,972 swept occlusion queries end here, pieces 148,471 → 66,455).
+            if (at_start < -rounding() && value<kGroups>(stretch.t_end) > rounding() &&
+                crossing(0.5 * (t0 + stretch.t_end), previous_sign))
+                return;
+        }
         Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
         while (t0 < stretch.t_end) {
             // The piece [t0, t1] ends at the next entry or exit.
@@ -575,9 +587,7 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
                 if (!settled) {
                     // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside.
                     // (Composing, testing and solving the piece was a third of a shadow ray's swept query.)
-                    // Every candidate's weight (inert lanes weigh 0): both ends' rounding, whichever elements count.
-                    const double margin =
-                        1e-9 * (threshold_ + absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
+                    const double margin = rounding();
                     const double at_start = value<kGroups>(t0), at_end = value<kGroups>(t1);
                     if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
                         crossing(0.5 * (t0 + t1), sign_of(at_start)))
