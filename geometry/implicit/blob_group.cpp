@@ -39,6 +39,7 @@ void BlobGroup::build_index() {
         [&](const auto& kernel) { return MetaballSweep<std::decay_t<decltype(kernel)>>::applies(kernel, elements_); });
     cells_.build(elements_);
     cells_.restrict_to_surface([&](const WorldBounds& box, std::span<const std::uint32_t> ids) {
+        if (metaball_sweep_) return metaball_surface_region(box, ids, elements_, kernel_->unit_pieces()[0], threshold_);
         return with_kernel([&](const auto& kernel) { return surface_region(box, ids, elements_, kernel, threshold_); });
     });
 }

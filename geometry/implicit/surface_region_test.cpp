@@ -26,18 +26,22 @@ TEST(SurfaceRegion, LoneMetaballRegionIsItsIsoSphereBoundsWithinOneSubBox) {
     const double threshold = 0.6;
     const double iso = *kernel->iso_radius(1, 1, threshold);
     ASSERT_LT(iso, 0.5);
-    // The support's box, halved 4 times: x twice, then y and z, sub-boxes of 0.5 × 1 × 1.
+    // The support's box, halved 12 times: each axis 4 times, sub-boxes of 0.125 per side.
     const auto region = surface_region({{-1, -1, -1}, {1, 1, 1}}, {&id, 1}, ball, *kernel, threshold);
     ASSERT_TRUE(region);
-    const Vec3d side{0.5, 1, 1};
+    const Vec3d side{0.125, 0.125, 0.125};
     for (int k = 0; k < 3; ++k) {
         EXPECT_LE(region->lower[k], -iso);
         EXPECT_GE(region->lower[k], -iso - side[k] - 1e-6);  // one sub-box and the padding
         EXPECT_GE(region->upper[k], iso);
         EXPECT_LE(region->upper[k], iso + side[k] + 1e-6);
     }
-    EXPECT_NEAR(region->lower.x, -0.5, 1e-6);  // the sub-boxes beyond |x| = 0.5 are all outside
-    EXPECT_NEAR(region->upper.x, 0.5, 1e-6);
+    // The iso-sphere's radius, 0.396, lies in the sub-boxes from 0.375 to 0.5; those beyond are all outside.
+    EXPECT_GT(iso, 0.375);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(region->lower[k], -0.5, 1e-6);
+        EXPECT_NEAR(region->upper[k], 0.5, 1e-6);
+    }
     // All inside, all outside (but within the support), all beyond the support: no region.
     const double in = iso / 2;
     EXPECT_FALSE(surface_region({{-in, -in, -in}, {in, in, in}}, {&id, 1}, ball, *kernel, threshold));
@@ -109,6 +113,42 @@ TEST(SurfaceRegion, EverySignChangeAlongRandomLinesLiesInItsCellsRegion) {
             }
         }
         EXPECT_GT(changes, 200u) << name;
+    }
+}
+
+// The lanes of metaball_surface_region bound the field as ListedElements does, four elements at a time: on random
+// clouds of metaballs (a fifth of them carving), for every kernel of one polynomial piece, each cell's region is the
+// element-by-element one, or differs by a sub-box the rounding of a bound near T decides.
+TEST(SurfaceRegion, MetaballLanesFindTheRegionOfTheElementByElementSearch) {
+    std::mt19937_64 rng(5);
+    for (const std::string name : {"kim", "wyvill", "murakami"}) {
+        const auto kernel = make_field_function(name, 0);
+        ASSERT_EQ(kernel->unit_pieces().size(), 1u) << name;
+        std::vector<Metacube> balls;
+        std::uniform_real_distribution<double> position(-2, 2), radius(0.3, 0.9);
+        for (int i = 0; i < 300; ++i)
+            balls.push_back(Metacube::metaball({position(rng), position(rng), position(rng)}, radius(rng),
+                                               i % 5 == 4 ? -0.6 : 1.0));
+        BlobCells cells;
+        cells.build(balls);
+        std::size_t regions = 0, same = 0;
+        for (const BlobCells::Cell& cell : cells.cells()) {
+            const WorldBounds box{cell.lower, cell.upper};
+            const auto by_element = surface_region(box, cells.elements_of(cell), balls, *kernel, 0.5);
+            const auto in_lanes =
+                metaball_surface_region(box, cells.elements_of(cell), balls, kernel->unit_pieces()[0], 0.5);
+            ASSERT_EQ(by_element.has_value(), in_lanes.has_value()) << name;
+            if (!by_element) continue;
+            ++regions;
+            same += by_element->lower == in_lanes->lower && by_element->upper == in_lanes->upper;
+            const Vec3d sub_box = (box.upper - box.lower) / 16.0;
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_NEAR(in_lanes->lower[k], by_element->lower[k], sub_box[k] * 1.001) << name;
+                EXPECT_NEAR(in_lanes->upper[k], by_element->upper[k], sub_box[k] * 1.001) << name;
+            }
+        }
+        EXPECT_GT(regions, 100u) << name;
+        EXPECT_GE(double(same), 0.99 * double(regions)) << name;
     }
 }
 

@@ -7,6 +7,7 @@
 #include "renderer/core/input_error.h"
 #include "renderer/core/parallel_for.h"
 #include "renderer/embree/embree_device.h"
+#include "renderer/math/box_corner.h"
 #include "renderer/render/depth_map.h"
 #include "renderer/sampling/independent_sampler.h"
 #include "renderer/sampling/warps.h"
@@ -23,6 +24,22 @@ Vec3f light_above(const Bounds3f& bounds, const std::string& scene) {
             0.5f * (bounds.lower.z + bounds.upper.z)};
 }
 
+// The world bounds of the objects' own shapes. Not Embree's scene bounds: those follow the acceleration structure (a
+// blob group's cell boxes shrink to where its surface may lie), so the light, and with it every shadow ray, would
+// move whenever that changes, and two builds would not time the same rays.
+Bounds3f content_bounds(const RenderScene& scene) {
+    Bounds3f bounds;
+    for (const SceneObject& object : scene.objects()) {
+        const Bounds3f own = object.shape->bounds();
+        if (own.empty()) continue;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3f p = box_corner(own.lower, own.upper, corner);
+            bounds.extend(object.instanced ? object.to_world.point(p) : p);
+        }
+    }
+    return bounds;
+}
+
 struct RowRays {
     std::size_t hits = 0;
     std::vector<Ray> shadow, bounce;
@@ -32,7 +49,7 @@ struct RowRays {
 
 SecondaryRayLists build_secondary_rays(const LoadedScene& scene) {
     SecondaryRayLists lists;
-    lists.light = light_above(scene.scene->bounds(), scene.path);
+    lists.light = light_above(content_bounds(*scene.scene), scene.path);
     const PixelBounds window = scene.film.crop;
     const IndependentSampler sampler(scene.seed);
     std::vector<RowRays> rows(std::size_t(window.height()));

@@ -10,7 +10,9 @@
 namespace isotrace::cli {
 
 struct SecondaryRayLists {
-    Vec3f light;  // the point light: centre of the scene bounds' top face, raised by their height
+    // The point light: centre of the top face of the objects' bounds (their shapes' own, not Embree's), raised by their
+    // height.
+    Vec3f light;
     std::size_t primary_hits = 0;
     std::vector<Ray> shadow;  // for the occlusion query, ending just short of the light
     std::vector<Ray> bounce;  // for the nearest-hit query, unbounded
