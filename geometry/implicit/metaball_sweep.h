@@ -164,11 +164,12 @@ private:
         return 2 * b[2] >= 0 && 2 * b[2] + 6 * b[3] >= 0 && b[1] + 2 * b[2] + 3 * b[3] <= 0 &&
                std::abs(at_one) <= 1e-12 * (std::abs(b[0]) + std::abs(b[1]) + std::abs(b[2]) + std::abs(b[3]));
     }
-    // An upper bound of Σ wᵢ·fᵢ on the piece [s0, s0 + width] (s about t_ref_, the counting lanes in `counts`) for a
-    // convex kernel, tighter than the elements' own ranges: on the piece an element's x = r²/R² stays within
-    // [x_near, x_far], where f lies below its chord, a line in x and so a quadratic in s; the sum of the chords
-    // (concave: they fall) peaks at its vertex or an end. The ranges are loose where some elements rise while others
-    // fall, as at the start of a ray leaving the surface, where F is within a hair of T.
+    // An upper bound of Σ wᵢ·fᵢ on [s0, s0 + width] (s about t_ref_, the lanes in `counts`: those counting on a piece,
+    // or every candidate over several pieces) for a convex kernel, tighter than the elements' own ranges: there an
+    // element's x = r²/R² stays within [x_near, x_far], where f(min(x, 1)) lies below its chord (beyond x = 1, outside
+    // the support, f is 0), a line in x and so a quadratic in s; the sum of the chords (concave: they fall) peaks at
+    // its vertex or an end. The ranges are loose where some elements rise while others fall, as at the start of a
+    // ray leaving the surface, where F is within a hair of T.
     template <std::size_t kGroups>
     double chord_upper_bound(double s0, double width, const Mask4* counts) const;
 
@@ -537,6 +538,15 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
             if (at_start < -rounding() && value<kGroups>(stretch.t_end) > rounding() &&
                 crossing(0.5 * (t0 + stretch.t_end), previous_sign))
                 return;
+        }
+        // A stretch from the ray's start (a ray leaving the surface), or any stretch of an occlusion query, that starts
+        // outside: first the chords' bound over the whole stretch, every candidate counting. On blobs_1k it settles
+        // 61 % of the first kind (bounce rays' sweeps of 4–5 pieces each, none holding a crossing) and 46 % of the
+        // second; elsewhere nearly every stretch it is asked of holds a crossing.
+        if (previous_sign < 0 && (!kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(unit_)) {
+            Mask4 every[kMaxLanes / 4];
+            for (std::size_t g = 0; g < groups<kGroups>(); ++g) every[g] = ~Mask4{};  // inert lanes weigh 0
+            if (threshold_ - chord_upper_bound<kGroups>(t0 - t_ref_, stretch.t_end - t0, every) > rounding()) return;
         }
         Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
         while (t0 < stretch.t_end) {
