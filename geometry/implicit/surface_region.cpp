@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <limits>
+#include <memory>
 
 namespace isotrace {
 namespace surface_region_detail {
@@ -9,9 +10,8 @@ namespace surface_region_detail {
 MetaballLanes::MetaballLanes(std::span<const Metacube> elements, const FieldPiece& unit,
                              std::span<const std::uint32_t> ids)
     : coefficients_(unit.coefficients), per_level_((ids.size() + 3) / 4 * 4),
-      lanes_((kHalvings + 2) * kFields * per_level_, 0.0), counts_(kHalvings + 2), levels_(kHalvings + 2),
-      reaching_(per_level_ / 4) {
-    std::fill_n(lanes(0, kInverseRadius2), per_level_, std::numeric_limits<double>::infinity());  // inert lanes
+      lanes_(std::make_unique_for_overwrite<double[]>((kHalvings + 2) * kFields * per_level_)),
+      counts_(kHalvings + 2), levels_(kHalvings + 2), reaching_(per_level_ / 4) {
     for (std::size_t i = 0; i < ids.size(); ++i) {
         const Metacube& element = elements[ids[i]];
         lanes(0, kX)[i] = element.centre().x;
@@ -22,6 +22,14 @@ MetaballLanes::MetaballLanes(std::span<const Metacube> elements, const FieldPiec
     }
     counts_[0] = ids.size();
     levels_[0] = 0;
+    make_inert(0, ids.size());
+}
+
+void MetaballLanes::make_inert(int h, std::size_t first) {
+    for (std::size_t lane = first; lane < (first + 3) / 4 * 4; ++lane) {
+        for (int field = 0; field < kFields; ++field) lanes(h, Field(field))[lane] = 0;
+        lanes(h, kInverseRadius2)[lane] = std::numeric_limits<double>::infinity();  // x is ∞ or NaN: never reaches
+    }
 }
 
 FieldBounds MetaballLanes::bounds(const WorldBounds& box, int h) {
@@ -46,7 +54,7 @@ FieldBounds MetaballLanes::bounds(const WorldBounds& box, int h) {
         const Double4 inverse_radius2 = load4(lanes(h, kInverseRadius2) + first);
         const Double4 weight = load4(lanes(h, kWeight) + first);
         const Double4 x_near = near2 * inverse_radius2, x_far = far2 * inverse_radius2;
-        const Mask4 reaches = x_near < 1.0;  // inert lanes (1/R² = ∞: x is ∞ or NaN) never do
+        const Mask4 reaches = x_near < 1.0;  // inert lanes never do
         const Double4 strongest = unit_value(x_near), weakest = unit_value(x_far);
         const Mask4 positive = weight >= 0.0;
         low += select(reaches, weight * select(positive, weakest, strongest), Double4{});
@@ -59,8 +67,7 @@ FieldBounds MetaballLanes::bounds(const WorldBounds& box, int h) {
     if (kept == count) {
         levels_[std::size_t(h + 1)] = levels_[std::size_t(h)];  // every element reaches the sub-box: share the lanes
     } else {
-        // The lanes that reach, compacted in order into the next level's own lanes, without a branch per lane; the
-        // lanes after them up to the end of their group are made inert.
+        // The lanes that reach, compacted in order into the next level's own lanes, without a branch per lane.
         levels_[std::size_t(h + 1)] = std::size_t(h + 1);
         std::size_t to = 0;
         for (std::size_t first = 0; first < count; first += 4)
@@ -69,7 +76,7 @@ FieldBounds MetaballLanes::bounds(const WorldBounds& box, int h) {
                     lanes(h + 1, Field(field))[to] = lanes(h, Field(field))[first + lane];
                 to += (reaching_[first / 4] >> lane) & 1u;
             }
-        for (std::size_t lane = kept; lane < (kept + 3) / 4 * 4; ++lane) lanes(h + 1, kInverseRadius2)[lane] = std::numeric_limits<double>::infinity();
+        make_inert(h + 1, kept);
     }
     return {lane_sum(low), lane_sum(high), lane_sum(scale)};
 }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -106,13 +107,15 @@ private:
     enum Field { kX, kY, kZ, kInverseRadius2, kWeight, kFields };
     // Level h's lanes of one field: its own storage, or that of the level before when every element reached.
     double* lanes(int h, Field field) {
-        return lanes_.data() + (levels_[std::size_t(h)] * kFields + field) * per_level_;
+        return lanes_.get() + (levels_[std::size_t(h)] * kFields + field) * per_level_;
     }
+    // Lanes [first, end of its group) of level h: weight 0 and 1/R² = ∞, so that they never reach a sub-box.
+    void make_inert(int h, std::size_t first);
 
     std::array<double, 4> coefficients_;
     std::size_t per_level_;             // the cell's element count, rounded up to whole groups of four
-    std::vector<double> lanes_;         // per level of storage, per field, per_level_ lanes
-    std::vector<std::size_t> counts_;   // per level: its elements; the lanes after them are inert (1/R² = ∞)
+    std::unique_ptr<double[]> lanes_;   // per level of storage, per field, per_level_ lanes (each written before read)
+    std::vector<std::size_t> counts_;   // per level: its elements; the lanes after them, to a whole group, are inert
     std::vector<std::size_t> levels_;   // per level, the level whose storage holds its lanes
     std::vector<unsigned> reaching_;    // per group of the level being bounded, its lanes that reach the sub-box
 };
@@ -158,8 +161,8 @@ std::optional<WorldBounds> surface_region(const WorldBounds& box, std::span<cons
     return padded_region(straddling_bounds(listed, box, threshold), box);
 }
 
-// The same region where every element is a metaball and the kernel is `unit`, one polynomial piece of degree ≤ 3
-// on x ∈ [0, 1] that is 0 at x = 1 (MetaballSweep::applies), in lanes.
+// The same region where every element is a metaball and the kernel is `unit`, one polynomial piece of degree ≤ 3 on
+// x = dist²/R² ∈ [0, 1) and 0 beyond (MetaballSweep::applies), in lanes.
 std::optional<WorldBounds> metaball_surface_region(const WorldBounds& box, std::span<const std::uint32_t> ids,
                                                    std::span<const Metacube> elements, const FieldPiece& unit,
                                                    double threshold);
