@@ -29,6 +29,7 @@
 #include "geometry/implicit/metacube.h"
 #include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/implicit/sweep_piece.h"
+#include "geometry/implicit/unit_piece_lanes.h"
 #include "renderer/core/inline_vector.h"
 #include "renderer/math/double4.h"
 #include "renderer/math/fused_bounds.h"
@@ -122,14 +123,10 @@ private:
     void prepare_pieces(const SweepStretch& stretch);
     template <std::size_t kGroups>
     void compose_terms();
-    // The kernel on x = r²/R² per lane, zero from x = 1 on, by Horner's rule with `mul_add`: RoundedMulAdd for values,
-    // BoundMulAdd (fused where the build has FMA, fused_bounds.h) for bounds.
+    // The kernel on x = r²/R² per lane (unit_piece_lanes.h).
     template <class MulAdd = RoundedMulAdd>
     Double4 unit_value(Double4 x, MulAdd mul_add = {}) const {
-        const Double4 clamped = min4(x, Double4{} + 1.0);
-        const auto& b = unit_.coefficients;
-        const Double4 value = mul_add(mul_add(mul_add(clamped, b[3], Double4{} + b[2]), clamped, b[1]), clamped, b[0]);
-        return select(x < 1.0, value, Double4{});
+        return unit_piece_value(unit_.coefficients, x, mul_add);
     }
     // dist² per lane of group g at s (about the stretch's start; a number or one per lane).
     template <class S, class MulAdd = RoundedMulAdd>
@@ -535,7 +532,8 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
             // Outside at the start and inside at the end, both beyond rounding: a crossing lies between, and no piece
             // need be examined. Tight cell boxes start many a shadow ray's stretch just outside a blob it then enters
             // (blobs_10k: 17,489 of 64,972 swept occlusion queries end here, pieces 148,471 → 66,455).
-            if (at_start < -rounding() && value<kGroups>(stretch.t_end) > rounding() &&
+            const double margin = rounding();
+            if (at_start < -margin && value<kGroups>(stretch.t_end) > margin &&
                 crossing(0.5 * (t0 + stretch.t_end), previous_sign))
                 return;
         }

@@ -4,6 +4,8 @@
 #include <limits>
 #include <memory>
 
+#include "geometry/implicit/unit_piece_lanes.h"
+
 namespace isotrace {
 namespace surface_region_detail {
 
@@ -33,11 +35,6 @@ void MetaballLanes::make_inert(int h, std::size_t first) {
 }
 
 FieldBounds MetaballLanes::bounds(const WorldBounds& box, int h) {
-    const auto& b = coefficients_;
-    const auto unit_value = [&](Double4 x) {  // 0 from x = 1 on, as the kernel is
-        const Double4 value = ((x * b[3] + b[2]) * x + b[1]) * x + b[0];
-        return select(x < 1.0, value, Double4{});
-    };
     const std::size_t count = counts_[std::size_t(h)];
     Double4 low{}, high{}, scale{};
     std::size_t kept = 0;
@@ -55,7 +52,8 @@ FieldBounds MetaballLanes::bounds(const WorldBounds& box, int h) {
         const Double4 weight = load4(lanes(h, kWeight) + first);
         const Double4 x_near = near2 * inverse_radius2, x_far = far2 * inverse_radius2;
         const Mask4 reaches = x_near < 1.0;  // inert lanes never do
-        const Double4 strongest = unit_value(x_near), weakest = unit_value(x_far);
+        const Double4 strongest = unit_piece_value(coefficients_, x_near, BoundMulAdd{}),
+                      weakest = unit_piece_value(coefficients_, x_far, BoundMulAdd{});
         const Mask4 positive = weight >= 0.0;
         low += select(reaches, weight * select(positive, weakest, strongest), Double4{});
         high += select(reaches, weight * select(positive, strongest, weakest), Double4{});
