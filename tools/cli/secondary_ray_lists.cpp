@@ -4,10 +4,10 @@
 #include <limits>
 #include <optional>
 
+#include "geometry/csg/transformed_bounds.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/parallel_for.h"
 #include "renderer/embree/embree_device.h"
-#include "renderer/math/box_corner.h"
 #include "renderer/render/depth_map.h"
 #include "renderer/sampling/independent_sampler.h"
 #include "renderer/sampling/warps.h"
@@ -30,12 +30,11 @@ Vec3f light_above(const Bounds3f& bounds, const std::string& scene) {
 Bounds3f content_bounds(const RenderScene& scene) {
     Bounds3f bounds;
     for (const SceneObject& object : scene.objects()) {
-        const Bounds3f own = object.shape->bounds();
+        Bounds3f own = object.shape->bounds();
         if (own.empty()) continue;
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3f p = box_corner(own.lower, own.upper, corner);
-            bounds.extend(object.instanced ? object.to_world.point(p) : p);
-        }
+        if (object.instanced) own = transformed_bounds(Vec3d(own.lower), Vec3d(own.upper), object.to_world);
+        bounds.extend(own.lower);
+        bounds.extend(own.upper);
     }
     return bounds;
 }
