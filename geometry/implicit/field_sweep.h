@@ -624,7 +624,7 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
             const double s0 = t0 - t_ref_, width = t1 - t0;
             bool solve = true;
             int start_sign = 0;
-            int variations = kUntrustedSign;  // of its Bernstein control polygon
+            BernsteinSigns signs{kUntrustedSign};  // of its Bernstein control polygon
             // First each element's own range: it proves most pieces free of crossings (F far below T along most
             // of a ray) at a fraction of the cost of the sums below. Coming from outside, F is continuous unless a
             // hard cube steps, so it cannot be above T on the whole piece: only its upper bound is needed.
@@ -640,10 +640,10 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
             if (settled) {
                 solve = false;
             } else if (non_polynomial_ == 0) {
-                variations = sweep_piece::bernstein_variations(polynomial_sum(), sum_magnitude_, sum_terms_, s0,
-                                                               width, piece_polynomial);
+                signs = sweep_piece::bernstein_variations(polynomial_sum(), sum_magnitude_, sum_terms_, s0, width,
+                                                          piece_polynomial);
                 start_sign = sign_of(piece_polynomial[0]);
-                solve = variations != 0;
+                solve = signs.variations != 0;
             } else {
                 // Tighter: the polynomial part (with −T) bounded by its Bernstein hull, the non-polynomial
                 // elements by their own ranges.
@@ -663,7 +663,7 @@ void FieldSweep<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> cand
                 if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
                 previous_sign = start_sign;
             } else if (non_polynomial_ == 0) {
-                if (sweep_piece::polynomial_piece_crossings(piece_polynomial, variations, t0, width, previous_sign,
+                if (sweep_piece::polynomial_piece_crossings(piece_polynomial, signs, t0, width, previous_sign,
                                                             work, crossing))
                     return;
             } else {

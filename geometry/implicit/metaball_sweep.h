@@ -612,12 +612,12 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
                 settled = threshold_ - upper >
                           1e-9 * (threshold_ + absolute_weights<kGroups>([&](std::size_t g) { return counts[g]; }));
             }
-            int variations = 0;
+            BernsteinSigns signs;
             if (!settled) {
                 // The sum of the counting elements' terms − T, and of their coefficients' magnitudes.
                 if (!terms_composed_) compose_terms<kGroups>();
                 std::array<double, kMaxPolynomialDegree + 1> magnitude{};
-                std::array<double, kTermSize> sum;
+                std::array<double, 8> sum;  // two lanes of four: kTermSize coefficients and a 0
                 int terms = 1;
                 // Group by group, every coefficient at once (each lane's sum still runs in ascending group order).
                 Double4 total[kTermSize] = {}, size[kTermSize] = {};
@@ -630,23 +630,24 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
                         size[i] += select(mask, abs4(c), Double4{});
                     }
                 }
-                for (std::size_t i = 0; i < kTermSize; ++i) {
-                    sum[i] = lane_sum(total[i]);
-                    magnitude[i] = lane_sum(size[i]);
-                }
+                static_assert(kTermSize == 7, "two lanes of four coefficients");
+                store4(sum.data(), lane_sums(total[0], total[1], total[2], total[3]));
+                store4(sum.data() + 4, lane_sums(total[4], total[5], total[6], Double4{}));
+                store4(magnitude.data(), lane_sums(size[0], size[1], size[2], size[3]));
+                store4(magnitude.data() + 4, lane_sums(size[4], size[5], size[6], Double4{}));
                 sum[0] -= threshold_;
                 magnitude[0] += threshold_;
                 for (std::size_t g = 0; g < groups<kGroups>(); ++g) terms += std::popcount(counting_[g]);
-                variations = sweep_piece::bernstein_variations(Polynomial(std::span<const double>(sum)), magnitude,
-                                                               terms, s0, width, on_piece);
+                signs = sweep_piece::bernstein_variations(Polynomial(std::span<const double>(sum.data(), kTermSize)),
+                                                          magnitude, terms, s0, width, on_piece);
                 start_sign = sign_of(on_piece[0]);
             }
-            if (variations == 0) {
+            if (signs.variations == 0) {
                 ++work.skipped_pieces;
                 // A root on the boundary with the previous piece, which that piece ended on within rounding.
                 if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
                 previous_sign = start_sign;
-            } else if (sweep_piece::polynomial_piece_crossings(on_piece, variations, t0, width, previous_sign, work,
+            } else if (sweep_piece::polynomial_piece_crossings(on_piece, signs, t0, width, previous_sign, work,
                                                                crossing)) {
                 return;
             }

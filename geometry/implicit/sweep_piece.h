@@ -114,12 +114,13 @@ inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c
 // sign variations of its control polygon (0: no crossing), allowing for the rounding of the terms' sum and of the
 // shift to the piece (2·degree + 2 operations per coefficient). `on_piece` is the caller's, declared once per sweep:
 // declared per piece, even as an optional, its 104 bytes were cleared (a rep stos) on every piece.
-inline int bernstein_variations(const Polynomial& sum, const std::array<double, kMaxPolynomialDegree + 1>& magnitude,
-                                int terms, double s0, double width, Polynomial& on_piece) {
+inline BernsteinSigns bernstein_variations(const Polynomial& sum,
+                                           const std::array<double, kMaxPolynomialDegree + 1>& magnitude, int terms,
+                                           double s0, double width, Polynomial& on_piece) {
     on_piece = sum.compose_linear(s0, width);
     const double rounding = 4 * std::numeric_limits<double>::epsilon() * (terms + 2 * sum.degree() + 2) *
                             magnitude_at(magnitude, std::abs(s0) + width);
-    return bernstein_sign_variations(on_piece, rounding);
+    return bernstein_signs(on_piece, rounding);
 }
 
 // Reports the sign changes of F = on_piece(u) on the piece [t0, t0 + width] (u = (t − t0)/width) in increasing t,
@@ -127,7 +128,7 @@ inline int bernstein_variations(const Polynomial& sum, const std::array<double, 
 // answer (not 0). previous_sign is F's sign just before the piece, and F's sign at its end on return. Returns true
 // when the sweep must stop.
 template <class Crossing>
-bool polynomial_piece_crossings(const Polynomial& on_piece, int variations, double t0, double width,
+bool polynomial_piece_crossings(const Polynomial& on_piece, const BernsteinSigns& signs, double t0, double width,
                                 int& previous_sign, BlobQueryWork& work, Crossing&& crossing) {
     ++work.polynomial_solves;
     // A start of exactly zero is a root at t0 the previous piece already ended on: no step. (Any other start is
@@ -139,11 +140,12 @@ bool polynomial_piece_crossings(const Polynomial& on_piece, int variations, doub
     }
     RootFinderWork root_work;
     const double at_start = on_piece[0], at_end = on_piece.evaluate(1);
-    const bool bracketed = variations == 1 && sign_of(at_start) != sign_of(at_end);
+    const bool bracketed = signs.variations == 1 && sign_of(at_start) != sign_of(at_end);
     if (bracketed) {
         // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points to find first
         // (a third of the cost of a hit, measured).
-        const double root = refine_bracketed_root(on_piece, 0, 1, at_start, at_end, {}, &root_work);
+        const double root =
+            refine_bracketed_root(on_piece, 0, 1, at_start, at_end, {}, &root_work, signs.polygon_crossing);
         const int after = sign_of(at_end);
         if (after != previous_sign) {
             const int before = previous_sign;

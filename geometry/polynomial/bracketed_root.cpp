@@ -30,11 +30,12 @@ private:
 // The search, for p given by evaluate(t) → ValueAndDerivative.
 template <class Evaluate>
 double refine(const Evaluate& evaluate, double lo, double hi, double value_at_lo, double value_at_hi,
-              const RootTolerance& tolerance, RootFinderWork* work) {
+              const RootTolerance& tolerance, RootFinderWork* work, double first_guess) {
     constexpr int kMaxIterations = 2100;  // enough bisections to shrink any finite double interval to adjacent doubles
     const bool rising = value_at_lo < 0;
     // The secant through the bracket is a better first guess than the midpoint on monotone pieces.
-    double t = lo + (hi - lo) * (value_at_lo / (value_at_lo - value_at_hi));
+    double t = first_guess > lo && first_guess < hi ? first_guess
+                                                    : lo + (hi - lo) * (value_at_lo / (value_at_lo - value_at_hi));
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     double step_before_last = hi - lo, last_step = hi - lo;
     bool newton_before = false;  // the last step was Newton's
@@ -77,10 +78,10 @@ double refine(const Evaluate& evaluate, double lo, double hi, double value_at_lo
 }  // namespace
 
 double refine_bracketed_root(const Polynomial& p, double lo, double hi, double value_at_lo, double value_at_hi,
-                             const RootTolerance& tolerance, RootFinderWork* work) {
-    if (p.degree() <= 7) return refine(EstrinSeven(p), lo, hi, value_at_lo, value_at_hi, tolerance, work);
+                             const RootTolerance& tolerance, RootFinderWork* work, double first_guess) {
+    if (p.degree() <= 7) return refine(EstrinSeven(p), lo, hi, value_at_lo, value_at_hi, tolerance, work, first_guess);
     return refine([&](double t) { return p.evaluate_with_derivative(t); }, lo, hi, value_at_lo, value_at_hi,
-                  tolerance, work);
+                  tolerance, work, first_guess);
 }
 
 }  // namespace isotrace

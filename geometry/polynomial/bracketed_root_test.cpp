@@ -61,5 +61,19 @@ TEST(BracketedRoot, AStepThatRoundsToNothingEndsTheSearch) {
     EXPECT_LE(work.iterations, 5u);
 }
 
+// A first guess inside the bracket is where the search starts (at the root itself, one step confirms it); one outside
+// the bracket, or none, starts at the secant's zero, step for step.
+TEST(BracketedRoot, StartsAtAFirstGuessInsideTheBracket) {
+    const Polynomial p{-0.3, 1.2, -0.5, 0.7, -0.2, 0.1, 0.05};
+    const double at0 = p.evaluate(0), at1 = p.evaluate(1);
+    RootFinderWork from_secant, from_root, from_outside;
+    const double root = refine_bracketed_root(p, 0, 1, at0, at1, {}, &from_secant);
+    EXPECT_EQ(refine_bracketed_root(p, 0, 1, at0, at1, {}, &from_root, root), root);
+    EXPECT_LE(from_root.iterations, 2u);
+    EXPECT_LT(from_root.iterations, from_secant.iterations);
+    EXPECT_EQ(refine_bracketed_root(p, 0, 1, at0, at1, {}, &from_outside, 1.5), root);
+    EXPECT_EQ(from_outside.iterations, from_secant.iterations);
+}
+
 }  // namespace
 }  // namespace isotrace

@@ -72,6 +72,12 @@ inline Double4 sqrt4(Double4 v) {
 
 // The sum of the lanes, always in the same order.
 inline double lane_sum(Double4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
+// {lane_sum(a), lane_sum(b), lane_sum(c), lane_sum(d)}, the same bits, in four additions of whole vectors.
+inline Double4 lane_sums(Double4 a, Double4 b, Double4 c, Double4 d) {
+    const Double4 ab = __builtin_shufflevector(a, b, 0, 4, 2, 6) + __builtin_shufflevector(a, b, 1, 5, 3, 7);
+    const Double4 cd = __builtin_shufflevector(c, d, 0, 4, 2, 6) + __builtin_shufflevector(c, d, 1, 5, 3, 7);
+    return __builtin_shufflevector(ab, cd, 0, 1, 4, 5) + __builtin_shufflevector(ab, cd, 2, 3, 6, 7);
+}
 // The least lane (NaN-free lanes).
 inline double lane_min(Double4 v) {
     const double a = v[0] < v[1] ? v[0] : v[1], b = v[2] < v[3] ? v[2] : v[3];
