@@ -6,9 +6,9 @@
 //   1. the float sphere test keeps the listed elements the stretch may come near; their exact nearest approaches
 //      bound F from above (below T the stretch holds no crossing: nearly half the queries end here), and those
 //      whose support's chord meets the stretch become the candidates, in ascending element order;
-//   2. a metaball has one piece, its support's chord [t_enter, t_exit], so its term of the sum is one polynomial
-//      about the stretch's start for the whole sweep: every candidate's term is composed at once, four lanes at a
-//      time, when a piece first needs a polynomial;
+//   2. a metaball has one piece, its support's chord [t_enter, t_exit], so on any piece of the stretch its term of
+//      the sum is one polynomial: a piece the bounds leave open composes the terms of the elements counting on it
+//      directly in the piece's own u ∈ [0, 1], four lanes at a time (no shift of a sum to the piece);
 //   3. pieces run between consecutive entries and exits: the next event is the least entry or exit beyond the
 //      piece's start (a minimum over the lanes, no sort), and the elements that count on a piece are a mask of the
 //      lanes (entered, not left), so each bound and sum is a masked sum over whole lanes: no branch per element,
@@ -121,8 +121,14 @@ private:
     // The candidates' dist² quadratics about the stretch's start and their 1/R².
     template <std::size_t kGroups>
     void prepare_pieces(const SweepStretch& stretch);
+    // F − T on the piece [s0, s0 + width] as a polynomial in u ∈ [0, 1], summed over the lanes in `counts`, and a bound
+    // on the magnitude of every value its composition rounds (for the Bernstein test's rounding).
+    struct PiecePolynomial {
+        std::array<double, 8> coefficients;  // two lanes of four: kTermSize coefficients, then a 0
+        double magnitude;
+    };
     template <std::size_t kGroups>
-    void compose_terms();
+    PiecePolynomial piece_polynomial(double s0, double width, const Mask4* counts) const;
     // The kernel on x = r²/R² per lane (unit_piece_lanes.h).
     template <class MulAdd = RoundedMulAdd>
     Double4 unit_value(Double4 x, MulAdd mul_add = {}) const {
@@ -190,8 +196,6 @@ private:
     alignas(32) double t_enter_[kMaxLanes], t_exit_[kMaxLanes];
     alignas(32) double q0_[kMaxLanes], q1_[kMaxLanes], vertex_[kMaxLanes];  // vertex: where dist² is least, in s
     std::uint32_t index_[kMaxLanes];
-    alignas(32) double term_[kTermSize][kMaxLanes];  // each candidate's w·f(x(s)), once composed
-    bool terms_composed_ = false;
     std::array<unsigned, kMaxLanes / 4> counting_{};  // per group, the lanes counting on the current piece
 };
 
@@ -332,20 +336,25 @@ void MetaballSweep<Kernel>::prepare_pieces(const SweepStretch& stretch) {
         const Double4 radius = load4(radius_ + 4 * g);
         store4(inverse_radius2_ + 4 * g, 1 / (radius * radius));
     }
-    terms_composed_ = false;
 }
 
 template <class Kernel>
 template <std::size_t kGroups>
-void MetaballSweep<Kernel>::compose_terms() {
-    // w·Σₖ βₖ·xᵏ with x(s) = dist²(s)/R², by Horner on polynomials: each step multiplies by x(s) (every new
-    // coefficient from the old ones, cᵢ ← cᵢ₋₂·x2 + cᵢ₋₁·x1 + cᵢ·x0) and adds w·βₖ. Four lanes at a time; the loops
-    // have constant bounds and unroll, so the coefficients stay in registers.
+typename MetaballSweep<Kernel>::PiecePolynomial MetaballSweep<Kernel>::piece_polynomial(double s0, double width,
+                                                                                        const Mask4* counts) const {
+    // Each counting element's w·Σₖ βₖ·xᵏ with x(u) = dist²(s0 + u·width)/R² = x0 + x1·u + x2·u², by Horner on
+    // polynomials: each step multiplies by x(u) (every new coefficient from the old ones, cᵢ ← cᵢ₋₂·x2 + cᵢ₋₁·x1 +
+    // cᵢ·x0) and adds w·βₖ. Composed on the piece itself, not about the stretch's start and then shifted to the piece
+    // (a degree-6 shift on the critical path of every hit, and its rounding). Four lanes at a time; the loops have
+    // constant bounds and unroll, so the coefficients stay in registers.
     const auto& b = unit_.coefficients;
+    const double reach = std::abs(s0) + width;  // |s| on the piece is at most this
+    Double4 total[kTermSize] = {}, magnitude{};
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 weight = load4(weight_ + 4 * g), inverse_radius2 = load4(inverse_radius2_ + 4 * g);
-        const Double4 x0 = load4(q0_ + 4 * g) * inverse_radius2, x1 = load4(q1_ + 4 * g) * inverse_radius2,
-                      x2 = c2_ * inverse_radius2;
+        const Double4 q1 = load4(q1_ + 4 * g);
+        const Double4 x0 = distance2(g, s0) * inverse_radius2, x1 = ((q1 + 2 * c2_ * s0) * width) * inverse_radius2,
+                      x2 = (c2_ * (width * width)) * inverse_radius2;
         Double4 c[kTermSize] = {};
         c[0] = weight * b[3];
 #pragma GCC unroll 4
@@ -363,9 +372,24 @@ void MetaballSweep<Kernel>::compose_terms() {
             next[0] = next[0] + weight * b[std::size_t(k)];
             for (std::size_t i = 0; i < kTermSize; ++i) c[i] = next[i];
         }
-        for (std::size_t i = 0; i < kTermSize; ++i) store4(term_[i] + 4 * g, c[i]);
+        const Mask4 mask = counts[g];
+#pragma GCC unroll 7
+        for (std::size_t i = 0; i < kTermSize; ++i) total[i] += select(mask, c[i], Double4{});
+        // |w|·Σ|βₖ|·Xᵏ with X = (|q0| + |q1|·reach + c2·reach²)/R² ≥ |x| and every product the composition forms, the
+        // dist² quadratic's own included.
+        const Double4 x_bound = (abs4(load4(q0_ + 4 * g)) + abs4(q1) * reach + c2_ * (reach * reach)) * inverse_radius2;
+        const Double4 term_bound =
+            abs4(weight) *
+            (std::abs(b[0]) + x_bound * (std::abs(b[1]) + x_bound * (std::abs(b[2]) + x_bound * std::abs(b[3]))));
+        magnitude += select(mask, term_bound, Double4{});
     }
-    terms_composed_ = true;
+    static_assert(kTermSize == 7, "two lanes of four coefficients");
+    PiecePolynomial piece;
+    store4(piece.coefficients.data(), lane_sums(total[0], total[1], total[2], total[3]));
+    store4(piece.coefficients.data() + 4, lane_sums(total[4], total[5], total[6], Double4{}));
+    piece.coefficients[0] -= threshold_;
+    piece.magnitude = lane_sum(magnitude) + threshold_;
+    return piece;
 }
 
 template <class Kernel>
@@ -614,32 +638,11 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
             }
             BernsteinSigns signs;
             if (!settled) {
-                // The sum of the counting elements' terms − T, and of their coefficients' magnitudes.
-                if (!terms_composed_) compose_terms<kGroups>();
-                std::array<double, kMaxPolynomialDegree + 1> magnitude{};
-                std::array<double, 8> sum;  // two lanes of four: kTermSize coefficients and a 0
+                const PiecePolynomial piece = piece_polynomial<kGroups>(s0, width, counts);
                 int terms = 1;
-                // Group by group, every coefficient at once (each lane's sum still runs in ascending group order).
-                Double4 total[kTermSize] = {}, size[kTermSize] = {};
-                for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
-                    const Mask4 mask = counts[g];
-#pragma GCC unroll 7
-                    for (std::size_t i = 0; i < kTermSize; ++i) {
-                        const Double4 c = load4(term_[i] + 4 * g);
-                        total[i] += select(mask, c, Double4{});
-                        size[i] += select(mask, abs4(c), Double4{});
-                    }
-                }
-                static_assert(kTermSize == 7, "two lanes of four coefficients");
-                store4(sum.data(), lane_sums(total[0], total[1], total[2], total[3]));
-                store4(sum.data() + 4, lane_sums(total[4], total[5], total[6], Double4{}));
-                store4(magnitude.data(), lane_sums(size[0], size[1], size[2], size[3]));
-                store4(magnitude.data() + 4, lane_sums(size[4], size[5], size[6], Double4{}));
-                sum[0] -= threshold_;
-                magnitude[0] += threshold_;
                 for (std::size_t g = 0; g < groups<kGroups>(); ++g) terms += std::popcount(counting_[g]);
-                signs = sweep_piece::bernstein_variations(Polynomial(std::span<const double>(sum.data(), kTermSize)),
-                                                          magnitude, terms, s0, width, on_piece);
+                on_piece = Polynomial(std::span<const double>(piece.coefficients.data(), kTermSize));
+                signs = sweep_piece::bernstein_signs_on_piece(on_piece, terms, piece.magnitude);
                 start_sign = sign_of(on_piece[0]);
             }
             if (signs.variations == 0) {

@@ -123,6 +123,13 @@ inline BernsteinSigns bernstein_variations(const Polynomial& sum,
     return bernstein_signs(on_piece, rounding);
 }
 
+// The Bernstein test of F on a piece composed directly in u ∈ [0, 1] from `terms` terms (MetaballSweep): every value
+// its composition rounds is at most `magnitude` (Σ over the terms, and T), and each coefficient went through at most
+// 20 roundings (the quadratic x(u), three Horner steps of three products and two sums, the weight, the sum of terms).
+inline BernsteinSigns bernstein_signs_on_piece(const Polynomial& on_piece, int terms, double magnitude) {
+    return bernstein_signs(on_piece, 4 * std::numeric_limits<double>::epsilon() * (terms + 20) * magnitude);
+}
+
 // Reports the sign changes of F = on_piece(u) on the piece [t0, t0 + width] (u = (t − t0)/width) in increasing t,
 // through crossing(t, sign before), which returns true to stop the sweep; `variations` is bernstein_variations'
 // answer (not 0). previous_sign is F's sign just before the piece, and F's sign at its end on return. Returns true
