@@ -10,26 +10,17 @@ namespace {
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
-void require_degree_fits(std::size_t degree) {
-    if (degree > static_cast<std::size_t>(kMaxPolynomialDegree))
-        throw std::length_error("polynomial degree exceeds kMaxPolynomialDegree");
-}
-
 }  // namespace
+
+void polynomial_detail::throw_degree_too_high() {
+    throw std::length_error("polynomial degree exceeds kMaxPolynomialDegree");
+}
 
 Polynomial::Polynomial(std::initializer_list<double> coefficients_low_to_high)
     : Polynomial(std::span<const double>(coefficients_low_to_high.begin(), coefficients_low_to_high.size())) {}
 
-Polynomial::Polynomial(std::span<const double> coefficients_low_to_high) {
-    if (coefficients_low_to_high.empty()) return;
-    require_degree_fits(coefficients_low_to_high.size() - 1);
-    std::copy(coefficients_low_to_high.begin(), coefficients_low_to_high.end(), coefficients_.begin());
-    degree_ = static_cast<int>(coefficients_low_to_high.size()) - 1;
-    drop_zero_leading_coefficients();
-}
-
 Polynomial Polynomial::from_roots(std::span<const double> roots, double leading) {
-    require_degree_fits(roots.size());
+    polynomial_detail::require_degree_fits(roots.size());
     Polynomial product{leading};
     for (double root : roots) product = product * Polynomial{-root, 1};
     return product;
@@ -101,7 +92,7 @@ Polynomial& Polynomial::operator*=(double factor) {
 
 Polynomial operator*(const Polynomial& p, const Polynomial& q) {
     if (p.is_zero() || q.is_zero()) return {};
-    require_degree_fits(static_cast<std::size_t>(p.degree_ + q.degree_));
+    polynomial_detail::require_degree_fits(static_cast<std::size_t>(p.degree_ + q.degree_));
     Polynomial product;
     product.degree_ = p.degree_ + q.degree_;
     for (int i = 0; i <= p.degree_; ++i)

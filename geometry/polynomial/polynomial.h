@@ -19,11 +19,18 @@ inline constexpr int kCoefficientQuads = (kMaxPolynomialDegree + 4) / 4;
 // f.template operator()<kQuads>() with the fewest lanes of four that hold the coefficients 0 … degree: the lane code
 // on coefficients (compose_linear, the Bernstein test) does no work for the lanes a low degree leaves empty.
 template <class F>
-decltype(auto) with_coefficient_quads(int degree, F&& f) {
+[[gnu::always_inline]] inline decltype(auto) with_coefficient_quads(int degree, F&& f) {
     if (degree < 4) return f.template operator()<1>();
     if (degree < 8) return f.template operator()<2>();
     return f.template operator()<kCoefficientQuads>();
 }
+
+namespace polynomial_detail {
+[[noreturn]] void throw_degree_too_high();  // std::length_error
+inline void require_degree_fits(std::size_t degree) {
+    if (degree > static_cast<std::size_t>(kMaxPolynomialDegree)) throw_degree_too_high();
+}
+}  // namespace polynomial_detail
 
 struct ValueAndDerivative {
     double value;
@@ -37,7 +44,13 @@ public:
     // Coefficients from low to high powers: {c0, c1, c2} is c0 + c1 t + c2 t². Throws std::length_error when
     // there are more than kMaxPolynomialDegree + 1 of them.
     Polynomial(std::initializer_list<double> coefficients_low_to_high);
-    explicit Polynomial(std::span<const double> coefficients_low_to_high);
+    explicit Polynomial(std::span<const double> coefficients_low_to_high) {
+        if (coefficients_low_to_high.empty()) return;
+        polynomial_detail::require_degree_fits(coefficients_low_to_high.size() - 1);
+        std::copy(coefficients_low_to_high.begin(), coefficients_low_to_high.end(), coefficients_.begin());
+        degree_ = static_cast<int>(coefficients_low_to_high.size()) - 1;
+        drop_zero_leading_coefficients();
+    }
     // leading · ∏(t − rᵢ). Throws std::length_error for more than kMaxPolynomialDegree roots.
     static Polynomial from_roots(std::span<const double> roots, double leading = 1);
 
