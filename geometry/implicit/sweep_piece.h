@@ -111,9 +111,9 @@ inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c
 
 // The Bernstein test of the piece [s0, s0 + width] of `sum` (F as a polynomial in s, the sum of `terms` terms whose
 // coefficients' magnitudes add up to `magnitude`): writes F on the piece in u ∈ [0, 1] to `on_piece` and returns the
-// sign variations of its control polygon (0: no crossing), allowing for the rounding of the terms' sum and of the
-// shift to the piece (2·degree + 2 operations per coefficient). `on_piece` is the caller's, declared once per sweep:
-// declared per piece, even as an optional, its 104 bytes were cleared (a rep stos) on every piece.
+// signs of its control polygon (bernstein_signs; 0 variations: no crossing), allowing for the rounding of the terms'
+// sum and of the shift to the piece (2·degree + 2 operations per coefficient). `on_piece` is the caller's, declared
+// once per sweep: declared per piece, even as an optional, its 104 bytes were cleared (a rep stos) on every piece.
 inline BernsteinSigns bernstein_variations(const Polynomial& sum,
                                            const std::array<double, kMaxPolynomialDegree + 1>& magnitude, int terms,
                                            double s0, double width, Polynomial& on_piece) {
@@ -131,8 +131,9 @@ inline BernsteinSigns bernstein_signs_on_piece(const Polynomial& on_piece, int t
 }
 
 // Reports the sign changes of F = on_piece(u) on the piece [t0, t0 + width] (u = (t − t0)/width) in increasing t,
-// through crossing(t, sign before), which returns true to stop the sweep; `variations` is bernstein_variations'
-// answer (not 0). previous_sign is F's sign just before the piece, and F's sign at its end on return. Returns true
+// through crossing(t, sign before), which returns true to stop the sweep; `signs` is the piece's Bernstein test
+// (bernstein_variations or bernstein_signs_on_piece; not 0 variations), whose polygon crossing starts the search for a
+// lone root. previous_sign is F's sign just before the piece, and F's sign at its end on return. Returns true
 // when the sweep must stop.
 template <class Crossing>
 bool polynomial_piece_crossings(const Polynomial& on_piece, const BernsteinSigns& signs, double t0, double width,

@@ -36,7 +36,7 @@ inline int bernstein_sign_variations(const Polynomial& on_unit_interval, double 
 // than the secant through the piece's ends (blobs_1k: 3.59 → 3.12 steps per solved piece; bernstein_test).
 struct BernsteinSigns {
     int variations = 0;
-    double polygon_crossing = 0.5;  // in (0, 1), when variations ≥ 1
+    double polygon_crossing = 0.5;  // in [0, 1] (0 or 1 only by rounding), when variations ≥ 1
 };
 inline BernsteinSigns bernstein_signs(const Polynomial& on_unit_interval, double coefficient_error = 0);
 
