@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <random>
 #include <string>
@@ -225,6 +226,21 @@ TEST(MetaballSweep, AppliesToMetaballsOfAOnePiecePolynomialKernel) {
     cube.half_size = {0.5, 0.5, 0.5};
     balls.emplace_back(cube, 1, 1);
     EXPECT_FALSE(MetaballSweep<KimSextic>::applies(KimSextic{}, balls));
+}
+
+// The Bernstein test of a piece composed in its own u allows 4ε·(terms + 20) of the magnitude of every value the
+// composition formed: a control value within that of zero has no trusted sign (the piece goes to the general root
+// search), one beyond it keeps its sign.
+TEST(MetaballSweep, APieceComposedInUDistrustsValuesWithinItsRoundingAllowance) {
+    const Polynomial rising{-1e-15, 1};  // control values −10⁻¹⁵ and 1 − 10⁻¹⁵
+    const int terms = 3;
+    const double allowance_per_magnitude = 4 * std::numeric_limits<double>::epsilon() * (terms + 20);
+    EXPECT_EQ(sweep_piece::bernstein_signs_on_piece(rising, terms, 2e-15 / allowance_per_magnitude).variations,
+              kUntrustedSign);
+    const BernsteinSigns trusted =
+        sweep_piece::bernstein_signs_on_piece(rising, terms, 0.5e-15 / allowance_per_magnitude);
+    EXPECT_EQ(trusted.variations, 1);
+    EXPECT_NEAR(trusted.polygon_crossing, 1e-15, 1e-30);
 }
 
 }  // namespace
