@@ -139,6 +139,8 @@ private:
     Double4 distance2(std::size_t g, S s, MulAdd mul_add = {}) const {
         return mul_add(s, mul_add(s, c2_, load4(q1_ + 4 * g)), load4(q0_ + 4 * g));
     }
+    // d(dist²)/ds per lane of group g at s: where a piece's x(u) and a chord's rise start.
+    Double4 distance2_slope(std::size_t g, double s) const { return load4(q1_ + 4 * g) + 2 * c2_ * s; }
     // The smallest and largest dist² per lane of group g on [s0, s1] (branch free: which end is nearer is data), for
     // the piece's bounds.
     std::pair<Double4, Double4> distance2_range(std::size_t g, double s0, double s1) const {
@@ -352,8 +354,7 @@ typename MetaballSweep<Kernel>::PiecePolynomial MetaballSweep<Kernel>::piece_pol
     Double4 total[kTermSize] = {}, magnitude{};
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 weight = load4(weight_ + 4 * g), inverse_radius2 = load4(inverse_radius2_ + 4 * g);
-        const Double4 q1 = load4(q1_ + 4 * g);
-        const Double4 x0 = distance2(g, s0) * inverse_radius2, x1 = ((q1 + 2 * c2_ * s0) * width) * inverse_radius2,
+        const Double4 x0 = distance2(g, s0) * inverse_radius2, x1 = (distance2_slope(g, s0) * width) * inverse_radius2,
                       x2 = (c2_ * (width * width)) * inverse_radius2;
         Double4 c[kTermSize] = {};
         c[0] = weight * b[3];
@@ -377,7 +378,8 @@ typename MetaballSweep<Kernel>::PiecePolynomial MetaballSweep<Kernel>::piece_pol
         for (std::size_t i = 0; i < kTermSize; ++i) total[i] += select(mask, c[i], Double4{});
         // |w|·Σ|βₖ|·Xᵏ with X = (|q0| + |q1|·reach + c2·reach²)/R² ≥ |x| and every product the composition forms, the
         // dist² quadratic's own included.
-        const Double4 x_bound = (abs4(load4(q0_ + 4 * g)) + abs4(q1) * reach + c2_ * (reach * reach)) * inverse_radius2;
+        const Double4 x_bound =
+            (abs4(load4(q0_ + 4 * g)) + abs4(load4(q1_ + 4 * g)) * reach + c2_ * (reach * reach)) * inverse_radius2;
         const Double4 term_bound =
             abs4(weight) *
             (std::abs(b[0]) + x_bound * (std::abs(b[1]) + x_bound * (std::abs(b[2]) + x_bound * std::abs(b[3]))));
@@ -430,7 +432,7 @@ double MetaballSweep<Kernel>::chord_upper_bound(double s0, double width, const M
             select(spread, (f_far - f_near) / select(spread, x_far - x_near, Double4{} + 1), Double4{});
         // dist²(s0 + σ) − near = (dist²(s0) − near) + (q1 + 2·c2·s0)·σ + c2·σ²
         const Double4 per_distance2 = weight * slope * inverse_radius2;
-        const Double4 rise = load4(q1_ + 4 * g) + 2 * c2_ * s0;
+        const Double4 rise = distance2_slope(g, s0);
         const Mask4 positive = weight > 0.0;
         // An element of negative weight adds at most w·f(x_far).
         a += select(counts[g],
