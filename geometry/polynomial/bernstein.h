@@ -21,19 +21,18 @@ struct BernsteinCoefficients {
 // small integers, so the conversion is well conditioned for the degrees used here (≤ kMaxPolynomialDegree).
 BernsteinCoefficients to_bernstein(const Polynomial& on_unit_interval);
 
-// The sign variations of the control polygon on [0,1], or kUntrustedSign when a coefficient is zero or too small
-// to trust (beyond its rounding bound). By Descartes' rule for the Bernstein basis the roots in the open interval
-// (0,1), counted with multiplicity, are as many as the variations or fewer by an even number:
-//   0 — no root in the closed interval [0,1]: the piece can be skipped;
-//   1 — exactly one root, a simple one, and p(0), p(1) have trusted opposite signs: [0,1] brackets it.
+// The signs of the control polygon (the points (k/n, bₖ)) on [0,1]:
+// - variations: its sign variations, or kUntrustedSign when a coefficient is zero or too small to trust (beyond its
+//   rounding bound). By Descartes' rule for the Bernstein basis the roots in the open interval (0,1), counted with
+//   multiplicity, are as many as the variations or fewer by an even number:
+//     0 — no root in the closed interval [0,1]: the piece can be skipped;
+//     1 — exactly one root, a simple one, and p(0), p(1) have trusted opposite signs: [0,1] brackets it.
+// - polygon_crossing: where the polygon first crosses zero, when there are variations. The polygon hugs the curve, so
+//   on a piece with one simple root this is a start for Newton's method closer than the secant through the piece's
+//   ends (blobs_1k: 3.59 → 3.12 steps per solved piece; bernstein_test).
 // `coefficient_error` bounds Σᵢ|Δaᵢ|, the error the caller's coefficients already carry (it bounds each Bernstein
 // value's error too, as the conversion weights are ≤ 1).
 constexpr int kUntrustedSign = -1;
-inline int bernstein_sign_variations(const Polynomial& on_unit_interval, double coefficient_error = 0);
-
-// The variations as above, and where the control polygon (the points (k/n, bₖ)) first crosses zero when there are
-// some. The polygon hugs the curve, so on a piece with one simple root this is a start for Newton's method closer
-// than the secant through the piece's ends (blobs_1k: 3.59 → 3.12 steps per solved piece; bernstein_test).
 struct BernsteinSigns {
     int variations = 0;
     double polygon_crossing = 0.5;  // in [0, 1] (0 or 1 only by rounding), when variations ≥ 1
@@ -115,10 +114,6 @@ inline BernsteinSigns bernstein_signs(const Polynomial& on_unit_interval, double
     return with_coefficient_quads(on_unit_interval.degree(), [&]<int kQuads>() {
         return bernstein_detail::signs<kQuads>(on_unit_interval, coefficient_error);
     });
-}
-
-inline int bernstein_sign_variations(const Polynomial& on_unit_interval, double coefficient_error) {
-    return bernstein_signs(on_unit_interval, coefficient_error).variations;
 }
 
 }  // namespace isotrace

@@ -63,7 +63,7 @@ TEST(PolynomialBernstein, ThePolygonCrossingStartsNewtonNearTheRoot) {
 }
 
 // The skip test: no variation, every coefficient trusted.
-bool may_have_root(const Polynomial& p) { return bernstein_sign_variations(p) != 0; }
+bool may_have_root(const Polynomial& p) { return bernstein_signs(p).variations != 0; }
 
 TEST(PolynomialBernstein, SkipsOnlyWhenEveryCoefficientHasTheSameStrictSign) {
     EXPECT_FALSE(may_have_root(Polynomial{1, -1, 1}));  // 1 − u + u² > 0
@@ -122,12 +122,12 @@ TEST(PolynomialBernstein, NeverSkipsAnIntervalContainingARoot) {
 }
 
 TEST(PolynomialBernstein, CountsTheControlPolygonsSignVariations) {
-    EXPECT_EQ(bernstein_sign_variations(Polynomial{1, -1, 1}), 0);
-    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0.5})), 1);
-    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0.25, 0.75})), 2);
-    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0.2, 0.5, 0.9})), 3);
-    EXPECT_EQ(bernstein_sign_variations(Polynomial::from_roots(std::vector<double>{0, 3})), kUntrustedSign);
-    EXPECT_EQ(bernstein_sign_variations(Polynomial{}), kUntrustedSign);
+    EXPECT_EQ(bernstein_signs(Polynomial{1, -1, 1}).variations, 0);
+    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0.5})).variations, 1);
+    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0.25, 0.75})).variations, 2);
+    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0.2, 0.5, 0.9})).variations, 3);
+    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0, 3})).variations, kUntrustedSign);
+    EXPECT_EQ(bernstein_signs(Polynomial{}).variations, kUntrustedSign);
 }
 
 // Property behind the sweep's bracket shortcut: one variation means exactly one root in (0,1), a simple one.
@@ -137,7 +137,7 @@ TEST(PolynomialBernstein, OneVariationMeansExactlyOneSimpleRoot) {
     for (int trial = 0; trial < 20000; ++trial) {
         const int degree = 1 + trial % kMaxPolynomialDegree;
         const RandomPolynomial r = random_polynomial(random, degree, -1, 2, 0);
-        if (bernstein_sign_variations(r.polynomial) != 1) continue;
+        if (bernstein_signs(r.polynomial).variations != 1) continue;
         ++single;
         const std::vector<double> inside = roots_inside(r.real_roots, 0, 1);
         ASSERT_EQ(inside.size(), 1u) << "trial " << trial;
