@@ -1,23 +1,13 @@
 #include "geometry/mesh/file_contents.h"
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <system_error>
-
-#include "renderer/core/input_error.h"
+#include "renderer/core/input_file.h"
+#include "renderer/core/memory_budget.h"
 
 namespace isotrace {
 
 std::string read_file_contents(const std::string& path) {
-    // A directory opens fine on Linux and then reads as empty, which would give a misleading message.
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) throw InputError({path}, "", "is a directory, not a file");
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) throw InputError({path}, "", "cannot open file");
-    std::string contents{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-    if (stream.bad()) throw InputError({path}, "", "cannot read file");
-    return contents;
+    return read_input_file(path, MemoryBudget::default_limit_bytes(),
+                           "for mesh files (80 % of physical memory)");
 }
 
 }  // namespace isotrace

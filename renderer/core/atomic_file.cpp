@@ -4,6 +4,7 @@
 #include <sys/random.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -11,6 +12,8 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+
+#include "renderer/core/output_paths.h"
 
 namespace isotrace {
 namespace {
@@ -34,13 +37,24 @@ std::string random_suffix() {
     return suffix;
 }
 
+// A hidden sibling name for the temporary file: ".<stem>.partial-<random><ext>", the stem shortened so that the name
+// fits NAME_MAX (the target's own name may be up to NAME_MAX long).
+std::filesystem::path temporary_sibling(const std::filesystem::path& target) {
+    const std::string marker = ".partial-" + random_suffix();
+    std::string stem = target.stem().string(), extension = target.extension().string();
+    const std::size_t fixed = 1 + marker.size();
+    if (fixed + extension.size() > NAME_MAX) extension.clear();
+    stem.resize(std::min(stem.size(), std::size_t(NAME_MAX) - fixed - extension.size()));
+    std::filesystem::path temporary = target;
+    temporary.replace_filename("." + stem + marker + extension);
+    return temporary;
+}
+
 // Creates a fresh sibling of `target`; returns its descriptor and sets `temporary` to its path.
 int create_temporary(const std::filesystem::path& target, std::filesystem::path& temporary) {
     constexpr int kAttempts = 16;  // a collision with 82 random bits means someone is planting names: give up
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
-        temporary = target;
-        temporary.replace_filename("." + target.stem().string() + ".partial-" + random_suffix() +
-                                   target.extension().string());
+        temporary = temporary_sibling(target);
         const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0) return fd;
         if (errno != EEXIST) fail(target, "cannot create a temporary file in its directory", errno);
@@ -116,6 +130,14 @@ namespace {
 // A failed rename removes the temporary file and closes `fd`.
 void publish_as_target(int fd, const std::filesystem::path& temporary, const std::filesystem::path& target,
                        int slot) {
+    try {
+        require_replaceable(target.string());
+    } catch (...) {
+        ::unlink(temporary.c_str());
+        g_temporaries.withdraw(slot);
+        ::close(fd);
+        throw;
+    }
     if (::rename(temporary.c_str(), target.c_str()) != 0) {
         const int error = errno;
         ::unlink(temporary.c_str());
@@ -143,9 +165,7 @@ bool link_unnamed(int fd, const std::filesystem::path& target, std::filesystem::
     const std::string self = "/proc/self/fd/" + std::to_string(fd);
     constexpr int kAttempts = 16;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
-        temporary = target;
-        temporary.replace_filename("." + target.stem().string() + ".partial-" + random_suffix() +
-                                   target.extension().string());
+        temporary = temporary_sibling(target);
         slot = g_temporaries.publish(temporary);
         if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
         const int error = errno;

@@ -43,16 +43,17 @@ TEST(WriteFileAtomically, ReplacesAnExistingTarget) {
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.exr"});
 }
 
-TEST(WriteFileAtomically, SymlinkAtTheTargetIsReplacedAndItsReferentKeptIntact) {
+// A link is not the command's to replace, and what it points to may be anything: neither is touched.
+TEST(WriteFileAtomically, SymlinkAtTheTargetIsRefusedAndItAndItsReferentKeptIntact) {
     TemporaryDirectory dir("atomic");
     const fs::path victim = dir / "victim.txt";
     write_text(victim, "precious");
     const fs::path target = dir / "out.png";
     fs::create_symlink(victim, target);
-    write_file_atomically(target, "image");
+    EXPECT_THROW(write_file_atomically(target, "image"), std::runtime_error);
     EXPECT_EQ(read_file(victim), "precious");
-    EXPECT_FALSE(fs::is_symlink(target));
-    EXPECT_EQ(read_file(target), "image");
+    EXPECT_TRUE(fs::is_symlink(target));
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out.png", "victim.txt"}));
 }
 
 // The old temporary name was predictable (".<stem>.partial-<pid>-<n><ext>"): symlinks planted at every such name

@@ -166,6 +166,11 @@ case_bad_input() {
   expect_status 2 "ranks running different builds"
   expect_in_stderr "rank 1 (on $(hostname)) runs another isotrace build than rank 0"
   rm "$work/other-isotrace"
+  # Another command on one rank: each waited for the other's messages forever.
+  run "$work/stdout" "$work/stderr" timeout $((60 * time_scale)) "${mpi[@]}" -np 1 "$cli" render "$cornell" --res 16x16 \
+    --spp 4 --quiet -o "$work/a.exr" : -np 1 "$cli" bench --quick --filter cornell_box/primary --threads 1
+  expect_status 2 "ranks running different commands"
+  expect_in_stderr "rank 1 runs \"isotrace bench\""
   # A time budget cannot be shared by the ranks.
   run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --res 16x16 --time 5 --quiet -o "$work/a.exr"
   expect_status 2 "--time under MPI"

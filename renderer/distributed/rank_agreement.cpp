@@ -5,22 +5,18 @@
 
 #include <cinttypes>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 
 #include "renderer/core/fnv_hash.h"
 #include "renderer/core/version.h"
 #include "renderer/distributed/message_bytes.h"
+#include "renderer/core/input_file.h"
 
 namespace isotrace {
 namespace {
 
-// Continues `h` over the file's bytes (not its path: ranks may see the same files under other paths). A file that
-// cannot be read adds nothing; the scene loaded, so only an unreadable executable could get here.
+// Continues `h` over the file's bytes (not its path: ranks may see the same files under other paths).
 std::uint64_t hash_file(const std::string& path, std::uint64_t h) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return fnv1a_64(bytes, h);
+    return fnv1a_64(read_input_file(path, UINT64_MAX, ""), h);
 }
 
 std::uint64_t hash_binary() {

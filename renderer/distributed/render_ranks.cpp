@@ -19,13 +19,33 @@ struct RenderRanks::State {
     // False while an interrupted render or its service is unwinding: the process then leaves without finalising
     // and the launcher ends the other ranks.
     bool in_step = true;
+    bool other_commands = false;  // a worker saw ranks running different commands
     bool workers_waiting = false;  // rank 0: the workers wait for work in serve(); released with Done
     std::vector<std::string> hosts;
     CounterTotals counters;
     std::vector<RankStatistics> ranks;
 };
 
-RenderRanks::RenderRanks() : state_(std::make_unique<State>()) {
+namespace {
+
+// The first rank whose command differs from this one's, as "rank N runs \"isotrace X\"", or "" when all agree.
+// Names travel in fixed slots, the only message every rank can take part in whatever it runs.
+std::string other_command(const std::string& command, int count) {
+    constexpr int kSlot = 32;
+    char own[kSlot] = {};
+    command.copy(own, kSlot - 1);
+    std::vector<char> all(std::size_t(count) * kSlot);
+    MPI_Allgather(own, kSlot, MPI_CHAR, all.data(), kSlot, MPI_CHAR, MPI_COMM_WORLD);
+    for (int rank = 0; rank < count; ++rank) {
+        const std::string name(all.data() + std::size_t(rank) * kSlot);
+        if (name != own) return "rank " + std::to_string(rank) + " runs \"isotrace " + name + "\"";
+    }
+    return "";
+}
+
+}  // namespace
+
+RenderRanks::RenderRanks(const std::string& command) : state_(std::make_unique<State>()) {
     const int launched = launcher_rank_count();
     if (launched <= 1) return;
     int provided = 0;
@@ -40,7 +60,19 @@ RenderRanks::RenderRanks() : state_(std::make_unique<State>()) {
                              "MPI plugin your Open MPI uses (srun --mpi=pmix)");
     if (provided < MPI_THREAD_FUNNELED)
         throw std::runtime_error("the MPI library does not allow threads (MPI_THREAD_FUNNELED)");
+    const std::string other = other_command(command, state_->count);
+    if (other.empty()) return;
+    if (!coordinator()) {
+        state_->other_commands = true;
+        return;
+    }
+    MPI_Finalize();  // the destructor of a half-made object does not run; the workers finalise in theirs
+    throw InputError({}, "",
+                     "every rank of a job must run the same command, but rank 0 runs \"isotrace " + command +
+                         "\" and " + other);
 }
+
+bool RenderRanks::leave_quietly() const { return state_->other_commands; }
 
 RenderRanks::~RenderRanks() {
     if (!state_->joined) return;

@@ -19,9 +19,11 @@ int launcher_rank_count();
 
 class RenderRanks {
 public:
-    // Joins the MPI job when the launcher started several ranks. Throws InputError when it did but this build
-    // has no MPI (every rank would render the whole image and write the same files).
-    RenderRanks();
+    // Joins the MPI job when the launcher started several ranks, and checks that every rank runs the same
+    // `command` ("render", "bench"): ranks running different ones would wait for each other forever. Throws
+    // InputError on rank 0 when they do not (the other ranks then leave_quietly()), or when the launcher started
+    // several ranks but this build has no MPI (every rank would render the whole image and write the same files).
+    explicit RenderRanks(const std::string& command);
     ~RenderRanks();
     RenderRanks(const RenderRanks&) = delete;
     RenderRanks& operator=(const RenderRanks&) = delete;
@@ -30,6 +32,9 @@ public:
     int count() const;
     bool distributed() const { return count() > 1; }
     bool coordinator() const { return rank() == 0; }
+    // This rank found that the job cannot run and leaves with exit code 0: rank 0 reports why and exits with 2,
+    // the job's status (a worker exiting with an error first makes the launcher end rank 0 before it has said why).
+    bool leave_quietly() const;
 
     // Every rank loads the scene; rank 0 then checks that all did, with the same isotrace build and the same
     // scene and options (rank_agreement.h), and throws InputError naming the first rank that did not. The other

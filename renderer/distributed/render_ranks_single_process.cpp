@@ -10,7 +10,7 @@ struct RenderRanks::State {
     std::vector<RankStatistics> no_ranks;
 };
 
-RenderRanks::RenderRanks() : state_(std::make_unique<State>()) {
+RenderRanks::RenderRanks(const std::string&) : state_(std::make_unique<State>()) {
     if (const int launched = launcher_rank_count(); launched > 1)
         throw InputError({}, "",
                          "started as one of " + std::to_string(launched) +
@@ -22,6 +22,7 @@ RenderRanks::~RenderRanks() = default;
 
 int RenderRanks::rank() const { return 0; }
 int RenderRanks::count() const { return 1; }
+bool RenderRanks::leave_quietly() const { return false; }
 
 std::unique_ptr<LoadedScene> RenderRanks::load_scene(const std::string& path, const SceneOverrides& overrides) {
     return isotrace::load_scene(path, overrides);

@@ -3,6 +3,7 @@
 #include "renderer/image/image_reader.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <functional>
 
@@ -80,14 +81,31 @@ TEST(ImageReader, BeforePixelsSeesTheHeaderAndMayRefuseTheImage) {
 
 TEST(ImageReader, MissingFilesAndFilesThatAreNoImagesAreInputErrorsNamingThem) {
     const testing::TemporaryDirectory directory("image_reader");
-    for (const auto& path : {directory / "missing.exr", directory.write("text.png", "not a PNG at all")}) {
+    const std::pair<std::filesystem::path, std::string> cases[] = {
+        {directory / "missing.exr", "file not found"},
+        {directory.write("text.png", "not a PNG at all"), "cannot read image"},
+        {directory.path(), "is a directory"}};
+    for (const auto& [path, problem] : cases) {
         try {
             read_image_file(path);
             ADD_FAILURE() << path << " was read";
         } catch (const InputError& error) {
             EXPECT_EQ(error.location().file, path.string());
-            EXPECT_NE(std::string(error.what()).find("cannot read image"), std::string::npos) << error.what();
+            EXPECT_NE(std::string(error.what()).find(problem), std::string::npos) << error.what();
         }
+    }
+}
+
+// A FIFO would block the decoder forever, waiting for a writer.
+TEST(ImageReader, AFifoIsRefusedWithoutBlocking) {
+    const testing::TemporaryDirectory directory("image_reader");
+    const std::filesystem::path fifo = directory / "sky.exr";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0666), 0);
+    try {
+        read_image_file(fifo);
+        ADD_FAILURE() << "the FIFO was read";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("is a FIFO"), std::string::npos) << error.what();
     }
 }
 

@@ -1,13 +1,12 @@
 #include "renderer/render/checkpoint_file.h"
 
-#include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 #include "renderer/core/atomic_file.h"
 #include "renderer/core/fnv_hash.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/input_file.h"
+#include "renderer/core/memory_budget.h"
 
 namespace isotrace {
 namespace {
@@ -79,10 +78,8 @@ void write_checkpoint(const std::filesystem::path& path, const CheckpointContent
 }
 
 CheckpointContents read_checkpoint(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError({path.string()}, "", "cannot read the checkpoint: " + std::string(std::strerror(errno)));
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw InputError({path.string()}, "", "cannot read the checkpoint");
+    const std::string bytes =
+        read_input_file(path, MemoryBudget::default_limit_bytes(), "for checkpoints (80 % of physical memory)");
     return decode_checkpoint(bytes, path.string());
 }
 

@@ -1,14 +1,11 @@
 #include "renderer/scene/json_document.h"
 
+#include "renderer/core/input_file.h"
 #include "renderer/core/memory_budget.h"
 
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <charconv>
-#include <filesystem>
 #include <cmath>
-#include <fstream>
 #include <memory>
 
 namespace isotrace {
@@ -314,23 +311,8 @@ JsonValue parse_json(const std::string& text, const std::string& file_name) {
 }
 
 JsonValue parse_json_file(const std::string& path, std::uint64_t max_bytes) {
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored))  // opening a directory "succeeds" and reads as empty
-        throw InputError({path, 0, 0}, "", "cannot open file: it is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError({path, 0, 0}, "", std::string("cannot open file: ") + std::strerror(errno));
-    std::string text;
-    char chunk[1 << 16];
-    while (in) {  // in chunks, never more than max_bytes + one chunk: the size of a device or pipe is unknown
-        in.read(chunk, sizeof chunk);
-        text.append(chunk, std::size_t(in.gcount()));
-        if (text.size() > max_bytes)
-            throw InputError({path, 0, 0}, "",
-                             "the file is larger than the limit of " + format_bytes(max_bytes) +
-                                 " for scene files (isotrace render --max-scene-size raises it)");
-    }
-    if (in.bad()) throw InputError({path, 0, 0}, "", "cannot read file");
-    return parse_json(text, path);
+    return parse_json(read_input_file(path, max_bytes, "for scene files (isotrace render --max-scene-size raises it)"),
+                      path);
 }
 
 }  // namespace isotrace

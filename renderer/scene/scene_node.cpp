@@ -5,6 +5,7 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/did_you_mean.h"
+#include "renderer/core/input_file.h"
 
 namespace isotrace {
 
@@ -229,9 +230,11 @@ Rgb SceneNode::colour_or(const std::string& key, const Rgb& fallback) const {
 std::filesystem::path SceneNode::file_path(const std::string& key) const {
     const std::filesystem::path given = string(key);
     const std::filesystem::path resolved = given.is_absolute() ? given : context_->directory / given;
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(resolved, error))
-        fail_at(key, "file not found: " + resolved.string());
+    try {
+        require_regular_input(resolved);
+    } catch (const InputError& error) {
+        fail_at(key, resolved.string() + ": " + error.problem());
+    }
     context_->files->add(resolved);
     return resolved;
 }

@@ -608,7 +608,9 @@ case_resume_bad_input() {
   cp "$work/ck.bin" "$work/corrupted.bin"
   printf 'X' | dd of="$work/corrupted.bin" bs=1 seek=200 conv=notrunc status=none
   resume_fails "$work/corrupted.bin" "corrupted"
-  resume_fails "$work/scene.json" "not an isotrace checkpoint"
+  cp "$work/scene.json" "$work/not_a_checkpoint.bin"
+  resume_fails "$work/not_a_checkpoint.bin" "not an isotrace checkpoint"
+  resume_fails "$work/scene.json" "an output may not replace an input"  # it would go on checkpointing to the scene
   resume_fails "$work/ck.bin" "--spp 32 differs from the checkpoint's 100000" --spp 32
   resume_fails "$work/ck.bin" "--res 8x8 differs" --res 8x8
   resume_fails "$work/ck.bin" "--seed 5 differs" --seed 5
@@ -623,12 +625,16 @@ case_resume_bad_input() {
 
 # ---- hostile input and safe output (issue 10) -------------------------------------------------------------
 
-case_output_symlink_not_followed() {  # a planted symlink at the output or at old-style temporary names
+case_output_symlink_not_followed() {  # a planted symlink at the output or at old-style temporary names: refused, both kept
   echo precious >"$work/victim"
   ln -s "$work/victim" "$work/out.png"
   for n in 0 1 2 3; do ln -s "$work/victim" "$work/.out.partial-$$-$n.png"; done
-  cli_expect 0 render "$cornell" --res 16x16 --spp 1 --quiet -o "$work/out.png"
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 --quiet -o "$work/out.png"
+  expect_in "$work/stderr" "symbolic link" stderr
   [[ "$(cat "$work/victim")" == precious ]] || fail "the symlink's target was overwritten"
+  [[ -L "$work/out.png" ]] || fail "the symlink was replaced"
+  rm "$work/out.png"
+  cli_expect 0 render "$cornell" --res 16x16 --spp 1 --quiet -o "$work/out.png"
   [[ -f "$work/out.png" && ! -L "$work/out.png" ]] || fail "the output is not a regular file"
   [[ $(find "$work" -name '.out.partial-*' -type f | wc -l) == 0 ]] || fail "a temporary file was left behind"
 }
@@ -740,8 +746,11 @@ case_memory_estimate() {  # std::bad_alloc (exit 1) or the OOM killer before
   expect_no_file "$work/a.exr"
 }
 
-case_scene_size_limit() {  # /dev/zero was read without end
+case_scene_size_limit() {  # /dev/zero was read without end; now it is refused as a device before reading
   cli_expect 2 render /dev/zero -o "$work/a.exr" --quiet --max-scene-size 1M
+  expect_in "$work/stderr" "character device" stderr
+  truncate -s 2M "$work/big.json"
+  cli_expect 2 render "$work/big.json" -o "$work/a.exr" --quiet --max-scene-size 1M
   expect_in "$work/stderr" "larger than the limit" stderr
   mkdir -p "$work/scene"
   write_base_scene "$work/scene/scene.json"
@@ -1227,7 +1236,7 @@ case_diff_bad_input() {  # exit 2, a clear message, no output written
   cli_expect 0 render "$cornell" --res 64x64 --spp 4 --quiet --aov depth -o "$work/depth.exr"
   echo "not an image" >"$work/text.png"
   cli_expect 2 diff "$work/a.exr" "$work/missing.exr" --json "$work/out.json"
-  expect_in "$work/stderr" "missing.exr: cannot read image" stderr
+  expect_in "$work/stderr" "missing.exr: file not found" stderr
   cli_expect 2 diff "$work/text.png" "$work/a.png"
   expect_in "$work/stderr" "text.png: cannot read image" stderr
   cli_expect 2 diff "$work/a.exr" "$work/small.exr"
@@ -1354,6 +1363,160 @@ case_reference_bad_input() {
   expect_in "$work/stderr" "not of a reference render"
   expect_no_file "$work/a.exr"
   expect_no_file "$work/a.png"
+}
+
+# ---- outputs that replace only what is theirs; inputs that are regular files -----------------------------
+
+# expect_char_device <path>: the node is still a character device (not replaced by a regular file).
+expect_char_device() {
+  [[ -c "$1" && ! -L "$1" ]] || fail "$1 is no longer a character device"
+}
+
+# Every kind of non-regular output is refused before any work, for every command that writes, and stays as it was.
+case_output_not_regular() {
+  write_base_scene "$work/scene.json"
+  local device="$work/null" nodes=("$work/fifo" "$work/dir.png")
+  mkfifo "$work/fifo"
+  mkdir "$work/dir.png"
+  echo precious >"$work/victim"
+  ln -s "$work/victim" "$work/link.png"
+  nodes+=("$work/link.png")
+  if mknod "$device" c 1 3 2>/dev/null; then nodes+=("$device"); else echo "(no mknod here: device case skipped)" >&2; fi
+  local node
+  for node in "${nodes[@]}"; do
+    cli_expect 2 render "$work/scene.json" --quiet -o "$work/a.exr" --stats-json "$node"
+    expect_in "$work/stderr" "--stats-json" stderr
+    if grep -q "loaded in" "$work/stderr"; then fail "the scene was loaded before the output was refused"; fi
+    cli_expect 2 render "$work/scene.json" --quiet -o "$work/a.exr" --checkpoint "$node"
+    cli_expect 2 render "$work/scene.json" --quiet -o "$node"
+    cli_expect 2 diff "$cornell" "$cornell" --json "$node"
+    cli_expect 2 mesh "$work/scene.json" -o "$node"
+    cli_expect 2 depth "$work/scene.json" -o "$node"
+    expect_no_file "$work/a.exr"
+  done
+  [[ -p "$work/fifo" ]] || fail "the FIFO was replaced"
+  [[ -d "$work/dir.png" ]] || fail "the directory was replaced"
+  [[ -L "$work/link.png" && "$(cat "$work/victim")" == precious ]] || fail "the link or its target was replaced"
+  [[ ! -e "$device" ]] || expect_char_device "$device"
+  expect_no_partial_files "$work"
+}
+
+# No output may be an input or another output, however it is spelled; nothing is written or replaced.
+case_output_collisions() {
+  mkdir "$work/sub"
+  write_base_scene "$work/scene.json"
+  cp "$work/scene.json" "$work/scene.orig"
+  local refused=(
+    "render $work/scene.json --quiet -o $work/a.exr --stats-json $work/sub/../scene.json"
+    "render $work/scene.json --quiet -o $work/x.exr --stats-json $work/x.exr"
+    "render $work/scene.json --quiet -o $work/a.exr --checkpoint $work/scene.json"
+    "render $work/scene.json --quiet -o $work/x.exr --checkpoint $work/sub/../x.exr"
+    "render $work/scene.json --quiet -o $work/scene.json.exr -o $work/scene.json.exr"
+    "render $work/scene.json --quiet -o $work/a.exr --stats-json - --checkpoint -")
+  local command
+  for command in "${refused[@]}"; do
+    # shellcheck disable=SC2086
+    cli_expect 2 $command
+    cmp -s "$work/scene.json" "$work/scene.orig" || fail "$command changed the scene"
+  done
+  expect_no_file "$work/a.exr"
+  expect_no_file "$work/x.exr"
+  render_small -o "$work/ref.png"
+  render_small -o "$work/test.png" --seed 3
+  cp "$work/ref.png" "$work/ref.orig"
+  cli_expect 2 diff "$work/ref.png" "$work/test.png" --error-map "$work/ref.png"
+  cli_expect 2 diff "$work/ref.png" "$work/test.png" --json "$work/test.png"
+  cmp -s "$work/ref.png" "$work/ref.orig" || fail "diff replaced its reference"
+  # A file the scene reads (here its mesh) is known only once the scene is loaded: refused before rendering.
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$work/tri.obj"
+  sed 's/"type": "sphere",/"type": "mesh", "file": "tri.obj"/; /"radius": 1/d' "$work/scene.json" >"$work/mesh_scene.json"
+  cp "$work/tri.obj" "$work/tri.orig"
+  cli_expect 2 render "$work/mesh_scene.json" --quiet --stats-json "$work/tri.obj" -o "$work/m.exr"
+  expect_in "$work/stderr" "a file the scene reads" stderr
+  cmp -s "$work/tri.obj" "$work/tri.orig" || fail "the render replaced the scene's mesh"
+  expect_no_file "$work/m.exr"
+  # Resuming goes on checkpointing to the file it came from: that one is allowed.
+  cli_expect 0 render "$work/scene.json" --spp 100000 --time 0.2 --quiet -o "$work/r.exr" --checkpoint "$work/ck.bin"
+  cli_expect 0 render "$work/scene.json" --resume "$work/sub/../ck.bin" --time 0.2 --quiet -o "$work/r.exr"
+  expect_no_partial_files "$work"
+}
+
+case_stats_to_standard_output() {
+  cli_expect 0 render "$cornell" --res 16x16 --spp 1 --quiet -o "$work/a.exr" --stats-json -
+  python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$work/stdout" || fail "stdout is not the statistics JSON"
+  expect_in "$work/stdout" '"samples_per_second"' stdout
+  expect_no_file "$work/-"
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 --quiet -o "$work/a.exr" --checkpoint -
+  expect_in "$work/stderr" "standard output" stderr
+}
+
+# A FIFO or device named as any input is refused at once (a FIFO used to block forever, /dev/zero to stream).
+case_input_not_regular() {
+  write_base_scene "$work/scene.json"
+  mkfifo "$work/fifo"
+  local limit=$((10 * time_scale))
+  run "$work/stdout" "$work/stderr" timeout "$limit" "$cli" render "$work/fifo" --quiet -o "$work/a.exr"
+  ((status == 2)) || { show_output; fail "a FIFO as the scene: exit $status, expected 2"; }
+  expect_in "$work/stderr" "is a FIFO" stderr
+  run "$work/stdout" "$work/stderr" timeout "$limit" "$cli" render "$work/scene.json" --resume "$work/fifo" --quiet \
+    -o "$work/a.exr"
+  ((status == 2)) || { show_output; fail "a FIFO as the checkpoint: exit $status, expected 2"; }
+  run "$work/stdout" "$work/stderr" timeout "$limit" "$cli" render "$work/scene.json" --resume /dev/zero --quiet \
+    -o "$work/a.exr"
+  ((status == 2)) || { show_output; fail "/dev/zero as the checkpoint: exit $status, expected 2"; }
+  expect_in "$work/stderr" "character device" stderr
+  run "$work/stdout" "$work/stderr" timeout "$limit" "$cli" diff "$work/fifo" "$cornell"
+  ((status == 2)) || { show_output; fail "a FIFO as a diff input: exit $status, expected 2"; }
+  run "$work/stdout" "$work/stderr" timeout "$limit" "$cli" deform scenes/data/bunny.obj "$work/fifo" -o "$work/d.ply"
+  ((status == 2)) || { show_output; fail "a FIFO as the deformer file: exit $status, expected 2"; }
+  # Named by a scene: the message has the scene position and says what the path is, not "file not found".
+  sed 's/"type": "sphere",/"type": "mesh", "file": "fifo"/; /"radius": 1/d' "$work/scene.json" >"$work/fifo_scene.json"
+  run "$work/stdout" "$work/stderr" timeout "$limit" "$cli" render "$work/fifo_scene.json" --quiet -o "$work/a.exr"
+  ((status == 2)) || { show_output; fail "a FIFO as a mesh: exit $status, expected 2"; }
+  expect_in "$work/stderr" "fifo_scene.json:11:" stderr
+  expect_in "$work/stderr" "is a FIFO" stderr
+  expect_no_file "$work/a.exr"
+}
+
+case_nul_in_file_name() {  # the extension check saw ".obj" but the system opened /etc/passwd
+  write_base_scene "$work/scene.json"
+  sed 's|"type": "sphere",|"type": "mesh", "file": "/etc/passwd\\u0000.obj"|; /"radius": 1/d' "$work/scene.json" \
+    >"$work/nul.json"
+  cli_expect 2 render "$work/nul.json" --quiet -o "$work/a.exr"
+  expect_in "$work/stderr" "NUL" stderr
+  expect_in "$work/stderr" "nul.json:11:" stderr
+}
+
+case_long_output_name() {  # the temporary sibling's name used to exceed NAME_MAX
+  local name
+  name=$(printf 'a%.0s' $(seq 1 245)).png
+  render_small -o "$work/$name"
+  [[ -s "$work/$name" ]] || fail "no output of a 249-character name"
+  expect_no_partial_files "$work"
+}
+
+case_checkpoint_interval_minimum() {  # 1e-6 s paused the render before every sample: 0 samples in a minute
+  cli_expect 2 render "$cornell" --quiet -o "$work/a.exr" --checkpoint "$work/ck.bin" --checkpoint-every 0.000001
+  expect_in "$work/stderr" "at least 0.05 s" stderr
+  expect_no_file "$work/ck.bin"
+}
+
+case_checkpoint_lost_is_a_failure() {  # "wrote checkpoint" used to follow "no checkpoint written", with exit 0
+  run "$work/stdout" "$work/stderr" bash -c 'ulimit -f 2; exec "$@"' _ "$cli" render "$cornell" --res 8x8 \
+    --spp 100000 --time 0.3 -o "$work/a.png" --checkpoint "$work/ck.bin"
+  ((status == 1)) || { show_output; fail "exit $status when the final checkpoint could not be written, expected 1"; }
+  expect_in "$work/stderr" "no checkpoint written" stderr
+  if grep -q "wrote checkpoint" "$work/stderr"; then fail "claims a checkpoint it could not write"; fi
+  [[ -s "$work/a.png" ]] || fail "the image was not written"
+  expect_no_file "$work/ck.bin"
+  expect_no_partial_files "$work"
+}
+
+case_bench_filter_bounded() {  # 40,000 nested parentheses overflowed the regex compiler's stack
+  cli_expect 2 bench --quick --filter "$(printf '(%.0s' $(seq 1 40000))x$(printf ')%.0s' $(seq 1 40000))"
+  expect_in "$work/stderr" "longer than 256 characters" stderr
+  cli_expect 2 bench --quick --filter "((((((((((x))))))))))"
+  expect_in "$work/stderr" "nests groups deeper" stderr
 }
 
 # ---- dispatch --------------------------------------------------------------------------------------------

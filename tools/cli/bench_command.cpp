@@ -42,7 +42,22 @@ struct BenchArguments {
     const CLI::Option *repeats_option = nullptr, *resolution_option = nullptr, *scaling_max_option = nullptr;
 };
 
+// std::regex compiles by recursion and matches by backtracking: a long or deeply nested pattern could overflow the
+// stack or run for hours. Workload names are short, so short, shallow patterns lose nothing.
+constexpr std::size_t kMaxFilterLength = 256;
+constexpr int kMaxFilterNesting = 8;
+
 std::regex filter_regex(const std::string& filter) {
+    if (filter.size() > kMaxFilterLength)
+        throw InputError({}, "--filter", "the pattern is longer than " + std::to_string(kMaxFilterLength) + " characters");
+    int depth = 0;
+    for (std::size_t i = 0; i < filter.size(); ++i) {
+        if (filter[i] == '\\') ++i;  // an escaped character is not a group
+        else if (filter[i] == '(' && ++depth > kMaxFilterNesting)
+            throw InputError({}, "--filter",
+                             "the pattern nests groups deeper than " + std::to_string(kMaxFilterNesting) + " levels");
+        else if (filter[i] == ')') --depth;
+    }
     try {
         return std::regex(filter, std::regex::ECMAScript);
     } catch (const std::regex_error& error) {
@@ -77,8 +92,10 @@ int run_bench(BenchArguments args) {
     if (selected.empty() && !args.scaling)
         throw InputError({}, "--filter",
                          "\"" + args.filter + "\" matches no workload; workloads: " + joined_names(names_of(all)));
-    if (!args.json.empty()) check_output_directory(args.json, "--json");
-    if (!args.report.empty()) check_output_directory(args.report, "--report");
+    std::vector<NamedPath> outputs;
+    if (!args.json.empty()) outputs.push_back({args.json, "--json"});
+    if (!args.report.empty()) outputs.push_back({args.report, "--report"});
+    check_output_paths(outputs, {});
 
     if (args.quick) {  // the whole suite in well under a minute on 2 cores
         if (args.repeats_option->count() == 0) args.repeats = 1;
@@ -124,11 +141,12 @@ int run_bench(BenchArguments args) {
                              {"workloads", nlohmann::json::array()},
                              {"scaling", nullptr},
                              {"blob_comparison", nullptr}};
+    // Under mpirun or srun every rank runs the workloads at the same time: rank 0 reports their sum (and runs the
+    // scaling and blob comparison alone).
+    RenderRanks ranks("bench");
+    if (ranks.leave_quietly()) return kExitOk;
     for (const WorkloadResult& result : run_workloads(selected, suite, log))
         report["workloads"].push_back(workload_json(result));
-    // Under mpirun or srun every rank has run the workloads at the same time: rank 0 reports their sum (and runs
-    // the scaling and blob comparison alone).
-    RenderRanks ranks;
     if (ranks.distributed()) {
         const std::vector<std::string> gathered = ranks.gather(report["workloads"].dump());
         if (!ranks.coordinator()) return kExitOk;
@@ -149,8 +167,8 @@ int run_bench(BenchArguments args) {
     std::fputs(suite_table(report).c_str(), stdout);
     if (report.contains("mpi")) std::fputs(rank_aggregate_table(report["mpi"]).c_str(), stdout);
     if (run_comparison) std::fputs(("\n" + benchmark_table(report["blob_comparison"])).c_str(), stdout);
-    if (!args.json.empty()) write_text_atomically(args.json, report.dump(2) + "\n");
-    if (!args.report.empty()) write_text_atomically(args.report, bench_html_report(report));
+    if (!args.json.empty()) write_text_output(args.json, report.dump(2) + "\n");
+    if (!args.report.empty()) write_text_output(args.report, bench_html_report(report));
     return kExitOk;
 }
 

@@ -74,7 +74,7 @@ std::vector<ScalingPoint> run_scaling(const std::vector<std::size_t>& counts, co
         log("scaling: " + std::to_string(count) + " elements");
         const TemporaryFile file{std::filesystem::temp_directory_path() /
                                  ("isotrace-bench-" + std::to_string(getpid()) + "-" + std::to_string(count) + ".json")};
-        write_text_atomically(file.path.string(), scaling_scene(count, resolution));
+        write_text_output(file.path.string(), scaling_scene(count, resolution));
         const std::unique_ptr<LoadedScene> scene = load_scene(file.path.string());
         RayCastTiming timing = time_primary_rays({scene.get()}, threads, 1 + repeats).front();
         timing.seconds.erase(timing.seconds.begin());  // the warm-up

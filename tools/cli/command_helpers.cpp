@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <regex>
 #include <stdexcept>
@@ -72,25 +73,25 @@ std::uint64_t parse_memory_size(const std::string& text, const std::string& opti
     return std::uint64_t(bytes);
 }
 
-void check_output_directory(const std::string& path, const std::string& option) {
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    std::error_code error;
-    if (!parent.empty() && !std::filesystem::is_directory(parent, error))
-        throw InputError({}, option, "the directory \"" + parent.string() + "\" of \"" + path + "\" does not exist");
-    try {
-        check_atomically_writable(path);
-    } catch (const std::runtime_error& problem) {
-        throw InputError({}, option, problem.what());
-    }
-}
-
-void check_output_file(const std::string& path, const std::string& extension, const std::string& option) {
+void require_extension(const std::string& path, const std::string& extension, const std::string& option) {
     std::string actual = std::filesystem::path(path).extension().string();
     for (char& c : actual) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (actual != extension) throw InputError({}, option, "\"" + path + "\" must end in " + extension);
-    check_output_directory(path, option);
 }
 
-void write_text_atomically(const std::string& path, const std::string& text) { write_file_atomically(path, text); }
+std::vector<NamedPath> scene_inputs(const LoadedScene& scene) {
+    std::vector<NamedPath> inputs{{scene.path, "the scene"}};
+    for (const auto& file : scene.referenced_files) inputs.push_back({file.string(), "a file the scene reads"});
+    return inputs;
+}
+
+void write_text_output(const std::string& path, const std::string& text) {
+    if (path != kStandardOutput) {
+        write_file_atomically(path, text);
+        return;
+    }
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+        throw std::runtime_error("cannot write to standard output");
+}
 
 }  // namespace isotrace::cli

@@ -2,8 +2,11 @@
 // Argument checks and output writing shared by the sub-commands.
 #include <cstdint>
 #include <string>
+#include <vector>
 
+#include "renderer/core/output_paths.h"
 #include "renderer/plugin/camera.h"
+#include "renderer/scene/loaded_scene.h"
 
 namespace isotrace::cli {
 
@@ -23,14 +26,13 @@ double parse_seconds(const std::string& text, const std::string& option);
 // ("50%"). At least 1 MiB.
 std::uint64_t parse_memory_size(const std::string& text, const std::string& option);
 
-// Rejects an output path that cannot be written before any work is done (it would otherwise fail only after the
-// render, with exit code 1): its directory is missing or unwritable, or the path is a directory.
-void check_output_directory(const std::string& path, const std::string& option);
+// The path ends in `extension` (".png"; any letter case); throws InputError naming `option` otherwise.
+void require_extension(const std::string& path, const std::string& extension, const std::string& option);
 
-// Both checks before any work: the path ends in `extension` (".png"; any letter case) and its directory exists.
-void check_output_file(const std::string& path, const std::string& extension, const std::string& option);
+// The scene file and every file it names, as inputs that no output may replace.
+std::vector<NamedPath> scene_inputs(const LoadedScene& scene);
 
-// Writes a text file atomically (see renderer/core/atomic_file.h).
-void write_text_atomically(const std::string& path, const std::string& text);
+// Writes a text output: atomically (see renderer/core/atomic_file.h), or to standard output for "-".
+void write_text_output(const std::string& path, const std::string& text);
 
 }  // namespace isotrace::cli

@@ -29,7 +29,7 @@ int run_deform(const DeformArguments& args) {
     const std::string extension = lower_extension(args.output);
     if (extension != ".ply" && extension != ".obj")
         throw InputError({}, "--output", "\"" + args.output + "\" must end in .ply or .obj");
-    check_output_directory(args.output, "--output");
+    check_output_paths({{args.output, "--output"}}, {{args.mesh, "the mesh"}, {args.deformers, "the deformer file"}});
     const ThreadLimit limit(args.threads);
     TriangleMeshData mesh = load_mesh_file(args.mesh);
     const auto start = std::chrono::steady_clock::now();

@@ -60,8 +60,13 @@ ImageMetadata make_metadata(const DepthArguments& args, const DepthRange& range)
 }
 
 int run_depth(const DepthArguments& args) {
-    check_output_file(args.output, ".png", "--output");
-    if (!args.exr.empty()) check_output_file(args.exr, ".exr", "--exr");
+    require_extension(args.output, ".png", "--output");
+    std::vector<NamedPath> outputs{{args.output, "--output"}};
+    if (!args.exr.empty()) {
+        require_extension(args.exr, ".exr", "--exr");
+        outputs.push_back({args.exr, "--exr"});
+    }
+    check_output_paths(outputs, {{args.scene, "the scene"}});
     if (args.near && args.far && !(*args.near < *args.far))
         throw InputError({}, "--far", "must be greater than --near");
     // A missing image module fails now, not after the depth map.
@@ -73,6 +78,7 @@ int run_depth(const DepthArguments& args) {
     const int threads = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     const std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
+    check_output_paths(outputs, scene_inputs(*scene));
     const DepthMap map = render_depth_map(*scene);
     const DepthRange range = choose_range(args, map);
     const ImageMetadata metadata = make_metadata(args, range);

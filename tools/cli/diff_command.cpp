@@ -230,7 +230,7 @@ int run_z_test(const DiffArguments& args, const ImageFile& reference, const Imag
     const ZTestInput input = z_test_input(reference, args.reference, test, args.test, args.test_spp);
     const ZTestResult result = z_test(input, args.z_settings);
     print_z_test(args, result);
-    if (!args.json.empty()) write_text_atomically(args.json, z_test_json(args, result).dump(2) + "\n");
+    if (!args.json.empty()) write_text_output(args.json, z_test_json(args, result).dump(2) + "\n");
     if (!args.error_map.empty()) {
         ErrorPicture picture{result.failed_per_pixel, 3.0, "failing pixel channels per pixel, 0 to 3"};
         write_error_map(args, input.test.width, input.test.height, picture);
@@ -246,8 +246,11 @@ int run_diff(const DiffArguments& args, bool error_map_metric_given) {
     if (args.z_test && error_map_metric_given)
         throw InputError({}, "--error-map-metric", "not with --ztest, whose map shows the failing channels");
     require_metric_name(args.error_map_metric, "--error-map-metric");
-    if (!args.error_map.empty()) check_output_file(args.error_map, ".png", "--error-map");
-    if (!args.json.empty()) check_output_directory(args.json, "--json");
+    if (!args.error_map.empty()) require_extension(args.error_map, ".png", "--error-map");
+    std::vector<NamedPath> outputs;
+    if (!args.json.empty()) outputs.push_back({args.json, "--json"});
+    if (!args.error_map.empty()) outputs.push_back({args.error_map, "--error-map"});
+    check_output_paths(outputs, {{args.reference, "the reference image"}, {args.test, "the test image"}});
 
     const ImageFile reference_file = read_image_for_comparison(args.reference);
     const ImageFile test_file = read_image_for_comparison(args.test);
@@ -263,7 +266,7 @@ int run_diff(const DiffArguments& args, bool error_map_metric_given) {
 
     print_comparison(args, comparison);
     if (!args.json.empty())
-        write_text_atomically(args.json,
+        write_text_output(args.json,
                               comparison_json(args, comparison, reference.width, reference.height, broken).dump(2) + "\n");
     if (!args.error_map.empty())
         write_error_map(args, reference.width, reference.height,

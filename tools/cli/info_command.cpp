@@ -9,6 +9,7 @@
 #include "renderer/plugin/sampler_registry.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
+#include "renderer/core/printable.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/scene_fingerprint.h"
 
@@ -36,8 +37,8 @@ int run_info(const std::string& path) {
     const std::unique_ptr<LoadedScene> scene = load_scene(path);
     const BuildStatistics& build = scene->scene->build_statistics();
     const Bounds3f bounds = scene->scene->bounds();
-    std::printf("scene        %s%s%s\n", path.c_str(), scene->description.empty() ? "" : " - ",
-                scene->description.c_str());
+    std::printf("scene        %s%s%s\n", printable(path).c_str(), scene->description.empty() ? "" : " - ",
+                printable(scene->description).c_str());
     std::printf("film         %dx%d (crop %d..%d x %d..%d), %d spp, %s filter, EXR %s\n", scene->film.raster.width,
                 scene->film.raster.height, scene->film.crop.x0, scene->film.crop.x1, scene->film.crop.y0,
                 scene->film.crop.y1, scene->spp, scene->filter_type.c_str(), scene->film.half_float ? "half" : "float");

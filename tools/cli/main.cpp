@@ -10,6 +10,7 @@
 #include "renderer/core/did_you_mean.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/version.h"
+#include "renderer/core/printable.h"
 #include "tools/cli/commands.h"
 
 namespace {
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "isotrace: error: out of memory: the scene or options need more memory than is available\n");
         return kExitBadInput;
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "isotrace: failure: %s\n", error.what());
+        std::fprintf(stderr, "isotrace: failure: %s\n", isotrace::printable(error.what()).c_str());
         return kExitFailure;
     }
 }

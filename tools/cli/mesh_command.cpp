@@ -16,6 +16,7 @@
 #include "renderer/core/input_error.h"
 #include "renderer/core/lower_extension.h"
 #include "renderer/scene/loaded_scene.h"
+#include "renderer/core/printable.h"
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/obj_writer.h"
@@ -95,11 +96,13 @@ void write_mesh(const std::string& path, const std::string& extension, const std
 
 int run_mesh(const MeshArguments& args) {
     const std::string extension = lower_extension(args.output);
-    check_output_file(args.output, extension == ".obj" ? ".obj" : ".ply", "--output");
+    require_extension(args.output, extension == ".obj" ? ".obj" : ".ply", "--output");
+    check_output_paths({{args.output, "--output"}}, {{args.scene, "the scene"}});
     const bool traced = args.method == "traced";
     const std::optional<PolygonizeOptions> options = traced ? std::nullopt : std::optional(options_from(args));
     const ThreadLimit limit(args.threads);
     const std::unique_ptr<LoadedScene> scene = load_scene(args.scene);
+    check_output_paths({{args.output, "--output"}}, scene_inputs(*scene));
     ObjectField chosen = args.object.empty() ? only_implicit_object(*scene->scene, args.scene)
                                              : ObjectField{&find_object(*scene->scene, args.object, args.scene), nullptr};
     const SceneObject& object = *chosen.object;
@@ -110,7 +113,7 @@ int run_mesh(const MeshArguments& args) {
                                                  "\", which is not traced as triangles");
         write_mesh(args.output, extension, object.name, triangles->data());  // baked: already in world space
         if (!args.quiet)
-            std::printf("%s: traced as triangles: %zu vertices, %zu triangles\nwrote %s\n", object.name.c_str(),
+            std::printf("%s: traced as triangles: %zu vertices, %zu triangles\nwrote %s\n", printable(object.name).c_str(),
                         triangles->data().positions.size(), triangles->data().triangles.size(), args.output.c_str());
         return kExitOk;
     }
@@ -140,7 +143,7 @@ int run_mesh(const MeshArguments& args) {
         getrusage(RUSAGE_SELF, &usage);
         std::printf("%s: %s depth %d: %zu vertices, %zu triangles in %.3f s on %d thread(s) (%zu candidate cells, "
                     "%zu on the surface); peak resident memory of the process %.1f MiB\n",
-                    object.name.c_str(), args.method.c_str(), args.depth, result.mesh.positions.size(),
+                    printable(object.name).c_str(), args.method.c_str(), args.depth, result.mesh.positions.size(),
                     result.mesh.triangles.size(), seconds, limit.threads(), r.candidate_cells, r.surface_cells,
                     double(usage.ru_maxrss) / 1024);
         if (options->method == PolygonizeMethod::SphericalDualContouring)

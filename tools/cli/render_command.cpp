@@ -92,6 +92,8 @@ struct RenderArguments {
 };
 
 constexpr double kDefaultCheckpointSeconds = 300;
+// Each checkpoint pauses the render; the threads need some time between pauses or no sample is ever finished.
+constexpr double kMinCheckpointSeconds = 0.05;  // said in the message below
 
 const char* how_it_ended(const RenderResult& result, int spp) {
     if (result.cancelled) return "interrupted";
@@ -193,6 +195,24 @@ void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& a
     reference = {recorded.reference, recorded.target_error};
 }
 
+// Every file the render writes, named by its option.
+std::vector<NamedPath> render_outputs(const RenderArguments& args, const std::string& checkpoint_path) {
+    std::vector<NamedPath> outputs;
+    for (const std::string& output : args.outputs) outputs.push_back({output, "--output"});
+    if (!args.stats_json.empty()) outputs.push_back({args.stats_json, "--stats-json", true});
+    if (!checkpoint_path.empty()) outputs.push_back({checkpoint_path, "--checkpoint"});
+    return outputs;
+}
+
+// The inputs named on the command line. The checkpoint being resumed is one, unless the render goes on
+// checkpointing to it: it is read whole before the first checkpoint replaces it.
+std::vector<NamedPath> command_line_inputs(const RenderArguments& args, const std::string& checkpoint_path) {
+    std::vector<NamedPath> inputs{{args.scene, "the scene"}};
+    if (!args.resume.empty() && !same_file(args.resume, checkpoint_path))
+        inputs.push_back({args.resume, "the checkpoint resumed (--resume)"});
+    return inputs;
+}
+
 int run_render(const RenderArguments& args) {
     ReferenceRequest reference = parse_reference_request(args.reference, args.target_error, !args.resume.empty());
     SceneOverrides overrides;
@@ -213,30 +233,35 @@ int run_render(const RenderArguments& args) {
     const double checkpoint_seconds = args.checkpoint_every.empty()
                                           ? kDefaultCheckpointSeconds
                                           : parse_seconds(args.checkpoint_every, "--checkpoint-every");
-    for (const std::string& output : args.outputs) {  // reject bad names before rendering
-        image_kind_for(output);
-        check_output_directory(output, "--output");
-    }
-    if (!args.stats_json.empty()) check_output_directory(args.stats_json, "--stats-json");
+    if (checkpoint_seconds < kMinCheckpointSeconds)
+        throw InputError({}, "--checkpoint-every",
+                         "must be at least 0.05 s, got \"" +
+                             args.checkpoint_every + "\"");
+    for (const std::string& output : args.outputs) image_kind_for(output);  // reject bad names before rendering
+    const std::vector<NamedPath> outputs = render_outputs(args, checkpoint_path);
+    check_output_paths(outputs, command_line_inputs(args, checkpoint_path));
     std::optional<ResumePoint> resume;
     if (!args.resume.empty()) {
         resume = read_resume_point(args.resume);
         take_pixel_options_from(*resume, args, overrides, reference);
     }
     if (reference.enabled) require_reference_output(args.outputs);
-    if (!checkpoint_path.empty()) check_output_directory(checkpoint_path, "--checkpoint");
 
     const ThreadLimit limit(args.threads);
     const int threads = limit.threads();
 
     counters::reset();
     const auto load_start = std::chrono::steady_clock::now();
-    RenderRanks ranks;  // one of several when started by mpirun or srun (docs/distributed.md)
+    RenderRanks ranks("render");  // one of several when started by mpirun or srun (docs/distributed.md)
+    if (ranks.leave_quietly()) return kExitOk;
     std::unique_ptr<LoadedScene> scene = ranks.load_scene(args.scene, overrides);
     // This rank may not take part (rank 0 refused the run). Rank 0 says why and exits with 2, which becomes the job's
     // status; a worker that left with 2 first made the launcher kill rank 0 before its message was out (a flaky
     // mpi_bad_input), so the worker leaves quietly.
     if (!scene) return kExitOk;
+    std::vector<NamedPath> inputs = command_line_inputs(args, checkpoint_path);
+    for (NamedPath& input : scene_inputs(*scene)) inputs.push_back(std::move(input));
+    check_output_paths(outputs, inputs);  // the files the scene names are known now
     if (reference.enabled) scene->film.half_float = false;  // a reference keeps every bit of its mean and variance
     if (!ranks.coordinator()) {
         ranks.serve(*scene, args.tile_size);
@@ -266,16 +291,19 @@ int run_render(const RenderArguments& args) {
     const PixelOptions pixel_options{options.spp, scene->film.raster, scene->seed, aov_names(overrides.extra_aovs),
                                      reference.enabled, reference.target_error};
     if (reference.enabled) options.stop_at_pass_end = reference_stop_rule(reference, args.quiet);
+    // False when it could not be written; the render goes on, and the next checkpoint may succeed.
     const auto checkpoint = [&](const Film& state) {
         try {
             save_checkpoint(checkpoint_path, *scene, pixel_options, state);
-        } catch (const std::runtime_error& error) {  // the render goes on; the next checkpoint may succeed
+            return true;
+        } catch (const std::runtime_error& error) {
             std::fprintf(stderr, "isotrace: warning: no checkpoint written: %s\n", error.what());
+            return false;
         }
     };
     if (!checkpoint_path.empty()) {
         options.checkpoint_interval_seconds = checkpoint_seconds;
-        options.on_checkpoint = checkpoint;
+        options.on_checkpoint = [&](const Film& state) { checkpoint(state); };
     }
 
     if (!args.quiet) {
@@ -318,7 +346,7 @@ int run_render(const RenderArguments& args) {
     const auto write_start = std::chrono::steady_clock::now();
     // An unfinished render leaves a checkpoint to continue from.
     const bool unfinished = result.completed_spp < options.spp && !result.stopped_at_pass_end;
-    if (!checkpoint_path.empty() && unfinished) checkpoint(*result.film);
+    const bool checkpoint_lost = !checkpoint_path.empty() && unfinished && !checkpoint(*result.film);
     ImageMetadata metadata = make_metadata(*scene, result, options.spp, counts.total_rays());
     if (reference.enabled)
         add_reference_metadata(metadata, reference, {scene->film.raster, scene->seed, options.spp, time_budget}, *scene,
@@ -328,13 +356,19 @@ int run_render(const RenderArguments& args) {
 
     nlohmann::json stats = render_statistics(*scene, result, counts, times, threads);
     add_rank_statistics(stats, ranks);
-    if (!args.stats_json.empty()) write_text_atomically(args.stats_json, stats.dump(2) + "\n");
+    if (!args.stats_json.empty()) write_text_output(args.stats_json, stats.dump(2) + "\n");
     if (!args.quiet) {
         std::fputs(format_statistics(stats).c_str(), stderr);
         for (const std::string& output : args.outputs) std::fprintf(stderr, "wrote %s\n", output.c_str());
-        if (!checkpoint_path.empty() && unfinished)
+        if (!checkpoint_path.empty() && unfinished && !checkpoint_lost)
             std::fprintf(stderr, "wrote checkpoint %s (continue with --resume %s)\n", checkpoint_path.c_str(),
                          checkpoint_path.c_str());
+    }
+    // The images are written, but the render cannot be continued: an output is missing.
+    if (checkpoint_lost) {
+        std::fprintf(stderr, "isotrace: failure: the render is unfinished and its checkpoint %s could not be written\n",
+                     checkpoint_path.c_str());
+        return kExitFailure;
     }
     if (const int signal_number = g_first_signal.load()) {
         std::fprintf(stderr, "isotrace: interrupted by %s: wrote the %s image rendered so far\n",
@@ -360,7 +394,7 @@ CommandRunner add_render_command(CLI::App& app) {
     command->add_option("--aov", args->aovs,
                         "Comma-separated AOVs to add to the EXR: albedo, normal, depth, position, object_id, "
                         "primitive_id, sample_count, variance, or all");
-    command->add_option("--stats-json", args->stats_json, "Write end-of-render statistics as JSON to this file");
+    command->add_option("--stats-json", args->stats_json, "Write end-of-render statistics as JSON to this file (- for standard output)");
     command->add_option("--time", args->time_budget,
                         "Time budget in seconds: the render stops within a sample of it, mid-pass if need be "
                         "(the image is then marked partial)");

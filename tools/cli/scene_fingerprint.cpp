@@ -1,11 +1,10 @@
 #include "tools/cli/scene_fingerprint.h"
 
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 #include "renderer/core/fnv_hash.h"
+#include "renderer/core/input_file.h"
 
 namespace isotrace::cli {
 namespace {
@@ -17,9 +16,7 @@ std::string hex(std::uint64_t value) {
 }
 
 nlohmann::json fingerprint(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read " + file.string() + " to fingerprint the scene");
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string bytes = read_input_file(file, UINT64_MAX, "");
     return {{"path", file.string()}, {"bytes", bytes.size()}, {"fnv1a64", hex(fnv1a_64(bytes))}};
 }
 
