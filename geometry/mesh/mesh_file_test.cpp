@@ -50,7 +50,8 @@ TEST(MeshFile, DirectoryIsNotAMesh) {
     ScratchDirectory scratch;
     const std::string path = scratch.path_of("folder.obj");
     std::filesystem::create_directory(path);
-    EXPECT_EQ(input_error_message([&] { load_mesh_file(path); }), path + ": is a directory, not a file");
+    EXPECT_EQ(input_error_message([&] { load_mesh_file(path); }),
+              path + ": is a directory, not a regular file (isotrace reads only regular files)");
 }
 
 TEST(MeshFile, LoadsTheStanfordBunny) {

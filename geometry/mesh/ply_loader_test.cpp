@@ -370,7 +370,7 @@ TEST(PlyLoader, CorruptedBinaryFilesNeverEscapeInputError) {
 TEST(PlyLoader, MissingFileNamesIt) {
     ScratchDirectory scratch;
     const std::string path = scratch.path_of("absent.ply");
-    EXPECT_EQ(input_error_message([&] { load_ply(path); }), path + ": cannot open file");
+    EXPECT_EQ(input_error_message([&] { load_ply(path); }), path + ": file not found");
 }
 
 }  // namespace

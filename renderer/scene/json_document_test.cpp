@@ -307,7 +307,7 @@ TEST(ParseJsonFile, MissingFileNamesTheFile) {
     } catch (const InputError& error) {
         EXPECT_EQ(error.location().file, path);
         EXPECT_EQ(error.location().line, 0);
-        EXPECT_EQ(std::string(error.what()), path + ": cannot open file: No such file or directory");
+        EXPECT_EQ(std::string(error.what()), path + ": file not found");
     }
 }
 
@@ -317,7 +317,8 @@ TEST(ParseJsonFile, DirectoryIsNotAFile) {
         parse_json_file(dir.path().string());
         FAIL() << "expected an InputError";
     } catch (const InputError& error) {
-        EXPECT_EQ(std::string(error.what()), dir.path().string() + ": cannot open file: it is a directory");
+        EXPECT_EQ(std::string(error.what()),
+                  dir.path().string() + ": is a directory, not a regular file (isotrace reads only regular files)");
     }
 }
 

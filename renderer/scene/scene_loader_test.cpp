@@ -271,7 +271,7 @@ TEST_F(LoadScene, UnknownWorkingSpaceIsReportedOnce) {
 TEST_F(LoadScene, MissingFileNamesTheFile) {
     const std::string path = (dir_ / "absent.json").string();
     testing::expect_input_error([&] { load_scene(path); }, path, 0, 0, "",
-                                path + ": cannot open file: No such file or directory");
+                                path + ": file not found");
 }
 
 TEST_F(LoadScene, ShippedCornellBox) {

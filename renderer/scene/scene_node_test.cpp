@@ -251,8 +251,8 @@ TEST(SceneNode, FilePathResolvesAgainstTheSceneDirectory) {
         EXPECT_EQ(error.location().line, 1);
         EXPECT_EQ(error.location().column, int(text.find("\"meshes/nope.obj\"")) + 1);
         EXPECT_EQ(std::string(error.what()), "scene.json:1:" + std::to_string(error.location().column) +
-                                                 ": missing: file not found: " +
-                                                 (dir.path() / "meshes/nope.obj").string());
+                                                 ": missing: " + (dir.path() / "meshes/nope.obj").string() +
+                                                 ": file not found");
     }
     EXPECT_THROW(scene.root().file_path("dir"), InputError);  // a directory is not a file
 }
