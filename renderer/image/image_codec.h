@@ -45,6 +45,7 @@ struct ImageEncoding {
 
 // What a file says about its first image, before any pixel is read.
 struct ImageHeader {
+    std::string format;  // OpenImageIO's name of the file's format ("openexr", "png", ...)
     int width = 0, height = 0;
     int x = 0, y = 0;  // data window origin
     int full_x = 0, full_y = 0, full_width = 0, full_height = 0;  // full (display) window
@@ -76,10 +77,11 @@ public:
 
 class ImageCodec : public ImageEncoder {
 public:
-    // Reads the first 2-D image of `path` into `image`; returns "" or what is wrong with the file (it cannot
-    // be opened or read, is not 2-D, has no channels). Exceptions from `before_pixels` pass through.
-    virtual std::string decode(const std::filesystem::path& path, const BeforePixels& before_pixels,
-                               DecodedImage& image) const = 0;
+    // Reads the first 2-D image of `path` with the reader of `format` (OpenImageIO's format name; no other reader
+    // is tried) into `image`; returns "" or what is wrong with the file (it cannot be opened or read, is not 2-D,
+    // has no channels). Exceptions from `before_pixels` pass through.
+    virtual std::string decode(const std::filesystem::path& path, const std::string& format,
+                               const BeforePixels& before_pixels, DecodedImage& image) const = 0;
 };
 
 // The module exports this C function: it returns its codec, or nullptr if `isotrace_version` is not the version
