@@ -7,6 +7,7 @@
 // libraries), which writes the bytes the image module would. Nothing here names a library's type, and the modules
 // are built from the same sources, so plain C++ types cross the boundary. Most code wants the functions built on
 // it: write_image_file() (image_writer.h), read_image_file() (image_reader.h).
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -97,6 +98,11 @@ inline constexpr const char* kImageEncoderEntry = "isotrace_image_encoder";
 // The module's codec, loaded once, on first use, from the directory of the loaded libisotrace (thread-safe).
 // Throws std::runtime_error naming the module's path if it is missing or cannot be loaded.
 const ImageCodec& image_codec();
+// Whether image_codec() has loaded the module in this process.
+bool image_codec_loaded();
+// Resident memory that loading the image module adds to a process: OpenImageIO's libraries (measured,
+// docs/reliability.md), charged by the first image read under a memory budget.
+inline constexpr std::uint64_t kImageModuleResidentBytes = std::uint64_t(128) << 20;
 // The encoder for files like `path`: the EXR writer module for .exr, image_codec() for any other (each loaded
 // once, on first use, like image_codec()).
 const ImageEncoder& image_encoder_for(const std::filesystem::path& path);

@@ -10,6 +10,7 @@
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/memory_budget.h"
+#include "renderer/image/image_codec.h"
 #include "tests/support/scene_files.h"
 #include "tests/support/test_images.h"
 
@@ -167,7 +168,7 @@ TEST(ImageTexture, TinyFileClaimingAHugeImageIsRefusedFromItsHeaderBeforeAnyAllo
     EXPECT_NE(message.find("huge.png"), std::string::npos) << message;
     EXPECT_NE(message.find("100000x100000"), std::string::npos) << message;
     EXPECT_NE(message.find("needs about 180 GB"), std::string::npos) << message;
-    EXPECT_EQ(budget.charged_bytes(), 0u);
+    EXPECT_LE(budget.charged_bytes(), kImageModuleResidentBytes);  // at most the module, if this test loaded it
 }
 
 }  // namespace

@@ -1431,6 +1431,13 @@ case_texture_memory_limit() {  # refused from the header, before any pixel is de
   expect_in "$work/stderr" "the 20000x20000 image needs about" stderr
   ((peak_mb < 300)) || fail "the refused texture was decoded (peak $peak_mb MiB)"
   expect_no_file "$work/a.exr"
+  # Reading any image loads OpenImageIO's libraries (over 100 MB resident), charged before they are loaded.
+  write_png "$work/tiny.png" 1 1 3
+  write_image_scene "$work/tiny.json" '{ "texture": "tiny.png" }' "$point_light"
+  expect_bounded 64 render "$work/tiny.json" --quiet -o "$work/a.exr"
+  expect_in "$work/stderr" "the image module that reads it (OpenImageIO's libraries) needs about" stderr
+  expect_bounded 256 render "$work/tiny.json" --quiet -o "$work/a.exr"
+  ((status == 0)) || { show_output; fail "a 1x1 texture was refused under 256M"; }
 }
 
 case_texture_memory_peak() {  # admitted textures stay within the limit (long: 64 M pixels decoded twice)
