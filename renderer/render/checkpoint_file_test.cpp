@@ -59,8 +59,9 @@ TEST(CheckpointFile, EveryTruncationAndExtensionIsRejected) {
 TEST(CheckpointFile, LengthsBeyondTheFileAreTruncationWhateverTheirSum) {
     const std::string bytes = encode_checkpoint(sample_contents());
     const std::uint64_t metadata = sample_contents().metadata_json.size(), state = sample_contents().film_state.size();
-    for (const auto& [m, s] : {std::pair{metadata + 1, state}, std::pair{~std::uint64_t(0), state + metadata + 1},
-                               std::pair{metadata, ~std::uint64_t(0)}, std::pair{~std::uint64_t(0), ~std::uint64_t(0)}}) {
+    constexpr std::uint64_t kMax = ~std::uint64_t(0);
+    for (const auto& [m, s] : {std::pair{metadata + 1, state}, std::pair{kMax, state + metadata + 1},
+                               std::pair{metadata, kMax}, std::pair{kMax, kMax}}) {
         std::string damaged = bytes;
         std::memcpy(damaged.data() + 16, &m, 8);
         std::memcpy(damaged.data() + 24, &s, 8);
