@@ -1,11 +1,13 @@
 #include "renderer/film/film.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "renderer/core/memory_budget.h"
 
@@ -168,7 +170,7 @@ std::string Film::state() const {
     return bytes;
 }
 
-void Film::restore_state(std::string_view bytes) {
+void Film::restore_state(std::string_view bytes, std::uint32_t max_samples) {
     const std::size_t needed = state_size();
     if (bytes.size() != needed)
         throw std::invalid_argument("film state: " + std::to_string(bytes.size()) + " bytes where these film settings need " +
@@ -178,6 +180,29 @@ void Film::restore_state(std::string_view bytes) {
         std::memcpy(&field, bytes.data() + at, sizeof field);
         at += sizeof field;
     });
+    // Values no render leaves: a checksum only says that the bytes are the ones written.
+    const auto refuse = [&](std::size_t i, const std::string& problem) {
+        const std::size_t width = std::size_t(settings_.crop.width());
+        throw std::invalid_argument("film state: pixel (" + std::to_string(settings_.crop.x0 + int(i % width)) + ", " +
+                                    std::to_string(settings_.crop.y0 + int(i / width)) + ") " + problem);
+    };
+    const auto finite = [](const auto& sums) {
+        bool all = true;
+        std::decay_t<decltype(sums)>::each(sums, [&](double v) { all = all && std::isfinite(v); });
+        return all;
+    };
+    for (std::size_t i = 0; i < beauty_.size(); ++i) {
+        const Accumulator& pixel = beauty_[i];
+        if (pixel.samples > max_samples)
+            refuse(i, "has a sample count of " + std::to_string(pixel.samples) + ", above the render's target of " +
+                          std::to_string(max_samples));
+        if (!finite(pixel.total) || !finite(pixel.block)) refuse(i, "holds a sum that is not a finite number");
+    }
+    for (std::size_t i = 0; i < aovs_.size(); ++i) {
+        const AovAccumulator& aov = aovs_[i];
+        if (!finite(aov.total) || !finite(aov.block) || !std::isfinite(aov.nearest_offset))
+            refuse(i, "holds an AOV sum that is not a finite number");
+    }
 }
 
 void Film::copy_pixels(const Film& from, Film& to, const PixelBounds& area) {

@@ -87,10 +87,11 @@ public:
     PixelStatistics pixel_statistics(int x, int y) const;
 
     // The accumulators exactly (doubles, counts, ids), for checkpoints: restore_state(state()) on a film with the
-    // same settings gives a film that continues bit-identically. restore_state throws std::invalid_argument if
-    // the bytes do not have the size these settings need.
+    // same settings gives a film that continues bit-identically. restore_state throws std::invalid_argument naming
+    // the pixel if the bytes do not have the size these settings need, a pixel holds more than `max_samples`
+    // samples (the render's target) or a sum is not finite.
     std::string state() const;
-    void restore_state(std::string_view bytes);
+    void restore_state(std::string_view bytes, std::uint32_t max_samples = UINT32_MAX);
 
     // The accumulators of `area` (inside bounds()) as a film of its own whose crop is `area`.
     Film region(const PixelBounds& area) const;

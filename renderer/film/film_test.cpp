@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <stdexcept>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -265,6 +265,41 @@ TEST(Film, StateOfOtherSettingsIsRefused) {
     EXPECT_THROW(with_aovs.restore_state(small.state()), std::invalid_argument);
     EXPECT_THROW(small.restore_state(small.state() + "x"), std::invalid_argument);
     EXPECT_NO_THROW(small.restore_state(Film(settings(2, 2)).state()));
+}
+
+// A checkpoint's checksum says only that its bytes are the ones written: restore_state checks the values behind it.
+// A count beyond the render's target never finished the render; a NaN sum gave NaN pixels.
+TEST(Film, StateWithValuesNoRenderLeavesIsRefused) {
+    const FilmSettings s = settings(2, 1, {Aov::Depth});
+    Film film(s);
+    film.add_sample(0, 0, hit(Rgb(1, 1, 1), 1, 2, 3, 4));
+    film.add_sample(1, 0, miss(Rgb(1, 1, 1)));
+    const std::string state = film.state();
+    // A pixel's beauty state: two sets (completed blocks, open block) of 9 sums, then the count.
+    constexpr std::size_t kSums = 2 * 9 * sizeof(double), kPixel = kSums + sizeof(std::uint32_t);
+    const auto refusal = [&](std::string bytes, std::uint32_t max_samples) -> std::string {
+        try {
+            Film(s).restore_state(bytes, max_samples);
+        } catch (const std::invalid_argument& error) {
+            return error.what();
+        }
+        return "restored";
+    };
+    const auto with = [&](std::size_t at, auto value) {
+        std::string bytes = state;
+        std::memcpy(bytes.data() + at, &value, sizeof value);
+        return bytes;
+    };
+    EXPECT_EQ(refusal(state, 1), "restored");
+    EXPECT_EQ(refusal(state, 0), "film state: pixel (0, 0) has a sample count of 1, above the render's target of 0");
+    EXPECT_EQ(refusal(with(kPixel + kSums, std::uint32_t(0xFFFFFFFF)), 16),
+              "film state: pixel (1, 0) has a sample count of 4294967295, above the render's target of 16");
+    EXPECT_EQ(refusal(with(kPixel, std::numeric_limits<double>::quiet_NaN()), 16),
+              "film state: pixel (1, 0) holds a sum that is not a finite number");
+    EXPECT_EQ(refusal(with(kPixel + 9 * sizeof(double), std::numeric_limits<double>::infinity()), 16),
+              "film state: pixel (1, 0) holds a sum that is not a finite number");
+    EXPECT_EQ(refusal(with(2 * kPixel + 3 * sizeof(double), -std::numeric_limits<double>::infinity()), 16),
+              "film state: pixel (0, 0) holds an AOV sum that is not a finite number");
 }
 
 // Sample s of pixel (x, y): values of very different magnitudes, so that any change in the order of the

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <atomic>
 #include <stdexcept>
 
 #include "renderer/core/library_directory.h"
@@ -36,6 +37,8 @@ const auto& load_module(const std::filesystem::path& module_path, const char* en
     return *loaded;
 }
 
+std::atomic<bool> codec_loaded{false};
+
 const ImageEncoder& exr_encoder() {
     static const ImageEncoder& encoder = load_exr_encoder(library_directory() / ISOTRACE_EXR_MODULE);
     return encoder;
@@ -54,8 +57,11 @@ const ImageEncoder& load_exr_encoder(const std::filesystem::path& module_path) {
 
 const ImageCodec& image_codec() {
     static const ImageCodec& codec = load_image_codec(library_directory() / ISOTRACE_IMAGE_MODULE);
+    codec_loaded.store(true);
     return codec;
 }
+
+bool image_codec_loaded() { return codec_loaded.load(); }
 
 const ImageEncoder& image_encoder_for(const std::filesystem::path& path) {
     return lower_extension(path) == ".exr" ? exr_encoder() : static_cast<const ImageEncoder&>(image_codec());

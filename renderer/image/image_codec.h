@@ -7,6 +7,7 @@
 // libraries), which writes the bytes the image module would. Nothing here names a library's type, and the modules
 // are built from the same sources, so plain C++ types cross the boundary. Most code wants the functions built on
 // it: write_image_file() (image_writer.h), read_image_file() (image_reader.h).
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -45,6 +46,7 @@ struct ImageEncoding {
 
 // What a file says about its first image, before any pixel is read.
 struct ImageHeader {
+    std::string format;  // OpenImageIO's name of the file's format ("openexr", "png", ...)
     int width = 0, height = 0;
     int x = 0, y = 0;  // data window origin
     int full_x = 0, full_y = 0, full_width = 0, full_height = 0;  // full (display) window
@@ -76,10 +78,11 @@ public:
 
 class ImageCodec : public ImageEncoder {
 public:
-    // Reads the first 2-D image of `path` into `image`; returns "" or what is wrong with the file (it cannot
-    // be opened or read, is not 2-D, has no channels). Exceptions from `before_pixels` pass through.
-    virtual std::string decode(const std::filesystem::path& path, const BeforePixels& before_pixels,
-                               DecodedImage& image) const = 0;
+    // Reads the first 2-D image of `path` with the reader of `format` (OpenImageIO's format name; no other reader
+    // is tried) into `image`; returns "" or what is wrong with the file (it cannot be opened or read, is not 2-D,
+    // has no channels). Exceptions from `before_pixels` pass through.
+    virtual std::string decode(const std::filesystem::path& path, const std::string& format,
+                               const BeforePixels& before_pixels, DecodedImage& image) const = 0;
 };
 
 // The module exports this C function: it returns its codec, or nullptr if `isotrace_version` is not the version
@@ -95,6 +98,11 @@ inline constexpr const char* kImageEncoderEntry = "isotrace_image_encoder";
 // The module's codec, loaded once, on first use, from the directory of the loaded libisotrace (thread-safe).
 // Throws std::runtime_error naming the module's path if it is missing or cannot be loaded.
 const ImageCodec& image_codec();
+// Whether image_codec() has loaded the module in this process.
+bool image_codec_loaded();
+// Resident memory that loading the image module adds to a process: OpenImageIO's libraries (measured,
+// docs/reliability.md), charged by the first image read under a memory budget.
+inline constexpr std::uint64_t kImageModuleResidentBytes = std::uint64_t(128) << 20;
 // The encoder for files like `path`: the EXR writer module for .exr, image_codec() for any other (each loaded
 // once, on first use, like image_codec()).
 const ImageEncoder& image_encoder_for(const std::filesystem::path& path);

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <filesystem>
 #include <functional>
-
 #include <string>
 #include <vector>
 
@@ -107,6 +107,44 @@ TEST(ImageReader, AFifoIsRefusedWithoutBlocking) {
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("is a FIFO"), std::string::npos) << error.what();
     }
+}
+
+// Given a file its extension's reader refuses, OpenImageIO tries every reader it has, and some scan the whole file:
+// 64 MB of zero bytes named .exr took 20 s to be refused. A file goes only to its extension's reader, and only when
+// it starts with that format's signature.
+TEST(ImageReader, FilesThatDoNotStartLikeTheirExtensionsFormatAreRefusedBeforeAnyReaderSeesThem) {
+    const testing::TemporaryDirectory directory("image_reader");
+    const auto message = [](const std::filesystem::path& path) -> std::string {
+        try {
+            read_image_file(path);
+        } catch (const InputError& error) {
+            EXPECT_EQ(error.location().file, path.string());
+            return error.problem();
+        }
+        return "read";
+    };
+    for (const char* name : {"zeros.exr", "zeros.png", "zeros.tif", "zeros.jpg", "zeros.hdr"}) {
+        const auto path = directory.write(name, "");
+        std::filesystem::resize_file(path, std::uintmax_t(64) << 20);  // sparse: no disk space
+        const std::string problem = message(path);
+        EXPECT_NE(problem.find("cannot read image: its extension names the "), std::string::npos) << problem;
+        EXPECT_NE(problem.find("format, but the file does not start with that format's signature"), std::string::npos)
+            << problem;
+    }
+    const auto png = directory / "image.png";
+    write_grey8_image(png, 1, 1, {7}, {});
+    EXPECT_EQ(message(png), "read");
+    const auto misnamed = directory / "image.jpg";
+    std::filesystem::copy_file(png, misnamed);
+    EXPECT_EQ(message(misnamed),
+              "cannot read image: its extension names the JPEG format, but the file does not start with that format's "
+              "signature");
+    std::filesystem::copy_file(png, directory / "image.xyz");
+    EXPECT_EQ(message(directory / "image.xyz").rfind(
+                  "cannot read image: \".xyz\" is not the extension of an image format read here (.exr, .png, .jpg", 0),
+              0u);
+    std::filesystem::copy_file(png, directory / "image");
+    EXPECT_EQ(message(directory / "image").rfind("cannot read image: the file name has no extension (.exr, ", 0), 0u);
 }
 
 TEST(ImageReader, AMissingImageModuleIsAnErrorNamingIt) {

@@ -137,6 +137,12 @@ void EnvironmentLight::preprocess(const Bounds3f& scene_bounds) {
 
 namespace {
 
+// The sampling distribution built from a map (measured; docs/reliability.md): per texel the luminance and the
+// weights (floats, freed after the build), and the row's Distribution1D (weight, CDF double, guide index); per row
+// its Distribution1D object, their allocations and the marginal's entries.
+constexpr TextureSetUpMemory kSamplingSetUpMemory{
+    2 * sizeof(float) + sizeof(float) + sizeof(double) + sizeof(std::size_t), 256};
+
 std::unique_ptr<Light> create(const SceneNode& node) {
     if (!node.has("file")) {
         if (node.has("space"))
@@ -158,7 +164,7 @@ std::unique_ptr<Light> create(const SceneNode& node) {
     if (!node.context().colours) node.fail("no colour system available to read \"" + file.string() + "\"");
     std::shared_ptr<const ImageTexture> map;
     try {
-        map = ImageTexture::load(file, space, *node.context().colours, *node.context().memory);
+        map = ImageTexture::load(file, space, *node.context().colours, *node.context().memory, kSamplingSetUpMemory);
     } catch (const InputError& error) {
         node.fail_at("file", error.what());
     }

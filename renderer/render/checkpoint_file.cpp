@@ -63,10 +63,17 @@ CheckpointContents decode_checkpoint(std::string_view bytes, const std::string& 
     const auto metadata_length = read_at<std::uint64_t>(bytes, 16);
     const auto state_length = read_at<std::uint64_t>(bytes, 24);
     const std::uint64_t payload = bytes.size() - kHeaderBytes - kChecksumBytes;
-    if (metadata_length > payload || state_length != payload - metadata_length)
-        reject(source, "the file is " + std::string(metadata_length + state_length > payload ? "truncated" : "too long") +
-                           " (" + std::to_string(bytes.size()) + " bytes; the header announces " +
-                           std::to_string(kHeaderBytes + metadata_length + state_length + kChecksumBytes) + ")");
+    if (metadata_length > payload || state_length != payload - metadata_length) {
+        // Lengths near 2^64 must not wrap around into a plausible size.
+        const bool truncated = metadata_length > payload || state_length > payload - metadata_length;
+        std::uint64_t announced = 0;
+        const bool announced_fits =
+            !__builtin_add_overflow(metadata_length, state_length, &announced) &&
+            !__builtin_add_overflow(announced, kHeaderBytes + kChecksumBytes, &announced);
+        reject(source, "the file is " + std::string(truncated ? "truncated" : "too long") + " (" +
+                           std::to_string(bytes.size()) + " bytes; the header announces " +
+                           (announced_fits ? std::to_string(announced) : "more than 2^64") + ")");
+    }
     const std::string_view body = bytes.substr(kHeaderBytes, payload);
     if (fnv1a_64(body) != read_at<std::uint64_t>(bytes, kHeaderBytes + payload))
         reject(source, "the checksum does not match (the file is corrupted)");

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <utility>
 
 #include "renderer/core/input_error.h"
 #include "tests/support/scene_files.h"
@@ -50,6 +52,22 @@ TEST(CheckpointFile, EveryTruncationAndExtensionIsRejected) {
     for (std::size_t length = 8; length < bytes.size(); ++length)
         EXPECT_NE(error_of(std::string_view(bytes).substr(0, length)).find("truncated"), std::string::npos) << length;
     EXPECT_NE(error_of(bytes + "x").find("too long"), std::string::npos);
+}
+
+// The lengths are checked against the file's size before anything is allocated from them; lengths whose sum wraps
+// around 2^64 to the file's size are truncation, not a match.
+TEST(CheckpointFile, LengthsBeyondTheFileAreTruncationWhateverTheirSum) {
+    const std::string bytes = encode_checkpoint(sample_contents());
+    const std::uint64_t metadata = sample_contents().metadata_json.size(), state = sample_contents().film_state.size();
+    constexpr std::uint64_t kMax = ~std::uint64_t(0);
+    for (const auto& [m, s] : {std::pair{metadata + 1, state}, std::pair{kMax, state + metadata + 1},
+                               std::pair{metadata, kMax}, std::pair{kMax, kMax}}) {
+        std::string damaged = bytes;
+        std::memcpy(damaged.data() + 16, &m, 8);
+        std::memcpy(damaged.data() + 24, &s, 8);
+        const std::string message = error_of(damaged);
+        EXPECT_NE(message.find("truncated"), std::string::npos) << message;
+    }
 }
 
 TEST(CheckpointFile, EveryFlippedPayloadByteIsCaught) {

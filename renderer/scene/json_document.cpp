@@ -3,6 +3,7 @@
 #include "renderer/core/input_file.h"
 #include "renderer/core/memory_budget.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -45,11 +46,29 @@ namespace {
 constexpr int kMaxDepth = 256;  // nested arrays/objects; deeper is surely an error and would exhaust the stack
 constexpr std::size_t kIndexedObjectSize = 16;  // objects with more keys get a key_index
 
+// Resident bytes per value at the parse's peak, beyond its strings: the value itself in its parent's vector, the
+// vector's spare capacity and, while a vector grows, the old block beside the new one (measured; docs/reliability.md).
+constexpr std::uint64_t kBytesPerValue = 2 * sizeof(JsonValue) + 64;
+// An object's member adds its key's std::string beside the value (with spare capacity), and its node in the key
+// index (a copy of the key, its hash, the bucket).
+constexpr std::uint64_t kBytesPerMember = 2 * sizeof(std::string) + 96;
+// The memory budget is charged this much ahead, not once per value.
+constexpr std::uint64_t kChargeStep = std::uint64_t(1) << 20;
+
+// Heap bytes of a std::string of `length` characters: none within the small-string buffer, else the allocation
+// with malloc's header, rounded to its 16-byte granule.
+std::uint64_t heap_bytes(std::size_t length) {
+    constexpr std::size_t kInlineCapacity = 15;
+    return length <= kInlineCapacity ? 0 : (std::uint64_t(length) + 1 + 8 + 15) / 16 * 16;
+}
+
 class JsonParser {
 public:
-    JsonParser(const std::string& text, const std::string& file) : text_(text), file_(file) {}
+    JsonParser(const std::string& text, const std::string& file, MemoryBudget* memory)
+        : text_(text), file_(file), memory_(memory) {}
 
     JsonValue parse_document() {
+        if (memory_) memory_->charge(text_.size(), "the text of the file", {file_, 0, 0});
         // RFC 8259 section 8.1 lets parsers ignore a UTF-8 byte order mark (some Windows editors write one).
         if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = line_start_ = 3;
         skip_whitespace();
@@ -89,8 +108,20 @@ private:
         return std::string(" but found '") + peek() + "'";
     }
 
+    // Counts `bytes` more of the tree (about to be allocated) and charges the budget ahead when they pass what it
+    // was charged with.
+    void account(std::uint64_t bytes) {
+        used_ += bytes;
+        if (!memory_ || used_ <= charged_) return;
+        const std::uint64_t step = std::max(kChargeStep, used_ - charged_);
+        memory_->charge(step, "the parsed document (" + std::to_string(values_) + " values so far)", here());
+        charged_ += step;
+    }
+
     // `depth` = number of arrays/objects enclosing the value.
     JsonValue parse_value(int depth) {
+        ++values_;
+        account(kBytesPerValue + file_heap_bytes_);
         JsonValue value;
         value.location = here();
         const char c = peek();
@@ -103,6 +134,7 @@ private:
         } else if (c == '"') {
             value.kind = JsonValue::Kind::String;
             value.string = parse_string();
+            account(heap_bytes(value.string.size()));
         } else if (c == '-' || (c >= '0' && c <= '9')) {
             value.kind = JsonValue::Kind::Number;
             value.number = parse_number();
@@ -141,6 +173,7 @@ private:
             if (peek() != '"') fail("expected a quoted key" + describe_next());
             const SourceLocation key_location = here();
             std::string key = parse_string();
+            account(kBytesPerMember + 2 * heap_bytes(key.size()));  // the key in the member and in the index
             if (!index->emplace(key, value.members.size()).second) throw InputError(key_location, key, "duplicate key");
             skip_whitespace();
             expect(':', "':' after the key");
@@ -299,6 +332,9 @@ private:
 
     const std::string& text_;
     const std::string& file_;
+    MemoryBudget* memory_;
+    const std::uint64_t file_heap_bytes_ = heap_bytes(file_.size());  // every value's location holds the name
+    std::uint64_t values_ = 0, used_ = 0, charged_ = 0;
     std::size_t pos_ = 0;
     std::size_t line_start_ = 0;
     int line_ = 1;
@@ -306,13 +342,13 @@ private:
 
 }  // namespace
 
-JsonValue parse_json(const std::string& text, const std::string& file_name) {
-    return JsonParser(text, file_name).parse_document();
+JsonValue parse_json(const std::string& text, const std::string& file_name, MemoryBudget* memory) {
+    return JsonParser(text, file_name, memory).parse_document();
 }
 
-JsonValue parse_json_file(const std::string& path, std::uint64_t max_bytes) {
+JsonValue parse_json_file(const std::string& path, std::uint64_t max_bytes, MemoryBudget* memory) {
     return parse_json(read_input_file(path, max_bytes, "for scene files (isotrace render --max-scene-size raises it)"),
-                      path);
+                      path, memory);
 }
 
 }  // namespace isotrace

@@ -52,9 +52,14 @@ public:
 // Scene files larger than this are refused unless the caller allows more (isotrace render --max-scene-size).
 constexpr std::uint64_t kDefaultMaxJsonFileBytes = std::uint64_t(64) << 20;
 
-// Parses strict JSON (RFC 8259). Duplicate keys and malformed text throw InputError with the position.
-JsonValue parse_json(const std::string& text, const std::string& file_name);
+class MemoryBudget;
+
+// Parses strict JSON (RFC 8259). Duplicate keys and malformed text throw InputError with the position. With a
+// `memory` budget, the text and the tree are charged to it while the tree grows (a few bytes of text make a value
+// of about a hundred and fifty), so a document too large for it stops the parse where it is refused.
+JsonValue parse_json(const std::string& text, const std::string& file_name, MemoryBudget* memory = nullptr);
 // Reads at most `max_bytes` (a path such as /dev/zero never ends) and parses the text.
-JsonValue parse_json_file(const std::string& path, std::uint64_t max_bytes = kDefaultMaxJsonFileBytes);
+JsonValue parse_json_file(const std::string& path, std::uint64_t max_bytes = kDefaultMaxJsonFileBytes,
+                          MemoryBudget* memory = nullptr);
 
 }  // namespace isotrace

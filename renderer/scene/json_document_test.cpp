@@ -6,6 +6,7 @@
 #include <iterator>
 #include <string>
 
+#include "renderer/core/memory_budget.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {
@@ -320,6 +321,33 @@ TEST(ParseJsonFile, DirectoryIsNotAFile) {
         EXPECT_EQ(std::string(error.what()),
                   dir.path().string() + ": is a directory, not a regular file (isotrace reads only regular files)");
     }
+}
+
+// Two bytes of text ("0,") make a value of about a hundred and fifty: with a budget, the text and the tree are
+// charged as the tree grows, and the parse stops where it outgrows the budget (a 54 MB scene of inline arrays
+// reached 2.8 GB under --max-memory 1G).
+TEST(ParseJson, StopsWhereTheTreeOutgrowsTheMemoryBudget) {
+    constexpr std::size_t kValues = 100000;
+    std::string text = "{\"a\": [0";
+    for (std::size_t i = 1; i < kValues; ++i) text += ",0";
+    text += "]}";
+    MemoryBudget small(std::uint64_t(4) << 20);  // the text fits; the tree does not
+    try {
+        parse_json(text, "big.json", &small);
+        ADD_FAILURE() << "parsed within 4 MB";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.location().file, "big.json");
+        EXPECT_EQ(error.location().line, 1);
+        EXPECT_GT(error.location().column, 8);
+        EXPECT_LT(std::size_t(error.location().column), text.size());
+        EXPECT_NE(error.problem().find("the parsed document ("), std::string::npos) << error.what();
+        EXPECT_NE(error.problem().find("more than the memory limit of 4.19 MB"), std::string::npos) << error.what();
+    }
+    MemoryBudget roomy(std::uint64_t(1) << 30);
+    const JsonValue document = parse_json(text, "big.json", &roomy);
+    ASSERT_EQ(document.members.at(0).second.items.size(), kValues);
+    EXPECT_GE(roomy.charged_bytes(), text.size() + kValues * sizeof(JsonValue));
+    EXPECT_EQ(parse_json(text, "big.json").members.at(0).second.items.size(), kValues);  // no budget: no limit
 }
 
 }  // namespace

@@ -187,9 +187,9 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     const auto start = std::chrono::steady_clock::now();
     auto loaded = std::make_unique<LoadedScene>();
     loaded->path = path;
-    const JsonValue document = parse_json_file(path, overrides.max_scene_file_bytes);
     auto context = std::make_shared<SceneFileContext>();
     if (overrides.max_memory_bytes) context->memory = std::make_shared<MemoryBudget>(*overrides.max_memory_bytes);
+    const JsonValue document = parse_json_file(path, overrides.max_scene_file_bytes, context->memory.get());
     context->file = path;
     context->directory = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
     SceneNode root(document, "", context);

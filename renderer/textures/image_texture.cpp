@@ -1,6 +1,8 @@
 #include "renderer/textures/image_texture.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
@@ -8,35 +10,56 @@
 #include "renderer/image/image_reader.h"
 
 namespace isotrace {
+namespace {
+
+constexpr std::size_t kColourConversionPixels = std::size_t(1) << 16;
+
+}  // namespace
 
 ImageTexture::ImageTexture(int width, int height, std::vector<float> rgb, std::string colour_space)
     : width_(width), height_(height), rgb_(std::move(rgb)), colour_space_(std::move(colour_space)) {}
 
 std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::path& path,
                                                        const std::string& colour_space, const ColourSystem& colours,
-                                                       MemoryBudget& memory) {
+                                                       MemoryBudget& memory, const TextureSetUpMemory& set_up) {
     const auto fail = [&](const std::string& problem) -> InputError { return InputError({path.string(), 0, 0}, "", problem); };
-    // A few bytes of header can claim any size: the float pixels read plus the RGB copy kept.
+    // A few bytes of header can claim any size: what decoding needs, the RGB copy kept (none when the decoded
+    // pixels are RGB: they are kept) and the user's set-up.
     const auto charge = [&](const ImageHeader& header) {
-        memory.charge(saturating_product({std::uint64_t(header.width), std::uint64_t(header.height),
-                                          std::uint64_t(header.channel_names.size()) + 3, sizeof(float)}),
+        const std::uint64_t copy = header.channel_names.size() == 3 ? 0 : 3 * sizeof(float);
+        const std::uint64_t texels = saturating_product(
+            {std::uint64_t(header.width), std::uint64_t(header.height),
+             decoding_bytes_per_pixel(header) + copy + set_up.per_texel});
+        const std::uint64_t rows = saturating_product({std::uint64_t(header.height), set_up.per_row});
+        memory.charge(texels > UINT64_MAX - rows ? UINT64_MAX : texels + rows,
                       "the " + std::to_string(header.width) + "x" + std::to_string(header.height) + " image",
                       {path.string(), 0, 0});
     };
-    const DecodedImage image = read_image_file(path, charge);
+    if (!image_codec_loaded())  // before it is loaded
+        memory.charge(kImageModuleResidentBytes, "the image module that reads it (OpenImageIO's libraries)",
+                      {path.string(), 0, 0});
+    DecodedImage image = read_image_file(path, charge);
     const ImageHeader& header = image.header;
 
     // Grey images are spread to RGB; alpha and extra channels are ignored.
     const std::size_t count = std::size_t(header.width) * std::size_t(header.height);
     const std::size_t channels = header.channel_names.size();
-    std::vector<float> rgb(count * 3);
-    for (std::size_t i = 0; i < count; ++i)
-        for (std::size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * channels + (channels >= 3 ? c : 0)];
+    std::vector<float> rgb;
+    if (channels == 3) {
+        rgb = std::move(image.pixels);
+    } else {
+        rgb.resize(count * 3);
+        for (std::size_t i = 0; i < count; ++i)
+            for (std::size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * channels + (channels >= 3 ? c : 0)];
+        image.pixels = {};
+    }
 
     const bool is_float = is_floating_point(header.file_type);
     const std::string space = !colour_space.empty() ? colour_space : (is_float ? colours.working_space() : "srgb_texture");
     if (!colours.has_colour_space(space)) throw fail("unknown colour space \"" + space + "\"");
-    colours.to_working(rgb.data(), count, 3, space);
+    // In pieces: OpenColorIO converts through a buffer of four floats per pixel of the piece it is given.
+    for (std::size_t first = 0; first < count; first += kColourConversionPixels)
+        colours.to_working(rgb.data() + first * 3, std::min(kColourConversionPixels, count - first), 3, space);
     for (float v : rgb)
         if (!std::isfinite(v)) throw fail("image contains NaN or infinite values");
     return std::shared_ptr<const ImageTexture>(new ImageTexture(header.width, header.height, std::move(rgb), space));

@@ -1519,6 +1519,192 @@ case_bench_filter_bounded() {  # 40,000 nested parentheses overflowed the regex 
   expect_in "$work/stderr" "nests groups deeper" stderr
 }
 
+# ---- image, scene and checkpoint limits -------------------------------------------------------------------
+# --max-memory bounds the real peak: every input-sized allocation (images with their decoders' buffers and
+# set-up copies, the parsed scene document) is charged before it happens; checkpoint values are range-checked.
+
+# run_with_peak <isotrace arguments...>: runs isotrace like cli_expect (stdout and stderr in $work), sets $status
+# and $peak_mb, its peak resident memory in MiB.
+run_with_peak() {
+  echo "+ $cli $*" >&2
+  read -r status peak_mb < <(python3 -c '
+import resource, subprocess, sys
+with open(sys.argv[1], "w") as out, open(sys.argv[2], "w") as err:
+    code = subprocess.run(sys.argv[3:], stdout=out, stderr=err).returncode
+print(code, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss // 1024)' "$work/stdout" "$work/stderr" "$cli" "$@")
+  echo "  exit $status, peak $peak_mb MiB" >&2
+}
+
+# expect_bounded <limit MiB> <isotrace arguments...>: under --max-memory <limit>M, isotrace either refuses the
+# input (exit 2) before allocating it or runs (exit 0) within the limit.
+expect_bounded() {
+  local limit=$1
+  shift
+  run_with_peak "$@" --max-memory "${limit}M"
+  if ((status != 0 && status != 2)); then
+    show_output
+    fail "exit $status under --max-memory ${limit}M"
+  fi
+  ((peak_mb < limit)) || { show_output; fail "peak resident memory $peak_mb MiB over --max-memory ${limit}M"; }
+}
+
+# write_png <path> <width> <height> <channels> [header]: a mid-grey 8-bit PNG, deflated ~1000:1; with "header",
+# only its first row is stored (enough for a reader to see the size).
+write_png() {
+  python3 - "$@" <<'PY' || fail "cannot write $1"
+import struct, sys, zlib
+out, w, h, c = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+rows = 1 if len(sys.argv) > 5 else h
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+z, row = zlib.compressobj(9), b"\0" + b"\x80" * (w * c)
+with open(out, "wb") as f:
+    f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, {1: 0, 3: 2, 4: 6}[c], 0, 0, 0)))
+    data = bytearray()
+    for _ in range(rows):
+        data += z.compress(row)
+    f.write(chunk(b"IDAT", bytes(data + z.flush())) + chunk(b"IEND", b""))
+PY
+}
+
+# write_image_scene <path> <material reflectance> <light>: a sphere under one light, 16x16 at 1 spp.
+write_image_scene() {
+  cat >"$1" <<JSON
+{
+  "isotrace": 1,
+  "film": { "resolution": [16, 16], "spp": 1 },
+  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -5], "target": [0, 0, 0], "up": [0, 1, 0] } },
+  "materials": { "m": { "type": "diffuse", "reflectance": $2 } },
+  "lights": [ $3 ],
+  "objects": [ { "material": "m", "shape": { "type": "sphere", "radius": 1 } } ]
+}
+JSON
+}
+
+point_light='{ "type": "point", "position": [0, 3, -3], "intensity": { "rgb": [10, 10, 10], "space": "lin_rec709" } }'
+
+# A 186 kB PNG of 8000x8000 peaked at 4.6 GB under --max-memory 2G, and 20000x20000 (estimated at 9.6 GB)
+# brought the machine to the OOM killer: decoding is charged with the decoder's buffers, and the copies are gone.
+case_texture_memory_limit() {  # refused from the header, before any pixel is decoded
+  write_png "$work/huge.png" 20000 20000 3 header
+  write_image_scene "$work/huge.json" '{ "texture": "huge.png" }' "$point_light"
+  run_with_peak render "$work/huge.json" --max-memory 4G --quiet -o "$work/a.exr"
+  ((status == 2)) || { show_output; fail "a 20000x20000 texture was not refused under 4G (exit $status)"; }
+  expect_in "$work/stderr" "$work/huge.png" stderr
+  expect_in "$work/stderr" "the 20000x20000 image needs about" stderr
+  ((peak_mb < 300)) || fail "the refused texture was decoded (peak $peak_mb MiB)"
+  expect_no_file "$work/a.exr"
+  # Reading any image loads OpenImageIO's libraries (over 100 MB resident), charged before they are loaded.
+  write_png "$work/tiny.png" 1 1 3
+  write_image_scene "$work/tiny.json" '{ "texture": "tiny.png" }' "$point_light"
+  expect_bounded 64 render "$work/tiny.json" --quiet -o "$work/a.exr"
+  expect_in "$work/stderr" "the image module that reads it (OpenImageIO's libraries) needs about" stderr
+  expect_bounded 256 render "$work/tiny.json" --quiet -o "$work/a.exr"
+  ((status == 0)) || { show_output; fail "a 1x1 texture was refused under 256M"; }
+}
+
+case_texture_memory_peak() {  # admitted textures stay within the limit (long: 64 M pixels decoded twice)
+  write_png "$work/big.png" 8000 8000 3
+  write_image_scene "$work/big.json" '{ "texture": "big.png" }' "$point_light"
+  expect_bounded 2048 render "$work/big.json" --quiet -o "$work/a.exr"
+  ((status == 0)) || { show_output; fail "the 8000x8000 texture was refused under 2G"; }
+  write_png "$work/grey.png" 8000 8000 1
+  write_image_scene "$work/grey.json" '{ "texture": "grey.png" }' "$point_light"
+  expect_bounded 1400 render "$work/grey.json" --quiet -o "$work/a.exr"
+  ((status == 0)) || { show_output; fail "the 8000x8000 grey texture was refused under 1400M"; }
+}
+
+# An EXR environment map estimated at 432 MB peaked at 1.4 GB under --max-memory 500M: the light's sampling
+# distribution is charged with the map (long: 18 M pixels).
+case_environment_map_memory_limit() {
+  oiiotool --pattern constant:color=0.5,0.5,0.5 6000x3000 3 -d half -o "$work/env.exr" >/dev/null ||
+    fail "oiiotool cannot write env.exr"
+  write_image_scene "$work/env.json" '{ "rgb": [0.5, 0.5, 0.5], "space": "lin_rec709" }' \
+    '{ "type": "environment", "file": "env.exr" }'
+  expect_bounded 500 render "$work/env.json" --quiet -o "$work/a.exr"
+  ((status == 2)) || fail "the environment map was not refused under 500M"
+  expect_in "$work/stderr" "the 6000x3000 image needs about" stderr
+  expect_bounded 1200 render "$work/env.json" --quiet -o "$work/a.exr"
+  ((status == 0)) || { show_output; fail "the environment map was refused under 1200M"; }
+}
+
+# A 54 MB scene of inline arrays reached 2.8 GB under --max-memory 1G: the parsed document is charged as it grows,
+# and the parse stops at the file, line and column where the budget ran out.
+case_inline_scene_memory_limit() {
+  write_base_scene "$work/scene.json"
+  python3 - "$work/scene.json" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+pad = '  "pad": [' + ",\n".join(["[0.5, 0.25, 0.125]"] * 3000000) + "],\n"
+open(sys.argv[1], "w").write(text.replace('  "isotrace": 1,\n', '  "isotrace": 1,\n' + pad, 1))
+PY
+  expect_bounded 1024 render "$work/scene.json" --quiet -o "$work/a.exr"
+  ((status == 2)) || fail "the inline scene was not refused"
+  expect_in "$work/stderr" "the parsed document (" stderr
+  grep -qE "$work/scene.json:[0-9]+:[0-9]+: " "$work/stderr" || { show_output; fail "the refusal does not name line and column"; }
+}
+
+# A checkpoint's checksum says only that its bytes are the ones written (these tests recompute it): every value
+# behind it is checked, and a bad one refused naming the checkpoint and the field.
+case_checkpoint_values_checked() {
+  cp "$cornell" "$work/scene.json"
+  cli_expect 0 render "$work/scene.json" --res 16x16 --spp 100000 --time 0.2 --quiet -o "$work/a.exr" \
+    --checkpoint "$work/ck.bin"
+  [[ -s "$work/ck.bin" ]] || fail "no checkpoint after a time budget ended the render"
+  # edit_checkpoint <out> <python statement on `meta` (dict) and `state` (bytearray)>
+  edit_checkpoint() {
+    python3 - "$work/ck.bin" "$1" "$2" <<'PY' || fail "cannot edit the checkpoint"
+import json, struct, sys
+data = open(sys.argv[1], "rb").read()
+m, s = struct.unpack_from("<QQ", data, 16)
+meta, state = json.loads(data[32:32 + m]), bytearray(data[32 + m:32 + m + s])
+exec(sys.argv[3])
+body = json.dumps(meta).encode() + bytes(state)
+h = 0xcbf29ce484222325
+for b in body:
+    h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+open(sys.argv[2], "wb").write(data[:16] + struct.pack("<QQ", len(body) - len(state), len(state)) + body +
+                              struct.pack("<Q", h))
+PY
+  }
+  edit_checkpoint "$work/same.bin" "pass"
+  cli_expect 0 render "$work/scene.json" --resume "$work/same.bin" --time 0.1 --quiet -o "$work/a.exr"
+  value_refused() {  # value_refused <python edit> <expected text>
+    edit_checkpoint "$work/edited.bin" "$1"
+    cli_expect 2 render "$work/scene.json" --resume "$work/edited.bin" --quiet -o "$work/b.exr"
+    expect_in "$work/stderr" "$work/edited.bin" stderr
+    expect_in "$work/stderr" "$2" stderr
+    expect_no_file "$work/b.exr"
+  }
+  value_refused 'meta["options"]["seed"] = "-1"' "options.seed: expected a whole number"
+  value_refused 'meta["options"]["seed"] = "18446744073709551616"' "options.seed: expected a whole number"
+  value_refused 'meta["options"]["spp"] = 0' "options.spp: 0 is out of range"
+  value_refused 'meta["options"]["spp"] = 1 << 40' "options.spp: 1099511627776 is out of range"
+  value_refused 'meta["options"]["spp"] = 2.5' "options.spp: expected a whole number"
+  value_refused 'meta["options"]["resolution"] = [0, 16]' "options.resolution"
+  value_refused 'meta["options"]["resolution"] = [100000, 16]' "options.resolution"
+  value_refused 'meta["options"]["target_error"] = -1' "options.target_error"
+  value_refused 'struct.pack_into("<d", state, 0, float("nan"))' "pixel (0, 0) holds a sum that is not a finite number"
+  value_refused 'struct.pack_into("<I", state, 148 * 17 + 144, 0xFFFFFFFF)' \
+    "pixel (1, 1) has a sample count of 4294967295, above the render's target of 100000"
+}
+
+# 64 MB of zero bytes named z.exr took 20 s in OpenImageIO, which tries every reader it has on a file its
+# extension's reader refuses (a few hundred MB spun for minutes): such a file is refused at once.
+case_diff_zero_file() {
+  render_small -o "$work/a.exr"
+  truncate -s 256M "$work/z.exr"
+  local start=$SECONDS
+  cli_expect 2 diff "$work/z.exr" "$work/a.exr"
+  expect_in "$work/stderr" "$work/z.exr" stderr
+  expect_in "$work/stderr" \
+    "its extension names the OpenEXR format, but the file does not start with that format's signature" stderr
+  ((SECONDS - start <= 5 * time_scale)) || fail "refusing z.exr took $((SECONDS - start)) s"
+  truncate -s 64M "$work/z.png"
+  cli_expect 2 diff "$work/a.exr" "$work/z.png"
+  expect_in "$work/stderr" "its extension names the PNG format" stderr
+}
+
 # ---- dispatch --------------------------------------------------------------------------------------------
 
 if [[ $(type -t "case_$case_name") != function ]]; then

@@ -1,8 +1,11 @@
 #include "tools/cli/render_checkpoint.h"
 
+#include <cmath>
+
 #include "renderer/core/input_error.h"
 #include "renderer/core/version.h"
 #include "renderer/render/checkpoint_file.h"
+#include "tools/cli/command_helpers.h"
 #include "tools/cli/scene_fingerprint.h"
 
 namespace isotrace::cli {
@@ -50,20 +53,40 @@ ResumePoint read_resume_point(const std::filesystem::path& path) {
         if (version != kIsotraceVersion)
             reject(source, "the checkpoint was written by isotrace " + version + "; this is isotrace " +
                                kIsotraceVersion + " (renders can only be resumed by the same version)");
+        // Each value within the range the command line accepts: the checksum only says that these are the bytes
+        // written, and a changed file can carry a matching one.
         const nlohmann::json& options = resume.metadata.at("options");
+        const auto whole_number = [&](const nlohmann::json& value, const std::string& field) {
+            if (!value.is_number_integer())
+                throw InputError({source}, field, "expected a whole number, got " + value.dump());
+            return value.dump();
+        };
+        const std::string spp = whole_number(options.at("spp"), "options.spp");
+        if (options.at("spp").get<std::int64_t>() < 1 || options.at("spp").get<std::int64_t>() > kMaxSamplesPerPixel)
+            throw InputError({source}, "options.spp",
+                             spp + " is out of range (1 to " + std::to_string(kMaxSamplesPerPixel) + ")");
         resume.options.spp = options.at("spp").get<int>();
-        resume.options.resolution = {options.at("resolution").at(0).get<int>(), options.at("resolution").at(1).get<int>()};
-        resume.options.seed = std::stoull(options.at("seed").get<std::string>());
+        const nlohmann::json& resolution = options.at("resolution");
+        if (!resolution.is_array() || resolution.size() != 2)
+            throw InputError({source}, "options.resolution", "expected [width, height], got " + resolution.dump());
+        resume.options.resolution = parse_resolution(whole_number(resolution.at(0), "options.resolution") + "x" +
+                                                         whole_number(resolution.at(1), "options.resolution"),
+                                                     "options.resolution");
+        resume.options.seed = parse_seed(options.at("seed").get<std::string>(), "options.seed");
         resume.options.extra_aovs = options.at("aovs").get<std::vector<std::string>>();
         // Absent from checkpoints written before reference mode existed: those were not reference renders.
         resume.options.reference = options.value("reference", false);
-        if (options.contains("target_error") && !options.at("target_error").is_null())
+        if (options.contains("target_error") && !options.at("target_error").is_null()) {
             resume.options.target_error = options.at("target_error").get<double>();
+            if (!(std::isfinite(*resume.options.target_error) && *resume.options.target_error > 0))
+                throw InputError({source}, "options.target_error", "expected a finite number > 0");
+        }
         resume.metadata.at("scene").at("files").at(0).at("fnv1a64").get<std::string>();
     } catch (const nlohmann::json::exception& error) {
         reject(source, std::string("the checkpoint's metadata is incomplete: ") + error.what());
-    } catch (const std::logic_error& error) {  // std::stoull
-        reject(source, std::string("the checkpoint's metadata is invalid: ") + error.what());
+    } catch (const InputError& error) {  // the command line's parsers name the field, not the file
+        if (!error.location().file.empty()) throw;
+        throw InputError({source}, error.field(), error.problem());
     }
     resume.film_state = std::move(contents.film_state);
     return resume;

@@ -272,7 +272,7 @@ int run_render(const RenderArguments& args) {
         check_same_scene(*resume, *scene, args.resume);
         film = std::make_unique<Film>(scene->film);
         try {
-            film->restore_state(resume->film_state);
+            film->restore_state(resume->film_state, std::uint32_t(resume->options.spp));
         } catch (const std::invalid_argument& error) {
             throw InputError({args.resume}, "", std::string("the checkpoint does not fit this film: ") + error.what());
         }

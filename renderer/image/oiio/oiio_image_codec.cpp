@@ -167,14 +167,19 @@ public:
         return encode_with(*out, path, spec_of(image), oiio_type(image.memory_type), image.pixels);
     }
 
-    std::string decode(const std::filesystem::path& path, const BeforePixels& before_pixels,
+    std::string decode(const std::filesystem::path& path, const std::string& format, const BeforePixels& before_pixels,
                        DecodedImage& image) const override {
-        auto input = OIIO::ImageInput::open(path.string());
+        // Created for the format and then opened: ImageInput::open would try every other reader on a file its
+        // extension's reader refuses.
+        auto input = OIIO::ImageInput::create(format);
         if (!input) return "cannot read image: " + OIIO::geterror();
+        OIIO::ImageSpec opened;
+        if (!input->open(path.string(), opened)) return "cannot read image: " + input->geterror();
         const OIIO::ImageSpec& spec = input->spec();
         if (spec.width < 1 || spec.height < 1 || spec.depth != 1) return "not a 2-D image";
         if (spec.nchannels < 1) return "image has no channels";
         ImageHeader& header = image.header;
+        header.format = input->format_name();
         header.width = spec.width;
         header.height = spec.height;
         header.x = spec.x;
