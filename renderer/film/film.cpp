@@ -22,6 +22,7 @@ bool needs_hit_data(const std::vector<Aov>& aovs) {
 // into += from, field by field (the sums of a block added to those of the blocks before it).
 template <class Sums>
 void add_sums(Sums& into, const Sums& from) {
+    static_assert(sizeof(Sums) == Sums::kFieldCount * sizeof(double), "kFieldCount counts every sum");
     double* target[Sums::kFieldCount];
     int n = 0;
     Sums::each(into, [&](double& field) { target[n++] = &field; });

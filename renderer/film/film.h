@@ -112,7 +112,7 @@ private:
         double rgb[3] = {0, 0, 0};
         double rgb_squared[3] = {0, 0, 0};
         double coverage = 0;  // weighted fraction of samples that hit a surface
-        static constexpr int kFieldCount = 11;
+        static constexpr int kFieldCount = 9;
         // Calls visit(field) for every sum; Self is BeautySums or const BeautySums.
         template <class Self, class Visit>
         static void each(Self& sums, Visit&& visit) {
