@@ -24,7 +24,9 @@ void add_tubes(const SceneNode& list, const TriangleMeshData& mesh, bool edited,
 }
 
 std::unique_ptr<Shape> create(const SceneNode& node) {
-    const TriangleMeshData mesh = node.has("measure_on") ? load_mesh_file(node.file_path("measure_on").string()) : TriangleMeshData{};
+    const TriangleMeshData mesh = node.has("measure_on")
+                                      ? load_mesh_file(node.file_path("measure_on").string(), *node.context().memory)
+                                      : TriangleMeshData{};
     const bool edited = node.choice_or("state", "after", {"before", "after"}) == "after";
     SweepTessellation steps;
     steps.theta_steps = node.integer_or("theta_steps", 48, NumberRange::between(3, 4096));
