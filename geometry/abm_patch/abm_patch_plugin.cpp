@@ -132,6 +132,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         }
     }
     const std::string draw = node.choice_or("draw", "surface", {"surface", "curves"});
+    SourceLocation where = node.json().location;
+    where.file = node.context().file;
     TriangleMeshData mesh;
     if (draw == "curves") {
         std::vector<const SpaceCurve*> curves;
@@ -140,18 +142,18 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
             for (const PatchSide& side : patch.sides())
                 if (listed.insert(side.curve.get()).second) curves.push_back(side.curve.get());
         const double radius = node.number_or("tube_radius", 0.01, NumberRange::positive());
+        const std::uint64_t triangles = saturating_product({curves.size(), kBoundaryTube.triangle_count()});
+        node.context().memory->charge(saturating_product({triangles, kSweepTubeTrianglePeakBytes}),
+                                      "tubes of " + std::to_string(curves.size()) + " curves", where, node.path());
         mesh = at_node(node, [&] { return boundary_tubes(curves, radius); });
     } else {
         PatchTessellationOptions options;
         options.tolerance = node.number_or("tolerance", options.tolerance, NumberRange::positive());
         options.max_segments = node.integer_or("max_segments", options.max_segments, NumberRange::between(1, 4096));
         options.segments = node.integer_or("segments", 0, NumberRange::between(0, 4096));
-        // Vertices, normals, indices and Embree's copy and BVH: about 100 bytes a triangle.
         std::uint64_t charged = 0;
-        SourceLocation where = node.json().location;
-        where.file = node.context().file;
         options.before_building = [&](std::uint64_t triangles) {
-            const std::uint64_t bytes = saturating_product({triangles, 100});
+            const std::uint64_t bytes = saturating_product({triangles, kPatchTrianglePeakBytes});
             if (bytes > charged)
                 node.context().memory->charge(bytes - charged, "a tessellation of " + std::to_string(triangles) + " triangles",
                                               where, node.path());

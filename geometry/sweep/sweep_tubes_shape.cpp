@@ -6,20 +6,31 @@
 #include "geometry/sweep/sweep_family_deformer.h"
 #include "geometry/sweep/sweep_spec.h"
 #include "geometry/sweep/sweep_tessellation.h"
+#include "renderer/core/memory_budget.h"
 #include "renderer/scene/json_document.h"
 
 namespace isotrace {
 namespace {
 
-void add_tubes(const SceneNode& list, const TriangleMeshData& mesh, bool edited, const SweepTessellation& steps,
-               TriangleMeshData& tubes) {
+// Each tube is charged to the scene's budget (`shape`'s) before it is tessellated.
+void add_tubes(const SceneNode& shape, const SceneNode& list, const TriangleMeshData& mesh, bool edited,
+               const SweepTessellation& steps, TriangleMeshData& tubes) {
     if (!list.json().is_array()) list.fail("expected a list of deformers or the name of a deformer file");
+    SourceLocation where = shape.json().location;
+    where.file = shape.context().file;
+    const std::uint64_t triangles = steps.triangle_count();
     for (const SceneNode& element : list.elements()) {
         const std::unique_ptr<MeshDeformer> deformer = mesh_deformer_registry().create(element);
         const auto* sweeps = dynamic_cast<const SweepFamilyDeformer*>(deformer.get());
         if (!sweeps) element.fail("not a sweep deformer");
-        for (const SweepSurface& sweep : sweeps->sweeps(mesh, edited))
+        for (const SweepSurface& sweep : sweeps->sweeps(mesh, edited)) {
+            shape.context().memory->charge(saturating_product({triangles, kSweepTubeTrianglePeakBytes}),
+                                           "a tube of " + std::to_string(triangles) + " triangles (theta_steps " +
+                                               std::to_string(steps.theta_steps) + ", t_steps " +
+                                               std::to_string(steps.t_steps) + ")",
+                                           where, shape.path());
             tubes.append_positions_and_triangles(at_node(element, [&] { return tessellate(sweep, steps); }));
+        }
     }
 }
 
@@ -43,9 +54,9 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         const SceneNode root(document, "", context);
         const std::optional<SceneNode> in_file = root.optional_value("deformers");
         if (!in_file) root.fail("missing \"deformers\"");
-        add_tubes(*in_file, mesh, edited, steps, tubes);
+        add_tubes(node, *in_file, mesh, edited, steps, tubes);
     } else {
-        add_tubes(*list, mesh, edited, steps, tubes);
+        add_tubes(node, *list, mesh, edited, steps, tubes);
     }
     for (const Vec3f& p : tubes.positions)
         if (!is_finite(p)) node.fail("a sweep reaches beyond float range");
