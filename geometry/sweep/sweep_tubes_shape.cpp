@@ -1,21 +1,20 @@
 // The "sweep_tubes" shape: the sweeps of sweep deformers as triangle meshes, for showing them (translucent) over
 // the mesh they deform. It reads the same deformer list (inline or a file) as a mesh's "deformers".
 #include "geometry/mesh/mesh_file.h"
-#include "geometry/mesh/vertex_normals.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
+#include "geometry/mesh/vertex_normals.h"
 #include "geometry/sweep/sweep_family_deformer.h"
-#include "geometry/sweep/sweep_spec.h"
 #include "geometry/sweep/sweep_tessellation.h"
 #include "renderer/core/memory_budget.h"
-#include "renderer/scene/json_document.h"
 
 namespace isotrace {
 namespace {
 
-// Each tube is charged to the scene's budget (`shape`'s) before it is tessellated.
+// The list's work is bounded as for a mesh's deformers (more than the tubes need: they bind no vertex), and each
+// tube is charged to the scene's budget (`shape`'s) before it is tessellated.
 void add_tubes(const SceneNode& shape, const SceneNode& list, const TriangleMeshData& mesh, bool edited,
                const SweepTessellation& steps, TriangleMeshData& tubes) {
-    if (!list.json().is_array()) list.fail("expected a list of deformers or the name of a deformer file");
+    check_mesh_deformers(list, mesh);
     SourceLocation where = shape.json().location;
     where.file = shape.context().file;
     const std::uint64_t triangles = steps.triangle_count();
@@ -46,15 +45,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     const std::optional<SceneNode> list = node.optional_value("deformers");
     if (!list) node.fail("needs \"deformers\" (a list or the name of a deformer file)");
     if (list->json().is_string()) {
-        const std::string path = node.file_path("deformers").string();
-        const JsonValue document = parse_json_file(path);
-        auto context = std::make_shared<SceneFileContext>();
-        context->file = path;
-        context->directory = std::filesystem::path(path).parent_path();
-        const SceneNode root(document, "", context);
-        const std::optional<SceneNode> in_file = root.optional_value("deformers");
-        if (!in_file) root.fail("missing \"deformers\"");
-        add_tubes(node, *in_file, mesh, edited, steps, tubes);
+        const DeformerFile file(node.file_path("deformers").string(), node.context().memory);
+        add_tubes(node, file.list(), mesh, edited, steps, tubes);
     } else {
         add_tubes(node, *list, mesh, edited, steps, tubes);
     }

@@ -32,10 +32,10 @@ int run_deform(const DeformArguments& args) {
         throw InputError({}, "--output", "\"" + args.output + "\" must end in .ply or .obj");
     check_output_directory(args.output, "--output");
     const ThreadLimit limit(args.threads);
-    MemoryBudget memory;
-    TriangleMeshData mesh = load_mesh_file(args.mesh, memory);
+    const auto memory = std::make_shared<MemoryBudget>();
+    TriangleMeshData mesh = load_mesh_file(args.mesh, *memory);
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh);
+    const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh, memory);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (extension == ".ply") {
         write_ply(args.output, mesh);
