@@ -3,6 +3,7 @@
 // curves as thin tubes.
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include "geometry/abm_patch/abm_patch.h"
 #include "geometry/abm_patch/boundary_tubes.h"
@@ -19,7 +20,11 @@ std::vector<Vec3d> control_points(const SceneNode& node) {
     const std::optional<SceneNode> list = node.optional_value("points");
     if (!list || !list->json().is_array()) node.fail("a curve needs \"points\": [[x, y, z], ...]");
     std::vector<Vec3d> points;
-    for (const SceneNode& p : list->elements()) points.push_back(p.as_vec3());
+    for (const SceneNode& p : list->elements()) {
+        points.push_back(p.as_vec3());
+        // Farther out, the patch's weighted sums overflow, and Embree silently drops such bounds.
+        if (max_component(abs(points.back())) > 1e18) p.fail("control point beyond 1e18 from the origin");
+    }
     return points;
 }
 
@@ -127,25 +132,28 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         }
     }
     const std::string draw = node.choice_or("draw", "surface", {"surface", "curves"});
+    SourceLocation where = node.json().location;
+    where.file = node.context().file;
     TriangleMeshData mesh;
     if (draw == "curves") {
         std::vector<const SpaceCurve*> curves;
+        std::set<const SpaceCurve*> listed;
         for (const AbmPatch& patch : patches)
             for (const PatchSide& side : patch.sides())
-                if (std::find(curves.begin(), curves.end(), side.curve.get()) == curves.end()) curves.push_back(side.curve.get());
+                if (listed.insert(side.curve.get()).second) curves.push_back(side.curve.get());
         const double radius = node.number_or("tube_radius", 0.01, NumberRange::positive());
+        const std::uint64_t triangles = saturating_product({curves.size(), kBoundaryTube.triangle_count()});
+        node.context().memory->charge(saturating_product({triangles, kSweepTubeTrianglePeakBytes}),
+                                      "tubes of " + std::to_string(curves.size()) + " curves", where, node.path());
         mesh = at_node(node, [&] { return boundary_tubes(curves, radius); });
     } else {
         PatchTessellationOptions options;
         options.tolerance = node.number_or("tolerance", options.tolerance, NumberRange::positive());
         options.max_segments = node.integer_or("max_segments", options.max_segments, NumberRange::between(1, 4096));
         options.segments = node.integer_or("segments", 0, NumberRange::between(0, 4096));
-        // Vertices, normals, indices and Embree's copy and BVH: about 100 bytes a triangle.
         std::uint64_t charged = 0;
-        SourceLocation where = node.json().location;
-        where.file = node.context().file;
         options.before_building = [&](std::uint64_t triangles) {
-            const std::uint64_t bytes = saturating_product({triangles, 100});
+            const std::uint64_t bytes = saturating_product({triangles, kPatchTrianglePeakBytes});
             if (bytes > charged)
                 node.context().memory->charge(bytes - charged, "a tessellation of " + std::to_string(triangles) + " triangles",
                                               where, node.path());

@@ -58,5 +58,17 @@ TEST(AbmPatchScene, ErrorsNameTheirPlace) {
     }
 }
 
+// Patches of 1e100 took minutes in the normals of their overflowing vertices; far-out points are refused at
+// their place, like the 1e18 limit of the other shapes.
+TEST(AbmPatchScene, ControlPointsBeyond1e18AreRefusedWhereTheyStand) {
+    mesh_test::ScratchDirectory dir;
+    const std::string path = dir.write("far.json", scene_with(
+        R"({"type": "abm_patch", "boundary": [{"points": [[0,0,0],[1e100,0,0]]}, {"points": [[1e100,0,0],[0,1e100,0]]}, {"points": [[0,1e100,0],[0,0,0]]}]})"));
+    const std::string message = mesh_test::input_error_message([&] { load_scene(path); });
+    EXPECT_NE(message.find("objects[0].shape.boundary[0].points[1]: control point beyond 1e18 from the origin"),
+              std::string::npos)
+        << message;
+}
+
 }  // namespace
 }  // namespace isotrace

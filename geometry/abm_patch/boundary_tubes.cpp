@@ -4,7 +4,6 @@
 
 #include "geometry/mesh/vertex_normals.h"
 #include "geometry/sweep/sweep_surface.h"
-#include "geometry/sweep/sweep_tessellation.h"
 
 namespace isotrace {
 namespace {
@@ -35,7 +34,7 @@ TriangleMeshData boundary_tubes(const std::vector<const SpaceCurve*>& curves, do
     if (!(radius > 0)) throw std::invalid_argument("tube_radius: must be > 0");
     TriangleMeshData tubes;
     for (const SpaceCurve* curve : curves) {
-        tubes.append_positions_and_triangles(tessellate(tube_along(*curve, radius), {.theta_steps = 16, .t_steps = 96}));
+        tubes.append_positions_and_triangles(tessellate(tube_along(*curve, radius), kBoundaryTube));
     }
     tubes.remove_degenerate_triangles();
     compute_vertex_normals(tubes);

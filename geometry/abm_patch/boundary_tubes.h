@@ -6,8 +6,12 @@
 
 #include "geometry/curves/space_curve.h"
 #include "geometry/mesh/triangle_mesh_data.h"
+#include "geometry/sweep/sweep_tessellation.h"
 
 namespace isotrace {
+
+// Each tube's tessellation.
+inline constexpr SweepTessellation kBoundaryTube{.theta_steps = 16, .t_steps = 96};
 
 // Throws std::invalid_argument for a radius that is not > 0.
 TriangleMeshData boundary_tubes(const std::vector<const SpaceCurve*>& curves, double radius);

@@ -231,24 +231,26 @@ Vec3d vertex_normal(const AbmPatch& patch, const GridVertex& v) {
 
 void append(const AbmPatch& patch, const PatchGrid& grid, TriangleMeshData& mesh) {
     const auto base = std::uint32_t(mesh.positions.size());
-    std::vector<std::uint32_t> without_normal;
-    for (const GridVertex& v : grid.vertices) {
+    std::vector<bool> without_normal(grid.vertices.size());
+    for (std::size_t i = 0; i < grid.vertices.size(); ++i) {
+        const GridVertex& v = grid.vertices[i];
         const Vec3d n = vertex_normal(patch, v);
-        if (!(length(n) > 0)) without_normal.push_back(std::uint32_t(mesh.positions.size()));
+        without_normal[i] = !(length(n) > 0);
         mesh.positions.push_back(Vec3f(v.position));
         mesh.normals.push_back(Vec3f(n));
     }
     for (const GridTriangle& t : grid.triangles) mesh.triangles.push_back({t.v[0] + base, t.v[1] + base, t.v[2] + base});
-    // Where the patch folds (no tangent plane), the area-weighted normal of the triangles around the vertex.
-    for (const std::uint32_t index : without_normal) {
-        Vec3f sum{};
-        for (const GridTriangle& t : grid.triangles)
-            if (t.v[0] + base == index || t.v[1] + base == index || t.v[2] + base == index) {
-                const Vec3f& a = mesh.positions[t.v[0] + base];
-                sum = sum + cross(mesh.positions[t.v[1] + base] - a, mesh.positions[t.v[2] + base] - a);
-            }
-        mesh.normals[index] = length(sum) > 0 ? normalize(sum) : Vec3f{0, 0, 1};
+    // Where the patch folds (no tangent plane), the area-weighted normal of the triangles around the vertex,
+    // summed in one pass over the triangles (a patch can fold at every vertex).
+    std::vector<Vec3f> sums(grid.vertices.size());
+    for (const GridTriangle& t : grid.triangles) {
+        if (!without_normal[t.v[0]] && !without_normal[t.v[1]] && !without_normal[t.v[2]]) continue;
+        const Vec3f& a = mesh.positions[t.v[0] + base];
+        const Vec3f area_normal = cross(mesh.positions[t.v[1] + base] - a, mesh.positions[t.v[2] + base] - a);
+        for (const std::uint32_t corner : t.v) sums[corner] += area_normal;
     }
+    for (std::size_t i = 0; i < grid.vertices.size(); ++i)
+        if (without_normal[i]) mesh.normals[base + i] = length(sums[i]) > 0 ? normalize(sums[i]) : Vec3f{0, 0, 1};
 }
 
 // Per sector: a fan and two triangles per column in every band but the first.

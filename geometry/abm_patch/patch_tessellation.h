@@ -21,6 +21,10 @@
 
 namespace isotrace {
 
+// Peak memory per triangle from the grids to the traced shape (grid vertices and triangles, the mesh with its
+// normals, Embree's copy and BVH): measured as peak resident memory over triangle counts (docs/reliability.md).
+inline constexpr std::uint64_t kPatchTrianglePeakBytes = 180;
+
 struct PatchTessellationOptions {
     double tolerance = 1e-3;  // world units
     int max_segments = 256;   // cap per curve and per patch radially

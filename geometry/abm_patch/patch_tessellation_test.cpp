@@ -118,6 +118,17 @@ TEST(PatchTessellation, FinerToleranceGivesMoreTrianglesAndNormalsFaceTheFront) 
     }
 }
 
+// A patch whose curves lie on one line folds at every vertex: each takes the normal of its triangles, found in
+// one pass over them. A search of all triangles per vertex took 10¹² steps here: CTest's time limit catches it.
+TEST(PatchTessellation, APatchFoldedEverywhereTakesItsNormalsInOnePass) {
+    using abm_test::side;
+    const Vec3d a{0, 0, 0}, b{1, 0, 0}, c{2, 0, 0};
+    const AbmPatch flat(right_triangle_domain(), {side(bezier({a, b})), side(bezier({b, c})), side(bezier({c, a}))});
+    const TriangleMeshData mesh = tessellate_patches({flat}, {.segments = 512});
+    ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+    for (const Vec3f& n : mesh.normals) ASSERT_EQ(n, Vec3f(0, 0, 1));  // no triangle has an area
+}
+
 TEST(PatchTessellation, RejectsBadOptions) {
     const std::vector<AbmPatch> patches = curved_tetrahedron(false);
     EXPECT_THROW(tessellate_patches(patches, {.tolerance = 0}), std::invalid_argument);

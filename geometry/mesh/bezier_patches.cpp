@@ -74,20 +74,31 @@ private:
 
 }  // namespace
 
-std::vector<BezierPatch> load_bezier_patches(const std::string& path) {
+std::vector<BezierPatch> load_bezier_patches(const std::string& path, MemoryBudget& memory) {
     PatchReader reader(path);
     const int count = reader.integer(reader.numbers(1)[0], 1, 100000, "the patch count");
+    memory.charge(std::uint64_t(count) * sizeof(BezierPatch), std::to_string(count) + " Bézier patches", {path});
     std::vector<BezierPatch> patches(static_cast<std::size_t>(count));
     for (BezierPatch& patch : patches) {
         const std::vector<double> degrees = reader.numbers(2);
         patch.degree_u = reader.integer(degrees[0], 1, 16, "a patch degree");
         patch.degree_v = reader.integer(degrees[1], 1, 16, "a patch degree");
-        for (int k = 0; k < (patch.degree_u + 1) * (patch.degree_v + 1); ++k) {
+        const int points = (patch.degree_u + 1) * (patch.degree_v + 1);
+        memory.charge(std::uint64_t(points) * sizeof(Vec3d), "the control points of Bézier patches", {path});
+        for (int k = 0; k < points; ++k) {
             const std::vector<double> p = reader.numbers(3);
             patch.control_points.push_back({p[0], p[1], p[2]});
         }
     }
     return patches;
+}
+
+void charge_bezier_tessellation(std::size_t patch_count, int steps, const std::string& path, MemoryBudget& memory) {
+    const std::uint64_t quads = saturating_product({patch_count, std::uint64_t(steps), std::uint64_t(steps)});
+    memory.charge(saturating_product({quads, kBezierQuadPeakBytes}),
+                  "a tessellation of " + std::to_string(patch_count) + " Bézier patches into " + std::to_string(2 * quads) +
+                      " triangles",
+                  {path});
 }
 
 TriangleMeshData tessellate_bezier_patches(const std::vector<BezierPatch>& patches, int steps) {

@@ -43,9 +43,10 @@ TEST(BezierPatches, NeighbouringPatchesAreWeldedAlongTheirCommonEdge) {
 }
 
 TEST(BezierPatches, TessellatesNewellsTeapot) {
-    const std::vector<BezierPatch> patches = load_bezier_patches(ISOTRACE_SCENES_DIR "/data/teapot.bpt");
+    MemoryBudget memory;
+    const std::vector<BezierPatch> patches = load_bezier_patches(ISOTRACE_SCENES_DIR "/data/teapot.bpt", memory);
     ASSERT_EQ(patches.size(), 28u);
-    const TriangleMeshData teapot = load_mesh_file(ISOTRACE_SCENES_DIR "/data/teapot.bpt");
+    const TriangleMeshData teapot = load_mesh_file(ISOTRACE_SCENES_DIR "/data/teapot.bpt", memory);
     const MeshBounds b = teapot.bounds();
     // Extents that patch corners reach (corners are interpolated): the handle's x = −3, the knob z = 3.15, the
     // base z = 0.15, the body's widest y = 2. The spout's tip lies inside its control points' hull.
@@ -62,17 +63,32 @@ TEST(BezierPatches, TessellatesNewellsTeapot) {
 }
 
 TEST(BezierPatches, MalformedFilesNameTheLine) {
+    MemoryBudget memory;
     ScratchDirectory scratch;
     const std::string short_file = scratch.write("short.bpt", "1\n3 3\n0 0 0\n");
-    EXPECT_EQ(input_error_message([&] { load_bezier_patches(short_file); }), short_file + ":4: unexpected end of file");
+    EXPECT_EQ(input_error_message([&] { load_bezier_patches(short_file, memory); }), short_file + ":4: unexpected end of file");
     const std::string bad_number = scratch.write("nan.bpt", "1\n1 1\n0 0 0\n1 0 nan\n");
-    EXPECT_EQ(input_error_message([&] { load_bezier_patches(bad_number); }), bad_number + ":4: 'nan' is not a finite number");
+    EXPECT_EQ(input_error_message([&] { load_bezier_patches(bad_number, memory); }), bad_number + ":4: 'nan' is not a finite number");
     const std::string bad_degree = scratch.write("degree.bpt", "1\n0 3\n");
-    EXPECT_EQ(input_error_message([&] { load_bezier_patches(bad_degree); }),
+    EXPECT_EQ(input_error_message([&] { load_bezier_patches(bad_degree, memory); }),
               bad_degree + ":2: a patch degree must be an integer in [1, 16]");
     const std::string bad_count = scratch.write("count.bpt", "2.5\n");
-    EXPECT_EQ(input_error_message([&] { load_bezier_patches(bad_count); }),
+    EXPECT_EQ(input_error_message([&] { load_bezier_patches(bad_count, memory); }),
               bad_count + ":1: the patch count must be an integer in [1, 100000]");
+}
+
+// 100,000 patches ran minutes to 8.7 GB under a 1 GB limit: the patches and their tessellation are charged first.
+TEST(BezierPatches, ATessellationBeyondTheBudgetIsRefusedWithTheFigureBeforeItIsMade) {
+    ScratchDirectory scratch;
+    std::string text = "2000\n";
+    for (int p = 0; p < 2000; ++p) text += "1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n";
+    const std::string path = scratch.write("many.bpt", text);
+    MemoryBudget memory(std::uint64_t(64) << 20);
+    EXPECT_EQ(input_error_message([&] { load_mesh_file(path, memory); }),
+              path + ": a tessellation of 2000 Bézier patches into 1024000 triangles needs about 236 MB (on top of 256 kB "
+                     "already needed), more than the memory limit of 67.1 MB (--max-memory; the default is 80 % of "
+                     "physical memory)");
+    EXPECT_LT(memory.charged_bytes(), std::uint64_t(1) << 20);  // the patches themselves
 }
 
 }  // namespace

@@ -11,14 +11,16 @@
 
 namespace isotrace {
 
-TriangleMeshData load_mesh_file(const std::string& path) {
+TriangleMeshData load_mesh_file(const std::string& path, MemoryBudget& memory) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".obj") return load_obj(path);
     if (extension == ".ply") return load_ply(path);
     if (extension == ".bpt") {
-        TriangleMeshData mesh = tessellate_bezier_patches(load_bezier_patches(path), kBezierPatchSteps);
+        const std::vector<BezierPatch> patches = load_bezier_patches(path, memory);
+        charge_bezier_tessellation(patches.size(), kBezierPatchSteps, path, memory);
+        TriangleMeshData mesh = tessellate_bezier_patches(patches, kBezierPatchSteps);
         mesh.validate(path);
         return mesh;
     }

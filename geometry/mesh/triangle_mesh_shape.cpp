@@ -189,7 +189,7 @@ TriangleMeshData parse_inline_mesh(const SceneNode& node) {
 TriangleMeshData load_referenced_file(const SceneNode& node) {
     const std::string path = node.file_path("file").string();
     try {
-        return load_mesh_file(path);
+        return load_mesh_file(path, *node.context().memory);
     } catch (const InputError& error) {
         node.fail_at("file", error.what());
     }

@@ -1,12 +1,17 @@
 // The "sweep" and "sweep_hierarchy" mesh deformers (docs/scene-format.md, "Sweep deformers").
 
+#include <algorithm>
+#include <array>
 #include <sstream>
 
+#include "geometry/curves/curve_interpolation.h"
 #include "geometry/sweep/sweep_deformer.h"
 #include "geometry/sweep/sweep_family_deformer.h"
 #include "geometry/sweep/sweep_hierarchy.h"
 #include "geometry/sweep/sweep_spec.h"
 #include "geometry/sweep/sweep_surface.h"
+#include "geometry/sweep/sweep_tessellation.h"
+#include "renderer/core/memory_budget.h"
 #include "renderer/core/parallel_for.h"
 
 namespace isotrace {
@@ -17,6 +22,31 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+
+// Refining a bound vertex's roots and placing it takes about as long as this many samples (measured).
+constexpr std::uint64_t kBindingStepsPerVertex = 150;
+// What binding holds per sample of t: the parameter, the centre and the normal there.
+constexpr std::uint64_t kBinderBytesPerSample = sizeof(double) + 2 * sizeof(Vec3d);
+// What a sweep deformer holds per vertex: the positions in double and its copy of them, the bindings, weights,
+// moved positions and uvs.
+constexpr std::uint64_t kSweepBytesPerVertex =
+    3 * sizeof(Vec3d) + sizeof(std::optional<VertexBinding>) + sizeof(double) + sizeof(std::array<float, 2>);
+// A hierarchy's: the positions in double, each vertex's sweep and binding.
+constexpr std::uint64_t kHierarchyBytesPerVertex = sizeof(Vec3d) + sizeof(int) + sizeof(VertexBinding);
+// Keeping a child's volume ratio rebuilds it once per secant step, at most this many times.
+constexpr std::uint64_t kVolumeRebuilds = 42;
+
+// Key sections and radii beyond what a sweep takes are refused when it is built; the estimate stops there.
+std::uint64_t capped(std::size_t count) { return std::min<std::uint64_t>(count, kMaxInterpolatedPoints); }
+
+std::uint64_t construction_steps(const SweepSpec& sweep, std::uint64_t keys) {
+    return SweepSurface::construction_steps(keys, capped(sweep.radius_count()));
+}
+
+// Radii measured on the mesh trace a copy of it (RadiusProbe): as much memory per triangle as a traced tube.
+std::uint64_t probe_bytes(const SweepSpec& sweep, const TriangleMeshData& mesh) {
+    return sweep.measures_radii() ? saturating_product({mesh.triangles.size(), kSweepTubeTrianglePeakBytes}) : 0;
+}
 
 std::vector<Vec3d> positions_of(const TriangleMeshData& mesh) {
     std::vector<Vec3d> points;
@@ -37,6 +67,18 @@ public:
             weight_ = at_node(*curve, [&] { return WeightCurve(values); });
         }
         for (const SceneNode& edit : node.object_array("edits")) edits_.push_back(parse_edit_spec(edit, false));
+    }
+
+    Cost cost(const TriangleMeshData& mesh) const override {
+        const std::uint64_t levels = std::uint64_t(levels_), vertices = mesh.positions.size();
+        const std::uint64_t keys = capped(((sweep_.keys.size() - 1) << (levels_ - 1)) + 1);  // the finest level's
+        const std::uint64_t samples = SweepBinder::sample_count(keys);
+        // Each level's sweep is built from the coarser ones: for the levels, the binding, each edit and the result.
+        const std::uint64_t constructions = levels * (levels + edits_.size() + 3);
+        return {saturating_sum({saturating_product({vertices, samples + kBindingStepsPerVertex}),
+                                saturating_product({constructions, construction_steps(sweep_, keys)})}),
+                saturating_sum({saturating_product({vertices, kSweepBytesPerVertex}), samples * kBinderBytesPerSample,
+                                probe_bytes(sweep_, mesh)})};
     }
 
     std::vector<SweepSurface> sweeps(const TriangleMeshData& mesh, bool edited) const override {
@@ -108,6 +150,38 @@ public:
             if (index_of(e.sweep) < 0) edit.fail_at("sweep", "no sweep is called \"" + e.sweep + "\"");
             edits_.push_back(std::move(e));
         }
+    }
+
+    Cost cost(const TriangleMeshData& mesh) const override {
+        const std::uint64_t vertices = mesh.positions.size();
+        std::uint64_t samples = 0, rebuild = 0, probe = 0;
+        for (const Member& m : members_) {
+            const std::uint64_t keys = capped(m.sweep.keys.size());
+            samples = saturating_sum({samples, SweepBinder::sample_count(keys)});
+            const std::uint64_t rebuilds = preserve_volume_ ? kVolumeRebuilds : 1;
+            rebuild = saturating_sum({rebuild, construction_steps(m.sweep, keys) * rebuilds});
+            probe = std::max(probe, probe_bytes(m.sweep, mesh));
+        }
+        // Every vertex is bound to every sweep; the tree is built, and after each edit every sweep may be rebuilt.
+        Cost cost{saturating_sum({saturating_product({vertices, samples + kBindingStepsPerVertex * members_.size()}),
+                                  saturating_product({rebuild, edits_.size() + 1})}),
+                  saturating_sum({saturating_product({vertices, kHierarchyBytesPerVertex}),
+                                  samples * kBinderBytesPerSample, probe})};
+        std::uint64_t solver_bytes = 0;
+        for (const EditSpec& e : edits_) {
+            const int pulled = index_of(e.sweep);
+            if (!e.pull || pulled < 0 || index_of(members_[std::size_t(pulled)].parent) < 0) continue;
+            // A pull's iteration: a finite difference per unknown (4 per key section of the parent, each a rebuilt
+            // parent), then up to 8 damped normal equations built and solved.
+            const SweepSpec& parent = members_[std::size_t(index_of(members_[std::size_t(pulled)].parent))].sweep;
+            const std::uint64_t keys = capped(parent.keys.size()), unknowns = 4 * keys;
+            const std::uint64_t solve = unknowns * unknowns * unknowns / 3 + 3 * unknowns * unknowns;
+            const std::uint64_t iteration = saturating_sum({unknowns * construction_steps(parent, keys), 8 * solve});
+            cost.steps = saturating_sum({cost.steps, saturating_product({std::uint64_t(max_iterations_), iteration})});
+            solver_bytes = std::max(solver_bytes, 2 * unknowns * unknowns * sizeof(double));  // normal matrix, its copy
+        }
+        cost.peak_bytes = saturating_sum({cost.peak_bytes, solver_bytes});
+        return cost;
     }
 
     std::vector<SweepSurface> sweeps(const TriangleMeshData& mesh, bool edited) const override {

@@ -43,7 +43,7 @@ TEST(SweepDeformerPlugins, UneditedSweepWithMeasuredRadiiLeavesTheMeshInPlace) {
                         {"center": [0, 0, 2.1], "radius": 0.6}]}]})");
     TriangleMeshData mesh = cylinder_mesh();
     const std::vector<Vec3f> before = mesh.positions;
-    const std::vector<std::string> summaries = apply_mesh_deformer_file(path, mesh);
+    const std::vector<std::string> summaries = apply_mesh_deformer_file(path, mesh, std::make_shared<MemoryBudget>());
     ASSERT_EQ(summaries.size(), 1u);
     EXPECT_NE(summaries[0].find("0 unbound"), std::string::npos) << summaries[0];
     for (std::size_t i = 0; i < before.size(); ++i) EXPECT_LT(length(Vec3d(mesh.positions[i]) - Vec3d(before[i])), 1e-6);
@@ -60,7 +60,7 @@ TEST(SweepDeformerPlugins, RigidEditOfEveryKeyMovesTheMeshRigidly) {
        "edits": [{"key": 0, "translate": [0.25, -0.5, 0]}]}]})");
     TriangleMeshData mesh = cylinder_mesh();
     const std::vector<Vec3f> before = mesh.positions;
-    apply_mesh_deformer_file(path, mesh);
+    apply_mesh_deformer_file(path, mesh, std::make_shared<MemoryBudget>());
     for (std::size_t i = 0; i < before.size(); ++i)
         EXPECT_LT(length(Vec3d(mesh.positions[i]) - Vec3d(before[i]) - Vec3d(0.25, -0.5, 0)), 1e-6);
 }
@@ -69,17 +69,74 @@ TEST(SweepDeformerPlugins, MistakesNameTheirPlace) {
     ScratchDirectory scratch;
     TriangleMeshData mesh = cylinder_mesh();
     const std::string typo = scratch.write("typo.json", R"({"deformers": [{"type": "sweep", "key_sectons": []}]})");
-    EXPECT_NE(input_error_message([&] { apply_mesh_deformer_file(typo, mesh); }).find("typo.json:1:16: deformers[0]"),
+    const auto memory = std::make_shared<MemoryBudget>();
+    EXPECT_NE(input_error_message([&] { apply_mesh_deformer_file(typo, mesh, memory); }).find("typo.json:1:16: deformers[0]"),
               std::string::npos);
     const std::string outside = scratch.write("outside.json", R"({"deformers": [{"type": "sweep",
       "key_sections": [{"center": [5, 5, 1]}, {"center": [5, 5, 2]}]}]})");
-    EXPECT_EQ(input_error_message([&] { apply_mesh_deformer_file(outside, mesh); }),
+    EXPECT_EQ(input_error_message([&] { apply_mesh_deformer_file(outside, mesh, memory); }),
               outside + ":2:24: deformers[0].key_sections[0]: radii: the ray at θ = 0° from the centre meets no surface");
     const std::string level = scratch.write("level.json", R"({"deformers": [{"type": "sweep", "levels": 2,
       "key_sections": [{"center": [0, 0, 0], "radius": 0.6}, {"center": [0, 0, 2], "radius": 0.6}],
       "edits": [{"level": 3, "key": 0}]}]})");
-    EXPECT_EQ(input_error_message([&] { apply_mesh_deformer_file(level, mesh); }),
+    EXPECT_EQ(input_error_message([&] { apply_mesh_deformer_file(level, mesh, memory); }),
               level + ":3:17: deformers[0].edits[0]: level: must be in [1, 2], got 3");
+}
+
+// 16 key sections refined over 6 levels: 481 at the finest, 30,721 samples of t for each of the cylinder's
+// vertices.
+std::string fine_sweep() {
+    std::string keys;
+    for (int k = 0; k < 16; ++k)
+        keys += std::string(k ? ", " : "") + "{\"center\": [0, 0, " + std::to_string(-0.1 + 0.14 * k) + "], \"radius\": 0.7}";
+    return R"({"type": "sweep", "mode": "global", "levels": 6, "key_sections": [)" + keys + "]}";
+}
+
+// A list of 50 deformers took 19 s, a file of them hours: the list's total work is refused before any of it.
+TEST(SweepDeformerPlugins, AListBeyondTheWorkLimitIsRefusedBeforeAnyWork) {
+    ScratchDirectory scratch;
+    std::string list;
+    for (int i = 0; i < 200; ++i) list += (i ? ", " : "") + fine_sweep();
+    const std::string path = scratch.write("many.json", R"({"deformers": [)" + list + "]}");
+    TriangleMeshData mesh = cylinder_mesh();
+    const std::vector<Vec3f> before = mesh.positions;
+    const std::string message =
+        input_error_message([&] { apply_mesh_deformer_file(path, mesh, std::make_shared<MemoryBudget>()); });
+    EXPECT_NE(message.find(path + ":1:15: deformers: 200 deformers on 4354 vertices need about 6.82e+10 steps, more "
+                                  "than the limit of 2e+10"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(mesh.positions, before);
+}
+
+// A pull on a parent of many key sections solves ever larger systems, up to max_iterations times.
+TEST(SweepDeformerPlugins, APullBeyondTheWorkLimitIsRefusedBeforeAnyWork) {
+    ScratchDirectory scratch;
+    std::string keys;
+    for (int k = 0; k < 200; ++k)
+        keys += std::string(k ? ", " : "") + "{\"center\": [0, 0, " + std::to_string(-0.1 + 0.011 * k) + "], \"radius\": 0.7}";
+    const std::string path = scratch.write("pull.json", R"({"deformers": [{"type": "sweep_hierarchy", "max_iterations": 10000,
+      "sweeps": [{"name": "body", "key_sections": [)" + keys + R"(]},
+                 {"name": "handle", "parent": "body", "attachment": "loop",
+                  "key_sections": [{"center": [0.3, 0, 0.5], "radius": 0.1}, {"center": [0.3, 0, 1.5], "radius": 0.1}]}],
+      "edits": [{"sweep": "handle", "key": 1, "pull": [0, 0, 0.1]}]}]})");
+    TriangleMeshData mesh = cylinder_mesh();
+    const std::string message =
+        input_error_message([&] { apply_mesh_deformer_file(path, mesh, std::make_shared<MemoryBudget>()); });
+    EXPECT_NE(message.find("deformers: 1 deformer on 4354 vertices need about"), std::string::npos) << message;
+}
+
+// What a deformer holds while it works is charged before it starts: here the traced copy of the mesh that its
+// radii are measured on, and its bindings.
+TEST(SweepDeformerPlugins, ItsMemoryIsChargedBeforeItWorks) {
+    ScratchDirectory scratch;
+    const std::string path = scratch.write("measured.json", R"({"deformers": [{"type": "sweep", "mode": "global",
+      "key_sections": [{"center": [0, 0, -0.1], "radius": 0.6}, {"center": [0, 0, 1]},
+                       {"center": [0, 0, 2.1], "radius": 0.6}]}]})");
+    TriangleMeshData mesh = cylinder_mesh();
+    const std::string message =
+        input_error_message([&] { apply_mesh_deformer_file(path, mesh, std::make_shared<MemoryBudget>(1 << 20)); });
+    EXPECT_NE(message.find("deformers: deforming 4354 vertices needs about 2.18 MB"), std::string::npos) << message;
 }
 
 }  // namespace

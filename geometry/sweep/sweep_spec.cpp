@@ -60,6 +60,10 @@ SweepSpec parse_sweep_spec(const SceneNode& node) {
     return spec;
 }
 
+bool SweepSpec::measures_radii() const {
+    return std::any_of(keys.begin(), keys.end(), [](const KeySectionSpec& k) { return k.radii.empty(); });
+}
+
 std::vector<KeySection> SweepSpec::key_sections(const TriangleMeshData* mesh) const {
     std::vector<KeySection> keys;
     for (const KeySectionSpec& k : this->keys) keys.push_back({k.centre, k.orientation, k.radii});

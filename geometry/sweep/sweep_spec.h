@@ -30,6 +30,13 @@ struct SweepSpec {
     double measured_radius_scale = 1;  // measured radii are multiplied by it (a sweep should enclose its part)
     bool measure_circle = false;       // measured sections become circles of the largest measured radius
 
+    // Radii per key section: those given, or the samples measured.
+    std::size_t radius_count() const {
+        return keys.front().radii.empty() ? std::size_t(radius_samples) : keys.front().radii.size();
+    }
+    // Whether radii are measured on the mesh (which is then traced: RadiusProbe).
+    bool measures_radii() const;
+
     // Absolute key sections, missing radii measured on `mesh` (null: an error names the key section).
     std::vector<KeySection> key_sections(const TriangleMeshData* mesh) const;
 };

@@ -3,6 +3,7 @@
 // C is the cubic B-spline through the key centres at chord-length parameters; R(t) the rotation of the unit
 // quaternion Q(t)/|Q(t)|, Q the quadratic B-spline through the key orientations (signs made consistent, so that
 // it never passes through the long way round); r(θ, t) see RadiusFunction.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,12 @@ public:
     // sweeps keep the parameters of the sweep as first placed, so that an edit of one key section does not shift
     // the sections of every bound vertex along the sweep.
     explicit SweepSurface(std::vector<KeySection> keys, std::vector<double> parameters = {});
+
+    // About the operations the constructor's interpolation takes for `keys` key sections of `radius_samples`
+    // radii: a banded solve over the keys per radius sample and a cyclic one over the radii per key.
+    static std::uint64_t construction_steps(std::size_t keys, std::size_t radius_samples) {
+        return std::uint64_t(keys) * radius_samples * (keys + radius_samples);
+    }
 
     const std::vector<KeySection>& keys() const { return keys_; }
     const std::vector<double>& key_parameters() const { return parameters_; }

@@ -1,30 +1,42 @@
 // The "sweep_tubes" shape: the sweeps of sweep deformers as triangle meshes, for showing them (translucent) over
 // the mesh they deform. It reads the same deformer list (inline or a file) as a mesh's "deformers".
 #include "geometry/mesh/mesh_file.h"
-#include "geometry/mesh/vertex_normals.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
+#include "geometry/mesh/vertex_normals.h"
 #include "geometry/sweep/sweep_family_deformer.h"
-#include "geometry/sweep/sweep_spec.h"
 #include "geometry/sweep/sweep_tessellation.h"
-#include "renderer/scene/json_document.h"
+#include "renderer/core/memory_budget.h"
 
 namespace isotrace {
 namespace {
 
-void add_tubes(const SceneNode& list, const TriangleMeshData& mesh, bool edited, const SweepTessellation& steps,
-               TriangleMeshData& tubes) {
-    if (!list.json().is_array()) list.fail("expected a list of deformers or the name of a deformer file");
+// The list's work is bounded as for a mesh's deformers (more than the tubes need: they bind no vertex), and each
+// tube is charged to the scene's budget (`shape`'s) before it is tessellated.
+void add_tubes(const SceneNode& shape, const SceneNode& list, const TriangleMeshData& mesh, bool edited,
+               const SweepTessellation& steps, TriangleMeshData& tubes) {
+    check_mesh_deformers(list, mesh);
+    SourceLocation where = shape.json().location;
+    where.file = shape.context().file;
+    const std::uint64_t triangles = steps.triangle_count();
     for (const SceneNode& element : list.elements()) {
         const std::unique_ptr<MeshDeformer> deformer = mesh_deformer_registry().create(element);
         const auto* sweeps = dynamic_cast<const SweepFamilyDeformer*>(deformer.get());
         if (!sweeps) element.fail("not a sweep deformer");
-        for (const SweepSurface& sweep : sweeps->sweeps(mesh, edited))
+        for (const SweepSurface& sweep : sweeps->sweeps(mesh, edited)) {
+            shape.context().memory->charge(saturating_product({triangles, kSweepTubeTrianglePeakBytes}),
+                                           "a tube of " + std::to_string(triangles) + " triangles (theta_steps " +
+                                               std::to_string(steps.theta_steps) + ", t_steps " +
+                                               std::to_string(steps.t_steps) + ")",
+                                           where, shape.path());
             tubes.append_positions_and_triangles(at_node(element, [&] { return tessellate(sweep, steps); }));
+        }
     }
 }
 
 std::unique_ptr<Shape> create(const SceneNode& node) {
-    const TriangleMeshData mesh = node.has("measure_on") ? load_mesh_file(node.file_path("measure_on").string()) : TriangleMeshData{};
+    const TriangleMeshData mesh = node.has("measure_on")
+                                      ? load_mesh_file(node.file_path("measure_on").string(), *node.context().memory)
+                                      : TriangleMeshData{};
     const bool edited = node.choice_or("state", "after", {"before", "after"}) == "after";
     SweepTessellation steps;
     steps.theta_steps = node.integer_or("theta_steps", 48, NumberRange::between(3, 4096));
@@ -33,17 +45,10 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     const std::optional<SceneNode> list = node.optional_value("deformers");
     if (!list) node.fail("needs \"deformers\" (a list or the name of a deformer file)");
     if (list->json().is_string()) {
-        const std::string path = node.file_path("deformers").string();
-        const JsonValue document = parse_json_file(path);
-        auto context = std::make_shared<SceneFileContext>();
-        context->file = path;
-        context->directory = std::filesystem::path(path).parent_path();
-        const SceneNode root(document, "", context);
-        const std::optional<SceneNode> in_file = root.optional_value("deformers");
-        if (!in_file) root.fail("missing \"deformers\"");
-        add_tubes(*in_file, mesh, edited, steps, tubes);
+        const DeformerFile file(node.file_path("deformers").string(), node.context().memory);
+        add_tubes(node, file.list(), mesh, edited, steps, tubes);
     } else {
-        add_tubes(*list, mesh, edited, steps, tubes);
+        add_tubes(node, *list, mesh, edited, steps, tubes);
     }
     for (const Vec3f& p : tubes.positions)
         if (!is_finite(p)) node.fail("a sweep reaches beyond float range");

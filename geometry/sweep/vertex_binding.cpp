@@ -16,6 +16,7 @@ SweepBinder::SweepBinder(const SweepSurface& sweep, int samples_per_key) : sweep
     if (samples_per_key < 2 || samples_per_key > 4096)
         throw std::invalid_argument("samples_per_key: must be in [2, 4096]");
     const std::vector<double>& keys = sweep.key_parameters();
+    t_.reserve(sample_count(keys.size(), samples_per_key));
     for (std::size_t k = 0; k + 1 < keys.size(); ++k)
         for (int i = 0; i < samples_per_key; ++i) t_.push_back(keys[k] + (keys[k + 1] - keys[k]) * i / samples_per_key);
     t_.push_back(1);

@@ -9,6 +9,8 @@
 // one without crossing it, is not bound. Step 2: v̂ = R(t)ᵀ(v − C(t)) (eq. 6), θ = atan2(v̂_y, v̂_x) of the local
 // coordinates (the paper prints tan⁻¹ of global ones) and d = |v̂| − r(θ, t) (eq. 7), |v̂| measured in the
 // section plane (v̂_z is zero at the root up to the refinement tolerance).
+#include <algorithm>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -31,8 +33,15 @@ Vec3d bound_position(const SweepSurface& sweep, const VertexBinding& binding);
 // Samples C and N once per sweep so that binding many vertices only refines the brackets.
 class SweepBinder {
 public:
+    static constexpr int kSamplesPerKey = 64;
+
     // `samples_per_key` samples of t per key interval (≥ 2, at most 4096).
-    explicit SweepBinder(const SweepSurface& sweep, int samples_per_key = 64);
+    explicit SweepBinder(const SweepSurface& sweep, int samples_per_key = kSamplesPerKey);
+
+    // The samples of t for a sweep of `keys` key sections: the sign tests each bound point costs.
+    static std::uint64_t sample_count(std::size_t keys, int samples_per_key = kSamplesPerKey) {
+        return std::uint64_t(samples_per_key) * (std::max<std::size_t>(keys, 1) - 1) + 1;
+    }
 
     std::optional<VertexBinding> bind(const Vec3d& v) const;
     // Every root of eq. (5) in [0, 1] with its binding, in increasing t (for tests and diagnostics).

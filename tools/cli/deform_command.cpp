@@ -7,6 +7,7 @@
 #include "geometry/mesh/mesh_deformer.h"
 #include "geometry/mesh/mesh_file.h"
 #include "renderer/core/input_error.h"
+#include "renderer/core/memory_budget.h"
 #include "renderer/core/lower_extension.h"
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
@@ -31,9 +32,10 @@ int run_deform(const DeformArguments& args) {
         throw InputError({}, "--output", "\"" + args.output + "\" must end in .ply or .obj");
     check_output_paths({{args.output, "--output"}}, {{args.mesh, "the mesh"}, {args.deformers, "the deformer file"}});
     const ThreadLimit limit(args.threads);
-    TriangleMeshData mesh = load_mesh_file(args.mesh);
+    const auto memory = std::make_shared<MemoryBudget>();
+    TriangleMeshData mesh = load_mesh_file(args.mesh, *memory);
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh);
+    const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh, memory);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (extension == ".ply") {
         write_ply(args.output, mesh);
