@@ -37,7 +37,7 @@ std::shared_ptr<const SceneFileContext> file_context(const std::string& path, st
 }
 
 std::vector<std::string> apply_list(const SceneNode& list, TriangleMeshData& mesh) {
-    check_mesh_deformers(list, mesh);
+    const MemoryReservation working_memory = check_mesh_deformers(list, mesh);
     const std::vector<SceneNode> elements = list.elements();
     std::vector<std::string> summaries;
     for (const SceneNode& element : elements) {
@@ -52,7 +52,7 @@ std::vector<std::string> apply_list(const SceneNode& list, TriangleMeshData& mes
 
 }  // namespace
 
-void check_mesh_deformers(const SceneNode& list, const TriangleMeshData& mesh) {
+MemoryReservation check_mesh_deformers(const SceneNode& list, const TriangleMeshData& mesh) {
     if (!list.json().is_array()) list.fail("expected a list of deformers or the name of a deformer file");
     const std::vector<SceneNode> elements = list.elements();
     std::uint64_t steps = 0, peak_bytes = 0;
@@ -72,8 +72,8 @@ void check_mesh_deformers(const SceneNode& list, const TriangleMeshData& mesh) {
     }
     SourceLocation where = list.json().location;
     where.file = list.context().file;
-    list.context().memory->charge(peak_bytes, "deforming " + std::to_string(vertices) + " vertices", where,
-                                  list.path());
+    return MemoryReservation(*list.context().memory, peak_bytes, "deforming " + std::to_string(vertices) + " vertices",
+                             where, list.path());
 }
 
 DeformerFile::DeformerFile(const std::string& path, std::shared_ptr<MemoryBudget> memory)

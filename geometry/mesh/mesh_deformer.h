@@ -56,8 +56,9 @@ private:
 };
 
 // Refuses `list` (an array of deformer objects) before any of them works on `mesh` when their steps together
-// exceed kMaxDeformerSteps; charges the memory of the costliest one. Each is read for its cost and dropped.
-void check_mesh_deformers(const SceneNode& list, const TriangleMeshData& mesh);
+// exceed kMaxDeformerSteps; reserves the working memory of the costliest one while the caller keeps the result.
+// Each is read for its cost and dropped.
+[[nodiscard]] MemoryReservation check_mesh_deformers(const SceneNode& list, const TriangleMeshData& mesh);
 
 // Applies node["deformers"] when present: a list of deformer objects, or the name of a JSON file (relative to
 // the scene) holding {"deformers": [...]}, checked first (check_mesh_deformers). Deformers then run in order;

@@ -25,12 +25,39 @@ public:
     void charge(std::uint64_t bytes, const std::string& what, const SourceLocation& where = {},
                 const std::string& field = {});
 
+    // Gives back `bytes` charged earlier, for working memory that is freed again (see MemoryReservation).
+    void release(std::uint64_t bytes) { charged_.fetch_sub(bytes); }
+
     std::uint64_t limit_bytes() const { return limit_; }
     std::uint64_t charged_bytes() const { return charged_.load(); }
 
 private:
     std::uint64_t limit_;
     std::atomic<std::uint64_t> charged_{0};
+};
+
+// A charge for as long as the object lives: working memory that is freed again (a deformer's), so that what comes
+// after it is not refused for memory no longer in use.
+class MemoryReservation {
+public:
+    MemoryReservation(MemoryBudget& budget, std::uint64_t bytes, const std::string& what, const SourceLocation& where = {},
+                      const std::string& field = {})
+        : budget_(&budget), bytes_(bytes) {
+        budget.charge(bytes, what, where, field);
+    }
+    ~MemoryReservation() {
+        if (budget_) budget_->release(bytes_);
+    }
+    MemoryReservation(MemoryReservation&& other) noexcept : budget_(other.budget_), bytes_(other.bytes_) {
+        other.budget_ = nullptr;
+    }
+    MemoryReservation(const MemoryReservation&) = delete;
+    MemoryReservation& operator=(const MemoryReservation&) = delete;
+    MemoryReservation& operator=(MemoryReservation&&) = delete;
+
+private:
+    MemoryBudget* budget_;
+    std::uint64_t bytes_;
 };
 
 // "27.4 GB" (powers of 1000, three significant digits) for messages.

@@ -41,6 +41,22 @@ TEST(MemoryBudget, DefaultLimitIsFourFifthsOfPhysicalMemory) {
     EXPECT_EQ(MemoryBudget().limit_bytes(), physical / 5 * 4);
 }
 
+// Working memory freed again does not count against what comes after it.
+TEST(MemoryBudget, AReservationIsGivenBackWhenItEnds) {
+    MemoryBudget budget(100);
+    {
+        const MemoryReservation working(budget, 80, "working memory");
+        EXPECT_EQ(budget.charged_bytes(), 80u);
+        EXPECT_THROW(budget.charge(30, "more"), InputError);
+        MemoryReservation moved = MemoryReservation(budget, 10, "a little more");
+        EXPECT_EQ(budget.charged_bytes(), 90u);
+    }
+    EXPECT_EQ(budget.charged_bytes(), 0u);
+    budget.charge(90, "afterwards");
+    EXPECT_THROW(MemoryReservation(budget, 20, "too much"), InputError);
+    EXPECT_EQ(budget.charged_bytes(), 90u);  // a refused reservation gives back nothing it did not take
+}
+
 TEST(MemoryBudget, FormatsBytesWithThreeSignificantDigits) {
     EXPECT_EQ(format_bytes(512), "512 bytes");
     EXPECT_EQ(format_bytes(27'400'000'000ull), "27.4 GB");
