@@ -37,8 +37,15 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
     const std::string space = !colour_space.empty() ? colour_space : (is_float ? colours.working_space() : "srgb_texture");
     if (!colours.has_colour_space(space)) throw fail("unknown colour space \"" + space + "\"");
     colours.to_working(rgb.data(), count, 3, space);
-    for (float v : rgb)
-        if (!std::isfinite(v)) throw fail("image contains NaN or infinite values");
+    // Texels are light (environment maps) or colours: a negative one would subtract light from the image.
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        if (!std::isfinite(rgb[i])) throw fail("image contains NaN or infinite values");
+        if (rgb[i] < 0)
+            throw fail("texel (" + std::to_string(i / 3 % std::size_t(header.width)) + ", " +
+                       std::to_string(i / 3 / std::size_t(header.width)) + ") is negative (" + std::to_string(rgb[i]) +
+                       ") in the working space " + colours.working_space() +
+                       "; texels must be >= 0 (a colour outside the working space's gamut turns negative)");
+    }
     return std::shared_ptr<const ImageTexture>(new ImageTexture(header.width, header.height, std::move(rgb), space));
 }
 

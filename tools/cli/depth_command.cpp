@@ -62,6 +62,9 @@ ImageMetadata make_metadata(const DepthArguments& args, const DepthRange& range)
 int run_depth(const DepthArguments& args) {
     check_output_file(args.output, ".png", "--output");
     if (!args.exr.empty()) check_output_file(args.exr, ".exr", "--exr");
+    // Depths are single-precision floats: an infinite end (or one beyond float's range) maps every depth to one grey.
+    if (args.near && !std::isfinite(float(*args.near))) throw InputError({}, "--near", "must be a finite depth");
+    if (args.far && !std::isfinite(float(*args.far))) throw InputError({}, "--far", "must be a finite depth");
     if (args.near && args.far && !(*args.near < *args.far))
         throw InputError({}, "--far", "must be greater than --near");
     // A missing image module fails now, not after the depth map.
