@@ -40,15 +40,18 @@ void check_reach_within_world(const SceneNode& node, const std::string& key, con
     if (!(reach <= kWorldLimit)) node.fail_at(key, beyond_world_problem(what));
 }
 
-void check_object_within_world(const SceneNode& node, const std::string& key, const Shape& shape,
-                               const Transform& to_world) {
+void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world) {
     const Bounds3f local = shape.bounds();
     if (local.empty()) return;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3d p(corner & 1 ? local.upper.x : local.lower.x, corner & 2 ? local.upper.y : local.lower.y,
-                      corner & 4 ? local.upper.z : local.lower.z);
-        if (!within_world(to_world.point(p))) node.fail_at(key, beyond_world_problem("the shape, transformed,"));
-    }
+    const auto corner = [&](int i) {
+        return Vec3d(i & 1 ? local.upper.x : local.lower.x, i & 2 ? local.upper.y : local.lower.y,
+                     i & 4 ? local.upper.z : local.lower.z);
+    };
+    for (int i = 0; i < 8; ++i)  // the shape's own parameters first (a tube radius, a vertex), then its placement
+        if (!within_world(corner(i))) object.fail_at("shape", beyond_world_problem("the shape"));
+    for (int i = 0; i < 8; ++i)
+        if (!within_world(to_world.point(corner(i))))
+            object.fail_at("transform", beyond_world_problem("the shape, transformed,"));
 }
 
 }  // namespace isotrace

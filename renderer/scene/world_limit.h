@@ -35,9 +35,8 @@ Vec3d unit_direction(const SceneNode& node, const Vec3d& v, const std::string& w
 void check_reach_within_world(const SceneNode& node, const std::string& key, const Transform& to_world,
                               double radius, const std::string& what);
 
-// Fails at node[key] (or at `node` when the key is absent) when the object's shape, placed by `to_world`, reaches
-// beyond the limit: the shape may lie within it in its own space and be moved or scaled out of it.
-void check_object_within_world(const SceneNode& node, const std::string& key, const Shape& shape,
-                               const Transform& to_world);
+// Fails at object["shape"] when the shape's bounds reach beyond the limit in its own space (shapes whose plugins
+// check no extent: meshes, tubes), else at object["transform"] when `to_world` moves or scales it beyond.
+void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world);
 
 }  // namespace isotrace

@@ -1378,6 +1378,12 @@ case_world_light_and_object_beyond_limit() {
     "lights[0].position" "1e18"
   bad_scene 6 '  "lights": [ { "type": "directional", "direction": [0, 0, 0] } ],' 6 "lights[0].direction" "non-zero"
   bad_scene 9 '      "material": "grey", "transform": { "translate": [1e30, 0, 0] },' 9 "objects[0].transform" "1e18"
+  # A mesh 1e30 across: its triangle's area overflowed float in the area distribution (exit 1, no position).
+  awk 'NR == 11 { print "        \"type\": \"mesh\", \"positions\": [[0, 0, 0], [1e30, 0, 0], [0, 1e30, 0]],"; next }
+       NR == 12 { print "        \"triangles\": [[0, 1, 2]]"; next }
+       { print }' "$work/scene/scene.json" >"$work/scene/mesh.json"
+  mv "$work/scene/mesh.json" "$work/scene/scene.json"
+  check_bad_scene "$work/scene" 10 "objects[0].shape" "1e18"
 }
 
 case_emission_overflow() {  # each failed in Distribution1D with exit 1 and no position
