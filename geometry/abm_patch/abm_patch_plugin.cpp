@@ -10,6 +10,7 @@
 #include "geometry/abm_patch/patch_tessellation.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "renderer/core/memory_budget.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -23,7 +24,7 @@ std::vector<Vec3d> control_points(const SceneNode& node) {
     for (const SceneNode& p : list->elements()) {
         points.push_back(p.as_vec3());
         // Farther out, the patch's weighted sums overflow, and Embree silently drops such bounds.
-        if (max_component(abs(points.back())) > 1e18) p.fail("control point beyond 1e18 from the origin");
+        if (!within_world(points.back())) p.fail(beyond_world_problem("control point"));
     }
     return points;
 }

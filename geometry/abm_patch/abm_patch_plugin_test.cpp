@@ -65,7 +65,7 @@ TEST(AbmPatchScene, ControlPointsBeyond1e18AreRefusedWhereTheyStand) {
     const std::string path = dir.write("far.json", scene_with(
         R"({"type": "abm_patch", "boundary": [{"points": [[0,0,0],[1e100,0,0]]}, {"points": [[1e100,0,0],[0,1e100,0]]}, {"points": [[0,1e100,0],[0,0,0]]}]})"));
     const std::string message = mesh_test::input_error_message([&] { load_scene(path); });
-    EXPECT_NE(message.find("objects[0].shape.boundary[0].points[1]: control point beyond 1e18 from the origin"),
+    EXPECT_NE(message.find("objects[0].shape.boundary[0].points[1]: control point lies beyond 1e18 from the origin"),
               std::string::npos)
         << message;
 }

@@ -5,6 +5,7 @@
 
 #include "geometry/csg/inside_span_list.h"
 #include "geometry/csg/transformed_bounds.h"
+#include "renderer/core/ray.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/math/line_box_clip.h"
 
@@ -56,7 +57,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     const Vec3d centre = node.vec3_or("center", {0, 0, 0});
     const Vec3d half_size = node.vec3_or("half_size", {1, 1, 1});
     if (!(std::min({half_size.x, half_size.y, half_size.z}) > 0)) node.fail_at("half_size", "every half size must be positive");
-    if (max_component(abs(centre) + half_size) > 1e18)  // Embree silently drops bounds this large
+    if (max_component(abs(centre) + half_size) > kWorldLimit)  // Embree silently drops bounds this large
         node.fail("box extends beyond 1e18 from the origin");
     return std::make_unique<BoxShape>(centre, half_size);
 }

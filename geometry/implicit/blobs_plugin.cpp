@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "geometry/implicit/blob_group_shape.h"
+#include "renderer/core/ray.h"
 #include "renderer/sampling/hash.h"
 #include "renderer/scene/transform_parser.h"
 
@@ -100,7 +101,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     if (elements.empty()) node.fail("a blob group needs \"elements\" or \"generate\"");
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const WorldBounds b = elements[i].support_bounds();
-        if (std::max(max_component(abs(b.lower)), max_component(abs(b.upper))) > 1e18)
+        if (std::max(max_component(abs(b.lower)), max_component(abs(b.upper))) > kWorldLimit)
             node.fail("element " + std::to_string(i) + " extends beyond 1e18 from the origin");
     }
     return std::make_unique<BlobGroupShape>(BlobGroup(std::move(elements), make_field_function(field, sharpness), threshold));

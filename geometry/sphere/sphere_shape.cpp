@@ -8,6 +8,7 @@
 #include "geometry/csg/inside_span_list.h"
 #include "geometry/csg/span_combination.h"
 #include "geometry/sphere/sphere_intersection.h"
+#include "renderer/core/ray.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/user_geometry.h"
 #include "renderer/sampling/warps.h"
@@ -143,7 +144,7 @@ Sphere parse_sphere(const SceneNode& node) {
     Sphere s;
     s.centre = node.vec3_or("center", {0, 0, 0});
     s.radius = node.number_or("radius", 1.0, NumberRange::positive());
-    if (max_component(abs(s.centre)) + s.radius > 1e18)  // Embree silently drops bounds this large
+    if (max_component(abs(s.centre)) + s.radius > kWorldLimit)  // Embree silently drops bounds this large
         node.fail("sphere extends beyond 1e18 from the origin");
     return s;
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geometry/superquadric/superquadric_shape.h"
+#include "renderer/core/ray.h"
 #include "renderer/scene/transform_parser.h"
 
 namespace isotrace {
@@ -84,7 +85,7 @@ Superquadric parse_superquadric(const SceneNode& node) {
     }
     Superquadric result(shape, std::move(chain), placement);
     const IntervalBox b = result.bounds();
-    if (std::max(max_component(abs(b.lower())), max_component(abs(b.upper()))) > 1e18)
+    if (std::max(max_component(abs(b.lower())), max_component(abs(b.upper()))) > kWorldLimit)
         node.fail("superquadric extends beyond 1e18 from the origin");  // Embree silently drops such bounds
     return result;
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "geometry/mesh/triangle_mesh_shape.h"
+#include "renderer/core/ray.h"
 #include "renderer/embree/embree_device.h"
 
 namespace isotrace {
@@ -20,7 +21,7 @@ RadiusProbe::RadiusProbe(const TriangleMeshData& mesh) {
 
 std::vector<double> RadiusProbe::measure(const Vec3d& centre, const Quaternion& orientation, int samples) const {
     // Embree asserts on rays that are not finite in float: refuse them here.
-    if (!is_finite(centre) || !orientation.is_finite() || max_component(abs(centre)) > 1e18)
+    if (!is_finite(centre) || !orientation.is_finite() || max_component(abs(centre)) > kWorldLimit)
         throw std::invalid_argument("radii: the key section's centre is not finite or too far out (beyond 1e18)");
     std::vector<double> radii;
     std::vector<MeshCrossing> crossings;

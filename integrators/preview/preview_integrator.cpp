@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "renderer/lights/emitted_colour.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/sampling/warps.h"
 #include "renderer/scene/render_scene.h"
@@ -56,8 +57,8 @@ ISOTRACE_REGISTER_PLUGIN(integrator_registry, "preview",
                          "ambient, background, ambient_samples, ambient_distance",
                          [](const SceneNode& node) -> std::unique_ptr<Integrator> {
                              PreviewSettings settings;
-                             settings.ambient = node.colour_or("ambient", settings.ambient);
-                             settings.background = node.colour_or("background", settings.ambient);
+                             settings.ambient = emitted_colour(node, "ambient", settings.ambient);
+                             settings.background = emitted_colour(node, "background", settings.ambient);
                              settings.ambient_samples =
                                  node.integer_or("ambient_samples", 1, NumberRange::between(1, 1024));
                              settings.ambient_distance =

@@ -19,7 +19,8 @@ float roughness_to_alpha(float roughness) {
     return roughness * roughness;
 }
 
-GgxDistribution::GgxDistribution(float alpha_x, float alpha_y) : alpha_x_(alpha_x), alpha_y_(alpha_y) {}
+GgxDistribution::GgxDistribution(float alpha_x, float alpha_y)
+    : alpha_x_(std::max(alpha_x, kMinGgxAlpha)), alpha_y_(std::max(alpha_y, kMinGgxAlpha)) {}
 
 float GgxDistribution::d(const Vec3f& m) const {
     if (m.z <= 0) return 0;

@@ -12,9 +12,16 @@ namespace isotrace {
 // Shading at Disney"), so equal steps of roughness look like equal steps of blur.
 float roughness_to_alpha(float roughness);
 
+// The smallest alpha a distribution uses (roughness 0.001); smaller ones are raised to it. The densities grow as
+// 1/alpha^2 (to ~5e15 here, seen from grazing angles), and the path tracer's power heuristic squares them: below
+// ~1e-8 the squares overflow float and samples become NaN. Sampling, eval and pdf stay finite and consistent, and
+// the lobe keeps its energy, down to this value with a margin of 1e6 in those squares (ggx_test.cpp).
+inline constexpr float kMinGgxAlpha = 1e-6f;
+
 class GgxDistribution {
 public:
-    // Both alphas > 0 (a smooth surface is a delta lobe and handled by the models themselves).
+    // Both alphas > 0 (a smooth surface is a delta lobe and handled by the models themselves); each is raised to
+    // kMinGgxAlpha at least.
     GgxDistribution(float alpha_x, float alpha_y);
 
     float alpha_x() const { return alpha_x_; }

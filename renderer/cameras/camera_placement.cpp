@@ -1,5 +1,6 @@
 #include "renderer/plugin/camera.h"
 #include "renderer/scene/transform_parser.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 
@@ -7,9 +8,9 @@ Transform parse_camera_placement(const SceneNode& node) {
     if (node.has("look_at") && node.has("transform"))
         node.fail_at("transform", "give either \"look_at\" or \"transform\", not both");
     if (auto look_at = node.optional_object("look_at")) {
-        const Vec3d eye = look_at->vec3("eye");
-        const Vec3d target = look_at->vec3("target");
-        const Vec3d up = look_at->vec3_or("up", {0, 1, 0});
+        const Vec3d eye = world_point(*look_at, "eye");
+        const Vec3d target = world_point(*look_at, "target");
+        const Vec3d up = look_at->has("up") ? unit_direction(*look_at, "up") : Vec3d(0, 1, 0);
         look_at->finish();
         try {
             return Transform::look_at(eye, target, up);
@@ -18,7 +19,10 @@ Transform parse_camera_placement(const SceneNode& node) {
         }
     }
     if (!node.has("transform")) node.fail("a camera needs \"look_at\" or \"transform\"");
-    return parse_optional_transform(node, "transform");
+    const Transform to_world = parse_optional_transform(node, "transform");
+    if (!within_world(to_world.point(Vec3d(0, 0, 0))))
+        node.fail_at("transform", beyond_world_problem("the camera's position"));
+    return to_world;
 }
 
 }  // namespace isotrace

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "renderer/core/input_error.h"
+#include "renderer/embree/embree_ray.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/scene/json_document.h"
 #include "renderer/scene/scene_node.h"
@@ -229,6 +230,57 @@ TEST(Camera, ViewDepthIsTheDistanceAlongTheViewingAxis) {
         const Ray ray = camera->generate_ray(1.5f, 13.0f, {});
         const Vec3d hit = Vec3d(ray.origin) + Vec3d(ray.direction) * 4.0;
         EXPECT_NEAR(camera->view_depth(Vec3f(hit)), dot(hit - kEye, f.forward), 1e-5);
+    }
+}
+
+// The camera's error for `json`: at `field`, naming the limit.
+void expect_refused_at(const std::string& json, const std::string& field) {
+    try {
+        make_camera(json, {16, 12});
+        ADD_FAILURE() << "accepted: " << json;
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.field(), field) << json;
+        const std::string message = error.what();
+        EXPECT_TRUE(message.find("1e18") != std::string::npos || message.find("1e+18") != std::string::npos)
+            << message;
+    }
+}
+
+TEST(Camera, PlacementsAndExtentsBeyondTheFiniteWorldAreRefusedWhereTheyAreWritten) {
+    const std::string at_origin = R"("look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]})";
+    expect_refused_at(R"({"type": "perspective", "look_at": {"eye": [1e19, 0, 5], "target": [0, 0, 0]}})",
+                      "camera.look_at.eye");
+    expect_refused_at(R"({"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, -2e18, 0]}})",
+                      "camera.look_at.target");
+    expect_refused_at(R"({"type": "perspective", "transform": {"translate": [0, 0, 1e30]}})", "camera.transform");
+    expect_refused_at(R"({"type": "orthographic", "transform": [{"translate": [0, 0, 1e17]}, {"scale": 1e3}]})",
+                      "camera.transform");
+    expect_refused_at(R"({"type": "perspective", "aperture_radius": 1e19, )" + at_origin + "}",
+                      "camera.aperture_radius");
+    expect_refused_at(R"({"type": "perspective", "aperture_radius": 1e18, )" + at_origin + "}",
+                      "camera.aperture_radius");  // within the limit alone, beyond it around the eye
+    expect_refused_at(R"({"type": "perspective", "aperture_radius": 0.1, "focus_distance": 1e300, )" + at_origin + "}",
+                      "camera.focus_distance");
+    expect_refused_at(R"({"type": "orthographic", "width": 1e30, )" + at_origin + "}", "camera.width");
+    expect_refused_at(R"({"type": "orthographic", "width": 1.5e18, )" + at_origin + "}", "camera.width");
+}
+
+TEST(Camera, ExtremeValuesWithinTheLimitsMakeTraceableRays) {
+    const std::string at_origin = R"("look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]})";
+    for (const std::string& json : {
+             R"({"type": "perspective", "fov": 1e-300, )" + at_origin + "}",
+             R"({"type": "perspective", "fov": 179.99999999999997, )" + at_origin + "}",
+             std::string(R"({"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [1e300, 1e300, 0]}})"),
+             R"({"type": "perspective", "aperture_radius": 5e17, "focus_distance": 1e18, )" + at_origin + "}",
+             std::string(R"({"type": "perspective", "look_at": {"eye": [1e18, -1e18, 1e18], "target": [-1e18, 1e18, -1e18]}})"),
+             R"({"type": "orthographic", "width": 1e17, )" + at_origin + "}",
+             R"({"type": "orthographic", "width": 1e-300, )" + at_origin + "}",
+         }) {
+        const auto camera = make_camera(json, {16, 12});
+        for (float x : {0.0f, 7.5f, 16.0f})
+            for (float y : {0.0f, 12.0f})
+                for (float u : {0.0f, 0.999f})
+                    EXPECT_TRUE(is_traceable(camera->generate_ray(x, y, {u, 1 - u}))) << json << " " << x << " " << y;
     }
 }
 

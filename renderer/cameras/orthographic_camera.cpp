@@ -1,5 +1,8 @@
 // Orthographic camera: parallel rays along -z of the camera frame through a width x height window.
+#include <cmath>
+
 #include "renderer/plugin/camera.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -28,7 +31,9 @@ private:
 ISOTRACE_REGISTER_PLUGIN(camera_registry, "orthographic", "parallel projection; width (world units), look_at|transform",
                          [](const SceneNode& node, const RasterSize& raster) -> std::unique_ptr<Camera> {
                              const Transform to_world = parse_camera_placement(node);
-                             const double width = node.number_or("width", 2.0, NumberRange::positive());
+                             const double width = node.number_or("width", 2.0, world_length());
+                             const double half_diagonal = width / 2 * std::hypot(1.0, double(raster.height) / raster.width);
+                             check_reach_within_world(node, "width", to_world, half_diagonal, "the view's window");
                              return std::make_unique<OrthographicCamera>(to_world, raster, width);
                          })
 

@@ -4,6 +4,7 @@
 
 #include "renderer/plugin/camera.h"
 #include "renderer/sampling/warps.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -65,10 +66,11 @@ std::unique_ptr<Camera> create(const SceneNode& node, const RasterSize& raster) 
     const Transform to_world = parse_camera_placement(node);
     const double fov = node.number_or("fov", 40.0, {0, 180, true, true});
     const std::string axis = node.choice_or("fov_axis", "x", {"x", "y", "diagonal", "smaller", "larger"});
-    const double aperture = node.number_or("aperture_radius", 0.0, NumberRange::non_negative());
+    const double aperture = node.number_or("aperture_radius", 0.0, world_length(true));
+    check_reach_within_world(node, "aperture_radius", to_world, aperture, "the lens");
     double focus = 1.0;
     if (node.has("focus_distance")) {
-        focus = node.number("focus_distance", NumberRange::positive());
+        focus = node.number("focus_distance", world_length());
     } else if (auto look_at = node.optional_object("look_at")) {
         focus = length(look_at->vec3("target") - look_at->vec3("eye"));
     } else if (aperture > 0) {

@@ -1,8 +1,9 @@
 #pragma once
-// A Ray in Embree's RTCRay layout.
+// A Ray in Embree's RTCRay layout, and the test every ray passes before Embree sees it.
 #include <embree3/rtcore.h>
 
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -12,9 +13,31 @@
 
 namespace isotrace {
 
+// What Embree can trace: origin and direction components at most its FLT_LARGE in magnitude (it asserts that and
+// aborts the process otherwise), a non-zero direction and 0 <= t_near <= t_far, none of them NaN. Scene values
+// are held within kWorldLimit (renderer/core/ray.h), below FLT_LARGE, where they are read, so a ray fails this only
+// when arithmetic on valid values went wrong; RenderScene then answers without Embree (a miss, or blocked for a
+// shadow ray) and counts it under "rays.untraceable". Every comparison is false for NaN.
+inline bool is_traceable(float origin_x, float origin_y, float origin_z, float direction_x, float direction_y,
+                         float direction_z, float t_near, float t_far) {
+    constexpr float kLimit = 1.844E18f;  // Embree's FLT_LARGE
+    const bool origin_inside =
+        std::abs(origin_x) <= kLimit && std::abs(origin_y) <= kLimit && std::abs(origin_z) <= kLimit;
+    const bool direction_inside =
+        std::abs(direction_x) <= kLimit && std::abs(direction_y) <= kLimit && std::abs(direction_z) <= kLimit;
+    const bool direction_non_zero = direction_x != 0 || direction_y != 0 || direction_z != 0;
+    return origin_inside && direction_inside && direction_non_zero && t_near >= 0 && t_near <= t_far;
+}
+
+inline bool is_traceable(const Ray& ray) {
+    return is_traceable(ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z,
+                        ray.t_near, ray.t_far);
+}
+
 // Writes `ray` into Embree's layout in three 16-byte stores, the way Embree loads it: built field by field, the
 // ray was stored as scalars and reloaded as vectors, and a load wider than the stores before it waits for them
 // (a failed store forwarding; perf put a tenth of the path tracer's time in RenderScene::intersect on such loads).
+// The caller has checked is_traceable(ray).
 inline void set_embree_ray(RTCRay& r, const Ray& ray) {
     static_assert(offsetof(RTCRay, tnear) == 12 && offsetof(RTCRay, time) == 28 && offsetof(RTCRay, flags) == 44);
     const Float4 origin_and_near{ray.origin.x, ray.origin.y, ray.origin.z, ray.t_near};

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/lights/emitted_colour.h"
 #include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
@@ -31,7 +32,7 @@ AreaLight::AreaLight(const Shape& shape, const Material& material)
     const SurfaceHit hit = hit_at(probe, material, 0);
     const float front = material.emission(hit, probe.normal).max();
     const float back = material.emission(hit, -probe.normal).max();
-    power_ = std::numbers::pi_v<float> * area * (std::max(0.0f, front) + std::max(0.0f, back));
+    power_ = saturated_power(std::numbers::pi * area * (std::max(0.0, double(front)) + std::max(0.0, double(back))));
 }
 
 LightSample AreaLight::sample(const Vec3f& point, std::array<float, 2> u) const {

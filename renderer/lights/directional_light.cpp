@@ -2,7 +2,9 @@
 #include <limits>
 #include <numbers>
 
+#include "renderer/lights/emitted_colour.h"
 #include "renderer/plugin/light.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -18,7 +20,7 @@ public:
     }
     // The light crossing the scene's bounding disk.
     float power() const override {
-        return float(std::numbers::pi) * scene_radius_ * scene_radius_ * irradiance_.max();
+        return saturated_power(std::numbers::pi * double(scene_radius_) * scene_radius_ * irradiance_.max());
     }
     void preprocess(const Bounds3f& scene_bounds) override { scene_radius_ = scene_bounds.bounding_radius(); }
 
@@ -33,13 +35,9 @@ private:
 ISOTRACE_REGISTER_PLUGIN(light_registry, "directional",
                          "distant light; direction (travel direction of the light), irradiance (colour), scale",
                          [](const SceneNode& node) -> std::unique_ptr<Light> {
-                             const Vec3d direction = node.vec3("direction");
-                             if (!(length(direction) > 0)) node.fail_at("direction", "direction must not be zero");
-                             const Rgb irradiance = node.colour_or("irradiance", Rgb(1.0f)) *
-                                                    float(node.number_or("scale", 1.0, NumberRange::non_negative()));
-                             if (irradiance.r < 0 || irradiance.g < 0 || irradiance.b < 0)
-                                 node.fail_at("irradiance", "irradiance must not be negative");
-                             return std::make_unique<DirectionalLight>(Vec3f(-normalize(direction)), irradiance);
+                             const Vec3d direction = unit_direction(node, "direction");
+                             const Rgb irradiance = emitted_colour(node, "irradiance", Rgb(1.0f), "scale");
+                             return std::make_unique<DirectionalLight>(Vec3f(-direction), irradiance);
                          })
 
 }  // namespace isotrace

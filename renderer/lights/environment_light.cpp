@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
+#include "renderer/lights/emitted_colour.h"
 #include "renderer/sampling/warps.h"
 #include "renderer/scene/transform_parser.h"
 
@@ -39,9 +41,19 @@ EnvironmentLight::EnvironmentLight(std::shared_ptr<const ImageTexture> map, floa
         throw std::invalid_argument("the transform of an environment must be a rotation");
     const int width = map_->width(), height = map_->height();
     std::vector<float> lum(std::size_t(width) * std::size_t(height));
+    float brightest = 0;
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
+        for (int x = 0; x < width; ++x) {
+            brightest = std::max(brightest, map_->texel(x, y).max());
             lum[std::size_t(y) * std::size_t(width) + std::size_t(x)] = luminance(map_->texel(x, y));
+        }
+    // The map's own values are summed in float for its distribution, and the scale multiplies every lookup.
+    if (!(brightest <= kMaxEmitted) || !(double(brightest) * scale_ <= kMaxEmitted)) {
+        char values[64];
+        std::snprintf(values, sizeof values, "(%.3g) times the scale (%.3g)", double(brightest), double(scale_));
+        throw std::invalid_argument(std::string("the map's brightest texel ") + values +
+                                    " exceeds the supported maximum radiance of 1e30");
+    }
     const auto lum_at = [&](int x, int y) {  // wrapping in x, clamped in y (as the bilinear lookup)
         x = (x % width + width) % width;
         y = std::clamp(y, 0, height - 1);
@@ -100,6 +112,7 @@ Rgb EnvironmentLight::map_radiance(std::array<float, 2> uv) const {
 
 Rgb EnvironmentLight::escaped_radiance(const Vec3f& direction) const {
     if (!map_) return constant_;
+    if (!is_finite(direction)) return {};  // an untraceable ray's (RenderScene::intersect): it has no place on the map
     return map_radiance(direction_to_uv(to_map(normalize(direction))));
 }
 
@@ -129,7 +142,9 @@ float EnvironmentLight::pdf(const Vec3f&, const Vec3f& direction, float, const V
     return distribution_->pdf(direction_to_uv(d)) / (2 * kPi * kPi * sin_theta);
 }
 
-float EnvironmentLight::power() const { return kPi * scene_radius_ * scene_radius_ * average_.max(); }
+float EnvironmentLight::power() const {
+    return saturated_power(std::numbers::pi * double(scene_radius_) * scene_radius_ * average_.max());
+}
 
 void EnvironmentLight::preprocess(const Bounds3f& scene_bounds) {
     scene_radius_ = scene_bounds.bounding_radius();
@@ -148,11 +163,7 @@ std::unique_ptr<Light> create(const SceneNode& node) {
         if (node.has("space"))
             node.fail_at("space", "\"space\" applies to \"file\" maps; give the colour's space in \"radiance\"");
         if (node.has("transform")) node.fail_at("transform", "a constant environment has no transform");
-        const Rgb radiance = node.colour_or("radiance", Rgb(1.0f)) *
-                             float(node.number_or("scale", 1.0, NumberRange::non_negative()));
-        if (radiance.r < 0 || radiance.g < 0 || radiance.b < 0)
-            node.fail_at("radiance", "radiance must not be negative");
-        return std::make_unique<EnvironmentLight>(radiance);
+        return std::make_unique<EnvironmentLight>(emitted_colour(node, "radiance", Rgb(1.0f), "scale"));
     }
     if (node.has("radiance")) node.fail("give either \"radiance\" or \"file\", not both");
     const std::filesystem::path file = node.file_path("file");
@@ -168,7 +179,8 @@ std::unique_ptr<Light> create(const SceneNode& node) {
     } catch (const InputError& error) {
         node.fail_at("file", error.what());
     }
-    return std::make_unique<EnvironmentLight>(std::move(map), scale, to_world);
+    return at_node(*node.optional_value("file"),
+                   [&] { return std::make_unique<EnvironmentLight>(std::move(map), scale, to_world); });
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -282,6 +284,24 @@ TEST_F(EnvironmentLightTest, PowerUsesTheSceneRadiusAndAverageRadiance) {
     EXPECT_EQ(map->power(), 0.0f);  // before preprocess()
     map->preprocess(bounds);
     EXPECT_NEAR(map->power(), kPi * 3 * 3, 1e-4);
+}
+
+// A sky of 1e20 over a scene 1e18 across: pi R^2 L overflowed float, and light selection then failed.
+TEST_F(EnvironmentLightTest, PowerOfAHugeSceneSaturatesInsteadOfOverflowing) {
+    Bounds3f bounds;
+    bounds.extend({-1e18f, -1e18f, -1e18f});
+    bounds.extend({1e18f, 1e18f, 1e18f});
+    auto constant = make(R"({"type": "environment", "radiance": 1e20})");
+    constant->preprocess(bounds);
+    EXPECT_EQ(constant->power(), std::numeric_limits<float>::max());
+}
+
+// The direction of a ray RenderScene could not trace (RenderScene::intersect) has no place on the map.
+TEST_F(EnvironmentLightTest, NonFiniteDirectionsEscapeToBlack) {
+    const auto plain = sky();
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (const Vec3f& d : {Vec3f(nan, 0, 0), Vec3f(0, inf, 0), Vec3f(inf, inf, -inf)})
+        EXPECT_TRUE(plain->escaped_radiance(d).is_black());
 }
 
 TEST_F(EnvironmentLightTest, SceneErrors) {

@@ -1,7 +1,9 @@
 // Isotropic point light: intensity (W/sr-like, in the working space) falling off with the squared distance.
 #include <numbers>
 
+#include "renderer/lights/emitted_colour.h"
 #include "renderer/plugin/light.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -29,11 +31,8 @@ private:
 
 ISOTRACE_REGISTER_PLUGIN(light_registry, "point", "point light; position, intensity (colour), scale",
                          [](const SceneNode& node) -> std::unique_ptr<Light> {
-                             const Vec3d position = node.vec3("position");
-                             const Rgb intensity = node.colour_or("intensity", Rgb(1.0f)) *
-                                                   float(node.number_or("scale", 1.0, NumberRange::non_negative()));
-                             if (intensity.r < 0 || intensity.g < 0 || intensity.b < 0)
-                                 node.fail_at("intensity", "intensity must not be negative");
+                             const Vec3d position = world_point(node, "position");
+                             const Rgb intensity = emitted_colour(node, "intensity", Rgb(1.0f), "scale");
                              return std::make_unique<PointLight>(Vec3f(position), intensity);
                          })
 

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/lights/emitted_colour.h"
 #include "renderer/plugin/light.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -41,19 +43,17 @@ private:
 };
 
 std::unique_ptr<Light> create(const SceneNode& node) {
-    const Vec3d position = node.vec3("position");
+    const Vec3d position = world_point(node, "position");
     if (node.has("direction") == node.has("target")) node.fail("give either \"direction\" or \"target\"");
-    const Vec3d axis = node.has("direction") ? node.vec3("direction") : node.vec3("target") - position;
-    if (!(length(axis) > 0)) node.fail("the spot light's axis has zero length");
+    const Vec3d axis = node.has("direction")
+                           ? unit_direction(node, "direction")
+                           : unit_direction(node, world_point(node, "target") - position, "the spot light's axis");
     const double outer = node.number_or("cone_angle", 30.0, {0, 180, true, false});
     const double inner = node.number_or("falloff_start", outer * 0.8, NumberRange::between(0, 180));
     if (inner > outer) node.fail_at("falloff_start", "falloff_start must not exceed cone_angle");
-    const Rgb intensity = node.colour_or("intensity", Rgb(1.0f)) *
-                          float(node.number_or("scale", 1.0, NumberRange::non_negative()));
-    if (intensity.r < 0 || intensity.g < 0 || intensity.b < 0)
-        node.fail_at("intensity", "intensity must not be negative");
+    const Rgb intensity = emitted_colour(node, "intensity", Rgb(1.0f), "scale");
     const auto cos_degrees = [](double degrees) { return float(std::cos(degrees * std::numbers::pi / 180.0)); };
-    return std::make_unique<SpotLight>(Vec3f(position), Vec3f(normalize(axis)), intensity, cos_degrees(outer),
+    return std::make_unique<SpotLight>(Vec3f(position), Vec3f(axis), intensity, cos_degrees(outer),
                                        cos_degrees(inner));
 }
 

@@ -17,8 +17,9 @@ struct EmissionProfile {
     bool emits() const { return !radiance.is_black(); }
 };
 
-// Reads the radiance colour node[radiance_key] (absent = black unless required) and node[two_sided_key].
+// Reads the radiance colour node[radiance_key] (absent = black unless required) times node[scale_key] (none when
+// empty), within the limits of emitted_colour, and node[two_sided_key].
 EmissionProfile parse_emission(const SceneNode& node, const std::string& radiance_key, bool required,
-                               const std::string& two_sided_key);
+                               const std::string& two_sided_key, const std::string& scale_key = "");
 
 }  // namespace isotrace

@@ -24,9 +24,8 @@ private:
 ISOTRACE_REGISTER_PLUGIN(material_registry, "emissive",
                          "area emitter; radiance (colour), scale (default 1), two_sided (default false)",
                          [](const SceneNode& node) -> std::unique_ptr<Material> {
-                             EmissionProfile emission = parse_emission(node, "radiance", true, "two_sided");
-                             emission.radiance *= float(node.number_or("scale", 1.0, NumberRange::non_negative()));
-                             return std::make_unique<EmissiveMaterial>(emission);
+                             return std::make_unique<EmissiveMaterial>(
+                                 parse_emission(node, "radiance", true, "two_sided", "scale"));
                          })
 
 }  // namespace isotrace

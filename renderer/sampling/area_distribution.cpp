@@ -11,7 +11,8 @@ AreaDistribution::AreaDistribution(std::span<const double> areas) {
     std::vector<float> weights;
     weights.reserve(areas.size());
     for (const double area : areas) {
-        weights.push_back(std::isfinite(area) ? float(area) : 0.0f);
+        const float weight = float(area);  // finite doubles beyond float's range become infinite here
+        weights.push_back(std::isfinite(weight) ? weight : 0.0f);
         total_ += weights.back();
     }
     distribution_.emplace(weights);

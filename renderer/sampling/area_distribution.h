@@ -19,7 +19,8 @@ public:
     };
 
     AreaDistribution() = default;
-    // One area per primitive; a non-finite area counts as 0 (that primitive is never picked).
+    // One area per primitive; an area that is not finite as a float counts as 0 (that primitive is never picked;
+    // a shape that large lies beyond the world limit and is refused where the scene is read).
     explicit AreaDistribution(std::span<const double> areas);
 
     // The sum of the areas as sampled (each rounded to float, as the distribution holds them), so that

@@ -57,5 +57,13 @@ TEST(AreaDistribution, NoPrimitivesOrNoAreaGiveAZeroTotal) {
     EXPECT_EQ(AreaDistribution(degenerate).total(), 0);
 }
 
+// A triangle with edges of 1e30 (a tube of radius 1e30) has a finite area in double that float cannot hold: it
+// made Distribution1D throw, before the scene could refuse the shape at its position.
+TEST(AreaDistribution, AreasBeyondFloatsRangeAreNeverPicked) {
+    const AreaDistribution distribution(std::vector<double>{1, 1e60, 3});
+    EXPECT_DOUBLE_EQ(distribution.total(), 4);
+    for (float u : {0.0f, 0.25f, 0.5f, 0.999f}) EXPECT_NE(distribution.pick(u).index, 1u) << u;
+}
+
 }  // namespace
 }  // namespace isotrace

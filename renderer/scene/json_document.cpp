@@ -109,11 +109,12 @@ private:
     }
 
     // Counts `bytes` more of the tree (about to be allocated) and charges the budget ahead when they pass what it
-    // was charged with.
+    // was charged with: by as much again as is used so far, at most kChargeStep, so that a small document is not
+    // charged for more than twice its size.
     void account(std::uint64_t bytes) {
         used_ += bytes;
         if (!memory_ || used_ <= charged_) return;
-        const std::uint64_t step = std::max(kChargeStep, used_ - charged_);
+        const std::uint64_t step = std::max(std::min(kChargeStep, used_), used_ - charged_);
         memory_->charge(step, "the parsed document (" + std::to_string(values_) + " values so far)", here());
         charged_ += step;
     }

@@ -1,5 +1,6 @@
 #include "renderer/scene/render_scene.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -109,6 +110,10 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const Ray fields{{alone(ray.origin.x), alone(ray.origin.y), alone(ray.origin.z)},
                      {alone(ray.direction.x), alone(ray.direction.y), alone(ray.direction.z)},
                      alone(ray.t_near), alone(ray.t_far)};
+    if (!is_traceable(fields)) [[unlikely]] {
+        count_untraceable_rays(1);
+        return std::nullopt;
+    }
     set_embree_ray(query.ray, fields);
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -147,10 +152,35 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
                       query.hit.primID, object.material_of_part(local.part), position_error};
 }
 
+void RenderScene::count_untraceable_rays(std::uint64_t count) {
+    static const int slot = counters::named_counter_slot("rays.untraceable");
+    counters::add_to_named<1>({slot}, {count});
+}
+
+namespace {
+
+// The lanes of `valid` whose rays Embree can trace; the others are counted.
+template <class Rays>
+std::array<std::int32_t, 8> traceable_lanes(const std::int32_t* valid, const Rays& rays) {
+    alignas(32) std::array<std::int32_t, 8> traceable;
+    int untraceable = 0;
+    for (int lane = 0; lane < 8; ++lane) {
+        const bool ok = is_traceable(rays.org_x[lane], rays.org_y[lane], rays.org_z[lane], rays.dir_x[lane],
+                                     rays.dir_y[lane], rays.dir_z[lane], rays.tnear[lane], rays.tfar[lane]);
+        traceable[std::size_t(lane)] = valid[lane] != 0 && ok ? -1 : 0;
+        untraceable += valid[lane] != 0 && !ok;
+    }
+    if (untraceable) [[unlikely]] RenderScene::count_untraceable_rays(std::uint64_t(untraceable));
+    return traceable;
+}
+
+}  // namespace
+
 void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    rtcIntersect8(valid, scene_, &context, &query);
+    alignas(32) const std::array<std::int32_t, 8> traceable = traceable_lanes(valid, query.ray);  // others miss
+    rtcIntersect8(traceable.data(), scene_, &context, &query);
     // Counted per packet, without branches where every object counts in one slot (counting lane by lane chains
     // stores and loads of the same counter, and the branches on the lanes mispredict).
     int rays = 0, hits = 0;
@@ -172,7 +202,10 @@ void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query,
 void RenderScene::occluded_packet(const std::int32_t* valid, RTCRay8& query) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    rtcOccluded8(valid, scene_, &context, &query);
+    alignas(32) const std::array<std::int32_t, 8> traceable = traceable_lanes(valid, query);
+    for (int lane = 0; lane < 8; ++lane)  // an untraceable shadow ray is blocked
+        if (valid[lane] && !traceable[std::size_t(lane)]) query.tfar[lane] = -std::numeric_limits<float>::infinity();
+    rtcOccluded8(traceable.data(), scene_, &context, &query);
     int rays = 0;
     for (int lane = 0; lane < 8; ++lane) rays += valid[lane] != 0;
     counters::count_rays(RayKind::Shadow, std::uint64_t(rays));

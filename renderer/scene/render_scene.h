@@ -90,8 +90,14 @@ public:
     static constexpr float kPositionErrorScale = 64.0f * std::numeric_limits<float>::epsilon();
     // Inline: the path tracer builds a shadow ray just before asking, and through a call the ray went to memory
     // field by field and came back in the 16-byte loads that build Embree's ray, each waiting for those stores.
+    // A ray Embree cannot trace (is_traceable, renderer/embree/embree_ray.h) misses, and a shadow ray of that kind
+    // is blocked: no light arrives along it. Both are counted (count_untraceable_rays).
     bool occluded(const Ray& ray) const {
         counters::count_ray(RayKind::Shadow);
+        if (!is_traceable(ray)) [[unlikely]] {
+            count_untraceable_rays(1);
+            return true;
+        }
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         RTCRay query;
@@ -124,6 +130,9 @@ public:
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
     const BuildStatistics& build_statistics() const { return build_statistics_; }
     Bounds3f bounds() const;
+
+    // The "rays.untraceable" counter: rays answered without Embree.
+    static void count_untraceable_rays(std::uint64_t count);
 
 private:
     RTCScene scene_ = nullptr;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "geometry/mesh/triangle_mesh_shape.h"
@@ -107,6 +108,74 @@ TEST(RenderScene, OcclusionAgreesWithIntersection) {
         Ray ray = ray_between(origin, target - origin);
         ray.t_far = 1.0f;
         EXPECT_EQ(scene->occluded(ray), scene->intersect(ray, RayKind::Shadow).has_value()) << i;
+    }
+}
+
+// Rays Embree cannot trace: each would abort the process inside Embree (its ray.valid() assertion).
+std::vector<Ray> untraceable_rays() {
+    constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    const Ray down = ray_between({0, 4, 0}, {0, -1, 0});
+    std::vector<Ray> rays(8, down);
+    rays[0].origin.x = 1e19f;                  // beyond Embree's FLT_LARGE
+    rays[1].origin.y = kInfinity;
+    rays[2].direction = {0, 0, 0};
+    rays[3].direction.z = kNan;
+    rays[4].direction.x = 3e18f;
+    rays[5].t_near = 2, rays[5].t_far = 1;     // inverted
+    rays[6].t_near = -1;
+    rays[7].t_far = kNan;
+    return rays;
+}
+
+std::uint64_t untraceable_count() { return counters::totals().named["rays.untraceable"]; }
+
+TEST(RenderScene, UntraceableRaysMissAndTheirShadowRaysAreBlocked) {
+    const auto scene = mixed_scene();
+    const Ray down = ray_between({0, 4, 0}, {0, -1, 0});
+    ASSERT_TRUE(is_traceable(down));
+    ASSERT_TRUE(scene->intersect(down, RayKind::Camera).has_value());
+    const std::uint64_t before = untraceable_count();
+    const std::vector<Ray> rays = untraceable_rays();
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        EXPECT_FALSE(is_traceable(rays[i])) << i;
+        EXPECT_FALSE(scene->intersect(rays[i], RayKind::Secondary).has_value()) << i;
+        EXPECT_TRUE(scene->occluded(rays[i])) << i;
+    }
+    EXPECT_EQ(untraceable_count() - before, 2 * rays.size());
+}
+
+TEST(RenderScene, UntraceableLanesOfPacketsMissAndAreBlocked) {
+    RenderScene scene;
+    scene.add_object(make_object("floor", floor_quad(), Transform()));
+    scene.commit();
+    const std::vector<Ray> bad = untraceable_rays();
+    const Ray down = ray_between({0, 4, 0}, {0, -1, 0});
+    for (std::size_t bad_lane = 0; bad_lane < 8; ++bad_lane) {
+        alignas(32) RTCRayHit8 query{};
+        alignas(32) RTCRay8 shadow{};
+        alignas(32) std::int32_t valid[8];
+        for (std::size_t lane = 0; lane < 8; ++lane) {
+            const Ray& ray = lane == bad_lane ? bad[bad_lane] : down;
+            for (auto* rays : {&query.ray, &shadow}) {
+                rays->org_x[lane] = ray.origin.x, rays->org_y[lane] = ray.origin.y, rays->org_z[lane] = ray.origin.z;
+                rays->dir_x[lane] = ray.direction.x, rays->dir_y[lane] = ray.direction.y;
+                rays->dir_z[lane] = ray.direction.z;
+                rays->tnear[lane] = ray.t_near, rays->tfar[lane] = ray.t_far;
+                rays->mask[lane] = ~0u;
+            }
+            query.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+            query.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+            valid[lane] = -1;
+        }
+        const std::uint64_t before = untraceable_count();
+        scene.intersect_packet(valid, query, RayKind::Camera);
+        scene.occluded_packet(valid, shadow);
+        EXPECT_EQ(untraceable_count() - before, 2u) << bad_lane;
+        for (std::size_t lane = 0; lane < 8; ++lane) {
+            EXPECT_EQ(query.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID, lane == bad_lane) << bad_lane << " " << lane;
+            EXPECT_EQ(shadow.tfar[lane], -std::numeric_limits<float>::infinity()) << bad_lane << " " << lane;
+        }
     }
 }
 

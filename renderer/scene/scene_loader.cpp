@@ -11,6 +11,7 @@
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
 #include "renderer/scene/transform_parser.h"
+#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -175,6 +176,7 @@ void load_content(const SceneNode& root, const SceneOverrides& overrides, Render
         if (auto tessellate = node.optional_object("tessellate"))
             object.shape = tessellated_shape(std::move(object.shape), *tessellate);
         if (overrides.replace_shape) object.shape = overrides.replace_shape(std::move(object.shape));
+        check_object_within_world(node, *object.shape, object.to_world);
         object.part_materials = resolve_part_materials(*object.shape, scene);
         node.finish();
         scene.add_object(std::move(object));

@@ -60,8 +60,15 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
     // In pieces: OpenColorIO converts through a buffer of four floats per pixel of the piece it is given.
     for (std::size_t first = 0; first < count; first += kColourConversionPixels)
         colours.to_working(rgb.data() + first * 3, std::min(kColourConversionPixels, count - first), 3, space);
-    for (float v : rgb)
-        if (!std::isfinite(v)) throw fail("image contains NaN or infinite values");
+    // Texels are light (environment maps) or colours: a negative one would subtract light from the image.
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        if (!std::isfinite(rgb[i])) throw fail("image contains NaN or infinite values");
+        if (rgb[i] < 0)
+            throw fail("texel (" + std::to_string(i / 3 % std::size_t(header.width)) + ", " +
+                       std::to_string(i / 3 / std::size_t(header.width)) + ") is negative (" + std::to_string(rgb[i]) +
+                       ") in the working space " + colours.working_space() +
+                       "; texels must be >= 0 (a colour outside the working space's gamut turns negative)");
+    }
     return std::shared_ptr<const ImageTexture>(new ImageTexture(header.width, header.height, std::move(rgb), space));
 }
 

@@ -685,7 +685,7 @@ case_bad_scene_ill_conditioned_transform() {  # Embree asserted (exit 134)
 }
 
 case_bad_scene_huge_light_power() {
-  bad_scene 6 '  "lights": [ { "type": "point", "position": [0, 3, -3], "intensity": 1e38 } ],' 6 "lights[0]" "power"
+  bad_scene 6 '  "lights": [ { "type": "point", "position": [0, 3, -3], "intensity": 1e30 } ],' 6 "lights[0]" "power"
 }
 
 case_bad_scene_negative_intensity() {
@@ -1750,7 +1750,7 @@ case_geometry_abm_far_control_point() {  # control points at 1e100 made the tess
   write_geometry_scene "$work/s" '{"type": "abm_patch", "boundary": [{"points": [[0, 0, 0], [1e100, 0, 0]]},
    {"points": [[1e100, 0, 0], [0, 1e100, 0]]}, {"points": [[0, 1e100, 0], [0, 0, 0]]}]}'
   cli_expect 2 info "$work/s/scene.json"
-  expect_in "$work/stderr" "scene.json:4:99: objects[0].shape.boundary[0].points[1]: control point beyond 1e18 from the origin"
+  expect_in "$work/stderr" "scene.json:4:99: objects[0].shape.boundary[0].points[1]: control point lies beyond 1e18 from the origin"
 }
 
 # The tessellation's peak memory per triangle is charged before each refinement round: a uniform 8-sided patch of
@@ -1856,6 +1856,103 @@ PY
   write_geometry_scene "$work/b" '{"type": "mesh", "file": "patches.bpt"}'
   run_peak 0 render "$work/b/scene.json" --max-memory 1G --res 4x4 --quiet -o "$work/b.exr"
   expect_peak_below 1024
+}
+
+# ---- finite world and numeric failures -------------------------------------------------------------------
+
+case_world_camera_beyond_limit() {  # each aborted the process inside Embree (exit 134)
+  local look='"look_at": { "eye": [0, 0, -5], "target": [0, 0, 0] }'
+  bad_scene 4 '  "camera": { "type": "perspective", "look_at": { "eye": [1e19, 0, -5], "target": [0, 0, 0] } },' 4 \
+    "camera.look_at.eye" "1e18"
+  cli_expect 2 depth "$work/scene/scene.json" -o "$work/range.png"
+  expect_in "$work/stderr" "camera.look_at.eye" stderr
+  expect_no_file "$work/range.png"
+  bad_scene 4 "  \"camera\": { \"type\": \"perspective\", \"aperture_radius\": 1e19, $look }," 4 \
+    "camera.aperture_radius" "1e+18"
+  bad_scene 4 '  "camera": { "type": "perspective", "transform": { "translate": [0, 0, 1e30] } },' 4 \
+    "camera.transform" "1e18"
+  bad_scene 4 '  "camera": { "type": "orthographic", "width": 1e30, "transform": { "translate": [0, 0, 5] } },' 4 \
+    "camera.width" "1e+18"
+}
+
+case_world_light_and_object_beyond_limit() {
+  bad_scene 6 '  "lights": [ { "type": "spot", "position": [1e39, 0, 0], "target": [0, 0, 0] } ],' 6 \
+    "lights[0].position" "1e18"
+  bad_scene 6 '  "lights": [ { "type": "directional", "direction": [0, 0, 0] } ],' 6 "lights[0].direction" "non-zero"
+  bad_scene 9 '      "material": "grey", "transform": { "translate": [1e30, 0, 0] },' 9 "objects[0].transform" "1e18"
+  # A mesh 1e30 across: its triangle's area overflowed float in the area distribution (exit 1, no position).
+  awk 'NR == 11 { print "        \"type\": \"mesh\", \"positions\": [[0, 0, 0], [1e30, 0, 0], [0, 1e30, 0]],"; next }
+       NR == 12 { print "        \"triangles\": [[0, 1, 2]]"; next }
+       { print }' "$work/scene/scene.json" >"$work/scene/mesh.json"
+  mv "$work/scene/mesh.json" "$work/scene/scene.json"
+  check_bad_scene "$work/scene" 10 "objects[0].shape" "1e18"
+}
+
+case_emission_overflow() {  # each failed in Distribution1D with exit 1 and no position
+  bad_scene 5 '  "materials": { "grey": { "type": "diffuse", "emission": 1e300 } },' 5 "materials.grey.emission" "1e30"
+  bad_scene 5 '  "materials": { "grey": { "type": "emissive", "radiance": 1e30, "scale": 1e30 } },' 5 \
+    "materials.grey.scale" "1e30"
+  bad_scene 6 '  "lights": [ { "type": "environment", "radiance": 1e30, "scale": 1e30 } ],' 6 "lights[0].scale" "1e30"
+  bad_scene 3 '  "film": { "resolution": [16, 16], "spp": 1 }, "integrator": { "type": "preview", "ambient": 1e300 },' 3 \
+    "integrator.ambient" "1e30"  # rendered black (inf times 0)
+}
+
+case_light_power_of_a_large_scene() {  # pi R^2 L of lights at infinity overflowed float: exit 1, no position
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/base.json"
+  awk 'NR == 6 { print "  \"lights\": [ { \"type\": \"environment\", \"radiance\": 1e20 }, { \"type\": \"directional\", \"direction\": [0, -1, 0], \"irradiance\": 1e20 } ],"; next }
+       NR == 12 { print "        \"radius\": 1, \"center\": [0, 0, 0] } }, { \"material\": \"grey\", \"shape\": { \"type\": \"sphere\", \"center\": [9e17, 0, 0], \"radius\": 1e17"; next }
+       { print }' "$work/scene/base.json" >"$work/scene/scene.json"
+  cli_expect 0 render "$work/scene/scene.json" -o "$work/out.exr" --quiet
+}
+
+case_environment_map_overflow() {  # failed in Distribution1D with exit 1 and no position
+  mkdir -p "$work/scene"
+  # Radiance RGBE, 4x2 texels of mantissa 128 and exponent 255: 1.7e38 each.
+  python3 - "$work/scene/huge.hdr" <<'PY'
+import sys
+with open(sys.argv[1], "wb") as f:
+    f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n" + bytes([128, 128, 128, 255]) * 8)
+PY
+  oiiotool --pattern constant:color=3e38,3e38,3e38 4x2 3 -d float -o "$work/scene/huge.exr" ||
+    fail "oiiotool could not write the test map"
+  for map in huge.hdr huge.exr; do
+    bad_scene 6 "  \"lights\": [ { \"type\": \"environment\", \"file\": \"$map\" } ]," 6 "lights[0].file" "1e30"
+  done
+}
+
+case_negative_texels() {  # an environment map with negative pixels gave negative beauty pixels
+  mkdir -p "$work/scene"
+  oiiotool --pattern constant:color=0.5,-0.25,0.5 4x2 3 -d float -o "$work/scene/negative.exr" ||
+    fail "oiiotool could not write the test map"
+  bad_scene 6 '  "lights": [ { "type": "environment", "file": "negative.exr" } ],' 6 "lights[0].file" "negative"
+  expect_in "$work/stderr" "negative.exr" stderr
+  bad_scene 5 '  "materials": { "grey": { "type": "diffuse", "reflectance": { "texture": "negative.exr" } } },' 5 \
+    "materials.grey.reflectance" "negative"
+}
+
+case_tiny_roughness_no_nan() {  # roughness 1e-5 under an environment made a third of the samples NaN
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/base.json"
+  awk -v sky="$PWD/scenes/data/sky.exr" '
+    NR == 3 { print "  \"film\": { \"resolution\": [16, 16], \"spp\": 1 }, \"integrator\": { \"type\": \"path\" },"; next }
+    NR == 5 { print "  \"materials\": { \"grey\": { \"type\": \"conductor\", \"metal\": \"Au\", \"roughness\": 1e-5 } },"; next }
+    NR == 6 { print "  \"lights\": [ { \"type\": \"environment\", \"file\": \"" sky "\" } ],"; next }
+    { print }' "$work/scene/base.json" >"$work/scene/scene.json"
+  cli_expect 0 render "$work/scene/scene.json" --spp 4 -o "$work/out.exr"
+  grep -qE "NaN/Inf +0 samples" "$work/stderr" || { show_output; fail "samples were NaN"; }
+}
+
+case_depth_non_finite_range() {  # wrote a black PNG with exit 0
+  mkdir -p "$work/scene"
+  write_base_scene "$work/scene/scene.json"
+  cli_expect 2 depth "$work/scene/scene.json" -o "$work/range.png" --near -inf --far inf
+  expect_in "$work/stderr" "--near: must be a finite depth" stderr
+  cli_expect 2 depth "$work/scene/scene.json" -o "$work/range.png" --near 1 --far 1e39
+  expect_in "$work/stderr" "--far: must be a finite depth" stderr
+  cli_expect 2 depth "$work/scene/scene.json" -o "$work/range.png" --near nan
+  expect_in "$work/stderr" "--near" stderr
+  expect_no_file "$work/range.png"
 }
 
 # ---- dispatch --------------------------------------------------------------------------------------------

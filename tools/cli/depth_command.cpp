@@ -67,6 +67,9 @@ int run_depth(const DepthArguments& args) {
         outputs.push_back({args.exr, "--exr"});
     }
     check_output_paths(outputs, {{args.scene, "the scene"}});
+    // Depths are single-precision floats: an infinite end (or one beyond float's range) maps every depth to one grey.
+    if (args.near && !std::isfinite(float(*args.near))) throw InputError({}, "--near", "must be a finite depth");
+    if (args.far && !std::isfinite(float(*args.far))) throw InputError({}, "--far", "must be a finite depth");
     if (args.near && args.far && !(*args.near < *args.far))
         throw InputError({}, "--far", "must be greater than --near");
     // A missing image module fails now, not after the depth map.
