@@ -1512,6 +1512,18 @@ case_checkpoint_lost_is_a_failure() {  # "wrote checkpoint" used to follow "no c
   expect_no_partial_files "$work"
 }
 
+case_max_memory_every_command() {  # mesh, depth and deform had no limit but 80 % of physical memory
+  cli_expect 2 deform scenes/data/teapot.bpt scenes/sweeps/teapot_pull.json -o "$work/t.ply" --max-memory 2M
+  expect_in "$work/stderr" "more than the memory limit of 2.1 MB" stderr
+  cli_expect 2 mesh scenes/metacube_dog.json --max-memory 1M -o "$work/m.ply"
+  expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
+  cli_expect 2 depth "$cornell" --max-memory 1M --res 1024x1024 -o "$work/d.png"
+  expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
+  expect_no_file "$work/t.ply"
+  expect_no_file "$work/m.ply"
+  expect_no_file "$work/d.png"
+}
+
 case_bench_filter_bounded() {  # 40,000 nested parentheses overflowed the regex compiler's stack
   cli_expect 2 bench --quick --filter "$(printf '(%.0s' $(seq 1 40000))x$(printf ')%.0s' $(seq 1 40000))"
   expect_in "$work/stderr" "longer than 256 characters" stderr

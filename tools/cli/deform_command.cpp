@@ -14,6 +14,7 @@
 #include "tools/cli/obj_writer.h"
 #include "tools/cli/ply_writer.h"
 #include "tools/cli/thread_limit.h"
+#include "tools/cli/memory_limit_option.h"
 
 namespace isotrace::cli {
 namespace {
@@ -22,6 +23,7 @@ struct DeformArguments {
     std::string mesh;
     std::string deformers;
     std::string output;
+    std::string max_memory;
     int threads = 0;
     bool quiet = false;
 };
@@ -32,7 +34,8 @@ int run_deform(const DeformArguments& args) {
         throw InputError({}, "--output", "\"" + args.output + "\" must end in .ply or .obj");
     check_output_paths({{args.output, "--output"}}, {{args.mesh, "the mesh"}, {args.deformers, "the deformer file"}});
     const ThreadLimit limit(args.threads);
-    const auto memory = std::make_shared<MemoryBudget>();
+    const std::optional<std::uint64_t> limit_bytes = max_memory_bytes(args.max_memory);
+    const auto memory = limit_bytes ? std::make_shared<MemoryBudget>(*limit_bytes) : std::make_shared<MemoryBudget>();
     TriangleMeshData mesh = load_mesh_file(args.mesh, *memory);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh, memory);
@@ -61,6 +64,7 @@ CommandRunner add_deform_command(CLI::App& app) {
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", args->output, "Deformed mesh, .ply (binary) or .obj")->required();
     add_threads_option(*command, args->threads);
+    add_max_memory_option(*command, args->max_memory);
     command->add_flag("-q,--quiet", args->quiet, "No statistics on stderr");
     return [args] { return run_deform(*args); };
 }

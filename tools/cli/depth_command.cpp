@@ -13,6 +13,7 @@
 #include "renderer/render/depth_map.h"
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/memory_limit_option.h"
 
 namespace isotrace::cli {
 namespace {
@@ -23,6 +24,7 @@ struct DepthArguments {
     std::string exr;
     std::optional<double> near, far;
     std::string resolution;
+    std::string max_memory;
     int threads = 0;
     bool near_dark = false;
     bool quiet = false;
@@ -77,6 +79,7 @@ int run_depth(const DepthArguments& args) {
     if (!args.exr.empty()) image_encoder_for(args.exr);
     SceneOverrides overrides;
     if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
+    overrides.max_memory_bytes = max_memory_bytes(args.max_memory);
 
     const int threads = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
@@ -117,6 +120,7 @@ CommandRunner add_depth_command(CLI::App& app) {
                       "Read eq. 11's Z as the depth: near = black (0), far and background = white (255)");
     command->add_option("--exr", args->exr, "Also write the raw view depth Z (world units, inf = no hit) as EXR");
     command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
+    add_max_memory_option(*command, args->max_memory);
     command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
     command->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
     return [args] { return run_depth(*args); };

@@ -23,12 +23,13 @@
 #include "tools/cli/object_field.h"
 #include "tools/cli/ply_writer.h"
 #include "tools/cli/thread_limit.h"
+#include "tools/cli/memory_limit_option.h"
 
 namespace isotrace::cli {
 namespace {
 
 struct MeshArguments {
-    std::string scene, object, output;
+    std::string scene, object, output, max_memory;
     std::string method = "dc";
     int depth = 6;
     std::vector<double> origin;
@@ -101,7 +102,9 @@ int run_mesh(const MeshArguments& args) {
     const bool traced = args.method == "traced";
     const std::optional<PolygonizeOptions> options = traced ? std::nullopt : std::optional(options_from(args));
     const ThreadLimit limit(args.threads);
-    const std::unique_ptr<LoadedScene> scene = load_scene(args.scene);
+    SceneOverrides overrides;
+    overrides.max_memory_bytes = max_memory_bytes(args.max_memory);
+    const std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
     check_output_paths({{args.output, "--output"}}, scene_inputs(*scene));
     ObjectField chosen = args.object.empty() ? only_implicit_object(*scene->scene, args.scene)
                                              : ObjectField{&find_object(*scene->scene, args.object, args.scene), nullptr};
@@ -199,6 +202,7 @@ CommandRunner add_mesh_command(CLI::App& app) {
         ->check(CLI::Range(std::size_t(1), std::size_t(10000000)));
     command->add_option("-o,--output", args->output, "Mesh file: .ply (binary) or .obj, in world space")->required();
     add_threads_option(*command, args->threads);
+    add_max_memory_option(*command, args->max_memory);
     command->add_flag("-q,--quiet", args->quiet, "No summary");
     return [args] { return run_mesh(*args); };
 }

@@ -24,6 +24,7 @@
 #include "tools/cli/render_distribution.h"
 #include "tools/cli/render_statistics.h"
 #include "tools/cli/thread_limit.h"
+#include "tools/cli/memory_limit_option.h"
 
 namespace isotrace::cli {
 namespace {
@@ -220,7 +221,7 @@ int run_render(const RenderArguments& args) {
     if (!args.seed.empty()) overrides.seed = parse_seed(args.seed, "--seed");
     const std::optional<double> time_budget =
         args.time_budget.empty() ? std::nullopt : std::optional<double>(parse_seconds(args.time_budget, "--time"));
-    if (!args.max_memory.empty()) overrides.max_memory_bytes = parse_memory_size(args.max_memory, "--max-memory");
+    overrides.max_memory_bytes = max_memory_bytes(args.max_memory);
     if (!args.max_scene_size.empty())
         overrides.max_scene_file_bytes = parse_memory_size(args.max_scene_size, "--max-scene-size");
     if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
@@ -408,9 +409,7 @@ CommandRunner add_render_command(CLI::App& app) {
                         "to an uninterrupted render); goes on checkpointing to it unless --checkpoint says otherwise")
         ->check(CLI::ExistingFile);
     add_reference_options(*command, args->reference, args->target_error);
-    command->add_option("--max-memory", args->max_memory,
-                        "Refuse scenes whose estimated memory exceeds this: bytes with K/M/G/T, or a percentage of "
-                        "physical memory (default: 80%)");
+    add_max_memory_option(*command, args->max_memory);
     command->add_option("--max-scene-size", args->max_scene_size,
                         "Refuse scene files larger than this (bytes with K/M/G; default: 64M)");
     command->add_option("--tile-size", args->tile_size, "Tile edge in pixels (does not change the image)")
