@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "renderer/math/box_corner.h"
 #include "renderer/plugin/shape.h"
 
 namespace isotrace {
@@ -43,10 +44,8 @@ void check_reach_within_world(const SceneNode& node, const std::string& key, con
 void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world) {
     const Bounds3f local = shape.bounds();
     if (local.empty()) return;
-    const auto corner = [&](int i) {
-        return Vec3d(i & 1 ? local.upper.x : local.lower.x, i & 2 ? local.upper.y : local.lower.y,
-                     i & 4 ? local.upper.z : local.lower.z);
-    };
+    const Vec3d lower(local.lower.x, local.lower.y, local.lower.z), upper(local.upper.x, local.upper.y, local.upper.z);
+    const auto corner = [&](int i) { return box_corner(lower, upper, i); };
     for (int i = 0; i < 8; ++i)  // the shape's own parameters first (a tube radius, a vertex), then its placement
         if (!within_world(corner(i))) object.fail_at("shape", beyond_world_problem("the shape"));
     for (int i = 0; i < 8; ++i)

@@ -1524,6 +1524,18 @@ case_max_memory_every_command() {  # mesh, depth and deform had no limit but 80 
   expect_no_file "$work/d.png"
 }
 
+case_control_characters_escaped() {  # a scene's description and object names reached the terminal raw
+  sed 's/"name": "dog"/"name": "d\\u001b[2Jog"/; s/"description": "Kim/"description": "\\u001b]0;pwned\\u0007Kim/' \
+    scenes/metacube_dog.json >"$work/dog.json"
+  sed -i 's|"file": "|"file": "'"$PWD"'/scenes/|' "$work/dog.json"
+  cli_expect 0 info "$work/dog.json"
+  if grep -q $'\x1b' "$work/stdout"; then fail "info printed an escape character"; fi
+  expect_in "$work/stdout" '\x1b]0;pwned\x07Kim' stdout
+  cli_expect 0 mesh "$work/dog.json" --object $'d\x1b[2Jog' --depth 3 -o "$work/dog.ply"
+  if grep -q $'\x1b' "$work/stdout"; then fail "mesh printed an escape character"; fi
+  expect_in "$work/stdout" 'd\x1b[2Jog' stdout
+}
+
 case_bench_filter_bounded() {  # 40,000 nested parentheses overflowed the regex compiler's stack
   cli_expect 2 bench --quick --filter "$(printf '(%.0s' $(seq 1 40000))x$(printf ')%.0s' $(seq 1 40000))"
   expect_in "$work/stderr" "longer than 256 characters" stderr
