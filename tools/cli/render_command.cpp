@@ -277,6 +277,7 @@ int run_render(const RenderArguments& args) {
         } catch (const std::invalid_argument& error) {
             throw InputError({args.resume}, "", std::string("the checkpoint does not fit this film: ") + error.what());
         }
+        std::string().swap(resume->film_state);  // as large as the film it now lives in: not kept for the render
     }
     PhaseTimes times;
     times.parse = scene->parse_seconds;
