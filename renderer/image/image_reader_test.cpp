@@ -147,6 +147,26 @@ TEST(ImageReader, FilesThatDoNotStartLikeTheirExtensionsFormatAreRefusedBeforeAn
     EXPECT_EQ(message(directory / "image").rfind("cannot read image: the file name has no extension (.exr, ", 0), 0u);
 }
 
+// libpng allocates a text chunk's declared length before reading it: 2 GB for a 764-byte file.
+TEST(ImageReader, APngChunkLongerThanTheFileIsRefusedBeforeLibpngAllocatesIt) {
+    const testing::TemporaryDirectory directory("image_reader");
+    const auto png = directory / "small.png";
+    write_grey8_image(png, 2, 2, {1, 2, 3, 4}, {});
+    std::string bytes = testing::read_file(png);
+    const std::string huge_text("\x74\x75\x65\x65tEXtabc", 11);  // 1953850725 bytes claimed, 3 present
+    bytes.insert(8 + 25, huge_text);  // after the signature and IHDR
+    const auto corrupt = directory.write("corrupt.png", bytes);
+    try {
+        read_image_file(corrupt);
+        ADD_FAILURE() << "the corrupt PNG was read";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.location().file, corrupt.string());
+        EXPECT_NE(error.problem().find("the \"tEXt\" chunk at byte 33 claims 1953850725 bytes"), std::string::npos)
+            << error.what();
+    }
+    EXPECT_NO_THROW(read_image_file(png));
+}
+
 TEST(ImageReader, AMissingImageModuleIsAnErrorNamingIt) {
     const testing::TemporaryDirectory directory("image_reader");
     const auto expect_error = [](const std::function<void()>& load, const std::string& expected) {
