@@ -41,4 +41,10 @@ std::uint64_t decoding_bytes_per_pixel(const ImageHeader& header) {
     return header.channel_names.size() * sizeof(float) + 2 * stored;
 }
 
+void charge_image_module(MemoryBudget& memory, const std::filesystem::path& file) {
+    if (!image_codec_loaded())
+        memory.charge(kImageModuleResidentBytes, "the image module that reads it (OpenImageIO's libraries)",
+                      {file.string(), 0, 0});
+}
+
 }  // namespace isotrace

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "renderer/core/memory_budget.h"
 #include "renderer/image/image_codec.h"
 
 namespace isotrace {
@@ -19,5 +20,9 @@ DecodedImage read_image_file(const std::filesystem::path& path, const BeforePixe
 // Resident bytes per pixel that read_image_file needs at its peak for an image with this header: the float pixels
 // it returns and the decoder's own buffers (measured per format, docs/reliability.md).
 std::uint64_t decoding_bytes_per_pixel(const ImageHeader& header);
+
+// Charges the image module's libraries (kImageModuleResidentBytes) to `memory` unless the module is loaded already,
+// for the first image read under a budget; `file` is named if that does not fit.
+void charge_image_module(MemoryBudget& memory, const std::filesystem::path& file);
 
 }  // namespace isotrace

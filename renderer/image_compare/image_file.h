@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/core/memory_budget.h"
 #include "renderer/image/image_metadata.h"
 
 namespace isotrace {
@@ -21,7 +22,10 @@ struct ImageFile {
     std::optional<std::array<float, 8>> chromaticities;
 };
 
-// The first subimage, all channels, as float. Throws InputError naming the file when it cannot be read.
-ImageFile read_image_for_comparison(const std::string& path);
+// The first subimage, all channels, as float. Decoding and `work_bytes_per_pixel` more (what the comparison will
+// take) are charged to `memory` before any pixel is read. Throws InputError naming the file when it cannot be read
+// or does not fit.
+ImageFile read_image_for_comparison(const std::string& path, MemoryBudget& memory,
+                                    std::uint64_t work_bytes_per_pixel = 0);
 
 }  // namespace isotrace

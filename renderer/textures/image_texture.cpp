@@ -35,9 +35,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
                       "the " + std::to_string(header.width) + "x" + std::to_string(header.height) + " image",
                       {path.string(), 0, 0});
     };
-    if (!image_codec_loaded())  // before it is loaded
-        memory.charge(kImageModuleResidentBytes, "the image module that reads it (OpenImageIO's libraries)",
-                      {path.string(), 0, 0});
+    charge_image_module(memory, path);
     DecodedImage image = read_image_file(path, charge);
     const ImageHeader& header = image.header;
 

@@ -1512,16 +1512,22 @@ case_checkpoint_lost_is_a_failure() {  # "wrote checkpoint" used to follow "no c
   expect_no_partial_files "$work"
 }
 
-case_max_memory_every_command() {  # mesh, depth and deform had no limit but 80 % of physical memory
+case_max_memory_every_command() {  # mesh, depth, deform and diff had no limit but 80 % of physical memory
   cli_expect 2 deform scenes/data/teapot.bpt scenes/sweeps/teapot_pull.json -o "$work/t.ply" --max-memory 2M
   expect_in "$work/stderr" "more than the memory limit of 2.1 MB" stderr
   cli_expect 2 mesh scenes/metacube_dog.json --max-memory 1M -o "$work/m.ply"
   expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
   cli_expect 2 depth "$cornell" --max-memory 1M --res 1024x1024 -o "$work/d.png"
   expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
+  cli_expect 0 render "$cornell" --res 512x512 --spp 1 --quiet -o "$work/a.exr"
+  cli_expect 0 render "$cornell" --res 512x512 --spp 1 --seed 2 --quiet -o "$work/b.exr"
+  cli_expect 2 diff "$work/a.exr" "$work/b.exr" --max-memory 150M --json "$work/diff.json"
+  expect_in "$work/stderr" "comparing the 512x512 image" stderr
+  cli_expect 0 diff "$work/a.exr" "$work/b.exr" --max-memory 250M
   expect_no_file "$work/t.ply"
   expect_no_file "$work/m.ply"
   expect_no_file "$work/d.png"
+  expect_no_file "$work/diff.json"
 }
 
 case_control_characters_escaped() {  # a scene's description and object names reached the terminal raw

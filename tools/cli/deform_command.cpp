@@ -34,8 +34,8 @@ int run_deform(const DeformArguments& args) {
         throw InputError({}, "--output", "\"" + args.output + "\" must end in .ply or .obj");
     check_output_paths({{args.output, "--output"}}, {{args.mesh, "the mesh"}, {args.deformers, "the deformer file"}});
     const ThreadLimit limit(args.threads);
-    const std::optional<std::uint64_t> limit_bytes = max_memory_bytes(args.max_memory);
-    const auto memory = limit_bytes ? std::make_shared<MemoryBudget>(*limit_bytes) : std::make_shared<MemoryBudget>();
+    const auto memory = std::make_shared<MemoryBudget>(
+        max_memory_bytes(args.max_memory).value_or(MemoryBudget::default_limit_bytes()));
     TriangleMeshData mesh = load_mesh_file(args.mesh, *memory);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh, memory);
