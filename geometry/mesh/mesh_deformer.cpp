@@ -77,7 +77,8 @@ MemoryReservation check_mesh_deformers(const SceneNode& list, const TriangleMesh
 }
 
 DeformerFile::DeformerFile(const std::string& path, std::shared_ptr<MemoryBudget> memory)
-    : document_(parse_json_file(path)), root_(document_, "", file_context(path, std::move(memory))) {
+    : document_(parse_json_file(path, kDefaultMaxJsonFileBytes, memory.get())),
+      root_(document_, "", file_context(path, std::move(memory))) {
     if (!document_.is_object()) root_.fail("expected an object {\"deformers\": [...]}");
     list_ = root_.optional_value("deformers");
     if (!list_) root_.fail("missing \"deformers\"");

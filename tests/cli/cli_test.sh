@@ -1519,6 +1519,11 @@ case_max_memory_every_command() {  # mesh, depth, deform and diff had no limit b
   expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
   cli_expect 2 depth "$cornell" --max-memory 1M --res 1024x1024 -o "$work/d.png"
   expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
+  python3 -c 'import sys; sys.stdout.write("{\"deformers\": [], \"padding\": [" + ",".join(["0"] * 3000000) + "]}")' \
+    >"$work/padded.json"
+  cli_expect 2 deform scenes/data/bunny.obj "$work/padded.json" -o "$work/t.ply" --max-memory 20M
+  expect_in "$work/stderr" "padded.json:1:" stderr
+  expect_in "$work/stderr" "the parsed document" stderr
   cli_expect 0 render "$cornell" --res 512x512 --spp 1 --quiet -o "$work/a.exr"
   cli_expect 0 render "$cornell" --res 512x512 --spp 1 --seed 2 --quiet -o "$work/b.exr"
   cli_expect 2 diff "$work/a.exr" "$work/b.exr" --max-memory 150M --json "$work/diff.json"
