@@ -1,5 +1,5 @@
 #pragma once
-// The fixed workloads of isotrace bench (issue 15): for shipped scenes, primary, shadow and one-bounce diffuse rays
+// The fixed workloads of isotrace bench: for shipped scenes, primary, shadow and one-bounce diffuse rays
 // and the full path tracer, and the polygoniser on metacube_dog. Each workload is named "<scene>/<kind>" (the
 // names --filter matches); each runs once as a warm-up and then `repeats` timed times per thread count.
 // The blob direct-vs-tessellated comparison is a workload of the registry too ("blobs/direct_vs_tessellated")
