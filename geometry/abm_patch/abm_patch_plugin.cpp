@@ -133,8 +133,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         }
     }
     const std::string draw = node.choice_or("draw", "surface", {"surface", "curves"});
-    SourceLocation where = node.json().location;
-    where.file = node.context().file;
+    const SourceLocation where = node.location();
     TriangleMeshData mesh;
     if (draw == "curves") {
         std::vector<const SpaceCurve*> curves;

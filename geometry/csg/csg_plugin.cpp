@@ -18,9 +18,7 @@ MaterialReference parse_child_material(const SceneNode& child) {
     const auto value = child.optional_value("material");
     if (!value) return {};
     if (!value->json().is_string()) value->fail("expected the name of a material from \"materials\"");
-    SourceLocation where = value->json().location;
-    where.file = child.context().file;
-    return {value->json().string, where, value->path()};
+    return {value->json().string, value->location(), value->path()};
 }
 
 CsgChild parse_child(const SceneNode& child) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <limits>
 
 #include "geometry/mesh/vertex_normals.h"
 #include "renderer/core/memory_budget.h"
@@ -12,13 +11,6 @@ namespace isotrace {
 Registry<MeshDeformer>& mesh_deformer_registry() {
     static Registry<MeshDeformer> registry("deformer");
     return registry;
-}
-
-std::uint64_t saturating_sum(std::initializer_list<std::uint64_t> terms) {
-    std::uint64_t sum = 0;
-    for (const std::uint64_t t : terms)
-        if (__builtin_add_overflow(sum, t, &sum)) return std::numeric_limits<std::uint64_t>::max();
-    return sum;
 }
 
 namespace {
@@ -70,10 +62,8 @@ MemoryReservation check_mesh_deformers(const SceneNode& list, const TriangleMesh
                   std::to_string(vertices) + " vertices need about " + figures +
                   " (a step: one sweep sample for one vertex, or one operation of a sweep's solve)");
     }
-    SourceLocation where = list.json().location;
-    where.file = list.context().file;
     return MemoryReservation(*list.context().memory, peak_bytes, "deforming " + std::to_string(vertices) + " vertices",
-                             where, list.path());
+                             list.location(), list.path());
 }
 
 DeformerFile::DeformerFile(const std::string& path, std::shared_ptr<MemoryBudget> memory)

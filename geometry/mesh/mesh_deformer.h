@@ -3,7 +3,6 @@
 // (`isotrace deform`). They are plugins: each family registers its types here from its own folder (the sweep
 // deformers of geometry/sweep), so the mesh layer never names one.
 #include <cstdint>
-#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,9 +31,6 @@ public:
 };
 
 Registry<MeshDeformer>& mesh_deformer_registry();
-
-// Sum of costs that saturates at UINT64_MAX instead of wrapping (estimates of absurd input stay absurd).
-std::uint64_t saturating_sum(std::initializer_list<std::uint64_t> terms);
 
 // The most steps (MeshDeformer::Cost) a list of deformers may take on its mesh: about two minutes on two cores.
 inline constexpr std::uint64_t kMaxDeformerSteps = 20'000'000'000;

@@ -15,8 +15,6 @@ namespace {
 void add_tubes(const SceneNode& shape, const SceneNode& list, const TriangleMeshData& mesh, bool edited,
                const SweepTessellation& steps, TriangleMeshData& tubes) {
     (void)check_mesh_deformers(list, mesh);  // the bound on the list's work; tubes bind no vertex
-    SourceLocation where = shape.json().location;
-    where.file = shape.context().file;
     const std::uint64_t triangles = steps.triangle_count();
     for (const SceneNode& element : list.elements()) {
         const std::unique_ptr<MeshDeformer> deformer = mesh_deformer_registry().create(element);
@@ -27,7 +25,7 @@ void add_tubes(const SceneNode& shape, const SceneNode& list, const TriangleMesh
                                            "a tube of " + std::to_string(triangles) + " triangles (theta_steps " +
                                                std::to_string(steps.theta_steps) + ", t_steps " +
                                                std::to_string(steps.t_steps) + ")",
-                                           where, shape.path());
+                                           shape.location(), shape.path());
             tubes.append_positions_and_triangles(at_node(element, [&] { return tessellate(sweep, steps); }));
         }
     }

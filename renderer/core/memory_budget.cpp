@@ -57,4 +57,11 @@ std::uint64_t saturating_product(std::initializer_list<std::uint64_t> factors) {
     return product;
 }
 
+std::uint64_t saturating_sum(std::initializer_list<std::uint64_t> terms) {
+    std::uint64_t sum = 0;
+    for (const std::uint64_t t : terms)
+        if (__builtin_add_overflow(sum, t, &sum)) return std::numeric_limits<std::uint64_t>::max();
+    return sum;
+}
+
 }  // namespace isotrace

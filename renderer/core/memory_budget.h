@@ -66,4 +66,7 @@ std::string format_bytes(std::uint64_t bytes);
 // Product of sizes that saturates at UINT64_MAX instead of wrapping (estimates of absurd input stay absurd).
 std::uint64_t saturating_product(std::initializer_list<std::uint64_t> factors);
 
+// Sum of sizes or costs that saturates at UINT64_MAX instead of wrapping, likewise.
+std::uint64_t saturating_sum(std::initializer_list<std::uint64_t> terms);
+
 }  // namespace isotrace

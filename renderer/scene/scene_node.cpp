@@ -61,11 +61,13 @@ const JsonValue& SceneNode::require(const std::string& key) const {
     return *found;
 }
 
-void SceneNode::fail(const std::string& problem) const {
+SourceLocation SceneNode::location() const {
     SourceLocation where = value_->location;
     where.file = context_->file;
-    throw InputError(where, path_, problem);
+    return where;
 }
+
+void SceneNode::fail(const std::string& problem) const { throw InputError(location(), path_, problem); }
 
 void SceneNode::fail_at(const std::string& key, const std::string& problem) const {
     const JsonValue* found = value_->is_object() ? value_->find(key) : nullptr;

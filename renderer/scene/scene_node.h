@@ -54,6 +54,8 @@ public:
 
     const JsonValue& json() const { return *value_; }
     const std::string& path() const { return path_; }
+    // Where the node's value is written: its file, line and column.
+    SourceLocation location() const;
     const SceneFileContext& context() const { return *context_; }
     const std::shared_ptr<const SceneFileContext>& shared_context() const { return context_; }
 

@@ -31,7 +31,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
             {std::uint64_t(header.width), std::uint64_t(header.height),
              decoding_bytes_per_pixel(header) + copy + set_up.per_texel});
         const std::uint64_t rows = saturating_product({std::uint64_t(header.height), set_up.per_row});
-        memory.charge(texels > UINT64_MAX - rows ? UINT64_MAX : texels + rows,
+        memory.charge(saturating_sum({texels, rows}),
                       "the " + std::to_string(header.width) + "x" + std::to_string(header.height) + " image",
                       {path.string(), 0, 0});
     };
