@@ -1,8 +1,7 @@
 #include "renderer/image/image_reader.h"
 
-#include "renderer/core/input_file.h"
-
 #include "renderer/core/input_error.h"
+#include "renderer/core/input_file.h"
 #include "renderer/image/exr_header_check.h"
 #include "renderer/image/image_signature.h"
 #include "renderer/image/png_chunk_check.h"
@@ -25,8 +24,9 @@ std::uint64_t stored_bytes(PixelType type) {
 DecodedImage read_image_file(const std::filesystem::path& path, const BeforePixels& before_pixels) {
     require_regular_input(path);  // a FIFO would block the decoder, a device stream into it
     const std::string format = image_format_of(path);
-    check_exr_header_sizes(path);  // before OpenEXR trusts the sizes a few bytes of header declare
-    check_png_chunk_sizes(path);   // before libpng allocates what a chunk's length declares
+    // Sizes a few bytes of header declare, checked before the library trusts them and allocates.
+    if (format == "openexr") check_exr_header_sizes(path);
+    if (format == "png") check_png_chunk_sizes(path);
     DecodedImage image;
     const std::string problem = image_codec().decode(path, format, before_pixels, image);
     if (!problem.empty()) throw InputError({path.string(), 0, 0}, "", problem);

@@ -44,8 +44,9 @@ EnvironmentLight::EnvironmentLight(std::shared_ptr<const ImageTexture> map, floa
     float brightest = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            brightest = std::max(brightest, map_->texel(x, y).max());
-            lum[std::size_t(y) * std::size_t(width) + std::size_t(x)] = luminance(map_->texel(x, y));
+            const Rgb texel = map_->texel(x, y);
+            brightest = std::max(brightest, texel.max());
+            lum[std::size_t(y) * std::size_t(width) + std::size_t(x)] = luminance(texel);
         }
     // The map's own values are summed in float for its distribution, and the scale multiplies every lookup.
     if (!(brightest <= kMaxEmitted) || !(double(brightest) * scale_ <= kMaxEmitted)) {
