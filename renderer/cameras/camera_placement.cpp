@@ -20,8 +20,7 @@ Transform parse_camera_placement(const SceneNode& node) {
     }
     if (!node.has("transform")) node.fail("a camera needs \"look_at\" or \"transform\"");
     const Transform to_world = parse_optional_transform(node, "transform");
-    if (!within_world(to_world.point(Vec3d(0, 0, 0))))
-        node.fail_at("transform", beyond_world_problem("the camera's position"));
+    check_reach_within_world(node, "transform", to_world, 0, "the camera's position");
     return to_world;
 }
 
