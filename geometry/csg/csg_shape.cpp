@@ -143,7 +143,8 @@ RTCGeometry CsgShape::create_geometry(RTCDevice device) {
 }
 
 LocalShading CsgShape::shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d&) const {
-    return {geometric_normal, geometric_normal, {0, 0}, hit.primID};  // primID: the part (SolidUserGeometry)
+    // primID: the part (SolidUserGeometry)
+    return {.geometric_normal = geometric_normal, .normal = geometric_normal, .part = hit.primID};
 }
 
 std::vector<MaterialReference> CsgShape::part_materials() const {

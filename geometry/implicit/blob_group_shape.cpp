@@ -77,7 +77,7 @@ LocalShading BlobGroupShape::shading(const RTCHit& hit, const Vec3f&, const Vec3
     // face), whose normal the cell's hard cubes give.
     const Vec3f stored(hit.Ng_x, hit.Ng_y, hit.Ng_z);
     const Vec3f normal = stored != Vec3f(0, 0, 0) ? stored : Vec3f(group_.normal_in_cell(hit.primID, point));
-    return {normal, normal};
+    return {.geometric_normal = normal, .normal = normal};
 }
 
 void BlobGroupShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {

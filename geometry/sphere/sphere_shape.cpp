@@ -135,7 +135,7 @@ LocalShading SphereShape::shading(const RTCHit&, const Vec3f& geometric_normal, 
     // Spherical coordinates of the normal, y up: u around the axis, v from the top (0) to the bottom (1).
     const float u = 0.5f + std::atan2(geometric_normal.x, geometric_normal.z) * float(0.5 * std::numbers::inv_pi);
     const float v = std::acos(std::clamp(geometric_normal.y, -1.0f, 1.0f)) * float(std::numbers::inv_pi);
-    return {geometric_normal, geometric_normal, {u, v}};
+    return {.geometric_normal = geometric_normal, .normal = geometric_normal, .uv = {u, v}};
 }
 
 namespace {

@@ -7,12 +7,14 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "renderer/core/input_error.h"
 #include "renderer/math/transform.h"
 #include "renderer/plugin/registry.h"
+#include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
 
@@ -22,6 +24,8 @@ struct LocalShading {
     Vec3f normal;                 // shading normal, unit length
     std::array<float, 2> uv{0, 0};
     std::uint32_t part = 0;       // composite shapes: the part hit, an index into Shape::part_materials()
+    Vec3f dpdu, dpdv;             // derivatives of the point along uv, where the shape has uv (else zero)
+    MaterialBlend blend;          // parts whose materials blend at the hit (Shape::part_materials indices)
 };
 
 // The material a part of a composite shape names (a CSG child's "material"), and where the name is written, so
@@ -54,7 +58,10 @@ struct SurfaceSample {
 // Shading that Embree's hit alone gives: both normals the geometric one (Embree's Ng, normalised) and Embree's
 // barycentric (u, v) as uv, swapped for shapes whose triangles were reversed (see Shape::hit_shading).
 inline LocalShading shading_of_embree_hit(const RTCHit& hit, const Vec3f& geometric_normal, bool swap_uv) {
-    return {geometric_normal, geometric_normal, swap_uv ? std::array{hit.v, hit.u} : std::array{hit.u, hit.v}};
+    LocalShading shading;
+    shading.geometric_normal = shading.normal = geometric_normal;
+    shading.uv = swap_uv ? std::array{hit.v, hit.u} : std::array{hit.u, hit.v};
+    return shading;
 }
 
 // Whether a shape's shading() is shading_of_embree_hit (and with which uv), so that the scene can complete its
@@ -108,6 +115,20 @@ public:
     // Composite shapes whose parts may carry their own materials: one entry per part (LocalShading::part).
     // Empty for shapes of one part, which show the object's material.
     virtual std::vector<MaterialReference> part_materials() const { return {}; }
+
+    // Whether LocalShading::uv is a parametrisation of the surface (meshes with uv, patches, tubes), so that
+    // textures may be mapped by it.
+    virtual bool has_uv() const { return false; }
+    // Implicit shapes: the field whose level set is the surface, in the shape's own space (object space when
+    // instanced, world space when baked), positive inside, for textures that read it. nullopt elsewhere.
+    virtual std::optional<double> field_value(const Vec3d& point) const {
+        (void)point;
+        return std::nullopt;
+    }
+    virtual Vec3d field_gradient(const Vec3d& point) const {
+        (void)point;
+        return {};
+    }
 
 private:
     std::string object_name_;

@@ -148,8 +148,16 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     if (dot(shading_normal, geometric_normal) < 0) shading_normal = -shading_normal;
     const Vec3f position = ray.at(t);
     const float position_error = kPositionErrorScale * (max_component(abs(position)) + t * length(ray.direction));
-    return SurfaceHit{t,        position,         geometric_normal, shading_normal, local.uv, object_index,
-                      query.hit.primID, object.material_of_part(local.part), position_error};
+    return SurfaceHit{.t = t,
+                      .position = position,
+                      .geometric_normal = geometric_normal,
+                      .shading_normal = shading_normal,
+                      .uv = local.uv,
+                      .object_index = object_index,
+                      .primitive_id = query.hit.primID,
+                      .material = object.material_of_part(local.part),
+                      .position_error = position_error,
+                      .object = &object};
 }
 
 void RenderScene::count_untraceable_rays(std::uint64_t count) {

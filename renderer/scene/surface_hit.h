@@ -7,6 +7,16 @@
 namespace isotrace {
 
 class Material;
+struct SceneObject;
+
+// The materials of a hit on a composite surface whose parts blend (blob elements with materials of their own):
+// up to four parts, weights summing to one. count 0: no blend, the hit's material alone.
+struct MaterialBlend {
+    static constexpr int kMaxParts = 4;
+    std::array<std::uint32_t, kMaxParts> part{};
+    std::array<float, kMaxParts> weight{};
+    int count = 0;
+};
 
 // A ray's nearest surface, in world space.
 struct SurfaceHit {
@@ -19,6 +29,12 @@ struct SurfaceHit {
     std::uint32_t primitive_id = 0;
     const Material* material = nullptr;
     float position_error = 0;  // bound on |position - exact hit|, for offsetting secondary rays
+    // For textures and the shading frame:
+    Vec3f dpdu, dpdv;          // world-space derivatives of position along uv; zero where the shape has no uv
+    Vec3f tangent;             // unit, perpendicular to shading_normal: the frame's x axis; zero lets the frame choose
+    float footprint = 0;       // world-space width of the pixel's footprint at the hit (ray cone); 0: a point
+    const SceneObject* object = nullptr;  // the object hit (its shape and placement, for object-space textures)
+    MaterialBlend blend;
 
     // Origin for a ray leaving the surface in `direction`: pushed off along the geometric normal, to the
     // side the ray travels, by the position error bound, so the ray cannot re-hit the surface it left.
