@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "integrators/path/flat_lambertian_packets.h"
+#include "renderer/bsdf/shading_frame.h"
 #include "renderer/bsdf/surface_bsdf.h"
 #include "renderer/plugin/material.h"
 #include "renderer/sampling/sampler.h"
@@ -17,18 +18,17 @@ float power_heuristic(float pdf_a, float pdf_b) {
     return a + b > 0 ? a / (a + b) : 0.0f;
 }
 
-// World <-> local shading frame (z = shading normal).
-struct ShadingFrame {
-    Vec3f tangent, bitangent, normal;
-    explicit ShadingFrame(const Vec3f& n) : normal(n) { orthonormal_basis(n, tangent, bitangent); }
-    Vec3f to_local(const Vec3f& w) const { return {dot(w, tangent), dot(w, bitangent), dot(w, normal)}; }
-    Vec3f to_world(const Vec3f& w) const { return tangent * w.x + bitangent * w.y + normal * w.z; }
-};
-
 // Shading normals bend the hemisphere: a direction the BSDF treats as above the surface may be below the true
 // (geometric) surface, which would leak light through it. Accept a direction only when both normals agree.
 bool sides_agree(const Vec3f& world_direction, const Vec3f& geometric_normal, float local_z) {
     return dot(world_direction, geometric_normal) * local_z > 0;
+}
+
+// The footprint cone of a scattered ray: a mirror or a refraction keeps the incoming spread (the surface's curvature
+// is ignored); a rough lobe spreads the ray over about the solid angle 1/pdf around the sampled direction.
+float scattered_cone_spread(float incoming_spread, const BsdfSample& scattered) {
+    if (scattered.is_delta) return incoming_spread;
+    return std::max(incoming_spread, 1.0f / std::sqrt(scattered.pdf));
 }
 
 class Contributions {
@@ -94,7 +94,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         const SurfaceBsdf bsdf = hit.material->bsdf(hit);
         if (!bsdf.scatters()) break;
 
-        const ShadingFrame frame(hit.shading_normal);
+        const ShadingFrame frame(hit.shading_normal, hit.tangent);
         const Vec3f wo = frame.to_local(towards_viewer);
 
         // Two bounces own four Sobol' blocks, in this order, used or not: the first bounce's light block (a point
@@ -165,7 +165,8 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         previous_was_delta = scattered->is_delta;
         previous_pdf = scattered->pdf;
         previous_point = hit.position;
-        ray = Ray{hit.spawn_origin(direction), direction, 0, std::numeric_limits<float>::infinity()};
+        ray = Ray{hit.spawn_origin(direction), direction, 0, std::numeric_limits<float>::infinity(), hit.footprint,
+                  scattered_cone_spread(ray.cone_spread, *scattered)};
 
         if (depth + 1 >= settings_.russian_roulette_depth) {
             const float survival = std::min(1.0f, throughput.max() * eta_scale);

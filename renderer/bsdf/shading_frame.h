@@ -8,6 +8,25 @@
 
 namespace isotrace {
 
+// World <-> local shading frame: z is the shading normal n, x the given tangent made perpendicular to n (a right-
+// handed frame); a zero tangent (or one along n) lets orthonormal_basis choose x, for isotropic models.
+struct ShadingFrame {
+    Vec3f tangent, bitangent, normal;
+
+    ShadingFrame(const Vec3f& n, const Vec3f& t) : normal(n) {
+        const Vec3f along = t - n * dot(n, t);
+        const float length2 = dot(along, along);
+        if (length2 > 1e-12f) {
+            tangent = along / std::sqrt(length2);
+            bitangent = cross(n, tangent);
+        } else {
+            orthonormal_basis(n, tangent, bitangent);
+        }
+    }
+    Vec3f to_local(const Vec3f& w) const { return {dot(w, tangent), dot(w, bitangent), dot(w, normal)}; }
+    Vec3f to_world(const Vec3f& w) const { return tangent * w.x + bitangent * w.y + normal * w.z; }
+};
+
 inline bool same_hemisphere(const Vec3f& a, const Vec3f& b) { return a.z * b.z > 0; }
 
 // The mirror image of w in the surface plane, for two-sided models that shade on wo's side.

@@ -10,7 +10,11 @@ namespace {
 class OrthographicCamera final : public Camera {
 public:
     OrthographicCamera(const Transform& to_world, const RasterSize& raster, double width)
-        : Camera(to_world), raster_(raster), half_width_(width / 2), half_height_(width / 2 * raster.height / raster.width) {}
+        : Camera(to_world),
+          raster_(raster),
+          half_width_(width / 2),
+          half_height_(width / 2 * raster.height / raster.width),
+          pixel_width_(float(width / raster.width * std::cbrt(std::abs(to_world.determinant())))) {}
 
     Ray generate_ray(float raster_x, float raster_y, std::array<float, 2>) const override {
         const Vec3d origin((2.0 * raster_x / raster_.width - 1.0) * half_width_,
@@ -18,12 +22,14 @@ public:
         Ray ray;
         ray.origin = Vec3f(camera_to_world().point(origin));
         ray.direction = Vec3f(normalize(camera_to_world().vector(Vec3d(0, 0, -1))));
+        ray.cone_width = pixel_width_;
         return ray;
     }
 
 private:
     RasterSize raster_;
     double half_width_, half_height_;
+    float pixel_width_;  // in world units: the rays' cone width
 };
 
 }  // namespace

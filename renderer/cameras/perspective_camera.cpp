@@ -34,6 +34,7 @@ public:
             half_width_ = tan_half * w / diagonal;
             half_height_ = tan_half * h / diagonal;
         }
+        pixel_angle_ = float(2 * half_height_ / h);  // at the image centre; the cone ignores the lens
     }
 
     Ray generate_ray(float raster_x, float raster_y, std::array<float, 2> lens_u) const override {
@@ -51,12 +52,14 @@ public:
             ray.origin = Vec3f(to_world.point(origin));
         }
         ray.direction = Vec3f(normalize(to_world.vector(direction)));
+        ray.cone_spread = pixel_angle_;
         return ray;
     }
 
 private:
     RasterSize raster_;
     double half_width_ = 1, half_height_ = 1;  // image-plane extent at distance 1
+    float pixel_angle_ = 0;                     // a pixel's angular height: the rays' cone spread
     float aperture_radius_;
     float focus_distance_;
     Vec3f pinhole_origin_;  // the camera's position in the world: every pinhole ray's origin

@@ -18,6 +18,10 @@ struct Ray {
     Vec3f direction;
     float t_near = 0;
     float t_far = std::numeric_limits<float>::infinity();
+    // The ray's share of a pixel, a cone around it: its width at the origin and its growth per unit of distance
+    // (t·|direction|). Hits report the width there (SurfaceHit::footprint), for filtering textures.
+    float cone_width = 0;
+    float cone_spread = 0;
 
     Vec3f at(float t) const { return origin + direction * t; }
 };

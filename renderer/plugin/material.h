@@ -15,6 +15,9 @@ struct SurfaceHit;
 class Material {
 public:
     virtual ~Material() = default;
+    // Bump and normal maps: replaces hit.shading_normal (and, for anisotropic models, sets hit.tangent) before
+    // anything else is asked about the hit. The scene calls it on every hit it reports.
+    virtual void perturb_normal(SurfaceHit& hit) const { (void)hit; }
     // Directional-hemispherical reflectance, for the albedo AOV and diffuse previews.
     virtual Rgb albedo(const SurfaceHit& hit) const = 0;
     // Radiance emitted from `hit` towards `towards_viewer` (unit, pointing away from the surface).

@@ -141,23 +141,32 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
             ? shape_shading()
             : shading_of_embree_hit(query.hit, embree_ng, object.hit_shading == HitShading::EmbreeHitSwappedUv);
     Vec3f geometric_normal = local.geometric_normal, shading_normal = local.normal;
+    Vec3f dpdu = local.dpdu, dpdv = local.dpdv;
     if (object.instanced) {  // Embree reports Ng in the instanced object's space
         geometric_normal = safe_normalize(object.to_world.normal(local.geometric_normal), local.geometric_normal);
         shading_normal = safe_normalize(object.to_world.normal(local.normal), geometric_normal);
+        dpdu = object.to_world.vector(dpdu);
+        dpdv = object.to_world.vector(dpdv);
     }
     if (dot(shading_normal, geometric_normal) < 0) shading_normal = -shading_normal;
     const Vec3f position = ray.at(t);
     const float position_error = kPositionErrorScale * (max_component(abs(position)) + t * length(ray.direction));
-    return SurfaceHit{.t = t,
-                      .position = position,
-                      .geometric_normal = geometric_normal,
-                      .shading_normal = shading_normal,
-                      .uv = local.uv,
-                      .object_index = object_index,
-                      .primitive_id = query.hit.primID,
-                      .material = object.material_of_part(local.part),
-                      .position_error = position_error,
-                      .object = &object};
+    SurfaceHit hit{.t = t,
+                   .position = position,
+                   .geometric_normal = geometric_normal,
+                   .shading_normal = shading_normal,
+                   .uv = local.uv,
+                   .object_index = object_index,
+                   .primitive_id = query.hit.primID,
+                   .material = object.material_of_part(local.part),
+                   .position_error = position_error,
+                   .dpdu = dpdu,
+                   .dpdv = dpdv,
+                   .footprint = ray.cone_width + ray.cone_spread * t * length(ray.direction),
+                   .object = &object,
+                   .blend = local.blend};
+    if (hit.material) hit.material->perturb_normal(hit);
+    return hit;
 }
 
 void RenderScene::count_untraceable_rays(std::uint64_t count) {
