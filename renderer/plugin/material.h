@@ -7,6 +7,7 @@
 #include "renderer/math/rgb.h"
 #include "renderer/math/vec3.h"
 #include "renderer/plugin/registry.h"
+#include "renderer/textures/texture.h"
 
 namespace isotrace {
 
@@ -34,6 +35,16 @@ public:
     // R when, at every hit, bsdf() is LambertBsdf(R), albedo() is R and nothing is emitted: the path tracer can then
     // shade such surfaces eight paths at a time. nullopt for every other material.
     virtual std::optional<Rgb> constant_lambertian_reflectance() const { return std::nullopt; }
+
+    // Materials that can blend with others where a surface's parts meet (blob elements with materials of their
+    // own) describe themselves at a hit as principled parameters; the blend mixes those.
+    virtual bool can_blend() const { return false; }
+    virtual PrincipledParameters principled_parameters(const SurfaceHit& hit) const {
+        (void)hit;
+        return {};
+    }
+    // What the material's textures need from the surfaces it is put on (uv, a field), checked by the loader.
+    virtual TextureNeeds texture_needs() const { return {}; }
 };
 
 Registry<Material>& material_registry();

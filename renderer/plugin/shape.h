@@ -116,6 +116,8 @@ public:
     // Empty for shapes of one part, which show the object's material.
     virtual std::vector<MaterialReference> part_materials() const { return {}; }
 
+    // Whether hits report LocalShading::blend (parts whose materials blend), rather than one part.
+    virtual bool blends_parts() const { return false; }
     // Whether LocalShading::uv is a parametrisation of the surface (meshes with uv, patches, tubes), so that
     // textures may be mapped by it.
     virtual bool has_uv() const { return false; }

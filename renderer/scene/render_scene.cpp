@@ -158,7 +158,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
                    .uv = local.uv,
                    .object_index = object_index,
                    .primitive_id = query.hit.primID,
-                   .material = object.material_of_part(local.part),
+                   .material = local.blend.count > 0 ? object.blended_material : object.material_of_part(local.part),
                    .position_error = position_error,
                    .dpdu = dpdu,
                    .dpdv = dpdv,

@@ -28,6 +28,7 @@ struct SceneObject {
     std::unique_ptr<Shape> shape;
     const Material* material = nullptr;
     std::vector<const Material*> part_materials;  // per Shape::part_materials() entry; null: `material`
+    const Material* blended_material = nullptr;   // for shapes whose hits blend their parts' materials
     Transform to_world;
     bool instanced = false;  // true: shape in object space inside an Embree instance
     HitShading hit_shading = HitShading::Computed;  // the shape's, after any bake (set by commit)

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "geometry/polygonize/tessellated_shape.h"
+#include "renderer/materials/blended_material.h"
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
 #include "renderer/plugin/sampler_registry.h"
@@ -149,6 +150,42 @@ std::vector<const Material*> resolve_part_materials(const Shape& shape, const Re
     return materials;
 }
 
+// The material of a shape whose parts blend: every part's material must be able to blend.
+const Material* blended_material(const SceneNode& node, const SceneObject& object, RenderScene& scene,
+                                 std::size_t index) {
+    const std::vector<MaterialReference> references = object.shape->part_materials();
+    std::vector<const Material*> parts;
+    for (std::size_t part = 0; part < object.part_materials.size(); ++part) {
+        const Material* material = object.material_of_part(std::uint32_t(part));
+        if (!material->can_blend()) {
+            const std::string problem =
+                "materials that blend across a surface must be \"principled\" or \"diffuse\"";
+            if (object.part_materials[part]) throw InputError(references[part].location, references[part].field, problem);
+            node.fail_at("material", problem + " (this object's material is used where its elements name none)");
+        }
+        parts.push_back(material);
+    }
+    return scene.add_material("<blended materials of objects[" + std::to_string(index) + "]>",
+                              make_blended_material(std::move(parts)));
+}
+
+// A texture mapped by uv needs a surface with uv, a field input a surface with a field.
+void check_texture_needs(const SceneObject& object) {
+    TextureNeeds needs = object.material->texture_needs();
+    for (const Material* part : object.part_materials)
+        if (part) needs |= part->texture_needs();
+    const Shape& shape = *object.shape;
+    if (needs.uv && !shape.has_uv())
+        throw InputError(needs.where, needs.field_path,
+                         "this texture is mapped by uv, but a " + shape.type_name() +
+                             " has no uv: use a \"solid\", \"planar\", \"triplanar\", \"spherical\" or "
+                             "\"cylindrical\" projection");
+    if (needs.field && !shape.field_value(Vec3d(0, 0, 0)))
+        throw InputError(needs.where, needs.field_path,
+                         "this texture reads a field, but a " + shape.type_name() +
+                             " has none (blob groups and superquadrics have one)");
+}
+
 void load_content(const SceneNode& root, const SceneOverrides& overrides, RenderScene& scene) {
     if (auto materials = root.optional_object("materials")) {
         materials->accept_all_keys();
@@ -178,6 +215,8 @@ void load_content(const SceneNode& root, const SceneOverrides& overrides, Render
         if (overrides.replace_shape) object.shape = overrides.replace_shape(std::move(object.shape));
         check_object_within_world(node, *object.shape, object.to_world);
         object.part_materials = resolve_part_materials(*object.shape, scene);
+        if (object.shape->blends_parts()) object.blended_material = blended_material(node, object, scene, i);
+        check_texture_needs(object);
         node.finish();
         scene.add_object(std::move(object));
     }

@@ -1,0 +1,159 @@
+// Principled material: one model for most surfaces (renderer/bsdf/principled_bsdf.h), every parameter of which
+// may be a texture (docs/textures.md), with bump or normal mapping and emission.
+#include <cmath>
+#include <numbers>
+
+#include "renderer/bsdf/principled_bsdf.h"
+#include "renderer/materials/normal_perturbation.h"
+#include "renderer/plugin/material.h"
+#include "renderer/scene/render_scene.h"
+#include "renderer/textures/texture_parser.h"
+
+namespace isotrace {
+namespace {
+
+struct PrincipledTextures {
+    ColourTexturePtr base_colour;
+    ScalarTexturePtr metallic, roughness, anisotropy, anisotropy_rotation, ior, specular, transmission, clearcoat,
+        clearcoat_roughness, sheen, sheen_roughness;
+    ColourTexturePtr sheen_colour, emission;
+};
+
+class PrincipledMaterial final : public Material {
+public:
+    PrincipledMaterial(PrincipledTextures textures, float emission_strength, bool two_sided_emission,
+                       NormalPerturbation perturbation)
+        : textures_(std::move(textures)),
+          emission_strength_(emission_strength),
+          two_sided_emission_(two_sided_emission),
+          perturbation_(std::move(perturbation)),
+          constant_(constant_parameters()) {
+        const std::optional<Rgb> emission = textures_.emission->constant();
+        emits_ = emission_strength_ > 0 && (!emission || !emission->is_black());
+        const std::optional<float> anisotropy = textures_.anisotropy->constant();
+        anisotropic_ = !anisotropy || *anisotropy > 0;
+    }
+
+    Rgb albedo(const SurfaceHit& hit) const override {
+        return constant_ ? constant_->base_colour : textures_.base_colour->evaluate(TextureContext(hit));
+    }
+    Rgb emission(const SurfaceHit& hit, const Vec3f& towards_viewer) const override {
+        if (!emits_ || (!two_sided_emission_ && dot(hit.geometric_normal, towards_viewer) <= 0)) return {};
+        return textures_.emission->evaluate(TextureContext(hit)) * emission_strength_;
+    }
+    bool is_emissive() const override { return emits_; }
+    SurfaceBsdf bsdf(const SurfaceHit& hit) const override { return PrincipledBsdf(principled_parameters(hit)); }
+    void perturb_normal(SurfaceHit& hit) const override {
+        if (perturbation_.perturbs()) perturbation_.apply(hit);
+        if (anisotropic_) hit.tangent = brushing_direction(hit);
+    }
+    bool can_blend() const override { return true; }
+    PrincipledParameters principled_parameters(const SurfaceHit& hit) const override {
+        return constant_ ? *constant_ : parameters(TextureContext(hit));
+    }
+    TextureNeeds texture_needs() const override {
+        TextureNeeds needs = perturbation_.needs();
+        for (const auto* texture : scalar_textures()) needs |= texture->needs();
+        for (const auto* texture : colour_textures()) needs |= texture->needs();
+        return needs;
+    }
+
+private:
+    std::array<const ScalarTexture*, 11> scalar_textures() const {
+        const PrincipledTextures& t = textures_;
+        return {t.metallic.get(),     t.roughness.get(),    t.anisotropy.get(),          t.anisotropy_rotation.get(),
+                t.ior.get(),          t.specular.get(),     t.transmission.get(),        t.clearcoat.get(),
+                t.clearcoat_roughness.get(), t.sheen.get(), t.sheen_roughness.get()};
+    }
+    std::array<const ColourTexture*, 3> colour_textures() const {
+        return {textures_.base_colour.get(), textures_.sheen_colour.get(), textures_.emission.get()};
+    }
+
+    PrincipledParameters parameters(const TextureContext& at) const {
+        const PrincipledTextures& t = textures_;
+        PrincipledParameters p;
+        p.base_colour = t.base_colour->evaluate(at);
+        p.metallic = t.metallic->evaluate(at);
+        p.roughness = t.roughness->evaluate(at);
+        p.anisotropy = t.anisotropy->evaluate(at);
+        p.ior = t.ior->evaluate(at);
+        p.specular = t.specular->evaluate(at);
+        p.transmission = t.transmission->evaluate(at);
+        p.clearcoat = t.clearcoat->evaluate(at);
+        p.clearcoat_roughness = t.clearcoat_roughness->evaluate(at);
+        p.sheen = t.sheen->evaluate(at);
+        p.sheen_colour = t.sheen_colour->evaluate(at);
+        p.sheen_roughness = t.sheen_roughness->evaluate(at);
+        return p;
+    }
+
+    // The parameters when no texture varies, evaluated once.
+    std::optional<PrincipledParameters> constant_parameters() const {
+        for (const auto* texture : scalar_textures())
+            if (texture != textures_.anisotropy_rotation.get() && !texture->constant()) return std::nullopt;
+        if (!textures_.base_colour->constant() || !textures_.sheen_colour->constant()) return std::nullopt;
+        return parameters(TextureContext());
+    }
+
+    // The direction anisotropic roughness stretches along: dp/du where the surface has uv, else around the
+    // object's z axis (brushed in circles), turned by anisotropy_rotation (in turns).
+    Vec3f brushing_direction(const SurfaceHit& hit) const {
+        const Vec3f n = hit.shading_normal;
+        Vec3f direction = hit.dpdu;
+        if (!(dot(direction, direction) > 0)) {
+            const TextureContext at(hit);
+            const Vec3f around_z = cross(Vec3f(0, 0, 1), at.object_normal);
+            direction = hit.object ? hit.object->to_world.vector(around_z) : around_z;
+        }
+        Vec3f tangent = direction - n * dot(n, direction);
+        if (!(dot(tangent, tangent) > 0)) return {};
+        tangent = normalize(tangent);
+        const std::optional<float> fixed_turns = textures_.anisotropy_rotation->constant();
+        const float turns = fixed_turns ? *fixed_turns : textures_.anisotropy_rotation->evaluate(TextureContext(hit));
+        if (turns == 0) return tangent;
+        const float angle = 2 * std::numbers::pi_v<float> * turns;
+        return tangent * std::cos(angle) + cross(n, tangent) * std::sin(angle);
+    }
+
+    PrincipledTextures textures_;
+    float emission_strength_;
+    bool two_sided_emission_;
+    NormalPerturbation perturbation_;
+    std::optional<PrincipledParameters> constant_;
+    bool emits_ = false;
+    bool anisotropic_ = false;
+};
+
+std::unique_ptr<Material> create(const SceneNode& node) {
+    const NumberRange unit = NumberRange::unit_interval();
+    PrincipledTextures t;
+    t.base_colour = parse_colour_texture(node, "base_colour", Rgb(0.8f), ColourRange::Reflectance);
+    t.metallic = parse_scalar_texture(node, "metallic", 0, unit);
+    t.roughness = parse_scalar_texture(node, "roughness", 0.5f, unit);
+    t.anisotropy = parse_scalar_texture(node, "anisotropy", 0, unit);
+    t.anisotropy_rotation = parse_scalar_texture(node, "anisotropy_rotation", 0, unit);
+    t.ior = parse_scalar_texture(node, "ior", 1.5f, {1.0, 10.0, true, false});
+    t.specular = parse_scalar_texture(node, "specular", 1, unit);
+    t.transmission = parse_scalar_texture(node, "transmission", 0, unit);
+    t.clearcoat = parse_scalar_texture(node, "clearcoat", 0, unit);
+    t.clearcoat_roughness = parse_scalar_texture(node, "clearcoat_roughness", 0.03f, unit);
+    t.sheen = parse_scalar_texture(node, "sheen", 0, unit);
+    t.sheen_colour = parse_colour_texture(node, "sheen_colour", Rgb(1.0f), ColourRange::Reflectance);
+    t.sheen_roughness = parse_scalar_texture(node, "sheen_roughness", 0.5f, unit);
+    t.emission = parse_colour_texture(node, "emission", Rgb(), ColourRange::Emission);
+    const double strength = node.number_or("emission_strength", 1.0, {0, 1e30, false, false});
+    const bool two_sided = node.boolean_or("two_sided_emission", false);
+    NormalPerturbation perturbation = parse_normal_perturbation(node);
+    return std::make_unique<PrincipledMaterial>(std::move(t), float(strength), two_sided, std::move(perturbation));
+}
+
+}  // namespace
+
+ISOTRACE_REGISTER_PLUGIN(material_registry, "principled",
+                         "base_colour, metallic, roughness, anisotropy, anisotropy_rotation, ior, specular, "
+                         "transmission, clearcoat, clearcoat_roughness, sheen, sheen_colour, sheen_roughness, "
+                         "emission, emission_strength, two_sided_emission, bump, bump_height, normal_map, "
+                         "normal_strength (each parameter a constant or a texture)",
+                         create)
+
+}  // namespace isotrace
