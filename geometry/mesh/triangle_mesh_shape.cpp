@@ -152,9 +152,10 @@ TriangleMeshShape::UvDerivatives TriangleMeshShape::uv_derivatives(const std::ar
     const double du02 = double(uv0[0]) - uv2[0], dv02 = double(uv0[1]) - uv2[1];
     const double du12 = double(uv1[0]) - uv2[0], dv12 = double(uv1[1]) - uv2[1];
     const double determinant = du02 * dv12 - dv02 * du12;
-    if (determinant == 0) return {};  // the uvs do not span the triangle: no parametrisation
     const Vec3f dpdu((dp02 * dv12 - dp12 * dv02) / determinant);
     const Vec3f dpdv((dp12 * du02 - dp02 * du12) / determinant);
+    // Collinear uvs (a zero determinant) do not parametrise the triangle, nor do ones so nearly collinear that
+    // the derivatives leave float range.
     if (!is_finite(dpdu) || !is_finite(dpdv)) return {};
     return {dpdu, dpdv};
 }
