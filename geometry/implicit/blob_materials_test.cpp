@@ -264,6 +264,32 @@ TEST(BlobsPluginMaterials, ElementsNameTheirPartsAndHitsShowTheLargestShare) {
     EXPECT_GT(shading.blend.count, 1);  // blue's field reaches there too
 }
 
+TEST(BlobsPluginMaterials, InACsgEachSurfacePointShowsTheLargestShare) {
+    ScratchDirectory directory;
+    const auto loaded = load_scene(directory.write("scene.json", R"({"isotrace": 1, "film": {"resolution": [4, 4]},
+  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
+  "materials": {"grey": {"type": "diffuse"}, "red": {"type": "diffuse"}, "blue": {"type": "diffuse"},
+                "green": {"type": "diffuse"}},
+  "objects": [{"material": "grey", "shape": {"type": "csg", "op": "union", "children": [
+    {"shape": {"type": "box", "center": [0, -3, 0], "half_size": [0.5, 0.5, 0.5]}},
+    {"material": "green", "shape": {"type": "blobs", "elements": [
+      {"center": [-0.6, 0, 0], "radius": 1.2, "material": "red"},
+      {"center": [0.6, 0, 0], "radius": 1.2},
+      {"center": [0, 3, 0], "radius": 0.5, "material": "blue"}]}}]}}]})"));
+    const RenderScene& scene = *loaded->scene;
+    const auto material_at = [&](float x, float y) {
+        Ray ray;
+        ray.origin = {x, y, 5};
+        ray.direction = {0, 0, -1};
+        const auto hit = scene.intersect(ray, RayKind::Camera);
+        return hit ? hit->material : nullptr;
+    };
+    EXPECT_EQ(material_at(-0.3f, 0.1f), scene.find_material("red"));
+    EXPECT_EQ(material_at(0.3f, 0.1f), scene.find_material("green"));  // no material of its own: the child's
+    EXPECT_EQ(material_at(0, 3), scene.find_material("blue"));
+    EXPECT_EQ(material_at(0, -3), scene.find_material("grey"));
+}
+
 TEST(BlobsPluginMaterials, PlainGroupsHaveNoPartsAndNoBlend) {
     const BlobGroupShape plain(group_of({Metacube::metaball({0, 0, 0}, 1, 1)}));
     EXPECT_TRUE(plain.part_materials().empty());
