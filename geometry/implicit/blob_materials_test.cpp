@@ -11,6 +11,7 @@
 #include "geometry/implicit/blob_group_shape.h"
 #include "geometry/implicit/implicit_test_support.h"
 #include "geometry/mesh/mesh_test_support.h"
+#include "renderer/core/memory_budget.h"
 #include "renderer/scene/loaded_scene.h"
 #include "renderer/scene/render_scene.h"
 
@@ -335,6 +336,26 @@ TEST(BlobsPluginMaterials, GeneratedElementsTakeTheListsMaterialsByChance) {
     }
     EXPECT_GT(red, 220);  // two entries of three: about 267
     EXPECT_LT(red, 310);
+}
+
+TEST(BlobsPluginMaterials, GeneratedElementsAreChargedForTheirPartsWhenTheGroupHasMaterials) {
+    // Whether the generator names the materials or an element listed before it does, every element keeps a part.
+    ScratchDirectory directory;
+    for (const std::string& shape :
+         {std::string(R"("generate": {"count": 100000000, "min": [0, 0, 0], "max": [1, 1, 1], "materials": ["red"]})"),
+          std::string(R"("elements": [{"center": [0, 0, 0], "radius": 1, "material": "red"}],
+                         "generate": {"count": 100000000, "min": [0, 0, 0], "max": [1, 1, 1]})")}) {
+        const std::string path = directory.write("scene.json", R"({"isotrace": 1, "film": {"resolution": [4, 4]},
+  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
+  "materials": {"grey": {"type": "diffuse"}, "red": {"type": "diffuse"}},
+  "objects": [{"material": "grey", "shape": {"type": "blobs", )" + shape + "}}]}");
+        SceneOverrides overrides;
+        overrides.max_memory_bytes = std::uint64_t(8) << 30;
+        const std::string message = input_error_message([&] { load_scene(path, overrides); });
+        EXPECT_NE(message.find("needs about " + format_bytes(100'000'000 * (BlobGroup::kPeakBytesPerElement + 4))),
+                  std::string::npos)
+            << message;
+    }
 }
 
 TEST(BlobsPluginMaterials, GeneratorMaterialsErrorsNameTheirPlace) {

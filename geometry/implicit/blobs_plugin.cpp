@@ -51,6 +51,8 @@ public:
         element_parts_.resize(element, 0);
         element_parts_.push_back(part);
     }
+    // Whether the elements' parts are kept (some element so far named a material).
+    bool keeps_parts() const { return !element_parts_.empty(); }
     // Room for the parts of `elements` elements in all, so that a large generated group grows them once.
     void reserve(std::size_t elements) { element_parts_.reserve(elements); }
     BlobMaterials finish(std::size_t elements) {
@@ -120,8 +122,9 @@ void generate_elements(const SceneNode& node, std::vector<Metacube>& elements, E
     const auto half_size = range("half_size", 0.0, NumberRange::non_negative());
     const std::vector<std::uint32_t> parts = generated_parts(node, materials);
     node.finish();
-    // With materials, every element of the group keeps its part.
-    const std::uint64_t bytes_per_element = BlobGroup::kPeakBytesPerElement + (parts.empty() ? 0 : sizeof(std::uint32_t));
+    // Where the generator or an element listed before it names a material, every element keeps its part.
+    const bool keeps_parts = !parts.empty() || materials.keeps_parts();
+    const std::uint64_t bytes_per_element = BlobGroup::kPeakBytesPerElement + (keeps_parts ? sizeof(std::uint32_t) : 0);
     try {
         node.context().memory->charge(saturating_product({std::uint64_t(count), bytes_per_element}),
                                       "a blob group of " + std::to_string(count) + " generated elements");
@@ -130,7 +133,7 @@ void generate_elements(const SceneNode& node, std::vector<Metacube>& elements, E
     }
     const auto lerp = [](const std::array<double, 2>& r, double u) { return r[0] + (r[1] - r[0]) * u; };
     elements.reserve(elements.size() + std::size_t(count));
-    if (!parts.empty()) materials.reserve(elements.size() + std::size_t(count));
+    if (keeps_parts) materials.reserve(elements.size() + std::size_t(count));
     for (int i = 0; i < count; ++i) {
         OrientedBox box;
         for (int k = 0; k < 3; ++k) box.centre[k] = lower[k] + (upper[k] - lower[k]) * uniform(seed, i, k);
