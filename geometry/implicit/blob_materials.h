@@ -9,9 +9,9 @@
 // largest taking the difference, so that they are ≥ 0 and add up to exactly 1 in float in any order.
 //
 // A hard cube's field is a step (w on its closed box, 0 outside), and a surface point on its face lies on either
-// side of the face by rounding: it counts with its weight w at points within 10⁻⁵ of (its half diagonal plus the
-// point's largest coordinate) of its box. Where no part has a positive share (rounding at the very edge of the
-// supports), the point takes the part of the nearest element whole.
+// side of the face by rounding: it counts with its weight w at points within 10⁻⁵·(its half diagonal + the point's
+// largest coordinate) of its box. Where no part has a positive share (rounding at the very edge of the supports),
+// the point takes the part of the nearest element whole.
 #include <cstdint>
 #include <span>
 #include <vector>
