@@ -38,6 +38,7 @@ TriangleMeshData boundary_tubes(const std::vector<const SpaceCurve*>& curves, do
     }
     tubes.remove_degenerate_triangles();
     compute_vertex_normals(tubes);
+    unwrap_tube_seams(tubes);
     return tubes;
 }
 

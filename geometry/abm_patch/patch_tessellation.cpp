@@ -238,6 +238,7 @@ void append(const AbmPatch& patch, const PatchGrid& grid, TriangleMeshData& mesh
         without_normal[i] = !(length(n) > 0);
         mesh.positions.push_back(Vec3f(v.position));
         mesh.normals.push_back(Vec3f(n));
+        mesh.uvs.push_back({float(v.domain.x), float(v.domain.y)});
     }
     for (const GridTriangle& t : grid.triangles) mesh.triangles.push_back({t.v[0] + base, t.v[1] + base, t.v[2] + base});
     // Where the patch folds (no tangent plane), the area-weighted normal of the triangles around the vertex,

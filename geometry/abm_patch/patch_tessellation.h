@@ -1,5 +1,6 @@
 #pragma once
-// Triangles of a set of attribute-based patches, with analytic normals and an error bound in world units.
+// Triangles of a set of attribute-based patches, with analytic normals and an error bound in world units. Each
+// vertex's uv is its point of its patch's domain (patch_domain.h), so textures map through the domain.
 //
 // Each boundary curve is sampled once, at parameters shared by every patch that uses it (in either direction),
 // and curve end points that a loop joins are welded to one point, so patches sharing a curve meet at bit-identical

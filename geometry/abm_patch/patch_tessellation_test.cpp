@@ -72,6 +72,18 @@ TEST(PatchTessellation, PatchesSharingCurvesAreWatertight) {
     }
 }
 
+TEST(PatchTessellation, EachVertexsUvIsTheDomainPointItWasEvaluatedAt) {
+    for (bool polygon : {false, true}) {
+        const AbmPatch patch = curved_tetrahedron(polygon)[0];
+        const TriangleMeshData mesh = tessellate_patches({patch}, {.tolerance = 1e-3});
+        ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            const Vec3d surface = patch({mesh.uvs[i][0], mesh.uvs[i][1]});
+            EXPECT_NEAR(length(surface - Vec3d(mesh.positions[i])), 0, 1e-5) << i << (polygon ? " polygon" : "");
+        }
+    }
+}
+
 TEST(PatchTessellation, UniformSegmentsAreWatertightToo) {
     TriangleMeshData mesh = tessellate_patches(curved_tetrahedron(false), {.segments = 5});
     EXPECT_EQ(mesh.triangles.size(), 4u * 3 * 5 * (1 + 2 * 4));  // per sector: a fan and 4 bands of 2 per column

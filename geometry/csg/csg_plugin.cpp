@@ -1,6 +1,7 @@
 // The "csg" scene type: {"op": "union" | "intersection" | "difference", "children": [{"shape": {...},
 // "material": "name", "transform": ...}, ...]}. Children are any shapes that are closed solids, CSG included.
 #include "geometry/csg/csg_shape.h"
+#include "geometry/csg/material_reference_parser.h"
 #include "renderer/scene/transform_parser.h"
 
 namespace isotrace {
@@ -14,13 +15,6 @@ CsgOperation parse_operation(const SceneNode& node) {
     return CsgOperation::Difference;
 }
 
-MaterialReference parse_child_material(const SceneNode& child) {
-    const auto value = child.optional_value("material");
-    if (!value) return {};
-    if (!value->json().is_string()) value->fail("expected the name of a material from \"materials\"");
-    return {value->json().string, value->location(), value->path()};
-}
-
 CsgChild parse_child(const SceneNode& child) {
     CsgChild result;
     result.shape = shape_registry().create(child.object("shape"));
@@ -29,7 +23,7 @@ CsgChild parse_child(const SceneNode& child) {
     if (const std::string problem = solid->solid_problem(); !problem.empty())
         child.fail("CSG needs a closed solid; " + problem);
     result.to_csg = parse_optional_transform(child, "transform");
-    result.material = parse_child_material(child);
+    result.material = optional_material_reference(child);
     child.finish();
     return result;
 }

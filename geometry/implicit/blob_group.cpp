@@ -111,6 +111,15 @@ double BlobGroup::field(const Vec3d& point) const {
     });
 }
 
+void BlobGroup::for_each_term(std::span<const std::uint32_t> listed, const Vec3d& point,
+                              const std::function<void(std::uint32_t element, double term)>& visit) const {
+    with_kernel([&](const auto& kernel) {
+        for_each_reaching(listed, point, [&](const Metacube& element) {
+            visit(std::uint32_t(&element - elements_.data()), element.field(kernel, point));
+        });
+    });
+}
+
 Vec3d BlobGroup::gradient(const Vec3d& point) const { return gradient_from(cells_.elements_near(point), point); }
 
 Vec3d BlobGroup::gradient_from(std::span<const std::uint32_t> near, const Vec3d& point) const {

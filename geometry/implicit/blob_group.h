@@ -8,6 +8,7 @@
 // for baseline x86-64 and for AVX2 (blob_cell_queries.h). Cells are what Embree traverses (blob_group_shape.h);
 // walking a ray's cells in order gives every crossing (CSG) or the first.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -68,6 +69,10 @@ public:
     // F(P) + T (the summed field) and its gradient.
     double field(const Vec3d& point) const;
     Vec3d gradient(const Vec3d& point) const;
+    // Calls visit(j, wⱼ·fⱼ(P)) for each of the `listed` elements (a cell's, or those near the point) whose support
+    // may contain P, in list order: the terms of the field, for those who share it out.
+    void for_each_term(std::span<const std::uint32_t> listed, const Vec3d& point,
+                       const std::function<void(std::uint32_t element, double term)>& visit) const;
 
     // Outward unit normal at a surface point: −∇F, or for hard cubes (whose field is a step) the normal of the
     // nearest face of a hard cube that contains the point on its boundary. The cell variant sums the elements

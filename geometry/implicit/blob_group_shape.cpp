@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include "geometry/csg/inside_span_list.h"
 #include "renderer/core/render_counters.h"
@@ -12,7 +13,11 @@
 
 namespace isotrace {
 
-BlobGroupShape::BlobGroupShape(BlobGroup group) : group_(std::move(group)) {}
+BlobGroupShape::BlobGroupShape(BlobGroup group, BlobMaterials materials)
+    : group_(std::move(group)), materials_(std::move(materials)) {
+    if (!materials_.empty() && materials_.element_parts().size() != group_.elements().size())
+        throw std::invalid_argument("a blob group's element materials must list one part per element");
+}
 
 Bounds3f BlobGroupShape::bounds() const {
     Bounds3f b;
@@ -77,8 +82,23 @@ LocalShading BlobGroupShape::shading(const RTCHit& hit, const Vec3f&, const Vec3
     // face), whose normal the cell's hard cubes give.
     const Vec3f stored(hit.Ng_x, hit.Ng_y, hit.Ng_z);
     const Vec3f normal = stored != Vec3f(0, 0, 0) ? stored : Vec3f(group_.normal_in_cell(hit.primID, point));
-    return {.geometric_normal = normal, .normal = normal};
+    LocalShading shading{.geometric_normal = normal, .normal = normal};
+    if (!materials_.empty()) {
+        shading.blend = materials_.blend(group_, group_.cells().elements_of(hit.primID), point);
+        shading.part = shading.blend.part[0];
+    }
+    return shading;
 }
+
+std::uint32_t BlobGroupShape::largest_part(const Vec3d& point) const {
+    return materials_.empty() ? 0 : materials_.blend(group_, group_.cells().elements_near(point), point).part[0];
+}
+
+std::optional<double> BlobGroupShape::field_value(const Vec3d& point) const {
+    return group_.field(point) - group_.threshold();
+}
+
+Vec3d BlobGroupShape::field_gradient(const Vec3d& point) const { return group_.gradient(point); }
 
 void BlobGroupShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const BlobGroupShape*>(args->geometryUserPtr);
@@ -113,7 +133,8 @@ void BlobGroupShape::inside_spans(const Vec3d& origin, const Vec3d& direction, d
     append_spans_from_crossings(
         std::span<const FieldCrossing>(crossings), sign_at_start > 0, t_min, t_max,
         [&](const FieldCrossing& c) {
-            return BoundaryPoint{c.t, group_.normal(origin + direction * c.t), c.element, 0};
+            const Vec3d point = origin + direction * c.t;
+            return BoundaryPoint{c.t, group_.normal(point), c.element, largest_part(point)};
         },
         spans);
 }

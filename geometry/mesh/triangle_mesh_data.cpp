@@ -72,6 +72,10 @@ MeshBounds TriangleMeshData::bounds() const {
 
 void TriangleMeshData::append_positions_and_triangles(const TriangleMeshData& part) {
     const auto base = std::uint32_t(positions.size());
+    if (uvs.size() == positions.size() && part.uvs.size() == part.positions.size())
+        uvs.insert(uvs.end(), part.uvs.begin(), part.uvs.end());
+    else
+        uvs.clear();
     positions.insert(positions.end(), part.positions.begin(), part.positions.end());
     for (const auto& t : part.triangles) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }

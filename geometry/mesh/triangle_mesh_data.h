@@ -33,8 +33,8 @@ struct TriangleMeshData {
     // Bounds of all positions; min > max on every axis when there are none.
     MeshBounds bounds() const;
 
-    // Adds the positions and triangles of `part` (its normals and uvs are dropped: for meshes whose normals are
-    // computed afterwards).
+    // Adds the positions and triangles of `part` (its normals are dropped: for meshes whose normals are computed
+    // afterwards). The uvs are kept while every part has them, and dropped as soon as one has none.
     void append_positions_and_triangles(const TriangleMeshData& part);
 };
 

@@ -134,8 +134,30 @@ LocalShading TriangleMeshShape::shading(const RTCHit& hit, const Vec3f& embree_n
             result.uv[std::size_t(k)] = mesh_.uvs[triangle[0]][std::size_t(k)] * w +
                                         mesh_.uvs[triangle[1]][std::size_t(k)] * hit.u +
                                         mesh_.uvs[triangle[2]][std::size_t(k)] * hit.v;
+        const UvDerivatives derivatives = uv_derivatives(triangle);
+        result.dpdu = derivatives.dpdu;
+        result.dpdv = derivatives.dpdv;
     }
     return result;
+}
+
+TriangleMeshShape::UvDerivatives TriangleMeshShape::uv_derivatives(const std::array<std::uint32_t, 3>& triangle) const {
+    // p − p2 = (u − u2)·dpdu + (v − v2)·dpdv at the corners 0 and 1: a 2×2 system in the uv differences, solved in
+    // double so that thin uv triangles keep their precision.
+    const Vec3d p2(mesh_.positions[triangle[2]]);
+    const Vec3d dp02 = Vec3d(mesh_.positions[triangle[0]]) - p2, dp12 = Vec3d(mesh_.positions[triangle[1]]) - p2;
+    const auto& uv0 = mesh_.uvs[triangle[0]];
+    const auto& uv1 = mesh_.uvs[triangle[1]];
+    const auto& uv2 = mesh_.uvs[triangle[2]];
+    const double du02 = double(uv0[0]) - uv2[0], dv02 = double(uv0[1]) - uv2[1];
+    const double du12 = double(uv1[0]) - uv2[0], dv12 = double(uv1[1]) - uv2[1];
+    const double determinant = du02 * dv12 - dv02 * du12;
+    const Vec3f dpdu((dp02 * dv12 - dp12 * dv02) / determinant);
+    const Vec3f dpdv((dp12 * du02 - dp02 * du12) / determinant);
+    // Collinear uvs (a zero determinant) do not parametrise the triangle, nor do ones so nearly collinear that
+    // the derivatives leave float range.
+    if (!is_finite(dpdu) || !is_finite(dpdv)) return {};
+    return {dpdu, dpdv};
 }
 
 HitShading TriangleMeshShape::hit_shading() const {

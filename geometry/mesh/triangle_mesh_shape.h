@@ -27,6 +27,9 @@ public:
     LocalShading shading(const RTCHit& hit, const Vec3f& embree_normal, const Vec3d& point) const override;
     // Without vertex normals and uvs a hit's shading is Embree's own (uv swapped after a mirroring bake).
     HitShading hit_shading() const override;
+    // Meshes with a uv table: a hit's dpdu and dpdv are those of its triangle's affine uv map (zero where the
+    // triangle's uvs are collinear).
+    bool has_uv() const override { return !mesh_.uvs.empty(); }
 
     // Uniform by area over all triangles (for area lights): a triangle is picked in proportion to its area,
     // u[0] is rescaled within the picked triangle's share and, with u[1], placed by the low-distortion
@@ -45,6 +48,10 @@ public:
     const TriangleMeshData& data() const { return mesh_; }
 
 private:
+    struct UvDerivatives {
+        Vec3f dpdu, dpdv;
+    };
+    UvDerivatives uv_derivatives(const std::array<std::uint32_t, 3>& triangle) const;
     // The area table follows the vertices: built by the constructor and again by bake(), both before
     // rendering starts, so sampling only reads it (thread-safe).
     void build_area_distribution();

@@ -210,6 +210,53 @@ TEST(TriangleMeshShape, UvsAreInterpolated) {
     }
 }
 
+// The shading of a hit on triangle `primitive` at barycentrics (u, v), as the scene would ask for it.
+LocalShading shading_at(const TriangleMeshShape& shape, unsigned primitive, float u = 0.25f, float v = 0.25f) {
+    RTCHit hit{};
+    hit.primID = primitive;
+    hit.u = u;
+    hit.v = v;
+    return shape.shading(hit, {0, 0, 1}, {});
+}
+
+TEST(TriangleMeshShape, UvDerivativesAreThoseOfTheTrianglesAffineMap) {
+    // p(u, v) = (u − 0.1)·A + (v − 0.2)·B at the corners' uvs.
+    const Vec3d a(4, 0, 0), b(0, 3, 1);
+    const std::array<std::array<float, 2>, 3> uvs{{{0.1f, 0.2f}, {0.6f, 0.2f}, {0.3f, 0.9f}}};
+    TriangleMeshData mesh;
+    for (const auto& uv : uvs) {
+        mesh.positions.push_back(Vec3f(a * (double(uv[0]) - 0.1) + b * (double(uv[1]) - 0.2)));
+        mesh.uvs.push_back(uv);
+    }
+    mesh.triangles = {{0, 1, 2}};
+    TriangleMeshShape shape(mesh);
+    EXPECT_TRUE(shape.has_uv());
+    EXPECT_EQ(shape.hit_shading(), HitShading::Computed);
+    LocalShading shading = shading_at(shape, 0);
+    expect_vec_near(shading.dpdu, a, 1e-5);
+    expect_vec_near(shading.dpdv, b, 1e-5);
+    // Baked by a mirror the corners are reordered, and the derivatives follow the moved positions.
+    shape.bake(Transform::scale({-1, 2, 1}));
+    shading = shading_at(shape, 0);
+    expect_vec_near(shading.dpdu, {-4, 0, 0}, 1e-5);
+    expect_vec_near(shading.dpdv, {0, 6, 1}, 1e-5);
+}
+
+TEST(TriangleMeshShape, CollinearUvsGiveZeroDerivativesAndMeshesWithoutUvsKeepEmbreesShading) {
+    TriangleMeshData mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    mesh.uvs = {{0, 0}, {0.5f, 0.5f}, {1, 1}, {1, 0}};  // the first triangle's uvs lie on a line
+    mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+    const TriangleMeshShape shape(mesh);
+    EXPECT_EQ(shading_at(shape, 0).dpdu, Vec3f(0, 0, 0));
+    EXPECT_EQ(shading_at(shape, 0).dpdv, Vec3f(0, 0, 0));
+    EXPECT_NE(shading_at(shape, 1).dpdu, Vec3f(0, 0, 0));
+    mesh.uvs.clear();
+    const TriangleMeshShape plain(mesh);
+    EXPECT_FALSE(plain.has_uv());
+    EXPECT_EQ(plain.hit_shading(), HitShading::EmbreeHit);
+}
+
 TEST(TriangleMeshShape, AffineTransformIsBakedWithOutwardNormals) {
     const Transform to_world =
         Transform::translate({1, 2, -3}) * Transform::rotate({1, 2, 3}, 50) * Transform::scale({2, 0.5, 3});

@@ -131,11 +131,22 @@ void SphereShape::inside_spans(const Vec3d& origin, const Vec3d& direction, doub
     combine_span_events(CsgOperation::Union, std::uint32_t(spheres_.size()), events, spans);
 }
 
-LocalShading SphereShape::shading(const RTCHit&, const Vec3f& geometric_normal, const Vec3d&) const {
+LocalShading SphereShape::shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d&) const {
     // Spherical coordinates of the normal, y up: u around the axis, v from the top (0) to the bottom (1).
-    const float u = 0.5f + std::atan2(geometric_normal.x, geometric_normal.z) * float(0.5 * std::numbers::inv_pi);
-    const float v = std::acos(std::clamp(geometric_normal.y, -1.0f, 1.0f)) * float(std::numbers::inv_pi);
-    return {.geometric_normal = geometric_normal, .normal = geometric_normal, .uv = {u, v}};
+    const Vec3f& n = geometric_normal;
+    const float u = 0.5f + std::atan2(n.x, n.z) * float(0.5 * std::numbers::inv_pi);
+    const float v = std::acos(std::clamp(n.y, -1.0f, 1.0f)) * float(std::numbers::inv_pi);
+    // p = c + r·(sin θ sin φ, cos θ, sin θ cos φ) with φ = 2π(u − ½), θ = πv. At the poles (sin θ = 0) φ is the
+    // one u names (atan2(0, 0) = 0), so dpdv still points along the meridian and dpdu is zero there.
+    const float radius = float(spheres_[hit.primID].radius);
+    const float sin_theta = std::sqrt(n.x * n.x + n.z * n.z);
+    const float sin_phi = sin_theta > 0 ? n.x / sin_theta : 0.0f, cos_phi = sin_theta > 0 ? n.z / sin_theta : 1.0f;
+    const float two_pi_r = float(2 * std::numbers::pi) * radius, pi_r = float(std::numbers::pi) * radius;
+    return {.geometric_normal = n,
+            .normal = n,
+            .uv = {u, v},
+            .dpdu = Vec3f(n.z, 0, -n.x) * two_pi_r,
+            .dpdv = Vec3f(n.y * sin_phi, -sin_theta, n.y * cos_phi) * pi_r};
 }
 
 namespace {

@@ -27,7 +27,9 @@ public:
     bool can_bake(const Transform& to_world) const override { return to_world.similarity_scale() > 0; }
     void bake(const Transform& to_world) override;
     RTCGeometry create_geometry(RTCDevice device) override;
+    // uv: spherical coordinates about the y axis (see shading()), with their analytic dpdu and dpdv.
     LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d& point) const override;
+    bool has_uv() const override { return true; }
 
     // Uniform by area over all spheres (for area lights): a sphere is picked in proportion to its area, u[0]
     // is rescaled within its share, and the point is uniform on it with the outward normal. The area table is

@@ -333,6 +333,51 @@ TEST(SphereShape, NonUniformScaleIsInstancedAndHitsTheEllipsoidExactly) {
     expect_near(top->geometric_normal, {0, 0, 1}, 1e-5, "pole normal");
 }
 
+TEST(SphereShape, UvDerivativesAreThoseOfTheSphericalCoordinates) {
+    // The second sphere of the set, so that the hit's primitive picks the radius.
+    const Vec3d centre(1, 2, 3);
+    const double r = 2;
+    const SphereShape shape({{{0, 0, 0}, 0.5}, {centre, r}});
+    EXPECT_TRUE(shape.has_uv());
+    const auto shade = [&](const Vec3d& normal) {
+        RTCHit hit{};
+        hit.primID = 1;
+        return shape.shading(hit, Vec3f(normal), centre + normal * r);
+    };
+    // p(u, v) = c + r·(sin θ sin φ, cos θ, sin θ cos φ), φ = 2π(u − ½), θ = πv.
+    const auto point = [&](double u, double v) {
+        const double phi = 2 * M_PI * (u - 0.5), theta = M_PI * v;
+        return centre + Vec3d(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)) * r;
+    };
+    // Known points: +z (u = v = ½) and +x (u = ¾, v = ½).
+    LocalShading s = shade({0, 0, 1});
+    expect_near(s.dpdu, {2 * M_PI * r, 0, 0}, 1e-5, "");
+    expect_near(s.dpdv, {0, -M_PI * r, 0}, 1e-5, "");
+    s = shade({1, 0, 0});
+    expect_near(s.dpdu, {0, 0, -2 * M_PI * r}, 1e-5, "");
+    expect_near(s.dpdv, {0, -M_PI * r, 0}, 1e-5, "");
+    // Random points against central differences of p at the hit's own uv, and tangent to the sphere.
+    std::mt19937 random(21);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const double h = 1e-6;
+    for (int i = 0; i < 200; ++i) {
+        const double u0 = unit(random), v0 = 0.02 + 0.96 * unit(random);
+        const Vec3d normal = normalize(point(u0, v0) - centre);
+        s = shade(normal);
+        const double u = s.uv[0], v = s.uv[1];
+        const Vec3d dpdu = (point(u + h, v) - point(u - h, v)) / (2 * h);
+        const Vec3d dpdv = (point(u, v + h) - point(u, v - h)) / (2 * h);
+        EXPECT_NEAR(length(Vec3d(s.dpdu) - dpdu), 0, 1e-4 * length(dpdu) + 1e-5) << i;
+        EXPECT_NEAR(length(Vec3d(s.dpdv) - dpdv), 0, 1e-4 * length(dpdv)) << i;
+        EXPECT_NEAR(dot(Vec3d(s.dpdu), normal), 0, 1e-5 * r) << i;
+        EXPECT_NEAR(dot(Vec3d(s.dpdv), normal), 0, 1e-5 * r) << i;
+    }
+    // At a pole u does not move the point, and v still runs down the meridian.
+    s = shade({0, 1, 0});
+    EXPECT_EQ(s.dpdu, Vec3f(0, 0, 0));
+    expect_near(s.dpdv, {0, 0, M_PI * r}, 1e-5, "");
+}
+
 TEST(SphereShape, CountersRecordTestsAndCandidateHits) {
     const auto scene = sphere_scene({{{0, 0, 5}, 1}});
     const auto before = counters::totals();

@@ -36,6 +36,14 @@ double Superquadric::local_field(const Vec3d& local) const {
 
 double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse().point(point)); }
 
+double Superquadric::continued_field(const Vec3d& point) const {
+    const Vec3d local = placement_.inverse().point(point);
+    const IntervalBox& box = deformation_.deformed_box();
+    const Vec3d clamped(std::clamp(local.x, box.x.lo, box.x.hi), std::clamp(local.y, box.y.lo, box.y.hi),
+                        std::clamp(local.z, box.z.lo, box.z.hi));
+    return local_field(clamped) + length(local - clamped);
+}
+
 Vec3d Superquadric::normal(const Vec3d& point) const {
     const DeformationChain::Path path = deformation_.inverse_path(placement_.inverse().point(point));
     const Vec3d local = deformation_.deform_normal(path, shape_.normal(path[0]));

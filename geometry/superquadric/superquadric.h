@@ -41,6 +41,9 @@ public:
     double field(const Vec3d& point) const;
     // The field at a point of the local deformed frame (before the placement).
     double local_field(const Vec3d& local) const;
+    // field() continued beyond the deformed box by the distance to it, in the local deformed frame (field() is a
+    // constant 1 out there, the ray tracer needing only its sign): negative inside, continuous and rising outward.
+    double continued_field(const Vec3d& point) const;
     // Outward unit normal at a surface point of the shape's space: J⁻ᵀ·∇F carried through the chain, then the
     // placement's inverse transpose.
     Vec3d normal(const Vec3d& point) const;

@@ -1,10 +1,7 @@
-// The implicit field of a set of superquadrics (their union): min over the set of G(D⁻¹(p)) − 1, the gauge of
-// the undeformed superellipsoid at the undeformed point (negative inside). The gradient is the analytic normal
-// (carried through the deformation chain) scaled by the field's slope along it, a central difference.
-// Superquadric::field is a constant 1 outside the deformed box (the ray tracer only needs the sign there), which
-// has no gradient: a dual-contouring vertex clamped to a cell may sit just outside the box, and |f|/|∇f| there
-// was infinite. Outside the box the field is continued by the distance to it, so it stays positive, continuous
-// and rising.
+// The implicit field of a set of superquadrics (their union) for the polygonisers: the shape's field turned round
+// (negative inside), min over the set of G(D⁻¹(p)) − 1, continued beyond each deformed box by the distance to it
+// so that it stays positive, continuous and rising there (a dual-contouring vertex clamped to a cell may sit just
+// outside the box, where a constant field had no gradient and |f|/|∇f| was infinite).
 #include <algorithm>
 #include <cmath>
 
@@ -16,41 +13,22 @@ namespace {
 
 class SuperquadricField final : public ImplicitField {
 public:
-    explicit SuperquadricField(const SuperquadricShape& shape) : superquadrics_(shape.superquadrics()) {
-        const FieldBox box = bounds();
-        step_ = 1e-6 * std::max(max_component(box.extent()), 1e-300);
-    }
+    explicit SuperquadricField(const SuperquadricShape& shape) : shape_(shape) {}
 
-    double value(const Vec3d& p) const override {
-        double v = extended_field(superquadrics_[0], p);
-        for (std::size_t i = 1; i < superquadrics_.size(); ++i) v = std::min(v, extended_field(superquadrics_[i], p));
-        return v;
-    }
-    Vec3d gradient(const Vec3d& p) const override {
-        const Superquadric& s = superquadrics_[nearest(p)];
-        const Vec3d n = s.normal(p);
-        if (!is_finite(n)) return {};
-        return n * ((extended_field(s, p + n * step_) - extended_field(s, p - n * step_)) / (2 * step_));
-    }
+    double value(const Vec3d& p) const override { return -*shape_.field_value(p); }
+    Vec3d gradient(const Vec3d& p) const override { return -shape_.field_gradient(p); }
     FieldBox bounds() const override {
         FieldBox box = FieldBox::none();
-        for (const Superquadric& s : superquadrics_) box.extend({s.bounds().lower(), s.bounds().upper()});
+        for (const Superquadric& s : shape_.superquadrics()) box.extend({s.bounds().lower(), s.bounds().upper()});
         return box;
     }
     // The gauge's range over the undeformed image of the ball's box (interval arithmetic through the chain).
     bool may_reach_surface(const Vec3d& centre, double radius) const override {
-        return std::any_of(superquadrics_.begin(), superquadrics_.end(),
+        return std::any_of(shape_.superquadrics().begin(), shape_.superquadrics().end(),
                            [&](const Superquadric& s) { return may_cross(s, centre, radius); });
     }
 
 private:
-    static double extended_field(const Superquadric& s, const Vec3d& p) {
-        const Vec3d local = s.placement().inverse().point(p);
-        const IntervalBox& box = s.deformation().deformed_box();
-        const Vec3d clamped(std::clamp(local.x, box.x.lo, box.x.hi), std::clamp(local.y, box.y.lo, box.y.hi),
-                            std::clamp(local.z, box.z.lo, box.z.hi));
-        return s.local_field(clamped) + length(local - clamped);
-    }
     static bool may_cross(const Superquadric& s, const Vec3d& centre, double radius) {
         const Transform to_local = s.placement().inverse();
         IntervalBox local = IntervalBox::point(to_local.point(centre));
@@ -65,21 +43,8 @@ private:
         // A clipped part lies outside the object (gauge above 1 there), as in Superquadric's crossing search.
         return gauge.lo <= 1 && (clipped || gauge.hi >= 1);
     }
-    std::size_t nearest(const Vec3d& p) const {
-        std::size_t best = 0;
-        double best_value = extended_field(superquadrics_[0], p);
-        for (std::size_t i = 1; i < superquadrics_.size(); ++i) {
-            const double v = extended_field(superquadrics_[i], p);
-            if (v < best_value) {
-                best = i;
-                best_value = v;
-            }
-        }
-        return best;
-    }
 
-    std::vector<Superquadric> superquadrics_;
-    double step_ = 0;
+    const SuperquadricShape& shape_;
 };
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "geometry/superquadric/superquadric_shape.h"
 
+#include <algorithm>
 #include <array>
 #include <span>
 
@@ -11,7 +12,44 @@
 namespace isotrace {
 
 SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
-    : superquadrics_(std::move(superquadrics)) {}
+    : superquadrics_(std::move(superquadrics)) {
+    measure_field_step();
+}
+
+void SuperquadricShape::measure_field_step() {
+    IntervalBox box = superquadrics_.empty() ? IntervalBox::point({0, 0, 0}) : superquadrics_[0].bounds();
+    for (const Superquadric& s : superquadrics_) {
+        const IntervalBox bounds = s.bounds();
+        box.extend(bounds.lower());
+        box.extend(bounds.upper());
+    }
+    field_step_ = 1e-6 * std::max({box.x.width(), box.y.width(), box.z.width(), 1e-300});
+}
+
+const Superquadric& SuperquadricShape::deepest(const Vec3d& point) const {
+    std::size_t best = 0;
+    double best_value = superquadrics_[0].continued_field(point);
+    for (std::size_t i = 1; i < superquadrics_.size(); ++i) {
+        const double v = superquadrics_[i].continued_field(point);
+        if (v < best_value) {
+            best = i;
+            best_value = v;
+        }
+    }
+    return superquadrics_[best];
+}
+
+std::optional<double> SuperquadricShape::field_value(const Vec3d& point) const {
+    return -deepest(point).continued_field(point);
+}
+
+Vec3d SuperquadricShape::field_gradient(const Vec3d& point) const {
+    const Superquadric& s = deepest(point);
+    const Vec3d n = s.normal(point);
+    if (!is_finite(n)) return {};
+    const double h = field_step_;
+    return n * -((s.continued_field(point + n * h) - s.continued_field(point - n * h)) / (2 * h));
+}
 
 std::size_t SuperquadricShape::memory_bytes() const {
     std::size_t bytes = superquadrics_.capacity() * sizeof(Superquadric);
@@ -32,6 +70,7 @@ Bounds3f SuperquadricShape::bounds() const {
 void SuperquadricShape::bake(const Transform& to_world) {
     if (to_world.is_identity()) return;
     for (Superquadric& s : superquadrics_) s.transform(to_world);
+    measure_field_step();
 }
 
 RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {

@@ -178,6 +178,57 @@ TEST(SuperquadricShape, InstancedAndBakedPlacementsGiveTheSameHits) {
     }
 }
 
+TEST(SuperquadricShapeField, ValueIsOneLessTheGaugePositiveInside) {
+    // An ellipsoid's gauge is sqrt(Σ (xᵢ/aᵢ)²): 1 − G is known everywhere inside its box.
+    const Vec3d centre(0.5, -1, 2), radii(1, 2, 3);
+    const SuperquadricShape shape({make_superquadric(radii, 1, 1, {}, Transform::translate(centre))});
+    EXPECT_DOUBLE_EQ(*shape.field_value(centre), 1);
+    EXPECT_NEAR(*shape.field_value(centre + Vec3d(0.5, 0, 0)), 0.5, 1e-12);
+    EXPECT_NEAR(*shape.field_value(centre + Vec3d(0, 0, 3)), 0, 1e-12);  // on the surface
+    EXPECT_NEAR(*shape.field_value(centre + Vec3d(0.6, 1.2, 0)), 1 - std::sqrt(0.36 + 0.36), 1e-12);
+    EXPECT_LT(*shape.field_value(centre + Vec3d(0.9, 1.9, 0)), 0);  // outside, within the box
+    EXPECT_LT(*shape.field_value(centre + Vec3d(5, 0, 0)), *shape.field_value(centre + Vec3d(2, 0, 0)));  // beyond it
+    // Of a union the larger: a second, unit ball at the origin.
+    const SuperquadricShape both({make_superquadric(radii, 1, 1, {}, Transform::translate(centre)),
+                                  make_superquadric({1, 1, 1}, 1, 1)});
+    EXPECT_NEAR(*both.field_value({0.25, 0, 0}), 0.75, 1e-12);
+    EXPECT_DOUBLE_EQ(*both.field_value(centre), 1);
+}
+
+TEST(SuperquadricShapeField, DeformedOnesAreZeroOnTheirSurfaceAndTheGradientIsTheFieldsDerivative) {
+    std::mt19937 random(8);
+    std::uniform_real_distribution<double> exponent(0.5, 1.5), unit(-1, 1);
+    for (int object = 0; object < 6; ++object) {
+        const Vec3d radii(0.8, 0.6, 1.2);
+        const SuperquadricShape shape({superquadric_test::random_deformed_superquadric(random, radii, exponent,
+                                                                                       Transform::translate({1, 0, 0}))});
+        const Superquadric& s = shape.superquadrics()[0];
+        for (int i = 0; i < 40; ++i) {
+            const Vec3d on_surface = s.surface_point(1.5 * unit(random), 3.1 * unit(random));
+            EXPECT_NEAR(*shape.field_value(on_surface), 0, 1e-9) << object << " " << i;
+        }
+        // Inside, away from the coordinate planes of the undeformed frame (where the gauge has creases for these
+        // exponents), the gradient against central differences of the value.
+        const double h = 1e-6;
+        int checked = 0;
+        for (int i = 0; i < 200 && checked < 40; ++i) {
+            const Vec3d p = s.surface_point(1.5 * unit(random), 3.1 * unit(random)) * 0.7 + Vec3d(0.3, 0, 0);
+            const double value = *shape.field_value(p);
+            if (!(value > 0.05 && value < 0.6)) continue;
+            Vec3d difference;
+            for (int k = 0; k < 3; ++k) {
+                Vec3d step(0, 0, 0);
+                step[k] = h;
+                difference[k] = (*shape.field_value(p + step) - *shape.field_value(p - step)) / (2 * h);
+            }
+            const Vec3d gradient = shape.field_gradient(p);
+            EXPECT_NEAR(length(gradient - difference), 0, 1e-4 * length(difference)) << object << " " << i;
+            ++checked;
+        }
+        EXPECT_GT(checked, 10) << object;
+    }
+}
+
 TEST(SuperquadricShape, CountersRecordTestsAndRootFinderWork) {
     const auto scene = scene_with(make_superquadric({1, 1, 1}, 0.7, 1.4, {Twist(1, 1)}), Transform::translate({0, 0, 5}));
     const auto count = [](const CounterTotals& t) {

@@ -52,6 +52,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         if (!is_finite(p)) node.fail("a sweep reaches beyond float range");
     tubes.remove_degenerate_triangles();
     compute_vertex_normals(tubes);
+    unwrap_tube_seams(tubes);
     return std::make_unique<TriangleMeshShape>(std::move(tubes));
 }
 

@@ -259,6 +259,18 @@ case_bad_scene_unknown_shape() {
   bad_scene 11 '        "type": "sphear",' 11 "objects[0].shape.type" "sphear"
 }
 
+# A blob element's material is resolved like an object's: an unknown name is reported where it is written.
+case_bad_scene_blob_element_material() {
+  local ball='{"center": [0, 0, 0], "radius": 1}'
+  write_shape_scene "$work/scene" '        "type": "blobs",' \
+    '        "elements": ['"$ball"', {"center": [1, 0, 0], "radius": 1, "material": "gray"}]'
+  check_bad_scene "$work/scene" 12 "objects[0].shape.elements[1].material" 'unknown material "gray" (did you mean "grey"?)'
+  expect_in "$work/stderr" "scene.json:12:105:" stderr  # the column of "gray"
+  write_shape_scene "$work/gen" '        "type": "blobs",' \
+    '        "generate": {"count": 10, "min": [0, 0, 0], "max": [1, 1, 1], "materials": ["grey", "blu"]}'
+  check_bad_scene "$work/gen" 12 "objects[0].shape.generate.materials[1]" 'unknown material "blu"'
+}
+
 case_info_scene() {
   cli_expect 0 info "$cornell"
   grep -Eq '^objects +[0-9]+' "$work/stdout" || { show_output; fail "info does not print the object count"; }
@@ -1832,7 +1844,7 @@ case_geometry_sweep_tubes_memory() {
     {"center": [0, 0.3, 1], "radius": 0.4}, {"center": [0, 0, 2], "radius": 0.5}]}'
   write_geometry_scene "$work/t" '{"type": "sweep_tubes", "theta_steps": 4096, "t_steps": 4096, "deformers": ['"$sweep"']}'
   run_peak 2 render "$work/t/scene.json" --max-memory 2G --quiet -o "$work/t.exr"
-  expect_in "$work/stderr" "objects[0].shape: a tube of 33562624 triangles (theta_steps 4096, t_steps 4096) needs about 6.38 GB"
+  expect_in "$work/stderr" "objects[0].shape: a tube of 33562624 triangles (theta_steps 4096, t_steps 4096) needs about 6.71 GB"
   expect_peak_below 100
   # 4.2 million triangles were accepted under 512 MB and peaked at 680 MB.
   write_geometry_scene "$work/t" '{"type": "sweep_tubes", "theta_steps": 2048, "t_steps": 1024, "deformers": ['"$sweep"']}'
