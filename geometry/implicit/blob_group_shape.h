@@ -34,6 +34,7 @@ public:
     // With element materials: the blend at the point, and as the part its largest share.
     LocalShading shading(const RTCHit& hit, const Vec3f& geometric_normal, const Vec3d& point) const override;
     std::vector<MaterialReference> part_materials() const override { return materials_.parts(); }
+    bool blends_parts() const override { return !materials_.empty(); }
     // F(P) = Σ wᵢ·fᵢ(P) − T, positive inside, and its gradient (zero on a hard cube's step: metacube.h).
     std::optional<double> field_value(const Vec3d& point) const override;
     Vec3d field_gradient(const Vec3d& point) const override;
