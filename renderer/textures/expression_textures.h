@@ -2,7 +2,6 @@
 // Textures that are constants or expressions of other textures: mix, scale, offset, invert and the clamp that
 // keeps a varying parameter inside its range. Each is constant when its inputs are (constant()), so that the
 // parser can fold it into one ConstantTexture.
-#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -119,10 +118,10 @@ struct Invert {
     T operator()(const T& v) const { return texture_math::invert(v); }
 };
 
-// Into [low, high] (each component of a colour).
+// Into [low, high] (each component of a colour); NaN becomes low.
 struct Clamp {
     float low, high;
-    float operator()(float v) const { return std::clamp(v, low, high); }
+    float operator()(float v) const { return v >= low ? (v <= high ? v : high) : low; }
     Rgb operator()(const Rgb& v) const { return {(*this)(v.r), (*this)(v.g), (*this)(v.b)}; }
 };
 

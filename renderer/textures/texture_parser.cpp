@@ -38,10 +38,22 @@ TexturePtr<T> constant_texture(const T& value) {
     return std::make_shared<ConstantTexture<T>>(value);
 }
 
+bool is_finite(float v) { return std::isfinite(v); }
+bool is_finite(const Rgb& v) { return v.is_finite(); }
+
+// A constant written at `node` (or an expression of constants there), which must be a finite float: JSON numbers
+// are doubles, and one beyond float's range (or an expression that overflows) would put infinities and NaNs in
+// the image.
+template <class T>
+TexturePtr<T> finite_constant(const SceneNode& node, const T& value) {
+    if (!is_finite(value)) node.fail("the value overflows a float (its magnitude must stay below 3.4e38)");
+    return constant_texture(value);
+}
+
 // An expression of constants becomes the constant it evaluates to.
 template <class T>
-TexturePtr<T> folded(TexturePtr<T> texture) {
-    if (const auto value = texture->constant()) return constant_texture(*value);
+TexturePtr<T> folded(const SceneNode& node, TexturePtr<T> texture) {
+    if (const auto value = texture->constant()) return finite_constant(node, *value);
     return texture;
 }
 
@@ -60,11 +72,11 @@ public:
         if constexpr (kIsColour<T>) {
             if (json.is_object() && json.find("texture")) return short_form(node);
             if (json.is_number() || json.is_array() || (json.is_object() && json.find("rgb")))
-                return constant_texture(node.as_colour());
+                return finite_constant(node, node.as_colour());
             node.fail("expected a colour ([r, g, b], a number, {\"rgb\": [r, g, b], \"space\": name}) or a texture "
                       "({\"type\": ...}, {\"texture\": file})");
         } else {
-            if (json.is_number()) return constant_texture(float(node.as_number()));
+            if (json.is_number()) return finite_constant(node, float(node.as_number()));
             if (json.is_array() || (json.is_object() && (json.find("rgb") || json.find("texture"))))
                 node.fail("expected a number or a scalar texture ({\"type\": ...}): this parameter is a number, not a "
                           "colour");
@@ -117,7 +129,7 @@ private:
                                      "; expected one of: " + listed(known));
         }
         node.finish();
-        return folded<T>(std::move(result));
+        return folded<T>(node, std::move(result));
     }
 
     static ScalarTexturePtr field(const SceneNode& node) {
@@ -202,7 +214,7 @@ ScalarTexturePtr parse_scalar_texture(const SceneNode& parent, const std::string
                                       NumberRange range) {
     const auto value = parent.optional_value(key);
     if (!value) return constant_texture(fallback);
-    if (value->json().is_number()) return constant_texture(float(value->as_number(range)));
+    if (value->json().is_number()) return finite_constant(*value, float(value->as_number(range)));
     ScalarTexturePtr texture = TextureParser(false).value<float>(*value, 1);
     if (const auto constant = texture->constant()) {
         if (!range.contains(*constant))
