@@ -42,6 +42,7 @@ TEST(Grid, WideFootprintsGiveTheCoverage) {
         const float value = grid(p, kWidth, 0);
         ASSERT_TRUE(value == 0 || value == 1);
     }
+    EXPECT_FLOAT_EQ(grid({0.3f, 0.2f, 0.1f}, kWidth, std::numeric_limits<float>::infinity()), float(coverage_3d));
 }
 
 // The filtered value is the mean of point samples over the footprint's cube (square in 2-D), taken by brute force.
