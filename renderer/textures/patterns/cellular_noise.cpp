@@ -9,9 +9,8 @@
 namespace isotrace {
 namespace {
 
-// Independent random numbers from one cell hash: the hash mixed again after adding distinct odd constants.
 float cell_random(std::uint32_t hash, std::uint32_t stream) {
-    return uint_to_unit_float(mix32(hash + stream * 0x9e3779b9u));
+    return uint_to_unit_float(hash_stream(hash, stream));
 }
 
 // The feature point's offset from its cell's corner.

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/sampling/hash.h"
-#include "renderer/textures/patterns/pattern_math.h"
 #include "renderer/textures/patterns/gradient_noise.h"
+#include "renderer/textures/patterns/lattice.h"
+#include "renderer/textures/patterns/pattern_math.h"
 #include "renderer/textures/patterns/simplex_noise.h"
 
 namespace isotrace {
@@ -86,14 +86,10 @@ float basis_noise(NoiseBasis basis, const Vec3f& p, std::uint32_t seed) {
 }
 
 OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_t seed, int octave) {
-    // Eight 32-bit random numbers: the halves of four 64-bit hashes.
-    const std::uint64_t hash = hash_combine(seed, octave);
+    // Eight independent 32-bit random numbers from one hash of (seed, octave).
+    const std::uint32_t hash = lattice_hash(lattice_seed(seed), octave);
     std::uint32_t bits[8];
-    for (int i = 0; i < 4; ++i) {
-        const std::uint64_t word = hash_extend(hash, i);
-        bits[2 * i] = static_cast<std::uint32_t>(word);
-        bits[2 * i + 1] = static_cast<std::uint32_t>(word >> 32);
-    }
+    for (std::uint32_t i = 0; i < 8; ++i) bits[i] = hash_stream(hash, i + 1);
     const auto random = [&bits](int i) { return 2 * uint_to_unit_float(bits[i]) - 1; };  // in [-1, 1)
     // The rotation of the quaternion (w, x, y, z), scaled by s = 2 / |q|² instead of normalising q.
     const float w = random(0), x = random(1), y = random(2), z = random(3);

@@ -20,13 +20,6 @@ float lerp(float t, float a, float b) {
 
 }  // namespace
 
-float lattice_gradient_dot(std::uint32_t hash, float x, float y, float z) {
-    const std::uint32_t h = hash >> 28;  // the best-mixed bits of mix32
-    const float u = h < 8 ? x : y;
-    const float v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
-    return ((h & 1) == 0 ? u : -u) + ((h & 2) == 0 ? v : -v);
-}
-
 float gradient_noise(const Vec3f& p, std::uint32_t seed) {
     const LatticeCoordinate cx = lattice_coordinate(p.x), cy = lattice_coordinate(p.y), cz = lattice_coordinate(p.z);
     const float x = cx.offset, y = cy.offset, z = cz.offset;

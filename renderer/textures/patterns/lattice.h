@@ -1,7 +1,6 @@
 #pragma once
 // The integer lattice the noise and cellular patterns are built on: where a coordinate falls in it, and a hash of
 // each lattice cell under a seed (in place of Perlin's permutation table, so every seed is an independent field).
-#include <cmath>
 #include <cstdint>
 
 #include "renderer/sampling/hash.h"
@@ -23,10 +22,16 @@ constexpr float lattice_clamp(float x) {
     return x >= -kLatticeLimit ? (x <= kLatticeLimit ? x : kLatticeLimit) : (x < -kLatticeLimit ? -kLatticeLimit : 0.0f);
 }
 
-inline LatticeCoordinate lattice_coordinate(float x) {
+// ⌊x⌋ for |x| ≤ 2^30 (clamped coordinates, and simplex noise's skewed ones), without a call to floorf.
+constexpr std::int32_t lattice_floor(float x) {
+    const auto truncated = static_cast<std::int32_t>(x);
+    return x < static_cast<float>(truncated) ? truncated - 1 : truncated;
+}
+
+constexpr LatticeCoordinate lattice_coordinate(float x) {
     const float clamped = lattice_clamp(x);
-    const float cell = std::floor(clamped);
-    return {static_cast<std::int32_t>(cell), clamped - cell};
+    const std::int32_t cell = lattice_floor(clamped);
+    return {cell, clamped - static_cast<float>(cell)};
 }
 
 // Hashes chain one axis at a time, so the corners of a cell share the hashes of their common prefixes:
@@ -37,6 +42,12 @@ constexpr std::uint32_t lattice_seed(std::uint32_t seed) {
 
 constexpr std::uint32_t lattice_hash(std::uint32_t prefix, std::int32_t coordinate) {
     return mix32(prefix ^ static_cast<std::uint32_t>(coordinate));
+}
+
+// Independent random numbers from one hash, numbered by `stream` (from 1): the hash mixed again after adding a
+// distinct multiple of an odd constant.
+constexpr std::uint32_t hash_stream(std::uint32_t hash, std::uint32_t stream) {
+    return mix32(hash + stream * 0x9e3779b9u);
 }
 
 constexpr std::uint32_t cell_hash(std::int32_t x, std::int32_t y, std::int32_t z, std::uint32_t seed) {

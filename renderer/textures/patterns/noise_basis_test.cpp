@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <ostream>
 
 #include "renderer/textures/patterns/fractal_noise.h"
 #include "renderer/textures/patterns/pattern_test_support.h"
@@ -14,6 +15,10 @@ struct NoiseCase {
     NoiseBasis basis;
     double spread_low, spread_high;  // the stated bounds on the standard deviation
 };
+
+void PrintTo(const NoiseCase& noise_case, std::ostream* out) {
+    *out << (noise_case.basis == NoiseBasis::Gradient ? "gradient" : "simplex") << " noise";
+}
 
 class NoiseBasisTest : public testing::TestWithParam<NoiseCase> {
 protected:

@@ -1,6 +1,6 @@
 #include "renderer/textures/patterns/simplex_noise.h"
 
-#include <cmath>
+#include <algorithm>
 
 #include "renderer/textures/patterns/gradient_noise.h"
 #include "renderer/textures/patterns/lattice.h"
@@ -21,8 +21,7 @@ constexpr float kUnscaledExtreme = 0.0130072f;  // 0.01300716, rounded up
 
 float corner_contribution(std::int32_t i, std::int32_t j, std::int32_t k, std::uint32_t seed, float x, float y,
                           float z) {
-    const float t = kKernelRadiusSquared - (x * x + y * y + z * z);
-    if (t <= 0) return 0;
+    const float t = std::max(kKernelRadiusSquared - (x * x + y * y + z * z), 0.0f);
     const float t2 = t * t;
     return t2 * t2 * lattice_gradient_dot(cell_hash(i, j, k, seed), x, y, z);
 }
@@ -32,22 +31,17 @@ float corner_contribution(std::int32_t i, std::int32_t j, std::int32_t k, std::u
 float simplex_noise(const Vec3f& p, std::uint32_t seed) {
     const float px = lattice_clamp(p.x), py = lattice_clamp(p.y), pz = lattice_clamp(p.z);
     const float skew = (px + py + pz) * kSkew;
-    const float fi = std::floor(px + skew), fj = std::floor(py + skew), fk = std::floor(pz + skew);
+    const std::int32_t i = lattice_floor(px + skew), j = lattice_floor(py + skew), k = lattice_floor(pz + skew);
+    const float fi = static_cast<float>(i), fj = static_cast<float>(j), fk = static_cast<float>(k);
     const float unskew = (fi + fj + fk) * kUnskew;
     const float x0 = px - (fi - unskew), y0 = py - (fj - unskew), z0 = pz - (fk - unskew);
-    const auto i = static_cast<std::int32_t>(fi), j = static_cast<std::int32_t>(fj), k = static_cast<std::int32_t>(fk);
 
-    // The simplex is the one whose edges follow the offset's components from the largest to the smallest.
-    int i1, j1, k1, i2, j2, k2;
-    if (x0 >= y0) {
-        if (y0 >= z0) { i1 = 1; j1 = 0; k1 = 0; i2 = 1; j2 = 1; k2 = 0; }
-        else if (x0 >= z0) { i1 = 1; j1 = 0; k1 = 0; i2 = 1; j2 = 0; k2 = 1; }
-        else { i1 = 0; j1 = 0; k1 = 1; i2 = 1; j2 = 0; k2 = 1; }
-    } else {
-        if (y0 < z0) { i1 = 0; j1 = 0; k1 = 1; i2 = 0; j2 = 1; k2 = 1; }
-        else if (x0 < z0) { i1 = 0; j1 = 1; k1 = 0; i2 = 0; j2 = 1; k2 = 1; }
-        else { i1 = 0; j1 = 1; k1 = 0; i2 = 1; j2 = 1; k2 = 0; }
-    }
+    // The simplex is the one whose edges follow the offset's components from the largest to the smallest: its
+    // second corner steps along the largest, its third along the two largest (ties go to x, then y).
+    // (& and | rather than && and ||: no branches to mispredict.)
+    const bool x_ge_y = x0 >= y0, x_ge_z = x0 >= z0, y_ge_z = y0 >= z0;
+    const int i1 = x_ge_y & x_ge_z, j1 = !x_ge_y & y_ge_z, k1 = !x_ge_z & !y_ge_z;
+    const int i2 = x_ge_y | x_ge_z, j2 = !x_ge_y | y_ge_z, k2 = !x_ge_z | !y_ge_z;
     const float sum =
         corner_contribution(i, j, k, seed, x0, y0, z0) +
         corner_contribution(i + i1, j + j1, k + k1, seed, x0 - i1 + kUnskew, y0 - j1 + kUnskew, z0 - k1 + kUnskew) +
