@@ -1,5 +1,5 @@
 #pragma once
-// Checkerboards of unit cells: 0 on the cell holding the origin's positive corner, alternating across every face.
+// Checkerboards of unit cells: 0 on the cell [0, 1)³ (or [0, 1)²), alternating across every face.
 #include <array>
 
 #include "renderer/math/vec3.h"

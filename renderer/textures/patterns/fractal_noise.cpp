@@ -117,9 +117,10 @@ float turbulence(const Vec3f& p, const FractalSettings& settings, float footprin
                        [mean](float shaped, float fade) { return faded(shaped, fade, mean); });
 }
 
-// The fade keeps the mean over space: an octave's term is its weight times its faded signal, whose mean is the
-// weight times the signal's mean, and the weight handed on is faded towards its own mean given the weight received
-// (mean_feedback), so a faded octave passes on what the whole one would on average.
+// The fade keeps the mean over space to first order: an octave's term is its weight times its faded signal, whose
+// mean is the weight times the signal's mean, and the weight handed on is faded towards its mean given the weight
+// received (mean_feedback), so a faded octave passes on what the whole one would on average. (Only to first order:
+// the mean of the next weight is propagated, not its distribution.)
 float ridged(const Vec3f& p, const FractalSettings& settings, float footprint) {
     const BasisStatistics& statistics = basis_statistics(settings.basis);
     float weight = 1;  // the first octave is whole; each later one is weighted by its predecessor
