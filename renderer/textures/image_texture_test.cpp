@@ -171,5 +171,52 @@ TEST(ImageTexture, TinyFileClaimingAHugeImageIsRefusedFromItsHeaderBeforeAnyAllo
     EXPECT_LE(budget.charged_bytes(), kImageModuleResidentBytes);  // at most the module, if this test loaded it
 }
 
+// The mip levels are charged with the image, from its header: a budget that holds the image alone refuses it with
+// its levels before any pixel is read, and charges nothing.
+TEST(ImageTexture, ReducedLevelsAreChargedBeforeTheImageIsRead) {
+    const ColourSystem colours("", "ACEScg");
+    const auto path = write_image<float>("levels.exr", 64, 64, std::vector<float>(64 * 64 * 3, 0.5f));
+    ImageTexture::load(path, "", colours, memory);  // the image module is loaded (and charged) once, here
+    MemoryBudget measure;
+    ImageTexture::load(path, "", colours, measure);
+    const std::uint64_t image_alone = measure.charged_bytes();
+    const std::uint64_t levels = MipPyramid::reduced_texel_count(64, 64) * 3 * sizeof(float);
+    ASSERT_GT(levels, 16000u);
+    MemoryBudget budget(image_alone + levels / 2);
+    EXPECT_NO_THROW(ImageTexture::load(path, "", colours, budget));
+    MemoryBudget tight(image_alone + levels / 2);
+    const std::string message = [&] {
+        try {
+            ImageTexture::load(path, "", colours, tight, {.mip_levels = true});
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    }();
+    EXPECT_NE(message.find("the 64x64 image with its reduced levels"), std::string::npos) << message;
+    EXPECT_EQ(tight.charged_bytes(), 0u);
+    MemoryBudget enough(image_alone + levels);
+    EXPECT_EQ(ImageTexture::load(path, "", colours, enough, {.mip_levels = true})->pyramid().level_count(), 7);
+}
+
+TEST(ImageTexture, OneChannelOrDataAsStored) {
+    const ColourSystem colours("", "ACEScg");
+    const auto path = write_image<std::uint8_t>("channels.png", 1, 1, {51, 102, 255});
+    const auto green = ImageTexture::load(path, "", colours, memory, {.content = ImageContent::Green});
+    EXPECT_EQ(green->pyramid().channels(), 1);
+    EXPECT_FLOAT_EQ(*green->pyramid().texel(0, 0, 0), 102.0f / 255);
+    const auto data = ImageTexture::load(path, "", colours, memory, {.content = ImageContent::Data});
+    EXPECT_FLOAT_EQ(data->texel(0, 0).r, 51.0f / 255);  // no sRGB decoding
+    EXPECT_FLOAT_EQ(data->texel(0, 0).g, 102.0f / 255);
+    EXPECT_EQ(data->colour_space(), "");
+    try {
+        ImageTexture::load(path, "", colours, memory, {.content = ImageContent::Alpha});
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("channels.png: the image has no alpha channel"), std::string::npos)
+            << error.what();
+    }
+}
+
 }  // namespace
 }  // namespace isotrace

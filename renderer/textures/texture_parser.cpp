@@ -1,5 +1,6 @@
 #include "renderer/textures/texture_parser.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <type_traits>
@@ -9,6 +10,7 @@
 #include "renderer/textures/expression_textures.h"
 #include "renderer/textures/field_texture.h"
 #include "renderer/textures/image_map_texture.h"
+#include "renderer/textures/pattern_texture.h"
 
 namespace isotrace {
 namespace {
@@ -88,6 +90,7 @@ private:
     template <class T>
     static std::vector<std::string> types() {
         std::vector<std::string> names{"image", "mix", "scale", "offset", "invert"};
+        names.insert(names.end(), pattern_types().begin(), pattern_types().end());
         if constexpr (!kIsColour<T>) names.push_back("field");
         return names;
     }
@@ -100,12 +103,33 @@ private:
         return value<T>(*child, depth);
     }
 
+    // parent[key] of kind T, or `fallback` when it is not written.
+    template <class T>
+    TexturePtr<T> optional(const SceneNode& parent, const std::string& key, int depth, const T& fallback) const {
+        const auto child = parent.optional_value(key);
+        return child ? value<T>(*child, depth) : constant_texture(fallback);
+    }
+
+    // mix(a, b, pattern): a and b default to 0 and 1 (black and white).
+    template <class T>
+    TexturePtr<T> pattern(const SceneNode& node, const std::string& type, int depth) const {
+        ScalarTexturePtr t = parse_pattern(node, type);
+        const bool mixed = writes(node, "a") || writes(node, "b");
+        TexturePtr<T> a = optional<T>(node, "a", depth + 1, T(0)), b = optional<T>(node, "b", depth + 1, T(1));
+        if constexpr (!kIsColour<T>)
+            if (!mixed) return t;
+        return std::make_shared<MixTexture<T>>(std::move(a), std::move(b), std::move(t));
+    }
+
     template <class T>
     TexturePtr<T> typed(const SceneNode& node, int depth) const {
         const std::string type = node.string("type");
         TexturePtr<T> result;
+        const auto& patterns = pattern_types();
         if (type == "image") {
             result = image<T>(node);
+        } else if (std::find(patterns.begin(), patterns.end(), type) != patterns.end()) {
+            result = pattern<T>(node, type, depth);
         } else if (type == "mix") {
             result = std::make_shared<MixTexture<T>>(required<T>(node, "a", depth + 1), required<T>(node, "b", depth + 1),
                                                      required<float>(node, "t", depth + 1));
