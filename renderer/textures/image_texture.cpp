@@ -77,7 +77,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
         const std::uint64_t rows = saturating_product({std::uint64_t(header.height), options.set_up.per_row});
         memory.charge(saturating_sum({texels, levels, rows}),
                       "the " + std::to_string(header.width) + "x" + std::to_string(header.height) + " image" +
-                          (options.mip_levels ? " with its reduced levels" : ""),
+                          (options.mip_levels ? " with its mip levels" : ""),
                       {path.string(), 0, 0});
     };
     charge_image_module(memory, path);

@@ -193,7 +193,7 @@ TEST(ImageTexture, ReducedLevelsAreChargedBeforeTheImageIsRead) {
         }
         return std::string("no error");
     }();
-    EXPECT_NE(message.find("the 64x64 image with its reduced levels"), std::string::npos) << message;
+    EXPECT_NE(message.find("the 64x64 image with its mip levels"), std::string::npos) << message;
     EXPECT_EQ(tight.charged_bytes(), 0u);
     MemoryBudget enough(image_alone + levels);
     EXPECT_EQ(ImageTexture::load(path, "", colours, enough, {.mip_levels = true})->pyramid().level_count(), 7);
