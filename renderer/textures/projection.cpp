@@ -34,9 +34,11 @@ ProjectedLookups Projection::project(const TextureContext& context) const {
         const Vec3f placed = to_texture_point({context.uv[0], context.uv[1], 0});
         result.points[0].point = {placed.x, placed.y, 0};
         // The footprint along u is the world footprint over the surface's stretch along u.
-        const float du = length(context.dpdu), dv = length(context.dpdv);
-        result.footprint = {du > 0 ? context.footprint / du * footprint_scale_ : 0,
-                            dv > 0 ? context.footprint / dv * footprint_scale_ : 0};
+        if (context.footprint > 0) {
+            const float du = length(context.dpdu), dv = length(context.dpdv);
+            result.footprint = {du > 0 ? context.footprint / du * footprint_scale_ : 0,
+                                dv > 0 ? context.footprint / dv * footprint_scale_ : 0};
+        }
         return result;
     }
     const Vec3f p = to_texture_point(object_space_ ? context.object_position : context.position);
