@@ -51,8 +51,6 @@ public:
                                                     const ColourSystem& colours, MemoryBudget& memory,
                                                     const ImageLoadOptions& options = {});
 
-    // Bilinear, repeating, full resolution (an RGB texture's).
-    Rgb lookup(std::array<float, 2> uv) const { return to_rgb(pyramid_.lookup<3>(uv, 0, WrapMode::Repeat)); }
     // One texel of an RGB texture; row y = 0 is the top of the image; x and y wrap around (repeat).
     Rgb texel(int x, int y) const {
         return to_rgb(pyramid_.texel(0, wrap_index(x, width(), WrapMode::Repeat), wrap_index(y, height(), WrapMode::Repeat)));
