@@ -23,6 +23,7 @@ ColourTexturePtr parse_colour_texture(const SceneNode& parent, const std::string
                                       ColourRange range);
 
 // Like parse_colour_texture, but images are data (no colour conversion; for normal maps), values as stored.
+// Absent: null (the material has no such map).
 ColourTexturePtr parse_data_texture(const SceneNode& parent, const std::string& key);
 
 }  // namespace isotrace
