@@ -176,7 +176,8 @@ std::unique_ptr<Light> create(const SceneNode& node) {
     if (!node.context().colours) node.fail("no colour system available to read \"" + file.string() + "\"");
     std::shared_ptr<const ImageTexture> map;
     try {
-        map = ImageTexture::load(file, space, *node.context().colours, *node.context().memory, kSamplingSetUpMemory);
+        map = ImageTexture::load(file, space, *node.context().colours, *node.context().memory,
+                                  {.set_up = kSamplingSetUpMemory});
     } catch (const InputError& error) {
         node.fail_at("file", error.what());
     }

@@ -1,20 +1,20 @@
-// Lambertian reflector, optionally also emitting (a glowing diffuse surface). The reflectance may be an image
-// texture.
+// Lambertian reflector, optionally also emitting (a glowing diffuse surface). The reflectance may be a texture.
 
 #include "renderer/bsdf/lambert_bsdf.h"
 #include "renderer/materials/emission_profile.h"
 #include "renderer/plugin/material.h"
-#include "renderer/textures/colour_source.h"
+#include "renderer/textures/texture_at_hit.h"
+#include "renderer/textures/texture_parser.h"
 
 namespace isotrace {
 namespace {
 
 class DiffuseMaterial final : public Material {
 public:
-    DiffuseMaterial(ColourSource reflectance, const EmissionProfile& emission)
+    DiffuseMaterial(ColourTexturePtr reflectance, const EmissionProfile& emission)
         : reflectance_(std::move(reflectance)), emission_(emission) {}
 
-    Rgb albedo(const SurfaceHit& hit) const override { return reflectance_.evaluate_reflectance(hit); }
+    Rgb albedo(const SurfaceHit& hit) const override { return texture_at_hit(*reflectance_, hit); }
     Rgb emission(const SurfaceHit& hit, const Vec3f& towards_viewer) const override {
         return emission_.towards(hit, towards_viewer);
     }
@@ -23,17 +23,17 @@ public:
         return LambertBsdf(albedo(hit));
     }
     std::optional<Rgb> constant_lambertian_reflectance() const override {
-        if (!reflectance_.is_constant() || emission_.emits()) return std::nullopt;
-        return reflectance_.evaluate_reflectance(SurfaceHit{});  // the same for every hit
+        if (emission_.emits()) return std::nullopt;
+        return reflectance_->constant();
     }
 
 private:
-    ColourSource reflectance_;
+    ColourTexturePtr reflectance_;
     EmissionProfile emission_;
 };
 
 std::unique_ptr<Material> create(const SceneNode& node) {
-    ColourSource reflectance = parse_reflectance(node, "reflectance", Rgb(0.5f));
+    ColourTexturePtr reflectance = parse_colour_texture(node, "reflectance", Rgb(0.5f), ColourRange::Reflectance);
     return std::make_unique<DiffuseMaterial>(std::move(reflectance),
                                              parse_emission(node, "emission", false, "two_sided_emission"));
 }
@@ -41,6 +41,6 @@ std::unique_ptr<Material> create(const SceneNode& node) {
 }  // namespace
 
 ISOTRACE_REGISTER_PLUGIN(material_registry, "diffuse",
-                         "Lambertian; reflectance (colour or {texture, space, scale}, 0.5), emission (colour, 0), two_sided_emission", create)
+                         "Lambertian; reflectance (colour or texture, docs/textures.md; 0.5), emission (colour, 0), two_sided_emission", create)
 
 }  // namespace isotrace

@@ -3,22 +3,23 @@
 #include "renderer/bsdf/coated_diffuse_bsdf.h"
 #include "renderer/materials/roughness_parameters.h"
 #include "renderer/plugin/material.h"
-#include "renderer/textures/colour_source.h"
+#include "renderer/textures/texture_at_hit.h"
+#include "renderer/textures/texture_parser.h"
 
 namespace isotrace {
 namespace {
 
 class PlasticMaterial final : public Material {
 public:
-    PlasticMaterial(ColourSource reflectance, float ior, float alpha)
+    PlasticMaterial(ColourTexturePtr reflectance, float ior, float alpha)
         : reflectance_(std::move(reflectance)), coating_(ior, alpha) {}
-    Rgb albedo(const SurfaceHit& hit) const override { return reflectance_.evaluate_reflectance(hit); }
+    Rgb albedo(const SurfaceHit& hit) const override { return texture_at_hit(*reflectance_, hit); }
     SurfaceBsdf bsdf(const SurfaceHit& hit) const override {
         return CoatedDiffuseBsdf(coating_, albedo(hit));
     }
 
 private:
-    ColourSource reflectance_;
+    ColourTexturePtr reflectance_;
     DielectricCoating coating_;
 };
 
@@ -27,7 +28,8 @@ private:
 ISOTRACE_REGISTER_PLUGIN(material_registry, "plastic",
                          "coated diffuse; reflectance (colour or texture, 0.5), ior (1.5), roughness (0 = smooth)",
                          [](const SceneNode& node) -> std::unique_ptr<Material> {
-                             ColourSource reflectance = parse_reflectance(node, "reflectance", Rgb(0.5f));
+                             ColourTexturePtr reflectance =
+                                 parse_colour_texture(node, "reflectance", Rgb(0.5f), ColourRange::Reflectance);
                              const double ior = node.number_or("ior", 1.5, {1.0, 10.0, true, false});
                              const MicrofacetAlphas alphas = parse_roughness(node, 0.0);
                              if (alphas.x != alphas.y) node.fail_at("roughness_v", "plastic coatings are isotropic");

@@ -40,6 +40,17 @@ public:
                 inv_[0][1] * n.x + inv_[1][1] * n.y + inv_[2][1] * n.z,
                 inv_[0][2] * n.x + inv_[1][2] * n.y + inv_[2][2] * n.z};
     }
+    // The inverse's point() and normal() without copying the inverse out (textures map every shading point back
+    // to object space).
+    Vec3d inverse_point(const Vec3d& p) const {
+        return {inv_[0][0] * p.x + inv_[0][1] * p.y + inv_[0][2] * p.z + inv_[0][3],
+                inv_[1][0] * p.x + inv_[1][1] * p.y + inv_[1][2] * p.z + inv_[1][3],
+                inv_[2][0] * p.x + inv_[2][1] * p.y + inv_[2][2] * p.z + inv_[2][3]};
+    }
+    Vec3d inverse_normal(const Vec3d& n) const {  // transpose of the matrix; not normalised
+        return {m_[0][0] * n.x + m_[1][0] * n.y + m_[2][0] * n.z, m_[0][1] * n.x + m_[1][1] * n.y + m_[2][1] * n.z,
+                m_[0][2] * n.x + m_[1][2] * n.y + m_[2][2] * n.z};
+    }
     Vec3f point(const Vec3f& p) const { return Vec3f(point(Vec3d(p))); }
     Vec3f vector(const Vec3f& v) const { return Vec3f(vector(Vec3d(v))); }
     Vec3f normal(const Vec3f& n) const { return Vec3f(normal(Vec3d(n))); }

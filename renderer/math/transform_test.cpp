@@ -119,6 +119,14 @@ TEST(Transform, InverseSwapsTheMatrices) {
     expect_near(a.inverse().vector(a.vector(p)), p);
 }
 
+TEST(Transform, InversePointAndNormalAreTheInverseTransforms) {
+    const Transform a = Transform::from_matrix(general_affine());
+    const Vec3d p{0.5, -7, 2};
+    EXPECT_EQ(a.inverse_point(p), a.inverse().point(p));
+    EXPECT_EQ(a.inverse_normal(p), a.inverse().normal(p));
+    expect_near(a.inverse_point(a.point(p)), p);
+}
+
 TEST(Transform, FromMatrixRejectsNonAffineSingularAndNonFinite) {
     Matrix projective = identity();
     projective[3][2] = 1;

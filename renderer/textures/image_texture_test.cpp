@@ -30,6 +30,11 @@ std::filesystem::path write_image(const std::string& name, int w, int h, const s
     return testing::write_rgb_image(temp_dir() / name, w, h, pixels);
 }
 
+// The full-resolution bilinear lookup, repeating.
+Rgb lookup(const ImageTexture& texture, std::array<float, 2> uv) {
+    return ImageTexture::to_rgb(texture.pyramid().lookup<3>(uv, 0, WrapMode::Repeat));
+}
+
 // The message of the InputError that loading `path` throws; a test failure (and "") if it loads.
 std::string load_error(const std::filesystem::path& path, const ColourSystem& colours, MemoryBudget& budget = memory) {
     try {
@@ -48,11 +53,11 @@ TEST(ImageTexture, EightBitImagesAreDecodedFromSrgb) {
     const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->colour_space(), "srgb_texture");
     const float expected = std::pow((128.0f / 255 + 0.055f) / 1.055f, 2.4f);  // the sRGB EOTF
-    const Rgb left = texture->lookup({0.25f, 0.5f});  // texel centre: no blending
+    const Rgb left = lookup(*texture, {0.25f, 0.5f});  // texel centre: no blending
     EXPECT_NEAR(left.r, expected, 1e-5);
-    EXPECT_NEAR(texture->lookup({0.75f, 0.5f}).g, 1.0f, 1e-5);
+    EXPECT_NEAR(lookup(*texture, {0.75f, 0.5f}).g, 1.0f, 1e-5);
     // Halfway between the texel centres the bilinear lookup averages them.
-    EXPECT_NEAR(texture->lookup({0.5f, 0.5f}).b, 0.5f * (expected + 1.0f), 1e-5);
+    EXPECT_NEAR(lookup(*texture, {0.5f, 0.5f}).b, 0.5f * (expected + 1.0f), 1e-5);
 }
 
 TEST(ImageTexture, FloatImagesDefaultToTheWorkingSpaceAndVRunsUp) {
@@ -61,14 +66,14 @@ TEST(ImageTexture, FloatImagesDefaultToTheWorkingSpaceAndVRunsUp) {
     const auto path = write_image<float>("rows.exr", 1, 2, {1, 0, 0, 0, 1, 0});
     const auto texture = ImageTexture::load(path, "", colours, memory);
     EXPECT_EQ(texture->colour_space(), "ACEScg");
-    EXPECT_EQ(texture->lookup({0.5f, 0.75f}), Rgb(1, 0, 0));  // v = 0.75 is the top row's centre
-    EXPECT_EQ(texture->lookup({0.5f, 0.25f}), Rgb(0, 1, 0));
+    EXPECT_EQ(lookup(*texture, {0.5f, 0.75f}), Rgb(1, 0, 0));  // v = 0.75 is the top row's centre
+    EXPECT_EQ(lookup(*texture, {0.5f, 0.25f}), Rgb(0, 1, 0));
 }
 
 TEST(ImageTexture, ExplicitSpaceIsConvertedToTheWorkingSpace) {
     const ColourSystem colours("", "ACEScg");
     const auto path = write_image<float>("white.exr", 1, 1, {1, 0, 0});
-    const Rgb converted = ImageTexture::load(path, "lin_rec709", colours, memory)->lookup({0.3f, 0.6f});
+    const Rgb converted = lookup(*ImageTexture::load(path, "lin_rec709", colours, memory), {0.3f, 0.6f});
     EXPECT_EQ(converted, colours.to_working(Rgb(1, 0, 0), "lin_rec709"));
     EXPECT_NE(converted, Rgb(1, 0, 0));
 }
@@ -78,10 +83,10 @@ TEST(ImageTexture, RepeatsOutsideTheUnitSquare) {
     const auto path = write_image<float>("ramp.exr", 4, 1,
                                          {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3});
     const auto texture = ImageTexture::load(path, "", colours, memory);
-    EXPECT_EQ(texture->lookup({0.375f, 0.5f}), texture->lookup({2.375f, 0.5f}));
-    EXPECT_EQ(texture->lookup({0.375f, 0.5f}), texture->lookup({-0.625f, 0.5f}));
+    EXPECT_EQ(lookup(*texture, {0.375f, 0.5f}), lookup(*texture, {2.375f, 0.5f}));
+    EXPECT_EQ(lookup(*texture, {0.375f, 0.5f}), lookup(*texture, {-0.625f, 0.5f}));
     // Between the last and first texel the lookup wraps: halfway = (3 + 0) / 2.
-    EXPECT_NEAR(texture->lookup({1.0f, 0.5f}).r, 1.5f, 1e-6);
+    EXPECT_NEAR(lookup(*texture, {1.0f, 0.5f}).r, 1.5f, 1e-6);
 }
 
 TEST(ImageTexture, BadFilesNameTheFile) {
@@ -169,6 +174,53 @@ TEST(ImageTexture, TinyFileClaimingAHugeImageIsRefusedFromItsHeaderBeforeAnyAllo
     EXPECT_NE(message.find("100000x100000"), std::string::npos) << message;
     EXPECT_NE(message.find("needs about 180 GB"), std::string::npos) << message;
     EXPECT_LE(budget.charged_bytes(), kImageModuleResidentBytes);  // at most the module, if this test loaded it
+}
+
+// The mip levels are charged with the image, from its header: a budget that holds the image alone refuses it with
+// its levels before any pixel is read, and charges nothing.
+TEST(ImageTexture, ReducedLevelsAreChargedBeforeTheImageIsRead) {
+    const ColourSystem colours("", "ACEScg");
+    const auto path = write_image<float>("levels.exr", 64, 64, std::vector<float>(64 * 64 * 3, 0.5f));
+    ImageTexture::load(path, "", colours, memory);  // the image module is loaded (and charged) once, here
+    MemoryBudget measure;
+    ImageTexture::load(path, "", colours, measure);
+    const std::uint64_t image_alone = measure.charged_bytes();
+    const std::uint64_t levels = MipPyramid::reduced_texel_count(64, 64) * 3 * sizeof(float);
+    ASSERT_GT(levels, 16000u);
+    MemoryBudget budget(image_alone + levels / 2);
+    EXPECT_NO_THROW(ImageTexture::load(path, "", colours, budget));
+    MemoryBudget tight(image_alone + levels / 2);
+    const std::string message = [&] {
+        try {
+            ImageTexture::load(path, "", colours, tight, {.mip_levels = true});
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    }();
+    EXPECT_NE(message.find("the 64x64 image with its mip levels"), std::string::npos) << message;
+    EXPECT_EQ(tight.charged_bytes(), 0u);
+    MemoryBudget enough(image_alone + levels);
+    EXPECT_EQ(ImageTexture::load(path, "", colours, enough, {.mip_levels = true})->pyramid().level_count(), 7);
+}
+
+TEST(ImageTexture, OneChannelOrDataAsStored) {
+    const ColourSystem colours("", "ACEScg");
+    const auto path = write_image<std::uint8_t>("channels.png", 1, 1, {51, 102, 255});
+    const auto green = ImageTexture::load(path, "", colours, memory, {.content = ImageContent::Green});
+    EXPECT_EQ(green->pyramid().channels(), 1);
+    EXPECT_FLOAT_EQ(*green->pyramid().texel(0, 0, 0), 102.0f / 255);
+    const auto data = ImageTexture::load(path, "", colours, memory, {.content = ImageContent::Data});
+    EXPECT_FLOAT_EQ(data->texel(0, 0).r, 51.0f / 255);  // no sRGB decoding
+    EXPECT_FLOAT_EQ(data->texel(0, 0).g, 102.0f / 255);
+    EXPECT_EQ(data->colour_space(), "");
+    try {
+        ImageTexture::load(path, "", colours, memory, {.content = ImageContent::Alpha});
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("channels.png: the image has no alpha channel"), std::string::npos)
+            << error.what();
+    }
 }
 
 }  // namespace

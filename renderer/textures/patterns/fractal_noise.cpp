@@ -1,0 +1,134 @@
+#include "renderer/textures/patterns/fractal_noise.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/textures/patterns/gradient_noise.h"
+#include "renderer/textures/patterns/lattice.h"
+#include "renderer/textures/patterns/pattern_math.h"
+#include "renderer/textures/patterns/simplex_noise.h"
+
+namespace isotrace {
+namespace {
+
+// Measured statistics of each basis's noise n over space (fractal_noise_test checks them through the means of
+// faded patterns).
+struct BasisStatistics {
+    float absolute_mean;  // E|n|
+    float ridge_mean;     // E(1 − |n|)²
+    // E min(1, 2w(1 − |n|)²), the mean feedback weight after a ridged octave entered with weight w, at
+    // w = 1/2, 9/16, …, 1; below 1/2 it is 2w × ridge_mean (the clamp is never reached).
+    float feedback[9];
+};
+
+constexpr BasisStatistics kGradientStatistics{
+    0.2124f, 0.6430f, {0.6429f, 0.7128f, 0.7664f, 0.8081f, 0.8411f, 0.8673f, 0.8883f, 0.9053f, 0.9190f}};
+constexpr BasisStatistics kSimplexStatistics{
+    0.3138f, 0.5262f, {0.5259f, 0.5841f, 0.6301f, 0.6670f, 0.6972f, 0.7222f, 0.7433f, 0.7612f, 0.7767f}};
+
+const BasisStatistics& basis_statistics(NoiseBasis basis) {
+    return basis == NoiseBasis::Simplex ? kSimplexStatistics : kGradientStatistics;
+}
+
+// The mean over space of the next octave's ridged weight, given this octave's weight.
+float mean_feedback(const BasisStatistics& statistics, float weight) {
+    if (weight <= 0.5f) return 2 * weight * statistics.ridge_mean;
+    const float position = std::min((weight - 0.5f) * 16, 7.999f);
+    const int node = static_cast<int>(position);
+    const float t = position - static_cast<float>(node);
+    return statistics.feedback[node] + t * (statistics.feedback[node + 1] - statistics.feedback[node]);
+}
+
+// Clamps as FractalSettings documents; NaN goes to the lower bound.
+float clamp_or_low(float value, float low, float high) {
+    return value > low ? std::min(value, high) : low;
+}
+
+// An octave's shaped noise faded towards its mean.
+float faded(float shaped, float fade, float mean) {
+    return mean + fade * (shaped - mean);
+}
+
+// The fractal sum shared by fbm, turbulence and ridged: octave i's noise goes through `shape`, and `term` turns it
+// and the octave's fade (0 = gone: the noise was not evaluated, and `shaped_mean` stands in for it) into the
+// octave's term; the terms are weighted by the amplitudes and divided by their sum.
+template <class Shape, class Term>
+float fractal_sum(const Vec3f& p, const FractalSettings& settings, float footprint, float shaped_mean, Shape shape,
+                  Term term) {
+    const int octaves = std::clamp(settings.octaves, 0, kMaxFractalOctaves);
+    const float lacunarity = clamp_or_low(settings.lacunarity, 1, 16);
+    const float gain = clamp_or_low(settings.gain, 0, 4);
+    float frequency = 1, amplitude = 1, sum = 0, total = 0;
+    for (int octave = 0; octave < octaves; ++octave) {
+        const float fade = octave_fade(frequency, footprint);
+        float shaped = shaped_mean;
+        if (fade > 0) {
+            const OctaveDomain domain = fractal_octave_domain(p, frequency, settings.seed, octave);
+            shaped = shape(basis_noise(settings.basis, domain.point, domain.seed));
+        }
+        sum += amplitude * term(shaped, fade);
+        total += amplitude;
+        frequency *= lacunarity;
+        amplitude *= gain;
+    }
+    return total > 0 ? sum / total : shaped_mean;
+}
+
+float ridge(float noise) {
+    const float signal = 1 - std::abs(noise);
+    return signal * signal;
+}
+
+}  // namespace
+
+float basis_noise(NoiseBasis basis, const Vec3f& p, std::uint32_t seed) {
+    return basis == NoiseBasis::Simplex ? simplex_noise(p, seed) : gradient_noise(p, seed);
+}
+
+OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_t seed, int octave) {
+    // Eight independent 32-bit random numbers from one hash of (seed, octave).
+    const std::uint32_t hash = lattice_hash(lattice_seed(seed), octave);
+    std::uint32_t bits[8];
+    for (std::uint32_t i = 0; i < 8; ++i) bits[i] = hash_stream(hash, i + 1);
+    const auto random = [&bits](int i) { return 2 * uint_to_unit_float(bits[i]) - 1; };  // in [-1, 1)
+    // The rotation of the quaternion (w, x, y, z), scaled by s = 2 / |q|² instead of normalising q.
+    const float w = random(0), x = random(1), y = random(2), z = random(3);
+    const float norm_squared = w * w + x * x + y * y + z * z;
+    const float s = norm_squared > 1e-6f ? 2 / norm_squared : 0;
+    const Vec3f q = p * frequency;
+    const Vec3f turned{(1 - s * (y * y + z * z)) * q.x + s * (x * y - w * z) * q.y + s * (x * z + w * y) * q.z,
+                       s * (x * y + w * z) * q.x + (1 - s * (x * x + z * z)) * q.y + s * (y * z - w * x) * q.z,
+                       s * (x * z - w * y) * q.x + s * (y * z + w * x) * q.y + (1 - s * (x * x + y * y)) * q.z};
+    return {turned + Vec3f(random(4), random(5), random(6)), bits[7]};
+}
+
+float octave_fade(float frequency, float footprint) {
+    return 1 - smoothstep(0.25f, 0.5f, frequency * footprint_or_zero(footprint));
+}
+
+float fbm(const Vec3f& p, const FractalSettings& settings, float footprint) {
+    return fractal_sum(p, settings, footprint, 0.0f, [](float noise) { return noise; },
+                       [](float shaped, float fade) { return faded(shaped, fade, 0); });
+}
+
+float turbulence(const Vec3f& p, const FractalSettings& settings, float footprint) {
+    const float mean = basis_statistics(settings.basis).absolute_mean;
+    return fractal_sum(p, settings, footprint, mean, [](float noise) { return std::abs(noise); },
+                       [mean](float shaped, float fade) { return faded(shaped, fade, mean); });
+}
+
+// The fade keeps the mean over space to first order: an octave's term is its weight times its faded signal, whose
+// mean is the weight times the signal's mean, and the weight handed on is faded towards its mean given the weight
+// received (mean_feedback), so a faded octave passes on what the whole one would on average. (Only to first order:
+// the mean of the next weight is propagated, not its distribution.)
+float ridged(const Vec3f& p, const FractalSettings& settings, float footprint) {
+    const BasisStatistics& statistics = basis_statistics(settings.basis);
+    float weight = 1;  // the first octave is whole; each later one is weighted by its predecessor
+    return fractal_sum(p, settings, footprint, statistics.ridge_mean, ridge, [&](float shaped, float fade) {
+        const float term = weight * faded(shaped, fade, statistics.ridge_mean);
+        weight = faded(std::min(2 * weight * shaped, 1.0f), fade, mean_feedback(statistics, weight));
+        return term;
+    });
+}
+
+}  // namespace isotrace
