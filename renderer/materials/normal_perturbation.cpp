@@ -13,11 +13,7 @@ namespace {
 
 // A world-space vector in the hit object's own space.
 Vec3f to_object(const SurfaceHit& hit, const Vec3f& v) {
-    if (!hit.object) return v;
-    const Transform::Matrix& inverse = hit.object->to_world.inverse_matrix();
-    return Vec3f(Vec3d(inverse[0][0] * v.x + inverse[0][1] * v.y + inverse[0][2] * v.z,
-                       inverse[1][0] * v.x + inverse[1][1] * v.y + inverse[1][2] * v.z,
-                       inverse[2][0] * v.x + inverse[2][1] * v.y + inverse[2][2] * v.z));
+    return hit.object ? Vec3f(hit.object->to_world.inverse_vector(Vec3d(v))) : v;
 }
 
 // The uv step that moves the point by the world-space `offset` along the surface (least squares on dp/du, dp/dv;

@@ -7,6 +7,7 @@
 #include "renderer/materials/normal_perturbation.h"
 #include "renderer/plugin/material.h"
 #include "renderer/scene/render_scene.h"
+#include "renderer/textures/texture_at_hit.h"
 #include "renderer/textures/texture_parser.h"
 
 namespace isotrace {
@@ -35,11 +36,11 @@ public:
     }
 
     Rgb albedo(const SurfaceHit& hit) const override {
-        return constant_ ? constant_->base_colour : textures_.base_colour->evaluate(TextureContext(hit));
+        return texture_at_hit(*textures_.base_colour, hit);
     }
     Rgb emission(const SurfaceHit& hit, const Vec3f& towards_viewer) const override {
         if (!emits_ || (!two_sided_emission_ && dot(hit.geometric_normal, towards_viewer) <= 0)) return {};
-        return textures_.emission->evaluate(TextureContext(hit)) * emission_strength_;
+        return texture_at_hit(*textures_.emission, hit) * emission_strength_;
     }
     bool is_emissive() const override { return emits_; }
     SurfaceBsdf bsdf(const SurfaceHit& hit) const override { return PrincipledBsdf(principled_parameters(hit)); }
@@ -108,8 +109,7 @@ private:
         Vec3f tangent = direction - n * dot(n, direction);
         if (!(dot(tangent, tangent) > 0)) return {};
         tangent = normalize(tangent);
-        const std::optional<float> fixed_turns = textures_.anisotropy_rotation->constant();
-        const float turns = fixed_turns ? *fixed_turns : textures_.anisotropy_rotation->evaluate(TextureContext(hit));
+        const float turns = texture_at_hit(*textures_.anisotropy_rotation, hit);
         if (turns == 0) return tangent;
         const float angle = 2 * std::numbers::pi_v<float> * turns;
         return tangent * std::cos(angle) + cross(n, tangent) * std::sin(angle);

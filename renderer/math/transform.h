@@ -40,12 +40,17 @@ public:
                 inv_[0][1] * n.x + inv_[1][1] * n.y + inv_[2][1] * n.z,
                 inv_[0][2] * n.x + inv_[1][2] * n.y + inv_[2][2] * n.z};
     }
-    // The inverse's point() and normal() without copying the inverse out (textures map every shading point back
+    // The inverse's point(), vector() and normal() without copying the inverse out (textures map every shading point back
     // to object space).
     Vec3d inverse_point(const Vec3d& p) const {
         return {inv_[0][0] * p.x + inv_[0][1] * p.y + inv_[0][2] * p.z + inv_[0][3],
                 inv_[1][0] * p.x + inv_[1][1] * p.y + inv_[1][2] * p.z + inv_[1][3],
                 inv_[2][0] * p.x + inv_[2][1] * p.y + inv_[2][2] * p.z + inv_[2][3]};
+    }
+    Vec3d inverse_vector(const Vec3d& v) const {
+        return {inv_[0][0] * v.x + inv_[0][1] * v.y + inv_[0][2] * v.z,
+                inv_[1][0] * v.x + inv_[1][1] * v.y + inv_[1][2] * v.z,
+                inv_[2][0] * v.x + inv_[2][1] * v.y + inv_[2][2] * v.z};
     }
     Vec3d inverse_normal(const Vec3d& n) const {  // transpose of the matrix; not normalised
         return {m_[0][0] * n.x + m_[1][0] * n.y + m_[2][0] * n.z, m_[0][1] * n.x + m_[1][1] * n.y + m_[2][1] * n.z,

@@ -133,7 +133,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const auto shape_shading = [&] {
         // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
         const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
-        const Vec3d local_point = object.instanced ? object.to_world.inverse().point(world_point) : world_point;
+        const Vec3d local_point = object.instanced ? object.to_world.inverse_point(world_point) : world_point;
         return object.shape->shading(query.hit, embree_ng, local_point);
     };
     const LocalShading local =

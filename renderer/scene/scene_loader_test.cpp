@@ -305,5 +305,58 @@ TEST_F(LoadScene, ShippedCornellBox) {
     EXPECT_NEAR(bounds.upper.z, 0.5592f, 1e-4f);
 }
 
+// Two equal metaballs, one red and one blue: the blend on the plane half way between them.
+std::string two_coloured_metaballs(const std::string& blue_material) {
+    return "{\n"
+           "  \"isotrace\": 1,\n" +
+           kCamera +
+           "\n"
+           "  \"materials\": {\"red\": {\"type\": \"diffuse\", \"reflectance\": [0.9, 0.1, 0.05]},\n"
+           "                \"blue\": " + blue_material + "},\n"
+           "  \"objects\": [{\"material\": \"red\", \"shape\": {\"type\": \"blobs\", \"elements\": [\n"
+           "    {\"center\": [-0.6, 0, 0], \"radius\": 1},\n"
+           "    {\"center\": [0.6, 0, 0], \"radius\": 1, \"material\": \"blue\"}]}}]\n"
+           "}\n";
+}
+
+TEST_F(LoadScene, MaterialsOfTwoEqualMetaballsBlendHalfWayOnTheMidPlane) {
+    const auto loaded = load(two_coloured_metaballs(
+        R"({"type": "principled", "base_colour": [0.05, 0.2, 0.8], "roughness": 0.3, "metallic": 1})"));
+    const RenderScene& scene = *loaded->scene;
+    const Material* red = scene.find_material("red");
+    const Material* blue = scene.find_material("blue");
+    for (const float y : {0.0f, 0.1f, -0.25f}) {
+        const std::optional<SurfaceHit> hit = scene.intersect(Ray{{0, y, 5}, {0, 0, -1}}, RayKind::Camera);
+        ASSERT_TRUE(hit);
+        ASSERT_EQ(hit->blend.count, 2);
+        EXPECT_EQ(hit->blend.weight[0], 0.5f);
+        EXPECT_EQ(hit->blend.weight[1], 0.5f);
+        const PrincipledParameters r = red->principled_parameters(*hit), b = blue->principled_parameters(*hit);
+        const PrincipledParameters mixed = hit->material->principled_parameters(*hit);
+        EXPECT_EQ(mixed.base_colour, (r.base_colour + b.base_colour) * 0.5f);
+        EXPECT_EQ(mixed.metallic, 0.5f);
+        EXPECT_EQ(mixed.specular, 0.5f);  // diffuse has none, principled the default 1
+        EXPECT_EQ(hit->material->albedo(*hit), (red->albedo(*hit) + blue->albedo(*hit)) * 0.5f);
+    }
+    // Towards a centre, that element's material takes over.
+    const std::optional<SurfaceHit> near_blue = scene.intersect(Ray{{1.2f, 0, 5}, {0, 0, -1}}, RayKind::Camera);
+    ASSERT_TRUE(near_blue);
+    EXPECT_GT(near_blue->material->principled_parameters(*near_blue).metallic, 0.9f);
+}
+
+TEST_F(LoadScene, MaterialsThatCannotBlendAreRefusedWhereTheyAreNamed) {
+    const std::string text = two_coloured_metaballs(R"({"type": "conductor", "metal": "Au"})");
+    expect_error(text, 7, 59, "objects[0].shape.elements[1].material",
+                 "materials that blend across a surface must be \"principled\" or \"diffuse\"");
+}
+
+TEST_F(LoadScene, UvMappedTexturesNeedSurfacesWithUv) {
+    const std::string text = two_coloured_metaballs(
+        R"({"type": "principled", "base_colour": {"type": "checker", "projection": "uv"}})");
+    expect_error(text, 4, 66, "materials.blue.base_colour.projection",
+                 "this texture is mapped by uv, but a blobs has no uv: use a \"solid\", \"planar\", \"triplanar\", "
+                 "\"spherical\" or \"cylindrical\" projection");
+}
+
 }  // namespace
 }  // namespace isotrace

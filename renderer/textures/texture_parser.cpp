@@ -7,6 +7,7 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/did_you_mean.h"
+#include "renderer/lights/emitted_colour.h"
 #include "renderer/textures/expression_textures.h"
 #include "renderer/textures/field_texture.h"
 #include "renderer/textures/image_map_texture.h"
@@ -259,12 +260,15 @@ ColourTexturePtr parse_colour_texture(const SceneNode& parent, const std::string
     if (!value) return constant_texture(fallback);
     ColourTexturePtr texture = TextureParser(false).value<Rgb>(*value, 1);
     if (range == ColourRange::Any) return texture;
+    const bool reflectance = range == ColourRange::Reflectance;
+    const float high = reflectance ? 1.0f : float(kMaxEmitted);
     if (const auto c = texture->constant()) {
-        if (c->r < 0 || c->g < 0 || c->b < 0 || c->max() > 1)
-            parent.fail_at(key, "each reflectance component must lie in [0, 1] (energy conservation)");
+        if (c->r < 0 || c->g < 0 || c->b < 0 || c->max() > high)
+            parent.fail_at(key, reflectance ? "each reflectance component must lie in [0, 1] (energy conservation)"
+                                            : "each emitted component must lie in [0, 1e30]");
         return texture;
     }
-    return std::make_shared<ClampTexture<Rgb>>(std::move(texture), Clamp{0, 1});
+    return std::make_shared<ClampTexture<Rgb>>(std::move(texture), Clamp{0, high});
 }
 
 ColourTexturePtr parse_data_texture(const SceneNode& parent, const std::string& key) {

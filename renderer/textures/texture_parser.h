@@ -18,7 +18,11 @@ constexpr int kMaxTextureDepth = 32;
 ScalarTexturePtr parse_scalar_texture(const SceneNode& parent, const std::string& key, float fallback,
                                       NumberRange range);
 
-enum class ColourRange { Any, Reflectance /* each component in [0, 1] */ };
+enum class ColourRange {
+    Any,
+    Reflectance,  // each component in [0, 1]
+    Emission      // each component in [0, kMaxEmitted] (renderer/lights/emitted_colour.h)
+};
 ColourTexturePtr parse_colour_texture(const SceneNode& parent, const std::string& key, const Rgb& fallback,
                                       ColourRange range);
 

@@ -116,7 +116,8 @@ std::vector<Workload> suite_workloads() {
     const std::vector<K> rays_and_paths = {K::PrimaryRays, K::ShadowRays, K::BounceRays, K::PathTracer};
     // Triangles (the Cornell box; Embree's tutorial box lit by a point, as tools/compare-embree renders it; the
     // sweep-deformed bunny, traced as its mesh), blob groups of growing size (their scenes use the AOV integrator,
-    // so no path tracer workload), metacubes (and the polygoniser), superquadrics, CSG and multi-sided patches.
+    // so no path tracer workload), metacubes (and the polygoniser; the same dog again with textured, bumped and
+    // blended principled materials, for the cost of shading), superquadrics, CSG and multi-sided patches.
     const std::vector<std::pair<std::string, std::vector<K>>> scenes = {
         {"cornell_box", rays_and_paths},
         {"embree_cornell_box", {K::PathTracer}},
@@ -125,6 +126,7 @@ std::vector<Workload> suite_workloads() {
         {"blobs_10k", rays},
         {"blobs_100k", rays},
         {"metacube_dog", {K::PrimaryRays, K::ShadowRays, K::BounceRays, K::PathTracer, K::DualContouring}},
+        {"spotted_dog", {K::PathTracer}},
         {"superquadric_gallery", rays_and_paths},
         {"csg_cup", rays_and_paths},
         {"abm_patches", rays_and_paths}};
