@@ -1,8 +1,9 @@
 #pragma once
-// The scattering models in this folder (LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf) describe
-// how a surface scatters light, in the local shading frame (z = shading normal). Directions are unit vectors
-// pointing away from the surface: wo towards the viewer / previous path vertex, wi towards the light / next
-// vertex. Each model has the same members, called without virtual dispatch (SurfaceBsdf holds one by value):
+// The scattering models in this folder (LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf,
+// PrincipledBsdf) describe how a surface scatters light, in the local shading frame (z = shading normal).
+// Directions are unit vectors pointing away from the surface: wo towards the viewer / previous path vertex, wi
+// towards the light / next vertex. Each model has the same members, called without virtual dispatch (SurfaceBsdf
+// holds one by value):
 //   Rgb eval(wo, wi, mode)         f(wo, wi) without the cosine; 0 for delta lobes
 //   float pdf(wo, wi)              solid-angle density with which sample() returns wi (its non-delta part)
 //   sample(wo, u_lobe, u, mode)    u_lobe picks a lobe, u the direction within it; empty when none is produced

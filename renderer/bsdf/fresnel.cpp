@@ -41,6 +41,20 @@ Rgb fresnel_conductor(float cos_theta_i, const ComplexIor& ior) {
     return {channel(ior.eta.r, ior.k.r), channel(ior.eta.g, ior.k.g), channel(ior.eta.b, ior.k.b)};
 }
 
+float fresnel_schlick(float cos_theta_i, float f0) {
+    const float c = 1.0f - std::clamp(cos_theta_i, 0.0f, 1.0f), c2 = c * c;
+    return f0 + (1.0f - f0) * (c2 * c2 * c);
+}
+
+Rgb fresnel_schlick(float cos_theta_i, const Rgb& f0) {
+    return {fresnel_schlick(cos_theta_i, f0.r), fresnel_schlick(cos_theta_i, f0.g), fresnel_schlick(cos_theta_i, f0.b)};
+}
+
+Rgb average_fresnel_schlick(const Rgb& f0) {
+    const auto channel = [](float f) { return f + (1.0f - f) / 21.0f; };
+    return {channel(f0.r), channel(f0.g), channel(f0.b)};
+}
+
 float diffuse_fresnel_reflectance(float eta) {
     // Composite Simpson over mu in [0, 1]: the integrand is smooth from the front (no total internal
     // reflection), so 512 intervals leave only float rounding.

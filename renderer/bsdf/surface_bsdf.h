@@ -11,11 +11,13 @@
 #include "renderer/bsdf/conductor_bsdf.h"
 #include "renderer/bsdf/dielectric_bsdf.h"
 #include "renderer/bsdf/lambert_bsdf.h"
+#include "renderer/bsdf/principled_bsdf.h"
 
 namespace isotrace {
 
 class SurfaceBsdf {
-    using Models = std::variant<std::monostate, LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf>;
+    using Models = std::variant<std::monostate, LambertBsdf, ConductorBsdf, DielectricBsdf, CoatedDiffuseBsdf,
+                                PrincipledBsdf>;
 
 public:
     SurfaceBsdf() = default;  // scatters nothing
