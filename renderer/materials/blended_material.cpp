@@ -3,6 +3,7 @@
 #include <cassert>
 
 #include "renderer/bsdf/principled_bsdf.h"
+#include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
 namespace {

@@ -22,6 +22,15 @@ public:
     SurfaceBsdf bsdf(const SurfaceHit& hit) const override {
         return LambertBsdf(albedo(hit));
     }
+    // As principled parameters: a Lambertian base without the specular layer.
+    bool can_blend() const override { return true; }
+    PrincipledParameters principled_parameters(const SurfaceHit& hit) const override {
+        PrincipledParameters lambertian;
+        lambertian.base_colour = albedo(hit);
+        lambertian.specular = 0;
+        return lambertian;
+    }
+    TextureNeeds texture_needs() const override { return reflectance_->needs(); }
     std::optional<Rgb> constant_lambertian_reflectance() const override {
         if (emission_.emits()) return std::nullopt;
         return reflectance_->constant();

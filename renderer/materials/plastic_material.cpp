@@ -17,6 +17,7 @@ public:
     SurfaceBsdf bsdf(const SurfaceHit& hit) const override {
         return CoatedDiffuseBsdf(coating_, albedo(hit));
     }
+    TextureNeeds texture_needs() const override { return reflectance_->needs(); }
 
 private:
     ColourTexturePtr reflectance_;

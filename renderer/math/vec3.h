@@ -40,6 +40,11 @@ template <class T> constexpr Vec3T<T> cross(const Vec3T<T>& a, const Vec3T<T>& b
 }
 template <class T> inline T length(const Vec3T<T>& a) { return std::sqrt(dot(a, a)); }
 template <class T> inline Vec3T<T> normalize(const Vec3T<T>& a) { return a / length(a); }
+// a normalised, or `fallback` where a has no direction (zero, or too long or short to measure).
+template <class T> inline Vec3T<T> safe_normalize(const Vec3T<T>& a, const Vec3T<T>& fallback) {
+    const T len = length(a);
+    return len > 0 && std::isfinite(len) ? a / len : fallback;
+}
 template <class T> constexpr Vec3T<T> min(const Vec3T<T>& a, const Vec3T<T>& b) {
     return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
 }

@@ -21,11 +21,6 @@ void set_instance_transform(RTCGeometry instance, const Transform& to_world) {
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, row_major);
 }
 
-Vec3f safe_normalize(const Vec3f& v, const Vec3f& fallback) {
-    const float len = length(v);
-    return len > 0 && std::isfinite(len) ? v / len : fallback;
-}
-
 }  // namespace
 
 RenderScene::RenderScene() : scene_(rtcNewScene(embree_device())) { check_embree("creating the scene"); }

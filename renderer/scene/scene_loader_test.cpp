@@ -325,7 +325,7 @@ TEST_F(LoadScene, MaterialsOfTwoEqualMetaballsBlendHalfWayOnTheMidPlane) {
     const RenderScene& scene = *loaded->scene;
     const Material* red = scene.find_material("red");
     const Material* blue = scene.find_material("blue");
-    for (const float y : {0.0f, 0.1f, -0.25f}) {
+    for (const float y : {0.0f, 0.05f, -0.07f}) {  // the neck's radius is 0.1
         const std::optional<SurfaceHit> hit = scene.intersect(Ray{{0, y, 5}, {0, 0, -1}}, RayKind::Camera);
         ASSERT_TRUE(hit);
         ASSERT_EQ(hit->blend.count, 2);
@@ -339,21 +339,21 @@ TEST_F(LoadScene, MaterialsOfTwoEqualMetaballsBlendHalfWayOnTheMidPlane) {
         EXPECT_EQ(hit->material->albedo(*hit), (red->albedo(*hit) + blue->albedo(*hit)) * 0.5f);
     }
     // Towards a centre, that element's material takes over.
-    const std::optional<SurfaceHit> near_blue = scene.intersect(Ray{{1.2f, 0, 5}, {0, 0, -1}}, RayKind::Camera);
+    const std::optional<SurfaceHit> near_blue = scene.intersect(Ray{{0.9f, 0, 5}, {0, 0, -1}}, RayKind::Camera);
     ASSERT_TRUE(near_blue);
     EXPECT_GT(near_blue->material->principled_parameters(*near_blue).metallic, 0.9f);
 }
 
 TEST_F(LoadScene, MaterialsThatCannotBlendAreRefusedWhereTheyAreNamed) {
     const std::string text = two_coloured_metaballs(R"({"type": "conductor", "metal": "Au"})");
-    expect_error(text, 7, 59, "objects[0].shape.elements[1].material",
+    expect_error(text, 8, 54, "objects[0].shape.elements[1].material",
                  "materials that blend across a surface must be \"principled\" or \"diffuse\"");
 }
 
 TEST_F(LoadScene, UvMappedTexturesNeedSurfacesWithUv) {
     const std::string text = two_coloured_metaballs(
         R"({"type": "principled", "base_colour": {"type": "checker", "projection": "uv"}})");
-    expect_error(text, 4, 66, "materials.blue.base_colour.projection",
+    expect_error(text, 5, 97, "materials.blue.base_colour.projection",
                  "this texture is mapped by uv, but a blobs has no uv: use a \"solid\", \"planar\", \"triplanar\", "
                  "\"spherical\" or \"cylindrical\" projection");
 }
