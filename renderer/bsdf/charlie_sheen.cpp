@@ -51,7 +51,7 @@ const std::vector<float>& table() {
 }  // namespace
 
 CharlieSheen::CharlieSheen(float roughness) {
-    const float r = std::clamp(roughness, kMinSheenRoughness, 1.0f);
+    const float r = roughness > kMinSheenRoughness ? std::min(roughness, 1.0f) : kMinSheenRoughness;  // NaN too
     const float alpha = r * r;
     inverse_alpha_ = 1.0f / alpha;
     // Estevez and Kulla's table 1: the coefficients at a = 0 and a = 1, blended by (1 - a)^2.

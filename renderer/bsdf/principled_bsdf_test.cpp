@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include "renderer/bsdf/conductor_bsdf.h"
 #include "renderer/bsdf/conductor_presets.h"
@@ -27,6 +29,9 @@ struct Configuration {
     const char* name;
     PrincipledParameters parameters;
 };
+
+// Test names and failure messages show the configuration's name rather than its bytes.
+void PrintTo(const Configuration& configuration, std::ostream* os) { *os << configuration.name; }
 
 PrincipledParameters with(std::initializer_list<std::pair<const char*, float>> values) {
     PrincipledParameters p;
@@ -378,14 +383,44 @@ TEST(PrincipledBsdf, SamplesAreConsistentAndFiniteInExtremeCases) {
 }
 
 TEST(PrincipledBsdf, OutOfRangeParametersAreClamped) {
-    PrincipledParameters wild;
-    wild.base_colour = Rgb(2.0f, -1.0f, std::numeric_limits<float>::quiet_NaN());
-    wild.metallic = 3;
-    wild.roughness = -1;
-    wild.ior = 0.5f;
-    wild.sheen = std::numeric_limits<float>::quiet_NaN();
-    const PrincipledBsdf bsdf(wild);
-    EXPECT_EQ(test_support::count_bad_samples(bsdf, view_at(30), 1000), 0u);
+    // Each parameter in turn NaN, then all of them out of range: the results stay finite.
+    constexpr float nan = std::numeric_limits<float>::quiet_NaN();
+    const auto everything = [] {
+        return with({{"metallic", 0.3f}, {"roughness", 0.4f}, {"anisotropy", 0.5f}, {"transmission", 0.3f},
+                     {"clearcoat", 0.5f}, {"clearcoat_roughness", 0.2f}, {"sheen", 0.5f}});
+    };
+    std::vector<PrincipledParameters> wild;
+    for (float PrincipledParameters::*field :
+         {&PrincipledParameters::metallic, &PrincipledParameters::roughness, &PrincipledParameters::anisotropy,
+          &PrincipledParameters::ior, &PrincipledParameters::specular, &PrincipledParameters::transmission,
+          &PrincipledParameters::clearcoat, &PrincipledParameters::clearcoat_roughness, &PrincipledParameters::sheen,
+          &PrincipledParameters::sheen_roughness}) {
+        wild.push_back(everything());
+        wild.back().*field = nan;
+    }
+    for (Rgb PrincipledParameters::*colour : {&PrincipledParameters::base_colour, &PrincipledParameters::sheen_colour}) {
+        wild.push_back(everything());
+        wild.back().*colour = Rgb(0.5f, nan, 0.5f);
+    }
+    PrincipledParameters far = everything();
+    far.base_colour = Rgb(2.0f, -1.0f, 0.5f);
+    far.metallic = 3;
+    far.roughness = -1;
+    far.anisotropy = 7;
+    far.ior = 0.5f;
+    far.sheen_colour = Rgb(-3.0f);
+    wild.push_back(far);
+    for (std::size_t k = 0; k < wild.size(); ++k) {
+        const PrincipledBsdf bsdf(wild[k]);
+        for (const Vec3f& wo : {view_at(30), view_at(150)}) {
+            EXPECT_EQ(test_support::count_bad_samples(bsdf, wo, 1000), 0u) << k;
+            for (std::size_t i = 0; i < 200; ++i) {
+                const auto r = test_support::bsdf_random(i);
+                const Vec3f wi = direction_from_degrees(180 * r.u[0], 360 * r.u[1]);
+                ASSERT_TRUE(bsdf.eval(wo, wi).is_finite() && std::isfinite(bsdf.pdf(wo, wi))) << k << " " << i;
+            }
+        }
+    }
 }
 
 }  // namespace
