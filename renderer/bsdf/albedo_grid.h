@@ -51,9 +51,9 @@ struct MicrofacetCdf {
 // Visits quadrature nodes m with weights w such that sum w g(m) approximates the integral of g(m) D(m) m.z dm over
 // the normals that reflect wo (in the xz plane, wo.z > 0) above the horizon, for g symmetric about that plane.
 // Gauss-Legendre in u (the distribution's own measure, so narrow lobes cost nothing more; see the .cpp for the
-// substitution) up to the horizon cut, which is analytic: reflect(wo, m).z > 0 exactly when 2 theta_m < delta + pi / 2 with
-// tan delta = sin theta_o cos phi / cos theta_o. Gauss-Legendre in phi as well, split at pi / 2, where the cut
-// turns fastest for grazing wo.
+// substitution) up to the horizon cut, which is analytic: reflect(wo, m).z > 0 exactly when
+// 2 theta_m < delta + pi / 2 with tan delta = sin theta_o cos phi / cos theta_o. Gauss-Legendre in phi as well,
+// split at pi / 2, where the cut turns fastest for grazing wo.
 void visit_reflecting_normals(const Vec3f& wo, const MicrofacetCdf& cdf,
                               const std::function<void(const Vec3f& m, double weight)>& visit);
 

@@ -68,7 +68,9 @@ float CharlieSheen::d(const Vec3f& m) const {
 }
 
 float CharlieSheen::lambda(float mu) const {
-    const auto l = [this](float x) { return fit_[0] / (1.0f + fit_[1] * std::pow(x, fit_[2])) + fit_[3] * x + fit_[4]; };
+    const auto l = [this](float x) {
+        return fit_[0] / (1.0f + fit_[1] * std::pow(x, fit_[2])) + fit_[3] * x + fit_[4];
+    };
     return mu < 0.5f ? std::exp(l(mu)) : std::exp(2.0f * l(0.5f) - l(1.0f - mu));
 }
 

@@ -33,39 +33,20 @@ struct Configuration {
 // Test names and failure messages show the configuration's name rather than its bytes.
 void PrintTo(const Configuration& configuration, std::ostream* os) { *os << configuration.name; }
 
-PrincipledParameters with(std::initializer_list<std::pair<const char*, float>> values) {
-    PrincipledParameters p;
-    for (const auto& [key, value] : values) {
-        const std::string k = key;
-        if (k == "base") p.base_colour = Rgb(value);
-        else if (k == "metallic") p.metallic = value;
-        else if (k == "roughness") p.roughness = value;
-        else if (k == "anisotropy") p.anisotropy = value;
-        else if (k == "ior") p.ior = value;
-        else if (k == "specular") p.specular = value;
-        else if (k == "transmission") p.transmission = value;
-        else if (k == "clearcoat") p.clearcoat = value;
-        else if (k == "clearcoat_roughness") p.clearcoat_roughness = value;
-        else if (k == "sheen") p.sheen = value;
-        else if (k == "sheen_roughness") p.sheen_roughness = value;
-        else ADD_FAILURE() << "unknown parameter " << k;
-    }
-    return p;
-}
-
 const Configuration kConfigurations[] = {
-    {"metal_r20", with({{"metallic", 1}, {"roughness", 0.2f}})},
-    {"metal_r90_aniso100", with({{"metallic", 1}, {"roughness", 0.9f}, {"anisotropy", 1}})},
-    {"plastic_r50_aniso50", with({{"roughness", 0.5f}, {"anisotropy", 0.5f}})},
-    {"coat_r40", with({{"base", 0}, {"specular", 0}, {"clearcoat", 1}, {"clearcoat_roughness", 0.4f}})},
-    {"sheen", with({{"base", 0}, {"specular", 0}, {"sheen", 1}, {"sheen_roughness", 0.3f}})},
-    {"glass_r30", with({{"roughness", 0.3f}, {"transmission", 1}})},
-    {"everything_r40_aniso60", with({{"metallic", 0.3f}, {"roughness", 0.4f}, {"anisotropy", 0.6f},
-                                     {"transmission", 0.4f}, {"clearcoat", 0.5f}, {"clearcoat_roughness", 0.2f},
-                                     {"sheen", 0.5f}})},
+    {"metal_r20", PrincipledParameters{.metallic = 1, .roughness = 0.2f}},
+    {"metal_r90_aniso100", PrincipledParameters{.metallic = 1, .roughness = 0.9f, .anisotropy = 1}},
+    {"plastic_r50_aniso50", PrincipledParameters{.roughness = 0.5f, .anisotropy = 0.5f}},
+    {"coat_r40",
+     PrincipledParameters{.base_colour = Rgb(0), .specular = 0, .clearcoat = 1, .clearcoat_roughness = 0.4f}},
+    {"sheen", PrincipledParameters{.base_colour = Rgb(0), .specular = 0, .sheen = 1, .sheen_roughness = 0.3f}},
+    {"glass_r30", PrincipledParameters{.roughness = 0.3f, .transmission = 1}},
+    {"everything_r40_aniso60",
+     PrincipledParameters{.metallic = 0.3f, .roughness = 0.4f, .anisotropy = 0.6f, .transmission = 0.4f,
+                          .clearcoat = 0.5f, .clearcoat_roughness = 0.2f, .sheen = 0.5f}},
     // Delta lobes (smooth base and glass) beside a rough coat and the diffuse base.
-    {"smooth_base_rough_coat", with({{"roughness", 0}, {"transmission", 0.5f}, {"clearcoat", 0.7f},
-                                     {"clearcoat_roughness", 0.3f}})},
+    {"smooth_base_rough_coat",
+     PrincipledParameters{.roughness = 0, .transmission = 0.5f, .clearcoat = 0.7f, .clearcoat_roughness = 0.3f}},
 };
 // Above 90 degrees wo is inside (below the surface).
 const double kViewAngles[] = {0, 30, 60, 85, 150, 120};
@@ -111,9 +92,9 @@ float table_tolerance(double theta) { return theta < 85 ? 3e-3f : 1.5e-2f; }
 TEST(PrincipledBsdf, WhiteFurnaceIsOneForWhiteMetalAndPlastic) {
     for (float roughness : kFurnaceRoughnesses) {
         for (const PrincipledParameters& p :
-             {with({{"base", 1}, {"metallic", 1}, {"roughness", roughness}}),
-              with({{"base", 1}, {"roughness", roughness}}),
-              with({{"base", 1}, {"roughness", roughness}, {"specular", 0.5f}, {"ior", 2.4f}})}) {
+             {PrincipledParameters{.base_colour = Rgb(1), .metallic = 1, .roughness = roughness},
+              PrincipledParameters{.base_colour = Rgb(1), .roughness = roughness},
+              PrincipledParameters{.base_colour = Rgb(1), .roughness = roughness, .ior = 2.4f, .specular = 0.5f}}) {
             const PrincipledBsdf bsdf(p);
             for (double theta : kFurnaceAngles) {
                 const auto albedo = test_support::estimate_albedo(bsdf, view_at(theta), 20000);
@@ -126,7 +107,7 @@ TEST(PrincipledBsdf, WhiteFurnaceIsOneForWhiteMetalAndPlastic) {
 
 TEST(PrincipledBsdf, WhiteFurnaceIsOneForSmoothWhitePlastic) {
     // Delta specular over the diffuse base: the base's normalisation is the only table value involved.
-    const PrincipledBsdf bsdf(with({{"base", 1}, {"roughness", 0}}));
+    const PrincipledBsdf bsdf(PrincipledParameters{.base_colour = Rgb(1), .roughness = 0});
     for (double theta : kFurnaceAngles) {
         const auto albedo = test_support::estimate_albedo(bsdf, view_at(theta), 20000);
         EXPECT_NEAR(albedo.mean.g, 1.0f, 4 * albedo.standard_error.g + 1e-3f) << theta;
@@ -141,8 +122,8 @@ TEST(PrincipledBsdf, WhiteFurnaceWithAnisotropyIsAtMostOne) {
     for (float anisotropy : {0.5f, 1.0f}) {
         for (float roughness : {0.2f, 0.5f, 1.0f}) {
             for (float metallic : {0.0f, 1.0f}) {
-                const PrincipledBsdf bsdf(
-                    with({{"base", 1}, {"metallic", metallic}, {"roughness", roughness}, {"anisotropy", anisotropy}}));
+                const PrincipledBsdf bsdf(PrincipledParameters{
+                    .base_colour = Rgb(1), .metallic = metallic, .roughness = roughness, .anisotropy = anisotropy});
                 for (double theta : kFurnaceAngles) {
                     for (double phi : {0.0, 45.0, 90.0}) {
                         const auto albedo =
@@ -165,12 +146,13 @@ TEST(PrincipledBsdf, WhiteFurnaceWithCoatAndSheenIsAtMostOne) {
     // lies beneath loses some more (at least 0.75 here, 0.77 seen).
     for (float roughness : {0.0f, 0.3f, 1.0f}) {
         for (const PrincipledParameters& p :
-             {with({{"base", 1}, {"roughness", roughness}, {"clearcoat", 1}, {"clearcoat_roughness", 0.1f}}),
-              with({{"base", 1}, {"metallic", 1}, {"roughness", roughness}, {"clearcoat", 1},
-                    {"clearcoat_roughness", 0.6f}}),
-              with({{"base", 1}, {"roughness", roughness}, {"sheen", 1}, {"sheen_roughness", 0.3f}}),
-              with({{"base", 1}, {"metallic", 0.5f}, {"roughness", roughness}, {"sheen", 1}, {"clearcoat", 0.5f},
-                    {"clearcoat_roughness", 0}})}) {
+             {PrincipledParameters{.base_colour = Rgb(1), .roughness = roughness, .clearcoat = 1,
+                                   .clearcoat_roughness = 0.1f},
+              PrincipledParameters{.base_colour = Rgb(1), .metallic = 1, .roughness = roughness, .clearcoat = 1,
+                                   .clearcoat_roughness = 0.6f},
+              PrincipledParameters{.base_colour = Rgb(1), .roughness = roughness, .sheen = 1, .sheen_roughness = 0.3f},
+              PrincipledParameters{.base_colour = Rgb(1), .metallic = 0.5f, .roughness = roughness, .clearcoat = 0.5f,
+                                   .clearcoat_roughness = 0, .sheen = 1}}) {
             const PrincipledBsdf bsdf(p);
             for (double theta : kFurnaceAngles) {
                 const auto albedo = test_support::estimate_albedo(bsdf, view_at(theta), 20000);
@@ -233,7 +215,7 @@ TEST(PrincipledBsdf, WhiteMetalIsTheConductorPlusMultipleScattering) {
     const ComplexIor perfect_mirror{Rgb(1.0f), Rgb(1e4f)};
     for (float roughness : {0.1f, 0.4f, 0.8f}) {
         const float alpha = roughness * roughness;
-        const PrincipledBsdf metal(with({{"base", 1}, {"metallic", 1}, {"roughness", roughness}}));
+        const PrincipledBsdf metal(PrincipledParameters{.base_colour = Rgb(1), .metallic = 1, .roughness = roughness});
         const ConductorBsdf conductor(perfect_mirror, alpha, alpha);
         const GgxAlbedo albedo(roughness, 0);
         for (std::size_t i = 0; i < 500; ++i) {
@@ -261,7 +243,7 @@ TEST(PrincipledBsdf, ColouredMetalIsCloseToTheConductor) {
     }
     for (float roughness : {0.0f, 0.3f}) {
         const float alpha = roughness * roughness;
-        PrincipledParameters p = with({{"metallic", 1}, {"roughness", roughness}});
+        PrincipledParameters p{.metallic = 1, .roughness = roughness};
         p.base_colour = f0;
         const PrincipledBsdf metal(p);
         const ConductorBsdf conductor(gold, alpha, alpha);
@@ -308,8 +290,7 @@ void expect_identical(const PrincipledBsdf& principled, const Model& other) {
 TEST(PrincipledBsdf, FullTransmissionIsTheDielectric) {
     for (float roughness : {0.0f, 0.3f}) {
         for (float anisotropy : {0.0f, 0.7f}) {
-            PrincipledParameters p = with({{"roughness", roughness}, {"anisotropy", anisotropy}, {"transmission", 1},
-                                          {"ior", 1.33f}});
+            PrincipledParameters p{.roughness = roughness, .anisotropy = anisotropy, .ior = 1.33f, .transmission = 1};
             p.base_colour = Rgb(0.9f, 0.6f, 0.3f);
             const PrincipledBsdf glass(p);
             const auto [alpha_x, alpha_y] = anisotropic_alphas(roughness, anisotropy);
@@ -322,7 +303,7 @@ TEST(PrincipledBsdf, FullTransmissionIsTheDielectric) {
 TEST(PrincipledBsdf, PlainDiffuseIsExactlyLambert) {
     for (const Rgb& colour : {Rgb(0.8f), Rgb(0.1f, 0.5f, 1.0f), Rgb(0.0f)}) {
         for (float roughness : {0.0f, 0.5f, 1.0f}) {
-            PrincipledParameters p = with({{"specular", 0}, {"roughness", roughness}, {"anisotropy", 0.5f}});
+            PrincipledParameters p{.roughness = roughness, .anisotropy = 0.5f, .specular = 0};
             p.base_colour = colour;
             const PrincipledBsdf principled(p);
             const LambertBsdf lambert(colour);
@@ -332,15 +313,15 @@ TEST(PrincipledBsdf, PlainDiffuseIsExactlyLambert) {
 }
 
 TEST(PrincipledBsdf, DeltaLobesFollowTheRoughnesses) {
-    const PrincipledBsdf smooth_metal(with({{"metallic", 1}, {"roughness", 0}}));
+    const PrincipledBsdf smooth_metal(PrincipledParameters{.metallic = 1, .roughness = 0});
     EXPECT_TRUE(smooth_metal.has_delta_lobe() && smooth_metal.is_fully_delta());
-    const PrincipledBsdf smooth_glass(with({{"roughness", 0}, {"transmission", 1}}));
+    const PrincipledBsdf smooth_glass(PrincipledParameters{.roughness = 0, .transmission = 1});
     EXPECT_TRUE(smooth_glass.has_delta_lobe() && smooth_glass.is_fully_delta() && smooth_glass.chooses_lobe());
-    const PrincipledBsdf smooth_plastic(with({{"roughness", 0}}));
+    const PrincipledBsdf smooth_plastic(PrincipledParameters{.roughness = 0});
     EXPECT_TRUE(smooth_plastic.has_delta_lobe() && !smooth_plastic.is_fully_delta());
-    const PrincipledBsdf coated(with({{"roughness", 0.5f}, {"clearcoat", 1}, {"clearcoat_roughness", 0}}));
+    const PrincipledBsdf coated(PrincipledParameters{.roughness = 0.5f, .clearcoat = 1, .clearcoat_roughness = 0});
     EXPECT_TRUE(coated.has_delta_lobe() && !coated.is_fully_delta());
-    const PrincipledBsdf rough(with({{"roughness", 0.5f}, {"clearcoat", 1}, {"clearcoat_roughness", 0.1f}}));
+    const PrincipledBsdf rough(PrincipledParameters{.roughness = 0.5f, .clearcoat = 1, .clearcoat_roughness = 0.1f});
     EXPECT_FALSE(rough.has_delta_lobe() || rough.is_fully_delta());
     EXPECT_TRUE(rough.chooses_lobe());
 
@@ -359,10 +340,10 @@ TEST(PrincipledBsdf, SamplesAreConsistentAndFiniteInExtremeCases) {
         for (float anisotropy : {0.0f, 1.0f}) {
             for (float ior : {1.0001f, 10.0f}) {
                 for (float coat_roughness : {0.0f, 1.0f}) {
-                    PrincipledParameters p = with({{"metallic", 0.3f}, {"roughness", roughness}, {"anisotropy", anisotropy},
-                                                  {"ior", ior}, {"transmission", 0.5f}, {"clearcoat", 0.5f},
-                                                  {"clearcoat_roughness", coat_roughness}, {"sheen", 1},
-                                                  {"sheen_roughness", 0}});
+                    const PrincipledParameters p{.metallic = 0.3f, .roughness = roughness, .anisotropy = anisotropy,
+                                                 .ior = ior, .transmission = 0.5f, .clearcoat = 0.5f,
+                                                 .clearcoat_roughness = coat_roughness, .sheen = 1,
+                                                 .sheen_roughness = 0};
                     const PrincipledBsdf bsdf(p);
                     for (const Vec3f& wo : views) {
                         for (TransportMode mode : {TransportMode::Radiance, TransportMode::Importance}) {
@@ -386,8 +367,8 @@ TEST(PrincipledBsdf, OutOfRangeParametersAreClamped) {
     // Each parameter in turn NaN, then all of them out of range: the results stay finite.
     constexpr float nan = std::numeric_limits<float>::quiet_NaN();
     const auto everything = [] {
-        return with({{"metallic", 0.3f}, {"roughness", 0.4f}, {"anisotropy", 0.5f}, {"transmission", 0.3f},
-                     {"clearcoat", 0.5f}, {"clearcoat_roughness", 0.2f}, {"sheen", 0.5f}});
+        return PrincipledParameters{.metallic = 0.3f, .roughness = 0.4f, .anisotropy = 0.5f, .transmission = 0.3f,
+                                    .clearcoat = 0.5f, .clearcoat_roughness = 0.2f, .sheen = 0.5f};
     };
     std::vector<PrincipledParameters> wild;
     for (float PrincipledParameters::*field :
@@ -398,7 +379,8 @@ TEST(PrincipledBsdf, OutOfRangeParametersAreClamped) {
         wild.push_back(everything());
         wild.back().*field = nan;
     }
-    for (Rgb PrincipledParameters::*colour : {&PrincipledParameters::base_colour, &PrincipledParameters::sheen_colour}) {
+    for (Rgb PrincipledParameters::*colour :
+         {&PrincipledParameters::base_colour, &PrincipledParameters::sheen_colour}) {
         wild.push_back(everything());
         wild.back().*colour = Rgb(0.5f, nan, 0.5f);
     }
