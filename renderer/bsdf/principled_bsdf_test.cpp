@@ -167,6 +167,40 @@ TEST(PrincipledBsdf, WhiteFurnaceWithCoatAndSheenIsAtMostOne) {
     }
 }
 
+TEST(PrincipledBsdf, OpaqueSurfacesAreTwoSided) {
+    // Without transmission, a wo below the surface sees the mirror image of the response above, coat and sheen
+    // included, as the other opaque models do.
+    const PrincipledBsdf bsdf(PrincipledParameters{.metallic = 0.4f, .roughness = 0.3f, .anisotropy = 0.5f,
+                                                   .clearcoat = 0.6f, .clearcoat_roughness = 0.2f, .sheen = 0.7f});
+    for (std::size_t i = 0; i < 500; ++i) {
+        const auto r = test_support::bsdf_random(i);
+        const Vec3f a = direction_from_degrees(89 * r.u[0], 360 * r.u[1]);
+        const Vec3f b = direction_from_degrees(89 * r.u_lobe, 720 * r.u[0]);
+        EXPECT_EQ(bsdf.eval(a, b), bsdf.eval(mirror_z(a), mirror_z(b))) << i;
+        EXPECT_EQ(bsdf.pdf(a, b), bsdf.pdf(mirror_z(a), mirror_z(b))) << i;
+        EXPECT_TRUE(bsdf.eval(a, mirror_z(b)).is_black()) << i;
+    }
+}
+
+TEST(PrincipledBsdf, FromInsideTheAlbedoIsAtMostOne) {
+    // Inside a partly transmissive object: the glass share sees the dielectric from inside, the rest the mirrored
+    // opaque response. Importance carries no 1 / eta^2, so nothing may exceed 1 (within the tables' 3e-3).
+    for (float transmission : {0.3f, 0.7f, 1.0f}) {
+        for (float roughness : {0.0f, 0.3f}) {
+            const PrincipledBsdf bsdf(PrincipledParameters{.base_colour = Rgb(1), .metallic = 0.2f,
+                                                           .roughness = roughness, .transmission = transmission,
+                                                           .clearcoat = 0.5f, .sheen = 0.5f});
+            for (double theta : {180.0, 150.0, 120.0, 95.0}) {
+                const auto albedo =
+                    test_support::estimate_albedo(bsdf, view_at(theta), 20000, TransportMode::Importance);
+                EXPECT_LE(albedo.mean.g, 1.0f + 4 * albedo.standard_error.g + 3e-3f)
+                    << transmission << " " << roughness << " " << theta;
+                EXPECT_GT(albedo.mean.g, 0.5f) << transmission << " " << roughness << " " << theta;
+            }
+        }
+    }
+}
+
 // Random directions on wo's side (reflection) or on both sides.
 std::pair<Vec3f, Vec3f> random_pair(std::size_t i, double max_theta) {
     const auto r = test_support::bsdf_random(i);
