@@ -58,7 +58,8 @@ void visit_reflecting_normals(const Vec3f& wo, const MicrofacetCdf& cdf,
                 const double s = s_min + (1.0 - s_min) * rule.x[i];
                 const double theta = cdf.theta_of_u(1.0 - s * s);
                 const double sin_theta = std::sin(theta);
-                const Vec3f m(float(sin_theta * std::cos(phi)), float(sin_theta * std::sin(phi)), float(std::cos(theta)));
+                const Vec3f m(float(sin_theta * std::cos(phi)), float(sin_theta * std::sin(phi)),
+                              float(std::cos(theta)));
                 visit(m, phi_weight * (1.0 - s_min) * 2.0 * s * rule.w[i]);
             }
         }

@@ -17,19 +17,21 @@ inline float albedo_grid_mu(int node, int nodes) {
     return std::max(t * t, 1e-4f);
 }
 
-// A continuous coordinate in [0, nodes - 1]: the cell's lower node and the weight of its upper node.
+// A continuous coordinate in [0, nodes - 1] (clamped, NaN to 0: it becomes an index): the cell's lower node and
+// the weight of its upper node.
 struct AlbedoGridCell {
     int node;
     float fraction;
 };
 
 inline AlbedoGridCell albedo_grid_cell(float coordinate, int nodes) {
-    const int node = std::min(int(coordinate), nodes - 2);
-    return {node, coordinate - float(node)};
+    const float inside = coordinate > 0 ? std::min(coordinate, float(nodes - 1)) : 0.0f;
+    const int node = std::min(int(inside), nodes - 2);
+    return {node, inside - float(node)};
 }
 
 inline AlbedoGridCell albedo_grid_mu_cell(float mu, int nodes) {
-    return albedo_grid_cell(std::sqrt(std::clamp(mu, 0.0f, 1.0f)) * float(nodes - 1), nodes);
+    return albedo_grid_cell(std::sqrt(mu > 0 ? std::min(mu, 1.0f) : 0.0f) * float(nodes - 1), nodes);
 }
 
 inline float lerp(float a, float b, float t) { return a + t * (b - a); }
@@ -49,9 +51,9 @@ struct MicrofacetCdf {
 // Visits quadrature nodes m with weights w such that sum w g(m) approximates the integral of g(m) D(m) m.z dm over
 // the normals that reflect wo (in the xz plane, wo.z > 0) above the horizon, for g symmetric about that plane.
 // Gauss-Legendre in u (the distribution's own measure, so narrow lobes cost nothing more; see the .cpp for the
-// substitution) up to the horizon cut, which is analytic: reflect(wo, m).z > 0 exactly when 2 theta_m < delta + pi / 2 with
-// tan delta = sin theta_o cos phi / cos theta_o. Gauss-Legendre in phi as well, split at pi / 2, where the cut
-// turns fastest for grazing wo.
+// substitution) up to the horizon cut, which is analytic: reflect(wo, m).z > 0 exactly when
+// 2 theta_m < delta + pi / 2 with tan delta = sin theta_o cos phi / cos theta_o. Gauss-Legendre in phi as well,
+// split at pi / 2, where the cut turns fastest for grazing wo.
 void visit_reflecting_normals(const Vec3f& wo, const MicrofacetCdf& cdf,
                               const std::function<void(const Vec3f& m, double weight)>& visit);
 

@@ -51,7 +51,7 @@ const std::vector<float>& table() {
 }  // namespace
 
 CharlieSheen::CharlieSheen(float roughness) {
-    const float r = std::clamp(roughness, kMinSheenRoughness, 1.0f);
+    const float r = roughness > kMinSheenRoughness ? std::min(roughness, 1.0f) : kMinSheenRoughness;  // NaN too
     const float alpha = r * r;
     inverse_alpha_ = 1.0f / alpha;
     // Estevez and Kulla's table 1: the coefficients at a = 0 and a = 1, blended by (1 - a)^2.
@@ -68,7 +68,9 @@ float CharlieSheen::d(const Vec3f& m) const {
 }
 
 float CharlieSheen::lambda(float mu) const {
-    const auto l = [this](float x) { return fit_[0] / (1.0f + fit_[1] * std::pow(x, fit_[2])) + fit_[3] * x + fit_[4]; };
+    const auto l = [this](float x) {
+        return fit_[0] / (1.0f + fit_[1] * std::pow(x, fit_[2])) + fit_[3] * x + fit_[4];
+    };
     return mu < 0.5f ? std::exp(l(mu)) : std::exp(2.0f * l(0.5f) - l(1.0f - mu));
 }
 

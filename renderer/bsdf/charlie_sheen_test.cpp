@@ -14,7 +14,8 @@ const float kRoughnesses[] = {0.3f, 0.41f, 0.5f, 0.77f, 1.0f};
 TEST(CharlieSheen, DistributionsProjectedAreaIsOne) {
     for (float roughness : kRoughnesses) {
         const CharlieSheen sheen(roughness);
-        const double area = test_support::sphere_integral([&](const Vec3f& m) { return m.z > 0 ? sheen.d(m) * m.z : 0.0; });
+        const double area =
+            test_support::sphere_integral([&](const Vec3f& m) { return m.z > 0 ? sheen.d(m) * m.z : 0.0; });
         EXPECT_NEAR(area, 1.0, 1e-3) << roughness;
     }
 }

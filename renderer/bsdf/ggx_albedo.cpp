@@ -153,7 +153,7 @@ std::array<float, 2> anisotropic_alphas(float roughness, float anisotropy) {
 }
 
 GgxAlbedo::GgxAlbedo(float roughness, float anisotropy)
-    : roughness_coordinate_(std::clamp(roughness, 0.0f, 1.0f) * (kRoughnessNodes - 1)),
+    : roughness_coordinate_(roughness > 0 ? std::min(roughness, 1.0f) * (kRoughnessNodes - 1) : 0.0f),  // NaN too
       anisotropic_(roughness > 0 && anisotropy > 0) {
     if (anisotropic_) {
         const auto [alpha_x, alpha_y] = anisotropic_alphas(roughness, anisotropy);
@@ -161,7 +161,7 @@ GgxAlbedo::GgxAlbedo(float roughness, float anisotropy)
         alpha_y2_ = alpha_y * alpha_y;
     }
     const AlbedoGridCell r = albedo_grid_cell(roughness_coordinate_, kRoughnessNodes);
-    const AlbedoGridCell a = albedo_grid_cell(std::clamp(anisotropy, 0.0f, 1.0f) * (kAnisotropyNodes - 1), kAnisotropyNodes);
+    const AlbedoGridCell a = albedo_grid_cell(anisotropy * (kAnisotropyNodes - 1), kAnisotropyNodes);
     const std::vector<AlbedoPair>& average = table().average;
     const auto at = [&](int k, int anisotropy_node) {
         const AlbedoPair* row = &average[std::size_t(anisotropy_node) * kRoughnessNodes + r.node];

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "renderer/bsdf/fresnel.h"
 #include "renderer/bsdf/ggx.h"
@@ -38,7 +39,9 @@ TEST(GgxAlbedo, SmoothIsSchlicksReflectance) {
     const GgxAlbedo smooth(0, 0);
     EXPECT_EQ(GgxAlbedo(0, 1).albedo(direction_from_degrees(60, 30), 0.04f), fresnel_schlick(0.5f, 0.04f));
     for (float f0 : {0.0f, 0.04f, 0.5f, 1.0f}) {
-        for (float mu : {0.0f, 0.02f, 0.3f, 1.0f}) EXPECT_EQ(smooth.albedo(mu, f0), fresnel_schlick(mu, f0)) << f0 << " " << mu;
+        for (float mu : {0.0f, 0.02f, 0.3f, 1.0f}) {
+            EXPECT_EQ(smooth.albedo(mu, f0), fresnel_schlick(mu, f0)) << f0 << " " << mu;
+        }
         EXPECT_NEAR(smooth.average(f0), f0 + (1 - f0) / 21, 2e-4f) << f0;
     }
 }
@@ -50,9 +53,11 @@ TEST(GgxAlbedo, AgreesWithMonteCarlo) {
         for (float mu : {1.0f, 0.8f, 0.45f, 0.25f, 0.1f, 0.0175f}) {
             for (float f0 : {0.04f, 1.0f}) {
                 const float alpha = roughness * roughness;
-                const auto [mean, error] = monte_carlo_albedo(GgxDistribution(alpha, alpha), Vec3f(std::sqrt(1 - mu * mu), 0, mu), f0);
+                const Vec3f wo(std::sqrt(1 - mu * mu), 0, mu);
+                const auto [mean, error] = monte_carlo_albedo(GgxDistribution(alpha, alpha), wo, f0);
                 const double tolerance = 4 * error + (mu >= 0.1f ? 3e-3 : 2e-2);
-                EXPECT_NEAR(GgxAlbedo(roughness, 0).albedo(mu, f0), mean, tolerance) << roughness << " " << mu << " " << f0;
+                EXPECT_NEAR(GgxAlbedo(roughness, 0).albedo(mu, f0), mean, tolerance)
+                    << roughness << " " << mu << " " << f0;
             }
         }
     }
@@ -71,8 +76,11 @@ TEST(GgxAlbedo, AnisotropicErrsTowardsReflectingMore) {
                 for (float f0 : {0.04f, 1.0f}) {
                     const auto [mean, error] = monte_carlo_albedo(ggx, wo, f0);
                     const float e = albedo.albedo(wo, f0);
-                    EXPECT_GT(e, mean - 4 * error - 0.03) << alpha_x << " " << alpha_y << " " << theta << " " << phi << " " << f0;
-                    EXPECT_LT(e, mean + 0.75) << alpha_x << " " << alpha_y << " " << theta << " " << phi << " " << f0;
+                    const std::string where = std::to_string(roughness) + " " + std::to_string(anisotropy) + " " +
+                                              std::to_string(theta) + " " + std::to_string(phi) + " " +
+                                              std::to_string(f0);
+                    EXPECT_GT(e, mean - 4 * error - 0.03) << where;
+                    EXPECT_LT(e, mean + 0.75) << where;
                 }
             }
         }

@@ -11,9 +11,9 @@
 //   f_metal   GGX with Schlick's Fresnel F0 = base_colour, plus Kulla and Conty's multiple-scattering lobe
 //             F_ms (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)), F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)):
 //             with a white base its albedo is 1 at every roughness
-//   f_plastic specular * F * GGX, F Schlick's with F0 = ((ior - 1) / (ior + 1))^2, over a Lambertian base_colour
-//             scaled by
-//             (1 - s E(mu_o)) (1 - s E(mu_i)) / (pi (1 - s E_avg)): with a white base its albedo is exactly 1
+//   f_plastic s f_specular + base_colour (1 - s E(mu_o)) (1 - s E(mu_i)) / (pi (1 - s E_avg)), s = specular:
+//             GGX with Schlick's Fresnel, F0 = ((ior - 1) / (ior + 1))^2, over a Lambertian base normalised so
+//             that with a white base its albedo is exactly 1
 //   f_glass   DielectricBsdf(ior, alpha_x, alpha_y, tint base_colour): rough glass, reflection untinted, with
 //             the exact Fresnel term (specular does not weight it)
 //
@@ -21,7 +21,8 @@
 // and T_s = (1 - S E_sheen(mu_o)) (1 - S E_sheen(mu_i)) with S the largest channel of the sheen tint. Those
 // products are symmetric, so every reflection lobe stays reciprocal; for transmission only the outside direction
 // crosses the coat and sheen, so the glass is scaled by T(mu_outside) alone and keeps the dielectric's
-// generalised reciprocity. Each layer reflects at most E and passes at most 1 - E, so the albedo never exceeds 1.
+// generalised reciprocity. Each layer reflects at most E and passes at most 1 - E, so the albedo never exceeds 1
+// (within the tables' error; an anisotropic lobe's E is an upper bound from isotropic tables, see GgxAlbedo).
 //
 // wo below the surface (wo.z < 0) is inside the object: the glass share g = (1 - m) t sees the dielectric from
 // inside (its refraction out is scaled by T(mu_outside)), and the rest, 1 - g, is the response above mirrored
@@ -60,7 +61,7 @@ struct PrincipledParameters {
     float clearcoat_roughness = 0.03f;  // perceptual [0, 1], as roughness
     float sheen = 0;             // [0, 1]
     Rgb sheen_colour{1.0f};      // each in [0, 1]
-    float sheen_roughness = 0.5f;  // [0, 1], raised to kMinSheenRoughness
+    float sheen_roughness = 0.5f;  // [0, 1], raised to kMinSheenRoughness (0.3)
 };
 
 class PrincipledBsdf final {

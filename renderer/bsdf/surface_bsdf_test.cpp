@@ -34,6 +34,8 @@ TEST(SurfaceBsdf, EmptyScattersNothing) {
     EXPECT_FALSE(none.chooses_lobe());
 }
 
+SurfaceBsdf principled(const PrincipledParameters& parameters) { return PrincipledBsdf(parameters); }
+
 TEST(SurfaceBsdf, ChoosesLobeExactlyWhenSamplingReadsTheLobeNumber) {
     const DielectricCoating smooth_coating(1.5f, 0), rough_coating(1.5f, 0.3f);
     const std::vector<SurfaceBsdf> models = {
@@ -44,6 +46,12 @@ TEST(SurfaceBsdf, ChoosesLobeExactlyWhenSamplingReadsTheLobeNumber) {
         DielectricBsdf(1.5f, 0.3f, 0.3f),
         CoatedDiffuseBsdf(smooth_coating, Rgb(0.5f)),
         CoatedDiffuseBsdf(rough_coating, Rgb(0.5f)),
+        principled({.specular = 0}),                                    // exactly Lambert
+        principled({.metallic = 1, .roughness = 0}),                    // one delta mirror
+        principled({.metallic = 1, .roughness = 0.4f}),                 // GGX and multiple scattering
+        principled({.roughness = 0.4f}),                                // specular over diffuse
+        principled({.roughness = 0, .transmission = 1}),                // glass
+        principled({.roughness = 0.3f, .clearcoat = 1, .sheen = 1}),
     };
     for (std::size_t m = 0; m < models.size(); ++m) {
         EXPECT_TRUE(models[m].scatters()) << m;
