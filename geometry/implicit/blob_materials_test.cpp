@@ -232,7 +232,7 @@ std::string red_blue_scene(const std::string& second_material = "blue") {
     {"center": [0, 3, 0], "radius": 0.5}]}}]})";
 }
 
-TEST(BlobsPluginMaterials, ElementsNameTheirPartsAndHitsShowTheLargestShare) {
+TEST(BlobsPluginMaterials, ElementsNameTheirPartsAndHitsBlendThem) {
     ScratchDirectory directory;
     const auto loaded = load_scene(directory.write("scene.json", red_blue_scene()));
     const RenderScene& scene = *loaded->scene;
@@ -251,9 +251,11 @@ TEST(BlobsPluginMaterials, ElementsNameTheirPartsAndHitsShowTheLargestShare) {
     };
     const auto left = shoot(-0.3f, 0.1f), right = shoot(0.3f, 0.1f), top = shoot(0, 3);
     ASSERT_TRUE(left && right && top);
-    EXPECT_EQ(left->material, scene.find_material("red"));
-    EXPECT_EQ(right->material, scene.find_material("blue"));
-    EXPECT_EQ(top->material, scene.find_material("grey"));  // no material of its own: the object's
+    // Hits show the blend of the parts' materials, its largest share first.
+    for (const auto& hit : {left, right, top}) EXPECT_EQ(hit->material, object.blended_material);
+    EXPECT_EQ(object.material_of_part(left->blend.part[0]), scene.find_material("red"));
+    EXPECT_EQ(object.material_of_part(right->blend.part[0]), scene.find_material("blue"));
+    EXPECT_EQ(object.material_of_part(top->blend.part[0]), scene.find_material("grey"));  // the object's
 
     // The shape's own shading at the hit: the blend, its largest share as the part.
     RTCHit hit{};
