@@ -67,7 +67,10 @@ float CharlieSheen::d(const Vec3f& m) const {
     return (2.0f + inverse_alpha_) * std::pow(sin2, 0.5f * inverse_alpha_) * (0.5f * std::numbers::inv_pi_v<float>);
 }
 
-float CharlieSheen::lambda(float mu) const {
+float CharlieSheen::lambda(float cosine) const {
+    // Unit directions carried into the shading frame may come out with |z| a rounding above 1, where the fit's
+    // 1 - mu would be negative (a NaN power).
+    const float mu = std::clamp(std::abs(cosine), 0.0f, 1.0f);
     const auto l = [this](float x) {
         return fit_[0] / (1.0f + fit_[1] * std::pow(x, fit_[2])) + fit_[3] * x + fit_[4];
     };

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "tests/support/bsdf_checks.h"
 
 namespace isotrace {
@@ -55,4 +57,16 @@ TEST(CharlieSheen, AlbedoNeverExceedsOne) {
 }
 
 }  // namespace
+// A unit vector carried into the shading frame can come out with z a rounding above 1: the masking fit read
+// 1 - z there, and its power of a negative number made a NaN sample in a render.
+TEST(CharlieSheen, CosinesARoundingAboveOneStayFinite) {
+    const CharlieSheen sheen(0.5f);
+    const float above_one = std::nextafter(1.0f, 2.0f);
+    EXPECT_TRUE(std::isfinite(sheen.lambda(above_one)));
+    EXPECT_NEAR(sheen.lambda(above_one), sheen.lambda(1.0f), 1e-6f);
+    const Vec3f up(0, 0, above_one), tilted = normalize(Vec3f(0.3f, 0.2f, 0.9f));
+    EXPECT_TRUE(std::isfinite(sheen.eval(up, tilted)));
+    EXPECT_TRUE(std::isfinite(sheen.eval(tilted, up)));
+}
+
 }  // namespace isotrace

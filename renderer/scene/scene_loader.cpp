@@ -175,15 +175,15 @@ void check_texture_needs(const SceneObject& object) {
     for (const Material* part : object.part_materials)
         if (part) needs |= part->texture_needs();
     const Shape& shape = *object.shape;
+    const std::string whose = "the shape of object \"" + object.name + "\" (" + shape.type_name() + ")";
     if (needs.uv && !shape.has_uv())
         throw InputError(needs.where, needs.field_path,
-                         "this texture is mapped by uv, but a " + shape.type_name() +
+                         "this texture is mapped by uv, but " + whose +
                              " has no uv: use a \"solid\", \"planar\", \"triplanar\", \"spherical\" or "
                              "\"cylindrical\" projection");
     if (needs.field && !shape.field_value(Vec3d(0, 0, 0)))
         throw InputError(needs.where, needs.field_path,
-                         "this texture reads a field, but a " + shape.type_name() +
-                             " has none (blob groups and superquadrics have one)");
+                         "this texture reads a field, but " + whose + " has none (blob groups and superquadrics have one)");
 }
 
 void load_content(const SceneNode& root, const SceneOverrides& overrides, RenderScene& scene) {

@@ -354,7 +354,7 @@ TEST_F(LoadScene, UvMappedTexturesNeedSurfacesWithUv) {
     const std::string text = two_coloured_metaballs(
         R"({"type": "principled", "base_colour": {"type": "checker", "projection": "uv"}})");
     expect_error(text, 5, 97, "materials.blue.base_colour.projection",
-                 "this texture is mapped by uv, but a blobs has no uv: use a \"solid\", \"planar\", \"triplanar\", "
+                 "this texture is mapped by uv, but the shape of object \"objects[0]\" (blobs) has no uv: use a \"solid\", \"planar\", \"triplanar\", "
                  "\"spherical\" or \"cylindrical\" projection");
 }
 

@@ -1988,6 +1988,27 @@ case_texture_bad_input() {  # texture mistakes are refused where they are writte
     5 "materials.grey.reflectance.projection.axis" 'unknown value "w"'
 }
 
+case_principled_bad_input() {  # principled materials: refused at the value, before anything is rendered
+  bad_scene 5 '  "materials": { "grey": { "type": "principled", "metalic": 1 } },' 5 "materials.grey" \
+    '"metalic"'
+  expect_in "$work/stderr" 'did you mean "metallic"' stderr
+  bad_scene 5 '  "materials": { "grey": { "type": "principled", "roughness": 1.5 } },' 5 "materials.grey.roughness" \
+    "out of range"
+  bad_scene 5 '  "materials": { "grey": { "type": "principled", "base_colour": { "type": "mix", "a": 0, "b": 1, "t": { "type": "field" } } } },' \
+    5 "materials.grey.base_colour.t" "this texture reads a field, but the shape of object \"objects[0]\" (sphere) has none"
+  bad_scene 5 '  "materials": { "grey": { "type": "principled", "normal_map": { "type": "image", "file": "missing.png" } } },' \
+    5 "materials.grey.normal_map.file" "missing.png"
+  # A uv mapping on a surface without uv (a blob group) is refused at the projection.
+  local dir="$work/blob"
+  mkdir -p "$dir"
+  write_base_scene "$dir/base.json"
+  awk 'NR == 5 { print "  \"materials\": { \"grey\": { \"type\": \"principled\", \"base_colour\": { \"type\": \"checker\", \"projection\": \"uv\" } } },"; next }
+       /"type": "sphere",/ { print "        \"type\": \"blobs\", \"elements\": [ { \"center\": [0, 0, 0], \"radius\": 1 } ]"; next }
+       /"radius": 1$/ { next }
+       { print }' "$dir/base.json" >"$dir/scene.json"
+  check_bad_scene "$dir" 5 "materials.grey.base_colour.projection" "this texture is mapped by uv, but the shape of object \"objects[0]\" (blobs) has no uv"
+}
+
 case_texture_nesting_bounded() {  # a deeply nested texture is an error (JSON itself may nest 256 levels)
   local deep='0.5' i
   for ((i = 0; i < 200; ++i)); do deep="{\"type\":\"invert\",\"value\":$deep}"; done
