@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "renderer/core/inline_vector.h"
+
 namespace isotrace {
 namespace {
 
@@ -15,15 +17,6 @@ constexpr std::int64_t kWeightUnits = 1 << 20;  // the weights' resolution: sums
 struct Share {
     std::uint32_t part;
     double value;
-};
-
-// Each part's summed terms, indexed by part, the parts touched (to clear them for the next point), and their
-// positive shares: per thread, kept from point to point.
-struct PartSums {
-    std::vector<double> sum;
-    std::vector<std::uint32_t> touched;
-    std::vector<bool> listed;
-    std::vector<Share> shares;
 };
 
 double term_of(const Metacube& element, const Vec3d& point, double term) {
@@ -44,27 +37,18 @@ BlobMaterials::BlobMaterials(std::vector<MaterialReference> parts, std::vector<s
 
 MaterialBlend BlobMaterials::blend(const BlobGroup& group, std::span<const std::uint32_t> listed,
                                    const Vec3d& point) const {
-    thread_local PartSums sums;
-    if (sums.sum.size() < parts_.size()) {
-        sums.sum.resize(parts_.size(), 0.0);
-        sums.listed.resize(parts_.size(), false);
-    }
+    // Each touched part's summed terms. A point meets few parts, so a list searched in order beats a table indexed
+    // by part, which would have to be cleared or kept per thread.
+    InlineVector<Share, 16> sums;
     group.for_each_term(listed, point, [&](std::uint32_t element, double term) {
         const std::uint32_t part = element_parts_[element];
-        if (!sums.listed[part]) {
-            sums.listed[part] = true;
-            sums.touched.push_back(part);
-        }
-        sums.sum[part] += term_of(group.elements()[element], point, term);
+        Share* found = std::find_if(sums.begin(), sums.end(), [&](const Share& s) { return s.part == part; });
+        if (found == sums.end()) found = &sums.emplace_back(Share{part, 0.0});
+        found->value += term_of(group.elements()[element], point, term);
     });
-    std::vector<Share>& shares = sums.shares;
-    shares.clear();
-    for (const std::uint32_t part : sums.touched) {
-        if (sums.sum[part] > 0) shares.push_back({part, sums.sum[part]});
-        sums.sum[part] = 0;
-        sums.listed[part] = false;
-    }
-    sums.touched.clear();
+    InlineVector<Share, 16> shares;  // the positive ones
+    for (const Share& sum : sums)
+        if (sum.value > 0) shares.emplace_back(sum);
 
     MaterialBlend blend;
     if (shares.empty()) {  // rounding at the edge of the supports: the nearest element's part
