@@ -358,5 +358,15 @@ TEST_F(LoadScene, UvMappedTexturesNeedSurfacesWithUv) {
                  "\"spherical\" or \"cylindrical\" projection");
 }
 
+TEST_F(LoadScene, TessellatingAShapeWhosePartsNameMaterialsIsRefused) {
+    // The triangles show one material: element materials (and CSG children's) used to be dropped silently.
+    std::string text = two_coloured_metaballs(R"({"type": "diffuse"})");
+    const std::string shape = "\"shape\": {\"type\": \"blobs\"";
+    text.replace(text.find(shape), shape.size(), "\"tessellate\": {\"depth\": 4}, " + shape);
+    expect_error(text, 6, 49, "objects[0].tessellate",
+                 "a tessellated object shows one material, and this shape's parts name materials of their own "
+                 "(remove \"tessellate\" or those materials)");
+}
+
 }  // namespace
 }  // namespace isotrace
