@@ -202,7 +202,7 @@ void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query,
         hits += live && query.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
     }
     counters::count_rays(kind, std::uint64_t(rays));
-    if (flat_lambertian_->counter_slot >= 0) {
+    if (flat_lambertian_ && flat_lambertian_->counter_slot >= 0) {
         counters::count_closest_hits(flat_lambertian_->counter_slot, std::uint64_t(hits));
         return;
     }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -177,6 +178,34 @@ TEST(RenderScene, UntraceableLanesOfPacketsMissAndAreBlocked) {
             EXPECT_EQ(shadow.tfar[lane], -std::numeric_limits<float>::infinity()) << bad_lane << " " << lane;
         }
     }
+}
+
+// Packets of a scene that is not flat Lambertian read that scene's counter slot from an empty optional: garbage,
+// which crashed about one run in five. Built over memory full of a non-zero pattern, that read is never harmless.
+TEST(RenderScene, PacketsOfAnySceneCountTheirHitsPerObject) {
+    alignas(RenderScene) unsigned char storage[sizeof(RenderScene)];
+    std::memset(storage, 0x7f, sizeof storage);
+    RenderScene& scene = *new (storage) RenderScene;
+    scene.add_object(make_object("floor", floor_quad(), Transform()));
+    scene.commit();
+    ASSERT_EQ(scene.flat_lambertian(), nullptr);
+    const Ray down = ray_between({0, 4, 0}, {0, -1, 0});
+    alignas(32) RTCRayHit8 query{};
+    alignas(32) std::int32_t valid[8];
+    for (std::size_t lane = 0; lane < 8; ++lane) {
+        query.ray.org_x[lane] = down.origin.x, query.ray.org_y[lane] = down.origin.y;
+        query.ray.org_z[lane] = down.origin.z;
+        query.ray.dir_x[lane] = down.direction.x, query.ray.dir_y[lane] = down.direction.y;
+        query.ray.dir_z[lane] = down.direction.z;
+        query.ray.tnear[lane] = down.t_near, query.ray.tfar[lane] = down.t_far;
+        query.ray.mask[lane] = ~0u;
+        query.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        query.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+        valid[lane] = -1;
+    }
+    scene.intersect_packet(valid, query, RayKind::Camera);
+    for (std::size_t lane = 0; lane < 8; ++lane) EXPECT_NE(query.hit.geomID[lane], RTC_INVALID_GEOMETRY_ID) << lane;
+    scene.~RenderScene();
 }
 
 TEST(RenderScene, SpawnedRaysDoNotRehitTheirOwnSurface) {
