@@ -23,9 +23,7 @@ TextureContext::TextureContext(const SurfaceHit& hit)
     shape = object->shape.get();
     const Transform& to_world = object->to_world;
     const Vec3d p = to_world.inverse_point(Vec3d(hit.position));
-    const Vec3d n = to_world.inverse_normal(Vec3d(hit.shading_normal));
-    const double n_length = length(n);
-    const Vec3d unit_n = n_length > 0 ? n / n_length : Vec3d(hit.shading_normal);
+    const Vec3d unit_n = safe_normalize(to_world.inverse_normal(Vec3d(hit.shading_normal)), Vec3d(hit.shading_normal));
     object_position = Vec3f(p);
     object_normal = Vec3f(unit_n);
     // A baked shape lives in world space already; an instanced one in object space.
