@@ -64,6 +64,25 @@ struct PrincipledParameters {
     float sheen_roughness = 0.5f;  // [0, 1], raised to kMinSheenRoughness (0.3)
 };
 
+// Calls visit(a.p, b.p) for every parameter p above, in order: the one list of them for code that treats them all
+// alike (blending parameters, a material's textures of them). a and b may be of any types with members of these
+// names.
+template <class A, class B, class Visit>
+void for_each_principled_parameter(A& a, B& b, Visit&& visit) {
+    visit(a.base_colour, b.base_colour);
+    visit(a.metallic, b.metallic);
+    visit(a.roughness, b.roughness);
+    visit(a.anisotropy, b.anisotropy);
+    visit(a.ior, b.ior);
+    visit(a.specular, b.specular);
+    visit(a.transmission, b.transmission);
+    visit(a.clearcoat, b.clearcoat);
+    visit(a.clearcoat_roughness, b.clearcoat_roughness);
+    visit(a.sheen, b.sheen);
+    visit(a.sheen_colour, b.sheen_colour);
+    visit(a.sheen_roughness, b.sheen_roughness);
+}
+
 class PrincipledBsdf final {
 public:
     explicit PrincipledBsdf(const PrincipledParameters& parameters);

@@ -8,38 +8,6 @@
 namespace isotrace {
 namespace {
 
-PrincipledParameters& operator+=(PrincipledParameters& sum, const PrincipledParameters& p) {
-    sum.base_colour += p.base_colour;
-    sum.metallic += p.metallic;
-    sum.roughness += p.roughness;
-    sum.anisotropy += p.anisotropy;
-    sum.ior += p.ior;
-    sum.specular += p.specular;
-    sum.transmission += p.transmission;
-    sum.clearcoat += p.clearcoat;
-    sum.clearcoat_roughness += p.clearcoat_roughness;
-    sum.sheen += p.sheen;
-    sum.sheen_colour += p.sheen_colour;
-    sum.sheen_roughness += p.sheen_roughness;
-    return sum;
-}
-
-PrincipledParameters operator*(PrincipledParameters p, float w) {
-    p.base_colour *= w;
-    p.metallic *= w;
-    p.roughness *= w;
-    p.anisotropy *= w;
-    p.ior *= w;
-    p.specular *= w;
-    p.transmission *= w;
-    p.clearcoat *= w;
-    p.clearcoat_roughness *= w;
-    p.sheen *= w;
-    p.sheen_colour *= w;
-    p.sheen_roughness *= w;
-    return p;
-}
-
 class BlendedMaterial final : public Material {
 public:
     explicit BlendedMaterial(std::vector<const Material*> parts) : parts_(std::move(parts)) {
@@ -59,7 +27,9 @@ public:
     bool is_emissive() const override { return emissive_; }
     SurfaceBsdf bsdf(const SurfaceHit& hit) const override { return PrincipledBsdf(principled_parameters(hit)); }
     PrincipledParameters principled_parameters(const SurfaceHit& hit) const override {
-        return sum(hit, [&](const Material& m) { return m.principled_parameters(hit); }, PrincipledParameters() * 0.0f);
+        PrincipledParameters zero;
+        for_each_principled_parameter(zero, zero, [](auto& value, auto&) { value = {}; });
+        return sum(hit, [&](const Material& m) { return m.principled_parameters(hit); }, zero);
     }
     void perturb_normal(SurfaceHit& hit) const override {
         const SurfaceHit unperturbed = hit;
@@ -91,7 +61,8 @@ private:
     }
     static Rgb add(const Rgb& total, const Rgb& value, float w) { return total + value * w; }
     static PrincipledParameters add(PrincipledParameters total, const PrincipledParameters& value, float w) {
-        return total += value * w;
+        for_each_principled_parameter(total, value, [w](auto& sum, const auto& term) { sum = sum + term * w; });
+        return total;
     }
     static std::array<Vec3f, 2> add(const std::array<Vec3f, 2>& total, const std::array<Vec3f, 2>& value, float w) {
         return {total[0] + value[0] * w, total[1] + value[1] * w};

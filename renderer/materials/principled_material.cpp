@@ -13,11 +13,15 @@
 namespace isotrace {
 namespace {
 
+// A texture for each of PrincipledParameters' members (same names, for for_each_principled_parameter), and for the
+// parameters the material handles itself.
 struct PrincipledTextures {
     ColourTexturePtr base_colour;
-    ScalarTexturePtr metallic, roughness, anisotropy, anisotropy_rotation, ior, specular, transmission, clearcoat,
-        clearcoat_roughness, sheen, sheen_roughness;
-    ColourTexturePtr sheen_colour, emission;
+    ScalarTexturePtr metallic, roughness, anisotropy, ior, specular, transmission, clearcoat, clearcoat_roughness,
+        sheen, sheen_roughness;
+    ColourTexturePtr sheen_colour;
+    ScalarTexturePtr anisotropy_rotation;
+    ColourTexturePtr emission;
 };
 
 class PrincipledMaterial final : public Material {
@@ -54,46 +58,29 @@ public:
     }
     TextureNeeds texture_needs() const override {
         TextureNeeds needs = perturbation_.needs();
-        for (const auto* texture : scalar_textures()) needs |= texture->needs();
-        for (const auto* texture : colour_textures()) needs |= texture->needs();
+        PrincipledParameters unused;
+        for_each_principled_parameter(textures_, unused,
+                                      [&](const auto& texture, auto&) { needs |= texture->needs(); });
+        needs |= textures_.anisotropy_rotation->needs();
+        needs |= textures_.emission->needs();
         return needs;
     }
 
 private:
-    std::array<const ScalarTexture*, 11> scalar_textures() const {
-        const PrincipledTextures& t = textures_;
-        return {t.metallic.get(),     t.roughness.get(),    t.anisotropy.get(),          t.anisotropy_rotation.get(),
-                t.ior.get(),          t.specular.get(),     t.transmission.get(),        t.clearcoat.get(),
-                t.clearcoat_roughness.get(), t.sheen.get(), t.sheen_roughness.get()};
-    }
-    std::array<const ColourTexture*, 3> colour_textures() const {
-        return {textures_.base_colour.get(), textures_.sheen_colour.get(), textures_.emission.get()};
-    }
-
     PrincipledParameters parameters(const TextureContext& at) const {
-        const PrincipledTextures& t = textures_;
         PrincipledParameters p;
-        p.base_colour = t.base_colour->evaluate(at);
-        p.metallic = t.metallic->evaluate(at);
-        p.roughness = t.roughness->evaluate(at);
-        p.anisotropy = t.anisotropy->evaluate(at);
-        p.ior = t.ior->evaluate(at);
-        p.specular = t.specular->evaluate(at);
-        p.transmission = t.transmission->evaluate(at);
-        p.clearcoat = t.clearcoat->evaluate(at);
-        p.clearcoat_roughness = t.clearcoat_roughness->evaluate(at);
-        p.sheen = t.sheen->evaluate(at);
-        p.sheen_colour = t.sheen_colour->evaluate(at);
-        p.sheen_roughness = t.sheen_roughness->evaluate(at);
+        for_each_principled_parameter(textures_, p,
+                                      [&](const auto& texture, auto& value) { value = texture->evaluate(at); });
         return p;
     }
 
     // The parameters when no texture varies, evaluated once.
     std::optional<PrincipledParameters> constant_parameters() const {
-        for (const auto* texture : scalar_textures())
-            if (texture != textures_.anisotropy_rotation.get() && !texture->constant()) return std::nullopt;
-        if (!textures_.base_colour->constant() || !textures_.sheen_colour->constant()) return std::nullopt;
-        return parameters(TextureContext());
+        bool constant = true;
+        PrincipledParameters unused;
+        for_each_principled_parameter(textures_, unused,
+                                      [&](const auto& texture, auto&) { constant = constant && texture->constant(); });
+        return constant ? std::optional(parameters(TextureContext())) : std::nullopt;
     }
 
     // The direction anisotropic roughness stretches along: dp/du where the surface has uv, else around the
