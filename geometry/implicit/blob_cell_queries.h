@@ -2,8 +2,9 @@
 // The ray queries of one blob cell (BlobGroup's sweeps: the first crossing, occlusion, every crossing), built twice:
 // for baseline x86-64 in the library and for AVX2 in a module beside it (blob_cell_sweep.cpp), chosen once per
 // process. Four doubles are one AVX register and two SSE2 ones, and the sweep is mostly such lanes
-// (metaball_sweep.h): the AVX2 build runs blobs_1k's rays ×1.2–1.3 as fast (docs/benchmarks.md, twenty-eighth
-// session). Without FMA, both builds round alike, so a render is the same bits on any x86-64 CPU (tested).
+// (metaball_sweep.h): the AVX2 build runs blobs_1k's rays ×1.2–1.3 as fast (docs/decisions.md, "Blob cell
+// queries built twice"). Without FMA, both builds round alike, so a render is the same bits on any x86-64 CPU
+// (tested).
 #include <cstddef>
 #include <cstdint>
 #include <optional>

@@ -4,7 +4,8 @@
 // query, the shading in eight SIMD lanes. Lane by lane it performs PathIntegrator::radiance's arithmetic in the
 // same order, so it gives the same bits (tested); what it gains is the per-path overhead of the general loop (hit
 // completion into a SurfaceHit, the BSDF variant, the virtual light and material calls), which on such scenes
-// was about as large as Embree's own time (docs/benchmarks.md, issue 14).
+// was about as large as Embree's own time (docs/decisions.md, "The path tracer: one path at a time, or eight
+// in SIMD lanes").
 //
 // The kernel is built twice: into the library for baseline x86-64 and, for AVX2, into a module beside it that is
 // loaded on CPUs that have AVX2 and FMA (a module, so that the inline functions it compiles for AVX2 stay its own;

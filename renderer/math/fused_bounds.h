@@ -4,7 +4,7 @@
 // Only for arithmetic whose result is a bound tested with a margin far above one rounding (the sphere tests, the
 // field's upper bounds before a sweep and on each piece): a fused and an unfused bound then prove the same things,
 // so both builds report the same crossings, bit for bit, while the bounds' chains of dependent operations shorten
-// (x1.03 on blobs_1k, docs/benchmarks.md). Values that reach a result (chords, sums, polynomials, roots) never fuse.
+// (x1.03 on blobs_1k, docs/decisions.md). Values that reach a result (chords, sums, polynomials, roots) never fuse.
 // GCC has no per-block contraction: there, and on baseline x86-64, the block is compiled as written.
 #if defined(__clang__)
 #define ISOTRACE_FUSED_BOUNDS _Pragma("clang fp contract(fast)")

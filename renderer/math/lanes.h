@@ -15,7 +15,7 @@
 namespace isotrace {
 
 // Eight: sixteen (Embree's 16-wide packets, two AVX registers a value) took 1.2 times as long on the path
-// tracer's box (docs/benchmarks.md, issue 14).
+// tracer's box (docs/benchmarks.md, "What did not pay").
 inline constexpr int kLanes = 8;
 
 using FloatLanes = float __attribute__((vector_size(4 * kLanes)));

@@ -66,7 +66,7 @@ inline LocalShading shading_of_embree_hit(const RTCHit& hit, const Vec3f& geomet
 
 // Whether a shape's shading() is shading_of_embree_hit (and with which uv), so that the scene can complete its
 // hits without the call: the path tracer completes one hit per ray, and the virtual call with its result returned
-// through memory was 1-2 % of a render of flat-shaded triangles (docs/benchmarks.md, twenty-first session).
+// through memory was 1-2 % of a render of flat-shaded triangles (measured; git history of docs/benchmarks.md).
 enum class HitShading { Computed, EmbreeHit, EmbreeHitSwappedUv };
 
 class Shape {

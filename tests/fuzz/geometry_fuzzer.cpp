@@ -22,7 +22,8 @@
 namespace {
 
 // Work units per ray and primitive. A blob ray costs ~3 cell queries of ~4 candidates, ~3 pieces and ~10 root steps
-// each (docs/benchmarks.md), a superquadric ray tens to hundreds of search steps; the cap is ~1000 times that.
+// each (measured; git history of docs/benchmarks.md), a superquadric ray tens to hundreds of search steps; the cap
+// is ~1000 times that.
 constexpr std::uint64_t kWorkPerPrimitive = 100'000;
 
 // The counters that count the steps of every input-dependent loop along a ray.

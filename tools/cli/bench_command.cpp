@@ -1,5 +1,5 @@
 // isotrace bench: the benchmark suite (tools/cli/bench_workloads.h), the element-count scaling
-// (tools/cli/bench_scaling.h) and the blob direct-vs-tessellated comparison of issues 4 and 9
+// (tools/cli/bench_scaling.h) and the blob direct-vs-tessellated comparison (docs/benchmarks.md)
 // (tools/cli/blob_benchmark.h), reported as a table, JSON and a self-contained HTML page.
 #include <algorithm>
 #include <cstdio>
