@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # reference_test.sh <isotrace binary> <source dir> <scene name>: the statistical regression test of one scene
 # (docs/reference-images.md). Renders scenes/<name>.json at 64 spp with a seed other than its reference's, at the
-# reference's resolution, and runs isotrace diff --ztest against references/<name>.exr (made by
-# tools/make-references): per-pixel and per-block tests, both images' variances, Sidak-corrected. Fails with the
-# z-test's listing; first checks that the scene is the one the reference and references/scene-hashes.txt were
-# made from.
+# reference's resolution, and runs isotrace diff --ztest against out/references/<name>.exr (made here by
+# tools/make-references --cached when missing): per-pixel and per-block tests, both images' variances,
+# Sidak-corrected. Fails with the z-test's listing; first checks that the scene is the one
+# references/scene-hashes.txt was made from.
 set -euo pipefail
 if (($# != 3)); then
   echo "usage: $0 <isotrace binary> <source dir> <scene name>" >&2
@@ -28,10 +28,9 @@ current=$("$cli" info "scenes/$name.json" | sed -n 's/^scene hash *\([0-9a-f]*\)
 [[ $current == "$hash" ]] ||
   fail "scenes/$name.json (or a file it references) changed since its reference was made: scene hash $current," \
        "$hash in $hashes; if the change is meant to change the image, run tools/make-references $name and commit $hashes"
-reference=references/$name.exr
-[[ -f $reference ]] || fail "no $reference: run tools/make-references $name (reference images are not committed)"
-made_from=$(iinfo -v "$reference" | sed -n 's/.*isotrace:scene_hash: *"\{0,1\}\([0-9a-f]*\)"\{0,1\}.*/\1/p' | head -n 1)
-[[ $made_from == "$hash" ]] || fail "$reference was made from another version of the scene (scene hash $made_from): run tools/make-references $name"
+reference=${ISOTRACE_REFERENCE_DIR:-out/references}/$name.exr
+# A fresh clone has no reference images: make this scene's (or remake it if it is from another version).
+ISOTRACE=$cli tools/make-references --cached "$name" || fail "could not make $reference (tools/make-references --cached $name)"
 
 out=${TMPDIR:-/tmp}/isotrace-reference-tests
 mkdir -p "$out"
