@@ -256,9 +256,9 @@ ProbedKeys probe_keys(const Registration& plugin) {
     return keys;
 }
 
-// The section of `markdown` whose heading names `type` in backticks: up to the next heading of the same or a
-// higher level. Empty when there is none.
-std::string section_naming(const std::string& markdown, const std::string& type) {
+// The section of `markdown` whose heading contains `text` (a plugin's section names it in backticks): up to the
+// next heading of the same or a higher level. Empty when there is none.
+std::string section_naming(const std::string& markdown, const std::string& text) {
     std::istringstream lines(markdown);
     std::string section;
     int level = 0;
@@ -268,7 +268,7 @@ std::string section_naming(const std::string& markdown, const std::string& type)
         const std::size_t hashes = in_code ? 0 : line.find_first_not_of('#');
         const bool heading = hashes > 0 && hashes != std::string::npos && hashes <= 6 && line[hashes] == ' ';
         if (heading && level > 0 && int(hashes) <= level) break;
-        if (heading && level == 0 && line.find("`" + type + "`") != std::string::npos) level = int(hashes);
+        if (heading && level == 0 && line.find(text) != std::string::npos) level = int(hashes);
         if (level > 0) section += line + "\n";
     }
     return section;
@@ -305,7 +305,7 @@ TEST_F(PluginReference, EveryPluginHasASectionInItsFolderReadme) {
         const fs::path readme = plugin.folder / "README.md";
         ASSERT_TRUE(fs::exists(readme)) << "\"" << plugin.type << "\" is registered in " << plugin.folder.string()
                                         << ", which has no README.md";
-        EXPECT_FALSE(section_naming(read_text(readme), plugin.type).empty())
+        EXPECT_FALSE(section_naming(read_text(readme), "`" + plugin.type + "`").empty())
             << readme.string() << " has no heading naming `" << plugin.type << "`";
     }
 }
@@ -314,7 +314,7 @@ TEST_F(PluginReference, EveryParameterIsDocumentedInThePluginsSection) {
     for (const Registration& plugin : user_plugins()) {
         if (!probes().count({plugin.registry, plugin.type}) || !slots().count(plugin.registry)) continue;  // reported above
         const fs::path readme = plugin.folder / "README.md";
-        const std::string section = section_naming(read_text(readme), plugin.type);
+        const std::string section = section_naming(read_text(readme), "`" + plugin.type + "`");
         const ProbedKeys keys = probe_keys(plugin);
         EXPECT_FALSE(keys.all.empty()) << plugin.type << ": the probes reported no keys";
         for (const std::string& key : keys.all)
@@ -335,12 +335,23 @@ TEST_F(PluginReference, RegistrationSummariesNameEveryTopLevelParameter) {
     }
 }
 
+TEST_F(PluginReference, ThePluginIndexLinksEveryPlugin) {
+    const std::string index = section_naming(read_text(kSourceDir / "docs" / "scene-format.md"), "# Plugin index");
+    ASSERT_FALSE(index.empty()) << "docs/scene-format.md has no \"Plugin index\" section";
+    for (const Registration& plugin : user_plugins()) {
+        const std::string folder = fs::relative(plugin.folder, kSourceDir).generic_string();
+        const std::regex row("\\| `" + plugin.type + "` \\| \\[[^\\]]*\\]\\(\\.\\./" + folder + "/README\\.md#");
+        EXPECT_TRUE(std::regex_search(index, row))
+            << "docs/scene-format.md's plugin index has no row for `" << plugin.type << "` linking " << folder << "/README.md";
+    }
+}
+
 // The section finder itself: a heading of a deeper level stays in the section, one of the same level ends it.
 TEST(PluginReferenceSection, EndsAtTheNextHeadingOfTheSameLevel) {
     const std::string text = "# A\n## `x`\nabout x\n### detail\nmore\n```\n# not a heading\n```\n## `y`\nabout y\n";
-    EXPECT_EQ(section_naming(text, "x"), "## `x`\nabout x\n### detail\nmore\n```\n# not a heading\n```\n");
-    EXPECT_EQ(section_naming(text, "y"), "## `y`\nabout y\n");
-    EXPECT_EQ(section_naming(text, "z"), "");
+    EXPECT_EQ(section_naming(text, "`x`"), "## `x`\nabout x\n### detail\nmore\n```\n# not a heading\n```\n");
+    EXPECT_EQ(section_naming(text, "`y`"), "## `y`\nabout y\n");
+    EXPECT_EQ(section_naming(text, "`z`"), "");
 }
 
 }  // namespace
