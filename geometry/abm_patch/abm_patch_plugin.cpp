@@ -172,7 +172,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "abm_patch",
                          "attribute-based multi-sided patches (3 to 8 boundary curves each): boundary or patches, "
-                         "curves (named), p, domain, tolerance, max_segments, segments, draw (surface/curves), tube_radius",
+                         "curves (named), p, domain, closure_tolerance, tolerance, max_segments, segments, draw (surface/curves), "
+                         "tube_radius",
                          create)
 
 }  // namespace isotrace

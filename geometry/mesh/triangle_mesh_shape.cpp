@@ -229,7 +229,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 }  // namespace
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "mesh",
-                         "triangle mesh; file (.obj/.ply/.bpt, relative to the scene) or inline positions/triangles; deformers",
+                         "triangle mesh; file (.obj/.ply/.bpt, relative to the scene) or inline positions, triangles, normals, uvs; "
+                         "deformers",
                          create)
 
 }  // namespace isotrace

@@ -27,7 +27,7 @@ private:
 }  // namespace
 
 ISOTRACE_REGISTER_PLUGIN(material_registry, "plastic",
-                         "coated diffuse; reflectance (colour or texture, 0.5), ior (1.5), roughness (0 = smooth)",
+                         "coated diffuse; reflectance (colour or texture, 0.5), ior (1.5), roughness (0 = smooth), roughness_v (= roughness)",
                          [](const SceneNode& node) -> std::unique_ptr<Material> {
                              ColourTexturePtr reflectance =
                                  parse_colour_texture(node, "reflectance", Rgb(0.5f), ColourRange::Reflectance);
