@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 #include "renderer/colour/chromaticities.h"
@@ -23,6 +24,7 @@
 #include "tools/cli/render_checkpoint.h"
 #include "tools/cli/render_distribution.h"
 #include "tools/cli/render_statistics.h"
+#include "tools/cli/render_warnings.h"
 #include "tools/cli/thread_limit.h"
 #include "tools/cli/memory_limit_option.h"
 
@@ -79,6 +81,7 @@ struct RenderArguments {
     std::string seed;         // parsed by parse_seed: CLI11 would wrap "-1" and clamp 2^64
     std::string aovs;
     std::string stats_json;
+    StatisticsDetail stats = StatisticsDetail::Short;
     std::string time_budget;  // parsed by parse_seconds: CLI11 accepts nan
     std::string max_memory;
     std::string max_scene_size;
@@ -130,9 +133,8 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
 
 // Every output is attempted even when one fails (a full disk may still take a small PNG); each failure is
 // reported, and any failure ends the command with a failure.
-void write_outputs(const RenderArguments& args, const LoadedScene& scene, const RenderResult& result,
+void write_outputs(const RenderArguments& args, const LoadedScene& scene, const ImageBuffer& image,
                    const ImageMetadata& metadata) {
-    const ImageBuffer image = result.film->resolve();
     const ImageWindow window{scene.film.raster, scene.film.crop.x0, scene.film.crop.y0};
     int failures = 0;
     for (const std::string& output : args.outputs) {
@@ -317,6 +319,9 @@ int run_render(const RenderArguments& args) {
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count(),
                      resume ? (", resuming at " + std::to_string(done.min) + " spp").c_str() : "");
     }
+    // Warnings print even with --quiet: they say that the image is not what was asked for.
+    if (const std::string warning = light_left_out_warning(*scene); !warning.empty())
+        std::fprintf(stderr, "isotrace: warning: %s\n", warning.c_str());
 
     // A reference render prints its error estimate at each pass boundary instead of drawing the bar.
     const bool show_progress = !args.quiet && stderr_is_terminal() && !reference.enabled;
@@ -353,14 +358,20 @@ int run_render(const RenderArguments& args) {
     if (reference.enabled)
         add_reference_metadata(metadata, reference, {scene->film.raster, scene->seed, options.spp, time_budget}, *scene,
                                result);
-    write_outputs(args, *scene, result, metadata);
+    const ImageBuffer image = result.film->resolve();
+    write_outputs(args, *scene, image, metadata);
     times.write = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
 
-    nlohmann::json stats = render_statistics(*scene, result, counts, times, threads);
+    const BeautyCheck beauty = check_beauty(image);
+    nlohmann::json stats = render_statistics(*scene, result, counts, times, threads, beauty);
     add_rank_statistics(stats, ranks);
     if (!args.stats_json.empty()) write_text_output(args.stats_json, stats.dump(2) + "\n");
+    for (const std::string& warning : beauty_warnings(beauty))
+        std::fprintf(stderr, "isotrace: warning: %s\n", warning.c_str());
+    const std::string unmet_target = unmet_target_warning(reference, result);
+    if (!unmet_target.empty()) std::fprintf(stderr, "isotrace: warning: %s\n", unmet_target.c_str());
     if (!args.quiet) {
-        std::fputs(format_statistics(stats).c_str(), stderr);
+        std::fputs(format_statistics(stats, args.stats).c_str(), stderr);
         for (const std::string& output : args.outputs) std::fprintf(stderr, "wrote %s\n", output.c_str());
         if (!checkpoint_path.empty() && unfinished && !checkpoint_lost)
             std::fprintf(stderr, "wrote checkpoint %s (continue with --resume %s)\n", checkpoint_path.c_str(),
@@ -377,7 +388,7 @@ int run_render(const RenderArguments& args) {
                      stop_signal_name(signal_number), result.partial ? "partial" : "completed-pass");
         return 128 + signal_number;
     }
-    return kExitOk;
+    return unmet_target.empty() ? kExitOk : kExitNotMet;
 }
 
 }  // namespace
@@ -388,34 +399,51 @@ CommandRunner add_render_command(CLI::App& app) {
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
     command->add_option("-o,--output", args->outputs,
                         "Output image; repeat for several. .exr: scene-linear with AOVs and metadata; "
-                        ".png/.jpg/.tif: display-referred through the OCIO view. Default: <scene name>.exr");
+                        ".png/.jpg/.tif: display-referred through the OCIO view. Default: <scene name>.exr")
+        ->type_name("PATH");
     command->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1, kMaxSamplesPerPixel));
-    command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
+    command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT, each side 1 to 65536 (overrides the scene)")
+        ->type_name("WIDTHxHEIGHT");
     add_threads_option(*command, args->threads);
-    command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)");
+    command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)")->type_name("UINT64");
     command->add_option("--aov", args->aovs,
                         "Comma-separated AOVs to add to the EXR: albedo, normal, depth, position, object_id, "
-                        "primitive_id, sample_count, variance, or all");
-    command->add_option("--stats-json", args->stats_json, "Write end-of-render statistics as JSON to this file (- for standard output)");
+                        "primitive_id, sample_count, variance, or all")
+        ->type_name("LIST");
+    command->add_option("--stats-json", args->stats_json,
+                        "Write every end-of-render statistic as JSON to this file (- for standard output)")
+        ->type_name("PATH");
+    const std::map<std::string, StatisticsDetail> stats_levels{
+        {"none", StatisticsDetail::None}, {"short", StatisticsDetail::Short}, {"full", StatisticsDetail::Full}};
+    command->add_option("--stats", args->stats,
+                        "Statistics printed after the render: short (default: times, speed, NaNs, memory), full "
+                        "(also rays, geometry and every work counter) or none")
+        ->transform(CLI::CheckedTransformer(stats_levels, CLI::ignore_case).description(""))
+        ->type_name("short|full|none");
     command->add_option("--time", args->time_budget,
                         "Time budget in seconds: the render stops within a sample of it, mid-pass if need be "
-                        "(the image is then marked partial)");
+                        "(the image is then marked partial)")
+        ->type_name("SECONDS>0");
     command->add_option("--checkpoint", args->checkpoint,
                         "Save the render's state to this file periodically, when interrupted (SIGINT, SIGTERM) and "
-                        "when the time budget ends it");
+                        "when the time budget ends it")
+        ->type_name("PATH");
     command->add_option("--checkpoint-every", args->checkpoint_every,
-                        "Seconds of rendering between checkpoints (default: 300)");
+                        "Seconds of rendering between checkpoints (default: 300)")
+        ->type_name("SECONDS>=0.05");
     command->add_option("--resume", args->resume,
                         "Continue the render saved in this checkpoint (same scene; the final image is bit-identical "
                         "to an uninterrupted render); goes on checkpointing to it unless --checkpoint says otherwise")
+        ->type_name("PATH")
         ->check(CLI::ExistingFile);
     add_reference_options(*command, args->reference, args->target_error);
     add_max_memory_option(*command, args->max_memory);
     command->add_option("--max-scene-size", args->max_scene_size,
-                        "Refuse scene files larger than this (bytes with K/M/G; default: 64M)");
+                        "Refuse scene files larger than this (bytes with K/M/G; default: 64M)")
+        ->type_name("SIZE");
     command->add_option("--tile-size", args->tile_size, "Tile edge in pixels (does not change the image)")
         ->check(CLI::Range(1, 4096));
-    command->add_flag("-q,--quiet", args->quiet, "No progress bar or statistics on stderr");
+    command->add_flag("-q,--quiet", args->quiet, "No progress bar or statistics on stderr (warnings and errors still print)");
     add_distribution_options(*command, args->distribution);
     return [args] {
         if (args->outputs.empty())
