@@ -458,6 +458,25 @@ wait_for_file() {
   done
 }
 
+# --write-every writes the outputs between passes (whole files, marked "in progress") while the render goes on;
+# the final write replaces them.
+case_write_every() {
+  start_render "$work/stderr" "$cornell" --res 64x64 --spp 16777216 --threads 2 --write-every 0.1 \
+    -o "$work/a.exr" -o "$work/a.png"
+  wait_for_file "$work/a.png" || { show_output; fail "no interim output while rendering"; }
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == "in progress" ]] ||
+    fail "the interim EXR is marked \"$(exr_attribute "$work/a.exr" stopped)\", not \"in progress\""
+  kill -INT "$pid"
+  wait_exit 20
+  ((status == 130)) || { show_output; fail "exit code $status after SIGINT, expected 130"; }
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == "interrupted" ]] || fail "the final write did not replace the interim one"
+  expect_no_partial_files "$work"
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 --write-every 0.01 -o "$work/b.exr"
+  expect_in "$work/stderr" "--write-every: must be at least 0.05 s"
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 --write-every nan -o "$work/b.exr"
+  expect_no_file "$work/b.exr"
+}
+
 # checkpoint_number <checkpoint> <field>: a count from the checkpoint's metadata (JSON at the start of the file:
 # completed_spp, samples), 0 while there is no checkpoint. Every checkpoint is renamed over the previous one
 # complete, so the file read is always a whole one.

@@ -122,10 +122,12 @@ CommandRunner add_depth_command(CLI::App& app) {
     command->add_option("--near", args->near, "Depth mapped to grey 255 (default: the nearest hit)");
     command->add_option("--far", args->far, "Depth mapped to grey 0 (default: the farthest hit)");
     command->add_flag("--near-dark", args->near_dark,
-                      "Read the range image's Z as the depth itself: near = black (0), far and background = white (255)");
+                      "Read the range image's Z as the depth itself: near = black (0), far and background = white "
+                      "(255)");
     command->add_option("--exr", args->exr, "Also write the raw view depth Z (world units, inf = no hit) as EXR")
         ->type_name("PATH");
-    command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT, each side 1 to 65536 (overrides the scene)")
+    command->add_option("--res", args->resolution,
+                        "Resolution WIDTHxHEIGHT, each side 1 to 65536 (overrides the scene)")
         ->type_name("WIDTHxHEIGHT");
     add_max_memory_option(*command, args->max_memory);
     add_threads_option(*command, args->threads);

@@ -94,7 +94,8 @@ CommandRunner add_info_command(CLI::App& app) {
     auto path = std::make_shared<std::string>();
     auto plugins = std::make_shared<bool>(false);
     auto views = std::make_shared<bool>(false);
-    CLI::App* command = app.add_subcommand("info", "Validate a scene and print a summary, or list the plugins or the OCIO views");
+    CLI::App* command =
+        app.add_subcommand("info", "Validate a scene and print a summary, or list the plugins or the OCIO views");
     command->add_option("scene", *path, "Scene file (JSON)")->check(CLI::ExistingFile);
     command->add_flag("--plugins", *plugins, "List every registered plugin type");
     command->add_flag("--views", *views,

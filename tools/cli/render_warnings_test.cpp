@@ -90,7 +90,8 @@ TEST(RenderWarnings, ThePreviewOfAnEnvironmentNamesItAndSuggestsThePathTracer) {
 }
 
 TEST(RenderWarnings, ThePreviewCountsEmittersThatCannotBeSampledAsLights) {
-    const std::string warning = warning_for(scene_with("preview", kPoint, std::string(kSampledEmitter) + kUnsampledEmitter));
+    const std::string warning =
+        warning_for(scene_with("preview", kPoint, std::string(kSampledEmitter) + kUnsampledEmitter));
     EXPECT_NE(warning.find("the light that 1 emissive object(s) cast on other surfaces"), std::string::npos) << warning;
     EXPECT_EQ(warning.find("environment"), std::string::npos) << warning;
 }
