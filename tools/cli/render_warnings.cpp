@@ -14,7 +14,10 @@ BeautyCheck check_beauty(const ImageBuffer& image) {
     }
     const std::size_t stride = image.channels.size();
     check.pixels = std::uint64_t(image.width) * std::uint64_t(image.height);
-    if (stride == 0) return check;
+    if (beauty.size() != 3) {  // no beauty to judge
+        check.all_black = false;
+        return check;
+    }
     for (std::size_t start = 0; start + stride <= image.pixels.size(); start += stride) {
         bool finite = true, black = true;
         for (std::size_t channel : beauty) {

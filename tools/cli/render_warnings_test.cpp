@@ -56,6 +56,14 @@ TEST(RenderWarnings, NonFinitePixelsAloneAreNotAlsoCalledBlack) {
     EXPECT_EQ(beauty_warnings(check_beauty(image_of({{kNaN, 0, 0}}))).size(), 1u);
 }
 
+TEST(RenderWarnings, AnImageWithoutBeautyChannelsIsNotJudged) {
+    ImageBuffer depth_only;
+    depth_only.width = depth_only.height = 2;
+    depth_only.channels = {"Z"};
+    depth_only.pixels = {0, 0, 0, 0};
+    EXPECT_TRUE(beauty_warnings(check_beauty(depth_only)).empty());
+}
+
 std::string scene_with(const std::string& integrator, const std::string& lights, const std::string& emitter) {
     return R"({"isotrace": 1, "film": {"resolution": [4, 4]},
   "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
