@@ -1451,7 +1451,8 @@ case_reference_target_not_met() {
 }
 
 # Without an integrator a scene renders with the path tracer. The preview integrator warns about the light it
-# leaves out (an environment seen by rays leaving the scene, emitters it cannot sample), also with --quiet.
+# leaves out (an environment seen by rays leaving the scene, emitters it cannot sample), also with --quiet and in
+# isotrace info.
 case_default_integrator_and_preview_warning() {
   write_base_scene "$work/scene.json"
   cli_expect 0 render "$work/scene.json" --quiet -o "$work/a.exr"
@@ -1469,6 +1470,8 @@ case_default_integrator_and_preview_warning() {
   expect_in "$work/stderr" "isotrace: warning: the preview integrator leaves out the environment"
   expect_in "$work/stderr" 'use "integrator": {"type": "path"}'
   (($(grep -c warning "$work/stderr") == 1)) || fail "more than one warning: $(cat "$work/stderr")"
+  cli_expect 0 info "$work/environment.json"
+  expect_in "$work/stderr" "isotrace: warning: the preview integrator leaves out the environment"
 }
 
 # A black image is warned about; the statistics count the pixels that are not finite, and print a short summary

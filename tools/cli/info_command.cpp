@@ -12,6 +12,7 @@
 #include "renderer/scene/loaded_scene.h"
 #include "renderer/core/printable.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/render_warnings.h"
 #include "tools/cli/scene_fingerprint.h"
 
 namespace isotrace::cli {
@@ -72,6 +73,8 @@ int run_info(const std::string& path) {
                 scene->referenced_files.size());
     std::printf("camera       %s\n", scene->camera_type.c_str());
     std::printf("integrator   %s\n", scene->integrator_type.c_str());
+    if (const std::string warning = light_left_out_warning(*scene); !warning.empty())
+        std::fprintf(stderr, "isotrace: warning: %s\n", warning.c_str());
     std::printf("sampler      %s, seed %llu\n", scene->sampler_type.c_str(), (unsigned long long)scene->seed);
     std::printf("colour       working space %s, OCIO config %s\n", scene->colours->working_space().c_str(),
                 scene->colours->config_path().c_str());
