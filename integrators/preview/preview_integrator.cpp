@@ -52,8 +52,33 @@ Rgb PreviewIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene,
     return result;
 }
 
+namespace {
+
+bool emits(const SceneObject& object) {
+    if (object.material && object.material->is_emissive()) return true;
+    for (const Material* part : object.part_materials)
+        if (part && part->is_emissive()) return true;
+    return false;
+}
+
+}  // namespace
+
+std::vector<std::string> PreviewIntegrator::light_left_out(const RenderScene& scene) const {
+    std::vector<std::string> left_out;
+    if (!scene.infinite_lights().empty())
+        left_out.push_back("the environment as seen by rays that leave the scene (they show the uniform background; "
+                           "only the environment's direct light is kept)");
+    std::size_t unlit_by = 0;
+    for (const SceneObject& object : scene.objects())
+        if (emits(object) && !object.area_light) ++unlit_by;
+    if (unlit_by > 0)
+        left_out.push_back("the light that " + std::to_string(unlit_by) +
+                           " emissive object(s) cast on other surfaces (they cannot be sampled as lights)");
+    return left_out;
+}
+
 ISOTRACE_REGISTER_PLUGIN(integrator_registry, "preview",
-                         "direct light from point/directional lights + ambient occlusion under a uniform sky; "
+                         "direct light from every light, no bounces, + ambient occlusion under a uniform sky; "
                          "ambient, background, ambient_samples, ambient_distance",
                          [](const SceneNode& node) -> std::unique_ptr<Integrator> {
                              PreviewSettings settings;

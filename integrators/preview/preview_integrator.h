@@ -19,6 +19,9 @@ public:
     explicit PreviewIntegrator(const PreviewSettings& settings) : settings_(settings) {}
     Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                  PrimaryHitRecord& primary) const override;
+    // An environment shows only as light (rays leaving the scene see the uniform background), and emissive objects
+    // that are not sampled as area lights light nothing else: the preview finds light only by sampling lights.
+    std::vector<std::string> light_left_out(const RenderScene& scene) const override;
 
 private:
     PreviewSettings settings_;

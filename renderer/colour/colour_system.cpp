@@ -221,6 +221,8 @@ void ColourSystem::to_display(float* pixels, std::size_t pixel_count, int channe
     processor->apply(image);
 }
 
+std::vector<std::string> ColourSystem::displays() const { return state_->displays(); }
+
 std::string ColourSystem::default_display() const { return state_->config->getDefaultDisplay(); }
 
 std::string ColourSystem::default_view(const std::string& display) const {

@@ -42,6 +42,7 @@ public:
     void to_display(float* pixels, std::size_t pixel_count, int channels, const std::string& display = {},
                     const std::string& view = {}) const;
 
+    std::vector<std::string> displays() const;
     std::string default_display() const;
     std::string default_view(const std::string& display = {}) const;  // empty = default display
     std::vector<std::string> views(const std::string& display = {}) const;

@@ -111,6 +111,7 @@ TEST(ColourSystem, LoadsTheShippedConfig) {
     const ColourSystem colour(shipped_config());
     EXPECT_EQ(colour.working_space(), kAcescg);
     EXPECT_EQ(colour.default_display(), "sRGB");
+    EXPECT_EQ(colour.displays(), std::vector<std::string>{"sRGB"});
     EXPECT_EQ(colour.default_view(), kSdrVideoView);
     EXPECT_EQ(colour.views(), (std::vector<std::string>{kSdrVideoView, kUntonemappedView}));
     for (const char* name : {"ACES2065-1", "ACEScg", "Linear Rec.709 (sRGB)", "sRGB - Texture", "Raw"})

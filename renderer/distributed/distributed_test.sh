@@ -176,6 +176,12 @@ case_bad_input() {
   expect_status 2 "--time under MPI"
   expect_in_stderr "--time"
   expect_no_outputs
+  # Nor interim outputs: the last checkpoint of a stopped job must be the checkpoint.
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --res 16x16 --write-every 1 --quiet \
+    -o "$work/a.exr"
+  expect_status 2 "--write-every under MPI"
+  expect_in_stderr "--write-every: is not available in a distributed render"
+  expect_no_outputs
 }
 
 case_bench() {

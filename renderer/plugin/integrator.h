@@ -3,6 +3,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "renderer/core/ray.h"
 #include "renderer/math/rgb.h"
@@ -64,6 +65,12 @@ public:
     }
     // Settings worth recording in the image metadata ("isotrace:integrator:<key>").
     virtual std::map<std::string, std::string> settings() const { return {}; }
+    // The light of `scene` this integrator leaves out of the image, one phrase each, so that the CLI can warn that
+    // the picture is not what the scene describes. Empty (the default) when it renders all of it.
+    virtual std::vector<std::string> light_left_out(const RenderScene& scene) const {
+        (void)scene;
+        return {};
+    }
 };
 
 Registry<Integrator>& integrator_registry();

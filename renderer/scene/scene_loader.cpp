@@ -275,8 +275,8 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     loaded->sampler = sampler_registry().create(sampler, loaded->seed, "sobol");
 
     const SceneNode integrator = defaults.object_or_defaults(root, "integrator");
-    loaded->integrator_type = integrator.string_or("type", "preview");
-    loaded->integrator = integrator_registry().create(integrator, "preview");
+    loaded->integrator_type = integrator.string_or("type", "path");
+    loaded->integrator = integrator_registry().create(integrator, "path");
 
     loaded->scene = std::make_unique<RenderScene>();
     load_content(root, overrides, *loaded->scene);

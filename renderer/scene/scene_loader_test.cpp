@@ -71,7 +71,7 @@ TEST_F(LoadScene, MinimalSceneUsesTheDefaults) {
     EXPECT_EQ(loaded->camera_type, "perspective");
     EXPECT_EQ(loaded->filter_type, "gaussian");
     EXPECT_EQ(loaded->sampler_type, "sobol");
-    EXPECT_EQ(loaded->integrator_type, "preview");
+    EXPECT_EQ(loaded->integrator_type, "path");
     EXPECT_EQ(loaded->description, "");
     EXPECT_EQ(loaded->display, "");
     EXPECT_EQ(loaded->view, "");

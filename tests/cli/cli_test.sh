@@ -130,9 +130,45 @@ case_info_help() {
   expect_in "$work/stdout" "--plugins" "info --help output"
 }
 
-case_no_subcommand() {
-  cli_expect 2
-  [[ -s "$work/stderr" || -s "$work/stdout" ]] || fail "no usage message"
+case_no_subcommand() {  # plain isotrace: a short usage, every command with what it does; exit 0
+  cli_expect 0
+  local command
+  for command in "render   Render a scene to image files" "info     Validate a scene and print a summary" "depth    Write a range image" \
+    "bench    Time fixed workloads" "mesh     Polygonise" "(alias: polygonize)" "deform   Apply mesh deformers" \
+    "diff     Compare an image with a reference" "isotrace COMMAND --help"; do
+    expect_in "$work/stdout" "$command" "the usage"
+  done
+  (($(wc -l <"$work/stdout") <= 15)) || fail "the usage is not short: $(wc -l <"$work/stdout") lines"
+}
+
+# Every option that takes a number shows its type and range in --help, also those parsed as text on purpose.
+case_help_shows_types() {
+  cli_expect 0 render --help
+  local entry
+  for entry in "--spp INT:INT in [1 - 16777216]" "--threads INT:INT in [0 - 4096]" "--seed UINT64" \
+    "--time SECONDS>0" "--checkpoint-every SECONDS>=0.05" "--target-error NUMBER>0" "--res WIDTHxHEIGHT" \
+    "--tile-size INT:INT in [1 - 4096]" "--max-memory SIZE" "--max-scene-size SIZE" "--stats short|full|none"; do
+    expect_in "$work/stdout" "$entry" "render --help"
+  done
+  grep -E -- '--(seed|time|checkpoint-every|target-error|res|max-scene-size) TEXT' "$work/stdout" &&
+    fail "an option parsed as text shows TEXT"
+  cli_expect 0 depth --help
+  expect_in "$work/stdout" "--threads INT:INT in [0 - 4096]" "depth --help"
+  expect_in "$work/stdout" "--res WIDTHxHEIGHT" "depth --help"
+  cli_expect 0 mesh --help
+  expect_in "$work/stdout" "--depth INT:INT in [1 - 10]" "mesh --help"
+  expect_in "$work/stdout" "--simplify DISTANCE>=0" "mesh --help"
+  cli_expect 0 bench --help
+  expect_in "$work/stdout" "--resolution WIDTHxHEIGHT|scene" "bench --help"
+  cli_expect 0 diff --help
+  expect_in "$work/stdout" "--fail METRIC=VALUE" "diff --help"
+  expect_in "$work/stdout" "--ppd FLOAT:FLOAT in [1 - 1000]" "diff --help"
+  # Help texts describe, they do not point at work logs or equation numbers.
+  for command in render info depth bench mesh deform diff; do
+    cli_expect 0 "$command" --help
+    grep -E -i 'eq\. ?[0-9]|seed [0-9]{3}|issue|session' "$work/stdout" && fail "$command --help cites a work log"
+  done
+  return 0
 }
 
 case_determinism_threads() {
@@ -157,7 +193,7 @@ with open(sys.argv[1]) as f:
     stats = json.load(f)
 problems = []
 for key in ["rays_total", "render_seconds", "build_seconds", "mrays_per_second", "threads", "spp",
-            "nan_samples", "geometry"]:
+            "nan_samples", "non_finite_pixels", "peak_memory_bytes", "geometry", "counters"]:
     if key not in stats:
         problems.append("missing key " + key)
 if stats.get("threads") != 2: problems.append("threads is %r, expected 2" % stats.get("threads"))
@@ -420,6 +456,25 @@ wait_for_file() {
     kill -0 "$pid" 2>/dev/null || return 1
     sleep 0.01
   done
+}
+
+# --write-every writes the outputs between passes (whole files, marked "in progress") while the render goes on;
+# the final write replaces them.
+case_write_every() {
+  start_render "$work/stderr" "$cornell" --res 64x64 --spp 16777216 --threads 2 --write-every 0.1 \
+    -o "$work/a.exr" -o "$work/a.png"
+  wait_for_file "$work/a.png" || { show_output; fail "no interim output while rendering"; }
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == "in progress" ]] ||
+    fail "the interim EXR is marked \"$(exr_attribute "$work/a.exr" stopped)\", not \"in progress\""
+  kill -INT "$pid"
+  wait_exit 20
+  ((status == 130)) || { show_output; fail "exit code $status after SIGINT, expected 130"; }
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == "interrupted" ]] || fail "the final write did not replace the interim one"
+  expect_no_partial_files "$work"
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 --write-every 0.01 -o "$work/b.exr"
+  expect_in "$work/stderr" "--write-every: must be at least 0.05 s"
+  cli_expect 2 render "$cornell" --res 16x16 --spp 1 --write-every nan -o "$work/b.exr"
+  expect_no_file "$work/b.exr"
 }
 
 # checkpoint_number <checkpoint> <field>: a count from the checkpoint's metadata (JSON at the start of the file:
@@ -1222,7 +1277,7 @@ case_diff_identical() {  # an image against itself: 0 for every error, inf dB, S
   expect_in "$work/stdout" "LDR-FLIP" stdout
 }
 
-case_diff_renders() {  # two renders at different spp differ; thresholds gate with exit 1; an error map is written
+case_diff_renders() {  # two renders at different spp differ; thresholds gate with exit 3; an error map is written
   render_small -o "$work/a.exr" --seed 1
   cli_expect 0 render "$cornell" --res 64x64 --spp 32 --seed 2 --quiet -o "$work/b.exr"
   cli_expect 0 diff "$work/b.exr" "$work/a.exr" --json "$work/d.json" --error-map "$work/map.png"
@@ -1233,9 +1288,9 @@ case_diff_renders() {  # two renders at different spp differ; thresholds gate wi
   done
   [[ $(iinfo "$work/map.png") == *"64 x   64, 3 channel, uint8 png"* ]] || fail "error map: $(iinfo "$work/map.png")"
   expect_in "$work/d.json" '"mode": "hdr"' d.json
-  cli_expect 1 diff "$work/b.exr" "$work/a.exr" --fail flip=0.001
+  cli_expect 3 diff "$work/b.exr" "$work/a.exr" --fail flip=0.001
   expect_in "$work/stderr" "threshold broken: flip" stderr
-  cli_expect 1 diff "$work/b.exr" "$work/a.exr" --fail psnr=200
+  cli_expect 3 diff "$work/b.exr" "$work/a.exr" --fail psnr=200
   expect_in "$work/stderr" "threshold broken: psnr" stderr
   cli_expect 0 diff "$work/b.exr" "$work/a.exr" --fail flip=0.99 --fail psnr=1 --error-map "$work/ssim.png" \
     --error-map-metric ssim
@@ -1294,11 +1349,11 @@ case_diff_ztest() {  # an unbiased 64-spp render passes against a 1024-spp refer
   cli_expect 0 diff --ztest "$work/ref.exr" "$work/test.exr" --json "$work/z.json"
   expect_in "$work/stdout" "): pass" stdout
   expect_in "$work/z.json" '"passed": true' z.json
-  cli_expect 1 diff --ztest "$work/ref.exr" "$work/biased.exr" --error-map "$work/z.png"
+  cli_expect 3 diff --ztest "$work/ref.exr" "$work/biased.exr" --error-map "$work/z.png"
   expect_in "$work/stdout" "): FAIL" stdout
   [[ -s "$work/z.png" ]] || fail "no z-test error map"
   # The test's sample count comes from its isotrace:spp metadata; a wrong --test-spp changes the verdict.
-  cli_expect 1 diff --ztest "$work/ref.exr" "$work/test.exr" --test-spp 100000
+  cli_expect 3 diff --ztest "$work/ref.exr" "$work/test.exr" --test-spp 100000
   cli_expect 2 diff --ztest "$work/ref.exr" "$work/test.exr" --fail flip=0.1
 }
 
@@ -1348,7 +1403,7 @@ case_reference_mode() {
 case_reference_resume() {
   write_two_balls_scene "$work/scene.json" 0.5
   cli_expect 0 render "$work/scene.json" --reference --target-error 0.01 --seed 3 --quiet -o "$work/a.exr"
-  cli_expect 0 render "$work/scene.json" --reference --target-error 0.01 --seed 3 --time 0.05 --quiet \
+  cli_expect 3 render "$work/scene.json" --reference --target-error 0.01 --seed 3 --time 0.05 --quiet \
     -o "$work/b.exr" --checkpoint "$work/ck.bin"
   [[ -s "$work/ck.bin" ]] || fail "no checkpoint after the time budget"
   cli_expect 2 render "$work/scene.json" --resume "$work/ck.bin" --target-error 0.5 --quiet -o "$work/b.exr"
@@ -1375,6 +1430,92 @@ case_reference_bad_input() {
   expect_in "$work/stderr" "not of a reference render"
   expect_no_file "$work/a.exr"
   expect_no_file "$work/a.png"
+}
+
+# A reference render whose sample limit or time budget ends it before its target error still writes its images,
+# warns with the error reached and the target (also with --quiet), and exits 3.
+case_reference_target_not_met() {
+  write_two_balls_scene "$work/scene.json" 0.5
+  cli_expect 3 render "$work/scene.json" --reference --target-error 0.0001 --spp 64 --quiet -o "$work/a.exr"
+  expect_in "$work/stderr" "isotrace: warning: the target error was not reached: estimated relative error "
+  expect_in "$work/stderr" "at 64 spp, target 0.0001 (the sample limit --spp was reached)"
+  [[ "$(exr_attribute "$work/a.exr" stopped)" == "complete" ]] || fail "the image was not written whole"
+  cli_expect 3 render "$work/scene.json" --reference --target-error 0.0001 --spp 16 --quiet -o "$work/b.exr"
+  expect_in "$work/stderr" "the sample limit came before 64 spp, where the target is first checked"
+  cli_expect 3 render "$work/scene.json" --reference --target-error 0.0001 --time 0.2 --quiet -o "$work/c.exr"
+  expect_in "$work/stderr" "(the time budget --time ran out)"
+  [[ -s "$work/c.exr" ]] || fail "no image after the time budget"
+  # A target the budget reaches: exit 0, no warning.
+  cli_expect 0 render "$work/scene.json" --reference --target-error 0.5 --spp 64 --quiet -o "$work/d.exr"
+  [[ ! -s "$work/stderr" ]] || fail "a reached target printed: $(cat "$work/stderr")"
+}
+
+# Without an integrator a scene renders with the path tracer. The preview integrator warns about the light it
+# leaves out (an environment seen by rays leaving the scene, emitters it cannot sample), also with --quiet and in
+# isotrace info.
+case_default_integrator_and_preview_warning() {
+  write_base_scene "$work/scene.json"
+  cli_expect 0 render "$work/scene.json" --quiet -o "$work/a.exr"
+  [[ "$(exr_attribute "$work/a.exr" integrator)" == "path" ]] ||
+    fail "a scene without integrator rendered with $(exr_attribute "$work/a.exr" integrator)"
+  cli_expect 0 info "$work/scene.json"
+  expect_in "$work/stdout" "integrator   path"
+  sed 's/^  "film": .*/  "film": { "resolution": [16, 16], "spp": 1 }, "integrator": { "type": "preview" },/' \
+    "$work/scene.json" >"$work/preview.json"
+  cli_expect 0 render "$work/preview.json" --quiet -o "$work/b.exr"
+  [[ ! -s "$work/stderr" ]] || fail "the preview of a point light warned: $(cat "$work/stderr")"
+  sed 's/"type": "point", "position": \[0, 3, -3\], "intensity"/"type": "environment", "radiance"/' \
+    "$work/preview.json" >"$work/environment.json"
+  cli_expect 0 render "$work/environment.json" --quiet -o "$work/c.exr"
+  expect_in "$work/stderr" "isotrace: warning: the preview integrator leaves out the environment"
+  expect_in "$work/stderr" 'use "integrator": {"type": "path"}'
+  (($(grep -c warning "$work/stderr") == 1)) || fail "more than one warning: $(cat "$work/stderr")"
+  cli_expect 0 info "$work/environment.json"
+  expect_in "$work/stderr" "isotrace: warning: the preview integrator leaves out the environment"
+}
+
+# A black image is warned about; the statistics count the pixels that are not finite, and print a short summary
+# unless --stats full asks for every counter.
+case_image_warnings_and_statistics() {
+  write_base_scene "$work/scene.json"
+  sed 's/^  "lights": .*/  "lights": [],/' "$work/scene.json" >"$work/dark.json"
+  cli_expect 0 render "$work/dark.json" --quiet -o "$work/a.exr" --stats-json "$work/s.json"
+  expect_in "$work/stderr" "isotrace: warning: the image is black everywhere"
+  expect_in "$work/s.json" '"non_finite_pixels": 0'
+  expect_in "$work/s.json" '"peak_memory_bytes": '
+  cli_expect 0 render "$work/scene.json" -o "$work/b.exr"
+  grep -q warning "$work/stderr" && fail "a lit image was warned about: $(cat "$work/stderr")"
+  local scene=scenes/superquadric_gallery.json
+  cli_expect 0 render "$scene" --res 24x16 --spp 1 -o "$work/c.exr" --stats-json "$work/full.json"
+  for entry in "statistics:" "  time      parse" "samples/s" "Mrays/s" "NaN/Inf   0 samples discarded, 0 pixels" \
+    "MiB peak resident"; do
+    expect_in "$work/stderr" "$entry" "the short statistics"
+  done
+  grep -q -e halvings -e "geometry  type" "$work/stderr" && fail "the short statistics list the work counters"
+  expect_in "$work/full.json" '"superquadric.halvings"' "--stats-json"
+  cli_expect 0 render "$scene" --res 24x16 --spp 1 -o "$work/c.exr" --stats full
+  expect_in "$work/stderr" "halvings" "--stats full"
+  expect_in "$work/stderr" "geometry  type" "--stats full"
+  cli_expect 0 render "$scene" --res 24x16 --spp 1 -o "$work/c.exr" --stats none
+  grep -q "statistics:" "$work/stderr" && fail "--stats none printed statistics"
+  cli_expect 0 render "$scene" --res 24x16 --spp 1 -o "$work/c.exr" --stats full --quiet
+  [[ ! -s "$work/stderr" ]] || fail "--quiet printed: $(cat "$work/stderr")"
+  cli_expect 2 render "$scene" --res 24x16 --spp 1 -o "$work/c.exr" --stats most
+}
+
+# info --views: the OCIO config's displays and views, its defaults marked, and the pair a scene uses.
+case_info_views() {
+  cli_expect 0 info --views
+  expect_in "$work/stdout" "display      sRGB  (default)"
+  expect_in "$work/stdout" "  view       ACES 1.0 - SDR Video  (default)"
+  expect_in "$work/stdout" "  view       Un-tone-mapped"
+  write_base_scene "$work/scene.json"
+  sed 's/^  "film": { "resolution": \[16, 16\], "spp": 1 },/  "film": { "resolution": [16, 16], "spp": 1, "view": "Un-tone-mapped" },/' \
+    "$work/scene.json" >"$work/view.json"
+  cli_expect 0 info "$work/view.json" --views
+  expect_in "$work/stdout" "display      sRGB  (default, the scene's)"
+  expect_in "$work/stdout" "  view       Un-tone-mapped  (the scene's)"
+  expect_in "$work/stdout" "  view       ACES 1.0 - SDR Video  (default)"
 }
 
 # ---- outputs that replace only what is theirs; inputs that are regular files -----------------------------

@@ -176,10 +176,9 @@ int run_bench(BenchArguments args) {
 
 CommandRunner add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArguments>();
-    CLI::App* command = app.add_subcommand(
-        "bench",
-        "Benchmark suite: primary, shadow and bounce rays, the path tracer and the polygoniser on fixed scenes, "
-        "with thread and element-count scaling (run from the source tree; --list names the workloads)");
+    CLI::App* command = app.add_subcommand("bench", "Time fixed workloads (rays, path tracing, polygonising)");
+    command->footer("Primary, shadow and bounce rays, the path tracer and the polygoniser on fixed scenes, with thread "
+                    "and element-count scaling. Run from the source tree; --list names the workloads.");
     command->add_option("scenes", args->scenes,
                         "Scene files with blob groups for the blobs/direct_vs_tessellated workload (default: "
                         "scenes/blobs_1k, _10k, _100k)");
@@ -193,8 +192,10 @@ CommandRunner add_bench_command(CLI::App& app) {
                                ->check(CLI::Range(1, 1000));
     args->resolution_option =
         command->add_option("--resolution", args->resolution, "WIDTHxHEIGHT of the ray grid and image, or \"scene\"")
+            ->type_name("WIDTHxHEIGHT|scene")
             ->capture_default_str();
     command->add_option("--filter", args->filter, "Run only the workloads whose names match this regular expression")
+        ->type_name("REGEX")
         ->capture_default_str();
     command->add_flag("--quick", args->quick,
                       "1 run after the warm-up, 160x90, 1 spp, smaller blob scenes: the suite in under a minute");
@@ -207,8 +208,9 @@ CommandRunner add_bench_command(CLI::App& app) {
             ->capture_default_str()
             ->check(CLI::Range(std::size_t(1000), std::size_t(100'000'000)));
     args->tessellation.add_to(*command);
-    command->add_option("--json", args->json, "Also write the results as JSON to this file");
-    command->add_option("--report", args->report, "Also write an HTML page with the results as plots to this file");
+    command->add_option("--json", args->json, "Also write the results as JSON to this file")->type_name("PATH");
+    command->add_option("--report", args->report, "Also write an HTML page with the results as plots to this file")
+        ->type_name("PATH");
     command->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
     return [args] { return run_bench(*args); };
 }

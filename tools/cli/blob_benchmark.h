@@ -1,5 +1,5 @@
 #pragma once
-// The blob-group benchmark of issues 4 and 9, in one process and one run: every scene is loaded twice and traced
+// The blob-group benchmark, in one process and one run: every scene is loaded twice and traced
 // with primary, shadow and one-bounce diffuse rays, directly (blob groups as Embree user geometry) and with every
 // blob group replaced by its tessellation (geometry/polygonize) traced natively by Embree as triangles, taking
 // turns, on each thread count. The secondary rays are built once from the direct scene's primary hits

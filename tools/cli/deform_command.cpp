@@ -62,7 +62,9 @@ CommandRunner add_deform_command(CLI::App& app) {
     command->add_option("deformers", args->deformers, "Deformer file (JSON: {\"deformers\": [...]})")
         ->required()
         ->check(CLI::ExistingFile);
-    command->add_option("-o,--output", args->output, "Deformed mesh, .ply (binary) or .obj")->required();
+    command->add_option("-o,--output", args->output, "Deformed mesh, .ply (binary) or .obj")
+        ->type_name("PATH")
+        ->required();
     add_threads_option(*command, args->threads);
     add_max_memory_option(*command, args->max_memory);
     command->add_flag("-q,--quiet", args->quiet, "No statistics on stderr");

@@ -1,4 +1,5 @@
-// isotrace depth: the paper's range image (seed 003, eq. 11) of a scene, as an 8-bit grey PNG.
+// isotrace depth: the range image of Tae-Eun Kim's "3D Shape Reconstruction based on Superquadrics and Single
+// Z-buffer CSG Rendering" (the depth of the first hit as 256 grey levels) of a scene, as an 8-bit grey PNG.
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -14,6 +15,7 @@
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/memory_limit_option.h"
+#include "tools/cli/thread_limit.h"
 
 namespace isotrace::cli {
 namespace {
@@ -111,17 +113,24 @@ int run_depth(const DepthArguments& args) {
 CommandRunner add_depth_command(CLI::App& app) {
     auto args = std::make_shared<DepthArguments>();
     CLI::App* command = app.add_subcommand(
-        "depth", "Write a range image: view depth as 256 grey levels, near = white (255), far and background = black");
+        "depth", "Write a range image: view depth as 256 grey levels, near white, far black");
+    command->footer("The range image of T.-E. Kim, \"3D Shape Reconstruction based on Superquadrics and Single "
+                    "Z-buffer CSG Rendering\": g = (Z - Zmin) * 256 / (Zmax - Zmin), clamped to 0..255, with Z "
+                    "growing towards the viewer; pixels that hit nothing are 0.");
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
-    command->add_option("-o,--output", args->output, "Range image, 8-bit grey PNG")->required();
+    command->add_option("-o,--output", args->output, "Range image, 8-bit grey PNG")->type_name("PATH")->required();
     command->add_option("--near", args->near, "Depth mapped to grey 255 (default: the nearest hit)");
     command->add_option("--far", args->far, "Depth mapped to grey 0 (default: the farthest hit)");
     command->add_flag("--near-dark", args->near_dark,
-                      "Read eq. 11's Z as the depth: near = black (0), far and background = white (255)");
-    command->add_option("--exr", args->exr, "Also write the raw view depth Z (world units, inf = no hit) as EXR");
-    command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
+                      "Read the range image's Z as the depth itself: near = black (0), far and background = white "
+                      "(255)");
+    command->add_option("--exr", args->exr, "Also write the raw view depth Z (world units, inf = no hit) as EXR")
+        ->type_name("PATH");
+    command->add_option("--res", args->resolution,
+                        "Resolution WIDTHxHEIGHT, each side 1 to 65536 (overrides the scene)")
+        ->type_name("WIDTHxHEIGHT");
     add_max_memory_option(*command, args->max_memory);
-    command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
+    add_threads_option(*command, args->threads);
     command->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
     return [args] { return run_depth(*args); };
 }

@@ -241,7 +241,7 @@ int run_z_test(const DiffArguments& args, const ImageFile& reference, const Imag
         ErrorPicture picture{result.failed_per_pixel, 3.0, "failing pixel channels per pixel, 0 to 3"};
         write_error_map(args, input.test.width, input.test.height, picture);
     }
-    return result.passed ? kExitOk : kExitFailure;
+    return result.passed ? kExitOk : kExitNotMet;
 }
 
 int run_diff(const DiffArguments& args, bool error_map_metric_given) {
@@ -279,28 +279,33 @@ int run_diff(const DiffArguments& args, bool error_map_metric_given) {
         write_error_map(args, reference.width, reference.height,
                         error_picture(args.error_map_metric, reference, test, comparison));
     for (const std::string& line : broken) std::fprintf(stderr, "isotrace diff: threshold broken: %s\n", line.c_str());
-    return broken.empty() ? kExitOk : kExitFailure;
+    return broken.empty() ? kExitOk : kExitNotMet;
 }
 
 }  // namespace
 
 CommandRunner add_diff_command(CLI::App& app) {
     auto args = std::make_shared<DiffArguments>();
-    CLI::App* command = app.add_subcommand(
-        "diff", "Compare a test image B with a reference A: RMSE, relative MSE, PSNR, SSIM, FLIP; or --ztest");
+    CLI::App* command = app.add_subcommand("diff", "Compare an image with a reference, or z-test a render");
+    command->footer("Metrics: RMSE, relative MSE, PSNR, SSIM and FLIP of test image B against reference A; --ztest: "
+                    "a statistical test of a low-budget render against a reference's mean and variance. Exit codes: "
+                    "0 every threshold holds (the z-test passes), 3 a threshold or the z-test fails, 2 bad input.");
     command->add_option("reference", args->reference, "Reference image A (EXR, PNG or any format OpenImageIO reads)")
         ->required();
     command->add_option("test", args->test, "Test image B, the same size, channels and kind (linear/display) as A")
         ->required();
-    command->add_option("--json", args->json, "Also write the figures as JSON to this file");
-    command->add_option("--error-map", args->error_map, "Write a false-colour (magma-like) error map, PNG");
+    command->add_option("--json", args->json, "Also write the figures as JSON to this file")->type_name("PATH");
+    command->add_option("--error-map", args->error_map, "Write a false-colour (magma-like) error map, PNG")
+        ->type_name("PATH");
     CLI::Option* metric = command->add_option(
         "--error-map-metric", args->error_map_metric,
         "What the error map shows: flip (default, per-pixel FLIP), ssim (1 - SSIM), rmse or psnr (|B - A| of the "
         "luminance), relmse (|B - A| / (A + 0.01) of the luminance)");
+    metric->type_name("METRIC");
     command->add_option("--fail", args->fail,
-                        "METRIC=VALUE: exit 1 if the metric is worse than VALUE (above it; psnr and ssim: below); "
+                        "METRIC=VALUE: exit 3 if the metric is worse than VALUE (above it; psnr and ssim: below); "
                         "repeatable")
+        ->type_name("METRIC=VALUE")
         ->take_all()
         ->allow_extra_args(false);
     command->add_option("--ppd", args->pixels_per_degree, "FLIP's pixels per degree of visual angle (default 67: a 0.7 m "
@@ -309,7 +314,7 @@ CommandRunner add_diff_command(CLI::App& app) {
     command->add_flag("--ztest", args->z_test,
                       "Per-pixel and per-block z-test of B (a low-budget render with another seed) against A's mean, "
                       "variance and sampleCount channels (isotrace render --reference), using B's variance channels "
-                      "too when it has them; exit 1 unless 99.75 % of the tests pass at every level");
+                      "too when it has them; exit 3 unless 99.75 % of the tests pass at every level");
     command->add_option("--test-spp", args->test_spp, "--ztest: B's samples per pixel, if it has no sampleCount channel "
                                                       "or isotrace:spp metadata")
         ->check(CLI::Range(1, 1 << 30));

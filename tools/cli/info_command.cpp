@@ -1,6 +1,7 @@
 #include <cstdio>
 
 #include "geometry/mesh/mesh_deformer.h"
+#include "renderer/colour/colour_system.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/plugin/integrator.h"
 #include "renderer/plugin/light.h"
@@ -11,6 +12,7 @@
 #include "renderer/scene/loaded_scene.h"
 #include "renderer/core/printable.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/render_warnings.h"
 #include "tools/cli/scene_fingerprint.h"
 
 namespace isotrace::cli {
@@ -33,6 +35,31 @@ void print_all_plugins() {
     print_plugins(mesh_deformer_registry());
 }
 
+// The displays and views of the OCIO config, the config's defaults marked, and the pair the scene's
+// display-referred outputs use when a scene is given.
+void print_views(const ColourSystem& colours, const LoadedScene* scene) {
+    const std::string default_display = colours.default_display();
+    std::string used_display, used_view;
+    if (scene) {
+        used_display = scene->display.empty() ? default_display : scene->display;
+        used_view = scene->view.empty() ? colours.default_view(used_display) : scene->view;
+    }
+    const auto marks = [](bool is_default, bool used) {
+        std::string text = is_default ? "default" : "";
+        if (used) text += text.empty() ? "the scene's" : ", the scene's";
+        return text.empty() ? text : "  (" + text + ")";
+    };
+    std::printf("OCIO config  %s\n", printable(colours.config_path()).c_str());
+    for (const std::string& display : colours.displays()) {
+        std::printf("display      %s%s\n", printable(display).c_str(),
+                    marks(display == default_display, display == used_display).c_str());
+        const std::string default_view = colours.default_view(display);
+        for (const std::string& view : colours.views(display))
+            std::printf("  view       %s%s\n", printable(view).c_str(),
+                        marks(view == default_view, display == used_display && view == used_view).c_str());
+    }
+}
+
 int run_info(const std::string& path) {
     const std::unique_ptr<LoadedScene> scene = load_scene(path);
     const BuildStatistics& build = scene->scene->build_statistics();
@@ -46,6 +73,8 @@ int run_info(const std::string& path) {
                 scene->referenced_files.size());
     std::printf("camera       %s\n", scene->camera_type.c_str());
     std::printf("integrator   %s\n", scene->integrator_type.c_str());
+    if (const std::string warning = light_left_out_warning(*scene); !warning.empty())
+        std::fprintf(stderr, "isotrace: warning: %s\n", warning.c_str());
     std::printf("sampler      %s, seed %llu\n", scene->sampler_type.c_str(), (unsigned long long)scene->seed);
     std::printf("colour       working space %s, OCIO config %s\n", scene->colours->working_space().c_str(),
                 scene->colours->config_path().c_str());
@@ -67,12 +96,26 @@ int run_info(const std::string& path) {
 CommandRunner add_info_command(CLI::App& app) {
     auto path = std::make_shared<std::string>();
     auto plugins = std::make_shared<bool>(false);
-    CLI::App* command = app.add_subcommand("info", "Validate a scene and print a summary (or list the plugins)");
+    auto views = std::make_shared<bool>(false);
+    CLI::App* command =
+        app.add_subcommand("info", "Validate a scene and print a summary, or list the plugins or the OCIO views");
     command->add_option("scene", *path, "Scene file (JSON)")->check(CLI::ExistingFile);
     command->add_flag("--plugins", *plugins, "List every registered plugin type");
-    return [path, plugins] {
+    command->add_flag("--views", *views,
+                      "List the OCIO config's displays and views (for film.display and film.view), marking the "
+                      "defaults and, with a scene, the pair it uses");
+    return [path, plugins, views] {
         if (*plugins) {
             print_all_plugins();
+            return kExitOk;
+        }
+        if (*views) {
+            if (path->empty()) {
+                print_views(ColourSystem(""), nullptr);
+            } else {
+                const std::unique_ptr<LoadedScene> scene = load_scene(*path);
+                print_views(*scene->colours, scene.get());
+            }
             return kExitOk;
         }
         if (path->empty()) throw CLI::RequiredError("scene");

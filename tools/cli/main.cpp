@@ -32,6 +32,18 @@ bool reject_unknown_command(const CLI::App& app, int argc, char** argv) {
     return true;
 }
 
+// Plain "isotrace": what each command does, one line each.
+void print_usage(const CLI::App& app) {
+    std::printf("%s\n\nusage: isotrace COMMAND [options]   (isotrace COMMAND --help lists its options)\n\ncommands:\n",
+                app.get_description().c_str());
+    for (const CLI::App* command : app.get_subcommands({})) {
+        std::string aliases;
+        for (const std::string& alias : command->get_aliases()) aliases += (aliases.empty() ? "" : ", ") + alias;
+        std::printf("  %-8s %s%s\n", command->get_name().c_str(), command->get_description().c_str(),
+                    aliases.empty() ? "" : (" (alias: " + aliases + ")").c_str());
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -53,6 +65,10 @@ int main(int argc, char** argv) {
     const CommandRunner mesh = add_mesh_command(app);
     const CommandRunner deform = add_deform_command(app);
     const CommandRunner diff = add_diff_command(app);
+    if (argc == 1) {
+        print_usage(app);
+        return kExitOk;
+    }
     if (reject_unknown_command(app, argc, argv)) return kExitBadInput;
     try {
         app.parse(argc, argv);

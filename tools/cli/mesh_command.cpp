@@ -174,33 +174,40 @@ int run_mesh(const MeshArguments& args) {
 
 CommandRunner add_mesh_command(CLI::App& app) {
     auto args = std::make_shared<MeshArguments>();
-    CLI::App* command = app.add_subcommand(
-        "mesh", "Polygonise one implicit object (marching cubes, octree or spherical-octree dual contouring), or write "
-                "an object traced as triangles (mesh, abm_patch) as it is traced (--method traced)");
+    CLI::App* command = app.add_subcommand("mesh", "Polygonise an implicit object, or write a traced one's triangles");
+    command->footer("Implicit objects: marching cubes, octree or spherical-octree dual contouring. Objects traced as "
+                    "triangles (mesh, abm_patch): --method traced writes them as they are traced.");
     command->alias("polygonize");  // the blob-only tessellator this command replaced
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
     command->add_option("--object", args->object,
-                        "Name of the scene object to mesh (default: the scene's only implicit object)");
+                        "Name of the scene object to mesh (default: the scene's only implicit object)")
+        ->type_name("NAME");
     command->add_option("--method", args->method,
                         "mc (marching cubes), dc (octree dual contouring), sdc (spherical) or traced (the triangles "
                         "the renderer traces)")
+        ->type_name("mc|dc|sdc|traced")
         ->capture_default_str();
-    command->add_option("--depth", args->depth, "Octree depth L: 2^L cells along each axis (1..10, sdc 2..10)")
-        ->capture_default_str();
+    command->add_option("--depth", args->depth, "Octree depth L: 2^L cells along each axis (sdc: from 2)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 10));
     command->add_option("--origin", args->origin, "sdc: origin of the spherical octree (default: centre of the bounds)")
         ->delimiter(',')
         ->expected(3);
     command->add_option("--simplify", args->simplify,
                         "dc: collapse octree cells whose vertex stays within this distance (scene units) of every "
-                        "tangent plane of the surface crossings in the cell, where the topology allows (default: none)");
+                        "tangent plane of the surface crossings in the cell, where the topology allows (default: none)")
+        ->type_name("DISTANCE>=0");
     command->add_flag("--no-origin-correction", args->no_origin_correction,
                       "sdc: keep the origin even when it lies on the surface (for comparison)");
     command->add_option("--pole-cap", args->pole_cap, "sdc: ghost vertex at the poles: axis, normal or vertical")
+        ->type_name("axis|normal|vertical")
         ->capture_default_str();
     command->add_option("--error-samples", args->error_samples, "Sample points for the Hausdorff estimate")
         ->capture_default_str()
         ->check(CLI::Range(std::size_t(1), std::size_t(10000000)));
-    command->add_option("-o,--output", args->output, "Mesh file: .ply (binary) or .obj, in world space")->required();
+    command->add_option("-o,--output", args->output, "Mesh file: .ply (binary) or .obj, in world space")
+        ->type_name("PATH")
+        ->required();
     add_threads_option(*command, args->threads);
     add_max_memory_option(*command, args->max_memory);
     command->add_flag("-q,--quiet", args->quiet, "No summary");

@@ -19,7 +19,9 @@ void add_reference_options(CLI::App& command, bool& reference, std::optional<std
                      "metadata to reproduce it bit for bit; prints the estimated relative error after each pass");
     command.add_option("--target-error", target_error,
                        "With --reference: stop at the first pass boundary (64, 128, 256, ... spp) where the estimated "
-                       "relative error is at most this (0.01 = about 1 % noise); --spp and --time still bound it");
+                       "relative error is at most this (0.01 = about 1 % noise); --spp and --time still bound it; "
+                       "exit 3 when they stop the render before it")
+        ->type_name("NUMBER>0");
 }
 
 ReferenceRequest parse_reference_request(bool reference, const std::optional<std::string>& target_error, bool resuming) {
@@ -63,6 +65,23 @@ std::function<bool(const Film&)> reference_stop_rule(const ReferenceRequest& req
         }
         return reached;
     };
+}
+
+std::string unmet_target_warning(const ReferenceRequest& request, const RenderResult& result) {
+    if (!request.target_error || result.stopped_at_pass_end || result.cancelled) return "";
+    const double error = estimated_relative_error(*result.film);
+    if (result.completed_spp >= kMinimumTargetErrorSpp && error <= *request.target_error) return "";
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "the target error was not reached: estimated relative error %.4g at %d spp, target %.4g (%s); the "
+                  "images are written",
+                  error, result.completed_spp, *request.target_error,
+                  result.out_of_time ? "the time budget --time ran out"
+                  : result.completed_spp < kMinimumTargetErrorSpp
+                      ? ("the sample limit came before " + std::to_string(kMinimumTargetErrorSpp) +
+                         " spp, where the target is first checked").c_str()
+                      : "the sample limit --spp was reached");
+    return text;
 }
 
 namespace {

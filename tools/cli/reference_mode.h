@@ -43,6 +43,11 @@ void add_reference_channels(std::vector<Aov>& aovs);
 // (unless quiet) and ends the render once it reaches the target, if there is one.
 std::function<bool(const Film&)> reference_stop_rule(const ReferenceRequest& request, bool quiet);
 
+// A render with a target error that ended before reaching it (by its sample limit or time budget): the warning to
+// print, with the error reached and the target; "" when the target was met or there is none. A render that
+// stopped at its sample limit with the error at most the target, checked or not, meets it.
+std::string unmet_target_warning(const ReferenceRequest& request, const RenderResult& result);
+
 // The pixel-affecting options of the render, for the metadata.
 struct ReferenceSettings {
     RasterSize resolution;

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 #include "renderer/colour/chromaticities.h"
@@ -22,7 +23,9 @@
 #include "tools/cli/reference_mode.h"
 #include "tools/cli/render_checkpoint.h"
 #include "tools/cli/render_distribution.h"
+#include "tools/cli/render_pauses.h"
 #include "tools/cli/render_statistics.h"
+#include "tools/cli/render_warnings.h"
 #include "tools/cli/thread_limit.h"
 #include "tools/cli/memory_limit_option.h"
 
@@ -79,6 +82,7 @@ struct RenderArguments {
     std::string seed;         // parsed by parse_seed: CLI11 would wrap "-1" and clamp 2^64
     std::string aovs;
     std::string stats_json;
+    StatisticsDetail stats = StatisticsDetail::Short;
     std::string time_budget;  // parsed by parse_seconds: CLI11 accepts nan
     std::string max_memory;
     std::string max_scene_size;
@@ -86,6 +90,7 @@ struct RenderArguments {
     bool quiet = false;
     std::string checkpoint;
     std::string checkpoint_every;  // parsed by parse_seconds
+    std::string write_every;       // parsed by parse_seconds
     std::string resume;
     bool reference = false;
     std::optional<std::string> target_error;  // parsed by parse_reference_request
@@ -93,8 +98,17 @@ struct RenderArguments {
 };
 
 constexpr double kDefaultCheckpointSeconds = 300;
-// Each checkpoint pauses the render; the threads need some time between pauses or no sample is ever finished.
-constexpr double kMinCheckpointSeconds = 0.05;  // said in the message below
+// Each checkpoint and interim write pauses the render; the threads need some time between pauses or no sample is
+// ever finished.
+constexpr double kMinPauseSeconds = 0.05;
+
+// --checkpoint-every and --write-every: seconds, at least kMinPauseSeconds.
+double parse_pause_interval(const std::string& text, const std::string& option) {
+    const double seconds = parse_seconds(text, option);
+    if (seconds < kMinPauseSeconds)
+        throw InputError({}, option, "must be at least 0.05 s (the render pauses each time), got \"" + text + "\"");
+    return seconds;
+}
 
 const char* how_it_ended(const RenderResult& result, int spp) {
     if (result.cancelled) return "interrupted";
@@ -103,7 +117,9 @@ const char* how_it_ended(const RenderResult& result, int spp) {
     return "time budget";
 }
 
-ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result, int spp, std::uint64_t rays) {
+// `stopped`: how_it_ended(), or "in progress" for an interim output (--write-every).
+ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result, const std::string& stopped,
+                            std::uint64_t rays) {
     ImageMetadata m;
     m.set("Software", std::string("isotrace ") + kIsotraceVersion);
     m.set("isotrace:version", std::string(kIsotraceVersion));
@@ -120,7 +136,7 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
     // samples (each pixel's count is in the sampleCount AOV when requested).
     m.set("isotrace:partial", std::int64_t(result.partial ? 1 : 0));
     m.set("isotrace:spp_max", std::int64_t(result.max_spp));
-    m.set("isotrace:stopped", std::string(how_it_ended(result, spp)));
+    m.set("isotrace:stopped", stopped);
     m.set("isotrace:working_space", scene.colours->working_space());
     m.set("isotrace:ocio_config", scene.colours->config_path());
     if (const auto xy = chromaticities_of(scene.colours->working_space()))
@@ -130,9 +146,8 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
 
 // Every output is attempted even when one fails (a full disk may still take a small PNG); each failure is
 // reported, and any failure ends the command with a failure.
-void write_outputs(const RenderArguments& args, const LoadedScene& scene, const RenderResult& result,
+void write_outputs(const RenderArguments& args, const LoadedScene& scene, const ImageBuffer& image,
                    const ImageMetadata& metadata) {
-    const ImageBuffer image = result.film->resolve();
     const ImageWindow window{scene.film.raster, scene.film.crop.x0, scene.film.crop.y0};
     int failures = 0;
     for (const std::string& output : args.outputs) {
@@ -233,11 +248,10 @@ int run_render(const RenderArguments& args) {
         throw InputError({}, "--checkpoint-every", "needs --checkpoint FILE (or --resume FILE)");
     const double checkpoint_seconds = args.checkpoint_every.empty()
                                           ? kDefaultCheckpointSeconds
-                                          : parse_seconds(args.checkpoint_every, "--checkpoint-every");
-    if (checkpoint_seconds < kMinCheckpointSeconds)
-        throw InputError({}, "--checkpoint-every",
-                         "must be at least 0.05 s, got \"" +
-                             args.checkpoint_every + "\"");
+                                          : parse_pause_interval(args.checkpoint_every, "--checkpoint-every");
+    const std::optional<double> write_seconds =
+        args.write_every.empty() ? std::nullopt
+                                 : std::optional<double>(parse_pause_interval(args.write_every, "--write-every"));
     for (const std::string& output : args.outputs) image_kind_for(output);  // reject bad names before rendering
     const std::vector<NamedPath> outputs = render_outputs(args, checkpoint_path);
     check_output_paths(outputs, command_line_inputs(args, checkpoint_path));
@@ -268,6 +282,10 @@ int run_render(const RenderArguments& args) {
         ranks.serve(*scene, args.tile_size);
         return kExitOk;
     }
+    // A distributed render's stop by a signal ends in one last on_checkpoint call, which must be the checkpoint.
+    if (write_seconds && ranks.distributed())
+        throw InputError({}, "--write-every", "is not available in a distributed render; render in one process to "
+                                              "watch the image grow");
     std::unique_ptr<Film> film;
     if (resume) {
         check_same_scene(*resume, *scene, args.resume);
@@ -303,10 +321,26 @@ int run_render(const RenderArguments& args) {
             return false;
         }
     };
-    if (!checkpoint_path.empty()) {
-        options.checkpoint_interval_seconds = checkpoint_seconds;
-        options.on_checkpoint = [&](const Film& state) { checkpoint(state); };
-    }
+    const auto render_start = std::chrono::steady_clock::now();
+    // The outputs as they stand, for a viewer to watch; a failed write is reported and the render goes on.
+    const auto write_interim_outputs = [&](const Film& state) {
+        const SampleCountRange counts = state.sample_count_range();
+        RenderResult so_far;
+        so_far.completed_spp = int(counts.min);
+        so_far.max_spp = int(counts.max);
+        so_far.partial = counts.min != counts.max;
+        so_far.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
+        try {
+            write_outputs(args, *scene, state.resolve(),
+                          make_metadata(*scene, so_far, "in progress", counters::totals().total_rays()));
+        } catch (const std::runtime_error& error) {
+            std::fprintf(stderr, "isotrace: warning: interim outputs not written: %s\n", error.what());
+        }
+    };
+    RenderPauses pauses;
+    if (!checkpoint_path.empty()) pauses.add(checkpoint_seconds, [&](const Film& state) { checkpoint(state); });
+    if (write_seconds) pauses.add(*write_seconds, write_interim_outputs);
+    pauses.install(options);
 
     if (!args.quiet) {
         const SampleCountRange done = film ? film->sample_count_range() : SampleCountRange{};
@@ -317,6 +351,9 @@ int run_render(const RenderArguments& args) {
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count(),
                      resume ? (", resuming at " + std::to_string(done.min) + " spp").c_str() : "");
     }
+    // Warnings print even with --quiet: they say that the image is not what was asked for.
+    if (const std::string warning = light_left_out_warning(*scene); !warning.empty())
+        std::fprintf(stderr, "isotrace: warning: %s\n", warning.c_str());
 
     // A reference render prints its error estimate at each pass boundary instead of drawing the bar.
     const bool show_progress = !args.quiet && stderr_is_terminal() && !reference.enabled;
@@ -349,18 +386,24 @@ int run_render(const RenderArguments& args) {
     // An unfinished render leaves a checkpoint to continue from.
     const bool unfinished = result.completed_spp < options.spp && !result.stopped_at_pass_end;
     const bool checkpoint_lost = !checkpoint_path.empty() && unfinished && !checkpoint(*result.film);
-    ImageMetadata metadata = make_metadata(*scene, result, options.spp, counts.total_rays());
+    ImageMetadata metadata = make_metadata(*scene, result, how_it_ended(result, options.spp), counts.total_rays());
     if (reference.enabled)
         add_reference_metadata(metadata, reference, {scene->film.raster, scene->seed, options.spp, time_budget}, *scene,
                                result);
-    write_outputs(args, *scene, result, metadata);
+    const ImageBuffer image = result.film->resolve();
+    write_outputs(args, *scene, image, metadata);
     times.write = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
 
-    nlohmann::json stats = render_statistics(*scene, result, counts, times, threads);
+    const BeautyCheck beauty = check_beauty(image);
+    nlohmann::json stats = render_statistics(*scene, result, counts, times, threads, beauty);
     add_rank_statistics(stats, ranks);
     if (!args.stats_json.empty()) write_text_output(args.stats_json, stats.dump(2) + "\n");
+    for (const std::string& warning : beauty_warnings(beauty))
+        std::fprintf(stderr, "isotrace: warning: %s\n", warning.c_str());
+    const std::string unmet_target = unmet_target_warning(reference, result);
+    if (!unmet_target.empty()) std::fprintf(stderr, "isotrace: warning: %s\n", unmet_target.c_str());
     if (!args.quiet) {
-        std::fputs(format_statistics(stats).c_str(), stderr);
+        std::fputs(format_statistics(stats, args.stats).c_str(), stderr);
         for (const std::string& output : args.outputs) std::fprintf(stderr, "wrote %s\n", output.c_str());
         if (!checkpoint_path.empty() && unfinished && !checkpoint_lost)
             std::fprintf(stderr, "wrote checkpoint %s (continue with --resume %s)\n", checkpoint_path.c_str(),
@@ -377,7 +420,7 @@ int run_render(const RenderArguments& args) {
                      stop_signal_name(signal_number), result.partial ? "partial" : "completed-pass");
         return 128 + signal_number;
     }
-    return kExitOk;
+    return unmet_target.empty() ? kExitOk : kExitNotMet;
 }
 
 }  // namespace
@@ -388,34 +431,57 @@ CommandRunner add_render_command(CLI::App& app) {
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
     command->add_option("-o,--output", args->outputs,
                         "Output image; repeat for several. .exr: scene-linear with AOVs and metadata; "
-                        ".png/.jpg/.tif: display-referred through the OCIO view. Default: <scene name>.exr");
+                        ".png/.jpg/.tif: display-referred through the OCIO view. Default: <scene name>.exr")
+        ->type_name("PATH");
     command->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1, kMaxSamplesPerPixel));
-    command->add_option("--res", args->resolution, "Resolution WIDTHxHEIGHT (overrides the scene)");
+    command->add_option("--res", args->resolution,
+                        "Resolution WIDTHxHEIGHT, each side 1 to 65536 (overrides the scene)")
+        ->type_name("WIDTHxHEIGHT");
     add_threads_option(*command, args->threads);
-    command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)");
+    command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)")->type_name("UINT64");
     command->add_option("--aov", args->aovs,
                         "Comma-separated AOVs to add to the EXR: albedo, normal, depth, position, object_id, "
-                        "primitive_id, sample_count, variance, or all");
-    command->add_option("--stats-json", args->stats_json, "Write end-of-render statistics as JSON to this file (- for standard output)");
+                        "primitive_id, sample_count, variance, or all")
+        ->type_name("LIST");
+    command->add_option("--stats-json", args->stats_json,
+                        "Write every end-of-render statistic as JSON to this file (- for standard output)")
+        ->type_name("PATH");
+    const std::map<std::string, StatisticsDetail> stats_levels{
+        {"none", StatisticsDetail::None}, {"short", StatisticsDetail::Short}, {"full", StatisticsDetail::Full}};
+    command->add_option("--stats", args->stats,
+                        "Statistics printed after the render: short (default: times, speed, NaNs, memory), full "
+                        "(also rays, geometry and every work counter) or none")
+        ->transform(CLI::CheckedTransformer(stats_levels, CLI::ignore_case).description(""))
+        ->type_name("short|full|none");
     command->add_option("--time", args->time_budget,
                         "Time budget in seconds: the render stops within a sample of it, mid-pass if need be "
-                        "(the image is then marked partial)");
+                        "(the image is then marked partial)")
+        ->type_name("SECONDS>0");
     command->add_option("--checkpoint", args->checkpoint,
                         "Save the render's state to this file periodically, when interrupted (SIGINT, SIGTERM) and "
-                        "when the time budget ends it");
+                        "when the time budget ends it")
+        ->type_name("PATH");
     command->add_option("--checkpoint-every", args->checkpoint_every,
-                        "Seconds of rendering between checkpoints (default: 300)");
+                        "Seconds of rendering between checkpoints (default: 300)")
+        ->type_name("SECONDS>=0.05");
+    command->add_option("--write-every", args->write_every,
+                        "Also write the outputs every this many seconds of rendering (atomically, marked "
+                        "isotrace:stopped \"in progress\"), so that a viewer can watch the render")
+        ->type_name("SECONDS>=0.05");
     command->add_option("--resume", args->resume,
                         "Continue the render saved in this checkpoint (same scene; the final image is bit-identical "
                         "to an uninterrupted render); goes on checkpointing to it unless --checkpoint says otherwise")
+        ->type_name("PATH")
         ->check(CLI::ExistingFile);
     add_reference_options(*command, args->reference, args->target_error);
     add_max_memory_option(*command, args->max_memory);
     command->add_option("--max-scene-size", args->max_scene_size,
-                        "Refuse scene files larger than this (bytes with K/M/G; default: 64M)");
+                        "Refuse scene files larger than this (bytes with K/M/G; default: 64M)")
+        ->type_name("SIZE");
     command->add_option("--tile-size", args->tile_size, "Tile edge in pixels (does not change the image)")
         ->check(CLI::Range(1, 4096));
-    command->add_flag("-q,--quiet", args->quiet, "No progress bar or statistics on stderr");
+    command->add_flag("-q,--quiet", args->quiet,
+                      "No progress bar or statistics on stderr (warnings and errors still print)");
     add_distribution_options(*command, args->distribution);
     return [args] {
         if (args->outputs.empty())

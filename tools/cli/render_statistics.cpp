@@ -3,10 +3,12 @@
 #include <cstdio>
 #include <sstream>
 
+#include "tools/cli/peak_memory.h"
+
 namespace isotrace::cli {
 
 nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& result, const CounterTotals& counts,
-                                 const PhaseTimes& times, int threads) {
+                                 const PhaseTimes& times, int threads, const BeautyCheck& beauty) {
     const double pixel_samples = double(scene.film.crop.area()) * double(result.completed_spp);
     const double render_seconds = times.render > 0 ? times.render : 1e-12;
     nlohmann::json stats;
@@ -35,6 +37,8 @@ nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& r
     stats["mrays_per_second"] = double(counts.total_rays()) / render_seconds * 1e-6;
     stats["samples_per_second"] = pixel_samples / render_seconds;
     stats["nan_samples"] = counts.nan_samples;
+    stats["non_finite_pixels"] = beauty.non_finite_pixels;
+    stats["peak_memory_bytes"] = peak_memory_bytes();
     const BuildStatistics& build = scene.scene->build_statistics();
     stats["objects"] = build.objects;
     stats["instanced_objects"] = build.instanced_objects;
@@ -54,25 +58,42 @@ nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& r
     return stats;
 }
 
-std::string format_statistics(const nlohmann::json& s) {
-    std::ostringstream out;
+namespace {
+
+// The lines of both levels: phases, speed, NaNs and memory.
+void format_summary(const nlohmann::json& s, std::ostringstream& out) {
     char line[256];
     std::snprintf(line, sizeof line, "  time      parse %.3f s | build %.3f s | render %.3f s | write %.3f s\n",
                   s["parse_seconds"].get<double>(), s["build_seconds"].get<double>(),
                   s["render_seconds"].get<double>(), s["write_seconds"].get<double>());
-    out << "statistics:\n" << line;
-    std::snprintf(line, sizeof line, "  samples   %d spp x %lld pixels, %.3g samples/s, %d thread(s)%s\n",
-                  s["spp"].get<int>(), s["pixels_rendered"].get<long long>(), s["samples_per_second"].get<double>(),
-                  s["threads"].get<int>(), s["partial"].get<bool>() ? " (partial)" : "");
     out << line;
+    std::snprintf(line, sizeof line, "  samples   %d spp x %lld pixels, %.3g samples/s, %.2f Mrays/s, %d thread(s)%s\n",
+                  s["spp"].get<int>(), s["pixels_rendered"].get<long long>(), s["samples_per_second"].get<double>(),
+                  s["mrays_per_second"].get<double>(), s["threads"].get<int>(),
+                  s["partial"].get<bool>() ? " (partial)" : "");
+    out << line;
+    std::snprintf(line, sizeof line, "  NaN/Inf   %llu samples discarded, %llu pixels in the image\n",
+                  s["nan_samples"].get<unsigned long long>(), s["non_finite_pixels"].get<unsigned long long>());
+    out << line;
+    std::snprintf(line, sizeof line, "  memory    %.1f MiB peak resident\n",
+                  double(s["peak_memory_bytes"].get<unsigned long long>()) / (1 << 20));
+    out << line;
+}
+
+}  // namespace
+
+std::string format_statistics(const nlohmann::json& s, StatisticsDetail detail) {
+    if (detail == StatisticsDetail::None) return "";
+    std::ostringstream out;
+    out << "statistics:\n";
+    format_summary(s, out);
+    if (detail == StatisticsDetail::Short) return out.str();
+    char line[256];
     if (s.contains("packets") && !s["packets"].get<std::string>().empty())
         out << "  packets   " << s["packets"].get<std::string>() << "\n";
-    std::snprintf(line, sizeof line, "  rays      %llu total (%llu camera, %llu secondary, %llu shadow), %.2f Mrays/s\n",
+    std::snprintf(line, sizeof line, "  rays      %llu total (%llu camera, %llu secondary, %llu shadow)\n",
                   s["rays_total"].get<unsigned long long>(), s["camera_rays"].get<unsigned long long>(),
-                  s["secondary_rays"].get<unsigned long long>(), s["shadow_rays"].get<unsigned long long>(),
-                  s["mrays_per_second"].get<double>());
-    out << line;
-    std::snprintf(line, sizeof line, "  NaN/Inf   %llu samples discarded\n", s["nan_samples"].get<unsigned long long>());
+                  s["secondary_rays"].get<unsigned long long>(), s["shadow_rays"].get<unsigned long long>());
     out << line;
     out << "  geometry  type             primitives   int. tests   cand. hits  closest hits\n";
     for (const auto& [type, row] : s["geometry"].items()) {

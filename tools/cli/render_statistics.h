@@ -6,6 +6,7 @@
 #include "renderer/core/render_counters.h"
 #include "renderer/render/tile_renderer.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tools/cli/render_warnings.h"
 
 namespace isotrace::cli {
 
@@ -13,11 +14,15 @@ struct PhaseTimes {
     double parse = 0, build = 0, render = 0, write = 0;
 };
 
-// End-of-render statistics as JSON (the --stats-json schema, see docs/cli.md).
+// End-of-render statistics as JSON (the --stats-json schema, see docs/cli.md), all of them; the peak memory is the
+// process's so far.
 nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& result, const CounterTotals& counts,
-                                 const PhaseTimes& times, int threads);
+                                 const PhaseTimes& times, int threads, const BeautyCheck& beauty);
 
-// The same statistics as a human-readable block for stderr.
-std::string format_statistics(const nlohmann::json& stats);
+// How much of them render prints (--stats): a few lines of times, speed, memory and NaNs, or every counter.
+enum class StatisticsDetail { None, Short, Full };
+
+// The statistics as a human-readable block for stderr ("" for None).
+std::string format_statistics(const nlohmann::json& stats, StatisticsDetail detail);
 
 }  // namespace isotrace::cli
