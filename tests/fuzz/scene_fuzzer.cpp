@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // 2 GB RSS limit. The film is overridden to 16x16 (as --res does; the scene's own resolution is still
     // validated) so that the seed scenes' films do not use up the budget before their objects are loaded.
     overrides.max_memory_bytes = std::uint64_t(16) << 20;
-    overrides.resolution = isotrace::RasterSize{16, 16};
+    overrides.settings.push_back(isotrace::resolution_setting(isotrace::RasterSize{16, 16}));
     try {
         isotrace::load_scene(isotrace::fuzz::write_input(data, size, ".json"), overrides);
     } catch (const isotrace::InputError&) {

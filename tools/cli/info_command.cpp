@@ -12,6 +12,7 @@
 #include "renderer/core/printable.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/scene_fingerprint.h"
+#include "tools/cli/scene_options.h"
 
 namespace isotrace::cli {
 namespace {
@@ -33,8 +34,10 @@ void print_all_plugins() {
     print_plugins(mesh_deformer_registry());
 }
 
-int run_info(const std::string& path) {
-    const std::unique_ptr<LoadedScene> scene = load_scene(path);
+int run_info(const std::string& path, const SceneOptions& options) {
+    SceneOverrides overrides;
+    add_scene_settings(options, overrides);
+    const std::unique_ptr<LoadedScene> scene = load_scene(path, overrides);
     const BuildStatistics& build = scene->scene->build_statistics();
     const Bounds3f bounds = scene->scene->bounds();
     std::printf("scene        %s%s%s\n", printable(path).c_str(), scene->description.empty() ? "" : " - ",
@@ -42,8 +45,9 @@ int run_info(const std::string& path) {
     std::printf("film         %dx%d (crop %d..%d x %d..%d), %d spp, %s filter, EXR %s\n", scene->film.raster.width,
                 scene->film.raster.height, scene->film.crop.x0, scene->film.crop.x1, scene->film.crop.y0,
                 scene->film.crop.y1, scene->spp, scene->filter_type.c_str(), scene->film.half_float ? "half" : "float");
-    std::printf("scene hash   %s (the scene file and %zu referenced file(s), by content)\n", scene_hash(*scene).c_str(),
-                scene->referenced_files.size());
+    std::printf("scene hash   %s (the scene file and %zu referenced file(s), by content%s)\n", scene_hash(*scene).c_str(),
+                scene->referenced_files.size(),
+                scene->settings.empty() ? "" : (", and " + std::to_string(scene->settings.size()) + " --set value(s)").c_str());
     std::printf("camera       %s\n", scene->camera_type.c_str());
     std::printf("integrator   %s\n", scene->integrator_type.c_str());
     std::printf("sampler      %s, seed %llu\n", scene->sampler_type.c_str(), (unsigned long long)scene->seed);
@@ -70,13 +74,15 @@ CommandRunner add_info_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand("info", "Validate a scene and print a summary (or list the plugins)");
     command->add_option("scene", *path, "Scene file (JSON)")->check(CLI::ExistingFile);
     command->add_flag("--plugins", *plugins, "List every registered plugin type");
-    return [path, plugins] {
+    auto options = std::make_shared<SceneOptions>();
+    add_scene_options(*command, *options);
+    return [path, plugins, options] {
         if (*plugins) {
             print_all_plugins();
             return kExitOk;
         }
         if (path->empty()) throw CLI::RequiredError("scene");
-        return run_info(*path);
+        return run_info(*path, *options);
     };
 }
 
