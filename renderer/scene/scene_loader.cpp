@@ -11,6 +11,7 @@
 #include "renderer/plugin/sampler_registry.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
+#include "renderer/scene/named_values.h"
 #include "renderer/scene/scene_includes.h"
 #include "renderer/scene/transform_parser.h"
 #include "renderer/scene/world_limit.h"
@@ -236,6 +237,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     SceneDocument read = read_scene_document(path, overrides.max_scene_file_bytes, context->memory.get());
     const JsonValue& document = read.root;
     if (document.is_object()) apply_scene_settings(read.root, overrides.settings);  // else the error below
+    substitute_named_values(read.root, *context->memory);
     for (const SceneSetting& setting : overrides.settings)
         if (!setting.recorded_apart) loaded->settings.push_back(setting.text());
     context->file = path;
@@ -245,8 +247,9 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     SceneNode root(document, "", context);
     if (!document.is_object()) root.fail("a scene file must contain a JSON object");
     // Reject misspelt sections before anything slow (mesh loading) happens.
-    for (const char* key : {"isotrace", "description", "colour", "film", "camera", "sampler", "integrator", "materials",
-                            "lights", "objects"})
+    // "include" and "values" are gone by now, but named here for the spelling suggestions.
+    for (const char* key : {"isotrace", "description", "include", "values", "colour", "film", "camera", "sampler",
+                            "integrator", "materials", "lights", "objects"})
         root.optional_value(key);
     root.finish();
     DefaultSections defaults;

@@ -223,7 +223,20 @@ TEST_F(LoadScene, CropErrors) {
 TEST_F(LoadScene, UnknownTopLevelKey) {
     expect_error(minimal_scene("  \"lights_\": [],\n"), 4, 14, "lights_",
                  "unknown key \"lights_\" (did you mean \"lights\"?); known keys here: camera, colour, description, "
-                 "film, integrator, isotrace, lights, materials, objects, sampler");
+                 "film, include, integrator, isotrace, lights, materials, objects, sampler, values");
+}
+
+TEST_F(LoadScene, NamedValuesAreSubstitutedAndOverridable) {
+    const std::string scene = minimal_scene("  \"values\": {\"fov\": 30, \"spp\": 8},\n"
+                                            "  \"film\": {\"spp\": {\"$value\": \"spp\"}, \"resolution\": [8, 8]},\n");
+    EXPECT_EQ(load(scene)->spp, 8);
+    SceneOverrides overrides;
+    overrides.settings = {parse_scene_setting("values.spp=3")};
+    EXPECT_EQ(load(scene, overrides)->spp, 3);
+    // A value out of range for the field that uses it is reported where it is written, with the field's path.
+    overrides.settings = {parse_scene_setting("values.spp=0")};
+    testing::expect_input_error([&] { load_scene(write(scene), overrides); }, "--set values.spp=0", 1, 18, "film.spp",
+                                "--set values.spp=0:1:18: film.spp: value 0 out of range: must be in [1, 16777216]");
 }
 
 TEST_F(LoadScene, UnknownMaterialName) {

@@ -2043,10 +2043,10 @@ case_depth_non_finite_range() {  # wrote a black PNG with exit 0
 # ---- scene authoring: comments, trailing commas, includes, --set -------------------------------------------
 
 authoring=tests/cli/data/authoring
-authoring_sets=(--set film.spp=4 --set camera.fov=30 --set materials.gold.roughness=0.2 --set 'objects.dog.material="gold"')
+authoring_sets=(--set film.spp=4 --set values.fov=30 --set materials.gold.roughness=0.2 --set 'objects.dog.material="gold"')
 
-# A scene with comments, trailing commas and includes (whose mesh path resolves beside the included file), with
-# --set values, renders exactly as its plain equivalent; the overrides are in the metadata and the scene hash.
+# A scene with comments, trailing commas, includes (whose mesh path resolves beside the included file) and a named
+# value, with --set values, renders exactly as its plain equivalent; the overrides are in the metadata and the hash.
 case_authoring_equivalent() {
   cli_expect 0 render "$authoring/plain.json" --quiet -o "$work/plain.exr"
   cli_expect 0 render "$authoring/authored.json" "${authoring_sets[@]}" --quiet -o "$work/authored.exr"
@@ -2055,7 +2055,7 @@ case_authoring_equivalent() {
   cli_expect 0 render "$authoring/authored.json" --spp 4 --quiet -o "$work/no_set.exr"
   ! idiff -fail 0 "$work/plain.exr" "$work/no_set.exr" >/dev/null 2>&1 || fail "the --set values changed nothing"
   exr_info "$work/authored.exr" "$work/info"
-  expect_in "$work/info" 'isotrace:set: "[\"film.spp=4\",\"camera.fov=30\",\"materials.gold.roughness=0.2\",\"objects.dog.material=\\\"gold\\\"\"]"'
+  expect_in "$work/info" 'isotrace:set: "[\"film.spp=4\",\"values.fov=30\",\"materials.gold.roughness=0.2\",\"objects.dog.material=\\\"gold\\\"\"]"'
   exr_info "$work/no_set.exr" "$work/info"
   ! grep -q "isotrace:set" "$work/info" || fail "isotrace:set written without --set"
   # The hash covers the included files and the --set values; --spp (recorded on its own) leaves it alone.
@@ -2139,6 +2139,9 @@ case_authoring_set_errors() {
     --set 'objects.ball.material="nope"'
   set_fails '--set integrator.type=pth:1:23: integrator.type: unknown integrator type "pth" (did you mean "path"?)' \
     --set integrator.type=pth
+  set_fails '--set camera.fov={"$value": "fv"}:1:29: camera.fov: unknown value "fv" (did you mean "fov"?)' \
+    --set 'camera.fov={"$value": "fv"}'
+  set_fails '--set values.fov=400:1:18: camera.fov: ' --set values.fov=400
   set_fails '--view ACES 1.0 SDR Video: film.view: unknown view "ACES 1.0 SDR Video" of display "sRGB" (did you mean "ACES 1.0 - SDR Video"?)' \
     --view 'ACES 1.0 SDR Video'
   set_fails '--display sRBG: film.display: unknown display "sRBG" (did you mean "sRGB"?)' --display sRBG
