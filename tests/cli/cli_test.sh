@@ -120,7 +120,7 @@ case_help() {
 
 case_render_help() {
   cli_expect 0 render --help
-  for option in --output --spp --res --threads --seed --aov --stats-json --time --checkpoint --checkpoint-every --resume --tile-size --quiet; do
+  for option in --output --spp --res --threads --seed --aov --stats-json --time --checkpoint --checkpoint-every --resume --tile-size --quiet --set --display --view; do
     expect_in "$work/stdout" "$option" "render --help output"
   done
 }
@@ -2077,7 +2077,16 @@ case_authoring_equivalent() {
   cli_expect 2 render "$work/copy/authored.json" --spp 1 --quiet -o "$work/copy/out.exr" \
     --stats-json "$work/copy/lib/materials.json"
   expect_in "$work/stderr" "an output may not replace an input" stderr
-  # Every command that loads a scene takes --set.
+  # Every command that loads a scene takes --set (and says so in its help); a reference can be made again with them.
+  local command
+  for command in render info depth mesh; do
+    cli_expect 0 "$command" --help
+    expect_in "$work/stdout" "--set" "$command --help output"
+  done
+  cli_expect 0 render "$authoring/authored.json" --reference --spp 4 --res 8x6 --set "description=it's" --quiet \
+    -o "$work/reference.exr"
+  exr_info "$work/reference.exr" "$work/info"
+  expect_in "$work/info" "--reference --res 8x6 --seed 0 --set 'description=it'\\\\''s' --spp 4"
   cli_expect 0 depth "$authoring/authored.json" --set camera.fov=20 -o "$work/range.png" --quiet
   cli_expect 0 mesh "$authoring/authored.json" --set 'objects.ball.shape.radius=0.4' --object ball --depth 3 \
     -o "$work/ball.obj" --quiet
