@@ -47,6 +47,13 @@ void JsonValue::reindex() {
     key_index = std::move(index);
 }
 
+std::uint64_t JsonValue::tree_size() const {
+    std::uint64_t count = 1;
+    for (const JsonValue& item : items) count += item.tree_size();
+    for (const auto& member : members) count += member.second.tree_size();
+    return count;
+}
+
 const char* JsonValue::kind_name(Kind kind) {
     switch (kind) {
         case Kind::Null: return "null";

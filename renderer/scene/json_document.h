@@ -49,6 +49,10 @@ public:
     JsonValue* find(const std::string& key);
     // Brings key_index up to date after members were added (merging includes, --set).
     void reindex();
+    // Values in this tree, itself included.
+    std::uint64_t tree_size() const;
+    // Roughly the bytes of a tree of `values` values, for memory budgets (strings and keys aside).
+    static std::uint64_t tree_bytes(std::uint64_t values) { return values * 2 * sizeof(JsonValue); }
     // "object", "array", ... for messages.
     static const char* kind_name(Kind kind);
 };

@@ -11,13 +11,6 @@ namespace {
 const std::string kSectionName = "values";
 constexpr const char* kReference = "$value";
 
-std::uint64_t count_values(const JsonValue& value) {
-    std::uint64_t count = 1;
-    for (const JsonValue& item : value.items) count += count_values(item);
-    for (const auto& member : value.members) count += count_values(member.second);
-    return count;
-}
-
 class Substitution {
 public:
     Substitution(const JsonValue& values, MemoryBudget& memory) : values_(values), memory_(memory) {
@@ -93,7 +86,7 @@ private:
                              "unknown value \"" + name.string + "\"" + did_you_mean(name.string, names_) +
                                  (known.empty() ? "; the scene defines no \"values\"" : "; defined: " + known));
         }
-        memory_.charge(count_values(*value) * 2 * sizeof(JsonValue), "a copy of the value \"" + name.string + "\"",
+        memory_.charge(JsonValue::tree_bytes(value->tree_size()), "a copy of the value \"" + name.string + "\"",
                        name.location, path);
         reference = *value;  // with the location of its definition, where its text is
     }

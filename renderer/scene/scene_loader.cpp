@@ -236,7 +236,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     if (overrides.max_memory_bytes) context->memory = std::make_shared<MemoryBudget>(*overrides.max_memory_bytes);
     SceneDocument read = read_scene_document(path, overrides.max_scene_file_bytes, context->memory.get());
     const JsonValue& document = read.root;
-    if (document.is_object()) apply_scene_settings(read.root, overrides.settings);  // else the error below
+    if (document.is_object()) apply_scene_settings(read.root, overrides.settings, context->memory.get());  // else the error below
     substitute_named_values(read.root, *context->memory);
     for (const SceneSetting& setting : overrides.settings)
         if (!setting.recorded_apart) loaded->settings.push_back(setting.text());

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "renderer/core/did_you_mean.h"
+#include "renderer/core/memory_budget.h"
 
 namespace isotrace {
 
@@ -61,13 +62,13 @@ void locate_in(JsonValue& value, const SceneSetting& setting) {
     for (auto& member : value.members) locate_in(member.second, setting);
 }
 
-JsonValue parse_value(const SceneSetting& setting) {
+JsonValue parse_value(const SceneSetting& setting, MemoryBudget* memory) {
     if (setting.value.size() > kMaxSettingValueBytes)
         fail_at(setting, setting.value_column,
                 "the value is longer than " + std::to_string(kMaxSettingValueBytes) + " bytes");
     JsonValue value;
     try {
-        value = parse_json(setting.value, setting.origin);
+        value = parse_json(setting.value, setting.origin);  // charged below: a memory error is no syntax error
     } catch (const InputError& error) {
         const std::size_t first = setting.value.find_first_not_of(" \t");
         // Text that starts like an array, object or string was meant as JSON; any other is a bare word.
@@ -83,6 +84,9 @@ JsonValue parse_value(const SceneSetting& setting) {
         value.location = {setting.origin, 1, 1};
     }
     locate_in(value, setting);
+    if (memory)
+        memory->charge(setting.value.size() + JsonValue::tree_bytes(value.tree_size()), "the value of " + setting.origin,
+                       value.location, setting.path);
     return value;
 }
 
@@ -123,9 +127,9 @@ std::size_t element_index(const JsonValue& array, const Key& key, const std::str
     return *found;
 }
 
-void apply(JsonValue& document, const SceneSetting& setting) {
+void apply(JsonValue& document, const SceneSetting& setting, MemoryBudget* memory) {
     const std::vector<Key> keys = split_path(setting);
-    JsonValue value = parse_value(setting);
+    JsonValue value = parse_value(setting, memory);
     JsonValue* node = &document;
     std::string path;  // as the loader names it: objects[2].shape
     for (std::size_t i = 0; i < keys.size(); ++i) {
@@ -217,10 +221,10 @@ SceneSetting seed_setting(std::uint64_t seed) {
     return render_option("sampler.seed", std::to_string(seed), "--seed " + std::to_string(seed));
 }
 
-void apply_scene_settings(JsonValue& document, const std::vector<SceneSetting>& settings) {
+void apply_scene_settings(JsonValue& document, const std::vector<SceneSetting>& settings, MemoryBudget* memory) {
     if (settings.size() > kMaxSettings)
         throw InputError({}, "--set", "more than " + std::to_string(kMaxSettings) + " overrides");
-    for (const SceneSetting& setting : settings) apply(document, setting);
+    for (const SceneSetting& setting : settings) apply(document, setting, memory);
 }
 
 }  // namespace isotrace

@@ -11,6 +11,8 @@
 
 namespace isotrace {
 
+class MemoryBudget;
+
 // Bounds on one override: the path's length and number of keys, the value's length.
 constexpr std::size_t kMaxSettingPathBytes = 1024;
 constexpr std::size_t kMaxSettingPathKeys = 32;
@@ -44,7 +46,7 @@ SceneSetting seed_setting(std::uint64_t seed);     // sampler.seed, as "--seed N
 
 // Applies the settings in order (a later one wins). Every key of a path but the last must exist, unless the setting
 // creates sections; the last may be new (the loader then reports it if it is unknown). Throws InputError at the
-// setting for a path that leads nowhere, with a spelling suggestion.
-void apply_scene_settings(JsonValue& document, const std::vector<SceneSetting>& settings);
+// setting for a path that leads nowhere, with a spelling suggestion. The values' trees are charged to `memory`.
+void apply_scene_settings(JsonValue& document, const std::vector<SceneSetting>& settings, MemoryBudget* memory = nullptr);
 
 }  // namespace isotrace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/core/memory_budget.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {
@@ -112,6 +113,20 @@ TEST(SceneSettings, MalformedJsonValuesAreErrorsAtTheirPosition) {
     EXPECT_EQ(std::string(error.what()),
               "--set film.resolution=[1, 2:1:28: film.resolution: expected ',' or ']' but the file ended");
     EXPECT_EQ(error_of({"film.view={\"a\" 1}"}).location().column, 22);
+}
+
+TEST(SceneSettings, ValuesAreChargedToTheMemoryBudget) {
+    std::string list = "film.resolution=[0";
+    for (int i = 0; i < 20000; ++i) list += ", 0";
+    JsonValue document = parse_json(kScene, "scene.json");
+    MemoryBudget memory(std::uint64_t(1) << 20);
+    try {
+        apply_scene_settings(document, {parse_scene_setting(list + "]")}, &memory);
+        ADD_FAILURE() << "a 20000-element value fitted in 1 MiB";
+    } catch (const InputError& error) {
+        EXPECT_NE(error.problem().find("the value of --set film.resolution=[0, 0"), std::string::npos) << error.what();
+        EXPECT_EQ(error.field(), "film.resolution");
+    }
 }
 
 TEST(SceneSettings, PathsAndValuesAreBounded) {
