@@ -76,7 +76,10 @@ JsonValue parse_value(const SceneSetting& setting, MemoryBudget* memory) {
             JsonValue located;
             located.location = error.location();
             locate_in(located, setting);
-            throw InputError(located.location, setting.path, error.problem());
+            std::string problem = error.problem();  // the parser speaks of files
+            const std::size_t ended = problem.find("the file ended");
+            if (ended != std::string::npos) problem.replace(ended, 14, "the value ended");
+            throw InputError(located.location, setting.path, problem);
         }
         value = JsonValue();
         value.kind = JsonValue::Kind::String;

@@ -111,7 +111,7 @@ TEST(SceneSettings, ShortcutsCreateMissingSections) {
 TEST(SceneSettings, MalformedJsonValuesAreErrorsAtTheirPosition) {
     const InputError error = error_of({"film.resolution=[1, 2"});
     EXPECT_EQ(std::string(error.what()),
-              "--set film.resolution=[1, 2:1:28: film.resolution: expected ',' or ']' but the file ended");
+              "--set film.resolution=[1, 2:1:28: film.resolution: expected ',' or ']' but the value ended");
     EXPECT_EQ(error_of({"film.view={\"a\" 1}"}).location().column, 22);
 }
 
