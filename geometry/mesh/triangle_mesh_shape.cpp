@@ -200,7 +200,7 @@ TriangleMeshData parse_inline_mesh(const SceneNode& node) {
         mesh.triangles.push_back(triangle);
     }
     try {
-        mesh.validate(node.context().file);
+        mesh.validate(node.location().file);
     } catch (const InputError& error) {
         node.fail((error.field().empty() ? "" : error.field() + ": ") + error.problem());
     }

@@ -157,7 +157,7 @@ TEST(FlatLambertianPackets, KernelForThisCpu) {
 TEST(FlatLambertianPackets, RendersIdenticallyAcrossThreadsTilesAndResumption) {
     const SceneFile file(room(R"({"type": "path", "max_depth": 6})", kTwoLights));
     SceneOverrides overrides;
-    overrides.spp = 13;
+    overrides.settings.push_back(spp_setting(13));
     const auto loaded = load_scene(file.path(), overrides);
     ASSERT_NE(loaded->scene->flat_lambertian(), nullptr);
     const auto render = [&](int threads, int tile_size, std::unique_ptr<Film> film, int spp) {

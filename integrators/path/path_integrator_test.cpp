@@ -31,8 +31,8 @@ Rendered render_text(const std::string& scene_text, int spp, std::uint64_t seed 
     TemporaryDirectory directory("path_integrator");
     const auto path = directory.write("scene.json", scene_text);
     SceneOverrides overrides;
-    overrides.spp = spp;
-    overrides.seed = seed;
+    overrides.settings.push_back(spp_setting(spp));
+    overrides.settings.push_back(seed_setting(seed));
     const auto scene = load_scene(path.string(), overrides);
     RenderOptions options;
     options.spp = scene->spp;

@@ -149,9 +149,9 @@ std::string two_balls(double ball_reflectance) {
 
 ImageBuffer render_file(const std::string& path, int spp, std::uint64_t seed, std::optional<RasterSize> resolution = {}) {
     SceneOverrides overrides;
-    overrides.spp = spp;
-    overrides.seed = seed;
-    overrides.resolution = resolution;
+    overrides.settings.push_back(spp_setting(spp));
+    overrides.settings.push_back(seed_setting(seed));
+    if (resolution) overrides.settings.push_back(resolution_setting(*resolution));
     overrides.extra_aovs = {Aov::Variance, Aov::SampleCount};  // what isotrace render --reference adds
     const auto scene = load_scene(path, overrides);
     RenderOptions options;

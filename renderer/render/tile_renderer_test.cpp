@@ -127,8 +127,8 @@ std::string test_scene(const std::string& film_extra = "", const std::string& in
 // test_scene() with this integrator, loaded at this spp and resolution.
 std::unique_ptr<LoadedScene> load_test_scene(int spp, RasterSize resolution, const std::string& integrator) {
     SceneOverrides overrides;
-    overrides.spp = spp;
-    overrides.resolution = resolution;
+    overrides.settings.push_back(spp_setting(spp));
+    overrides.settings.push_back(resolution_setting(resolution));
     const SceneFile file(test_scene("", integrator));
     return load_scene(file.path(), overrides);
 }
@@ -222,7 +222,7 @@ TEST(TileRenderer, ImagesDependOnTheSeed) {
     // The determinism test above would pass trivially if nothing were random: a different seed must differ.
     const SceneFile a(test_scene()), b(test_scene());
     SceneOverrides other_seed;
-    other_seed.seed = 8;
+    other_seed.settings.push_back(seed_setting(8));
     const auto scene_a = load_scene(a.path());
     const auto scene_b = load_scene(b.path(), other_seed);
     const ImageBuffer ia = render_with_threads(*scene_a, 2, options_for(*scene_a, 16)).film->resolve();
@@ -234,8 +234,8 @@ TEST(TileRenderer, ImagesDependOnTheSeed) {
 TEST(TileRenderer, SampleBudgetIsMetExactly) {
     for (int spp : {1, 2, 5, 13}) {
         SceneOverrides overrides;
-        overrides.spp = spp;
-        overrides.resolution = RasterSize{20, 12};
+        overrides.settings.push_back(spp_setting(spp));
+        overrides.settings.push_back(resolution_setting(RasterSize{20, 12}));
         const SceneFile file(test_scene());
         const auto scene = load_scene(file.path(), overrides);
         for (int threads : {1, 2}) {
@@ -259,8 +259,8 @@ TEST(TileRenderer, SampleBudgetIsMetExactly) {
 
 TEST(TileRenderer, CancellingFromTheProgressCallbackStopsMidPass) {
     SceneOverrides overrides;
-    overrides.spp = 64;
-    overrides.resolution = RasterSize{12, 10};
+    overrides.settings.push_back(spp_setting(64));
+    overrides.settings.push_back(resolution_setting(RasterSize{12, 10}));
     const SceneFile file(test_scene("", R"({"type": "test_wait_for_cancel"})"));
     const auto scene = load_scene(file.path(), overrides);
     const std::int64_t pixels = scene->film.crop.area();
@@ -310,7 +310,7 @@ TEST(TileRenderer, CancellingFromTheProgressCallbackStopsMidPass) {
 
 TEST(TileRenderer, CancelBeforeTheStartRendersNothing) {
     SceneOverrides overrides;
-    overrides.resolution = RasterSize{8, 8};
+    overrides.settings.push_back(resolution_setting(RasterSize{8, 8}));
     const SceneFile file(test_scene());
     const auto scene = load_scene(file.path(), overrides);
     std::atomic<bool> cancel{true};
@@ -326,8 +326,8 @@ TEST(TileRenderer, CancelBeforeTheStartRendersNothing) {
 
 TEST(TileRenderer, TimeBudgetEndsTheRender) {
     SceneOverrides overrides;
-    overrides.spp = 1 << 24;
-    overrides.resolution = RasterSize{12, 10};
+    overrides.settings.push_back(spp_setting(1 << 24));
+    overrides.settings.push_back(resolution_setting(RasterSize{12, 10}));
     const SceneFile file(test_scene());
     const auto scene = load_scene(file.path(), overrides);
     RenderOptions options = options_for(*scene, 4);
@@ -428,8 +428,8 @@ TEST(TileRenderer, ResumingAfterATimeBudgetIsBitIdentical) {
 
 TEST(TileRenderer, HugeTimeBudgetIsNoProblem) {
     SceneOverrides overrides;
-    overrides.spp = 6;
-    overrides.resolution = RasterSize{8, 6};
+    overrides.settings.push_back(spp_setting(6));
+    overrides.settings.push_back(resolution_setting(RasterSize{8, 6}));
     const SceneFile file(test_scene());
     const auto scene = load_scene(file.path(), overrides);
     RenderOptions options = options_for(*scene, 4);
@@ -441,8 +441,8 @@ TEST(TileRenderer, HugeTimeBudgetIsNoProblem) {
 
 TEST(TileRenderer, NonFiniteRadianceIsCountedAndDropped) {
     SceneOverrides overrides;
-    overrides.resolution = RasterSize{16, 12};
-    overrides.spp = 4;
+    overrides.settings.push_back(resolution_setting(RasterSize{16, 12}));
+    overrides.settings.push_back(spp_setting(4));
     const SceneFile file(test_scene("", R"({"type": "test_bad_values"})"));
     const auto scene = load_scene(file.path(), overrides);
     const std::uint64_t before = counters::totals().nan_samples;

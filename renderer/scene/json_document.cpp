@@ -29,6 +29,31 @@ const JsonValue* JsonValue::find(const std::string& key) const {
     return nullptr;
 }
 
+JsonValue* JsonValue::find(const std::string& key) {
+    return const_cast<JsonValue*>(static_cast<const JsonValue*>(this)->find(key));
+}
+
+namespace {
+constexpr std::size_t kIndexedObjectSize = 16;  // objects with more keys get a key_index
+}  // namespace
+
+void JsonValue::reindex() {
+    if (members.size() <= kIndexedObjectSize) {
+        key_index.reset();
+        return;
+    }
+    auto index = std::make_shared<std::unordered_map<std::string, std::size_t>>();
+    for (std::size_t i = 0; i < members.size(); ++i) index->emplace(members[i].first, i);
+    key_index = std::move(index);
+}
+
+std::uint64_t JsonValue::tree_size() const {
+    std::uint64_t count = 1;
+    for (const JsonValue& item : items) count += item.tree_size();
+    for (const auto& member : members) count += member.second.tree_size();
+    return count;
+}
+
 const char* JsonValue::kind_name(Kind kind) {
     switch (kind) {
         case Kind::Null: return "null";
@@ -44,14 +69,14 @@ const char* JsonValue::kind_name(Kind kind) {
 namespace {
 
 constexpr int kMaxDepth = 256;  // nested arrays/objects; deeper is surely an error and would exhaust the stack
-constexpr std::size_t kIndexedObjectSize = 16;  // objects with more keys get a key_index
-
 // Resident bytes per value at the parse's peak, beyond its strings: the value itself in its parent's vector, the
 // vector's spare capacity and, while a vector grows, the old block beside the new one (measured; docs/reliability.md).
 constexpr std::uint64_t kBytesPerValue = 2 * sizeof(JsonValue) + 64;
 // An object's member adds its key's std::string beside the value (with spare capacity), and its node in the key
 // index (a copy of the key, its hash, the bucket).
 constexpr std::uint64_t kBytesPerMember = 2 * sizeof(std::string) + 96;
+// Whole numbers from here on are not all exact in a double: their digits are kept.
+constexpr double kExactIntegerLimit = 9007199254740992.0;  // 2^53
 // The memory budget is charged this much ahead, not once per value.
 constexpr std::uint64_t kChargeStep = std::uint64_t(1) << 20;
 
@@ -94,8 +119,27 @@ private:
         ++pos_;
     }
 
+    // Whitespace and comments: `// ...` to the end of the line, `/* ... */` (not nested). A '/' that starts
+    // neither is left for the caller to report.
     void skip_whitespace() {
-        while (!at_end() && (peek() == ' ' || peek() == '\t' || peek() == '\n' || peek() == '\r')) advance();
+        for (;;) {
+            while (!at_end() && (peek() == ' ' || peek() == '\t' || peek() == '\n' || peek() == '\r')) advance();
+            if (peek() != '/' || pos_ + 1 >= text_.size()) return;
+            const char next = text_[pos_ + 1];
+            if (next == '/') {
+                while (!at_end() && peek() != '\n') advance();
+            } else if (next == '*') {
+                const SourceLocation opening = here();
+                advance();
+                advance();
+                while (!at_end() && !(peek() == '*' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '/')) advance();
+                if (at_end()) throw InputError(opening, "", "unterminated comment (missing closing '*/')");
+                advance();
+                advance();
+            } else {
+                return;
+            }
+        }
     }
 
     void expect(char c, const char* what) {
@@ -138,7 +182,14 @@ private:
             account(heap_bytes(value.string.size()));
         } else if (c == '-' || (c >= '0' && c <= '9')) {
             value.kind = JsonValue::Kind::Number;
+            const std::size_t start = pos_;
             value.number = parse_number();
+            if (value.number >= kExactIntegerLimit &&
+                std::all_of(text_.begin() + std::ptrdiff_t(start), text_.begin() + std::ptrdiff_t(pos_),
+                            [](char d) { return d >= '0' && d <= '9'; })) {
+                value.string.assign(text_, start, pos_ - start);
+                account(heap_bytes(value.string.size()));
+            }
         } else if (match_word("true")) {
             value.kind = JsonValue::Kind::Bool;
             value.boolean = true;
@@ -183,7 +234,8 @@ private:
             skip_whitespace();
             if (peek() == ',') {
                 advance();
-                continue;
+                skip_whitespace();
+                if (peek() != '}') continue;  // a trailing comma before the closing brace is allowed
             }
             expect('}', "',' or '}'");
             if (value.members.size() > kIndexedObjectSize) value.key_index = std::move(index);
@@ -205,7 +257,8 @@ private:
             skip_whitespace();
             if (peek() == ',') {
                 advance();
-                continue;
+                skip_whitespace();
+                if (peek() != ']') continue;  // a trailing comma before the closing bracket is allowed
             }
             expect(']', "',' or ']'");
             return;

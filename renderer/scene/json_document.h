@@ -28,6 +28,7 @@ public:
     Kind kind = Kind::Null;
     bool boolean = false;
     double number = 0;
+    // A String's text; for a whole Number beyond 2^53, which a double cannot hold exactly, its digits (64-bit seeds).
     std::string string;
     std::vector<JsonValue> items;                           // Array
     std::vector<std::pair<std::string, JsonValue>> members;  // Object, in file order
@@ -45,6 +46,13 @@ public:
 
     // Member by key or nullptr (objects only).
     const JsonValue* find(const std::string& key) const;
+    JsonValue* find(const std::string& key);
+    // Brings key_index up to date after members were added (merging includes, --set).
+    void reindex();
+    // Values in this tree, itself included.
+    std::uint64_t tree_size() const;
+    // Roughly the bytes of a tree of `values` values, for memory budgets (strings and keys aside).
+    static std::uint64_t tree_bytes(std::uint64_t values) { return values * 2 * sizeof(JsonValue); }
     // "object", "array", ... for messages.
     static const char* kind_name(Kind kind);
 };
@@ -54,7 +62,8 @@ constexpr std::uint64_t kDefaultMaxJsonFileBytes = std::uint64_t(64) << 20;
 
 class MemoryBudget;
 
-// Parses strict JSON (RFC 8259). Duplicate keys and malformed text throw InputError with the position. With a
+// Parses JSON (RFC 8259) with two additions for files people write: comments (`// ...` to the end of the line,
+// `/* ... */`) and a trailing comma after the last element of an array or object. Duplicate keys and malformed text throw InputError with the position. With a
 // `memory` budget, the text and the tree are charged to it while the tree grows (a few bytes of text make a value
 // of about a hundred and fifty), so a document too large for it stops the parse where it is refused.
 JsonValue parse_json(const std::string& text, const std::string& file_name, MemoryBudget* memory = nullptr);

@@ -111,6 +111,39 @@ TEST(ParseJson, ArraysAndObjectsKeepFileOrder) {
     EXPECT_EQ(z->find("z"), nullptr);  // not an object
 }
 
+// --- Comments and trailing commas -------------------------------------------------------------------
+
+TEST(ParseJson, TrailingCommasAreAllowed) {
+    const JsonValue v = parse("{\"a\": [1, 2,], \"b\": {\"c\": 3,},\n}");
+    ASSERT_TRUE(v.is_object());
+    ASSERT_EQ(v.members.size(), 2u);
+    EXPECT_EQ(v.find("a")->items.size(), 2u);
+    EXPECT_EQ(v.find("b")->members.size(), 1u);
+    EXPECT_EQ(parse("[1 , ]").items.size(), 1u);
+    EXPECT_EQ(parse("[[],\n // last\n]").items.size(), 1u);
+}
+
+TEST(ParseJson, CommentsAreSkippedAndPositionsStayExact) {
+    const JsonValue v = parse("// a scene\n"
+                              "{ /* first */ \"a\": 1, // one\n"
+                              "  /* several\n     lines */ \"b\": [2, /* x */ 3],\n"
+                              "  \"c\": \"// not a comment /* either */\"\n"
+                              "} // end");
+    ASSERT_TRUE(v.is_object());
+    expect_location(v, 2, 1);
+    expect_location(*v.find("a"), 2, 20);
+    expect_location(*v.find("b"), 4, 20);
+    expect_location(v.find("b")->items[0], 4, 21);
+    expect_location(v.find("b")->items[1], 4, 32);
+    EXPECT_EQ(v.find("c")->string, "// not a comment /* either */");
+    expect_location(*v.find("c"), 5, 8);
+}
+
+TEST(ParseJson, ErrorsAfterCommentsHaveExactPositions) {
+    expect_error_at("/* a\n b */ {\"a\": // c\n tru}", 3, 2, "test.json:3:2: expected a JSON value but found 't'");
+    expect_error_at("// only a comment", 1, 18, "test.json:1:18: expected a JSON value but the file ended");
+}
+
 TEST(ParseJson, KindNames) {
     EXPECT_STREQ(JsonValue::kind_name(JsonValue::Kind::Null), "null");
     EXPECT_STREQ(JsonValue::kind_name(JsonValue::Kind::Bool), "boolean");
@@ -180,9 +213,22 @@ TEST(ParseJsonErrors, UnterminatedStringIsReportedWhereItStarts) {
     expect_error_at("\"abc\\", 1, 1, "test.json:1:1: unterminated string (missing closing '\"')");
 }
 
-TEST(ParseJsonErrors, TrailingComma) {
-    expect_error_at("[1, 2,]", 1, 7, "test.json:1:7: expected a JSON value but found ']'");
-    expect_error_at("{\"a\": 1,\n}", 2, 1, "test.json:2:1: expected a quoted key but found '}'");
+TEST(ParseJsonErrors, ACommaNeedsAnElementBeforeIt) {
+    expect_error_at("[,]", 1, 2, "test.json:1:2: expected a JSON value but found ','");
+    expect_error_at("[1,,]", 1, 4, "test.json:1:4: expected a JSON value but found ','");
+    expect_error_at("{,}", 1, 2, "test.json:1:2: expected a quoted key but found ','");
+    expect_error_at("{\"a\": 1,,}", 1, 9, "test.json:1:9: expected a quoted key but found ','");
+}
+
+TEST(ParseJsonErrors, UnterminatedBlockCommentIsReportedWhereItStarts) {
+    expect_error_at("{\n  /* note\n \"a\": 1 }", 2, 3, "test.json:2:3: unterminated comment (missing closing '*/')");
+    expect_error_at("[1] /*", 1, 5, "test.json:1:5: unterminated comment (missing closing '*/')");
+    expect_error_at("[1] /*/", 1, 5, "test.json:1:5: unterminated comment (missing closing '*/')");
+}
+
+TEST(ParseJsonErrors, ASlashThatStartsNoCommentIsNotJson) {
+    expect_error_at("[1, / 2]", 1, 5, "test.json:1:5: expected a JSON value but found '/'");
+    expect_error_at("[1] /", 1, 5, "test.json:1:5: unexpected text after the end of the JSON document");
 }
 
 TEST(ParseJsonErrors, MissingColonOrComma) {
@@ -290,12 +336,12 @@ TEST(ParseJsonFile, ReadsAFileAndNamesItInPositions) {
     EXPECT_EQ(root.find("a")->items[1].location.line, 2);
     EXPECT_EQ(root.find("a")->items[1].location.column, 12);
 
-    const std::string bad = dir.write("bad.json", "{\n  \"a\": [1, 2,]\n}\n").string();
+    const std::string bad = dir.write("bad.json", "{\n  \"a\": [1, 2,,]\n}\n").string();
     try {
         parse_json_file(bad);
         FAIL() << "expected an InputError";
     } catch (const InputError& error) {
-        EXPECT_EQ(std::string(error.what()), bad + ":2:14: expected a JSON value but found ']'");
+        EXPECT_EQ(std::string(error.what()), bad + ":2:14: expected a JSON value but found ','");
     }
 }
 

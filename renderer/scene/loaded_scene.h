@@ -16,6 +16,7 @@
 #include "renderer/sampling/sampler.h"
 #include "renderer/scene/json_document.h"
 #include "renderer/scene/render_scene.h"
+#include "renderer/scene/scene_settings.h"
 
 namespace isotrace {
 
@@ -25,9 +26,8 @@ constexpr int kMaxSamplesPerPixel = 1 << 24;
 
 // Command-line values that replace the scene's.
 struct SceneOverrides {
-    std::optional<int> spp;
-    std::optional<RasterSize> resolution;
-    std::optional<std::uint64_t> seed;
+    // Scene values replaced before the scene is validated (--set, --spp, ...), in order.
+    std::vector<SceneSetting> settings;
     std::vector<Aov> extra_aovs;
     // Memory limit for the estimates charged before large allocations (film, textures, generated elements);
     // unset = MemoryBudget's default, 80 % of physical memory.
@@ -52,11 +52,14 @@ struct LoadedScene {
     std::uint64_t seed = 0;
     std::string camera_type, integrator_type, sampler_type, filter_type;
     std::string display, view;  // for display-referred outputs; empty = the config's defaults
-    std::vector<std::filesystem::path> referenced_files;  // external files the scene names, sorted
+    std::vector<std::filesystem::path> referenced_files;  // external files the scene names or includes, sorted
+    // The settings applied to it as PATH=VALUE, in order, but for those recorded apart (--spp, --res, --seed).
+    std::vector<std::string> settings;
     double parse_seconds = 0;   // reading and validating the file, creating plugins and loading meshes
 };
 
-// Reads and validates the scene and builds its acceleration structures. Throws InputError for bad input.
+// Reads the scene and the files it includes, applies the overrides' settings, validates the result and builds its
+// acceleration structures. Throws InputError for bad input.
 std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOverrides& overrides = {});
 
 }  // namespace isotrace

@@ -11,6 +11,8 @@
 #include "renderer/plugin/sampler_registry.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
+#include "renderer/scene/named_values.h"
+#include "renderer/scene/scene_includes.h"
 #include "renderer/scene/transform_parser.h"
 #include "renderer/scene/world_limit.h"
 
@@ -71,10 +73,9 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
             film.fail_at("resolution", "expected whole pixel counts");
         raster = {int(r[0]), int(r[1])};
     }
-    if (overrides.resolution) raster = *overrides.resolution;
     loaded.film.raster = raster;
     loaded.film.crop = crop_window(film, raster);
-    loaded.spp = overrides.spp.value_or(film.integer_or("spp", 16, NumberRange::between(1, kMaxSamplesPerPixel)));
+    loaded.spp = film.integer_or("spp", 16, NumberRange::between(1, kMaxSamplesPerPixel));
     loaded.film.half_float = film.choice_or("exr_pixel", "float", {"float", "half"}) == "half";
     if (auto aovs = film.optional_value("aovs")) {
         for (const SceneNode& item : aovs->elements()) {
@@ -97,7 +98,6 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
                                           std::to_string(loaded.film.crop.height()) + " pixels with " +
                                           std::to_string(loaded.film.aovs.size()) + " AOV(s)");
     } catch (const InputError& error) {
-        if (overrides.resolution) throw InputError({}, "--res", error.problem());
         film.fail_at("resolution", error.problem());
     }
     loaded.display = film.string_or("display", "");
@@ -234,14 +234,22 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     loaded->path = path;
     auto context = std::make_shared<SceneFileContext>();
     if (overrides.max_memory_bytes) context->memory = std::make_shared<MemoryBudget>(*overrides.max_memory_bytes);
-    const JsonValue document = parse_json_file(path, overrides.max_scene_file_bytes, context->memory.get());
+    SceneDocument read = read_scene_document(path, overrides.max_scene_file_bytes, context->memory.get());
+    const JsonValue& document = read.root;
+    if (document.is_object()) apply_scene_settings(read.root, overrides.settings, context->memory.get());  // else the error below
+    substitute_named_values(read.root, *context->memory);
+    for (const SceneSetting& setting : overrides.settings)
+        if (!setting.recorded_apart) loaded->settings.push_back(setting.text());
     context->file = path;
     context->directory = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
+    context->included_directories = std::move(read.included_directories);
+    for (const std::filesystem::path& file : read.included_files) context->files->add(file);
     SceneNode root(document, "", context);
     if (!document.is_object()) root.fail("a scene file must contain a JSON object");
     // Reject misspelt sections before anything slow (mesh loading) happens.
-    for (const char* key : {"isotrace", "description", "colour", "film", "camera", "sampler", "integrator", "materials",
-                            "lights", "objects"})
+    // "include" and "values" are gone by now, but named here for the spelling suggestions.
+    for (const char* key : {"isotrace", "description", "include", "values", "colour", "film", "camera", "sampler",
+                            "integrator", "materials", "lights", "objects"})
         root.optional_value(key);
     root.finish();
     DefaultSections defaults;
@@ -270,7 +278,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     loaded->camera = camera_registry().create(camera, loaded->film.raster);
 
     const SceneNode sampler = defaults.object_or_defaults(root, "sampler");
-    loaded->seed = overrides.seed.value_or(sampler.unsigned_or("seed", 0));
+    loaded->seed = sampler.unsigned_or("seed", 0);
     loaded->sampler_type = sampler.string_or("type", "sobol");
     loaded->sampler = sampler_registry().create(sampler, loaded->seed, "sobol");
 

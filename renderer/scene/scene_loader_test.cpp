@@ -124,9 +124,9 @@ TEST_F(LoadScene, SceneSettingsReplaceTheDefaults) {
 
 TEST_F(LoadScene, CommandLineOverridesWin) {
     SceneOverrides overrides;
-    overrides.spp = 4;
-    overrides.resolution = RasterSize{32, 16};
-    overrides.seed = 7;
+    overrides.settings.push_back(spp_setting(4));
+    overrides.settings.push_back(resolution_setting(RasterSize{32, 16}));
+    overrides.settings.push_back(seed_setting(7));
     overrides.extra_aovs = {Aov::Albedo, Aov::Depth};
     const auto loaded = load(minimal_scene("  \"film\": {\"resolution\": [320, 200], \"spp\": 64, \"aovs\": [\"depth\", "
                                            "\"normal\"]},\n  \"sampler\": {\"seed\": 3},\n"),
@@ -141,11 +141,62 @@ TEST_F(LoadScene, CommandLineOverridesWin) {
     EXPECT_EQ(loaded->film.aovs, (std::vector<Aov>{Aov::Depth, Aov::Normal, Aov::Albedo}));
 }
 
-TEST_F(LoadScene, OverriddenValuesAreStillValidated) {
+TEST_F(LoadScene, ShortcutsCreateTheSectionsTheySet) {
     SceneOverrides overrides;
-    overrides.spp = 4;
-    expect_error(minimal_scene("  \"film\": {\"spp\": 0},\n"), 4, 19, "film.spp",
-                 "value 0 out of range: must be in [1, 16777216]", overrides);
+    overrides.settings = {spp_setting(4), seed_setting(18446744073709551615ull)};
+    const auto loaded = load(minimal_scene(), overrides);  // no "film", no "sampler"
+    EXPECT_EQ(loaded->spp, 4);
+    EXPECT_EQ(loaded->seed, 18446744073709551615ull);
+    EXPECT_TRUE(loaded->settings.empty());  // recorded apart
+}
+
+TEST_F(LoadScene, OverridesAreValidatedLikeTheFile) {
+    SceneOverrides overrides;
+    overrides.settings.push_back(spp_setting(0));
+    testing::expect_input_error([&] { load_scene(write(minimal_scene()), overrides); }, "--spp 0", 0, 0, "film.spp",
+                                "--spp 0: film.spp: value 0 out of range: must be in [1, 16777216]");
+    overrides.settings = {parse_scene_setting("film.spp=abc")};
+    testing::expect_input_error([&] { load_scene(write(minimal_scene("  \"film\": {},\n")), overrides); },
+                                "--set film.spp=abc", 1, 16, "film.spp",
+                                "--set film.spp=abc:1:16: film.spp: expected a number, found string");
+    // A new last key is checked like any key of the file: an unknown one is named at the override.
+    overrides.settings = {parse_scene_setting("film.sp=256")};
+    testing::expect_input_error([&] { load_scene(write(minimal_scene("  \"film\": {},\n")), overrides); },
+                                "--set film.sp=256", 1, 15, "film.sp",
+                                "--set film.sp=256:1:15: film.sp: unknown key \"sp\" (did you mean \"spp\"?); known keys "
+                                "here: aovs, crop, display, exr_pixel, filter, resolution, spp, view");
+}
+
+TEST_F(LoadScene, OverridesAreListedInOrder) {
+    SceneOverrides overrides;
+    overrides.settings = {parse_scene_setting("camera.fov=30"), spp_setting(2), parse_scene_setting("objects.0.material=\"grey\"")};
+    const auto loaded = load(minimal_scene(), overrides);
+    EXPECT_EQ(loaded->settings, (std::vector<std::string>{"camera.fov=30", "objects.0.material=\"grey\""}));
+    EXPECT_EQ(loaded->spp, 2);
+}
+
+TEST_F(LoadScene, IncludedFilesMergeAndResolveTheirOwnPaths) {
+    dir_.write("lib/meshes/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    dir_.write("lib/objects.json", "{ // objects of the library\n"
+                                   "  \"objects\": [{\"name\": \"tri\", \"material\": \"grey\",\n"
+                                   "               \"shape\": {\"type\": \"mesh\", \"file\": \"meshes/tri.obj\"}},],\n"
+                                   "}\n");
+    const std::string scene = minimal_scene("  \"include\": \"lib/objects.json\",\n");
+    const auto loaded = load(scene);
+    ASSERT_EQ(loaded->scene->objects().size(), 2u);
+    EXPECT_EQ(loaded->scene->objects()[0].name, "tri");  // included arrays come first
+    const std::vector<std::filesystem::path> expected{std::filesystem::absolute(dir_ / "lib/meshes/tri.obj"),
+                                                      std::filesystem::absolute(dir_ / "lib/objects.json")};
+    EXPECT_EQ(loaded->referenced_files, expected);
+}
+
+TEST_F(LoadScene, ErrorsInIncludedFilesNameThem) {
+    const std::string library = dir_.write("lib.json", "{\n  \"materials\": {\"red\": {\"type\": \"diffuse\",\n"
+                                                       "    \"reflectanse\": 0.5}}\n}\n").string();
+    const std::string scene = minimal_scene("  \"include\": [\"lib.json\"],\n");
+    testing::expect_input_error([&] { load(scene); }, library, 3, 20, "materials.red.reflectanse",
+                                library + ":3:20: materials.red.reflectanse: unknown key \"reflectanse\" (did you mean "
+                                          "\"reflectance\"?); known keys here: emission, reflectance, two_sided_emission, type");
 }
 
 TEST_F(LoadScene, CropWindowBecomesPixelBounds) {
@@ -172,7 +223,20 @@ TEST_F(LoadScene, CropErrors) {
 TEST_F(LoadScene, UnknownTopLevelKey) {
     expect_error(minimal_scene("  \"lights_\": [],\n"), 4, 14, "lights_",
                  "unknown key \"lights_\" (did you mean \"lights\"?); known keys here: camera, colour, description, "
-                 "film, integrator, isotrace, lights, materials, objects, sampler");
+                 "film, include, integrator, isotrace, lights, materials, objects, sampler, values");
+}
+
+TEST_F(LoadScene, NamedValuesAreSubstitutedAndOverridable) {
+    const std::string scene = minimal_scene("  \"values\": {\"fov\": 30, \"spp\": 8},\n"
+                                            "  \"film\": {\"spp\": {\"$value\": \"spp\"}, \"resolution\": [8, 8]},\n");
+    EXPECT_EQ(load(scene)->spp, 8);
+    SceneOverrides overrides;
+    overrides.settings = {parse_scene_setting("values.spp=3")};
+    EXPECT_EQ(load(scene, overrides)->spp, 3);
+    // A value out of range for the field that uses it is reported where it is written, with the field's path.
+    overrides.settings = {parse_scene_setting("values.spp=0")};
+    testing::expect_input_error([&] { load_scene(write(scene), overrides); }, "--set values.spp=0", 1, 18, "film.spp",
+                                "--set values.spp=0:1:18: film.spp: value 0 out of range: must be in [1, 16777216]");
 }
 
 TEST_F(LoadScene, UnknownMaterialName) {

@@ -61,9 +61,14 @@ const JsonValue& SceneNode::require(const std::string& key) const {
     return *found;
 }
 
+const std::filesystem::path& SceneFileContext::directory_of(const SourceLocation& where) const {
+    const auto found = included_directories.find(where.file);
+    return found != included_directories.end() ? found->second : directory;
+}
+
 SourceLocation SceneNode::location() const {
     SourceLocation where = value_->location;
-    where.file = context_->file;
+    if (where.file.empty()) where.file = context_->file;
     return where;
 }
 
@@ -147,10 +152,17 @@ int SceneNode::integer_or(const std::string& key, int fallback, NumberRange rang
 }
 
 std::uint64_t SceneNode::unsigned_or(const std::string& key, std::uint64_t fallback) const {
-    if (!lookup(key)) return fallback;
-    const double v = number(key, NumberRange::between(0, 9007199254740992.0));  // exact in a double
+    const JsonValue* found = lookup(key);
+    if (!found) return fallback;
+    const double v = number(key, NumberRange::non_negative());
     if (v != std::floor(v)) fail_at(key, "expected a non-negative integer");
-    return std::uint64_t(v);
+    if (v < 9007199254740992.0) return std::uint64_t(v);  // 2^53: exact in a double
+    std::uint64_t exact = 0;
+    const std::string& digits = found->string;  // the parser keeps a large whole number's digits
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), exact);
+    if (digits.empty() || error != std::errc() || end != digits.data() + digits.size())
+        fail_at(key, "expected a whole number from 0 to 18446744073709551615, written out in digits");
+    return exact;
 }
 
 bool SceneNode::boolean_or(const std::string& key, bool fallback) const {
@@ -218,8 +230,7 @@ Rgb SceneNode::as_colour() const {
     const std::string space = string("space");
     finish();
     if (!context_->colours) fail("no colour system available to convert from \"" + space + "\"");
-    SourceLocation where = json.find("space")->location;  // an unknown space is reported where it is written
-    where.file = context_->file;
+    const SourceLocation where = wrap(*json.find("space"), child_path("space")).location();  // where it is written
     return context_->colours->to_working({float(v.x), float(v.y), float(v.z)}, space, where, child_path("space"));
 }
 
@@ -231,7 +242,8 @@ Rgb SceneNode::colour_or(const std::string& key, const Rgb& fallback) const {
 
 std::filesystem::path SceneNode::file_path(const std::string& key) const {
     const std::filesystem::path given = string(key);
-    const std::filesystem::path resolved = given.is_absolute() ? given : context_->directory / given;
+    const std::filesystem::path resolved =
+        given.is_absolute() ? given : context_->directory_of(value_->find(key)->location) / given;
     try {
         require_regular_input(resolved);
     } catch (const InputError& error) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -26,6 +27,10 @@ class ColourSystem;
 struct SceneFileContext {
     std::string file;                   // as the user named it (used in messages)
     std::filesystem::path directory;    // external files resolve relative to this
+    // The directories of the files the scene includes, by the name their values' locations carry: a relative path
+    // written in an included file resolves against that file's directory.
+    std::map<std::string, std::filesystem::path> included_directories;
+    const std::filesystem::path& directory_of(const SourceLocation& where) const;
     const ColourSystem* colours = nullptr;
     std::shared_ptr<MemoryBudget> memory = std::make_shared<MemoryBudget>();  // large allocations are charged here
     std::shared_ptr<ReferencedFiles> files = std::make_shared<ReferencedFiles>();  // every file_path() resolved
@@ -54,7 +59,7 @@ public:
 
     const JsonValue& json() const { return *value_; }
     const std::string& path() const { return path_; }
-    // Where the node's value is written: its file, line and column.
+    // Where the node's value is written: its file (an included file, or a command-line override), line and column.
     SourceLocation location() const;
     const SceneFileContext& context() const { return *context_; }
     const std::shared_ptr<const SceneFileContext>& shared_context() const { return context_; }
@@ -93,7 +98,7 @@ public:
     // {"rgb": [r, g, b], "space": "<OCIO colour space>"}.
     Rgb colour(const std::string& key) const;
     Rgb colour_or(const std::string& key, const Rgb& fallback) const;
-    // A file path resolved against the scene's directory; must exist.
+    // A file path resolved against the directory of the file the value is written in; must exist.
     std::filesystem::path file_path(const std::string& key) const;
 
     // The value of this node itself (when the node is not an object).

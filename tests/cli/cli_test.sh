@@ -120,7 +120,7 @@ case_help() {
 
 case_render_help() {
   cli_expect 0 render --help
-  for option in --output --spp --res --threads --seed --aov --stats-json --time --checkpoint --checkpoint-every --resume --tile-size --quiet; do
+  for option in --output --spp --res --threads --seed --aov --stats-json --time --checkpoint --checkpoint-every --resume --tile-size --quiet --set --display --view; do
     expect_in "$work/stdout" "$option" "render --help output"
   done
 }
@@ -2179,6 +2179,141 @@ case_depth_non_finite_range() {  # wrote a black PNG with exit 0
   cli_expect 2 depth "$work/scene/scene.json" -o "$work/range.png" --near nan
   expect_in "$work/stderr" "--near" stderr
   expect_no_file "$work/range.png"
+}
+
+# ---- scene authoring: comments, trailing commas, includes, --set -------------------------------------------
+
+authoring=tests/cli/data/authoring
+authoring_sets=(--set film.spp=4 --set values.fov=30 --set materials.gold.roughness=0.2 --set 'objects.dog.material="gold"')
+
+# A scene with comments, trailing commas, includes (whose mesh path resolves beside the included file) and a named
+# value, with --set values, renders exactly as its plain equivalent; the overrides are in the metadata and the hash.
+case_authoring_equivalent() {
+  cli_expect 0 render "$authoring/plain.json" --quiet -o "$work/plain.exr"
+  cli_expect 0 render "$authoring/authored.json" "${authoring_sets[@]}" --quiet -o "$work/authored.exr"
+  idiff -fail 0 -failpercent 0 -warn 0 "$work/plain.exr" "$work/authored.exr" >"$work/idiff" 2>&1 ||
+    { cat "$work/idiff" >&2; fail "the authored scene renders differently from its plain equivalent"; }
+  cli_expect 0 render "$authoring/authored.json" --spp 4 --quiet -o "$work/no_set.exr"
+  ! idiff -fail 0 "$work/plain.exr" "$work/no_set.exr" >/dev/null 2>&1 || fail "the --set values changed nothing"
+  exr_info "$work/authored.exr" "$work/info"
+  expect_in "$work/info" 'isotrace:set: "[\"film.spp=4\",\"values.fov=30\",\"materials.gold.roughness=0.2\",\"objects.dog.material=\\\"gold\\\"\"]"'
+  exr_info "$work/no_set.exr" "$work/info"
+  ! grep -q "isotrace:set" "$work/info" || fail "isotrace:set written without --set"
+  # The hash covers the included files and the --set values; --spp (recorded on its own) leaves it alone.
+  cli_expect 0 info "$authoring/authored.json"
+  expect_in "$work/stdout" "the scene file and 3 referenced file(s)"
+  local plain_hash set_hash spp_hash changed_hash
+  plain_hash=$(sed -n 's/^scene hash *\([0-9a-f]*\).*/\1/p' "$work/stdout")
+  cli_expect 0 info "$authoring/authored.json" --set camera.fov=30
+  set_hash=$(sed -n 's/^scene hash *\([0-9a-f]*\).*/\1/p' "$work/stdout")
+  [[ $set_hash != "$plain_hash" ]] || fail "--set does not change the scene hash"
+  cp -r "$authoring" "$work/copy"
+  cli_expect 0 info "$work/copy/authored.json"
+  [[ $(sed -n 's/^scene hash *\([0-9a-f]*\).*/\1/p' "$work/stdout") == "$plain_hash" ]] || fail "a copy has another hash"
+  echo '// changed' >>"$work/copy/lib/materials.json"
+  cli_expect 0 info "$work/copy/authored.json"
+  changed_hash=$(sed -n 's/^scene hash *\([0-9a-f]*\).*/\1/p' "$work/stdout")
+  [[ $changed_hash != "$plain_hash" ]] || fail "a changed included file does not change the scene hash"
+  # An output may not replace an included file.
+  cli_expect 2 render "$work/copy/authored.json" --spp 1 --quiet -o "$work/copy/out.exr" \
+    --stats-json "$work/copy/lib/materials.json"
+  expect_in "$work/stderr" "an output may not replace an input" stderr
+  # Every command that loads a scene takes --set (and says so in its help); a reference can be made again with them.
+  local command
+  for command in render info depth mesh; do
+    cli_expect 0 "$command" --help
+    expect_in "$work/stdout" "--set" "$command --help output"
+  done
+  cli_expect 0 render "$authoring/authored.json" --reference --spp 4 --res 8x6 --set "description=it's" --quiet \
+    -o "$work/reference.exr"
+  exr_info "$work/reference.exr" "$work/info"
+  expect_in "$work/info" "--reference --res 8x6 --seed 0 --set 'description=it'\\\\''s' --spp 4"
+  cli_expect 0 depth "$authoring/authored.json" --set camera.fov=20 -o "$work/range.png" --quiet
+  cli_expect 0 mesh "$authoring/authored.json" --set 'objects.ball.shape.radius=0.4' --object ball --depth 3 \
+    -o "$work/ball.obj" --quiet
+  cli_expect 2 mesh "$authoring/authored.json" --set 'objects.ball.shape.radius=-1' --object ball -o "$work/b.obj"
+  expect_in "$work/stderr" "--set objects.ball.shape.radius=-1:1:33: objects[1].shape.radius" stderr
+}
+
+# Errors inside included files name the file, line and column; bad includes are reported at the include string.
+case_authoring_include_errors() {
+  mkdir -p "$work/s/lib"
+  printf '{\n  "materials": {"grey": {"type": "diffuse",\n    "reflectanse": 0.5}},\n}\n' >"$work/s/lib/bad_key.json"
+  printf '{\n  "include": [\n    "lib/%s"\n  ],\n  "isotrace": 1,\n  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},\n}\n' \
+    bad_key.json >"$work/s/scene.json"
+  cli_expect 2 render "$work/s/scene.json" --quiet -o "$work/s/out.exr"
+  expect_in "$work/stderr" "$work/s/lib/bad_key.json:3:20: materials.grey.reflectanse: unknown key" stderr
+  expect_in "$work/stderr" 'did you mean "reflectance"' stderr
+  include_fails() {  # include_fails <included file's text or "" for none> <expected text>
+    rm -f "$work/s/lib/included.json"
+    [[ -z $1 ]] || printf '%s' "$1" >"$work/s/lib/included.json"
+    printf '{\n  "include": [\n    "lib/%s"\n  ],\n  "isotrace": 1,\n  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},\n}\n' \
+      included.json >"$work/s/scene.json"
+    cli_expect 2 render "$work/s/scene.json" --quiet -o "$work/s/out.exr"
+    sed 's/^/  stderr: /' "$work/stderr" >&2
+    expect_in "$work/stderr" "$work/s/scene.json:3:5: include: cannot include \"lib/included.json\": " stderr
+    expect_in "$work/stderr" "$2" stderr
+    expect_no_file "$work/s/out.exr"
+  }
+  include_fails "" "lib/included.json: file not found"
+  include_fails '{"a": tru}' "lib/included.json:1:7: expected a JSON value but found 't'"
+  include_fails '[1, 2]' "expected an object of scene sections, found array"
+  include_fails '/* never closed' "lib/included.json:1:1: unterminated comment"
+  # A cycle is reported at the include that closes it.
+  printf '{"include": "../scene.json"}' >"$work/s/lib/included.json"
+  cli_expect 2 render "$work/s/scene.json" --quiet -o "$work/s/out.exr"
+  expect_in "$work/stderr" "$work/s/lib/included.json:1:13: include: cannot include \"../scene.json\": include cycle: \
+$work/s/scene.json -> $work/s/lib/included.json -> $work/s/lib/../scene.json" stderr
+}
+
+# --set paths and values are checked: did-you-mean for unknown keys, positions in the option, exit 2.
+case_authoring_set_errors() {
+  set_fails() {  # set_fails <expected text> <arguments...>
+    local text=$1
+    shift
+    cli_expect 2 render "$authoring/authored.json" --quiet -o "$work/out.png" "$@"
+    sed 's/^/  stderr: /' "$work/stderr" >&2
+    expect_in "$work/stderr" "$text" stderr
+    expect_no_file "$work/out.png"
+  }
+  set_fails '--set flim.spp=3:1:7: no key "flim" in the scene (did you mean "film"?)' --set flim.spp=3
+  set_fails '--set film.sp=256:1:15: film.sp: unknown key "sp" (did you mean "spp"?)' --set film.sp=256
+  set_fails '--set objects.dgo.material=1:1:15: no element of "objects" is named "dgo" (did you mean "dog"?)' \
+    --set objects.dgo.material=1
+  set_fails '--set objects.7.material=1:1:15: no element 7 in "objects"' --set objects.7.material=1
+  set_fails '--set: expected PATH=VALUE' --set film.spp
+  set_fails '--set film.spp=abc:1:16: film.spp: expected a number, found string' --set film.spp=abc
+  set_fails '--set film.resolution=[0, 4]:1:24: film.resolution[0]: value 0 out of range' --set 'film.resolution=[0, 4]'
+  set_fails "--set film.resolution=[1, 2:1:28: film.resolution: expected ',' or ']'" --set 'film.resolution=[1, 2'
+  set_fails '--set objects.ball.material="nope":1:29: objects[1].material: unknown material "nope"' \
+    --set 'objects.ball.material="nope"'
+  set_fails '--set integrator.type=pth:1:23: integrator.type: unknown integrator type "pth" (did you mean "path"?)' \
+    --set integrator.type=pth
+  set_fails '--set camera.fov={"$value": "fv"}:1:29: camera.fov: unknown value "fv" (did you mean "fov"?)' \
+    --set 'camera.fov={"$value": "fv"}'
+  set_fails '--set values.fov=400:1:18: camera.fov: ' --set values.fov=400
+  set_fails '--view ACES 1.0 SDR Video: film.view: unknown view "ACES 1.0 SDR Video" of display "sRGB" (did you mean "ACES 1.0 - SDR Video"?)' \
+    --view 'ACES 1.0 SDR Video'
+  set_fails '--display sRBG: film.display: unknown display "sRBG" (did you mean "sRGB"?)' --display sRBG
+  set_fails '--spp: Value 0 not in range' --spp 0
+  cli_expect 0 render "$authoring/authored.json" --quiet -o "$work/out.png" --spp 1 --res 8x6 \
+    --display sRGB --view Un-tone-mapped
+  cli_expect 2 info "$authoring/authored.json" --set film.spp=0
+  expect_in "$work/stderr" "--set film.spp=0:1:16: film.spp: value 0 out of range" stderr
+}
+
+# A checkpoint remembers the --set values: a resume with other ones is refused, one without them takes them.
+case_authoring_resume_set() {
+  cp "$cornell" "$work/scene.json"
+  cli_expect 0 render "$work/scene.json" --res 16x16 --spp 100000 --time 0.2 --quiet -o "$work/a.exr" \
+    --checkpoint "$work/ck.bin" --set camera.fov=30
+  [[ -s "$work/ck.bin" ]] || fail "no checkpoint after a time budget ended the render"
+  cli_expect 2 render "$work/scene.json" --resume "$work/ck.bin" --quiet -o "$work/b.exr" --set camera.fov=31
+  expect_in "$work/stderr" "--set camera.fov=31 differs from the checkpoint's --set camera.fov=30" stderr
+  expect_no_file "$work/b.exr"
+  cli_expect 0 render "$work/scene.json" --resume "$work/ck.bin" --quiet -o "$work/b.exr" --time 0.1
+  exr_info "$work/b.exr" "$work/info"
+  expect_in "$work/info" 'isotrace:set: "[\"camera.fov=30\"]"'
 }
 
 # ---- dispatch --------------------------------------------------------------------------------------------

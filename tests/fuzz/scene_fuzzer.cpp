@@ -16,10 +16,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The budget also bounds the work of building what it admits (a generated blob group's cells and BVH): 16 MB
     // (about 50k generated elements) keeps every input within the 30 s timeout of the instrumented build (the
     // 100k-element benchmark scene took 17-35 s under ASan and coverage on a shared machine), and far below the
-    // 2 GB RSS limit. The film is overridden to 16x16 (as --res does; the scene's own resolution is still
-    // validated) so that the seed scenes' films do not use up the budget before their objects are loaded.
+    // 2 GB RSS limit. The film is overridden to 16x16 (as --res does: the scene's own resolution is replaced)
+    // so that the seed scenes' films do not use up the budget before their objects are loaded.
     overrides.max_memory_bytes = std::uint64_t(16) << 20;
-    overrides.resolution = isotrace::RasterSize{16, 16};
+    overrides.settings.push_back(isotrace::resolution_setting(isotrace::RasterSize{16, 16}));
     try {
         isotrace::load_scene(isotrace::fuzz::write_input(data, size, ".json"), overrides);
     } catch (const isotrace::InputError&) {

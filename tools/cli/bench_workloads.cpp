@@ -34,8 +34,8 @@ public:
             throw InputError({}, "scene",
                              "\"" + path + "\" does not exist (isotrace bench runs from the source tree)");
         SceneOverrides overrides;
-        overrides.resolution = settings.resolution;
-        overrides.spp = settings.path_spp;
+        if (settings.resolution) overrides.settings.push_back(resolution_setting(*settings.resolution));
+        overrides.settings.push_back(spp_setting(settings.path_spp));
         scene_ = load_scene(path, overrides);
     }
 

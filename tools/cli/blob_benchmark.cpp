@@ -85,7 +85,7 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         SceneBenchmark result;
         result.scene = path;
         SceneOverrides overrides;
-        overrides.resolution = settings.resolution;
+        if (settings.resolution) overrides.settings.push_back(resolution_setting(*settings.resolution));
         log(path + ": loading");
         const std::unique_ptr<LoadedScene> direct = load_scene(path, overrides);
         const auto& primitives = direct->scene->build_statistics().primitives_by_type;

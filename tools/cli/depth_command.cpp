@@ -15,6 +15,7 @@
 #include "tools/cli/command_helpers.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/memory_limit_option.h"
+#include "tools/cli/scene_options.h"
 #include "tools/cli/thread_limit.h"
 
 namespace isotrace::cli {
@@ -30,6 +31,7 @@ struct DepthArguments {
     int threads = 0;
     bool near_dark = false;
     bool quiet = false;
+    SceneOptions scene_options;
 };
 
 // The mapping's ends: the user's, else the nearest and farthest hit.
@@ -80,7 +82,8 @@ int run_depth(const DepthArguments& args) {
     image_encoder_for(args.output);
     if (!args.exr.empty()) image_encoder_for(args.exr);
     SceneOverrides overrides;
-    if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
+    add_scene_settings(args.scene_options, overrides);
+    if (!args.resolution.empty()) overrides.settings.push_back(resolution_setting(parse_resolution(args.resolution, "--res")));
     overrides.max_memory_bytes = max_memory_bytes(args.max_memory);
 
     const int threads = args.threads > 0 ? args.threads : tbb::info::default_concurrency();
@@ -127,11 +130,12 @@ CommandRunner add_depth_command(CLI::App& app) {
     command->add_option("--exr", args->exr, "Also write the raw view depth Z (world units, inf = no hit) as EXR")
         ->type_name("PATH");
     command->add_option("--res", args->resolution,
-                        "Resolution WIDTHxHEIGHT, each side 1 to 65536 (overrides the scene)")
+                        "Resolution WIDTHxHEIGHT, each side 1 to 65536 (sets film.resolution)")
         ->type_name("WIDTHxHEIGHT");
     add_max_memory_option(*command, args->max_memory);
     add_threads_option(*command, args->threads);
     command->add_flag("-q,--quiet", args->quiet, "No summary on stderr");
+    add_scene_options(*command, args->scene_options);
     return [args] { return run_depth(*args); };
 }
 

@@ -14,6 +14,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/render_warnings.h"
 #include "tools/cli/scene_fingerprint.h"
+#include "tools/cli/scene_options.h"
 
 namespace isotrace::cli {
 namespace {
@@ -60,8 +61,14 @@ void print_views(const ColourSystem& colours, const LoadedScene* scene) {
     }
 }
 
-int run_info(const std::string& path) {
-    const std::unique_ptr<LoadedScene> scene = load_scene(path);
+std::unique_ptr<LoadedScene> load_with_options(const std::string& path, const SceneOptions& options) {
+    SceneOverrides overrides;
+    add_scene_settings(options, overrides);
+    return load_scene(path, overrides);
+}
+
+int run_info(const std::string& path, const SceneOptions& options) {
+    const std::unique_ptr<LoadedScene> scene = load_with_options(path, options);
     const BuildStatistics& build = scene->scene->build_statistics();
     const Bounds3f bounds = scene->scene->bounds();
     std::printf("scene        %s%s%s\n", printable(path).c_str(), scene->description.empty() ? "" : " - ",
@@ -69,8 +76,9 @@ int run_info(const std::string& path) {
     std::printf("film         %dx%d (crop %d..%d x %d..%d), %d spp, %s filter, EXR %s\n", scene->film.raster.width,
                 scene->film.raster.height, scene->film.crop.x0, scene->film.crop.x1, scene->film.crop.y0,
                 scene->film.crop.y1, scene->spp, scene->filter_type.c_str(), scene->film.half_float ? "half" : "float");
-    std::printf("scene hash   %s (the scene file and %zu referenced file(s), by content)\n", scene_hash(*scene).c_str(),
-                scene->referenced_files.size());
+    std::printf("scene hash   %s (the scene file and %zu referenced file(s), by content%s)\n", scene_hash(*scene).c_str(),
+                scene->referenced_files.size(),
+                scene->settings.empty() ? "" : (", and " + std::to_string(scene->settings.size()) + " --set value(s)").c_str());
     std::printf("camera       %s\n", scene->camera_type.c_str());
     std::printf("integrator   %s\n", scene->integrator_type.c_str());
     if (const std::string warning = light_left_out_warning(*scene); !warning.empty())
@@ -104,7 +112,9 @@ CommandRunner add_info_command(CLI::App& app) {
     command->add_flag("--views", *views,
                       "List the OCIO config's displays and views (for film.display and film.view), marking the "
                       "defaults and, with a scene, the pair it uses");
-    return [path, plugins, views] {
+    auto options = std::make_shared<SceneOptions>();
+    add_scene_options(*command, *options);
+    return [path, plugins, views, options] {
         if (*plugins) {
             print_all_plugins();
             return kExitOk;
@@ -113,13 +123,13 @@ CommandRunner add_info_command(CLI::App& app) {
             if (path->empty()) {
                 print_views(ColourSystem(""), nullptr);
             } else {
-                const std::unique_ptr<LoadedScene> scene = load_scene(*path);
+                const std::unique_ptr<LoadedScene> scene = load_with_options(*path, *options);
                 print_views(*scene->colours, scene.get());
             }
             return kExitOk;
         }
         if (path->empty()) throw CLI::RequiredError("scene");
-        return run_info(*path);
+        return run_info(*path, *options);
     };
 }
 

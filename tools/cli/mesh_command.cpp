@@ -24,6 +24,7 @@
 #include "tools/cli/ply_writer.h"
 #include "tools/cli/thread_limit.h"
 #include "tools/cli/memory_limit_option.h"
+#include "tools/cli/scene_options.h"
 
 namespace isotrace::cli {
 namespace {
@@ -39,6 +40,7 @@ struct MeshArguments {
     std::size_t error_samples = 20000;
     int threads = 0;
     bool quiet = false;
+    SceneOptions scene_options;
 };
 
 struct ObjectField {
@@ -103,6 +105,7 @@ int run_mesh(const MeshArguments& args) {
     const std::optional<PolygonizeOptions> options = traced ? std::nullopt : std::optional(options_from(args));
     const ThreadLimit limit(args.threads);
     SceneOverrides overrides;
+    add_scene_settings(args.scene_options, overrides);
     overrides.max_memory_bytes = max_memory_bytes(args.max_memory);
     const std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
     check_output_paths({{args.output, "--output"}}, scene_inputs(*scene));
@@ -211,6 +214,7 @@ CommandRunner add_mesh_command(CLI::App& app) {
     add_threads_option(*command, args->threads);
     add_max_memory_option(*command, args->max_memory);
     command->add_flag("-q,--quiet", args->quiet, "No summary");
+    add_scene_options(*command, args->scene_options);
     return [args] { return run_mesh(*args); };
 }
 

@@ -92,14 +92,22 @@ std::string format_number(double value) {
     return text;
 }
 
+// A word for a POSIX shell: in single quotes, each ' written as '\''.
+std::string shell_quoted(const std::string& word) {
+    std::string quoted = "'";
+    for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
 std::string reproduce_command(const ReferenceRequest& request, const ReferenceSettings& settings,
                               const LoadedScene& scene, const RenderResult& result) {
     if (result.partial)
         return "none: the render stopped inside a pass (time budget or interruption), so pixels have different "
                "sample counts (see sampleCount)";
-    const std::string common = "isotrace render " + std::filesystem::path(scene.path).filename().string() +
-                               " --reference --res " + std::to_string(settings.resolution.width) + "x" +
-                               std::to_string(settings.resolution.height) + " --seed " + std::to_string(settings.seed);
+    std::string common = "isotrace render " + std::filesystem::path(scene.path).filename().string() +
+                         " --reference --res " + std::to_string(settings.resolution.width) + "x" +
+                         std::to_string(settings.resolution.height) + " --seed " + std::to_string(settings.seed);
+    for (const std::string& setting : scene.settings) common += " --set " + shell_quoted(setting);
     std::string command = common + " --spp " + std::to_string(result.completed_spp);
     if (result.stopped_at_pass_end) {
         command += "; or " + common + " --target-error " + format_number(*request.target_error);

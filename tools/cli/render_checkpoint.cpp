@@ -30,7 +30,8 @@ void save_checkpoint(const std::filesystem::path& path, const LoadedScene& scene
           {"seed", std::to_string(options.seed)},
           {"aovs", options.extra_aovs},
           {"reference", options.reference},
-          {"target_error", options.target_error ? nlohmann::json(*options.target_error) : nlohmann::json()}}},
+          {"target_error", options.target_error ? nlohmann::json(*options.target_error) : nlohmann::json()},
+          {"set", options.settings}}},
         {"film",
          {{"crop", {crop.x0, crop.y0, crop.x1, crop.y1}},
           {"completed_spp", counts.min},
@@ -40,7 +41,8 @@ void save_checkpoint(const std::filesystem::path& path, const LoadedScene& scene
          "passes end at 1, 2, 4, 8, ... samples, the first at the integrator's group of samples traced together; every "
          "pixel continues at its own sample count"},
     };
-    write_checkpoint(path, {metadata.dump(1), film.state()});
+    // Replacing bytes that are not UTF-8 (a scene path or override given so) rather than refusing to save.
+    write_checkpoint(path, {metadata.dump(1, ' ', false, nlohmann::json::error_handler_t::replace), film.state()});
 }
 
 ResumePoint read_resume_point(const std::filesystem::path& path) {
@@ -81,6 +83,8 @@ ResumePoint read_resume_point(const std::filesystem::path& path) {
             if (!(std::isfinite(*resume.options.target_error) && *resume.options.target_error > 0))
                 throw InputError({source}, "options.target_error", "expected a finite number > 0");
         }
+        // Absent from checkpoints written before scene overrides existed: those had none.
+        if (options.contains("set")) resume.options.settings = options.at("set").get<std::vector<std::string>>();
         resume.metadata.at("scene").at("files").at(0).at("fnv1a64").get<std::string>();
     } catch (const nlohmann::json::exception& error) {
         reject(source, std::string("the checkpoint's metadata is incomplete: ") + error.what());

@@ -22,6 +22,7 @@ struct PixelOptions {
     std::vector<std::string> extra_aovs;  // --aov, by name
     bool reference = false;               // --reference
     std::optional<double> target_error;   // --target-error: decides where the render ends
+    std::vector<std::string> settings;    // the scene overrides (LoadedScene::settings)
 };
 
 // Writes `film` with its metadata atomically to `path`.

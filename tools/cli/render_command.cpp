@@ -26,6 +26,7 @@
 #include "tools/cli/render_pauses.h"
 #include "tools/cli/render_statistics.h"
 #include "tools/cli/render_warnings.h"
+#include "tools/cli/scene_options.h"
 #include "tools/cli/thread_limit.h"
 #include "tools/cli/memory_limit_option.h"
 
@@ -95,6 +96,7 @@ struct RenderArguments {
     bool reference = false;
     std::optional<std::string> target_error;  // parsed by parse_reference_request
     DistributionArguments distribution;
+    SceneOptions scene_options;
 };
 
 constexpr double kDefaultCheckpointSeconds = 300;
@@ -126,6 +128,7 @@ ImageMetadata make_metadata(const LoadedScene& scene, const RenderResult& result
     m.set("isotrace:scene", scene.path);
     m.set("isotrace:spp", std::int64_t(result.completed_spp));
     m.set("isotrace:seed", std::to_string(scene.seed));
+    if (!scene.settings.empty()) m.set("isotrace:set", nlohmann::json(scene.settings).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     m.set("isotrace:integrator", scene.integrator_type);
     for (const auto& [key, value] : scene.integrator->settings()) m.set("isotrace:integrator:" + key, value);
     m.set("isotrace:sampler", scene.sampler_type);
@@ -183,12 +186,26 @@ void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& a
     };
     if (args.spp && *args.spp != recorded.spp)
         mismatch("--spp", std::to_string(*args.spp), std::to_string(recorded.spp));
-    if (overrides.resolution && (overrides.resolution->width != recorded.resolution.width ||
-                                 overrides.resolution->height != recorded.resolution.height))
-        mismatch("--res", args.resolution,
-                 std::to_string(recorded.resolution.width) + "x" + std::to_string(recorded.resolution.height));
-    if (overrides.seed && *overrides.seed != recorded.seed)
+    if (!args.resolution.empty()) {
+        const RasterSize given = parse_resolution(args.resolution, "--res");
+        if (given.width != recorded.resolution.width || given.height != recorded.resolution.height)
+            mismatch("--res", args.resolution,
+                     std::to_string(recorded.resolution.width) + "x" + std::to_string(recorded.resolution.height));
+    }
+    if (!args.seed.empty() && parse_seed(args.seed, "--seed") != recorded.seed)
         mismatch("--seed", args.seed, std::to_string(recorded.seed));
+    std::vector<std::string> given_settings;
+    for (const SceneSetting& setting : overrides.settings)
+        if (!setting.recorded_apart) given_settings.push_back(setting.text());
+    if (!given_settings.empty() && given_settings != recorded.settings) {
+        const auto listed = [](const std::vector<std::string>& texts) {
+            std::string list;
+            for (const std::string& text : texts) list += (list.empty() ? "" : " --set ") + text;
+            return list;
+        };
+        mismatch("--set", listed(given_settings),
+                 recorded.settings.empty() ? "(none)" : "--set " + listed(recorded.settings));
+    }
     if (args.reference && !recorded.reference)
         throw InputError({args.resume}, "", "--reference: the checkpoint is not of a reference render");
     if (args.target_error && reference.target_error != recorded.target_error)
@@ -204,9 +221,15 @@ void take_pixel_options_from(const ResumePoint& resume, const RenderArguments& a
         for (const std::string& name : recorded.extra_aovs) kept += (kept.empty() ? "" : ",") + name;
         mismatch("--aov", args.aovs, kept.empty() ? "(none)" : kept);
     }
-    overrides.spp = recorded.spp;
-    overrides.resolution = recorded.resolution;
-    overrides.seed = recorded.seed;
+    overrides.settings.clear();
+    for (const std::string& text : recorded.settings) {
+        SceneSetting setting = parse_scene_setting(text);
+        setting.create_sections = true;  // it may stand for --view or --display, which create "film"
+        overrides.settings.push_back(std::move(setting));
+    }
+    overrides.settings.push_back(spp_setting(recorded.spp));
+    overrides.settings.push_back(resolution_setting(recorded.resolution));
+    overrides.settings.push_back(seed_setting(recorded.seed));
     overrides.extra_aovs = recorded_aovs;
     reference = {recorded.reference, recorded.target_error};
 }
@@ -232,14 +255,16 @@ std::vector<NamedPath> command_line_inputs(const RenderArguments& args, const st
 int run_render(const RenderArguments& args) {
     ReferenceRequest reference = parse_reference_request(args.reference, args.target_error, !args.resume.empty());
     SceneOverrides overrides;
-    overrides.spp = args.spp;
-    if (!args.seed.empty()) overrides.seed = parse_seed(args.seed, "--seed");
+    add_scene_settings(args.scene_options, overrides);
+    // The shortcuts after --set: "--set film.spp=4 --spp 8" renders 8 samples.
+    if (args.spp) overrides.settings.push_back(spp_setting(*args.spp));
+    if (!args.resolution.empty()) overrides.settings.push_back(resolution_setting(parse_resolution(args.resolution, "--res")));
+    if (!args.seed.empty()) overrides.settings.push_back(seed_setting(parse_seed(args.seed, "--seed")));
     const std::optional<double> time_budget =
         args.time_budget.empty() ? std::nullopt : std::optional<double>(parse_seconds(args.time_budget, "--time"));
     overrides.max_memory_bytes = max_memory_bytes(args.max_memory);
     if (!args.max_scene_size.empty())
         overrides.max_scene_file_bytes = parse_memory_size(args.max_scene_size, "--max-scene-size");
-    if (!args.resolution.empty()) overrides.resolution = parse_resolution(args.resolution, "--res");
     if (!args.aovs.empty()) overrides.extra_aovs = parse_aov_list(args.aovs, "--aov");
     if (reference.enabled) add_reference_channels(overrides.extra_aovs);
     // A resumed render goes on checkpointing to the file it came from unless told otherwise.
@@ -308,8 +333,9 @@ int run_render(const RenderArguments& args) {
     options.spp = resume ? resume->options.spp : lifted ? kMaxSamplesPerPixel : scene->spp;
     options.time_budget_seconds = time_budget;
     options.cancel = &g_interrupted;
-    const PixelOptions pixel_options{options.spp, scene->film.raster, scene->seed, aov_names(overrides.extra_aovs),
-                                     reference.enabled, reference.target_error};
+    const PixelOptions pixel_options{options.spp,       scene->film.raster,       scene->seed,
+                                     aov_names(overrides.extra_aovs), reference.enabled, reference.target_error,
+                                     scene->settings};
     if (reference.enabled) options.stop_at_pass_end = reference_stop_rule(reference, args.quiet);
     // False when it could not be written; the render goes on, and the next checkpoint may succeed.
     const auto checkpoint = [&](const Film& state) {
@@ -433,12 +459,12 @@ CommandRunner add_render_command(CLI::App& app) {
                         "Output image; repeat for several. .exr: scene-linear with AOVs and metadata; "
                         ".png/.jpg/.tif: display-referred through the OCIO view. Default: <scene name>.exr")
         ->type_name("PATH");
-    command->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")->check(CLI::Range(1, kMaxSamplesPerPixel));
+    command->add_option("--spp", args->spp, "Samples per pixel (sets film.spp)")->check(CLI::Range(1, kMaxSamplesPerPixel));
     command->add_option("--res", args->resolution,
-                        "Resolution WIDTHxHEIGHT, each side 1 to 65536 (overrides the scene)")
+                        "Resolution WIDTHxHEIGHT, each side 1 to 65536 (sets film.resolution)")
         ->type_name("WIDTHxHEIGHT");
     add_threads_option(*command, args->threads);
-    command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (overrides the scene)")->type_name("UINT64");
+    command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (sets sampler.seed)")->type_name("UINT64");
     command->add_option("--aov", args->aovs,
                         "Comma-separated AOVs to add to the EXR: albedo, normal, depth, position, object_id, "
                         "primitive_id, sample_count, variance, or all")
@@ -483,6 +509,7 @@ CommandRunner add_render_command(CLI::App& app) {
     command->add_flag("-q,--quiet", args->quiet,
                       "No progress bar or statistics on stderr (warnings and errors still print)");
     add_distribution_options(*command, args->distribution);
+    add_scene_options(*command, args->scene_options, DisplayOptions::Yes);
     return [args] {
         if (args->outputs.empty())
             args->outputs.push_back(std::filesystem::path(args->scene).stem().string() + ".exr");

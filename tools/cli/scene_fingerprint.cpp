@@ -32,6 +32,8 @@ std::string scene_hash(const LoadedScene& scene) {
     std::string lines;
     for (const nlohmann::json& file : scene_files(scene))
         lines += std::to_string(file.at("bytes").get<std::uint64_t>()) + " " + file.at("fnv1a64").get<std::string>() + "\n";
+    // The scene's overrides change it as its files do; a scene without them keeps the hash it always had.
+    for (const std::string& setting : scene.settings) lines += "set " + setting + "\n";
     return hex(fnv1a_64(lines));
 }
 

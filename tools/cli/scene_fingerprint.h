@@ -14,8 +14,8 @@ namespace isotrace::cli {
 // Throws std::runtime_error if a file cannot be read.
 nlohmann::json scene_files(const LoadedScene& scene);
 
-// 16 hex digits: FNV-1a 64 of "<bytes> <fnv1a64>\n" for each entry of scene_files. Paths are left out, so the
-// hash is the same for a copy of the scene anywhere.
+// 16 hex digits: FNV-1a 64 of "<bytes> <fnv1a64>\n" for each entry of scene_files, then "set PATH=VALUE\n" for each
+// override of LoadedScene::settings. Paths are left out, so the hash is the same for a copy of the scene anywhere.
 std::string scene_hash(const LoadedScene& scene);
 
 }  // namespace isotrace::cli

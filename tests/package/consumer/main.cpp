@@ -15,8 +15,8 @@ int main(int argc, char** argv) {
     }
     try {
         isotrace::SceneOverrides overrides;
-        overrides.spp = 1;
-        overrides.resolution = isotrace::RasterSize{16, 16};
+        overrides.settings.push_back(isotrace::spp_setting(1));
+        overrides.settings.push_back(isotrace::resolution_setting(isotrace::RasterSize{16, 16}));
         const std::unique_ptr<isotrace::LoadedScene> scene = isotrace::load_scene(argv[1], overrides);
 
         isotrace::RenderOptions options;
