@@ -68,9 +68,15 @@ std::vector<std::string> PreviewIntegrator::light_left_out(const RenderScene& sc
     if (!scene.infinite_lights().empty())
         left_out.push_back("the environment as seen by rays that leave the scene (they show the uniform background; "
                            "only the environment's direct light is kept)");
-    std::size_t unlit_by = 0;
-    for (const SceneObject& object : scene.objects())
+    std::size_t unlit_by = 0, area_lights = 0;
+    for (const SceneObject& object : scene.objects()) {
         if (emits(object) && !object.area_light) ++unlit_by;
+        if (object.area_light) ++area_lights;
+    }
+    // Their direct light is kept; what a user misses is what makes area lights worth using.
+    if (area_lights > 0)
+        left_out.push_back("the reflections and the bounced light of " + std::to_string(area_lights) +
+                           " area light(s) (every surface is shaded as diffuse, lit directly)");
     if (unlit_by > 0)
         left_out.push_back("the light that " + std::to_string(unlit_by) +
                            " emissive object(s) cast on other surfaces (they cannot be sampled as lights)");

@@ -87,8 +87,14 @@ std::string warning_for(const std::string& json) {
     return light_left_out_warning(*load_scene(file.path()));
 }
 
-TEST(RenderWarnings, ThePreviewOfPointLightsAndSampledEmittersLeavesNothingOut) {
-    EXPECT_EQ(warning_for(scene_with("preview", kPoint, kSampledEmitter)), "");
+TEST(RenderWarnings, ThePreviewOfPointLightsLeavesNothingOut) {
+    EXPECT_EQ(warning_for(scene_with("preview", kPoint, "")), "");
+}
+
+TEST(RenderWarnings, ThePreviewOfAnAreaLightNamesWhatItMisses) {
+    const std::string warning = warning_for(scene_with("preview", kPoint, kSampledEmitter));
+    EXPECT_NE(warning.find("the reflections and the bounced light of 1 area light(s)"), std::string::npos) << warning;
+    EXPECT_EQ(warning.find("cannot be sampled"), std::string::npos) << warning;
 }
 
 TEST(RenderWarnings, ThePreviewOfAnEnvironmentNamesItAndSuggestsThePathTracer) {
@@ -99,7 +105,7 @@ TEST(RenderWarnings, ThePreviewOfAnEnvironmentNamesItAndSuggestsThePathTracer) {
 
 TEST(RenderWarnings, ThePreviewCountsEmittersThatCannotBeSampledAsLights) {
     const std::string warning =
-        warning_for(scene_with("preview", kPoint, std::string(kSampledEmitter) + kUnsampledEmitter));
+        warning_for(scene_with("preview", kPoint, kUnsampledEmitter));
     EXPECT_NE(warning.find("the light that 1 emissive object(s) cast on other surfaces"), std::string::npos) << warning;
     EXPECT_EQ(warning.find("environment"), std::string::npos) << warning;
 }
