@@ -143,7 +143,12 @@ void apply(JsonValue& document, const SceneSetting& setting, MemoryBudget* memor
         if (node->is_object()) {
             child = node->find(key.name);
             child_name = child_path(path, key.name);
-            if (!child && (last || setting.create_sections)) {
+            std::vector<std::string> names;
+            for (const auto& member : node->members) names.push_back(member.first);
+            const std::string suggestion = did_you_mean(key.name, names);
+            // A missing section is created (scenes leave optional ones out), unless the key looks like a typo of
+            // one that is there; the loader then checks the new keys like the file's own.
+            if (!child && (last || setting.create_sections || suggestion.empty())) {
                 JsonValue section;
                 section.kind = JsonValue::Kind::Object;
                 section.location = value.location;
@@ -153,10 +158,8 @@ void apply(JsonValue& document, const SceneSetting& setting, MemoryBudget* memor
                 if (last) return;
             }
             if (!child) {
-                std::vector<std::string> names;
-                for (const auto& member : node->members) names.push_back(member.first);
                 fail_at(setting, key.column,
-                        "no key \"" + key.name + "\" in " + described(path) + did_you_mean(key.name, names) +
+                        "no key \"" + key.name + "\" in " + described(path) + suggestion +
                             (names.empty() ? "" : "; keys there: " + name_list(names)));
             }
         } else if (node->is_array()) {

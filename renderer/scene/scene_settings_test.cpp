@@ -87,7 +87,13 @@ TEST(SceneSettings, MissingIntermediateKeysGetASuggestion) {
     const InputError deeper = error_of({"materials.glod.roughness=0.1"});
     EXPECT_EQ(deeper.location().column, 17);
     EXPECT_EQ(deeper.problem(), "no key \"glod\" in \"materials\" (did you mean \"gold\"?); keys there: gold");
-    EXPECT_EQ(error_of({"integrator.type=path"}).problem(), "no key \"integrator\" in the scene; keys there: film, materials, objects");
+}
+
+TEST(SceneSettings, MissingSectionsWithoutACloseKeyAreCreated) {
+    const JsonValue document = with({"integrator.type=preview", "film.filter.type=box"});
+    EXPECT_EQ(document.find("integrator")->find("type")->string, "preview");
+    EXPECT_EQ(document.find("integrator")->location.file, "--set integrator.type=preview");
+    EXPECT_EQ(document.find("film")->find("filter")->find("type")->string, "box");
 }
 
 TEST(SceneSettings, ArrayElementsByIndexOrName) {
