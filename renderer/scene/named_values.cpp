@@ -22,16 +22,7 @@ public:
             replace(value);
             return;
         }
-        for (std::size_t i = 0; i < value.items.size(); ++i) {
-            path_.push_back({nullptr, i});
-            visit(value.items[i]);
-            path_.pop_back();
-        }
-        for (auto& [key, member] : value.members) {
-            path_.push_back({&key, 0});
-            visit(member);
-            path_.pop_back();
-        }
+        for_each_child(value, [this](JsonValue& child) { visit(child); });
     }
 
     // Throws at the first reference inside a named value: values do not refer to each other.
@@ -45,14 +36,20 @@ private:
     void check_no_reference(const JsonValue& value) {
         if (is_reference(value))
             throw InputError(value.location, current_path(), "a named value cannot refer to another named value");
+        for_each_child(value, [this](const JsonValue& child) { check_no_reference(child); });
+    }
+
+    // Calls `action` on every item or member of `value` with the path extended to it.
+    template <class Value, class Action>
+    void for_each_child(Value& value, Action&& action) {
         for (std::size_t i = 0; i < value.items.size(); ++i) {
             path_.push_back({nullptr, i});
-            check_no_reference(value.items[i]);
+            action(value.items[i]);
             path_.pop_back();
         }
-        for (const auto& [key, member] : value.members) {
+        for (auto& [key, member] : value.members) {
             path_.push_back({&key, 0});
-            check_no_reference(member);
+            action(member);
             path_.pop_back();
         }
     }
