@@ -144,8 +144,11 @@ void apply(JsonValue& document, const SceneSetting& setting, MemoryBudget* memor
             child = node->find(key.name);
             child_name = child_path(path, key.name);
             std::vector<std::string> names;
-            for (const auto& member : node->members) names.push_back(member.first);
-            const std::string suggestion = did_you_mean(key.name, names);
+            std::string suggestion;
+            if (!child) {
+                for (const auto& member : node->members) names.push_back(member.first);
+                suggestion = did_you_mean(key.name, names);
+            }
             // A missing section is created (scenes leave optional ones out), unless the key looks like a typo of
             // one that is there; the loader then checks the new keys like the file's own.
             if (!child && (last || setting.create_sections || suggestion.empty())) {
