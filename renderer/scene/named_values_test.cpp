@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/core/memory_budget.h"
+#include "tests/support/input_error_of.h"
 
 namespace isotrace {
 namespace {
@@ -15,13 +16,7 @@ JsonValue substituted(const std::string& text, std::uint64_t memory_limit = std:
 }
 
 InputError error_of(const std::string& text, std::uint64_t memory_limit = std::uint64_t(1) << 30) {
-    try {
-        substituted(text, memory_limit);
-    } catch (const InputError& error) {
-        return error;
-    }
-    ADD_FAILURE() << "no error for " << text;
-    return InputError({}, "", "");
+    return testing::input_error_of([&] { substituted(text, memory_limit); }, text);
 }
 
 TEST(NamedValues, ReferencesBecomeCopiesOfTheirValues) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/core/memory_budget.h"
+#include "tests/support/input_error_of.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {
@@ -17,13 +18,7 @@ protected:
         return read_scene_document(path, max_bytes, nullptr);
     }
     InputError read_error(const std::string& path, std::uint64_t max_bytes = kDefaultMaxJsonFileBytes) {
-        try {
-            read(path, max_bytes);
-        } catch (const InputError& error) {
-            return error;
-        }
-        ADD_FAILURE() << "no error reading " << path;
-        return InputError({}, "", "");
+        return testing::input_error_of([&] { read(path, max_bytes); }, "reading " + path);
     }
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/core/memory_budget.h"
+#include "tests/support/input_error_of.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {
@@ -23,13 +24,7 @@ JsonValue with(const std::vector<std::string>& arguments) {
 }
 
 InputError error_of(const std::vector<std::string>& arguments) {
-    try {
-        with(arguments);
-    } catch (const InputError& error) {
-        return error;
-    }
-    ADD_FAILURE() << "no error";
-    return InputError({}, "", "");
+    return testing::input_error_of([&] { with(arguments); }, "the settings");
 }
 
 TEST(SceneSettings, ParsesPathAndValue) {
