@@ -10,7 +10,7 @@
 #include "geometry/abm_patch/patch_tessellation.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "renderer/core/memory_budget.h"
-#include "renderer/scene/world_limit.h"
+#include "renderer/params/world_limit.h"
 
 namespace isotrace {
 namespace {

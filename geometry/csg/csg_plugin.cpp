@@ -2,7 +2,7 @@
 // "material": "name", "transform": ...}, ...]}. Children are any shapes that are closed solids, CSG included.
 #include "geometry/csg/csg_shape.h"
 #include "geometry/csg/material_reference_parser.h"
-#include "renderer/scene/transform_parser.h"
+#include "renderer/params/transform_parser.h"
 
 namespace isotrace {
 namespace {

@@ -1,8 +1,8 @@
 #pragma once
 // Per-part material names in scene files (a CSG child's "material", a blob element's): read as MaterialReference,
 // with where they are written, so that the scene loader resolves them and reports an unknown name at its place.
+#include "renderer/params/scene_node.h"
 #include "renderer/plugin/shape.h"
-#include "renderer/scene/scene_node.h"
 
 namespace isotrace {
 

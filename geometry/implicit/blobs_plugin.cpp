@@ -7,8 +7,8 @@
 #include "geometry/csg/material_reference_parser.h"
 #include "geometry/implicit/blob_group_shape.h"
 #include "renderer/core/ray.h"
+#include "renderer/params/transform_parser.h"
 #include "renderer/sampling/hash.h"
-#include "renderer/scene/transform_parser.h"
 
 namespace isotrace {
 namespace {

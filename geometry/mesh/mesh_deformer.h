@@ -10,8 +10,8 @@
 
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "renderer/core/memory_budget.h"
+#include "renderer/params/json_document.h"
 #include "renderer/plugin/registry.h"
-#include "renderer/scene/json_document.h"
 
 namespace isotrace {
 

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "renderer/plugin/shape.h"
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace {
 

@@ -6,7 +6,7 @@
 
 #include "geometry/superquadric/superquadric_shape.h"
 #include "renderer/core/ray.h"
-#include "renderer/scene/transform_parser.h"
+#include "renderer/params/transform_parser.h"
 
 namespace isotrace {
 namespace {

@@ -12,9 +12,9 @@
 #include "geometry/mesh/mesh_test_support.h"
 #include "geometry/superquadric/superquadric_test_support.h"
 #include "renderer/core/render_counters.h"
-#include "renderer/scene/json_document.h"
+#include "renderer/params/json_document.h"
+#include "renderer/params/scene_node.h"
 #include "renderer/scene/render_scene.h"
-#include "renderer/scene/scene_node.h"
 
 namespace isotrace {
 namespace {

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "geometry/sweep/radius_measurement.h"
-#include "renderer/scene/transform_parser.h"
+#include "renderer/params/transform_parser.h"
 
 namespace isotrace {
 namespace {

@@ -10,7 +10,7 @@
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "geometry/sweep/key_section.h"
 #include "geometry/sweep/multi_resolution_sweep.h"
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace {
 

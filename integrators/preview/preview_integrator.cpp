@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-#include "renderer/lights/emitted_colour.h"
+#include "renderer/params/emitted_colour.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/sampling/warps.h"
 #include "renderer/scene/render_scene.h"

@@ -1,6 +1,6 @@
+#include "renderer/params/transform_parser.h"
+#include "renderer/params/world_limit.h"
 #include "renderer/plugin/camera.h"
-#include "renderer/scene/transform_parser.h"
-#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 

@@ -9,9 +9,9 @@
 
 #include "renderer/core/input_error.h"
 #include "renderer/embree/embree_ray.h"
+#include "renderer/params/json_document.h"
+#include "renderer/params/scene_node.h"
 #include "renderer/plugin/camera.h"
-#include "renderer/scene/json_document.h"
-#include "renderer/scene/scene_node.h"
 
 namespace isotrace {
 namespace {

@@ -1,8 +1,8 @@
 // Orthographic camera: parallel rays along -z of the camera frame through a width x height window.
 #include <cmath>
 
+#include "renderer/params/world_limit.h"
 #include "renderer/plugin/camera.h"
-#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {

@@ -2,9 +2,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/params/world_limit.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/sampling/warps.h"
-#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {

@@ -8,7 +8,7 @@ namespace isotrace {
 // The finite world: every coordinate of a scene lies within this distance of the origin on each axis. Embree traces
 // only rays whose origin and direction components are at most its FLT_LARGE (1.844e18) in magnitude (beyond, its
 // assertion aborts the process) and silently drops geometry bounds beyond it; the margin lets rays leave surfaces
-// at the limit. Scenes are checked against it where they are read (renderer/scene/world_limit.h), rays where they
+// at the limit. Scenes are checked against it where they are read (renderer/params/world_limit.h), rays where they
 // are traced (is_traceable, renderer/embree/embree_ray.h).
 inline constexpr double kWorldLimit = 1e18;
 

@@ -12,6 +12,7 @@
 
 #include "renderer/core/huge_page_allocator.h"
 #include "renderer/film/aov.h"
+#include "renderer/image/image_buffer.h"
 #include "renderer/math/rgb.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/plugin/integrator.h"
@@ -31,14 +32,6 @@ struct FilmSettings {
     PixelBounds crop;  // the part of the raster rendered and written
     std::vector<Aov> aovs;
     bool half_float = false;  // EXR pixel type
-};
-
-// Interleaved float image with named channels.
-struct ImageBuffer {
-    int width = 0, height = 0;
-    std::vector<std::string> channels;
-    std::vector<float> pixels;  // width * height * channels.size()
-    float* pixel(int x, int y) { return pixels.data() + (std::size_t(y) * width + x) * channels.size(); }
 };
 
 // Per-pixel sample counts over the film: a render stopped mid-pass leaves min < max.

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "renderer/core/input_error.h"
+#include "renderer/params/json_document.h"
+#include "renderer/params/scene_node.h"
 #include "renderer/sampling/independent_sampler.h"
-#include "renderer/scene/json_document.h"
-#include "renderer/scene/scene_node.h"
 #include "tests/support/chi_square.h"
 
 namespace isotrace {

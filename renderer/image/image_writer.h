@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "renderer/film/film.h"
+#include "renderer/image/image_buffer.h"
 #include "renderer/image/image_codec.h"
 #include "renderer/image/image_metadata.h"
+#include "renderer/plugin/camera.h"
 
 namespace isotrace {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/lights/emitted_colour.h"
-#include "renderer/scene/surface_hit.h"
+#include "renderer/params/emitted_colour.h"
+#include "renderer/plugin/surface_hit.h"
 
 namespace isotrace {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "geometry/sphere/sphere_shape.h"
+#include "renderer/plugin/surface_hit.h"
 #include "renderer/sampling/independent_sampler.h"
-#include "renderer/scene/surface_hit.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {

@@ -2,9 +2,9 @@
 #include <limits>
 #include <numbers>
 
-#include "renderer/lights/emitted_colour.h"
+#include "renderer/params/emitted_colour.h"
+#include "renderer/params/world_limit.h"
 #include "renderer/plugin/light.h"
-#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {

@@ -12,9 +12,9 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/input_error.h"
-#include "renderer/lights/emitted_colour.h"
+#include "renderer/params/emitted_colour.h"
+#include "renderer/params/transform_parser.h"
 #include "renderer/sampling/warps.h"
-#include "renderer/scene/transform_parser.h"
 
 namespace isotrace {
 namespace {

@@ -1,9 +1,9 @@
 // Isotropic point light: intensity (W/sr-like, in the working space) falling off with the squared distance.
 #include <numbers>
 
-#include "renderer/lights/emitted_colour.h"
+#include "renderer/params/emitted_colour.h"
+#include "renderer/params/world_limit.h"
 #include "renderer/plugin/light.h"
-#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {

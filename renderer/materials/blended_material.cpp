@@ -3,7 +3,7 @@
 #include <cassert>
 
 #include "renderer/bsdf/principled_bsdf.h"
-#include "renderer/scene/surface_hit.h"
+#include "renderer/plugin/surface_hit.h"
 
 namespace isotrace {
 namespace {

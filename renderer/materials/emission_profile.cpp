@@ -1,6 +1,6 @@
 #include "renderer/materials/emission_profile.h"
 
-#include "renderer/lights/emitted_colour.h"
+#include "renderer/params/emitted_colour.h"
 
 namespace isotrace {
 

@@ -2,8 +2,8 @@
 // Emitted radiance of a surface: uniform over directions (Lambertian emitter), from the front side only (the
 // geometric normal's side: counter-clockwise triangles, the outside of spheres) unless two-sided.
 #include "renderer/math/rgb.h"
-#include "renderer/scene/scene_node.h"
-#include "renderer/scene/surface_hit.h"
+#include "renderer/params/scene_node.h"
+#include "renderer/plugin/surface_hit.h"
 
 namespace isotrace {
 

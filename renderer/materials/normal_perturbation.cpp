@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/scene/render_scene.h"
-#include "renderer/scene/world_limit.h"
+#include "renderer/params/world_limit.h"
+#include "renderer/plugin/scene_object.h"
 #include "renderer/textures/texture_parser.h"
 
 namespace isotrace {

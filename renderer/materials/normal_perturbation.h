@@ -2,9 +2,9 @@
 // Bump and normal maps: a material's shading normal bent by a height texture (any surface, implicit ones
 // included) or by a tangent-space normal map (surfaces with uv). The result never leans further than
 // kMaxTiltDegrees from the geometric normal, so a shading normal never points below the true surface.
-#include "renderer/scene/scene_node.h"
-#include "renderer/scene/surface_hit.h"
-#include "renderer/textures/texture.h"
+#include "renderer/params/scene_node.h"
+#include "renderer/plugin/surface_hit.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 

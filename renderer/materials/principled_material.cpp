@@ -6,7 +6,7 @@
 #include "renderer/bsdf/principled_bsdf.h"
 #include "renderer/materials/normal_perturbation.h"
 #include "renderer/plugin/material.h"
-#include "renderer/scene/render_scene.h"
+#include "renderer/plugin/scene_object.h"
 #include "renderer/textures/texture_at_hit.h"
 #include "renderer/textures/texture_parser.h"
 

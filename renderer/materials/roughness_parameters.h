@@ -1,7 +1,7 @@
 #pragma once
 // Roughness of microfacet materials as written in scenes: "roughness" in [0, 1] (perceptual, alpha =
 // roughness^2; 0 = perfectly smooth), optionally "roughness_v" for an anisotropic second axis.
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace {
 

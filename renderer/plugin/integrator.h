@@ -8,8 +8,8 @@
 #include "renderer/core/ray.h"
 #include "renderer/math/rgb.h"
 #include "renderer/plugin/registry.h"
+#include "renderer/plugin/surface_hit.h"
 #include "renderer/sampling/sampler.h"
-#include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
 

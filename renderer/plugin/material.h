@@ -7,7 +7,7 @@
 #include "renderer/math/rgb.h"
 #include "renderer/math/vec3.h"
 #include "renderer/plugin/registry.h"
-#include "renderer/textures/texture.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 

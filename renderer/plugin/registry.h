@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "renderer/core/did_you_mean.h"
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace {
 

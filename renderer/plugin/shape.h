@@ -14,7 +14,7 @@
 #include "renderer/core/input_error.h"
 #include "renderer/math/transform.h"
 #include "renderer/plugin/registry.h"
-#include "renderer/scene/surface_hit.h"
+#include "renderer/plugin/surface_hit.h"
 
 namespace isotrace {
 

@@ -10,11 +10,11 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/film/film.h"
+#include "renderer/params/json_document.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/plugin/integrator.h"
 #include "renderer/plugin/pixel_filter.h"
 #include "renderer/sampling/sampler.h"
-#include "renderer/scene/json_document.h"
 #include "renderer/scene/render_scene.h"
 #include "renderer/scene/scene_settings.h"
 

@@ -2,7 +2,7 @@
 // Named values: a top-level "values" object defines them ({"roughness": 0.2, "tint": [0.8, 0.1, 0.1]}), and
 // {"$value": "roughness"} anywhere else in the scene stands for one (docs/scene-authoring.md). No key of the scene
 // format starts with '$', so the reference cannot be mistaken for scene content.
-#include "renderer/scene/json_document.h"
+#include "renderer/params/json_document.h"
 
 namespace isotrace {
 

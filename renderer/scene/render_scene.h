@@ -17,28 +17,12 @@
 #include "renderer/math/transform.h"
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
+#include "renderer/plugin/scene_object.h"
 #include "renderer/plugin/shape.h"
+#include "renderer/plugin/surface_hit.h"
 #include "renderer/sampling/distribution_1d.h"
-#include "renderer/scene/surface_hit.h"
 
 namespace isotrace {
-
-struct SceneObject {
-    std::string name;
-    std::unique_ptr<Shape> shape;
-    const Material* material = nullptr;
-    std::vector<const Material*> part_materials;  // per Shape::part_materials() entry; null: `material`
-    const Material* blended_material = nullptr;   // for shapes whose hits blend their parts' materials
-    Transform to_world;
-    bool instanced = false;  // true: shape in object space inside an Embree instance
-    HitShading hit_shading = HitShading::Computed;  // the shape's, after any bake (set by commit)
-    int counter_slot = 0;
-    const Light* area_light = nullptr;  // set when the object emits and its surface can be sampled
-
-    const Material* material_of_part(std::uint32_t part) const {
-        return part < part_materials.size() && part_materials[part] ? part_materials[part] : material;
-    }
-};
 
 struct BuildStatistics {
     double seconds = 0;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/scene/json_document.h"
+#include "renderer/params/json_document.h"
 
 namespace isotrace {
 

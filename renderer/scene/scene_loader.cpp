@@ -6,6 +6,9 @@
 
 #include "geometry/polygonize/tessellated_shape.h"
 #include "renderer/materials/blended_material.h"
+#include "renderer/math/box_corner.h"
+#include "renderer/params/transform_parser.h"
+#include "renderer/params/world_limit.h"
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
 #include "renderer/plugin/sampler_registry.h"
@@ -13,8 +16,6 @@
 #include "renderer/scene/loaded_scene.h"
 #include "renderer/scene/named_values.h"
 #include "renderer/scene/scene_includes.h"
-#include "renderer/scene/transform_parser.h"
-#include "renderer/scene/world_limit.h"
 
 namespace isotrace {
 namespace {
@@ -184,6 +185,20 @@ void check_texture_needs(const SceneObject& object) {
     if (needs.field && !shape.field_value(Vec3d(0, 0, 0)))
         throw InputError(needs.where, needs.field_path,
                          "this texture reads a field, but " + whose + " has none (blob groups and superquadrics have one)");
+}
+
+// Fails at object["shape"] when the shape's bounds reach beyond the limit in its own space (shapes whose plugins
+// check no extent: meshes, tubes), else at object["transform"] when `to_world` moves or scales it beyond.
+void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world) {
+    const Bounds3f local = shape.bounds();
+    if (local.empty()) return;
+    const Vec3d lower(local.lower.x, local.lower.y, local.lower.z), upper(local.upper.x, local.upper.y, local.upper.z);
+    const auto corner = [&](int i) { return box_corner(lower, upper, i); };
+    for (int i = 0; i < 8; ++i)  // the shape's own parameters first (a tube radius, a vertex), then its placement
+        if (!within_world(corner(i))) object.fail_at("shape", beyond_world_problem("the shape"));
+    for (int i = 0; i < 8; ++i)
+        if (!within_world(to_world.point(corner(i))))
+            object.fail_at("transform", beyond_world_problem("the shape, transformed,"));
 }
 
 void load_content(const SceneNode& root, const SceneOverrides& overrides, RenderScene& scene) {

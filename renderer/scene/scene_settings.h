@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/params/json_document.h"
 #include "renderer/plugin/camera.h"
-#include "renderer/scene/json_document.h"
 
 namespace isotrace {
 

@@ -5,7 +5,7 @@
 #include <set>
 #include <string>
 
-#include "renderer/scene/json_document.h"
+#include "renderer/params/json_document.h"
 
 namespace isotrace {
 namespace {

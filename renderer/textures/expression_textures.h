@@ -5,7 +5,7 @@
 #include <memory>
 #include <optional>
 
-#include "renderer/textures/texture.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 

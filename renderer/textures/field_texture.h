@@ -2,7 +2,7 @@
 // The implicit field of the surface's shape as a scalar input: its value at the shading point moved `depth`
 // inward along the normal (how deep inside the surface that point is, in the field's units), or the length of
 // its gradient there. 0 where there is no shape (area-light samples).
-#include "renderer/textures/texture.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 

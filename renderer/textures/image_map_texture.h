@@ -3,9 +3,9 @@
 // the footprint in texels, with the image's wrap mode. Rgb for colour and data images, float for one channel.
 #include <memory>
 
+#include "renderer/plugin/texture.h"
 #include "renderer/textures/image_texture.h"
 #include "renderer/textures/projection.h"
-#include "renderer/textures/texture.h"
 
 namespace isotrace {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 #include "renderer/textures/patterns/checker.h"
 #include "renderer/textures/patterns/grid.h"
 

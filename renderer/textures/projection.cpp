@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "renderer/core/did_you_mean.h"
-#include "renderer/scene/scene_node.h"
-#include "renderer/scene/transform_parser.h"
+#include "renderer/params/scene_node.h"
+#include "renderer/params/transform_parser.h"
 
 namespace isotrace {
 namespace {

@@ -5,7 +5,7 @@
 #include <array>
 
 #include "renderer/math/transform.h"
-#include "renderer/textures/texture.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 

@@ -1,7 +1,7 @@
 #pragma once
 // A texture's value at a hit. A constant answers without a TextureContext: materials evaluate their parameters at
 // every hit, and most parameters are constants.
-#include "renderer/textures/texture.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 

@@ -7,7 +7,7 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/did_you_mean.h"
-#include "renderer/lights/emitted_colour.h"
+#include "renderer/params/emitted_colour.h"
 #include "renderer/textures/expression_textures.h"
 #include "renderer/textures/field_texture.h"
 #include "renderer/textures/image_map_texture.h"

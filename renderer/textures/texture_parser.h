@@ -5,8 +5,8 @@
 #include <string>
 
 #include "renderer/math/rgb.h"
-#include "renderer/scene/scene_node.h"
-#include "renderer/textures/texture.h"
+#include "renderer/params/scene_node.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 
@@ -21,7 +21,7 @@ ScalarTexturePtr parse_scalar_texture(const SceneNode& parent, const std::string
 enum class ColourRange {
     Any,
     Reflectance,  // each component in [0, 1]
-    Emission      // each component in [0, kMaxEmitted] (renderer/lights/emitted_colour.h)
+    Emission      // each component in [0, kMaxEmitted] (renderer/params/emitted_colour.h)
 };
 ColourTexturePtr parse_colour_texture(const SceneNode& parent, const std::string& key, const Rgb& fallback,
                                       ColourRange range);

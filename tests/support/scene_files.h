@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace::testing {
 

@@ -1,5 +1,5 @@
 // Range images: the paper's 256 grey levels, near bright and far dark, and the 8-bit grey PNG.
-#include "renderer/image/range_image.h"
+#include "renderer/render/range_image.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "renderer/scene/json_document.h"
+#include "renderer/params/json_document.h"
 
 #include "renderer/core/input_file.h"
 #include "renderer/core/memory_budget.h"

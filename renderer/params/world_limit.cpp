@@ -1,9 +1,6 @@
-#include "renderer/scene/world_limit.h"
+#include "renderer/params/world_limit.h"
 
 #include <cmath>
-
-#include "renderer/math/box_corner.h"
-#include "renderer/plugin/shape.h"
 
 namespace isotrace {
 
@@ -39,18 +36,6 @@ void check_reach_within_world(const SceneNode& node, const std::string& key, con
                               double radius, const std::string& what) {
     const double reach = max_component(abs(to_world.point(Vec3d(0, 0, 0)))) + radius * to_world.linear_norm();
     if (!(reach <= kWorldLimit)) node.fail_at(key, beyond_world_problem(what));
-}
-
-void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world) {
-    const Bounds3f local = shape.bounds();
-    if (local.empty()) return;
-    const Vec3d lower(local.lower.x, local.lower.y, local.lower.z), upper(local.upper.x, local.upper.y, local.upper.z);
-    const auto corner = [&](int i) { return box_corner(lower, upper, i); };
-    for (int i = 0; i < 8; ++i)  // the shape's own parameters first (a tube radius, a vertex), then its placement
-        if (!within_world(corner(i))) object.fail_at("shape", beyond_world_problem("the shape"));
-    for (int i = 0; i < 8; ++i)
-        if (!within_world(to_world.point(corner(i))))
-            object.fail_at("transform", beyond_world_problem("the shape, transformed,"));
 }
 
 }  // namespace isotrace

@@ -16,8 +16,8 @@
 #include "renderer/core/memory_budget.h"
 #include "renderer/math/rgb.h"
 #include "renderer/math/vec3.h"
-#include "renderer/scene/json_document.h"
-#include "renderer/scene/referenced_files.h"
+#include "renderer/params/json_document.h"
+#include "renderer/params/referenced_files.h"
 
 namespace isotrace {
 

@@ -1,4 +1,4 @@
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "renderer/lights/emitted_colour.h"
+#include "renderer/params/emitted_colour.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "renderer/math/rgb.h"
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace {
 

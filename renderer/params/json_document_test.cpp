@@ -1,4 +1,4 @@
-#include "renderer/scene/json_document.h"
+#include "renderer/params/json_document.h"
 
 #include <gtest/gtest.h>
 

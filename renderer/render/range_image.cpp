@@ -1,4 +1,4 @@
-#include "renderer/image/range_image.h"
+#include "renderer/render/range_image.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include <cmath>
 
-#include "renderer/scene/render_scene.h"
-#include "renderer/textures/texture.h"
+#include "renderer/plugin/scene_object.h"
+#include "renderer/plugin/texture.h"
 
 namespace isotrace {
 

@@ -6,11 +6,9 @@
 #include "renderer/core/ray.h"
 #include "renderer/math/transform.h"
 #include "renderer/math/vec3.h"
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace {
-
-class Shape;
 
 // Every component of `p` finite and at most kWorldLimit in magnitude.
 bool within_world(const Vec3d& p);
@@ -34,9 +32,5 @@ Vec3d unit_direction(const SceneNode& node, const Vec3d& v, const std::string& w
 // orthographic window), can lie beyond the limit.
 void check_reach_within_world(const SceneNode& node, const std::string& key, const Transform& to_world,
                               double radius, const std::string& what);
-
-// Fails at object["shape"] when the shape's bounds reach beyond the limit in its own space (shapes whose plugins
-// check no extent: meshes, tubes), else at object["transform"] when `to_world` moves or scales it beyond.
-void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world);
 
 }  // namespace isotrace

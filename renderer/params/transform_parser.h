@@ -1,6 +1,6 @@
 #pragma once
 #include "renderer/math/transform.h"
-#include "renderer/scene/scene_node.h"
+#include "renderer/params/scene_node.h"
 
 namespace isotrace {
 

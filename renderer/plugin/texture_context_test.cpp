@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "renderer/plugin/texture.h"
 #include "renderer/scene/render_scene.h"
-#include "renderer/textures/texture.h"
 
 namespace isotrace {
 namespace {

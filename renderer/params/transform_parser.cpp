@@ -1,4 +1,4 @@
-#include "renderer/scene/transform_parser.h"
+#include "renderer/params/transform_parser.h"
 
 #include <cstdio>
 #include <functional>
