@@ -3,8 +3,7 @@
 #include <cmath>
 
 #include "geometry/box/box_shape.h"
-#include "geometry/polygonize/implicit_field_registry.h"
-#include "geometry/polygonize/transformed_field.h"
+#include "geometry/field/transformed_field.h"
 
 namespace isotrace {
 namespace {
@@ -42,9 +41,9 @@ private:
 };
 
 }  // namespace
-}  // namespace isotrace
 
-ISOTRACE_REGISTER_IMPLICIT_FIELD("box", [](const isotrace::Shape& shape) {
-    const auto& box = static_cast<const isotrace::BoxShape&>(shape);
-    return isotrace::transformed_field(std::make_unique<isotrace::CentredBoxField>(box.half_size()), box.to_object());
-})
+std::unique_ptr<ImplicitField> BoxShape::implicit_field() const {
+    return transformed_field(std::make_unique<CentredBoxField>(half_size()), to_object());
+}
+
+}  // namespace isotrace

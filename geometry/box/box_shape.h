@@ -15,6 +15,7 @@ public:
     BoxShape(const Vec3d& centre, const Vec3d& half_size);
 
     std::string type_name() const override { return "box"; }
+    std::unique_ptr<ImplicitField> implicit_field() const override;
     std::size_t primitive_count() const override { return 1; }
     Bounds3f bounds() const override;
     bool counts_intersection_tests() const override { return true; }

@@ -6,8 +6,7 @@
 #include <vector>
 
 #include "geometry/csg/csg_shape.h"
-#include "geometry/polygonize/implicit_field_registry.h"
-#include "geometry/polygonize/transformed_field.h"
+#include "geometry/field/transformed_field.h"
 
 namespace isotrace {
 namespace {
@@ -16,7 +15,7 @@ class CsgField final : public ImplicitField {
 public:
     explicit CsgField(const CsgShape& csg) : operation_(csg.operation()) {
         for (std::size_t i = 0; i < csg.operand_count(); ++i) {
-            std::unique_ptr<ImplicitField> field = implicit_field_of(csg.operand(i));
+            std::unique_ptr<ImplicitField> field = csg.operand(i).implicit_field();
             if (!field)
                 throw std::invalid_argument("children[" + std::to_string(i) + "]: a \"" + csg.operand(i).type_name() +
                                             "\" has no implicit field");
@@ -77,8 +76,7 @@ private:
 };
 
 }  // namespace
-}  // namespace isotrace
 
-ISOTRACE_REGISTER_IMPLICIT_FIELD("csg", [](const isotrace::Shape& shape) -> std::unique_ptr<isotrace::ImplicitField> {
-    return std::make_unique<isotrace::CsgField>(static_cast<const isotrace::CsgShape&>(shape));
-})
+std::unique_ptr<ImplicitField> CsgShape::implicit_field() const { return std::make_unique<CsgField>(*this); }
+
+}  // namespace isotrace

@@ -32,6 +32,7 @@ public:
     CsgShape(CsgOperation operation, std::vector<CsgChild> children);
 
     std::string type_name() const override { return "csg"; }
+    std::unique_ptr<ImplicitField> implicit_field() const override;
     std::size_t primitive_count() const override { return 1; }
     std::size_t memory_bytes() const override;
     Bounds3f bounds() const override;

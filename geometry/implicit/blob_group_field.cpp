@@ -5,9 +5,8 @@
 // |∇dist²| = 2·dist ≤ 2R inside the support). Elements whose support misses the ball contribute nothing there.
 #include <cmath>
 
+#include "geometry/field/box_index.h"
 #include "geometry/implicit/blob_group_shape.h"
-#include "geometry/polygonize/box_index.h"
-#include "geometry/polygonize/implicit_field_registry.h"
 
 namespace isotrace {
 namespace {
@@ -57,8 +56,7 @@ private:
 };
 
 }  // namespace
-}  // namespace isotrace
 
-ISOTRACE_REGISTER_IMPLICIT_FIELD("blobs", [](const isotrace::Shape& shape) -> std::unique_ptr<isotrace::ImplicitField> {
-    return std::make_unique<isotrace::BlobGroupField>(static_cast<const isotrace::BlobGroupShape&>(shape).group());
-})
+std::unique_ptr<ImplicitField> BlobGroupShape::implicit_field() const { return std::make_unique<BlobGroupField>(group()); }
+
+}  // namespace isotrace

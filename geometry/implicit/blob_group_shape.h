@@ -21,6 +21,7 @@ public:
     explicit BlobGroupShape(BlobGroup group, BlobMaterials materials = {});
 
     std::string type_name() const override { return "blobs"; }
+    std::unique_ptr<ImplicitField> implicit_field() const override;
     // Elements, as the user counts them (Embree sees the cells: blob_cells.h).
     std::size_t primitive_count() const override { return group_.elements().size(); }
     std::size_t memory_bytes() const override { return group_.memory_bytes() + materials_.memory_bytes(); }

@@ -10,7 +10,6 @@
 #include "geometry/mesh/mesh_closedness.h"
 #include "geometry/mesh/mesh_crossing_scene.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
-#include "geometry/polygonize/implicit_field_registry.h"
 #include "renderer/embree/embree_device.h"
 
 namespace isotrace {
@@ -64,8 +63,7 @@ private:
 };
 
 }  // namespace
-}  // namespace isotrace
 
-ISOTRACE_REGISTER_IMPLICIT_FIELD("triangle_mesh", [](const isotrace::Shape& shape) -> std::unique_ptr<isotrace::ImplicitField> {
-    return std::make_unique<isotrace::MeshDistanceField>(static_cast<const isotrace::TriangleMeshShape&>(shape));
-})
+std::unique_ptr<ImplicitField> TriangleMeshShape::implicit_field() const { return std::make_unique<MeshDistanceField>(*this); }
+
+}  // namespace isotrace

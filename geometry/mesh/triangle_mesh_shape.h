@@ -18,6 +18,7 @@ public:
     explicit TriangleMeshShape(TriangleMeshData mesh);
 
     std::string type_name() const override { return "triangle_mesh"; }
+    std::unique_ptr<ImplicitField> implicit_field() const override;
     std::size_t primitive_count() const override { return mesh_.triangles.size(); }
     Bounds3f bounds() const override;
     bool can_bake(const Transform&) const override { return true; }

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/polygonize/implicit_field.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

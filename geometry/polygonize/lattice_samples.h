@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/polygonize/implicit_field.h"
 #include "geometry/polygonize/lattice.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

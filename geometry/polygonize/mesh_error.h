@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "geometry/mesh/triangle_mesh_data.h"
-#include "geometry/polygonize/implicit_field.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

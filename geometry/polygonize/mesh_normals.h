@@ -3,8 +3,8 @@
 // where the gradient vanishes). Computed in parallel, in vertex order.
 #include <vector>
 
-#include "geometry/polygonize/implicit_field.h"
 #include "renderer/math/vec3.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

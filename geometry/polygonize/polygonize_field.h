@@ -10,9 +10,9 @@
 
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "geometry/polygonize/dual_contouring.h"
-#include "geometry/polygonize/implicit_field.h"
 #include "geometry/polygonize/octree_simplification.h"
 #include "geometry/polygonize/spherical_lattice.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "geometry/mesh/triangle_mesh_data.h"
-#include "geometry/polygonize/implicit_field.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

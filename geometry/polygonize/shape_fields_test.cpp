@@ -1,4 +1,4 @@
-// The implicit-field contract, checked for every shape that registers a field: the sign agrees with the shape's
+// The implicit-field contract, checked for every shape that offers a field: the sign agrees with the shape's
 // own inside test (Solid::inside_spans, an independent ray-classification oracle), the gradient agrees with
 // finite differences, may_reach_surface never denies a sign change it should see, and every polygoniser closes
 // the surface.
@@ -10,7 +10,6 @@
 #include "geometry/csg/csg_shape.h"
 #include "geometry/implicit/blob_group_shape.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
-#include "geometry/polygonize/implicit_field_registry.h"
 #include "geometry/polygonize/mesh_topology.h"
 #include "geometry/polygonize/polygonize_field.h"
 #include "geometry/polygonize/polygonize_test_support.h"
@@ -86,7 +85,7 @@ class ShapeFields : public testing::TestWithParam<Case> {};
 
 TEST_P(ShapeFields, SignMatchesTheShapesInsideTest) {
     std::unique_ptr<Shape> shape = GetParam().make();
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(*shape);
+    const std::unique_ptr<ImplicitField> field = shape->implicit_field();
     ASSERT_TRUE(field);
     auto& solid = dynamic_cast<Solid&>(*shape);
     solid.prepare_span_queries(embree_device());
@@ -107,7 +106,7 @@ TEST_P(ShapeFields, SignMatchesTheShapesInsideTest) {
 
 TEST_P(ShapeFields, GradientMatchesFiniteDifferencesNearTheSurface) {
     std::unique_ptr<Shape> shape = GetParam().make();
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(*shape);
+    const std::unique_ptr<ImplicitField> field = shape->implicit_field();
     const FieldBox b = field->bounds();
     const double h = 1e-6 * max_component(b.extent());
     std::mt19937 random(5);
@@ -134,7 +133,7 @@ TEST_P(ShapeFields, GradientMatchesFiniteDifferencesNearTheSurface) {
 
 TEST_P(ShapeFields, MayReachSurfaceNeverMissesASignChange) {
     std::unique_ptr<Shape> shape = GetParam().make();
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(*shape);
+    const std::unique_ptr<ImplicitField> field = shape->implicit_field();
     const FieldBox b = field->bounds();
     std::mt19937 random(11);
     std::uniform_real_distribution<double> u(0, 1);
@@ -160,7 +159,7 @@ TEST_P(ShapeFields, MayReachSurfaceNeverMissesASignChange) {
 // depth 5, where an edge used to belong to four triangles — the regression test below.)
 TEST_P(ShapeFields, EveryPolygoniserClosesTheSurface) {
     std::unique_ptr<Shape> shape = GetParam().make();
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(*shape);
+    const std::unique_ptr<ImplicitField> field = shape->implicit_field();
     for (const PolygonizeMethod method :
          {PolygonizeMethod::MarchingCubes, PolygonizeMethod::DualContouring, PolygonizeMethod::SphericalDualContouring})
         for (int depth = 4; depth <= 5; ++depth) {
@@ -182,7 +181,7 @@ TEST_P(ShapeFields, EveryPolygoniserClosesTheSurface) {
 // count never rises with the tolerance (a larger tolerance collapses a superset of the nodes).
 TEST_P(ShapeFields, SimplifiedDualContouringStaysAClosedManifold) {
     std::unique_ptr<Shape> shape = GetParam().make();
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(*shape);
+    const std::unique_ptr<ImplicitField> field = shape->implicit_field();
     PolygonizeOptions options;
     options.method = PolygonizeMethod::DualContouring;
     options.depth = 5;
@@ -210,7 +209,7 @@ TEST_P(ShapeFields, SimplifiedDualContouringStaysAClosedManifold) {
 // segment gets a split vertex and the mesh is a closed 2-manifold.
 TEST(ShapeFields, TunnelsThroughAmbiguousFacesGetASplitVertex) {
     std::unique_ptr<Shape> shape = csg();
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(*shape);
+    const std::unique_ptr<ImplicitField> field = shape->implicit_field();
     PolygonizeOptions options;
     options.method = PolygonizeMethod::DualContouring;
     options.depth = 5;
@@ -229,11 +228,6 @@ TEST(ShapeFields, TunnelsThroughAmbiguousFacesGetASplitVertex) {
 INSTANTIATE_TEST_SUITE_P(Registered, ShapeFields, testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
-TEST(ShapeFields, EveryImplicitShapeTypeIsRegistered) {
-    EXPECT_EQ(implicit_shape_types(),
-              (std::vector<std::string>{"blobs", "box", "csg", "sphere", "superquadric", "triangle_mesh"}));
-}
-
 // DC keeps a box's corners (three planes meet in the corner's cell); MC cannot (its vertices lie on lattice edges).
 // Regression: the superquadric field was a constant 1 outside the object's box, with zero gradient, so a DC
 // vertex clamped just outside it had |f|/|∇f| = ∞ (isotrace mesh printed "mean inf, max inf" for an ellipsoid).
@@ -241,7 +235,7 @@ TEST(ShapeFields, SuperquadricFieldKeepsRisingOutsideItsBox) {
     std::vector<Superquadric> set;
     set.push_back(superquadric_test::make_superquadric({1, 0.6, 0.4}, 1, 1));
     const SuperquadricShape shape(std::move(set));
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(shape);
+    const std::unique_ptr<ImplicitField> field = shape.implicit_field();
     const double top = field->bounds().upper.z;
     // Continuous across the box face, positive and rising beyond it, with an outward gradient.
     EXPECT_NEAR(field->value({0, 0, top - 1e-9}), field->value({0, 0, top + 1e-9}), 1e-6);
@@ -259,7 +253,7 @@ TEST(ShapeFields, DualContouringKeepsTheCornersOfACsgBox) {
     children.push_back({std::make_unique<BoxShape>(Vec3d{0.0123, -0.0311, 0.0271}, Vec3d{0.61, 0.47, 0.53}), Transform(), {}});
     children.push_back({std::make_unique<SphereShape>(std::vector<Sphere>{{{0.9, 0.1, 0.0}, 0.3}}), Transform(), {}});
     const CsgShape csg(CsgOperation::Union, std::move(children));
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(csg);
+    const std::unique_ptr<ImplicitField> field = csg.implicit_field();
     const auto nearest = [](const TriangleMeshData& mesh, const Vec3d& q) {
         double best = INFINITY;
         for (const Vec3f& p : mesh.positions) best = std::min(best, length(Vec3d(p) - q));
@@ -285,7 +279,7 @@ TEST(ShapeFields, DualContouringKeepsTheCornersOfACsgBox) {
 TEST(ShapeFields, SimplifiedDualContouringCollapsesABoxsFacesAndKeepsItsCorners) {
     const Vec3d centre{0.0123, -0.0311, 0.0271}, half{0.61, 0.47, 0.53};
     const BoxShape box(centre, half);
-    const std::unique_ptr<ImplicitField> field = implicit_field_of(box);
+    const std::unique_ptr<ImplicitField> field = box.implicit_field();
     PolygonizeOptions options;
     options.depth = 6;
     options.method = PolygonizeMethod::DualContouring;

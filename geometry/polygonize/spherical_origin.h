@@ -8,8 +8,8 @@
 // distance |f|/|∇f| reaches two cells, at most kMaxOriginSteps times.
 #include <optional>
 
-#include "geometry/polygonize/implicit_field.h"
 #include "geometry/polygonize/spherical_lattice.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/polygonize/implicit_field_registry.h"
 #include "geometry/sphere/sphere_shape.h"
 
 namespace isotrace {
@@ -46,8 +45,7 @@ private:
 };
 
 }  // namespace
-}  // namespace isotrace
 
-ISOTRACE_REGISTER_IMPLICIT_FIELD("sphere", [](const isotrace::Shape& shape) -> std::unique_ptr<isotrace::ImplicitField> {
-    return std::make_unique<isotrace::SphereField>(static_cast<const isotrace::SphereShape&>(shape));
-})
+std::unique_ptr<ImplicitField> SphereShape::implicit_field() const { return std::make_unique<SphereField>(*this); }
+
+}  // namespace isotrace

@@ -21,6 +21,7 @@ public:
     explicit SphereShape(std::vector<Sphere> spheres);
 
     std::string type_name() const override { return "sphere"; }
+    std::unique_ptr<ImplicitField> implicit_field() const override;
     std::size_t primitive_count() const override { return spheres_.size(); }
     Bounds3f bounds() const override;
     bool counts_intersection_tests() const override { return true; }

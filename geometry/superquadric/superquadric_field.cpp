@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/polygonize/implicit_field_registry.h"
 #include "geometry/superquadric/superquadric_shape.h"
 
 namespace isotrace {
@@ -48,8 +47,7 @@ private:
 };
 
 }  // namespace
-}  // namespace isotrace
 
-ISOTRACE_REGISTER_IMPLICIT_FIELD("superquadric", [](const isotrace::Shape& shape) -> std::unique_ptr<isotrace::ImplicitField> {
-    return std::make_unique<isotrace::SuperquadricField>(static_cast<const isotrace::SuperquadricShape&>(shape));
-})
+std::unique_ptr<ImplicitField> SuperquadricShape::implicit_field() const { return std::make_unique<SuperquadricField>(*this); }
+
+}  // namespace isotrace

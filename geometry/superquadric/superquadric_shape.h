@@ -17,6 +17,7 @@ public:
     explicit SuperquadricShape(std::vector<Superquadric> superquadrics);
 
     std::string type_name() const override { return "superquadric"; }
+    std::unique_ptr<ImplicitField> implicit_field() const override;
     std::size_t primitive_count() const override { return superquadrics_.size(); }
     std::size_t memory_bytes() const override;
     Bounds3f bounds() const override;

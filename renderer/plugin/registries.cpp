@@ -15,6 +15,11 @@ Registry<Shape>& shape_registry() {
     return registry;
 }
 
+Registry<Shape, std::unique_ptr<Shape>>& shape_wrapper_registry() {
+    static Registry<Shape, std::unique_ptr<Shape>> registry("shape wrapper");
+    return registry;
+}
+
 Registry<Material>& material_registry() {
     static Registry<Material> registry("material");
     return registry;

@@ -7,12 +7,14 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "renderer/core/input_error.h"
 #include "renderer/math/transform.h"
+#include "renderer/plugin/implicit_field.h"
 #include "renderer/plugin/registry.h"
 #include "renderer/plugin/surface_hit.h"
 
@@ -131,11 +133,20 @@ public:
         (void)point;
         return {};
     }
+    // Shapes that are implicit surfaces: their field for the polygonisers (implicit_field.h), in the shape's own
+    // space; null for shapes that have none. Throws std::invalid_argument when this particular shape has no field
+    // (an open mesh, say). The field may refer to the shape: keep the shape alive while the field is used.
+    virtual std::unique_ptr<ImplicitField> implicit_field() const { return nullptr; }
 
 private:
     std::string object_name_;
 };
 
 Registry<Shape>& shape_registry();
+
+// Shape wrappers: an object key (the registered name, "tessellate") whose settings object turns the object's shape
+// into another shape made from it. The scene loader applies every wrapper whose key the object has; the factory
+// reads and finishes the settings and fails there.
+Registry<Shape, std::unique_ptr<Shape>>& shape_wrapper_registry();
 
 }  // namespace isotrace

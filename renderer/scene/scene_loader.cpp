@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "geometry/polygonize/tessellated_shape.h"
 #include "renderer/materials/blended_material.h"
 #include "renderer/math/box_corner.h"
 #include "renderer/params/transform_parser.h"
@@ -225,12 +224,8 @@ void load_content(const SceneNode& root, const SceneOverrides& overrides, Render
         object.material = resolve_material(node, scene, i);
         object.to_world = parse_optional_transform(node, "transform");
         object.shape = shape_registry().create(node.object("shape"));
-        if (auto tessellate = node.optional_object("tessellate")) {
-            if (!object.shape->part_materials().empty())
-                node.fail_at("tessellate", "a tessellated object shows one material, and this shape's parts name "
-                                           "materials of their own (remove \"tessellate\" or those materials)");
-            object.shape = tessellated_shape(std::move(object.shape), *tessellate);
-        }
+        for (const auto& [key, wrapper] : shape_wrapper_registry().entries())
+            if (auto settings = node.optional_object(key)) object.shape = wrapper.factory(*settings, std::move(object.shape));
         if (overrides.replace_shape) object.shape = overrides.replace_shape(std::move(object.shape));
         check_object_within_world(node, *object.shape, object.to_world);
         object.part_materials = resolve_part_materials(*object.shape, scene);

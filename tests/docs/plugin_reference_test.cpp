@@ -56,6 +56,10 @@ const std::map<std::string, Slot>& slots() {
         {"shape_registry", {"{\"isotrace\": 1, " + kFilm + ", " + kCamera + ", " + kMaterials +
                                 ", \"objects\": [{\"material\": \"grey\", \"shape\": ",
                             "}]}", "objects[0].shape"}},
+        {"shape_wrapper_registry", {"{\"isotrace\": 1, " + kFilm + ", " + kCamera + ", " + kMaterials +
+                                        ", \"objects\": [{\"material\": \"grey\", \"shape\": {\"type\": \"sphere\"}, "
+                                        "\"tessellate\": ",
+                                    "}]}", "objects[0].tessellate"}},
         {"mesh_deformer_registry",
          {"{\"isotrace\": 1, " + kFilm + ", " + kCamera + ", " + kMaterials +
               ", \"objects\": [{\"material\": \"grey\", \"shape\": {\"type\": \"mesh\", "
@@ -85,6 +89,7 @@ const std::map<PluginName, std::vector<std::string>>& probes() {
         {{"sampler_registry", "independent"}, {R"({"type": "independent", "probe_unknown_key": 0})"}},
         {{"pixel_filter_registry", "box"}, {R"({"type": "box", "probe_unknown_key": 0})"}},
         {{"shape_registry", "box"}, {R"({"type": "box", "probe_unknown_key": 0})"}},
+        {{"shape_wrapper_registry", "tessellate"}, {R"({"probe_unknown_key": 0})"}},
         {{"pixel_filter_registry", "gaussian"}, {R"({"type": "gaussian", "probe_unknown_key": 0})"}},
         {{"pixel_filter_registry", "blackman_harris"}, {R"({"type": "blackman_harris", "probe_unknown_key": 0})"}},
         {{"integrator_registry", "path"}, {R"({"type": "path", "probe_unknown_key": 0})"}},
@@ -214,6 +219,7 @@ std::map<std::string, std::map<std::string, std::string>> registered_at_run_time
     collect("material_registry", material_registry());
     collect("light_registry", light_registry());
     collect("shape_registry", shape_registry());
+    collect("shape_wrapper_registry", shape_wrapper_registry());
     collect("mesh_deformer_registry", mesh_deformer_registry());
     return all;
 }

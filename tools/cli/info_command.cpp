@@ -27,6 +27,7 @@ void print_plugins(const Registry& registry) {
 
 void print_all_plugins() {
     print_plugins(shape_registry());
+    print_plugins(shape_wrapper_registry());
     print_plugins(material_registry());
     print_plugins(light_registry());
     print_plugins(camera_registry());

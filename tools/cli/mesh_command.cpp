@@ -10,7 +10,6 @@
 #include <optional>
 
 #include "geometry/mesh/triangle_mesh_shape.h"
-#include "geometry/polygonize/implicit_field_registry.h"
 #include "geometry/polygonize/mesh_error.h"
 #include "geometry/polygonize/polygonize_field.h"
 #include "renderer/core/input_error.h"
@@ -56,7 +55,7 @@ ObjectField only_implicit_object(const RenderScene& scene, const std::string& fi
     for (const SceneObject& object : scene.objects()) {
         std::unique_ptr<ImplicitField> field;
         try {
-            field = implicit_field_of(*object.shape);
+            field = object.shape->implicit_field();
         } catch (const std::invalid_argument&) {
             continue;  // an open mesh, say: no inside to mesh
         }

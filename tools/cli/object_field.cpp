@@ -2,8 +2,7 @@
 
 #include <stdexcept>
 
-#include "geometry/polygonize/implicit_field_registry.h"
-#include "geometry/polygonize/transformed_field.h"
+#include "geometry/field/transformed_field.h"
 #include "renderer/core/did_you_mean.h"
 #include "renderer/core/input_error.h"
 
@@ -32,15 +31,14 @@ std::unique_ptr<ImplicitField> placed(const SceneObject& object, std::unique_ptr
 std::unique_ptr<ImplicitField> field_of(const SceneObject& object) {
     std::unique_ptr<ImplicitField> field;
     try {
-        field = implicit_field_of(*object.shape);
+        field = object.shape->implicit_field();
     } catch (const std::invalid_argument& error) {
         throw InputError({}, "--object", "object \"" + object.name + "\": " + error.what());
     }
     if (!field)
         throw InputError({}, "--object", "object \"" + object.name + "\" is a \"" + object.shape->type_name() +
-                                             "\", which is not an implicit surface; these are: " +
-                                             joined_names(implicit_shape_types()) +
-                                             " (objects traced as triangles: --method traced)");
+                                             "\", which is not an implicit surface (objects traced as triangles: "
+                                             "--method traced)");
     return placed(object, std::move(field));
 }
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polygonize/implicit_field.h"
+#include "renderer/plugin/implicit_field.h"
 #include "renderer/scene/render_scene.h"
 
 namespace isotrace::cli {

@@ -4,8 +4,8 @@
 // a lattice crossing are the Hermite data of dual contouring. f need not be a distance: only its sign, its zero
 // set and the direction of its gradient carry meaning, and |f|/|∇f| estimates the distance near the surface.
 //
-// Shapes offer their field through the implicit-field registry (implicit_field_registry.h); each primitive's
-// field lives in the primitive's own folder.
+// Shapes offer their field through Shape::implicit_field(); each primitive's field lives in the primitive's own
+// folder.
 #include <limits>
 #include <memory>
 

@@ -4,8 +4,8 @@
 // point, so the sign and zero set are exact; the gradient follows by the chain rule.
 #include <memory>
 
-#include "geometry/polygonize/implicit_field.h"
 #include "renderer/math/transform.h"
+#include "renderer/plugin/implicit_field.h"
 
 namespace isotrace {
 

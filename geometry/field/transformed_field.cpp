@@ -1,4 +1,4 @@
-#include "geometry/polygonize/transformed_field.h"
+#include "geometry/field/transformed_field.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "geometry/polygonize/box_index.h"
+#include "geometry/field/box_index.h"
 
 #include <cmath>
 #include <stdexcept>
