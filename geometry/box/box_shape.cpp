@@ -47,7 +47,7 @@ std::optional<InsideSpan> BoxShape::crossing(const Vec3d& origin, const Vec3d& d
 }
 
 void BoxShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                            std::vector<InsideSpan>& spans) const {
+                            std::vector<InsideSpan>& spans, QueryScratch&) const {
     if (const auto span = crossing(origin, direction)) append_clipped_span(*span, t_min, t_max, spans);
 }
 

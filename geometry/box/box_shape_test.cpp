@@ -95,20 +95,21 @@ TEST(BoxShape, AffineTransformsBakeExactlyAndMatchTheTriangleMeshBox) {
 TEST(BoxShape, InsideSpansAreClippedToTheQueryRange) {
     const BoxShape shape({0, 0, 0}, {1, 1, 1});
     std::vector<InsideSpan> spans;
-    shape.inside_spans({-5, 0, 0}, {2, 0, 0}, 0, 100, spans);  // direction of length 2: t halves
+    QueryScratch scratch;
+    shape.inside_spans({-5, 0, 0}, {2, 0, 0}, 0, 100, spans, scratch);  // direction of length 2: t halves
     ASSERT_EQ(spans.size(), 1u);
     EXPECT_DOUBLE_EQ(spans[0].enter.t, 2);
     EXPECT_DOUBLE_EQ(spans[0].exit.t, 3);
     EXPECT_EQ(spans[0].enter.normal, Vec3d(-1, 0, 0));
     EXPECT_EQ(spans[0].exit.normal, Vec3d(1, 0, 0));
     spans.clear();
-    shape.inside_spans({-5, 0, 0}, {2, 0, 0}, 2.5, 100, spans);
+    shape.inside_spans({-5, 0, 0}, {2, 0, 0}, 2.5, 100, spans, scratch);
     ASSERT_EQ(spans.size(), 1u);
     EXPECT_FALSE(spans[0].enter.on_surface());
     EXPECT_DOUBLE_EQ(spans[0].enter.t, 2.5);
     EXPECT_TRUE(spans[0].exit.on_surface());
     spans.clear();
-    shape.inside_spans({-5, 0, 0}, {2, 0, 0}, 3.5, 100, spans);
+    shape.inside_spans({-5, 0, 0}, {2, 0, 0}, 3.5, 100, spans, scratch);
     EXPECT_TRUE(spans.empty());
 }
 

@@ -28,37 +28,10 @@ void map_normals(std::vector<InsideSpan>& spans, const Transform& to_csg) {
             if (end->on_surface()) end->normal = normalize(to_csg.normal(end->normal));
 }
 
-// Buffers for one query on one thread. inside_spans recurses into nested trees, so every nesting level has its
-// own; they are kept between rays, so a query allocates nothing once they have grown.
-struct SpanScratch {
+// A CSG call's buffers, held while its children (nested trees among them) fill theirs.
+struct OperandBuffers {
     std::vector<InsideSpan> operand_spans;
     std::vector<SpanEvent> events;
-};
-
-class ScratchLevel {
-public:
-    ScratchLevel() {
-        if (levels().size() == depth()) levels().push_back(std::make_unique<SpanScratch>());
-        scratch_ = levels()[depth()++].get();
-        scratch_->events.clear();
-    }
-    ~ScratchLevel() { --depth(); }
-    ScratchLevel(const ScratchLevel&) = delete;
-    ScratchLevel& operator=(const ScratchLevel&) = delete;
-
-    SpanScratch& operator*() const { return *scratch_; }
-
-private:
-    static std::vector<std::unique_ptr<SpanScratch>>& levels() {
-        thread_local std::vector<std::unique_ptr<SpanScratch>> per_thread;
-        return per_thread;
-    }
-    static std::size_t& depth() {
-        thread_local std::size_t per_thread = 0;
-        return per_thread;
-    }
-
-    SpanScratch* scratch_;
 };
 
 }  // namespace
@@ -158,20 +131,20 @@ std::vector<MaterialReference> CsgShape::part_materials() const {
 }
 
 void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                            std::vector<InsideSpan>& spans) const {
-    const ScratchLevel level;
-    std::vector<InsideSpan>& operand_spans = (*level).operand_spans;
-    std::vector<SpanEvent>& events = (*level).events;
+                            std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+    const QueryScratch::Level level(scratch);
+    auto& [operand_spans, events] = level.get<OperandBuffers>();
+    events.clear();
     const bool narrows = operation_ != CsgOperation::Union;  // the result lies within the first child's spans
     for (std::uint32_t i = 0; i < operands_.size(); ++i) {
         const Operand& operand = operands_[i];
         operand_spans.clear();
         if (operand.from_csg) {
             operand.solid->inside_spans(operand.from_csg->point(origin), operand.from_csg->vector(direction), t_min,
-                                        t_max, operand_spans);
+                                        t_max, operand_spans, scratch);
             map_normals(operand_spans, *operand.to_csg);
         } else {
-            operand.solid->inside_spans(origin, direction, t_min, t_max, operand_spans);
+            operand.solid->inside_spans(origin, direction, t_min, t_max, operand_spans, scratch);
         }
         const bool bounds_result = operation_ == CsgOperation::Intersection || i == 0;
         if (narrows && bounds_result) {

@@ -46,7 +46,7 @@ public:
 
     void prepare_span_queries(RTCDevice device) override;
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                      std::vector<InsideSpan>& spans) const override;
+                      std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
 
     CsgOperation operation() const { return operation_; }
     std::size_t operand_count() const { return operands_.size(); }

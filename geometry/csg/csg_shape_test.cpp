@@ -281,7 +281,8 @@ TEST(CsgShape, BakedObjectTransformEqualsTheTransformedTree) {
 TEST(CsgShape, ASphereListIsTheUnionOfItsSpheres) {
     const SphereShape spheres({{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}, {{5, 0, 0}, 0.5}});
     std::vector<InsideSpan> spans;
-    spheres.inside_spans({-5, 0, 0}, {1, 0, 0}, 0, 100, spans);
+    QueryScratch scratch;
+    spheres.inside_spans({-5, 0, 0}, {1, 0, 0}, 0, 100, spans, scratch);
     ASSERT_EQ(spans.size(), 2u);
     EXPECT_DOUBLE_EQ(spans[0].enter.t, 4);
     EXPECT_EQ(spans[0].enter.primitive, 0u);

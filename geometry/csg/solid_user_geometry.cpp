@@ -5,6 +5,7 @@
 
 #include "geometry/csg/inside_span_list.h"
 #include "renderer/core/render_counters.h"
+#include "renderer/embree/query_context.h"
 #include "renderer/embree/user_geometry.h"
 
 namespace isotrace {
@@ -12,11 +13,12 @@ namespace {
 
 // The first surface point of `solid` on the segment (t_near, t_far) of the ray o + t·d.
 std::optional<BoundaryPoint> first_crossing(const Solid& solid, const Vec3d& origin, const Vec3d& direction,
-                                            double t_near, double t_far) {
+                                            double t_near, double t_far, QueryScratch& scratch) {
     if (!(t_near < t_far)) return std::nullopt;
-    thread_local std::vector<InsideSpan> spans;  // reused: no allocation per ray once warm
+    const QueryScratch::Level level(scratch);
+    auto& spans = level.get<std::vector<InsideSpan>>();
     spans.clear();
-    solid.inside_spans(origin, direction, t_near, t_far, spans);
+    solid.inside_spans(origin, direction, t_near, t_far, spans, scratch);
     return first_surface_crossing(spans, t_near, t_far);
 }
 
@@ -37,11 +39,12 @@ void SolidUserGeometry::bounds_callback(const RTCBoundsFunctionArguments* args) 
 
 void SolidUserGeometry::intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto* self = static_cast<const SolidUserGeometry*>(args->geometryUserPtr);
+    QueryScratch& scratch = query_scratch(args->context);
     std::optional<BoundaryPoint> found;  // the hit of the ray being handled
     user_geometry::intersect_rays(
         args, self->counter_slot_,
         [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) -> std::optional<double> {
-            found = first_crossing(*self->solid_, origin, direction, t_near, t_far);
+            found = first_crossing(*self->solid_, origin, direction, t_near, t_far, scratch);
             if (!found) return std::nullopt;
             return found->t;
         },
@@ -53,9 +56,11 @@ void SolidUserGeometry::intersect_callback(const RTCIntersectFunctionNArguments*
 
 void SolidUserGeometry::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* self = static_cast<const SolidUserGeometry*>(args->geometryUserPtr);
+    QueryScratch& scratch = query_scratch(args->context);
     user_geometry::occlude_rays(args, self->counter_slot_,
                                 [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
-                                    return first_crossing(*self->solid_, origin, direction, t_near, t_far).has_value();
+                                    return first_crossing(*self->solid_, origin, direction, t_near, t_far, scratch)
+                                        .has_value();
                                 });
 }
 

@@ -125,7 +125,7 @@ void BlobGroupShape::occluded_callback(const RTCOccludedFunctionNArguments* args
 }
 
 void BlobGroupShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                                  std::vector<InsideSpan>& spans) const {
+                                  std::vector<InsideSpan>& spans, QueryScratch&) const {
     std::vector<FieldCrossing> crossings;
     BlobQueryWork work;
     const int sign_at_start = group_.crossings(origin, direction, t_min, t_max, crossings, work);

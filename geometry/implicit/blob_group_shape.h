@@ -42,7 +42,7 @@ public:
 
     void prepare_span_queries(RTCDevice) override { register_counters(); }
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                      std::vector<InsideSpan>& spans) const override;
+                      std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
 
     const BlobGroup& group() const { return group_; }
     const BlobMaterials& materials() const { return materials_; }

@@ -36,7 +36,8 @@ TEST(BlobGroupSolid, LoneMetaballGivesOneSpanBetweenTheSphereHits) {
         const Vec3d origin = centre + normalize(Vec3d{unit(random), unit(random), unit(random)}) * 5.0;
         const Vec3d direction = (centre + Vec3d{unit(random), unit(random), unit(random)} * iso - origin) * 0.6;
         std::vector<InsideSpan> spans;
-        shape.inside_spans(origin, direction, 0, 100, spans);
+        QueryScratch scratch;
+        shape.inside_spans(origin, direction, 0, 100, spans, scratch);
         const auto expected = intersect_sphere(origin, direction, centre, iso);
         if (!expected || expected->t1 - expected->t0 < 1e-6) {
             EXPECT_TRUE(spans.empty() || spans[0].exit.t - spans[0].enter.t < 1e-5) << i;
@@ -58,14 +59,15 @@ TEST(BlobGroupSolid, RayFromInsideStartsWithACut) {
     const BlobGroupShape shape = lone_ball({0, 0, 0}, 1.0);
     const double iso = *shape.group().kernel().iso_radius(1.0, 1.0, 0.5);
     std::vector<InsideSpan> spans;
-    shape.inside_spans({0.1, 0, 0}, {2, 0, 0}, -0.2, 10, spans);  // starts at x = -0.3, inside
+    QueryScratch scratch;
+    shape.inside_spans({0.1, 0, 0}, {2, 0, 0}, -0.2, 10, spans, scratch);  // starts at x = -0.3, inside
     ASSERT_EQ(spans.size(), 1u);
     EXPECT_FALSE(spans[0].enter.on_surface());
     EXPECT_EQ(spans[0].enter.t, -0.2);
     EXPECT_NEAR(spans[0].exit.t, (iso - 0.1) / 2, 1e-9);
     // Cut at the far end too when the range stops inside.
     spans.clear();
-    shape.inside_spans({-3, 0, 0}, {1, 0, 0}, 0, 3, spans);
+    shape.inside_spans({-3, 0, 0}, {1, 0, 0}, 0, 3, spans, scratch);
     ASSERT_EQ(spans.size(), 1u);
     EXPECT_NEAR(spans[0].enter.t, 3 - iso, 1e-9);
     EXPECT_FALSE(spans[0].exit.on_surface());
@@ -84,7 +86,8 @@ TEST(BlobGroupSolid, SpansOfARandomGroupMatchDenseSampling) {
         const Vec3d origin{unit(random) * 1.5, unit(random) * 1.5, 4.0};
         const Vec3d direction = normalize(Vec3d{unit(random) * 0.3, unit(random) * 0.3, -1.0});
         std::vector<InsideSpan> spans;
-        shape.inside_spans(origin, direction, 0, 8, spans);
+        QueryScratch scratch;
+        shape.inside_spans(origin, direction, 0, 8, spans, scratch);
         std::vector<double> reference;  // sign changes by sampling every 5e-4 and bisecting
         const double step = 5e-4;
         double previous = total_field(group, origin);

@@ -3,20 +3,24 @@
 namespace isotrace {
 namespace {
 
-// Embree hands the filter the context it was given: the crossings list travels behind it.
+// Embree hands the filter the context it was given: what the traversal collects travels behind it.
 struct CollectingContext {
     RTCIntersectContext context;
-    std::vector<MeshCrossing>* crossings;
+    std::vector<MeshCrossing>* crossings;  // null when only their number is asked for
+    std::size_t count = 0;
 };
 
 void record_and_reject(const RTCFilterFunctionNArguments* args) {
-    const auto* collecting = reinterpret_cast<const CollectingContext*>(args->context);
+    auto* collecting = reinterpret_cast<CollectingContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        collecting->crossings->push_back({RTCRayN_tfar(args->ray, args->N, i),
-                                          {RTCHitN_Ng_x(args->hit, args->N, i), RTCHitN_Ng_y(args->hit, args->N, i),
-                                           RTCHitN_Ng_z(args->hit, args->N, i)},
-                                          RTCHitN_primID(args->hit, args->N, i)});
+        ++collecting->count;
+        if (collecting->crossings)
+            collecting->crossings->push_back(
+                {RTCRayN_tfar(args->ray, args->N, i),
+                 {RTCHitN_Ng_x(args->hit, args->N, i), RTCHitN_Ng_y(args->hit, args->N, i),
+                  RTCHitN_Ng_z(args->hit, args->N, i)},
+                 RTCHitN_primID(args->hit, args->N, i)});
         args->valid[i] = 0;  // rejected: traversal goes on to the next crossing
     }
 }
@@ -35,7 +39,16 @@ MeshCrossingScene::~MeshCrossingScene() { rtcReleaseScene(scene_); }
 
 void MeshCrossingScene::crossings(const Vec3d& origin, const Vec3d& direction, double t_far,
                                   std::vector<MeshCrossing>& out) const {
-    CollectingContext collecting{{}, &out};
+    traverse(origin, direction, t_far, &out);
+}
+
+std::size_t MeshCrossingScene::crossing_count(const Vec3d& origin, const Vec3d& direction, double t_far) const {
+    return traverse(origin, direction, t_far, nullptr);
+}
+
+std::size_t MeshCrossingScene::traverse(const Vec3d& origin, const Vec3d& direction, double t_far,
+                                        std::vector<MeshCrossing>* out) const {
+    CollectingContext collecting{{}, out};
     rtcInitIntersectContext(&collecting.context);
     RTCRayHit query{};
     query.ray.org_x = float(origin.x);
@@ -50,6 +63,7 @@ void MeshCrossingScene::crossings(const Vec3d& origin, const Vec3d& direction, d
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &collecting.context, &query);
+    return collecting.count;
 }
 
 }  // namespace isotrace

@@ -3,6 +3,7 @@
 // traversal lists every crossing of a ray with the surface (for the mesh's inside spans).
 #include <embree3/rtcore.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -26,8 +27,13 @@ public:
 
     // Appends every crossing of origin + t·direction with t in [0, t_far], in no particular order. Thread-safe.
     void crossings(const Vec3d& origin, const Vec3d& direction, double t_far, std::vector<MeshCrossing>& out) const;
+    // How many crossings crossings() would append (a parity test needs no list). Thread-safe.
+    std::size_t crossing_count(const Vec3d& origin, const Vec3d& direction, double t_far) const;
 
 private:
+    // Traces the ray past every crossing, appending them to `out` unless it is null; returns their number.
+    std::size_t traverse(const Vec3d& origin, const Vec3d& direction, double t_far, std::vector<MeshCrossing>* out) const;
+
     RTCScene scene_ = nullptr;
 };
 

@@ -46,13 +46,8 @@ private:
     bool inside(const Vec3d& p) const {
         static constexpr std::array<Vec3d, 3> kDirections = {Vec3d{0.5773, 0.6164, 0.5354}, Vec3d{-0.7071, 0.1316, 0.6947},
                                                              Vec3d{0.2104, -0.8847, -0.4160}};
-        thread_local std::vector<MeshCrossing> hits;
         int votes = 0;
-        for (const Vec3d& d : kDirections) {
-            hits.clear();
-            crossings_->crossings(p, d, INFINITY, hits);
-            votes += hits.size() % 2;
-        }
+        for (const Vec3d& d : kDirections) votes += int(crossings_->crossing_count(p, d, INFINITY) % 2);
         return votes >= 2;
     }
 

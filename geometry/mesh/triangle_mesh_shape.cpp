@@ -15,6 +15,15 @@
 #include "renderer/sampling/warps.h"
 
 namespace isotrace {
+namespace {
+
+// The buffers of an inside-span query: the line's crossings with the surface, and the spans before clipping.
+struct SpanBuffers {
+    std::vector<MeshCrossing> crossings;
+    std::vector<InsideSpan> unclipped;
+};
+
+}  // namespace
 
 TriangleMeshShape::TriangleMeshShape(TriangleMeshData mesh) : mesh_(std::move(mesh)) { build_area_distribution(); }
 
@@ -99,15 +108,15 @@ void TriangleMeshShape::prepare_span_queries(RTCDevice device) {
 }
 
 void TriangleMeshShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                                     std::vector<InsideSpan>& spans) const {
+                                     std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
     const auto range = clip_line_to_box(Vec3d(span_bounds_.lower), Vec3d(span_bounds_.upper), origin, direction,
                                         -INFINITY, INFINITY);
     if (!range || !(range->t_enter < range->t_exit) || range->t_exit < t_min || range->t_enter > t_max) return;
     // The query starts where the line enters the bounds (outside the mesh), so crossing directions alone tell
     // inside from outside, also for rays that start inside.
     const double start = range->t_enter, end = range->t_exit;
-    thread_local std::vector<MeshCrossing> crossings;
-    thread_local std::vector<InsideSpan> unclipped;
+    const QueryScratch::Level level(scratch);
+    auto& [crossings, unclipped] = level.get<SpanBuffers>();
     crossings.clear();
     unclipped.clear();
     crossing_scene_->crossings(origin + direction * start, direction, end - start, crossings);

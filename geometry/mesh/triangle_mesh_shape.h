@@ -44,7 +44,7 @@ public:
     std::string solid_problem() const override;
     void prepare_span_queries(RTCDevice device) override;
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                      std::vector<InsideSpan>& spans) const override;
+                      std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
 
     const TriangleMeshData& data() const { return mesh_; }
 

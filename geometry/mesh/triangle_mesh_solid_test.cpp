@@ -69,8 +69,9 @@ TEST(TriangleMeshSolid, CubeSpansMatchTheBoxIncludingRaysFromInsideAndThroughEdg
     const auto compare = [&](const Vec3d& o, const Vec3d& d, double t_min, const std::string& what,
                              bool normals = true) {
         std::vector<InsideSpan> from_mesh, from_box;
-        mesh.inside_spans(o, d, t_min, 100, from_mesh);
-        box.inside_spans(o, d, t_min, 100, from_box);
+        QueryScratch scratch;
+        mesh.inside_spans(o, d, t_min, 100, from_mesh, scratch);
+        box.inside_spans(o, d, t_min, 100, from_box, scratch);
         ASSERT_EQ(from_mesh.size(), from_box.size()) << what;
         for (std::size_t i = 0; i < from_box.size(); ++i) {
             EXPECT_NEAR(from_mesh[i].enter.t, from_box[i].enter.t, 1e-5) << what;

@@ -75,7 +75,8 @@ const Case kCases[] = {{"box", box},   {"sphere", spheres}, {"csg", csg},
 
 bool inside_by_rays(const Solid& solid, const Vec3d& p) {
     std::vector<InsideSpan> spans;
-    solid.inside_spans(p, normalize(Vec3d{0.31, 0.52, 0.79}), -100, 100, spans);
+    QueryScratch scratch;
+    solid.inside_spans(p, normalize(Vec3d{0.31, 0.52, 0.79}), -100, 100, spans, scratch);
     for (const InsideSpan& s : spans)
         if (s.enter.t < 0 && 0 < s.exit.t) return true;
     return false;

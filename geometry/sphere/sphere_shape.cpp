@@ -116,7 +116,7 @@ std::optional<InsideSpan> SphereShape::span_of(std::uint32_t index, const Vec3d&
 }
 
 void SphereShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                               std::vector<InsideSpan>& spans) const {
+                               std::vector<InsideSpan>& spans, QueryScratch&) const {
     if (spheres_.size() == 1) {
         if (const auto span = span_of(0, origin, direction)) append_clipped_span(*span, t_min, t_max, spans);
         return;

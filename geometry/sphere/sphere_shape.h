@@ -43,7 +43,7 @@ public:
 
     // Closed form per sphere; overlapping spheres of one set merge (their union is the solid).
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                      std::vector<InsideSpan>& spans) const override;
+                      std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
 
 private:
     void build_area_distribution();

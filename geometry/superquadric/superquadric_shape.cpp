@@ -10,6 +10,16 @@
 #include "renderer/embree/user_geometry.h"
 
 namespace isotrace {
+namespace {
+
+// The buffers of an inside-span query: one superquadric's crossings, its spans, and the events of their union.
+struct SpanBuffers {
+    std::vector<Crossing> found;
+    std::vector<InsideSpan> own;
+    std::vector<SpanEvent> events;
+};
+
+}  // namespace
 
 SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
     : superquadrics_(std::move(superquadrics)) {
@@ -130,9 +140,9 @@ void SuperquadricShape::occluded_callback(const RTCOccludedFunctionNArguments* a
 }
 
 void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin, const Vec3d& direction,
-                                        double t_min, double t_max, std::vector<InsideSpan>& spans) const {
+                                        double t_min, double t_max, std::vector<InsideSpan>& spans,
+                                        std::vector<Crossing>& found) const {
     const Superquadric& s = superquadrics_[index];
-    thread_local std::vector<Crossing> found;
     found.clear();
     SuperquadricWork work;
     s.crossings(origin, direction, t_min, t_max, found, work);
@@ -142,18 +152,18 @@ void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin
 }
 
 void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                                     std::vector<InsideSpan>& spans) const {
+                                     std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+    const QueryScratch::Level level(scratch);
+    auto& [found, own, events] = level.get<SpanBuffers>();
     if (superquadrics_.size() == 1) {
-        primitive_spans(0, origin, direction, t_min, t_max, spans);
+        primitive_spans(0, origin, direction, t_min, t_max, spans, found);
         return;
     }
     // The union of the superquadrics' spans, by the sweep that combines CSG operands.
-    thread_local std::vector<InsideSpan> own;
-    thread_local std::vector<SpanEvent> events;
     events.clear();
     for (std::uint32_t i = 0; i < superquadrics_.size(); ++i) {
         own.clear();
-        primitive_spans(i, origin, direction, t_min, t_max, own);
+        primitive_spans(i, origin, direction, t_min, t_max, own, found);
         append_span_events(i, 0, own, events);
     }
     combine_span_events(CsgOperation::Union, std::uint32_t(superquadrics_.size()), events, spans);

@@ -28,7 +28,7 @@ public:
     RTCGeometry create_geometry(RTCDevice device) override;
 
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                      std::vector<InsideSpan>& spans) const override;
+                      std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
 
     // The field of the union, positive inside: max over the set of 1 − G(D⁻¹(P)), G the superellipsoid's gauge
     // (superellipsoid.h: homogeneous of degree one, so 1 − G is about the depth below the surface in units of the
@@ -43,9 +43,9 @@ public:
     const std::vector<Superquadric>& superquadrics() const { return superquadrics_; }
 
 private:
-    // The spans of one superquadric (primitive `index`), in order.
+    // The spans of one superquadric (primitive `index`), in order; `found` holds its crossings on the way.
     void primitive_spans(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_min,
-                         double t_max, std::vector<InsideSpan>& spans) const;
+                         double t_max, std::vector<InsideSpan>& spans, std::vector<Crossing>& found) const;
     void record_work(const SuperquadricWork& work) const;
     // Superquadric `index`'s first crossing in (t_near, t_far), its work recorded.
     std::optional<double> first_hit(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,

@@ -25,7 +25,8 @@ using superquadric_test::random_deformations;
 std::vector<InsideSpan> spans_of(const SuperquadricShape& shape, const Vec3d& o, const Vec3d& d, double t_min,
                                  double t_max) {
     std::vector<InsideSpan> spans;
-    shape.inside_spans(o, d, t_min, t_max, spans);
+    QueryScratch scratch;
+    shape.inside_spans(o, d, t_min, t_max, spans, scratch);
     return spans;
 }
 

@@ -52,9 +52,13 @@ struct ThreadBlock {
 // A new block, registered for the totals, for a thread that counts for the first time.
 ThreadBlock* new_block();
 
-// The calling thread's block. Initial-exec TLS and a plain null test: the default model of a shared library calls
-// __tls_get_addr and a guarded initialiser on every count (measured: ~40 instructions per call on the blob hot
-// path); __thread rather than thread_local, which other files would reach through a wrapper function.
+// The calling thread's block: the library's only per-thread state (everything else a query needs travels with
+// it, docs/decisions.md). Per thread because a count sits inside a ray's arithmetic, where it must cost a plain
+// increment: a shared counter would be an atomic read-modify-write on a cache line every thread writes, and a block
+// passed down as an argument would reach every function that counts. Initial-exec TLS and a plain null test: the
+// default model of a shared library calls __tls_get_addr and a guarded initialiser on every count (measured: ~40
+// instructions per call on the blob hot path); __thread rather than thread_local, which other files would reach
+// through a wrapper function.
 extern __thread ThreadBlock* thread_block __attribute__((tls_model("initial-exec")));
 
 inline ThreadBlock& local_block() {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/embree/query_scratch.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
@@ -49,9 +50,10 @@ public:
 
     // Appends to `spans`, in increasing t, the spans of origin + t·direction (direction not necessarily unit
     // length) that lie inside the solid, clipped to [t_min, t_max]: disjoint, non-empty, ends on the surface
-    // except where clipped (BoundaryPoint::kCut). Thread-safe.
+    // except where clipped (BoundaryPoint::kCut). A solid that needs buffers takes a level of `scratch`, the
+    // query's (nothing else is written), so concurrent queries with scratches of their own are safe.
     virtual void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                              std::vector<InsideSpan>& spans) const = 0;
+                              std::vector<InsideSpan>& spans, QueryScratch& scratch) const = 0;
 };
 
 }  // namespace isotrace

@@ -95,8 +95,7 @@ void RenderScene::commit() {
 
 std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) const {
     counters::count_ray(kind);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    QueryContext context(scratch_pool_);
     RTCRayHit query;  // set_embree_ray writes the whole ray; Embree reads only geomID and instID of the hit
     // The path tracer stores a ray's fields one or two at a time just before asking, and Embree stores the hit's
     // one by one: each is read alone (a volatile load is never merged with its neighbours), since a wider load would
@@ -112,7 +111,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     set_embree_ray(query.ray, fields);
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene_, &context, &query);
+    rtcIntersect1(scene_, &context.embree, &query);
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
 
     const bool via_instance = query.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
@@ -189,10 +188,9 @@ std::array<std::int32_t, 8> traceable_lanes(const std::int32_t* valid, const Ray
 }  // namespace
 
 void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    QueryContext context(scratch_pool_);
     alignas(32) const std::array<std::int32_t, 8> traceable = traceable_lanes(valid, query.ray);  // others miss
-    rtcIntersect8(traceable.data(), scene_, &context, &query);
+    rtcIntersect8(traceable.data(), scene_, &context.embree, &query);
     // Counted per packet, without branches where every object counts in one slot (counting lane by lane chains
     // stores and loads of the same counter, and the branches on the lanes mispredict).
     int rays = 0, hits = 0;
@@ -212,12 +210,11 @@ void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query,
 }
 
 void RenderScene::occluded_packet(const std::int32_t* valid, RTCRay8& query) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    QueryContext context(scratch_pool_);
     alignas(32) const std::array<std::int32_t, 8> traceable = traceable_lanes(valid, query);
     for (int lane = 0; lane < 8; ++lane)  // an untraceable shadow ray is blocked
         if (valid[lane] && !traceable[std::size_t(lane)]) query.tfar[lane] = -std::numeric_limits<float>::infinity();
-    rtcOccluded8(traceable.data(), scene_, &context, &query);
+    rtcOccluded8(traceable.data(), scene_, &context.embree, &query);
     int rays = 0;
     for (int lane = 0; lane < 8; ++lane) rays += valid[lane] != 0;
     counters::count_rays(RayKind::Shadow, std::uint64_t(rays));

@@ -14,6 +14,7 @@
 #include "renderer/core/ray.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/embree_ray.h"
+#include "renderer/embree/query_context.h"
 #include "renderer/math/transform.h"
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
@@ -83,11 +84,10 @@ public:
             count_untraceable_rays(1);
             return true;
         }
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
+        QueryContext context(scratch_pool_);
         RTCRay query;
         set_embree_ray(query, ray);
-        rtcOccluded1(scene_, &context, &query);
+        rtcOccluded1(scene_, &context.embree, &query);
         return query.tfar == -std::numeric_limits<float>::infinity();
     }
 
@@ -134,6 +134,8 @@ private:
     bool light_sampling_is_deterministic_ = true;
     std::optional<FlatLambertianScene> flat_lambertian_;
     BuildStatistics build_statistics_;
+    // The buffers of queries that reach solids (CSG, superquadrics, ...), lent to them through QueryContext.
+    mutable QueryScratchPool scratch_pool_;
 
     void build_lights();
     void describe_flat_lambertian();
