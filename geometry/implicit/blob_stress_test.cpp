@@ -1,6 +1,6 @@
 // Random rays against random dense blob groups (all five kernels; metaballs alone, and with rotated non-uniform
 // metacubes; negative weights, coincident elements), compared with a slow oracle that shares nothing with the cell
-// sweep but the element slices: every element of the group on every piece (no cells, no candidates), each piece's
+// march but the element slices: every element of the group on every piece (no cells, no candidates), each piece's
 // field built by polynomial products and solved by Sturm sequences (or sampled densely where a kernel piece is not
 // a polynomial). Occlusion queries are checked against the first crossing. 10⁴ rays in the default suite;
 // ISOTRACE_BLOB_STRESS_RAYS raises it (the `long` CTest label runs 10⁶).
@@ -43,7 +43,7 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
             breaks.push_back(piece.t_begin);
             breaks.push_back(piece.t_end);
             // Kernel piece boundaries: where dist² reaches a piece's start (sampled finely and bisected, so as
-            // not to share the sweep's quadratic solver).
+            // not to share the march's quadratic solver).
             for (int k = 1; k < pieces.count; ++k) {
                 const QuadraticAbout q = slices->distance_squared(piece, piece.t_begin);
                 const double level = pieces.pieces[std::size_t(k)].r2_begin;
@@ -138,7 +138,7 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
 
 // A dense random group: `count` elements in a 2 m cube, metaballs and rotated non-uniform metacubes, one in six
 // carving, one in ten a copy of an earlier one (coincident). With `metaballs_only` the boxes drawn are dropped
-// (the same random numbers are drawn): the group then takes the sweep compiled for metaballs alone.
+// (the same random numbers are drawn): the group then takes the march compiled for metaballs alone.
 BlobGroup dense_group(std::mt19937_64& rng, const std::string& kernel, int count, bool metaballs_only) {
     std::uniform_real_distribution<double> u(0, 1);
     std::vector<Metacube> elements;
@@ -234,7 +234,7 @@ void compare_with_oracle(long long first_group, long long rays) {
             };
             const double tolerance = 1e-7 * t_max;
             // The oracle samples non-polynomial pieces densely and can miss a pair of crossings closer than its
-            // step: the sweep's pair is right when F in its middle has the other sign than just before it.
+            // step: the march's pair is right when F in its middle has the other sign than just before it.
             const auto total = [&](double t) {
                 double sum = -group.threshold();
                 for (const Metacube& e : group.elements()) sum += e.field(group.kernel(), origin + direction * t);
@@ -258,7 +258,7 @@ void compare_with_oracle(long long first_group, long long rays) {
                     EXPECT_EQ(all[i].entering, expected[j].entering) << context();
                     ++i, ++j;
                 } else if (j + 1 < expected.size() && expected[j + 1].t - expected[j].t < tolerance) {
-                    j += 2;  // a graze the sweep did not split
+                    j += 2;  // a graze the march did not split
                     ++graze_pairs;
                 } else if (i + 1 < all.size() && all[i + 1].t - all[i].t < tolerance) {
                     i += 2;  // a graze the oracle did not split
@@ -268,7 +268,7 @@ void compare_with_oracle(long long first_group, long long rays) {
                     i += 2;  // a dip narrower than the oracle's sampling, confirmed by the field itself
                     ++thin_dips;
                 } else {
-                    FAIL() << context() << " crossing lists differ at sweep " << i << " / oracle " << j << ": "
+                    FAIL() << context() << " crossing lists differ at march " << i << " / oracle " << j << ": "
                            << (i < all.size() ? all[i].t : -1) << " vs " << (j < expected.size() ? expected[j].t : -1);
                 }
             }
@@ -285,8 +285,8 @@ void compare_with_oracle(long long first_group, long long rays) {
 TEST(BlobStress, RandomRaysAgreeWithTheBruteForceOracle) { compare_with_oracle(first_traced_group(), stress_rays()); }
 
 // Rays that start on the surface, a few float ulps off it as secondary rays do (SurfaceHit::spawn_origin), leaving
-// it or heading in: F is within a hair of T at their start, where the sweep of metaballs settles the first piece by
-// the elements' chords (metaball_sweep.h) rather than by its polynomial. Their first crossing and occlusion must
+// it or heading in: F is within a hair of T at their start, where the march of metaballs settles the first piece by
+// the elements' chords (metaball_march.h) rather than by its polynomial. Their first crossing and occlusion must
 // still agree with the oracle.
 TEST(BlobStress, RaysFromTheSurfaceAgreeWithTheBruteForceOracle) {
     std::mt19937_64 rng(20261129);
@@ -328,7 +328,7 @@ TEST(BlobStress, RaysFromTheSurfaceAgreeWithTheBruteForceOracle) {
     std::printf("blob stress from the surface: %lld rays, %lld hits, %lld graze pairs\n", rays, hits, graze_pairs);
 }
 
-// The groups where the 10⁶-ray run once found the sweep wrong (or the oracle blind), replayed in the default
+// The groups where the 10⁶-ray run once found the march wrong (or the oracle blind), replayed in the default
 // suite: a flat skeleton's dist² rounding below 0 (Nishimura, 196), bisection landing on the last of three roots
 // (Blinn, 270 and 530), F = 0 exactly at a search midpoint (Nishimura, 1301), a dip narrower than the oracle's
 // sampling (Nishimura, 13031).

@@ -57,7 +57,7 @@ public:
     // dist²(o + t·dir) on `piece` (valid for t in the piece), written about t_ref.
     QuadraticAbout distance_squared(const RegionPiece& piece, double t_ref) const;
     // A metaball's dist² along o + t·dir, written about t_ref: the same bits as distance_squared gives on the one
-    // piece of a metaball's slices, without building them. Inline: the sweep asks it for every metaball it joins.
+    // piece of a metaball's slices, without building them. Inline: the march asks it for every metaball it joins.
     static QuadraticAbout metaball_distance_squared(const Vec3d& origin, const Vec3d& direction,
                                                     const Vec3d& centre, double t_ref) {
         return squared_offsets(origin - centre, direction, {0, 0, 0}, {1, 1, 1}, t_ref);  // as metaball() sets them

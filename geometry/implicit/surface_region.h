@@ -5,7 +5,7 @@
 // there. The box is halved along its longest side, recursively, and the region returned is the bounding box of
 // the finest sub-boxes whose bounds straddle T.
 //
-// Blob cells use it as their Embree bounds and as the stretch a ray sweeps: a ray that passes a cell where it is
+// Blob cells use it as their Embree bounds and as the stretch a ray marches: a ray that passes a cell where it is
 // all inside, all outside or only near the surface costs Embree a box test and no query at all.
 #include <algorithm>
 #include <cmath>
@@ -162,7 +162,7 @@ std::optional<WorldBounds> surface_region(const WorldBounds& box, std::span<cons
 }
 
 // The same region where every element is a metaball and the kernel is `unit`, one polynomial piece of degree ≤ 3 on
-// x = dist²/R² ∈ [0, 1) and 0 beyond (MetaballSweep::applies), in lanes.
+// x = dist²/R² ∈ [0, 1) and 0 beyond (MetaballMarch::applies), in lanes.
 std::optional<WorldBounds> metaball_surface_region(const WorldBounds& box, std::span<const std::uint32_t> ids,
                                                    std::span<const Metacube> elements, const FieldPiece& unit,
                                                    double threshold);

@@ -1,7 +1,7 @@
 #pragma once
-// The blob sweep for groups of metaballs alone whose kernel is one polynomial piece on its whole support (Kim's,
+// The blob march for groups of metaballs alone whose kernel is one polynomial piece on its whole support (Kim's,
 // Wyvill's and Murakami's: the benchmark clouds and most scenes). The same pieces, bounds, Bernstein test and
-// solving as the general sweep (field_sweep.h, sweep_piece.h), with the cell's candidates side by side in lanes of
+// solving as the general march (field_march.h, march_piece.h), with the cell's candidates side by side in lanes of
 // four (double4.h) instead of in a list of joined elements ordered by entry:
 //   1. the float sphere test keeps the listed elements the stretch may come near; their exact nearest approaches
 //      bound F from above (below T the stretch holds no crossing: nearly half the queries end here), and those
@@ -12,10 +12,10 @@
 //   3. pieces run between consecutive entries and exits: the next event is the least entry or exit beyond the
 //      piece's start (a minimum over the lanes, no sort), and the elements that count on a piece are a mask of the
 //      lanes (entered, not left), so each bound and sum is a masked sum over whole lanes: no branch per element,
-//      where the general sweep's loops over 5–8 joined elements and its sort mispredicted (docs/decisions.md).
+//      where the general march's loops over 5–8 joined elements and its sort mispredicted (docs/decisions.md).
 // It takes at most kMaxLanes near elements (nearly every query of the benchmark clouds): run returns false for more,
-// having done nothing, and the general sweep takes the query. Its sums run in lane order rather than in order of
-// entry, so its crossings agree with the general sweep's to rounding, not bit for bit.
+// having done nothing, and the general march takes the query. Its sums run in lane order rather than in order of
+// entry, so its crossings agree with the general march's to rounding, not bit for bit.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -28,7 +28,7 @@
 #include "geometry/implicit/field_function.h"
 #include "geometry/implicit/metacube.h"
 #include "geometry/implicit/sphere_prefilter.h"
-#include "geometry/implicit/sweep_piece.h"
+#include "geometry/implicit/march_piece.h"
 #include "geometry/implicit/unit_piece_lanes.h"
 #include "renderer/core/inline_vector.h"
 #include "renderer/math/double4.h"
@@ -37,11 +37,11 @@
 namespace isotrace {
 
 template <class Kernel>
-class MetaballSweep {
+class MetaballMarch {
 public:
     static constexpr std::size_t kMaxLanes = 32;  // lane sets are bits of an unsigned
 
-    // Whether a group of `elements` with this kernel may be swept here: metaballs only, and a kernel that is one
+    // Whether a group of `elements` with this kernel may be marched here: metaballs only, and a kernel that is one
     // polynomial piece of degree ≤ 3 in r²/R² on the whole support.
     static bool applies(const Kernel& kernel, std::span<const Metacube> elements) {
         const auto pieces = kernel.unit_pieces();
@@ -52,24 +52,23 @@ public:
     }
 
     // centre_bound ≥ the largest |centre| of the spheres.
-    MetaballSweep(const Kernel& kernel, double threshold, std::span<const Metacube> elements,
+    MetaballMarch(const Kernel& kernel, double threshold, std::span<const Metacube> elements,
                   std::span<const BoundingSphere> spheres, double centre_bound)
         : kernel_(kernel), threshold_(threshold), elements_(elements), spheres_(spheres),
           centre_bound_(centre_bound), unit_(kernel.unit_pieces()[0]) {}
 
-    // As FieldSweep::run: sweeps `stretch` over the field of the `listed` elements (every element whose support
-    // may reach the stretch is among them), calling report(crossing, sweep) for each crossing in increasing t
-    // (true: stop) and crossed_before() when the stretch starts inside after t_min (true: stop). Returns false,
+    // As FieldMarch::run: marches `stretch` over the field of the `listed` elements (every element whose support
+    // may reach the stretch is among them), calling query.found(crossing, march) for each crossing in increasing t
+    // (true: stop) and query.crossed_before() when the stretch starts inside after t_min (true: stop). Returns false,
     // having done nothing, when more than kMaxLanes listed elements may come near the stretch. Without
-    // kPlaceNeeded (occlusion) a crossing may be reported at any t of the piece it lies on: F beyond rounding on
+    // Query::kPlaceNeeded (occlusion) a crossing may be reported at any t of the piece it lies on: F beyond rounding on
     // both sides of T at a piece's ends proves one there, with no polynomial composed or solved.
-    template <bool kPlaceNeeded = true, class Report, class CrossedBefore>
-    bool run(std::span<const std::uint32_t> listed, const SweepStretch& stretch, BlobQueryWork& work,
-             Report&& report, CrossedBefore&& crossed_before);
+    template <class Query>
+    bool run(std::span<const std::uint32_t> listed, const MarchStretch& stretch, BlobQueryWork& work, Query& query);
 
     // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece, in
     // ascending element order: the sum BlobGroup::gradient makes over the cell's list, hence the same bits (as
-    // FieldSweep::gradient_at).
+    // FieldMarch::gradient_at).
     Vec3d gradient_at(const Vec3d& point) const { return gradient<0>(point); }
 
     // F + T at a point, from `listed` (every element whose support may contain the point), four elements at a time:
@@ -78,11 +77,11 @@ public:
     double field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const;
 
 private:
-    // What a report is given while sweep_pieces<kGroups> runs: the sweep, with its count of groups known.
+    // What a report is given while march_pieces<kGroups> runs: the march, with its count of groups known.
     template <std::size_t kGroups>
     struct PiecesView {
-        const MetaballSweep& sweep;
-        Vec3d gradient_at(const Vec3d& point) const { return sweep.template gradient<kGroups>(point); }
+        const MetaballMarch& march;
+        Vec3d gradient_at(const Vec3d& point) const { return march.template gradient<kGroups>(point); }
     };
     template <std::size_t kGroups>
     Vec3d gradient(const Vec3d& point) const;
@@ -103,24 +102,23 @@ private:
     std::size_t groups() const { return kGroups != 0 ? kGroups : groups_; }
 
     // run once the near elements are known, with kNearGroups groups of them (0: as many as there are).
-    template <std::size_t kNearGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-    void sweep_near(const SweepStretch& stretch, BlobQueryWork& work, Report& report, CrossedBefore& crossed_before);
+    template <std::size_t kNearGroups, class Query>
+    void march_near(const MarchStretch& stretch, BlobQueryWork& work, Query& query);
     // The pieces of the stretch, in order, over kGroups groups of candidates (0: groups_).
-    template <std::size_t kGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-    void sweep_pieces(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
-                      CrossedBefore& crossed_before);
+    template <std::size_t kGroups, class Query>
+    void march_pieces(const MarchStretch& stretch, BlobQueryWork& work, Query& query);
 
     // Loads the near elements into the lanes and returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's
-    // nearest approach (as FieldSweep::gather), without the chords' square roots: nearly half the queries end at
+    // nearest approach (as FieldMarch::gather), without the chords' square roots: nearly half the queries end at
     // this bound.
     template <std::size_t kNearGroups>
-    double near_bound(const SweepStretch& stretch);
+    double near_bound(const MarchStretch& stretch);
     // Leaves in the lanes, compacted, the candidates (their support's chord meets the stretch) with their chords.
     template <std::size_t kNearGroups>
-    void make_candidates(const SweepStretch& stretch);
+    void make_candidates(const MarchStretch& stretch);
     // The candidates' dist² quadratics about the stretch's start and their 1/R².
     template <std::size_t kGroups>
-    void prepare_pieces(const SweepStretch& stretch);
+    void prepare_pieces(const MarchStretch& stretch);
     // F − T on the piece [s0, s0 + width] as a polynomial in u ∈ [0, 1], summed over the lanes in `counts`, and a bound
     // on the magnitude of every value its composition rounds (for the Bernstein test's rounding).
     struct PiecePolynomial {
@@ -202,7 +200,7 @@ private:
 };
 
 template <class Kernel>
-typename MetaballSweep<Kernel>::ElementLanes MetaballSweep<Kernel>::element_lanes(std::span<const std::uint32_t> listed,
+typename MetaballMarch<Kernel>::ElementLanes MetaballMarch<Kernel>::element_lanes(std::span<const std::uint32_t> listed,
                                                                                   std::size_t first) const {
     const std::size_t n = listed.size();
     const double* e[4];
@@ -220,7 +218,7 @@ typename MetaballSweep<Kernel>::ElementLanes MetaballSweep<Kernel>::element_lane
 }
 
 template <class Kernel>
-double MetaballSweep<Kernel>::field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const {
+double MetaballMarch<Kernel>::field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const {
     InlineVector<std::uint32_t, 64> near;
     append_near(listed, spheres_, PointNearSpheres(point, centre_bound_), near);
     const std::span<const std::uint32_t> ids(near.begin(), near.size());
@@ -235,7 +233,7 @@ double MetaballSweep<Kernel>::field_at(const Vec3d& point, std::span<const std::
 
 template <class Kernel>
 template <std::size_t kNearGroups>
-double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
+double MetaballMarch<Kernel>::near_bound(const MarchStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     const std::size_t n = near_.size();
@@ -269,7 +267,7 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
 
 template <class Kernel>
 template <std::size_t kNearGroups>
-void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
+void MetaballMarch<Kernel>::make_candidates(const MarchStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     const std::size_t n = near_.size();
@@ -324,7 +322,7 @@ void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
 
 template <class Kernel>
 template <std::size_t kGroups>
-void MetaballSweep<Kernel>::prepare_pieces(const SweepStretch& stretch) {
+void MetaballMarch<Kernel>::prepare_pieces(const MarchStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     // dist² about the stretch's start, as MetacubeRaySlices::metaball_distance_squared writes it.
@@ -342,7 +340,7 @@ void MetaballSweep<Kernel>::prepare_pieces(const SweepStretch& stretch) {
 
 template <class Kernel>
 template <std::size_t kGroups>
-typename MetaballSweep<Kernel>::PiecePolynomial MetaballSweep<Kernel>::piece_polynomial(double s0, double width,
+typename MetaballMarch<Kernel>::PiecePolynomial MetaballMarch<Kernel>::piece_polynomial(double s0, double width,
                                                                                         const Mask4* counts) const {
     // Each counting element's w·Σₖ βₖ·xᵏ with x(u) = dist²(s0 + u·width)/R² = x0 + x1·u + x2·u², by Horner on
     // polynomials: each step multiplies by x(u) (every new coefficient from the old ones, cᵢ ← cᵢ₋₂·x2 + cᵢ₋₁·x1 +
@@ -396,7 +394,7 @@ typename MetaballSweep<Kernel>::PiecePolynomial MetaballSweep<Kernel>::piece_pol
 
 template <class Kernel>
 template <std::size_t kGroups>
-double MetaballSweep<Kernel>::value(double t) const {
+double MetaballMarch<Kernel>::value(double t) const {
     const double s = t - t_ref_;
     Double4 sum{};
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
@@ -408,7 +406,7 @@ double MetaballSweep<Kernel>::value(double t) const {
 
 template <class Kernel>
 template <std::size_t kGroups, class Lanes>
-double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
+double MetaballMarch<Kernel>::absolute_weights(Lanes&& lanes) const {
     Double4 sum{};
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 weight = load4(weight_ + 4 * g);
@@ -419,7 +417,7 @@ double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
 
 template <class Kernel>
 template <std::size_t kGroups>
-double MetaballSweep<Kernel>::chord_upper_bound(double s0, double width, const Mask4* counts) const {
+double MetaballMarch<Kernel>::chord_upper_bound(double s0, double width, const Mask4* counts) const {
     Double4 a{}, b{}, c{};  // the chords' sum as a + b·σ + c·σ², σ = s − s0 ∈ [0, width]
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const auto [near, far] = distance2_range(g, s0, s0 + width);
@@ -452,7 +450,7 @@ double MetaballSweep<Kernel>::chord_upper_bound(double s0, double width, const M
 
 template <class Kernel>
 template <std::size_t kGroups>
-Vec3d MetaballSweep<Kernel>::gradient(const Vec3d& point) const {
+Vec3d MetaballMarch<Kernel>::gradient(const Vec3d& point) const {
     Vec3d sum(0, 0, 0);
     if constexpr (requires(Double4 x) { Kernel::unit_derivative_of(x); }) {
         // Each element's w·f'(r²)·2(P − C) four lanes at a time, with Metacube::field_gradient's operations in its
@@ -482,15 +480,15 @@ Vec3d MetaballSweep<Kernel>::gradient(const Vec3d& point) const {
 }
 
 template <class Kernel>
-template <bool kPlaceNeeded, class Report, class CrossedBefore>
-bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const SweepStretch& stretch,
-                                BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
+template <class Query>
+bool MetaballMarch<Kernel>::run(std::span<const std::uint32_t> listed, const MarchStretch& stretch,
+                                BlobQueryWork& work, Query& query) {
     near_.clear();
     append_near(listed, spheres_, near_stretch_test(stretch, centre_bound_), near_);
     if (near_.size() > kMaxLanes) return false;
     ++work.queries;
     const auto with_near_groups = [&]<std::size_t kNearGroups>() {
-        sweep_near<kNearGroups, kPlaceNeeded>(stretch, work, report, crossed_before);
+        march_near<kNearGroups>(stretch, work, query);
     };
     static_assert(kUnrolledGroups == 4, "one case per unrolled count");
     switch ((near_.size() + 3) / 4) {
@@ -504,9 +502,8 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
 }
 
 template <class Kernel>
-template <std::size_t kNearGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-void MetaballSweep<Kernel>::sweep_near(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
-                                       CrossedBefore& crossed_before) {
+template <std::size_t kNearGroups, class Query>
+void MetaballMarch<Kernel>::march_near(const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
     if (stretch_below_threshold(near_bound<kNearGroups>(stretch), threshold_)) {
         ++work.queries_bounded;
         work.candidates += std::uint64_t(std::popcount(kept_lanes_));
@@ -516,16 +513,16 @@ void MetaballSweep<Kernel>::sweep_near(const SweepStretch& stretch, BlobQueryWor
     work.candidates += count_;
     // Nearly every near element is a candidate: the count of groups stays.
     if (kNearGroups != 0 && groups_ == kNearGroups)
-        sweep_pieces<kNearGroups, kPlaceNeeded>(stretch, work, report, crossed_before);
+        march_pieces<kNearGroups>(stretch, work, query);
     else
-        sweep_pieces<0, kPlaceNeeded>(stretch, work, report, crossed_before);
+        march_pieces<0>(stretch, work, query);
 }
 
 template <class Kernel>
-template <std::size_t kGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
-                                         CrossedBefore& crossed_before) {
-    using sweep_piece::sign_of;
+template <std::size_t kGroups, class Query>
+void MetaballMarch<Kernel>::march_pieces(const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
+    constexpr bool kPlaceNeeded = Query::kPlaceNeeded;
+    using march_piece::sign_of;
     prepare_pieces<kGroups>(stretch);
     unsigned entered = 0;  // lanes that counted on some piece, for the statistics
     double t0 = stretch.t_begin;
@@ -538,26 +535,26 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
     const auto crossing = [&](double t, int before) {
         if (!(t > stretch.t_min && t < stretch.t_max)) return false;
         ++work.roots;
-        return report(FieldCrossing{t, before < 0, witness()}, PiecesView<kGroups>{*this});
+        return query.found(FieldCrossing{t, before < 0, witness()}, PiecesView<kGroups>{*this});
     };
     // Beyond the rounding of F at any point of the stretch: a few ulps of every candidate's term (inert lanes weigh 0).
     const auto rounding = [&] {
         return 1e-9 * (threshold_ + absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
     };
-    // The elements counting on the piece from t0, and F's sign before it; returns when the sweep must stop.
-    const auto sweep = [&] {
+    // The elements counting on the piece from t0, and F's sign before it; returns when the march must stop.
+    const auto march = [&] {
         for (std::size_t g = 0; g < groups<kGroups>(); ++g) counting_[g] = mask_bits(counting(g, t0));
         const double at_start = value<kGroups>(t0);
         int previous_sign = sign_of(at_start);
         if (previous_sign > 0 && t0 > stretch.t_min &&
-            sweep_piece::inside_beyond_rounding(
+            march_piece::inside_beyond_rounding(
                 at_start, threshold_, absolute_weights<kGroups>([&](std::size_t g) { return counting(g, t0); })) &&
-            crossed_before())
+            query.crossed_before())
             return;
         if constexpr (!kPlaceNeeded) {
             // Outside at the start and inside at the end, both beyond rounding: a crossing lies between, and no piece
             // need be examined. Tight cell boxes start many a shadow ray's stretch just outside a blob it then enters
-            // (blobs_10k: 17,489 of 64,972 swept occlusion queries end here, pieces 148,471 → 66,455).
+            // (blobs_10k: 17,489 of 64,972 marched occlusion queries end here, pieces 148,471 → 66,455).
             const double margin = rounding();
             if (at_start < -margin && value<kGroups>(stretch.t_end) > margin &&
                 crossing(0.5 * (t0 + stretch.t_end), previous_sign))
@@ -565,7 +562,7 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
         }
         // A stretch from the ray's start (a ray leaving the surface), or any stretch of an occlusion query, that starts
         // outside: first the chords' bound over the whole stretch, every candidate counting. On blobs_1k it settles
-        // 61 % of the first kind (bounce rays' sweeps of 4–5 pieces each, none holding a crossing) and 46 % of the
+        // 61 % of the first kind (bounce rays' marches of 4–5 pieces each, none holding a crossing) and 46 % of the
         // second; elsewhere nearly every stretch it is asked of holds a crossing.
         if (previous_sign < 0 && (!kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(unit_)) {
             Mask4 every[kMaxLanes / 4];
@@ -612,15 +609,15 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
             int start_sign = -1;
             bool settled;
             if (previous_sign < 0) {
-                settled = sweep_piece::below_threshold(range_high, threshold_);
+                settled = march_piece::below_threshold(range_high, threshold_);
             } else {
-                settled = sweep_piece::one_side_of_threshold(range_low, range_high, threshold_);
+                settled = march_piece::one_side_of_threshold(range_low, range_high, threshold_);
                 start_sign = sign_of(range_low - threshold_);
             }
             if constexpr (!kPlaceNeeded) {
                 if (!settled) {
                     // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside.
-                    // (Composing, testing and solving the piece was a third of a shadow ray's swept query.)
+                    // (Composing, testing and solving the piece was a third of a shadow ray's marched query.)
                     const double margin = rounding();
                     const double at_start = value<kGroups>(t0), at_end = value<kGroups>(t1);
                     if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
@@ -644,7 +641,7 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
                 int terms = 1;
                 for (std::size_t g = 0; g < groups<kGroups>(); ++g) terms += std::popcount(counting_[g]);
                 on_piece = Polynomial(std::span<const double>(piece.coefficients.data(), kTermSize));
-                signs = sweep_piece::bernstein_signs_on_piece(on_piece, terms, piece.magnitude);
+                signs = march_piece::bernstein_signs_on_piece(on_piece, terms, piece.magnitude);
                 start_sign = sign_of(on_piece[0]);
             }
             if (signs.variations == 0) {
@@ -652,14 +649,14 @@ void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryW
                 // A root on the boundary with the previous piece, which that piece ended on within rounding.
                 if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
                 previous_sign = start_sign;
-            } else if (sweep_piece::polynomial_piece_crossings(on_piece, signs, t0, width, previous_sign, work,
+            } else if (march_piece::polynomial_piece_crossings(on_piece, signs, t0, width, previous_sign, work,
                                                                crossing)) {
                 return;
             }
             t0 = t1;
         }
     };
-    sweep();
+    march();
     work.joined += std::uint64_t(std::popcount(entered));
 }
 
