@@ -38,7 +38,9 @@ void BlobGroup::build_index() {
     cells_.build(elements_);
     cells_.restrict_to_surface([&](const WorldBounds& box, std::span<const std::uint32_t> ids) {
         if (metaball_march_) return metaball_surface_region(box, ids, elements_, kernel_->unit_pieces()[0], threshold_);
-        return with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) { return surface_region(box, ids, elements_, kernel, threshold_); });
+        return with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) {
+            return surface_region(box, ids, elements_, kernel, threshold_);
+        });
     });
 }
 

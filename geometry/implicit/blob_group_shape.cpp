@@ -1,9 +1,5 @@
 #include "geometry/implicit/blob_group_shape.h"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 

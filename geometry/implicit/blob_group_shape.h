@@ -1,10 +1,10 @@
 #pragma once
 // The "blobs" shape: a BlobGroup as one Embree user geometry, one primitive per cell (blob_cells.h), bounds =
 // the cell's box. Its intersect and occluded callbacks are those of the build of the cell queries the group chose
-// (blob_ray.cpp, blob_cell_queries.h); a hit's normal is stored in Embree's Ng, and shading() reads it back. As a CSG operand the
-// group is a solid: inside is where the summed field exceeds the threshold. Elements may carry materials of their
-// own, which blend at a hit by their shares of the field (blob_materials.h); groups without them skip all of that.
-#include <array>
+// (blob_ray.cpp, blob_cell_queries.h); a hit's normal is stored in Embree's Ng, and shading() reads it back. As a CSG
+// operand the group is a solid: inside is where the summed field exceeds the threshold. Elements may carry materials
+// of their own, which blend at a hit by their shares of the field (blob_materials.h); groups without them skip all
+// of that.
 
 #include "geometry/implicit/blob_cell_queries.h"
 #include "geometry/implicit/blob_group.h"

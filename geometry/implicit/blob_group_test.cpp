@@ -141,7 +141,8 @@ std::optional<double> nearest_crossing(const BlobGroup& group, const Vec3d& orig
     std::optional<double> best;
     BlobQueryWork work;
     for (std::uint32_t cell = 0; cell < group.cells().cells().size(); ++cell)
-        if (const auto c = group.queries().first_hit_in_cell(group, cell, origin, direction, 0, best.value_or(1e30), work))
+        if (const auto c =
+                group.queries().first_hit_in_cell(group, cell, origin, direction, 0, best.value_or(1e30), work))
             best = c->crossing.t;
     return best;
 }

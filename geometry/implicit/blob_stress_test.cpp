@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -24,28 +25,24 @@ struct OracleCrossing {
     bool entering;
 };
 
-// Every sign change of F along o + t·d in (t_min, t_max), by brute force.
-std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction,
-                                             double t_min, double t_max) {
-    const FieldFunction& kernel = group.kernel();
-    struct Sliced {
-        const Metacube* element;
-        MetacubeRaySlices slices;
-    };
-    std::vector<Sliced> sliced;
+// An element whose support the line crosses, with its slices along the line.
+struct Sliced {
+    const Metacube* element;
+    MetacubeRaySlices slices;
+};
+
+// Where the field along the line may change form: every slice's ends and where dist² reaches a kernel piece's start
+// (sampled finely and bisected, so as not to share the march's quadratic solver), sorted.
+std::vector<double> oracle_breaks(const std::vector<Sliced>& sliced, const FieldFunction& kernel, double t_min,
+                                  double t_max) {
     std::vector<double> breaks{t_min, t_max};
-    for (const Metacube& element : group.elements()) {
-        const auto slices = MetacubeRaySlices::slice(element, origin, direction);
-        if (!slices) continue;
-        sliced.push_back({&element, *slices});
-        const FieldPieces pieces = kernel.pieces(element.radius());
-        for (const RegionPiece& piece : slices->pieces()) {
+    for (const Sliced& s : sliced) {
+        const FieldPieces pieces = kernel.pieces(s.element->radius());
+        for (const RegionPiece& piece : s.slices.pieces()) {
             breaks.push_back(piece.t_begin);
             breaks.push_back(piece.t_end);
-            // Kernel piece boundaries: where dist² reaches a piece's start (sampled finely and bisected, so as
-            // not to share the march's quadratic solver).
             for (int k = 1; k < pieces.count; ++k) {
-                const QuadraticAbout q = slices->distance_squared(piece, piece.t_begin);
+                const QuadraticAbout q = s.slices.distance_squared(piece, piece.t_begin);
                 const double level = pieces.pieces[std::size_t(k)].r2_begin;
                 const int steps = 256;
                 for (int i = 0; i < steps; ++i) {
@@ -62,10 +59,50 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
         }
     }
     std::sort(breaks.begin(), breaks.end());
+    return breaks;
+}
+
+// The field on the piece [s0, s1] as a polynomial in u = t − s0, by products of Polynomial values; std::nullopt where
+// a kernel piece counting there is no polynomial.
+std::optional<Polynomial> oracle_piece_polynomial(const BlobGroup& group, const std::vector<Sliced>& sliced,
+                                                  double s0, double s1) {
+    const double middle = 0.5 * (s0 + s1);
+    Polynomial sum{-group.threshold()};
+    for (const Sliced& s : sliced) {
+        if (middle < s.slices.t_in() || middle > s.slices.t_out()) continue;
+        const RegionPiece* piece = nullptr;
+        for (const RegionPiece& p : s.slices.pieces())
+            if (middle >= p.t_begin && middle <= p.t_end) piece = &p;
+        if (!piece) continue;
+        const QuadraticAbout q = s.slices.distance_squared(*piece, s0);
+        const Polynomial r2{q.c0, q.c1, q.c2};
+        const double r2_middle = std::max(0.0, q(middle));
+        // Kept in a variable: span() of the temporary would dangle (AddressSanitizer: stack-use-after-scope).
+        const FieldPieces kernel_pieces = group.kernel().pieces(s.element->radius());
+        for (const FieldPiece& kp : kernel_pieces.span()) {
+            if (!(r2_middle >= kp.r2_begin && r2_middle <= kp.r2_end)) continue;
+            if (!kp.is_polynomial) return std::nullopt;
+            Polynomial term{kp.coefficients[std::size_t(kp.degree)]};
+            for (int k = kp.degree - 1; k >= 0; --k) term = term * r2 + Polynomial{kp.coefficients[std::size_t(k)]};
+            sum += term * s.element->weight();
+            break;
+        }
+    }
+    return sum;
+}
+
+// Every sign change of F along o + t·d in (t_min, t_max), by brute force.
+std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction,
+                                             double t_min, double t_max) {
+    std::vector<Sliced> sliced;
+    for (const Metacube& element : group.elements())
+        if (const auto slices = MetacubeRaySlices::slice(element, origin, direction))
+            sliced.push_back({&element, *slices});
+    const std::vector<double> breaks = oracle_breaks(sliced, group.kernel(), t_min, t_max);
     // The field from every element whose support the line crosses (the others are zero along it).
     const auto total = [&](double t) {
         double sum = -group.threshold();
-        for (const Sliced& s : sliced) sum += s.element->field(kernel, origin + direction * t);
+        for (const Sliced& s : sliced) sum += s.element->field(group.kernel(), origin + direction * t);
         return sum;
     };
     std::vector<OracleCrossing> found;
@@ -76,61 +113,34 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
     for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
         const double s0 = std::max(breaks[b], t_min), s1 = std::min(breaks[b + 1], t_max);
         if (!(s1 > s0)) continue;
-        const double middle = 0.5 * (s0 + s1);
-        // The piece's field as a polynomial in u = t − s0, by products of Polynomial values.
-        Polynomial sum{-group.threshold()};
-        bool polynomial = true;
-        for (const Sliced& s : sliced) {
-            if (middle < s.slices.t_in() || middle > s.slices.t_out()) continue;
-            const RegionPiece* piece = nullptr;
-            for (const RegionPiece& p : s.slices.pieces())
-                if (middle >= p.t_begin && middle <= p.t_end) piece = &p;
-            if (!piece) continue;
-            const QuadraticAbout q = s.slices.distance_squared(*piece, s0);
-            const Polynomial r2{q.c0, q.c1, q.c2};
-            const double r2_middle = std::max(0.0, q(middle));
-            // Kept in a variable: span() of the temporary would dangle (AddressSanitizer: stack-use-after-scope).
-            const FieldPieces kernel_pieces = kernel.pieces(s.element->radius());
-            for (const FieldPiece& kp : kernel_pieces.span()) {
-                if (!(r2_middle >= kp.r2_begin && r2_middle <= kp.r2_end)) continue;
-                if (!kp.is_polynomial) {
-                    polynomial = false;
-                    break;
-                }
-                Polynomial term{kp.coefficients[std::size_t(kp.degree)]};
-                for (int k = kp.degree - 1; k >= 0; --k) term = term * r2 + Polynomial{kp.coefficients[std::size_t(k)]};
-                sum += term * s.element->weight();
-                break;
-            }
-        }
-        if (polynomial) {
-            for (const PolynomialRoot& root : sturm_roots(sum, 0, s1 - s0)) {
+        if (const std::optional<Polynomial> sum = oracle_piece_polynomial(group, sliced, s0, s1)) {
+            for (const PolynomialRoot& root : sturm_roots(*sum, 0, s1 - s0)) {
                 if (root.tangent) continue;
-                const double before = sum.evaluate(root.t - 1e-9 * (s1 - s0));
-                const double after = sum.evaluate(root.t + 1e-9 * (s1 - s0));
+                const double before = sum->evaluate(root.t - 1e-9 * (s1 - s0));
+                const double after = sum->evaluate(root.t + 1e-9 * (s1 - s0));
                 if ((before > 0) == (after > 0)) continue;
                 if ((after > 0 ? 1 : -1) == sign) continue;
                 add(s0 + root.t, sign);
                 sign = -sign;
             }
-        } else {
-            const int steps = 128;
-            double previous_t = s0, previous = total(s0);
-            for (int i = 1; i <= steps; ++i) {
-                const double t = s0 + (s1 - s0) * i / steps;
-                const double value = total(t);
-                if ((value > 0) != (previous > 0)) {
-                    double lo = previous_t, hi = t;
-                    for (int j = 0; j < 200 && hi - lo > 1e-15 * (1 + std::abs(hi)); ++j) {
-                        const double mid = 0.5 * (lo + hi);
-                        ((total(mid) > 0) == (previous > 0) ? lo : hi) = mid;
-                    }
-                    add(hi, previous > 0 ? 1 : -1);
-                    sign = value > 0 ? 1 : -1;
+            continue;
+        }
+        const int steps = 128;
+        double previous_t = s0, previous = total(s0);
+        for (int i = 1; i <= steps; ++i) {
+            const double t = s0 + (s1 - s0) * i / steps;
+            const double value = total(t);
+            if ((value > 0) != (previous > 0)) {
+                double lo = previous_t, hi = t;
+                for (int j = 0; j < 200 && hi - lo > 1e-15 * (1 + std::abs(hi)); ++j) {
+                    const double mid = 0.5 * (lo + hi);
+                    ((total(mid) > 0) == (previous > 0) ? lo : hi) = mid;
                 }
-                previous_t = t;
-                previous = value;
+                add(hi, previous > 0 ? 1 : -1);
+                sign = value > 0 ? 1 : -1;
             }
+            previous_t = t;
+            previous = value;
         }
     }
     return found;

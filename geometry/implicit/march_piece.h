@@ -121,8 +121,8 @@ bool polynomial_piece_crossings(const Polynomial& on_piece, const BernsteinSigns
     const double at_start = on_piece[0], at_end = on_piece.evaluate(1);
     const bool bracketed = signs.variations == 1 && sign_of(at_start) != sign_of(at_end);
     if (bracketed) {
-        // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points to find first
-        // (a third of the cost of a hit, measured).
+        // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points to find first,
+        // which would cost more than the refinement itself.
         const double root =
             refine_bracketed_root(on_piece, 0, 1, at_start, at_end, {}, &root_work, signs.polygon_crossing);
         const int after = sign_of(at_end);

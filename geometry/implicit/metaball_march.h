@@ -4,7 +4,7 @@
 // solving as the general march (field_march.h, march_piece.h), with the cell's candidates side by side in lanes of
 // four (double4.h) instead of in a list of joined elements ordered by entry:
 //   1. the float sphere test keeps the listed elements the stretch may come near; their exact nearest approaches
-//      bound F from above (below T the stretch holds no crossing: nearly half the queries end here), and those
+//      bound F from above (below T the stretch holds no crossing, and many queries end here), and those
 //      whose support's chord meets the stretch become the candidates, in ascending element order;
 //   2. a metaball has one piece, its support's chord [t_enter, t_exit], so on any piece of the stretch its term of
 //      the sum is one polynomial: a piece the bounds leave open composes the terms of the elements counting on it
@@ -12,7 +12,7 @@
 //   3. pieces run between consecutive entries and exits: the next event is the least entry or exit beyond the
 //      piece's start (a minimum over the lanes, no sort), and the elements that count on a piece are a mask of the
 //      lanes (entered, not left), so each bound and sum is a masked sum over whole lanes: no branch per element,
-//      where the general march's loops over 5–8 joined elements and its sort mispredicted (docs/decisions.md).
+//      where the general march's loops over its joined elements and its sort mispredict (docs/decisions.md).
 // It takes at most kMaxLanes near elements (nearly every query of the benchmark clouds): run returns false for more,
 // having done nothing, and the general march takes the query. Its sums run in lane order rather than in order of
 // entry, so its crossings agree with the general march's to rounding, not bit for bit.
@@ -29,6 +29,7 @@
 #include "geometry/implicit/metacube.h"
 #include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/implicit/march_piece.h"
+#include "geometry/implicit/piece_march.h"
 #include "geometry/implicit/unit_piece_lanes.h"
 #include "renderer/core/inline_vector.h"
 #include "renderer/math/double4.h"
@@ -66,25 +67,15 @@ public:
     template <class Query>
     bool run(std::span<const std::uint32_t> listed, const MarchStretch& stretch, BlobQueryWork& work, Query& query);
 
-    // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece, in
-    // ascending element order: the sum BlobGroup::gradient makes over the cell's list, hence the same bits (as
-    // FieldMarch::gradient_at).
-    Vec3d gradient_at(const Vec3d& point) const { return gradient<0>(point); }
-
     // F + T at a point, from `listed` (every element whose support may contain the point), four elements at a time:
     // an occlusion query asks it whether its ray started outside. BlobGroup::field sums the same terms one by one, so
     // the last bits may differ; the question allows 10⁻⁶ of T.
     double field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const;
 
 private:
-    // What a report is given while march_pieces<kGroups> runs: the march, with its count of groups known.
+    // The lanes as the piece march (piece_march.h) reads them, over kGroups groups of candidates (0: groups_).
     template <std::size_t kGroups>
-    struct PiecesView {
-        const MetaballMarch& march;
-        Vec3d gradient_at(const Vec3d& point) const { return march.template gradient<kGroups>(point); }
-    };
-    template <std::size_t kGroups>
-    Vec3d gradient(const Vec3d& point) const;
+    class Pieces;
     // The centres, radii and weights of four listed elements (`listed[first…]`, the last one repeated past the end of
     // the list), each read in one load and transposed into lanes in registers, and the lanes that hold a listed one.
     struct ElementLanes {
@@ -94,23 +85,24 @@ private:
     ElementLanes element_lanes(std::span<const std::uint32_t> listed, std::size_t first) const;
 
     static constexpr std::size_t kTermSize = 7;  // a cubic in x composed with the quadratic x(s): degree 6
-    // The loops over groups of four lanes take their count as a template argument, 1 to kUnrolledGroups (nearly nine
-    // queries in ten), so that they unroll and leave no loop exit to mispredict, and 0 for "read it from the query"
-    // (the count varies from query to query, and a query runs some twenty such loops: ×1.04 on blobs_1k).
+    // The loops over groups of four lanes take their count as a template argument, 1 to kUnrolledGroups (most
+    // queries), so that they unroll and leave no loop exit to mispredict, and 0 for "read it from the query" (the
+    // count varies from query to query, and a query runs some twenty such loops).
     static constexpr std::size_t kUnrolledGroups = 4;
     template <std::size_t kGroups>
     std::size_t groups() const { return kGroups != 0 ? kGroups : groups_; }
+    template <std::size_t kNearGroups>
+    std::size_t near_groups() const { return kNearGroups != 0 ? kNearGroups : (near_.size() + 3) / 4; }
 
     // run once the near elements are known, with kNearGroups groups of them (0: as many as there are).
     template <std::size_t kNearGroups, class Query>
     void march_near(const MarchStretch& stretch, BlobQueryWork& work, Query& query);
-    // The pieces of the stretch, in order, over kGroups groups of candidates (0: groups_).
+    // The piece march over kGroups groups of candidates (0: groups_).
     template <std::size_t kGroups, class Query>
-    void march_pieces(const MarchStretch& stretch, BlobQueryWork& work, Query& query);
+    void march_lanes(const MarchStretch& stretch, BlobQueryWork& work, Query& query);
 
     // Loads the near elements into the lanes and returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's
-    // nearest approach (as FieldMarch::gather), without the chords' square roots: nearly half the queries end at
-    // this bound.
+    // nearest approach (as FieldMarch::gather), without the chords' square roots: many queries end at this bound.
     template <std::size_t kNearGroups>
     double near_bound(const MarchStretch& stretch);
     // Leaves in the lanes, compacted, the candidates (their support's chord meets the stretch) with their chords.
@@ -234,17 +226,15 @@ double MetaballMarch<Kernel>::field_at(const Vec3d& point, std::span<const std::
 template <class Kernel>
 template <std::size_t kNearGroups>
 double MetaballMarch<Kernel>::near_bound(const MarchStretch& stretch) {
+    inverse_length2_ = 1 / dot(stretch.direction, stretch.direction);
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
-    const std::size_t n = near_.size();
-    const std::size_t near_groups = kNearGroups != 0 ? kNearGroups : (n + 3) / 4;
-    inverse_length2_ = 1 / dot(d, d);
     const double rounding = nearest_approach_rounding(stretch, centre_bound_);
     Double4 upper{};  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     kept_lanes_ = 0;
-    for (std::size_t g = 0; g < near_groups; ++g) {
+    for (std::size_t g = 0; g < near_groups<kNearGroups>(); ++g) {
         // Stored for the steps after. The lanes past the list repeat its last element; the exact test leaves them out.
-        const auto [x, y, z, radius, weight, in_list] = element_lanes({near_.begin(), n}, 4 * g);
+        const auto [x, y, z, radius, weight, in_list] = element_lanes({near_.begin(), near_.size()}, 4 * g);
         store4(x_ + 4 * g, x);
         store4(y_ + 4 * g, y);
         store4(z_ + 4 * g, z);
@@ -272,7 +262,7 @@ void MetaballMarch<Kernel>::make_candidates(const MarchStretch& stretch) {
     const Vec3d& d = stretch.direction;
     const std::size_t n = near_.size();
     unsigned candidates = 0;
-    for (std::size_t g = 0; g < (kNearGroups != 0 ? kNearGroups : (n + 3) / 4); ++g) {
+    for (std::size_t g = 0; g < near_groups<kNearGroups>(); ++g) {
         // The chord through the support: the centre's projection on the line ± the half chord.
         const Double4 middle = load4(middle_ + 4 * g), radius = load4(radius_ + 4 * g);
         const Double4 lx = (o.x + d.x * middle) - load4(x_ + 4 * g), ly = (o.y + d.y * middle) - load4(y_ + 4 * g),
@@ -449,37 +439,6 @@ double MetaballMarch<Kernel>::chord_upper_bound(double s0, double width, const M
 }
 
 template <class Kernel>
-template <std::size_t kGroups>
-Vec3d MetaballMarch<Kernel>::gradient(const Vec3d& point) const {
-    Vec3d sum(0, 0, 0);
-    if constexpr (requires(Double4 x) { Kernel::unit_derivative_of(x); }) {
-        // Each element's w·f'(r²)·2(P − C) four lanes at a time, with Metacube::field_gradient's operations in its
-        // order (so its bits), 0 in the lanes that do not count, then summed in ascending element order as
-        // BlobGroup::gradient sums them (adding the zeros changes no bit), with no branch on which lanes count.
-        alignas(32) double gx[kMaxLanes], gy[kMaxLanes], gz[kMaxLanes];
-        for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
-            const Mask4 counts = (Mask4{1, 2, 4, 8} & std::int64_t(counting_[g])) != 0;
-            const Double4 ox = point.x - load4(x_ + 4 * g), oy = point.y - load4(y_ + 4 * g),
-                          oz = point.z - load4(z_ + 4 * g);
-            const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g);
-            const Double4 x = (ox * ox + oy * oy + oz * oz) * inverse_radius2;
-            const Double4 slope =
-                load4(weight_ + 4 * g) * select(x < 1.0, Kernel::unit_derivative_of(x) * inverse_radius2, Double4{});
-            const Double4 twice = select(counts, 2 * slope, Double4{});
-            store4(gx + 4 * g, ox * twice);
-            store4(gy + 4 * g, oy * twice);
-            store4(gz + 4 * g, oz * twice);
-        }
-        for (std::size_t lane = 0; lane < 4 * groups<kGroups>(); ++lane) sum += Vec3d(gx[lane], gy[lane], gz[lane]);
-    } else {
-        for (std::size_t g = 0; g < groups<kGroups>(); ++g)
-            for (unsigned lanes = counting_[g]; lanes != 0; lanes &= lanes - 1)
-                sum += elements_[index_[4 * g + std::size_t(std::countr_zero(lanes))]].field_gradient(kernel_, point);
-    }
-    return sum;
-}
-
-template <class Kernel>
 template <class Query>
 bool MetaballMarch<Kernel>::run(std::span<const std::uint32_t> listed, const MarchStretch& stretch,
                                 BlobQueryWork& work, Query& query) {
@@ -513,151 +472,208 @@ void MetaballMarch<Kernel>::march_near(const MarchStretch& stretch, BlobQueryWor
     work.candidates += count_;
     // Nearly every near element is a candidate: the count of groups stays.
     if (kNearGroups != 0 && groups_ == kNearGroups)
-        march_pieces<kNearGroups>(stretch, work, query);
+        march_lanes<kNearGroups>(stretch, work, query);
     else
-        march_pieces<0>(stretch, work, query);
+        march_lanes<0>(stretch, work, query);
 }
 
 template <class Kernel>
 template <std::size_t kGroups, class Query>
-void MetaballMarch<Kernel>::march_pieces(const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
-    constexpr bool kPlaceNeeded = Query::kPlaceNeeded;
-    using march_piece::sign_of;
+void MetaballMarch<Kernel>::march_lanes(const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
     prepare_pieces<kGroups>(stretch);
-    unsigned entered = 0;  // lanes that counted on some piece, for the statistics
-    double t0 = stretch.t_begin;
-    const auto witness = [&] {  // an element whose support contains the piece: the last counting one
-        for (std::size_t g = groups<kGroups>(); g-- > 0;)
-            if (counting_[g] != 0)
-                return index_[4 * g + std::size_t(31 - std::countl_zero(counting_[g]))];
-        return std::uint32_t(0);
-    };
-    const auto crossing = [&](double t, int before) {
-        if (!(t > stretch.t_min && t < stretch.t_max)) return false;
-        ++work.roots;
-        return query.found(FieldCrossing{t, before < 0, witness()}, PiecesView<kGroups>{*this});
-    };
-    // Beyond the rounding of F at any point of the stretch: a few ulps of every candidate's term (inert lanes weigh 0).
-    const auto rounding = [&] {
-        return 1e-9 * (threshold_ + absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
-    };
-    // The elements counting on the piece from t0, and F's sign before it; returns when the march must stop.
-    const auto march = [&] {
-        for (std::size_t g = 0; g < groups<kGroups>(); ++g) counting_[g] = mask_bits(counting(g, t0));
-        const double at_start = value<kGroups>(t0);
-        int previous_sign = sign_of(at_start);
-        if (previous_sign > 0 && t0 > stretch.t_min &&
-            march_piece::inside_beyond_rounding(
-                at_start, threshold_, absolute_weights<kGroups>([&](std::size_t g) { return counting(g, t0); })) &&
-            query.crossed_before())
-            return;
-        if constexpr (!kPlaceNeeded) {
+    Pieces<kGroups> pieces(*this);
+    march_pieces(pieces, stretch, work, query);
+    work.joined += std::uint64_t(std::popcount(pieces.entered()));
+}
+
+// The piece march's Elements (piece_march.h): the pieces run between consecutive entries and exits of the lanes,
+// the elements counting on a piece are a mask, and every bound and sum is a masked sum over whole lanes.
+template <class Kernel>
+template <std::size_t kGroups>
+class MetaballMarch<Kernel>::Pieces {
+public:
+    static constexpr bool kAllPolynomial = true;  // no piece needs search_piece
+
+    explicit Pieces(MetaballMarch& lanes) : m_(lanes) {}
+
+    double threshold() const { return m_.threshold_; }
+    unsigned entered() const { return entered_; }  // the lanes that counted on some piece
+
+    double start(double t0) {
+        for (std::size_t g = 0; g < groups(); ++g) m_.counting_[g] = mask_bits(m_.counting(g, t0));
+        return m_.template value<kGroups>(t0);
+    }
+    double counting_weights(double t0) const {
+        return m_.template absolute_weights<kGroups>([&](std::size_t g) { return m_.counting(g, t0); });
+    }
+
+    // Before any piece, for a stretch that starts outside: two proofs over the whole stretch.
+    template <class March>
+    bool settles_stretch(double t0, double at_start, int previous_sign, March& march) const {
+        const MarchStretch& stretch = march.stretch();
+        if constexpr (!March::kPlaceNeeded) {
             // Outside at the start and inside at the end, both beyond rounding: a crossing lies between, and no piece
-            // need be examined. Tight cell boxes start many a shadow ray's stretch just outside a blob it then enters
-            // (blobs_10k: 17,489 of 64,972 marched occlusion queries end here, pieces 148,471 → 66,455).
+            // need be examined. Tight cell boxes start many a shadow ray's stretch just outside a blob it then enters.
             const double margin = rounding();
-            if (at_start < -margin && value<kGroups>(stretch.t_end) > margin &&
-                crossing(0.5 * (t0 + stretch.t_end), previous_sign))
-                return;
+            if (at_start < -margin && m_.template value<kGroups>(stretch.t_end) > margin &&
+                march.crossing(0.5 * (t0 + stretch.t_end), previous_sign))
+                return true;
         }
-        // A stretch from the ray's start (a ray leaving the surface), or any stretch of an occlusion query, that starts
-        // outside: first the chords' bound over the whole stretch, every candidate counting. On blobs_1k it settles
-        // 61 % of the first kind (bounce rays' marches of 4–5 pieces each, none holding a crossing) and 46 % of the
-        // second; elsewhere nearly every stretch it is asked of holds a crossing.
-        if (previous_sign < 0 && (!kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(unit_)) {
+        // A stretch from the ray's start (a ray leaving the surface), or any stretch of an occlusion query, that
+        // starts outside: the chords' bound over the whole stretch, every candidate counting, often settles it where
+        // the ranges cannot (the start of a ray leaving the surface is within a hair of T); elsewhere nearly every
+        // stretch it would be asked of holds a crossing.
+        if (previous_sign < 0 && (!March::kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(m_.unit_)) {
             Mask4 every[kMaxLanes / 4];
-            for (std::size_t g = 0; g < groups<kGroups>(); ++g) every[g] = ~Mask4{};  // inert lanes weigh 0
-            if (threshold_ - chord_upper_bound<kGroups>(t0 - t_ref_, stretch.t_end - t0, every) > rounding()) return;
+            for (std::size_t g = 0; g < groups(); ++g) every[g] = ~Mask4{};  // inert lanes weigh 0
+            return m_.threshold_ - m_.template chord_upper_bound<kGroups>(t0 - m_.t_ref_, stretch.t_end - t0, every) >
+                   rounding();
         }
-        Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
-        while (t0 < stretch.t_end) {
-            // The piece [t0, t1] ends at the next entry or exit.
-            double t1 = stretch.t_end;
-            const double s0 = t0 - t_ref_;
-            Double4 next = Double4{} + std::numeric_limits<double>::infinity();
-            Mask4 counts[kMaxLanes / 4];
-            for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
-                const Double4 t_enter = load4(t_enter_ + 4 * g), t_exit = load4(t_exit_ + 4 * g);
-                const Double4 event = select(t_enter > t0, t_enter, t_exit);
-                next = min4(next, select(event > t0, event, next));
-                counts[g] = counting(g, t0);
-                counting_[g] = mask_bits(counts[g]);
-                entered |= counting_[g] << (4 * g);
+        return false;
+    }
+
+    // The next entry or exit after t0 (a minimum over the lanes, no sort); the lanes counting from t0 become current.
+    double next_event(double t0, double t_end) {
+        Double4 next = Double4{} + std::numeric_limits<double>::infinity();
+        for (std::size_t g = 0; g < groups(); ++g) {
+            const Double4 t_enter = load4(m_.t_enter_ + 4 * g), t_exit = load4(m_.t_exit_ + 4 * g);
+            const Double4 event = select(t_enter > t0, t_enter, t_exit);
+            next = min4(next, select(event > t0, event, next));
+            counts_[g] = m_.counting(g, t0);
+            m_.counting_[g] = mask_bits(counts_[g]);
+            entered_ |= m_.counting_[g] << (4 * g);
+        }
+        return std::min(t_end, lane_min(next));
+    }
+
+    template <class March>
+    PieceBound bound_piece(double t0, double t1, int previous_sign, March& march) const {
+        PieceBound bound;
+        const auto [low, high] = ranges(t0 - m_.t_ref_, t1 - m_.t_ref_, previous_sign);
+        if (previous_sign < 0) {
+            bound.settled = march_piece::below_threshold(high, m_.threshold_);
+        } else {
+            bound.settled = march_piece::one_side_of_threshold(low, high, m_.threshold_);
+            bound.start_sign = march_piece::sign_of(low - m_.threshold_);
+        }
+        if constexpr (!March::kPlaceNeeded) {
+            // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside, proven
+            // without composing, testing or solving the piece.
+            if (!bound.settled) {
+                const double margin = rounding();
+                const double at_start = m_.template value<kGroups>(t0), at_end = m_.template value<kGroups>(t1);
+                if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
+                    march.crossing(0.5 * (t0 + t1), march_piece::sign_of(at_start)))
+                    return {true, false, -1};
             }
-            t1 = std::min(t1, lane_min(next));
-            ++work.pieces;
-            const double s1 = t1 - t_ref_, width = t1 - t0;
-            // First each element's own range: f is monotone in r², so its extremes on the piece are at the ends of
-            // the element's r² range. Coming from outside, F is continuous, so it cannot be above T on the whole
-            // piece: only its upper bound is needed.
-            Double4 low{}, high{};
-            for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
-                const Mask4 mask = counts[g];
-                const auto [near, far] = distance2_range(g, s0, s1);
-                const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g), weight = load4(weight_ + 4 * g);
-                if (previous_sign < 0) {
-                    const Double4 x = select(weight > 0.0, near, far) * inverse_radius2;
-                    high += select(mask, weight * unit_value(x, BoundMulAdd{}), Double4{});
-                } else {
-                    const Double4 w_near = weight * unit_value(near * inverse_radius2, BoundMulAdd{}),
-                                  w_far = weight * unit_value(far * inverse_radius2, BoundMulAdd{});
-                    low += select(mask, min4(w_near, w_far), Double4{});
-                    high += select(mask, max4(w_near, w_far), Double4{});
-                }
-            }
-            const double range_low = lane_sum(low), range_high = lane_sum(high);
-            int start_sign = -1;
-            bool settled;
+        }
+        // A piece from the ray's start (a ray leaving the surface), or any piece of an occlusion query, that the
+        // ranges leave open: the chords' bound before the polynomial, as over the whole stretch.
+        const bool leaving = previous_sign < 0 && (!March::kPlaceNeeded || t0 == march.stretch().t_min);
+        if (!bound.settled && leaving && convex_and_falling(m_.unit_)) {
+            const double upper = m_.template chord_upper_bound<kGroups>(t0 - m_.t_ref_, t1 - t0, counts_);
+            // Beyond its rounding: a few ulps of the terms, which Σ |wᵢ| of the counting elements bounds.
+            bound.settled = m_.threshold_ - upper >
+                            1e-9 * (m_.threshold_ +
+                                    m_.template absolute_weights<kGroups>([&](std::size_t g) { return counts_[g]; }));
+        }
+        return bound;
+    }
+
+    // The counting terms composed directly in the piece's own u ∈ [0, 1] (MetaballMarch::piece_polynomial).
+    PieceTest test_piece(double t0, double t1) {
+        const PiecePolynomial piece = m_.template piece_polynomial<kGroups>(t0 - m_.t_ref_, t1 - t0, counts_);
+        int terms = 1;
+        for (std::size_t g = 0; g < groups(); ++g) terms += std::popcount(m_.counting_[g]);
+        on_piece_ = Polynomial(std::span<const double>(piece.coefficients.data(), kTermSize));
+        PieceTest test;
+        test.signs = march_piece::bernstein_signs_on_piece(on_piece_, terms, piece.magnitude);
+        test.start_sign = march_piece::sign_of(on_piece_[0]);
+        test.open = test.signs.variations != 0;
+        test.polynomial = &on_piece_;
+        return test;
+    }
+
+    // Every lane's next event is found afresh on each piece, and no element steps at the stretch's end.
+    void advance(double) {}
+    template <class March>
+    void at_end(double, int, March&) {}
+
+    // An element whose support contains the piece: the last counting one.
+    std::uint32_t witness() const {
+        for (std::size_t g = groups(); g-- > 0;)
+            if (m_.counting_[g] != 0) return m_.index_[4 * g + std::size_t(31 - std::countl_zero(m_.counting_[g]))];
+        return 0;
+    }
+
+    // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece, in
+    // ascending element order: the sum BlobGroup::gradient makes over the cell's list, hence the same bits.
+    Vec3d gradient_at(const Vec3d& point) const;
+
+private:
+    std::size_t groups() const { return m_.template groups<kGroups>(); }
+    // Beyond the rounding of F at any point of the stretch: a few ulps of every candidate's term (inert lanes weigh 0).
+    double rounding() const {
+        return 1e-9 * (m_.threshold_ + m_.template absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
+    }
+    // Bounds of Σ wᵢ·fᵢ on [s0, s1] from each counting element's own range: f is monotone in r², so its extremes on
+    // the piece are at the ends of the element's r² range. Coming from outside (F is continuous), F cannot be above T
+    // on the whole piece: only the upper bound is formed.
+    std::pair<double, double> ranges(double s0, double s1, int previous_sign) const {
+        Double4 low{}, high{};
+        for (std::size_t g = 0; g < groups(); ++g) {
+            const Mask4 mask = counts_[g];
+            const auto [near, far] = m_.distance2_range(g, s0, s1);
+            const Double4 inverse_radius2 = load4(m_.inverse_radius2_ + 4 * g), weight = load4(m_.weight_ + 4 * g);
             if (previous_sign < 0) {
-                settled = march_piece::below_threshold(range_high, threshold_);
+                const Double4 x = select(weight > 0.0, near, far) * inverse_radius2;
+                high += select(mask, weight * m_.unit_value(x, BoundMulAdd{}), Double4{});
             } else {
-                settled = march_piece::one_side_of_threshold(range_low, range_high, threshold_);
-                start_sign = sign_of(range_low - threshold_);
+                const Double4 w_near = weight * m_.unit_value(near * inverse_radius2, BoundMulAdd{}),
+                              w_far = weight * m_.unit_value(far * inverse_radius2, BoundMulAdd{});
+                low += select(mask, min4(w_near, w_far), Double4{});
+                high += select(mask, max4(w_near, w_far), Double4{});
             }
-            if constexpr (!kPlaceNeeded) {
-                if (!settled) {
-                    // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside.
-                    // (Composing, testing and solving the piece was a third of a shadow ray's marched query.)
-                    const double margin = rounding();
-                    const double at_start = value<kGroups>(t0), at_end = value<kGroups>(t1);
-                    if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
-                        crossing(0.5 * (t0 + t1), sign_of(at_start)))
-                        return;
-                }
-            }
-            // A piece from the ray's start (a ray leaving the surface), or any piece of an occlusion query, that the
-            // ranges leave open: the chords' bound before the polynomial. It settles 86–92 % of them on blobs_1k (the
-            // start of a ray leaving the surface is within a hair of T); elsewhere nearly every piece left open holds
-            // a crossing.
-            if (!settled && previous_sign < 0 && (!kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(unit_)) {
-                const double upper = chord_upper_bound<kGroups>(s0, width, counts);
-                // Beyond its rounding: a few ulps of the terms, which Σ |wᵢ| of the counting elements bounds.
-                settled = threshold_ - upper >
-                          1e-9 * (threshold_ + absolute_weights<kGroups>([&](std::size_t g) { return counts[g]; }));
-            }
-            BernsteinSigns signs;
-            if (!settled) {
-                const PiecePolynomial piece = piece_polynomial<kGroups>(s0, width, counts);
-                int terms = 1;
-                for (std::size_t g = 0; g < groups<kGroups>(); ++g) terms += std::popcount(counting_[g]);
-                on_piece = Polynomial(std::span<const double>(piece.coefficients.data(), kTermSize));
-                signs = march_piece::bernstein_signs_on_piece(on_piece, terms, piece.magnitude);
-                start_sign = sign_of(on_piece[0]);
-            }
-            if (signs.variations == 0) {
-                ++work.skipped_pieces;
-                // A root on the boundary with the previous piece, which that piece ended on within rounding.
-                if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
-                previous_sign = start_sign;
-            } else if (march_piece::polynomial_piece_crossings(on_piece, signs, t0, width, previous_sign, work,
-                                                               crossing)) {
-                return;
-            }
-            t0 = t1;
         }
-    };
-    march();
-    work.joined += std::uint64_t(std::popcount(entered));
+        return {lane_sum(low), lane_sum(high)};
+    }
+
+    MetaballMarch& m_;
+    Mask4 counts_[kMaxLanes / 4];  // per group, the lanes counting on the current piece
+    unsigned entered_ = 0;
+    Polynomial on_piece_;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds leave open
+};
+
+template <class Kernel>
+template <std::size_t kGroups>
+Vec3d MetaballMarch<Kernel>::Pieces<kGroups>::gradient_at(const Vec3d& point) const {
+    Vec3d sum(0, 0, 0);
+    if constexpr (requires(Double4 x) { Kernel::unit_derivative_of(x); }) {
+        // Each element's w·f'(r²)·2(P − C) four lanes at a time, with Metacube::field_gradient's operations in its
+        // order (so its bits), 0 in the lanes that do not count, then summed in ascending element order as
+        // BlobGroup::gradient sums them (adding the zeros changes no bit), with no branch on which lanes count.
+        alignas(32) double gx[kMaxLanes], gy[kMaxLanes], gz[kMaxLanes];
+        for (std::size_t g = 0; g < groups(); ++g) {
+            const Mask4 counts = (Mask4{1, 2, 4, 8} & std::int64_t(m_.counting_[g])) != 0;
+            const Double4 ox = point.x - load4(m_.x_ + 4 * g), oy = point.y - load4(m_.y_ + 4 * g),
+                          oz = point.z - load4(m_.z_ + 4 * g);
+            const Double4 inverse_radius2 = load4(m_.inverse_radius2_ + 4 * g);
+            const Double4 x = (ox * ox + oy * oy + oz * oz) * inverse_radius2;
+            const Double4 slope = load4(m_.weight_ + 4 * g) *
+                                  select(x < 1.0, Kernel::unit_derivative_of(x) * inverse_radius2, Double4{});
+            const Double4 twice = select(counts, 2 * slope, Double4{});
+            store4(gx + 4 * g, ox * twice);
+            store4(gy + 4 * g, oy * twice);
+            store4(gz + 4 * g, oz * twice);
+        }
+        for (std::size_t lane = 0; lane < 4 * groups(); ++lane) sum += Vec3d(gx[lane], gy[lane], gz[lane]);
+    } else {
+        for (std::size_t g = 0; g < groups(); ++g)
+            for (unsigned lanes = m_.counting_[g]; lanes != 0; lanes &= lanes - 1)
+                sum += m_.elements_[m_.index_[4 * g + std::size_t(std::countr_zero(lanes))]].field_gradient(m_.kernel_,
+                                                                                                             point);
+    }
+    return sum;
 }
 
 }  // namespace isotrace

@@ -30,7 +30,7 @@ struct QuadraticAbout {
 };
 
 // A stretch [t_begin, t_end] of the ray inside one region of the box. No default member values: the slices' array
-// of seven is left unset beyond the pieces in use (zeroing it was two thirds of slicing a metaball, perf).
+// of seven is left unset beyond the pieces in use (zeroing it would cost more than slicing a metaball).
 struct RegionPiece {
     double t_begin, t_end;
     // The paper's region vector U per local axis: +1 / −1 beyond the high / low face, 0 within the slab. Inside

@@ -101,7 +101,7 @@ struct PointNearSpheres {
 
 // Tests the listed elements first, …, first + kLanes − 1 (the last group repeats the list's last element in the
 // lanes beyond it, which the result leaves out): their indices in `group`, the lanes that pass as bits. Inlined:
-// the callers' loops are the hot path of every cell query, and a call cost 2 % (measured).
+// the callers' loops are the hot path of every cell query, where a call spills their vector registers.
 template <class Test>
 [[gnu::always_inline]] inline unsigned test_group(std::span<const std::uint32_t> ids,
                                                   std::span<const BoundingSphere> spheres, std::size_t first,
