@@ -37,11 +37,11 @@
 #include <vector>
 
 #include "geometry/implicit/field_function.h"
+#include "geometry/implicit/march_piece.h"
 #include "geometry/implicit/metacube.h"
 #include "geometry/implicit/metacube_ray_slices.h"
-#include "geometry/implicit/sphere_prefilter.h"
-#include "geometry/implicit/march_piece.h"
 #include "geometry/implicit/piece_march.h"
+#include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/polynomial/bernstein.h"
 #include "geometry/polynomial/quadratic_roots.h"
 #include "renderer/core/inline_vector.h"
@@ -736,7 +736,7 @@ void FieldMarch<Kernel, kMetaballsOnly>::run(std::span<const std::uint32_t> list
     t_ref_ = stretch.t_begin;
     sum_valid_ = false;
     witness_ = 0;
-    march_pieces(*this, stretch, work, query);
+    PieceMarch(*this, stretch, work, query).run();
 }
 
 }  // namespace isotrace

@@ -26,10 +26,10 @@
 #include <utility>
 
 #include "geometry/implicit/field_function.h"
-#include "geometry/implicit/metacube.h"
-#include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/implicit/march_piece.h"
+#include "geometry/implicit/metacube.h"
 #include "geometry/implicit/piece_march.h"
+#include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/implicit/unit_piece_lanes.h"
 #include "renderer/core/inline_vector.h"
 #include "renderer/math/double4.h"
@@ -482,7 +482,7 @@ template <std::size_t kGroups, class Query>
 void MetaballMarch<Kernel>::march_lanes(const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
     prepare_pieces<kGroups>(stretch);
     Pieces<kGroups> pieces(*this);
-    march_pieces(pieces, stretch, work, query);
+    PieceMarch(pieces, stretch, work, query).run();
     work.joined += std::uint64_t(std::popcount(pieces.entered()));
 }
 

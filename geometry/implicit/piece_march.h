@@ -16,9 +16,10 @@
 //   kAllPolynomial, or else search_piece(t0, t1, previous_sign, march): the crossings of an open piece that is no
 //     polynomial (true: stop);
 //   advance(t1): moves the elements on past the events at t1;
-//   at_end(t_end, previous_sign, march): a crossing just at the stretch's end (true: stop);
+//   at_end(t_end, previous_sign, march): a crossing just at the stretch's end, if any;
 //   witness(): an element counting on the current piece; gradient_at(point): ∇(F + T) there, for the query.
-// `march` is the PieceMarch, whose crossing(t, sign before) reports a crossing (true: stop).
+// `march` is the PieceMarch: crossing(t, sign before) reports a crossing (true: stop), and kPlaceNeeded is false
+// where the query needs no crossing's place (occlusion), so that a crossing may be reported anywhere on its piece.
 #include <algorithm>
 #include <utility>
 
@@ -108,11 +109,5 @@ private:
     BlobQueryWork& work_;
     Query& query_;
 };
-
-// Marches `stretch` over `elements` for `query`.
-template <class Elements, class Query>
-void march_pieces(Elements& elements, const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
-    PieceMarch<Elements, Query>(elements, stretch, work, query).run();
-}
 
 }  // namespace isotrace
