@@ -26,7 +26,8 @@ public:
 
     double sharpness() const { return sharpness_; }
 
-    std::string_view name() const override { return "blinn"; }
+    static constexpr std::string_view kName = "blinn";
+    std::string_view name() const override { return kName; }
     double unit_value(double x) const override {
         return std::exp(-sharpness_ * x) * std::expm1(-sharpness_ * (1 - x)) / expm1_minus_a_;
     }

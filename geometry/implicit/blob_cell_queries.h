@@ -1,39 +1,44 @@
 #pragma once
-// The ray queries of one blob cell (BlobGroup's sweeps: the first crossing, occlusion, every crossing), built twice:
-// for baseline x86-64 in the library and for AVX2 in a module beside it (blob_cell_sweep.cpp), chosen once per
-// process. Four doubles are one AVX register and two SSE2 ones, and the sweep is mostly such lanes
-// (metaball_sweep.h): the AVX2 build runs blobs_1k's rays ×1.2–1.3 as fast (docs/decisions.md, "Blob cell
-// queries built twice"). Without FMA, both builds round alike, so a render is the same bits on any x86-64 CPU
-// (tested).
+// The ray queries of a blob group's cells (blob_ray.cpp), built twice: for baseline x86-64 in the library and for
+// AVX2 in a module beside it. Four doubles are one AVX register and two SSE2 ones, and the march is mostly such lanes
+// (metaball_march.h), so the AVX2 build is the faster (docs/decisions.md, "Blob cell queries built twice"). Which
+// build runs is chosen once per process; a BlobGroup keeps it from when it was made, and its shape registers that
+// build's callbacks with Embree, so no query consults the choice again. Without FMA, both builds round alike: a
+// render is the same bits on any x86-64 CPU (tested).
+#include <embree3/rtcore.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "geometry/implicit/sweep_piece.h"
-#include "renderer/math/vec3.h"
+#include "geometry/implicit/blob_group.h"
 
 namespace isotrace {
 
-class BlobGroup;
-struct CellHit;
-
-enum class BlobIsa { Baseline, Avx2 };
-
-// The queries compiled for one instruction set; BlobGroup befriends every one.
-template <BlobIsa>
-class BlobCellSweep;
+// What a blob group's Embree callbacks find through geometryUserPtr: the group and the counters its work goes to.
+struct BlobRayTarget {
+    const BlobGroup* group = nullptr;
+    int counter_slot = 0;  // the shape type's (intersection tests, candidate hits)
+    BlobWorkSlots work_slots{};
+};
 
 struct BlobCellQueries {
-    // BlobGroup::first_crossing_in_cell, occluded_in_cell, and every crossing in the cell appended to `out` (a
-    // crossing equal to out's last one from index `first` on is not repeated: cells share faces).
-    std::optional<CellHit> (*first_crossing)(const BlobGroup& group, std::uint32_t cell, const Vec3d& origin,
-                                             const Vec3d& direction, double t_min, double t_max, BlobQueryWork& work);
-    bool (*occluded)(const BlobGroup& group, std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
-                     double t_min, double t_max, BlobQueryWork& work);
-    void (*crossings)(const BlobGroup& group, std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
-                      double t_min, double t_max, std::vector<FieldCrossing>& out, std::size_t first,
-                      BlobQueryWork& work);
+    // Embree's intersect and occluded callbacks for the cells of a group (one primitive per surface cell; user data:
+    // a BlobRayTarget). A hit stores t and the outward normal (Ng; zero where −∇F vanishes, on a hard cube's face).
+    RTCIntersectFunctionN intersect;
+    RTCOccludedFunctionN occluded;
+    // The same on one cell for one ray: the first crossing with t in (t_min, t_max) and its normal; whether any
+    // crossing lies there; and every crossing appended to `out` (a crossing equal to out's last one from index
+    // `first` on is not repeated: cells share faces).
+    std::optional<CellHit> (*first_hit_in_cell)(const BlobGroup& group, std::uint32_t cell, const Vec3d& origin,
+                                                const Vec3d& direction, double t_min, double t_max,
+                                                BlobQueryWork& work);
+    bool (*occluded_in_cell)(const BlobGroup& group, std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
+                             double t_min, double t_max, BlobQueryWork& work);
+    void (*crossings_in_cell)(const BlobGroup& group, std::uint32_t cell, const Vec3d& origin,
+                              const Vec3d& direction, double t_min, double t_max, std::vector<FieldCrossing>& out,
+                              std::size_t first, BlobQueryWork& work);
     const char* isa;  // "baseline x86-64" or "avx2"
 };
 

@@ -1,7 +1,7 @@
 // The two builds of the blob cell queries (blob_cell_queries.h): the AVX2 module is the one used where the CPU has
 // AVX2, and it gives the baseline build's bits — crossings, normals, occlusion answers and crossing lists — on
-// random rays through random groups of every kernel, of metaballs alone (the metaball sweep) and with metacubes
-// (the general sweep).
+// random rays through random groups of every kernel, of metaballs alone (the metaball march) and with metacubes
+// (the general march).
 #include "geometry/implicit/blob_cell_queries.h"
 
 #include <gtest/gtest.h>
@@ -51,8 +51,8 @@ int expect_same_bits(const BlobGroup& group, std::uint64_t seed) {
         const Vec3d direction = normalize(random_vector(rng, -1.5, 1.5) - origin);
         for (std::uint32_t cell = 0; cell < group.cells().surface_cell_count(); ++cell) {
             BlobQueryWork work_a, work_b;
-            const auto a = baseline.first_crossing(group, cell, origin, direction, 0, 10, work_a);
-            const auto b = chosen.first_crossing(group, cell, origin, direction, 0, 10, work_b);
+            const auto a = baseline.first_hit_in_cell(group, cell, origin, direction, 0, 10, work_a);
+            const auto b = chosen.first_hit_in_cell(group, cell, origin, direction, 0, 10, work_b);
             EXPECT_EQ(a.has_value(), b.has_value()) << "ray " << ray << " cell " << cell;
             if (a && b) {
                 EXPECT_TRUE(same_bits(a->crossing.t, b->crossing.t)) << a->crossing.t << " " << b->crossing.t;
@@ -61,11 +61,11 @@ int expect_same_bits(const BlobGroup& group, std::uint64_t seed) {
                 EXPECT_EQ(a->normal.has_value(), b->normal.has_value());
                 if (a->normal && b->normal) EXPECT_TRUE(same_bits(*a->normal, *b->normal));
             }
-            EXPECT_EQ(baseline.occluded(group, cell, origin, direction, 0, 10, work_a),
-                      chosen.occluded(group, cell, origin, direction, 0, 10, work_b));
+            EXPECT_EQ(baseline.occluded_in_cell(group, cell, origin, direction, 0, 10, work_a),
+                      chosen.occluded_in_cell(group, cell, origin, direction, 0, 10, work_b));
             std::vector<FieldCrossing> all_a, all_b;
-            baseline.crossings(group, cell, origin, direction, 0, 10, all_a, 0, work_a);
-            chosen.crossings(group, cell, origin, direction, 0, 10, all_b, 0, work_b);
+            baseline.crossings_in_cell(group, cell, origin, direction, 0, 10, all_a, 0, work_a);
+            chosen.crossings_in_cell(group, cell, origin, direction, 0, 10, all_b, 0, work_b);
             EXPECT_EQ(all_a.size(), all_b.size());
             for (std::size_t i = 0; i < std::min(all_a.size(), all_b.size()); ++i) {
                 EXPECT_TRUE(same_bits(all_a[i].t, all_b[i].t));

@@ -13,8 +13,8 @@ namespace {
 constexpr std::size_t kLeafElements = 16;
 // ...or when its longest side is at most this many mean support radii of its elements: smaller cells would list
 // nearly the same elements again (supports overlap), costing memory for little less work per ray. 1.5 rather than
-// 2: a shadow ray's sweep starts among the elements that made the surface, and a smaller cell holds fewer of them
-// (blobs_100k shadow rays ×1.21, 226 B per element; 1 radius costs ~550 B and is slower; docs/decisions.md).
+// 2: a shadow ray's march starts among the elements that made the surface, and a smaller cell holds fewer of them
+// (1 radius costs more memory and is slower: docs/decisions.md, "Blob groups: cells as Embree primitives").
 constexpr double kSmallestCellInRadii = 1.5;
 
 // Does the element's support reach into the closed box? Exact for metaballs (distance from the centre to the box

@@ -2,8 +2,8 @@
 // BlobCells: space cut into disjoint boxes ("cells"), each listing every element whose support reaches into it.
 // A cell is the unit of work of a blob ray: inside a cell the summed field is the sum over the cell's list, so a
 // query of one cell needs nothing from any other query of the same ray — Embree traverses the cells (one user
-// primitive each, front to back, culling beyond the nearest hit found) and each cell sweeps its stretch of the
-// ray once (field_sweep.h). Like Mitsuba's sdfgrid voxels, but adaptive: a kd-tree splits space at the middle of
+// primitive each, front to back, culling beyond the nearest hit found) and each cell marches its stretch of the
+// ray once (field_march.h). Like Mitsuba's sdfgrid voxels, but adaptive: a kd-tree splits space at the middle of
 // its longest side until a cell lists few elements or is about as small as its elements' supports; each leaf
 // box is then shrunk to the supports it lists (still inside its kd cell, so cells stay disjoint), and further, by
 // restrict_to_surface, to where the surface may lie: a cell that is all inside or all outside is no ray primitive.
@@ -22,7 +22,7 @@ namespace isotrace {
 class BlobCells {
 public:
     struct Cell {
-        // Closed box that rays sweep; cells overlap at most on their faces. Cells at or beyond
+        // Closed box that rays march; cells overlap at most on their faces. Cells at or beyond
         // surface_cell_count() have none (lower > upper).
         Vec3d lower, upper;
         std::uint32_t first = 0, count = 0;  // its elements: element_ids()[first, first + count), ascending
@@ -40,7 +40,7 @@ public:
     void restrict_to_surface(const SurfaceRegion& region);
 
     std::span<const Cell> cells() const { return cells_; }
-    // Cells [0, surface_cell_count()) have a box to sweep: the ray primitives.
+    // Cells [0, surface_cell_count()) have a box to march: the ray primitives.
     std::uint32_t surface_cell_count() const { return surface_cells_; }
     std::span<const std::uint32_t> elements_of(const Cell& cell) const {
         return {element_ids_.data() + cell.first, cell.count};

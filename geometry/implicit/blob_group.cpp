@@ -4,24 +4,21 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <type_traits>
 
 #include "geometry/implicit/blob_cell_queries.h"
-#include "geometry/implicit/blob_group_with_kernel.h"
+#include "geometry/implicit/field_kernels.h"
+#include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/implicit/surface_region.h"
 
 namespace isotrace {
 
 BlobGroup::BlobGroup(std::vector<Metacube> elements, std::unique_ptr<const FieldFunction> kernel, double threshold)
-    : elements_(std::move(elements)), kernel_(std::move(kernel)), threshold_(threshold) {
+    : elements_(std::move(elements)), kernel_(std::move(kernel)), queries_(&blob_cell_queries()),
+      threshold_(threshold) {
     validate_threshold(threshold_);
-    const std::string_view name = kernel_->name();
-    if (name == "blinn") kernel_kind_ = KernelKind::Blinn;
-    else if (name == "nishimura") kernel_kind_ = KernelKind::Nishimura;
-    else if (name == "murakami") kernel_kind_ = KernelKind::Murakami;
-    else if (name == "wyvill") kernel_kind_ = KernelKind::Wyvill;
-    else if (name == "kim") kernel_kind_ = KernelKind::Kim;
-    else throw std::invalid_argument("field: unknown field function \"" + std::string(name) + "\"");
+    const std::optional<std::size_t> index = field_kernel_index(kernel_->name());
+    if (!index) throw std::invalid_argument("field: unknown field function \"" + std::string(kernel_->name()) + "\"");
+    kernel_index_ = *index;
     build_index();
 }
 
@@ -35,12 +32,15 @@ void BlobGroup::build_index() {
         const BoundingSphere& s = spheres_[i];
         centre_bound_ = std::max(centre_bound_, length(Vec3d(s.centre[0], s.centre[1], s.centre[2])));
     }
-    metaball_sweep_ = with_kernel(
-        [&](const auto& kernel) { return MetaballSweep<std::decay_t<decltype(kernel)>>::applies(kernel, elements_); });
+    // MetaballMarch's case: metaballs alone under a kernel that is one polynomial piece of degree ≤ 3 in r²/R².
+    const std::span<const FieldPiece> pieces = kernel_->unit_pieces();
+    metaball_march_ = metaballs_only_ && pieces.size() == 1 && pieces[0].is_polynomial && pieces[0].degree <= 3;
     cells_.build(elements_);
     cells_.restrict_to_surface([&](const WorldBounds& box, std::span<const std::uint32_t> ids) {
-        if (metaball_sweep_) return metaball_surface_region(box, ids, elements_, kernel_->unit_pieces()[0], threshold_);
-        return with_kernel([&](const auto& kernel) { return surface_region(box, ids, elements_, kernel, threshold_); });
+        if (metaball_march_) return metaball_surface_region(box, ids, elements_, kernel_->unit_pieces()[0], threshold_);
+        return with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) {
+            return surface_region(box, ids, elements_, kernel, threshold_);
+        });
     });
 }
 
@@ -60,22 +60,11 @@ std::size_t BlobGroup::memory_bytes() const {
            cells_.memory_bytes();
 }
 
-std::optional<CellHit> BlobGroup::first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin,
-                                                         const Vec3d& direction, double t_min, double t_max,
-                                                         BlobQueryWork& work) const {
-    return blob_cell_queries().first_crossing(*this, cell, origin, direction, t_min, t_max, work);
-}
-
-bool BlobGroup::occluded_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
-                                 double t_max, BlobQueryWork& work) const {
-    return blob_cell_queries().occluded(*this, cell, origin, direction, t_min, t_max, work);
-}
-
 std::optional<FieldCrossing> BlobGroup::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
                                                        double t_max, BlobQueryWork& work) const {
     std::optional<FieldCrossing> found;
     cells_.walk(origin, direction, t_min, t_max, [&](std::uint32_t cell, double, double) {
-        if (const auto hit = first_crossing_in_cell(cell, origin, direction, t_min, t_max, work))
+        if (const auto hit = queries_->first_hit_in_cell(*this, cell, origin, direction, t_min, t_max, work))
             found = hit->crossing;
         return !found;
     });
@@ -86,9 +75,8 @@ int BlobGroup::crossings(const Vec3d& origin, const Vec3d& direction, double t_m
                          std::vector<FieldCrossing>& out, BlobQueryWork& work) const {
     const int sign_at_start = field(origin + direction * t_min) > threshold_ ? 1 : -1;
     const std::size_t first = out.size();
-    const BlobCellQueries& queries = blob_cell_queries();
     cells_.walk(origin, direction, t_min, t_max, [&](std::uint32_t cell, double, double) {
-        queries.crossings(*this, cell, origin, direction, t_min, t_max, out, first, work);
+        queries_->crossings_in_cell(*this, cell, origin, direction, t_min, t_max, out, first, work);
         return true;
     });
     return sign_at_start;
@@ -103,7 +91,7 @@ void BlobGroup::for_each_reaching(std::span<const std::uint32_t> listed, const V
 }
 
 double BlobGroup::field(const Vec3d& point) const {
-    return with_kernel([&](const auto& kernel) {
+    return with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) {
         double sum = 0;
         for_each_reaching(cells_.elements_near(point), point,
                           [&](const Metacube& element) { sum += element.field(kernel, point); });
@@ -113,7 +101,7 @@ double BlobGroup::field(const Vec3d& point) const {
 
 void BlobGroup::for_each_term(std::span<const std::uint32_t> listed, const Vec3d& point,
                               const std::function<void(std::uint32_t element, double term)>& visit) const {
-    with_kernel([&](const auto& kernel) {
+    with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) {
         for_each_reaching(listed, point, [&](const Metacube& element) {
             visit(std::uint32_t(&element - elements_.data()), element.field(kernel, point));
         });
@@ -123,7 +111,7 @@ void BlobGroup::for_each_term(std::span<const std::uint32_t> listed, const Vec3d
 Vec3d BlobGroup::gradient(const Vec3d& point) const { return gradient_from(cells_.elements_near(point), point); }
 
 Vec3d BlobGroup::gradient_from(std::span<const std::uint32_t> near, const Vec3d& point) const {
-    return with_kernel([&](const auto& kernel) {
+    return with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) {
         Vec3d sum(0, 0, 0);
         for_each_reaching(near, point, [&](const Metacube& element) { sum += element.field_gradient(kernel, point); });
         return sum;
@@ -137,7 +125,7 @@ Vec3d BlobGroup::normal_in_cell(std::uint32_t cell, const Vec3d& point) const {
 }
 
 Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const {
-    if (const std::optional<Vec3d> normal = field_sweep_detail::outward_normal(gradient_from(near, point)))
+    if (const std::optional<Vec3d> normal = outward_normal(gradient_from(near, point)))
         return *normal;
     // Only hard cubes (step fields) meet here: take the face of the nearest hard-cube boundary.
     double best = std::numeric_limits<double>::infinity();

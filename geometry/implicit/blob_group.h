@@ -3,32 +3,41 @@
 // reaches the group's threshold: F(P) = Σ wᵢ·fᵢ(dist²ᵢ(P)) − T = 0, outward normal −∇F.
 //
 // Ray queries work per cell (blob_cells.h): space is cut into disjoint boxes, each listing the elements that
-// reach into it, and a cell's stretch of a ray is swept once, front to back (metaball_sweep.h for metaballs of a
-// one-piece polynomial kernel, field_sweep.h for everything else), by the cell queries of blob_cell_sweep.cpp, built
-// for baseline x86-64 and for AVX2 (blob_cell_queries.h). Cells are what Embree traverses (blob_group_shape.h);
-// walking a ray's cells in order gives every crossing (CSG) or the first.
+// reach into it, and a cell's stretch of a ray is marched once, front to back, by the cell queries (blob_ray.cpp,
+// built for baseline x86-64 and for AVX2: blob_cell_queries.h), which read the group through its view. Cells are
+// what Embree traverses (blob_group_shape.h); walking a ray's cells in order gives every crossing (CSG) or the first.
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
-#include "geometry/implicit/blob_cell_queries.h"
 #include "geometry/implicit/blob_cells.h"
+#include "geometry/implicit/blob_query_work.h"
+#include "geometry/implicit/bounding_sphere.h"
+#include "geometry/implicit/field_crossing.h"
 #include "geometry/implicit/field_function.h"
-#include "geometry/implicit/field_sweep.h"
-#include "geometry/implicit/metaball_sweep.h"
 #include "geometry/implicit/metacube.h"
 #include "renderer/math/transform.h"
 
 namespace isotrace {
 
-// A cell's first crossing, with the outward unit normal at the point where a renderer places it.
-struct CellHit {
-    FieldCrossing crossing;
-    // At o + d·float(t) (Embree keeps a hit's t as a float, and the shading point is computed from it); std::nullopt
-    // where −∇F vanishes there (a hard cube's face: normal_in_cell takes the face's normal).
-    std::optional<Vec3d> normal;
+struct BlobCellQueries;
+
+// What a march reads of a group (blob_ray.cpp), as plain data: it is valid while the group is neither changed nor
+// moved.
+struct BlobGroupView {
+    std::span<const Metacube> elements;
+    std::span<const BoundingSphere> spheres;  // per element, for the march's first test
+    double centre_bound;                      // the largest |centre| of the spheres (scales that test's margin)
+    double threshold;
+    const BlobCells& cells;
+    const FieldFunction& kernel;
+    std::size_t kernel_index;  // in FieldKernels (field_kernels.h), for with_kernel
+    bool metaballs_only;       // no metacube, no hard cube: the march compiles their cases out
+    bool metaball_march;       // metaballs of a one-piece polynomial kernel: MetaballMarch applies
 };
 
 class BlobGroup {
@@ -47,17 +56,13 @@ public:
     // (docs/reliability.md). The memory budget is charged with it before a "generate" allocates.
     static constexpr std::uint64_t kPeakBytesPerElement = 328;
 
-    // The first crossing of F along o + t·d with t in (t_min, t_max) inside cell `cell` (Embree's query), and its
-    // normal, summed from the sweep's own elements (candidate hits are nearly all accepted: 31,330 crossings for
-    // 31,302 hits on blobs_10k at 320×180, so a normal per crossing costs less than a second search of the cell).
-    std::optional<CellHit> first_crossing_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction,
-                                                  double t_min, double t_max, BlobQueryWork& work) const;
-    // Whether F crosses T anywhere along o + t·d with t in (t_min, t_max) inside cell `cell` (Embree's occlusion
-    // query). A cell that starts inside the surface after a ray start outside it ends at once: the ray crossed the
-    // surface before the cell (shadow rays meet cells in the order of Embree's hierarchy, not along the ray, and
-    // sweeping the inside of a blob to its far side was most of their work).
-    bool occluded_in_cell(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_min,
-                          double t_max, BlobQueryWork& work) const;
+    // What the ray queries read (blob_cell_queries.h), and the build of them chosen for this process when the group
+    // was made.
+    BlobGroupView view() const {
+        return {elements_, spheres_, centre_bound_, threshold_, cells_, *kernel_, kernel_index_, metaballs_only_,
+                metaball_march_};
+    }
+    const BlobCellQueries& queries() const { return *queries_; }
     // The first crossing along the whole ray, walking its cells in order.
     std::optional<FieldCrossing> first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
                                                 double t_max, BlobQueryWork& work) const;
@@ -84,15 +89,7 @@ public:
     void bake(const Transform& similarity, double scale);
 
 private:
-    template <BlobIsa>
-    friend class BlobCellSweep;  // the cell queries' sweeps, one build per instruction set
-
     void build_index();
-    enum class KernelKind { Blinn, Nishimura, Murakami, Wyvill, Kim };
-    // Calls f with the kernel as its concrete class, so that the sweep's kernel calls are direct
-    // (blob_group_with_kernel.h).
-    template <class F>
-    decltype(auto) with_kernel(F&& f) const;
     Vec3d normal_from(std::span<const std::uint32_t> near, const Vec3d& point) const;
     // ∇(F + T) from the `near` elements (a list that holds every element whose support contains the point).
     Vec3d gradient_from(std::span<const std::uint32_t> near, const Vec3d& point) const;
@@ -102,12 +99,13 @@ private:
 
     std::vector<Metacube> elements_;
     std::unique_ptr<const FieldFunction> kernel_;
-    KernelKind kernel_kind_;
+    std::size_t kernel_index_;  // in FieldKernels
+    const BlobCellQueries* queries_;
     double threshold_;
-    std::vector<BoundingSphere> spheres_;  // per element, for the sweep's first test
+    std::vector<BoundingSphere> spheres_;  // per element, for the march's first test
     double centre_bound_ = 0;              // the largest |centre| of spheres_ (scales that test's float margin)
-    bool metaballs_only_ = false;          // no metacube, no hard cube: the sweep compiles their cases out
-    bool metaball_sweep_ = false;          // metaballs of a one-piece polynomial kernel: MetaballSweep applies
+    bool metaballs_only_ = false;          // no metacube, no hard cube: the march compiles their cases out
+    bool metaball_march_ = false;          // metaballs of a one-piece polynomial kernel: MetaballMarch applies
     BlobCells cells_;
 };
 

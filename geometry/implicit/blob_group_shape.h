@@ -1,13 +1,12 @@
 #pragma once
 // The "blobs" shape: a BlobGroup as one Embree user geometry, one primitive per cell (blob_cells.h), bounds =
-// the cell's box. A cell's intersect callback reports the first crossing of the summed field within the cell;
-// cells are disjoint, so Embree's shrinking t_far makes the nearest of them the hit and culls the cells behind
-// it. The callback also stores the hit's normal in Embree's Ng, summed from the elements its sweep holds (a hit
-// that a nearer cell later replaces wasted that sum, which is rare); shading() reads it back. As a CSG operand the
-// group is a solid: inside is where the summed field exceeds the threshold. Elements may carry materials of their
-// own, which blend at a hit by their shares of the field (blob_materials.h); groups without them skip all of that.
-#include <array>
+// the cell's box. Its intersect and occluded callbacks are those of the build of the cell queries the group chose
+// (blob_ray.cpp, blob_cell_queries.h); a hit's normal is stored in Embree's Ng, and shading() reads it back. As a CSG
+// operand the group is a solid: inside is where the summed field exceeds the threshold. Elements may carry materials
+// of their own, which blend at a hit by their shares of the field (blob_materials.h); groups without them skip all
+// of that.
 
+#include "geometry/implicit/blob_cell_queries.h"
 #include "geometry/implicit/blob_group.h"
 #include "geometry/implicit/blob_materials.h"
 #include "renderer/plugin/shape.h"
@@ -49,24 +48,14 @@ public:
 
 private:
     void register_counters();
-    void count_work(const BlobQueryWork& work) const;
-    // The first crossing in (t_near, t_far) within cell `cell` and its normal, its work counted.
-    std::optional<CellHit> first_hit(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near,
-                                     float t_far) const;
-    // Whether any crossing lies in (t_near, t_far) within cell `cell`, its work counted.
-    bool occludes(std::uint32_t cell, const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) const;
     // The part with the largest share of the field at a point (CSG shows one material per surface point).
     std::uint32_t largest_part(const Vec3d& point) const;
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
-    static void intersect_callback(const RTCIntersectFunctionNArguments* args);
-    static void occluded_callback(const RTCOccludedFunctionNArguments* args);
 
     BlobGroup group_;
     BlobMaterials materials_;
-    int counter_slot_ = 0;
-    // Counter slots of every BlobQueryWork field for this group ("blobs[name].pieces", ...), each registered to add
-    // into the total of all blob groups ("blobs.pieces", ...) when totals are read.
-    std::array<int, 10> work_slots_{};
+    // What the Embree callbacks read (their user data), with the counters of this group's work.
+    BlobRayTarget target_;
 };
 
 }  // namespace isotrace

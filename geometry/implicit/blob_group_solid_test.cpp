@@ -215,7 +215,8 @@ TEST(BlobGroupSolid, NearestHitDoesNotDependOnTheOrderOfCellQueries) {
             std::shuffle(order.begin(), order.end(), random);
             std::optional<double> best;
             for (std::uint32_t cell : order)
-                if (const auto c = group.first_crossing_in_cell(cell, origin, direction, 0, best.value_or(1e30), work))
+                if (const auto c = group.queries().first_hit_in_cell(group, cell, origin, direction, 0,
+                                                                     best.value_or(1e30), work))
                     best = c->crossing.t;
             ASSERT_EQ(best.has_value(), expected.has_value()) << "ray " << ray << " trial " << trial;
             if (best) {

@@ -104,7 +104,7 @@ std::optional<double> reference_crossing(const BlobGroup& group, const Vec3d& or
 // T = 0.5) 3 apart, in one cell, and rays parallel to their axis at distance h. Their supports do not overlap, so
 // a ray hits exactly when h is below one ball's iso-radius, (1 − h²)³ = T. Each contributes at most (1 − h²)³ on
 // the ray, so the bound 2·(1 − h²)³ falls below T only beyond h² = 1 − 0.25^(1/3): from there on the cell is
-// skipped before any element is joined; between the two radii the sweep runs and finds nothing. A ray outside
+// skipped before any element is joined; between the two radii the march runs and finds nothing. A ray outside
 // the cell's surface region (surface_region.h) makes no query at all.
 TEST(BlobGroup, CandidateBoundSkipsOnlyCellsWithoutCrossings) {
     const BlobGroup group({Metacube::metaball({-1.5, 0, 0}, 1, 1), Metacube::metaball({1.5, 0, 0}, 1, 1)},
@@ -113,7 +113,7 @@ TEST(BlobGroup, CandidateBoundSkipsOnlyCellsWithoutCrossings) {
     const BlobCells::Cell& cell = group.cells().cells()[0];
     const double h_limit = std::sqrt(1 - std::cbrt(0.25));  // 2·(1 − h²)³ = T: the bound's edge
     const double h_alone = std::sqrt(1 - std::cbrt(0.5));   // (1 − h²)³ = T: one ball's own iso-radius
-    int bounded_seen = 0, swept_in_vain = 0;
+    int bounded_seen = 0, marched_in_vain = 0;
     for (const Vec3d offset : {Vec3d{0, 0.5 * h_alone, 0}, Vec3d{0, 0.999 * h_alone, 0}, Vec3d{0, 1.001 * h_alone, 0},
                                Vec3d{0, 0.5 * (h_alone + h_limit), 0}, Vec3d{0, 1.001 * h_limit, 0},
                                Vec3d{0, 1.5 * h_limit, 0}, Vec3d{0, 0.49, 0.49}, Vec3d{0, 0.6, 0.6}}) {
@@ -130,10 +130,10 @@ TEST(BlobGroup, CandidateBoundSkipsOnlyCellsWithoutCrossings) {
         ASSERT_EQ(work.queries, 1u) << at;
         EXPECT_EQ(work.queries_bounded, h > h_limit ? 1u : 0u) << at;
         bounded_seen += h > h_limit;
-        swept_in_vain += h > h_alone && h < h_limit;
+        marched_in_vain += h > h_alone && h < h_limit;
     }
     EXPECT_GT(bounded_seen, 0);  // the cases above exercise both outcomes of the bound
-    EXPECT_GT(swept_in_vain, 0);
+    EXPECT_GT(marched_in_vain, 0);
 }
 
 // The nearest crossing over all cells, as Embree finds it (each cell's query shrinks t_far).
@@ -141,7 +141,8 @@ std::optional<double> nearest_crossing(const BlobGroup& group, const Vec3d& orig
     std::optional<double> best;
     BlobQueryWork work;
     for (std::uint32_t cell = 0; cell < group.cells().cells().size(); ++cell)
-        if (const auto c = group.first_crossing_in_cell(cell, origin, direction, 0, best.value_or(1e30), work))
+        if (const auto c =
+                group.queries().first_hit_in_cell(group, cell, origin, direction, 0, best.value_or(1e30), work))
             best = c->crossing.t;
     return best;
 }
@@ -249,7 +250,7 @@ TEST(BlobGroup, InstancedAndBakedGroupsAgree) {
 
 // Regression: a lone hard cube's cell is the cube, so a ray meets the cube's faces where its cell begins and ends.
 // Rounding can put the entry a hair before the cell's start (the face is found in the cube's frame, the cell's
-// start in world coordinates), so the sweep starts inside, and the exit is the cell's end, which it does not visit:
+// start in world coordinates), so the march starts inside, and the exit is the cell's end, which it does not visit:
 // these rays, from the floor of the Kim-Kim gallery scenes, passed through the cube. Both are fixed: a face within
 // rounding of a stretch's start counts as at it, and occlusion follows from being inside where a cell begins after
 // starting outside.
@@ -281,7 +282,7 @@ TEST(BlobGroup, RaysThroughALoneHardCubeHitItAndAreOccluded) {
 }
 
 // CSG asks a blob group for every crossing. A lone hard cube's cell is the cube itself, so its exit face lies on
-// the cell's far end: in no piece of the sweep, and with no cell beyond to find it at its start (before the fix,
+// the cell's far end: in no piece of the march, and with no cell beyond to find it at its start (before the fix,
 // every one of these rays entered the cube and never left).
 TEST(BlobGroup, EveryRayThroughALoneHardCubeCrossesItTwice) {
     OrientedBox box;
@@ -311,7 +312,7 @@ TEST(BlobGroup, EveryRayThroughALoneHardCubeCrossesItTwice) {
 }
 
 // A cell's crossing carries the normal the renderer would otherwise compute at the hit point (normal_in_cell at
-// o + d·float(t)), summed from the sweep's own elements: the same elements in the same order, so the same bits.
+// o + d·float(t)), summed from the march's own elements: the same elements in the same order, so the same bits.
 // Every kernel, metacubes and carving elements; the normal is absent only where −∇F vanishes.
 TEST(BlobGroup, TheNormalOfACellsCrossingIsTheNormalAtTheHitPoint) {
     for (const std::string_view name : field_function_names()) {
@@ -324,7 +325,7 @@ TEST(BlobGroup, TheNormalOfACellsCrossingIsTheNormalAtTheHitPoint) {
             const Vec3d direction = normalize(random_vector(random, -0.6, 0.6) - origin);
             BlobQueryWork work;
             for (std::uint32_t cell = 0; cell < group.cells().surface_cell_count(); ++cell) {
-                const auto hit = group.first_crossing_in_cell(cell, origin, direction, 0, 100, work);
+                const auto hit = group.queries().first_hit_in_cell(group, cell, origin, direction, 0, 100, work);
                 if (!hit) continue;
                 ++hits;
                 ASSERT_TRUE(hit->normal.has_value()) << name << " ray " << ray;  // no hard cube here

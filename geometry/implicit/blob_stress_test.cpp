@@ -1,6 +1,6 @@
 // Random rays against random dense blob groups (all five kernels; metaballs alone, and with rotated non-uniform
 // metacubes; negative weights, coincident elements), compared with a slow oracle that shares nothing with the cell
-// sweep but the element slices: every element of the group on every piece (no cells, no candidates), each piece's
+// march but the element slices: every element of the group on every piece (no cells, no candidates), each piece's
 // field built by polynomial products and solved by Sturm sequences (or sampled densely where a kernel piece is not
 // a polynomial). Occlusion queries are checked against the first crossing. 10⁴ rays in the default suite;
 // ISOTRACE_BLOB_STRESS_RAYS raises it (the `long` CTest label runs 10⁶).
@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -24,28 +25,24 @@ struct OracleCrossing {
     bool entering;
 };
 
-// Every sign change of F along o + t·d in (t_min, t_max), by brute force.
-std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction,
-                                             double t_min, double t_max) {
-    const FieldFunction& kernel = group.kernel();
-    struct Sliced {
-        const Metacube* element;
-        MetacubeRaySlices slices;
-    };
-    std::vector<Sliced> sliced;
+// An element whose support the line crosses, with its slices along the line.
+struct Sliced {
+    const Metacube* element;
+    MetacubeRaySlices slices;
+};
+
+// Where the field along the line may change form: every slice's ends and where dist² reaches a kernel piece's start
+// (sampled finely and bisected, so as not to share the march's quadratic solver), sorted.
+std::vector<double> oracle_breaks(const std::vector<Sliced>& sliced, const FieldFunction& kernel, double t_min,
+                                  double t_max) {
     std::vector<double> breaks{t_min, t_max};
-    for (const Metacube& element : group.elements()) {
-        const auto slices = MetacubeRaySlices::slice(element, origin, direction);
-        if (!slices) continue;
-        sliced.push_back({&element, *slices});
-        const FieldPieces pieces = kernel.pieces(element.radius());
-        for (const RegionPiece& piece : slices->pieces()) {
+    for (const Sliced& s : sliced) {
+        const FieldPieces pieces = kernel.pieces(s.element->radius());
+        for (const RegionPiece& piece : s.slices.pieces()) {
             breaks.push_back(piece.t_begin);
             breaks.push_back(piece.t_end);
-            // Kernel piece boundaries: where dist² reaches a piece's start (sampled finely and bisected, so as
-            // not to share the sweep's quadratic solver).
             for (int k = 1; k < pieces.count; ++k) {
-                const QuadraticAbout q = slices->distance_squared(piece, piece.t_begin);
+                const QuadraticAbout q = s.slices.distance_squared(piece, piece.t_begin);
                 const double level = pieces.pieces[std::size_t(k)].r2_begin;
                 const int steps = 256;
                 for (int i = 0; i < steps; ++i) {
@@ -62,10 +59,50 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
         }
     }
     std::sort(breaks.begin(), breaks.end());
+    return breaks;
+}
+
+// The field on the piece [s0, s1] as a polynomial in u = t − s0, by products of Polynomial values; std::nullopt where
+// a kernel piece counting there is no polynomial.
+std::optional<Polynomial> oracle_piece_polynomial(const BlobGroup& group, const std::vector<Sliced>& sliced,
+                                                  double s0, double s1) {
+    const double middle = 0.5 * (s0 + s1);
+    Polynomial sum{-group.threshold()};
+    for (const Sliced& s : sliced) {
+        if (middle < s.slices.t_in() || middle > s.slices.t_out()) continue;
+        const RegionPiece* piece = nullptr;
+        for (const RegionPiece& p : s.slices.pieces())
+            if (middle >= p.t_begin && middle <= p.t_end) piece = &p;
+        if (!piece) continue;
+        const QuadraticAbout q = s.slices.distance_squared(*piece, s0);
+        const Polynomial r2{q.c0, q.c1, q.c2};
+        const double r2_middle = std::max(0.0, q(middle));
+        // Kept in a variable: span() of the temporary would dangle (AddressSanitizer: stack-use-after-scope).
+        const FieldPieces kernel_pieces = group.kernel().pieces(s.element->radius());
+        for (const FieldPiece& kp : kernel_pieces.span()) {
+            if (!(r2_middle >= kp.r2_begin && r2_middle <= kp.r2_end)) continue;
+            if (!kp.is_polynomial) return std::nullopt;
+            Polynomial term{kp.coefficients[std::size_t(kp.degree)]};
+            for (int k = kp.degree - 1; k >= 0; --k) term = term * r2 + Polynomial{kp.coefficients[std::size_t(k)]};
+            sum += term * s.element->weight();
+            break;
+        }
+    }
+    return sum;
+}
+
+// Every sign change of F along o + t·d in (t_min, t_max), by brute force.
+std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction,
+                                             double t_min, double t_max) {
+    std::vector<Sliced> sliced;
+    for (const Metacube& element : group.elements())
+        if (const auto slices = MetacubeRaySlices::slice(element, origin, direction))
+            sliced.push_back({&element, *slices});
+    const std::vector<double> breaks = oracle_breaks(sliced, group.kernel(), t_min, t_max);
     // The field from every element whose support the line crosses (the others are zero along it).
     const auto total = [&](double t) {
         double sum = -group.threshold();
-        for (const Sliced& s : sliced) sum += s.element->field(kernel, origin + direction * t);
+        for (const Sliced& s : sliced) sum += s.element->field(group.kernel(), origin + direction * t);
         return sum;
     };
     std::vector<OracleCrossing> found;
@@ -76,61 +113,34 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
     for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
         const double s0 = std::max(breaks[b], t_min), s1 = std::min(breaks[b + 1], t_max);
         if (!(s1 > s0)) continue;
-        const double middle = 0.5 * (s0 + s1);
-        // The piece's field as a polynomial in u = t − s0, by products of Polynomial values.
-        Polynomial sum{-group.threshold()};
-        bool polynomial = true;
-        for (const Sliced& s : sliced) {
-            if (middle < s.slices.t_in() || middle > s.slices.t_out()) continue;
-            const RegionPiece* piece = nullptr;
-            for (const RegionPiece& p : s.slices.pieces())
-                if (middle >= p.t_begin && middle <= p.t_end) piece = &p;
-            if (!piece) continue;
-            const QuadraticAbout q = s.slices.distance_squared(*piece, s0);
-            const Polynomial r2{q.c0, q.c1, q.c2};
-            const double r2_middle = std::max(0.0, q(middle));
-            // Kept in a variable: span() of the temporary would dangle (AddressSanitizer: stack-use-after-scope).
-            const FieldPieces kernel_pieces = kernel.pieces(s.element->radius());
-            for (const FieldPiece& kp : kernel_pieces.span()) {
-                if (!(r2_middle >= kp.r2_begin && r2_middle <= kp.r2_end)) continue;
-                if (!kp.is_polynomial) {
-                    polynomial = false;
-                    break;
-                }
-                Polynomial term{kp.coefficients[std::size_t(kp.degree)]};
-                for (int k = kp.degree - 1; k >= 0; --k) term = term * r2 + Polynomial{kp.coefficients[std::size_t(k)]};
-                sum += term * s.element->weight();
-                break;
-            }
-        }
-        if (polynomial) {
-            for (const PolynomialRoot& root : sturm_roots(sum, 0, s1 - s0)) {
+        if (const std::optional<Polynomial> sum = oracle_piece_polynomial(group, sliced, s0, s1)) {
+            for (const PolynomialRoot& root : sturm_roots(*sum, 0, s1 - s0)) {
                 if (root.tangent) continue;
-                const double before = sum.evaluate(root.t - 1e-9 * (s1 - s0));
-                const double after = sum.evaluate(root.t + 1e-9 * (s1 - s0));
+                const double before = sum->evaluate(root.t - 1e-9 * (s1 - s0));
+                const double after = sum->evaluate(root.t + 1e-9 * (s1 - s0));
                 if ((before > 0) == (after > 0)) continue;
                 if ((after > 0 ? 1 : -1) == sign) continue;
                 add(s0 + root.t, sign);
                 sign = -sign;
             }
-        } else {
-            const int steps = 128;
-            double previous_t = s0, previous = total(s0);
-            for (int i = 1; i <= steps; ++i) {
-                const double t = s0 + (s1 - s0) * i / steps;
-                const double value = total(t);
-                if ((value > 0) != (previous > 0)) {
-                    double lo = previous_t, hi = t;
-                    for (int j = 0; j < 200 && hi - lo > 1e-15 * (1 + std::abs(hi)); ++j) {
-                        const double mid = 0.5 * (lo + hi);
-                        ((total(mid) > 0) == (previous > 0) ? lo : hi) = mid;
-                    }
-                    add(hi, previous > 0 ? 1 : -1);
-                    sign = value > 0 ? 1 : -1;
+            continue;
+        }
+        const int steps = 128;
+        double previous_t = s0, previous = total(s0);
+        for (int i = 1; i <= steps; ++i) {
+            const double t = s0 + (s1 - s0) * i / steps;
+            const double value = total(t);
+            if ((value > 0) != (previous > 0)) {
+                double lo = previous_t, hi = t;
+                for (int j = 0; j < 200 && hi - lo > 1e-15 * (1 + std::abs(hi)); ++j) {
+                    const double mid = 0.5 * (lo + hi);
+                    ((total(mid) > 0) == (previous > 0) ? lo : hi) = mid;
                 }
-                previous_t = t;
-                previous = value;
+                add(hi, previous > 0 ? 1 : -1);
+                sign = value > 0 ? 1 : -1;
             }
+            previous_t = t;
+            previous = value;
         }
     }
     return found;
@@ -138,7 +148,7 @@ std::vector<OracleCrossing> oracle_crossings(const BlobGroup& group, const Vec3d
 
 // A dense random group: `count` elements in a 2 m cube, metaballs and rotated non-uniform metacubes, one in six
 // carving, one in ten a copy of an earlier one (coincident). With `metaballs_only` the boxes drawn are dropped
-// (the same random numbers are drawn): the group then takes the sweep compiled for metaballs alone.
+// (the same random numbers are drawn): the group then takes the march compiled for metaballs alone.
 BlobGroup dense_group(std::mt19937_64& rng, const std::string& kernel, int count, bool metaballs_only) {
     std::uniform_real_distribution<double> u(0, 1);
     std::vector<Metacube> elements;
@@ -234,7 +244,7 @@ void compare_with_oracle(long long first_group, long long rays) {
             };
             const double tolerance = 1e-7 * t_max;
             // The oracle samples non-polynomial pieces densely and can miss a pair of crossings closer than its
-            // step: the sweep's pair is right when F in its middle has the other sign than just before it.
+            // step: the march's pair is right when F in its middle has the other sign than just before it.
             const auto total = [&](double t) {
                 double sum = -group.threshold();
                 for (const Metacube& e : group.elements()) sum += e.field(group.kernel(), origin + direction * t);
@@ -258,7 +268,7 @@ void compare_with_oracle(long long first_group, long long rays) {
                     EXPECT_EQ(all[i].entering, expected[j].entering) << context();
                     ++i, ++j;
                 } else if (j + 1 < expected.size() && expected[j + 1].t - expected[j].t < tolerance) {
-                    j += 2;  // a graze the sweep did not split
+                    j += 2;  // a graze the march did not split
                     ++graze_pairs;
                 } else if (i + 1 < all.size() && all[i + 1].t - all[i].t < tolerance) {
                     i += 2;  // a graze the oracle did not split
@@ -268,7 +278,7 @@ void compare_with_oracle(long long first_group, long long rays) {
                     i += 2;  // a dip narrower than the oracle's sampling, confirmed by the field itself
                     ++thin_dips;
                 } else {
-                    FAIL() << context() << " crossing lists differ at sweep " << i << " / oracle " << j << ": "
+                    FAIL() << context() << " crossing lists differ at march " << i << " / oracle " << j << ": "
                            << (i < all.size() ? all[i].t : -1) << " vs " << (j < expected.size() ? expected[j].t : -1);
                 }
             }
@@ -285,8 +295,8 @@ void compare_with_oracle(long long first_group, long long rays) {
 TEST(BlobStress, RandomRaysAgreeWithTheBruteForceOracle) { compare_with_oracle(first_traced_group(), stress_rays()); }
 
 // Rays that start on the surface, a few float ulps off it as secondary rays do (SurfaceHit::spawn_origin), leaving
-// it or heading in: F is within a hair of T at their start, where the sweep of metaballs settles the first piece by
-// the elements' chords (metaball_sweep.h) rather than by its polynomial. Their first crossing and occlusion must
+// it or heading in: F is within a hair of T at their start, where the march of metaballs settles the first piece by
+// the elements' chords (metaball_march.h) rather than by its polynomial. Their first crossing and occlusion must
 // still agree with the oracle.
 TEST(BlobStress, RaysFromTheSurfaceAgreeWithTheBruteForceOracle) {
     std::mt19937_64 rng(20261129);
@@ -328,7 +338,7 @@ TEST(BlobStress, RaysFromTheSurfaceAgreeWithTheBruteForceOracle) {
     std::printf("blob stress from the surface: %lld rays, %lld hits, %lld graze pairs\n", rays, hits, graze_pairs);
 }
 
-// The groups where the 10⁶-ray run once found the sweep wrong (or the oracle blind), replayed in the default
+// The groups where the 10⁶-ray run once found the march wrong (or the oracle blind), replayed in the default
 // suite: a flat skeleton's dist² rounding below 0 (Nishimura, 196), bisection landing on the last of three roots
 // (Blinn, 270 and 530), F = 0 exactly at a search midpoint (Nishimura, 1301), a dip narrower than the oracle's
 // sampling (Nishimura, 13031).

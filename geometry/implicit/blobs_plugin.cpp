@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 #include "geometry/csg/material_reference_parser.h"
 #include "geometry/implicit/blob_group_shape.h"
@@ -167,12 +168,17 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
                                             std::move(parts));
 }
 
+// The kernels' names come from FieldKernels (field_kernels.h).
+std::string summary() {
+    std::string kernels;
+    for (std::string_view name : field_function_names()) kernels += (kernels.empty() ? "" : ", ") + std::string(name);
+    return "blended metaballs/metacubes; field (" + kernels +
+           "), threshold (0.5), sharpness (blinn), elements: [{center, radius, weight, half_size, rotate, material}], "
+           "generate: {count, seed, min, max, radius, weight, half_size, materials}";
+}
+
 }  // namespace
 
-ISOTRACE_REGISTER_PLUGIN(shape_registry, "blobs",
-                         "blended metaballs/metacubes; field (kim, wyvill, murakami, nishimura, blinn), threshold "
-                         "(0.5), sharpness (blinn), elements: [{center, radius, weight, half_size, rotate, material}], "
-                         "generate: {count, seed, min, max, radius, weight, half_size, materials}",
-                         create)
+ISOTRACE_REGISTER_PLUGIN(shape_registry, "blobs", summary(), create)
 
 }  // namespace isotrace

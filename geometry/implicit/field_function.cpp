@@ -3,13 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
-#include "geometry/implicit/blinn_exponential.h"
-#include "geometry/implicit/kim_sextic.h"
-#include "geometry/implicit/murakami_quartic.h"
-#include "geometry/implicit/nishimura_quadratic.h"
+#include "geometry/implicit/field_kernels.h"
 #include "geometry/implicit/parameter_check.h"
-#include "geometry/implicit/wyvill_sextic.h"
 
 namespace isotrace {
 
@@ -39,17 +36,29 @@ void validate_threshold(double threshold) {
     require_parameter(std::isfinite(threshold) && threshold > 0, "threshold", "must be finite and > 0", threshold);
 }
 
-std::span<const std::string_view> field_function_names() {
-    static constexpr std::array<std::string_view, 5> names = {"blinn", "nishimura", "murakami", "wyvill", "kim"};
-    return names;
+std::span<const std::string_view> field_function_names() { return FieldKernels::kNames; }
+
+namespace {
+
+// A kernel of FieldKernels; `sharpness` goes to those whose constructor takes a parameter (Blinn's).
+template <class Kernel>
+std::unique_ptr<const FieldFunction> make_kernel(double sharpness) {
+    if constexpr (std::is_constructible_v<Kernel, double>) return std::make_unique<Kernel>(sharpness);
+    else return std::make_unique<Kernel>();
 }
 
+template <class... Kernels>
+std::unique_ptr<const FieldFunction> make_listed(KernelList<Kernels...>, std::size_t index, double sharpness) {
+    using Make = std::unique_ptr<const FieldFunction> (*)(double);
+    static constexpr Make kMake[] = {&make_kernel<Kernels>...};
+    return kMake[index](sharpness);
+}
+
+}  // namespace
+
 std::unique_ptr<const FieldFunction> make_field_function(std::string_view name, double blinn_sharpness) {
-    if (name == "blinn") return std::make_unique<BlinnExponential>(blinn_sharpness);
-    if (name == "nishimura") return std::make_unique<NishimuraQuadratic>();
-    if (name == "murakami") return std::make_unique<MurakamiQuartic>();
-    if (name == "wyvill") return std::make_unique<WyvillSextic>();
-    if (name == "kim") return std::make_unique<KimSextic>();
+    if (const std::optional<std::size_t> index = field_kernel_index(name))
+        return make_listed(FieldKernels{}, *index, blinn_sharpness);
     std::string message = "field: unknown field function \"" + std::string(name) + "\" (expected one of:";
     for (std::string_view known : field_function_names()) message += " " + std::string(known);
     throw std::invalid_argument(message + ")");

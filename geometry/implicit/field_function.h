@@ -42,7 +42,7 @@ class FieldFunction {
 public:
     virtual ~FieldFunction() = default;
 
-    // The scene name: "blinn", "nishimura", "murakami", "wyvill" or "kim".
+    // The scene name (the concrete class's kName, field_kernels.h).
     virtual std::string_view name() const = 0;
 
     // f and df/d(r²) at squared distance r2 ≥ 0 from an element of field radius R > 0; both 0 for r2 ≥ R².
@@ -83,7 +83,7 @@ public:
 // Throws std::invalid_argument naming "threshold" unless T is finite and > 0.
 void validate_threshold(double threshold);
 
-// The names make_field_function accepts, in Table 1 order.
+// The names make_field_function accepts: those of FieldKernels (field_kernels.h), in its order.
 std::span<const std::string_view> field_function_names();
 
 // The kernel called `name` (see field_function_names). `blinn_sharpness` is used by "blinn" only. Throws

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "geometry/implicit/blob_group.h"
+#include "geometry/implicit/blob_cell_queries.h"
 #include "geometry/implicit/metacube.h"
 
 namespace isotrace {
@@ -40,7 +40,7 @@ inline std::array<Vec3d, 3> random_axes(std::mt19937_64& rng) {
 inline bool occluded_in_any_cell(const BlobGroup& group, const Vec3d& origin, const Vec3d& direction, double t_min,
                                  double t_max, BlobQueryWork& work) {
     for (std::uint32_t cell = 0; cell < group.cells().surface_cell_count(); ++cell)
-        if (group.occluded_in_cell(cell, origin, direction, t_min, t_max, work)) return true;
+        if (group.queries().occluded_in_cell(group, cell, origin, direction, t_min, t_max, work)) return true;
     return false;
 }
 

@@ -7,13 +7,14 @@ namespace isotrace {
 
 class KimSextic final : public FieldFunction {
 public:
-    std::string_view name() const override { return "kim"; }
+    static constexpr std::string_view kName = "kim";
+    std::string_view name() const override { return kName; }
     double unit_value(double x) const override {
         const double u = 1 - x;
         return u * u * u;
     }
     double unit_derivative(double x) const override { return unit_derivative_of(x); }
-    // df/dx for a double or for lanes of doubles (double4.h: the blob sweep's normal sums four elements at a time),
+    // df/dx for a double or for lanes of doubles (double4.h: the blob march's normal sums four elements at a time),
     // with the same operations, so the same bits.
     template <class T>
     static T unit_derivative_of(T x) {

@@ -52,7 +52,7 @@ public:
     bool is_metaball() const { return half_size_ == Vec3d(0, 0, 0); }
     double radius() const { return radius_; }
     double weight() const { return weight_; }
-    // The centre's x, y, z, the radius and the weight, side by side: the metaball sweep loads the first four of
+    // The centre's x, y, z, the radius and the weight, side by side: the metaball march loads the first four of
     // several elements as lanes and transposes them.
     const double* centre_radius_weight() const { return &centre_.x; }
     bool is_hard_cube() const { return radius_ == 0; }
@@ -113,7 +113,7 @@ private:
     }
     Vec3d offset_beyond_rotated_box(const Vec3d& world_point) const;
 
-    // What the ray sweep reads first comes first. The frame is a unit quaternion rather than three axes: 96 bytes
+    // What the ray march reads first comes first. The frame is a unit quaternion rather than three axes: 96 bytes
     // per element instead of 136 (issue 9's memory budget is 256 bytes per element, cells and Embree included).
     Vec3d centre_;
     double radius_;

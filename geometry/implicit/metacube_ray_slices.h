@@ -30,7 +30,7 @@ struct QuadraticAbout {
 };
 
 // A stretch [t_begin, t_end] of the ray inside one region of the box. No default member values: the slices' array
-// of seven is left unset beyond the pieces in use (zeroing it was two thirds of slicing a metaball, perf).
+// of seven is left unset beyond the pieces in use (zeroing it would cost more than slicing a metaball).
 struct RegionPiece {
     double t_begin, t_end;
     // The paper's region vector U per local axis: +1 / −1 beyond the high / low face, 0 within the slab. Inside
@@ -57,7 +57,7 @@ public:
     // dist²(o + t·dir) on `piece` (valid for t in the piece), written about t_ref.
     QuadraticAbout distance_squared(const RegionPiece& piece, double t_ref) const;
     // A metaball's dist² along o + t·dir, written about t_ref: the same bits as distance_squared gives on the one
-    // piece of a metaball's slices, without building them. Inline: the sweep asks it for every metaball it joins.
+    // piece of a metaball's slices, without building them. Inline: the march asks it for every metaball it joins.
     static QuadraticAbout metaball_distance_squared(const Vec3d& origin, const Vec3d& direction,
                                                     const Vec3d& centre, double t_ref) {
         return squared_offsets(origin - centre, direction, {0, 0, 0}, {1, 1, 1}, t_ref);  // as metaball() sets them

@@ -142,7 +142,7 @@ TEST(MetacubeRaySlices, MetaballIsOnePieceBetweenTheSphereRoots) {
     EXPECT_NEAR(slices->t_out(), roots->t1, 1e-14);
 }
 
-// The sweep joins metaballs without building their slices: their dist² must be the very bits the slices give, or
+// The march joins metaballs without building their slices: their dist² must be the very bits the slices give, or
 // the images would change with the representation.
 TEST(MetacubeRaySlices, MetaballSquaredDistanceWithoutSlicesIsBitIdentical) {
     std::mt19937_64 rng(5);

@@ -7,7 +7,8 @@ namespace isotrace {
 
 class MurakamiQuartic final : public FieldFunction {
 public:
-    std::string_view name() const override { return "murakami"; }
+    static constexpr std::string_view kName = "murakami";
+    std::string_view name() const override { return kName; }
     double unit_value(double x) const override {
         const double u = 1 - x;
         return u * u;

@@ -16,7 +16,8 @@ public:
     // x = r²/R² where the two pieces meet (r = R/3).
     static constexpr double kUnitBreakpoint = 1.0 / 9;
 
-    std::string_view name() const override { return "nishimura"; }
+    static constexpr std::string_view kName = "nishimura";
+    std::string_view name() const override { return kName; }
     double unit_value(double x) const override {
         if (x < kUnitBreakpoint) return 1 - 3 * x;
         const double u = 1 - std::sqrt(x);

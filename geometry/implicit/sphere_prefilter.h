@@ -1,7 +1,7 @@
 #pragma once
 // The first test of every listed element of a blob cell: its compact bounding sphere, tested eight at a time in
 // float (GCC/clang vector extensions, renderer/math/lanes.h: two SSE registers on baseline x86-64, one AVX register
-// in the AVX2 build of the cell queries) against a stretch of the ray (the sweep's candidates) or against a point
+// in the AVX2 build of the cell queries) against a stretch of the ray (the march's candidates) or against a point
 // (the field and normal at a hit). The float tests carry margins far above their rounding, so they never reject a
 // sphere that the exact double test would keep; callers run the exact test on the survivors, which keeps every
 // result bit-identical to testing each sphere exactly (and the same in either build: each lane is tested alone).
@@ -14,6 +14,7 @@
 #include <limits>
 #include <span>
 
+#include "geometry/implicit/bounding_sphere.h"
 #include "geometry/implicit/metacube.h"
 #include "renderer/math/fused_bounds.h"
 #include "renderer/math/lanes.h"
@@ -23,30 +24,6 @@
 #endif
 
 namespace isotrace {
-
-// A sphere that contains an element's support, in 16 bytes: the first test of every listed element of every
-// swept cell reads only these, not the elements (measured when they were 136 bytes: 7 % less time on
-// blobs_10k). Rounded so that it still contains the support: the radius grows by the centre's rounding.
-struct alignas(16) BoundingSphere {
-    float centre[3];
-    float radius;
-
-    static BoundingSphere of(const Metacube& element) {
-        const Vec3d& c = element.centre();
-        BoundingSphere sphere{{float(c.x), float(c.y), float(c.z)}, 0};
-        const Vec3d rounding = c - Vec3d(sphere.centre[0], sphere.centre[1], sphere.centre[2]);
-        const double reach = element.support_radius() + length(rounding);
-        sphere.radius = std::nextafter(float(reach * (1 + 1e-9)), std::numeric_limits<float>::infinity());
-        return sphere;
-    }
-    // False only when p is outside the element's support (its field and gradient are exactly 0 there).
-    bool may_contain(const Vec3d& p) const {
-        const Vec3d f = p - Vec3d(centre[0], centre[1], centre[2]);
-        return dot(f, f) <= double(radius) * double(radius) * (1 + 1e-9);
-    }
-};
-
-static_assert(sizeof(BoundingSphere) == 16, "one vector load per sphere");
 
 // |x| + |y| + |z| ≥ |p|: scales the float tests' margins without a square root at the head of every query.
 inline double magnitude_bound(const Vec3d& p) { return std::abs(p.x) + std::abs(p.y) + std::abs(p.z); }
@@ -124,7 +101,7 @@ struct PointNearSpheres {
 
 // Tests the listed elements first, …, first + kLanes − 1 (the last group repeats the list's last element in the
 // lanes beyond it, which the result leaves out): their indices in `group`, the lanes that pass as bits. Inlined:
-// the callers' loops are the hot path of every cell query, and a call cost 2 % (measured).
+// the callers' loops are the hot path of every cell query, where a call spills their vector registers.
 template <class Test>
 [[gnu::always_inline]] inline unsigned test_group(std::span<const std::uint32_t> ids,
                                                   std::span<const BoundingSphere> spheres, std::size_t first,

@@ -5,7 +5,7 @@
 // there. The box is halved along its longest side, recursively, and the region returned is the bounding box of
 // the finest sub-boxes whose bounds straddle T.
 //
-// Blob cells use it as their Embree bounds and as the stretch a ray sweeps: a ray that passes a cell where it is
+// Blob cells use it as their Embree bounds and as the stretch a ray marches: a ray that passes a cell where it is
 // all inside, all outside or only near the surface costs Embree a box test and no query at all.
 #include <algorithm>
 #include <cmath>
@@ -24,10 +24,9 @@ namespace isotrace {
 namespace surface_region_detail {
 
 // Halvings of the box: 12 leave sub-boxes of a sixteenth of the cell per side. The finer the region, the fewer the
-// rays that enter a cell's box without meeting the surface (each a query the candidates' bound ends at once): on
-// blobs_1k 174,564 such queries with 4 halvings, 115,010 with 8 and 87,520 with 12; primary rays ×1.13, bounce rays
-// ×1.07 from 4 to 12, no gain beyond. Building blobs_100k's regions takes 1.2 s on 2 threads instead of 0.5 s
-// (docs/decisions.md, "Blob groups: cells shrunk to where the surface can be").
+// rays that enter a cell's box without meeting the surface (each a query the candidates' bound ends at once); more
+// halvings gain nothing, and each costs build time (docs/decisions.md, "Blob groups: cells shrunk to where the surface
+// can be").
 constexpr int kHalvings = 12;
 // The sums are rounded; a sub-box whose bounds miss T by less than this (relative to the field's scale) is kept,
 // so rounding never drops a sub-box the surface touches.
@@ -162,7 +161,7 @@ std::optional<WorldBounds> surface_region(const WorldBounds& box, std::span<cons
 }
 
 // The same region where every element is a metaball and the kernel is `unit`, one polynomial piece of degree ≤ 3 on
-// x = dist²/R² ∈ [0, 1) and 0 beyond (MetaballSweep::applies), in lanes.
+// x = dist²/R² ∈ [0, 1) and 0 beyond (MetaballMarch::applies), in lanes.
 std::optional<WorldBounds> metaball_surface_region(const WorldBounds& box, std::span<const std::uint32_t> ids,
                                                    std::span<const Metacube> elements, const FieldPiece& unit,
                                                    double threshold);

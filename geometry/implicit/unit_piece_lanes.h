@@ -1,6 +1,6 @@
 #pragma once
 // A kernel that is one polynomial piece of degree ≤ 3 in x = r²/R² (Kim's, Wyvill's, Murakami's: FieldPiece with
-// is_polynomial), evaluated four lanes at a time: the metaball sweep's values and bounds (metaball_sweep.h) and the
+// is_polynomial), evaluated four lanes at a time: the metaball march's values and bounds (metaball_march.h) and the
 // surface regions' bounds (surface_region.h).
 #include <array>
 

@@ -8,7 +8,8 @@ namespace isotrace {
 
 class WyvillSextic final : public FieldFunction {
 public:
-    std::string_view name() const override { return "wyvill"; }
+    static constexpr std::string_view kName = "wyvill";
+    std::string_view name() const override { return kName; }
     // The factored form keeps full relative accuracy near r = R, where thin blends put their surfaces.
     double unit_value(double x) const override {
         const double u = 1 - x;

@@ -1,10 +1,10 @@
 #pragma once
-// The blob sweep for groups of metaballs alone whose kernel is one polynomial piece on its whole support (Kim's,
+// The blob march for groups of metaballs alone whose kernel is one polynomial piece on its whole support (Kim's,
 // Wyvill's and Murakami's: the benchmark clouds and most scenes). The same pieces, bounds, Bernstein test and
-// solving as the general sweep (field_sweep.h, sweep_piece.h), with the cell's candidates side by side in lanes of
+// solving as the general march (field_march.h, march_piece.h), with the cell's candidates side by side in lanes of
 // four (double4.h) instead of in a list of joined elements ordered by entry:
 //   1. the float sphere test keeps the listed elements the stretch may come near; their exact nearest approaches
-//      bound F from above (below T the stretch holds no crossing: nearly half the queries end here), and those
+//      bound F from above (below T the stretch holds no crossing, and many queries end here), and those
 //      whose support's chord meets the stretch become the candidates, in ascending element order;
 //   2. a metaball has one piece, its support's chord [t_enter, t_exit], so on any piece of the stretch its term of
 //      the sum is one polynomial: a piece the bounds leave open composes the terms of the elements counting on it
@@ -12,10 +12,10 @@
 //   3. pieces run between consecutive entries and exits: the next event is the least entry or exit beyond the
 //      piece's start (a minimum over the lanes, no sort), and the elements that count on a piece are a mask of the
 //      lanes (entered, not left), so each bound and sum is a masked sum over whole lanes: no branch per element,
-//      where the general sweep's loops over 5–8 joined elements and its sort mispredicted (docs/decisions.md).
+//      where the general march's loops over its joined elements and its sort mispredict (docs/decisions.md).
 // It takes at most kMaxLanes near elements (nearly every query of the benchmark clouds): run returns false for more,
-// having done nothing, and the general sweep takes the query. Its sums run in lane order rather than in order of
-// entry, so its crossings agree with the general sweep's to rounding, not bit for bit.
+// having done nothing, and the general march takes the query. Its sums run in lane order rather than in order of
+// entry, so its crossings agree with the general march's to rounding, not bit for bit.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -26,9 +26,10 @@
 #include <utility>
 
 #include "geometry/implicit/field_function.h"
+#include "geometry/implicit/march_piece.h"
 #include "geometry/implicit/metacube.h"
+#include "geometry/implicit/piece_march.h"
 #include "geometry/implicit/sphere_prefilter.h"
-#include "geometry/implicit/sweep_piece.h"
 #include "geometry/implicit/unit_piece_lanes.h"
 #include "renderer/core/inline_vector.h"
 #include "renderer/math/double4.h"
@@ -37,11 +38,11 @@
 namespace isotrace {
 
 template <class Kernel>
-class MetaballSweep {
+class MetaballMarch {
 public:
     static constexpr std::size_t kMaxLanes = 32;  // lane sets are bits of an unsigned
 
-    // Whether a group of `elements` with this kernel may be swept here: metaballs only, and a kernel that is one
+    // Whether a group of `elements` with this kernel may be marched here: metaballs only, and a kernel that is one
     // polynomial piece of degree ≤ 3 in r²/R² on the whole support.
     static bool applies(const Kernel& kernel, std::span<const Metacube> elements) {
         const auto pieces = kernel.unit_pieces();
@@ -52,25 +53,19 @@ public:
     }
 
     // centre_bound ≥ the largest |centre| of the spheres.
-    MetaballSweep(const Kernel& kernel, double threshold, std::span<const Metacube> elements,
+    MetaballMarch(const Kernel& kernel, double threshold, std::span<const Metacube> elements,
                   std::span<const BoundingSphere> spheres, double centre_bound)
         : kernel_(kernel), threshold_(threshold), elements_(elements), spheres_(spheres),
           centre_bound_(centre_bound), unit_(kernel.unit_pieces()[0]) {}
 
-    // As FieldSweep::run: sweeps `stretch` over the field of the `listed` elements (every element whose support
-    // may reach the stretch is among them), calling report(crossing, sweep) for each crossing in increasing t
-    // (true: stop) and crossed_before() when the stretch starts inside after t_min (true: stop). Returns false,
+    // As FieldMarch::run: marches `stretch` over the field of the `listed` elements (every element whose support
+    // may reach the stretch is among them), calling query.found(crossing, march) for each crossing in increasing t
+    // (true: stop) and query.crossed_before() when the stretch starts inside after t_min (true: stop). Returns false,
     // having done nothing, when more than kMaxLanes listed elements may come near the stretch. Without
-    // kPlaceNeeded (occlusion) a crossing may be reported at any t of the piece it lies on: F beyond rounding on
+    // Query::kPlaceNeeded (occlusion) a crossing may be reported at any t of the piece it lies on: F beyond rounding on
     // both sides of T at a piece's ends proves one there, with no polynomial composed or solved.
-    template <bool kPlaceNeeded = true, class Report, class CrossedBefore>
-    bool run(std::span<const std::uint32_t> listed, const SweepStretch& stretch, BlobQueryWork& work,
-             Report&& report, CrossedBefore&& crossed_before);
-
-    // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece, in
-    // ascending element order: the sum BlobGroup::gradient makes over the cell's list, hence the same bits (as
-    // FieldSweep::gradient_at).
-    Vec3d gradient_at(const Vec3d& point) const { return gradient<0>(point); }
+    template <class Query>
+    bool run(std::span<const std::uint32_t> listed, const MarchStretch& stretch, BlobQueryWork& work, Query& query);
 
     // F + T at a point, from `listed` (every element whose support may contain the point), four elements at a time:
     // an occlusion query asks it whether its ray started outside. BlobGroup::field sums the same terms one by one, so
@@ -78,14 +73,9 @@ public:
     double field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const;
 
 private:
-    // What a report is given while sweep_pieces<kGroups> runs: the sweep, with its count of groups known.
+    // The lanes as the piece march (piece_march.h) reads them, over kGroups groups of candidates (0: groups_).
     template <std::size_t kGroups>
-    struct PiecesView {
-        const MetaballSweep& sweep;
-        Vec3d gradient_at(const Vec3d& point) const { return sweep.template gradient<kGroups>(point); }
-    };
-    template <std::size_t kGroups>
-    Vec3d gradient(const Vec3d& point) const;
+    class Pieces;
     // The centres, radii and weights of four listed elements (`listed[first…]`, the last one repeated past the end of
     // the list), each read in one load and transposed into lanes in registers, and the lanes that hold a listed one.
     struct ElementLanes {
@@ -95,32 +85,32 @@ private:
     ElementLanes element_lanes(std::span<const std::uint32_t> listed, std::size_t first) const;
 
     static constexpr std::size_t kTermSize = 7;  // a cubic in x composed with the quadratic x(s): degree 6
-    // The loops over groups of four lanes take their count as a template argument, 1 to kUnrolledGroups (nearly nine
-    // queries in ten), so that they unroll and leave no loop exit to mispredict, and 0 for "read it from the query"
-    // (the count varies from query to query, and a query runs some twenty such loops: ×1.04 on blobs_1k).
+    // The loops over groups of four lanes take their count as a template argument, 1 to kUnrolledGroups (most
+    // queries), so that they unroll and leave no loop exit to mispredict, and 0 for "read it from the query" (the
+    // count varies from query to query, and a query runs some twenty such loops).
     static constexpr std::size_t kUnrolledGroups = 4;
     template <std::size_t kGroups>
     std::size_t groups() const { return kGroups != 0 ? kGroups : groups_; }
+    template <std::size_t kNearGroups>
+    std::size_t near_groups() const { return kNearGroups != 0 ? kNearGroups : (near_.size() + 3) / 4; }
 
     // run once the near elements are known, with kNearGroups groups of them (0: as many as there are).
-    template <std::size_t kNearGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-    void sweep_near(const SweepStretch& stretch, BlobQueryWork& work, Report& report, CrossedBefore& crossed_before);
-    // The pieces of the stretch, in order, over kGroups groups of candidates (0: groups_).
-    template <std::size_t kGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-    void sweep_pieces(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
-                      CrossedBefore& crossed_before);
+    template <std::size_t kNearGroups, class Query>
+    void march_near(const MarchStretch& stretch, BlobQueryWork& work, Query& query);
+    // The piece march over kGroups groups of candidates (0: groups_).
+    template <std::size_t kGroups, class Query>
+    void march_lanes(const MarchStretch& stretch, BlobQueryWork& work, Query& query);
 
     // Loads the near elements into the lanes and returns an upper bound of Σ wᵢ·fᵢ on the stretch from each one's
-    // nearest approach (as FieldSweep::gather), without the chords' square roots: nearly half the queries end at
-    // this bound.
+    // nearest approach (as FieldMarch::gather), without the chords' square roots: many queries end at this bound.
     template <std::size_t kNearGroups>
-    double near_bound(const SweepStretch& stretch);
+    double near_bound(const MarchStretch& stretch);
     // Leaves in the lanes, compacted, the candidates (their support's chord meets the stretch) with their chords.
     template <std::size_t kNearGroups>
-    void make_candidates(const SweepStretch& stretch);
+    void make_candidates(const MarchStretch& stretch);
     // The candidates' dist² quadratics about the stretch's start and their 1/R².
     template <std::size_t kGroups>
-    void prepare_pieces(const SweepStretch& stretch);
+    void prepare_pieces(const MarchStretch& stretch);
     // F − T on the piece [s0, s0 + width] as a polynomial in u ∈ [0, 1], summed over the lanes in `counts`, and a bound
     // on the magnitude of every value its composition rounds (for the Bernstein test's rounding).
     struct PiecePolynomial {
@@ -202,7 +192,7 @@ private:
 };
 
 template <class Kernel>
-typename MetaballSweep<Kernel>::ElementLanes MetaballSweep<Kernel>::element_lanes(std::span<const std::uint32_t> listed,
+typename MetaballMarch<Kernel>::ElementLanes MetaballMarch<Kernel>::element_lanes(std::span<const std::uint32_t> listed,
                                                                                   std::size_t first) const {
     const std::size_t n = listed.size();
     const double* e[4];
@@ -220,7 +210,7 @@ typename MetaballSweep<Kernel>::ElementLanes MetaballSweep<Kernel>::element_lane
 }
 
 template <class Kernel>
-double MetaballSweep<Kernel>::field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const {
+double MetaballMarch<Kernel>::field_at(const Vec3d& point, std::span<const std::uint32_t> listed) const {
     InlineVector<std::uint32_t, 64> near;
     append_near(listed, spheres_, PointNearSpheres(point, centre_bound_), near);
     const std::span<const std::uint32_t> ids(near.begin(), near.size());
@@ -235,18 +225,16 @@ double MetaballSweep<Kernel>::field_at(const Vec3d& point, std::span<const std::
 
 template <class Kernel>
 template <std::size_t kNearGroups>
-double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
+double MetaballMarch<Kernel>::near_bound(const MarchStretch& stretch) {
+    inverse_length2_ = 1 / dot(stretch.direction, stretch.direction);
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
-    const std::size_t n = near_.size();
-    const std::size_t near_groups = kNearGroups != 0 ? kNearGroups : (n + 3) / 4;
-    inverse_length2_ = 1 / dot(d, d);
     const double rounding = nearest_approach_rounding(stretch, centre_bound_);
     Double4 upper{};  // Σ wᵢ·max fᵢ on the stretch over elements of positive weight
     kept_lanes_ = 0;
-    for (std::size_t g = 0; g < near_groups; ++g) {
+    for (std::size_t g = 0; g < near_groups<kNearGroups>(); ++g) {
         // Stored for the steps after. The lanes past the list repeat its last element; the exact test leaves them out.
-        const auto [x, y, z, radius, weight, in_list] = element_lanes({near_.begin(), n}, 4 * g);
+        const auto [x, y, z, radius, weight, in_list] = element_lanes({near_.begin(), near_.size()}, 4 * g);
         store4(x_ + 4 * g, x);
         store4(y_ + 4 * g, y);
         store4(z_ + 4 * g, z);
@@ -269,12 +257,12 @@ double MetaballSweep<Kernel>::near_bound(const SweepStretch& stretch) {
 
 template <class Kernel>
 template <std::size_t kNearGroups>
-void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
+void MetaballMarch<Kernel>::make_candidates(const MarchStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     const std::size_t n = near_.size();
     unsigned candidates = 0;
-    for (std::size_t g = 0; g < (kNearGroups != 0 ? kNearGroups : (n + 3) / 4); ++g) {
+    for (std::size_t g = 0; g < near_groups<kNearGroups>(); ++g) {
         // The chord through the support: the centre's projection on the line ± the half chord.
         const Double4 middle = load4(middle_ + 4 * g), radius = load4(radius_ + 4 * g);
         const Double4 lx = (o.x + d.x * middle) - load4(x_ + 4 * g), ly = (o.y + d.y * middle) - load4(y_ + 4 * g),
@@ -324,7 +312,7 @@ void MetaballSweep<Kernel>::make_candidates(const SweepStretch& stretch) {
 
 template <class Kernel>
 template <std::size_t kGroups>
-void MetaballSweep<Kernel>::prepare_pieces(const SweepStretch& stretch) {
+void MetaballMarch<Kernel>::prepare_pieces(const MarchStretch& stretch) {
     const Vec3d& o = stretch.origin;
     const Vec3d& d = stretch.direction;
     // dist² about the stretch's start, as MetacubeRaySlices::metaball_distance_squared writes it.
@@ -342,7 +330,7 @@ void MetaballSweep<Kernel>::prepare_pieces(const SweepStretch& stretch) {
 
 template <class Kernel>
 template <std::size_t kGroups>
-typename MetaballSweep<Kernel>::PiecePolynomial MetaballSweep<Kernel>::piece_polynomial(double s0, double width,
+typename MetaballMarch<Kernel>::PiecePolynomial MetaballMarch<Kernel>::piece_polynomial(double s0, double width,
                                                                                         const Mask4* counts) const {
     // Each counting element's w·Σₖ βₖ·xᵏ with x(u) = dist²(s0 + u·width)/R² = x0 + x1·u + x2·u², by Horner on
     // polynomials: each step multiplies by x(u) (every new coefficient from the old ones, cᵢ ← cᵢ₋₂·x2 + cᵢ₋₁·x1 +
@@ -396,7 +384,7 @@ typename MetaballSweep<Kernel>::PiecePolynomial MetaballSweep<Kernel>::piece_pol
 
 template <class Kernel>
 template <std::size_t kGroups>
-double MetaballSweep<Kernel>::value(double t) const {
+double MetaballMarch<Kernel>::value(double t) const {
     const double s = t - t_ref_;
     Double4 sum{};
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
@@ -408,7 +396,7 @@ double MetaballSweep<Kernel>::value(double t) const {
 
 template <class Kernel>
 template <std::size_t kGroups, class Lanes>
-double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
+double MetaballMarch<Kernel>::absolute_weights(Lanes&& lanes) const {
     Double4 sum{};
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const Double4 weight = load4(weight_ + 4 * g);
@@ -419,7 +407,7 @@ double MetaballSweep<Kernel>::absolute_weights(Lanes&& lanes) const {
 
 template <class Kernel>
 template <std::size_t kGroups>
-double MetaballSweep<Kernel>::chord_upper_bound(double s0, double width, const Mask4* counts) const {
+double MetaballMarch<Kernel>::chord_upper_bound(double s0, double width, const Mask4* counts) const {
     Double4 a{}, b{}, c{};  // the chords' sum as a + b·σ + c·σ², σ = s − s0 ∈ [0, width]
     for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
         const auto [near, far] = distance2_range(g, s0, s0 + width);
@@ -451,46 +439,15 @@ double MetaballSweep<Kernel>::chord_upper_bound(double s0, double width, const M
 }
 
 template <class Kernel>
-template <std::size_t kGroups>
-Vec3d MetaballSweep<Kernel>::gradient(const Vec3d& point) const {
-    Vec3d sum(0, 0, 0);
-    if constexpr (requires(Double4 x) { Kernel::unit_derivative_of(x); }) {
-        // Each element's w·f'(r²)·2(P − C) four lanes at a time, with Metacube::field_gradient's operations in its
-        // order (so its bits), 0 in the lanes that do not count, then summed in ascending element order as
-        // BlobGroup::gradient sums them (adding the zeros changes no bit), with no branch on which lanes count.
-        alignas(32) double gx[kMaxLanes], gy[kMaxLanes], gz[kMaxLanes];
-        for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
-            const Mask4 counts = (Mask4{1, 2, 4, 8} & std::int64_t(counting_[g])) != 0;
-            const Double4 ox = point.x - load4(x_ + 4 * g), oy = point.y - load4(y_ + 4 * g),
-                          oz = point.z - load4(z_ + 4 * g);
-            const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g);
-            const Double4 x = (ox * ox + oy * oy + oz * oz) * inverse_radius2;
-            const Double4 slope =
-                load4(weight_ + 4 * g) * select(x < 1.0, Kernel::unit_derivative_of(x) * inverse_radius2, Double4{});
-            const Double4 twice = select(counts, 2 * slope, Double4{});
-            store4(gx + 4 * g, ox * twice);
-            store4(gy + 4 * g, oy * twice);
-            store4(gz + 4 * g, oz * twice);
-        }
-        for (std::size_t lane = 0; lane < 4 * groups<kGroups>(); ++lane) sum += Vec3d(gx[lane], gy[lane], gz[lane]);
-    } else {
-        for (std::size_t g = 0; g < groups<kGroups>(); ++g)
-            for (unsigned lanes = counting_[g]; lanes != 0; lanes &= lanes - 1)
-                sum += elements_[index_[4 * g + std::size_t(std::countr_zero(lanes))]].field_gradient(kernel_, point);
-    }
-    return sum;
-}
-
-template <class Kernel>
-template <bool kPlaceNeeded, class Report, class CrossedBefore>
-bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const SweepStretch& stretch,
-                                BlobQueryWork& work, Report&& report, CrossedBefore&& crossed_before) {
+template <class Query>
+bool MetaballMarch<Kernel>::run(std::span<const std::uint32_t> listed, const MarchStretch& stretch,
+                                BlobQueryWork& work, Query& query) {
     near_.clear();
     append_near(listed, spheres_, near_stretch_test(stretch, centre_bound_), near_);
     if (near_.size() > kMaxLanes) return false;
     ++work.queries;
     const auto with_near_groups = [&]<std::size_t kNearGroups>() {
-        sweep_near<kNearGroups, kPlaceNeeded>(stretch, work, report, crossed_before);
+        march_near<kNearGroups>(stretch, work, query);
     };
     static_assert(kUnrolledGroups == 4, "one case per unrolled count");
     switch ((near_.size() + 3) / 4) {
@@ -504,9 +461,8 @@ bool MetaballSweep<Kernel>::run(std::span<const std::uint32_t> listed, const Swe
 }
 
 template <class Kernel>
-template <std::size_t kNearGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-void MetaballSweep<Kernel>::sweep_near(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
-                                       CrossedBefore& crossed_before) {
+template <std::size_t kNearGroups, class Query>
+void MetaballMarch<Kernel>::march_near(const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
     if (stretch_below_threshold(near_bound<kNearGroups>(stretch), threshold_)) {
         ++work.queries_bounded;
         work.candidates += std::uint64_t(std::popcount(kept_lanes_));
@@ -516,151 +472,208 @@ void MetaballSweep<Kernel>::sweep_near(const SweepStretch& stretch, BlobQueryWor
     work.candidates += count_;
     // Nearly every near element is a candidate: the count of groups stays.
     if (kNearGroups != 0 && groups_ == kNearGroups)
-        sweep_pieces<kNearGroups, kPlaceNeeded>(stretch, work, report, crossed_before);
+        march_lanes<kNearGroups>(stretch, work, query);
     else
-        sweep_pieces<0, kPlaceNeeded>(stretch, work, report, crossed_before);
+        march_lanes<0>(stretch, work, query);
 }
 
 template <class Kernel>
-template <std::size_t kGroups, bool kPlaceNeeded, class Report, class CrossedBefore>
-void MetaballSweep<Kernel>::sweep_pieces(const SweepStretch& stretch, BlobQueryWork& work, Report& report,
-                                         CrossedBefore& crossed_before) {
-    using sweep_piece::sign_of;
+template <std::size_t kGroups, class Query>
+void MetaballMarch<Kernel>::march_lanes(const MarchStretch& stretch, BlobQueryWork& work, Query& query) {
     prepare_pieces<kGroups>(stretch);
-    unsigned entered = 0;  // lanes that counted on some piece, for the statistics
-    double t0 = stretch.t_begin;
-    const auto witness = [&] {  // an element whose support contains the piece: the last counting one
-        for (std::size_t g = groups<kGroups>(); g-- > 0;)
-            if (counting_[g] != 0)
-                return index_[4 * g + std::size_t(31 - std::countl_zero(counting_[g]))];
-        return std::uint32_t(0);
-    };
-    const auto crossing = [&](double t, int before) {
-        if (!(t > stretch.t_min && t < stretch.t_max)) return false;
-        ++work.roots;
-        return report(FieldCrossing{t, before < 0, witness()}, PiecesView<kGroups>{*this});
-    };
-    // Beyond the rounding of F at any point of the stretch: a few ulps of every candidate's term (inert lanes weigh 0).
-    const auto rounding = [&] {
-        return 1e-9 * (threshold_ + absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
-    };
-    // The elements counting on the piece from t0, and F's sign before it; returns when the sweep must stop.
-    const auto sweep = [&] {
-        for (std::size_t g = 0; g < groups<kGroups>(); ++g) counting_[g] = mask_bits(counting(g, t0));
-        const double at_start = value<kGroups>(t0);
-        int previous_sign = sign_of(at_start);
-        if (previous_sign > 0 && t0 > stretch.t_min &&
-            sweep_piece::inside_beyond_rounding(
-                at_start, threshold_, absolute_weights<kGroups>([&](std::size_t g) { return counting(g, t0); })) &&
-            crossed_before())
-            return;
-        if constexpr (!kPlaceNeeded) {
+    Pieces<kGroups> pieces(*this);
+    PieceMarch(pieces, stretch, work, query).run();
+    work.joined += std::uint64_t(std::popcount(pieces.entered()));
+}
+
+// The piece march's Elements (piece_march.h): the pieces run between consecutive entries and exits of the lanes,
+// the elements counting on a piece are a mask, and every bound and sum is a masked sum over whole lanes.
+template <class Kernel>
+template <std::size_t kGroups>
+class MetaballMarch<Kernel>::Pieces {
+public:
+    static constexpr bool kAllPolynomial = true;  // no piece needs search_piece
+
+    explicit Pieces(MetaballMarch& lanes) : m_(lanes) {}
+
+    double threshold() const { return m_.threshold_; }
+    unsigned entered() const { return entered_; }  // the lanes that counted on some piece
+
+    double start(double t0) {
+        for (std::size_t g = 0; g < groups(); ++g) m_.counting_[g] = mask_bits(m_.counting(g, t0));
+        return m_.template value<kGroups>(t0);
+    }
+    double counting_weights(double t0) const {
+        return m_.template absolute_weights<kGroups>([&](std::size_t g) { return m_.counting(g, t0); });
+    }
+
+    // Before any piece, for a stretch that starts outside: two proofs over the whole stretch.
+    template <class March>
+    bool settles_stretch(double t0, double at_start, int previous_sign, March& march) const {
+        const MarchStretch& stretch = march.stretch();
+        if constexpr (!March::kPlaceNeeded) {
             // Outside at the start and inside at the end, both beyond rounding: a crossing lies between, and no piece
-            // need be examined. Tight cell boxes start many a shadow ray's stretch just outside a blob it then enters
-            // (blobs_10k: 17,489 of 64,972 swept occlusion queries end here, pieces 148,471 → 66,455).
+            // need be examined. Tight cell boxes start many a shadow ray's stretch just outside a blob it then enters.
             const double margin = rounding();
-            if (at_start < -margin && value<kGroups>(stretch.t_end) > margin &&
-                crossing(0.5 * (t0 + stretch.t_end), previous_sign))
-                return;
+            if (at_start < -margin && m_.template value<kGroups>(stretch.t_end) > margin &&
+                march.crossing(0.5 * (t0 + stretch.t_end), previous_sign))
+                return true;
         }
-        // A stretch from the ray's start (a ray leaving the surface), or any stretch of an occlusion query, that starts
-        // outside: first the chords' bound over the whole stretch, every candidate counting. On blobs_1k it settles
-        // 61 % of the first kind (bounce rays' sweeps of 4–5 pieces each, none holding a crossing) and 46 % of the
-        // second; elsewhere nearly every stretch it is asked of holds a crossing.
-        if (previous_sign < 0 && (!kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(unit_)) {
+        // A stretch from the ray's start (a ray leaving the surface), or any stretch of an occlusion query, that
+        // starts outside: the chords' bound over the whole stretch, every candidate counting, often settles it where
+        // the ranges cannot (the start of a ray leaving the surface is within a hair of T); elsewhere nearly every
+        // stretch it would be asked of holds a crossing.
+        if (previous_sign < 0 && (!March::kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(m_.unit_)) {
             Mask4 every[kMaxLanes / 4];
-            for (std::size_t g = 0; g < groups<kGroups>(); ++g) every[g] = ~Mask4{};  // inert lanes weigh 0
-            if (threshold_ - chord_upper_bound<kGroups>(t0 - t_ref_, stretch.t_end - t0, every) > rounding()) return;
+            for (std::size_t g = 0; g < groups(); ++g) every[g] = ~Mask4{};  // inert lanes weigh 0
+            return m_.threshold_ - m_.template chord_upper_bound<kGroups>(t0 - m_.t_ref_, stretch.t_end - t0, every) >
+                   rounding();
         }
-        Polynomial on_piece;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds do not settle
-        while (t0 < stretch.t_end) {
-            // The piece [t0, t1] ends at the next entry or exit.
-            double t1 = stretch.t_end;
-            const double s0 = t0 - t_ref_;
-            Double4 next = Double4{} + std::numeric_limits<double>::infinity();
-            Mask4 counts[kMaxLanes / 4];
-            for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
-                const Double4 t_enter = load4(t_enter_ + 4 * g), t_exit = load4(t_exit_ + 4 * g);
-                const Double4 event = select(t_enter > t0, t_enter, t_exit);
-                next = min4(next, select(event > t0, event, next));
-                counts[g] = counting(g, t0);
-                counting_[g] = mask_bits(counts[g]);
-                entered |= counting_[g] << (4 * g);
+        return false;
+    }
+
+    // The next entry or exit after t0 (a minimum over the lanes, no sort); the lanes counting from t0 become current.
+    double next_event(double t0, double t_end) {
+        Double4 next = Double4{} + std::numeric_limits<double>::infinity();
+        for (std::size_t g = 0; g < groups(); ++g) {
+            const Double4 t_enter = load4(m_.t_enter_ + 4 * g), t_exit = load4(m_.t_exit_ + 4 * g);
+            const Double4 event = select(t_enter > t0, t_enter, t_exit);
+            next = min4(next, select(event > t0, event, next));
+            counts_[g] = m_.counting(g, t0);
+            m_.counting_[g] = mask_bits(counts_[g]);
+            entered_ |= m_.counting_[g] << (4 * g);
+        }
+        return std::min(t_end, lane_min(next));
+    }
+
+    template <class March>
+    PieceBound bound_piece(double t0, double t1, int previous_sign, March& march) const {
+        PieceBound bound;
+        const auto [low, high] = ranges(t0 - m_.t_ref_, t1 - m_.t_ref_, previous_sign);
+        if (previous_sign < 0) {
+            bound.settled = march_piece::below_threshold(high, m_.threshold_);
+        } else {
+            bound.settled = march_piece::one_side_of_threshold(low, high, m_.threshold_);
+            bound.start_sign = march_piece::sign_of(low - m_.threshold_);
+        }
+        if constexpr (!March::kPlaceNeeded) {
+            // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside, proven
+            // without composing, testing or solving the piece.
+            if (!bound.settled) {
+                const double margin = rounding();
+                const double at_start = m_.template value<kGroups>(t0), at_end = m_.template value<kGroups>(t1);
+                if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
+                    march.crossing(0.5 * (t0 + t1), march_piece::sign_of(at_start)))
+                    return {true, false, -1};
             }
-            t1 = std::min(t1, lane_min(next));
-            ++work.pieces;
-            const double s1 = t1 - t_ref_, width = t1 - t0;
-            // First each element's own range: f is monotone in r², so its extremes on the piece are at the ends of
-            // the element's r² range. Coming from outside, F is continuous, so it cannot be above T on the whole
-            // piece: only its upper bound is needed.
-            Double4 low{}, high{};
-            for (std::size_t g = 0; g < groups<kGroups>(); ++g) {
-                const Mask4 mask = counts[g];
-                const auto [near, far] = distance2_range(g, s0, s1);
-                const Double4 inverse_radius2 = load4(inverse_radius2_ + 4 * g), weight = load4(weight_ + 4 * g);
-                if (previous_sign < 0) {
-                    const Double4 x = select(weight > 0.0, near, far) * inverse_radius2;
-                    high += select(mask, weight * unit_value(x, BoundMulAdd{}), Double4{});
-                } else {
-                    const Double4 w_near = weight * unit_value(near * inverse_radius2, BoundMulAdd{}),
-                                  w_far = weight * unit_value(far * inverse_radius2, BoundMulAdd{});
-                    low += select(mask, min4(w_near, w_far), Double4{});
-                    high += select(mask, max4(w_near, w_far), Double4{});
-                }
-            }
-            const double range_low = lane_sum(low), range_high = lane_sum(high);
-            int start_sign = -1;
-            bool settled;
+        }
+        // A piece from the ray's start (a ray leaving the surface), or any piece of an occlusion query, that the
+        // ranges leave open: the chords' bound before the polynomial, as over the whole stretch.
+        const bool leaving = previous_sign < 0 && (!March::kPlaceNeeded || t0 == march.stretch().t_min);
+        if (!bound.settled && leaving && convex_and_falling(m_.unit_)) {
+            const double upper = m_.template chord_upper_bound<kGroups>(t0 - m_.t_ref_, t1 - t0, counts_);
+            // Beyond its rounding: a few ulps of the terms, which Σ |wᵢ| of the counting elements bounds.
+            bound.settled = m_.threshold_ - upper >
+                            1e-9 * (m_.threshold_ +
+                                    m_.template absolute_weights<kGroups>([&](std::size_t g) { return counts_[g]; }));
+        }
+        return bound;
+    }
+
+    // The counting terms composed directly in the piece's own u ∈ [0, 1] (MetaballMarch::piece_polynomial).
+    PieceTest test_piece(double t0, double t1) {
+        const PiecePolynomial piece = m_.template piece_polynomial<kGroups>(t0 - m_.t_ref_, t1 - t0, counts_);
+        int terms = 1;
+        for (std::size_t g = 0; g < groups(); ++g) terms += std::popcount(m_.counting_[g]);
+        on_piece_ = Polynomial(std::span<const double>(piece.coefficients.data(), kTermSize));
+        PieceTest test;
+        test.signs = march_piece::bernstein_signs_on_piece(on_piece_, terms, piece.magnitude);
+        test.start_sign = march_piece::sign_of(on_piece_[0]);
+        test.open = test.signs.variations != 0;
+        test.polynomial = &on_piece_;
+        return test;
+    }
+
+    // Every lane's next event is found afresh on each piece, and no element steps at the stretch's end.
+    void advance(double) {}
+    template <class March>
+    void at_end(double, int, March&) {}
+
+    // An element whose support contains the piece: the last counting one.
+    std::uint32_t witness() const {
+        for (std::size_t g = groups(); g-- > 0;)
+            if (m_.counting_[g] != 0) return m_.index_[4 * g + std::size_t(31 - std::countl_zero(m_.counting_[g]))];
+        return 0;
+    }
+
+    // ∇(F + T) at a point of the crossing just reported, summed over the elements that count on its piece, in
+    // ascending element order: the sum BlobGroup::gradient makes over the cell's list, hence the same bits.
+    Vec3d gradient_at(const Vec3d& point) const;
+
+private:
+    std::size_t groups() const { return m_.template groups<kGroups>(); }
+    // Beyond the rounding of F at any point of the stretch: a few ulps of every candidate's term (inert lanes weigh 0).
+    double rounding() const {
+        return 1e-9 * (m_.threshold_ + m_.template absolute_weights<kGroups>([](std::size_t) { return ~Mask4{}; }));
+    }
+    // Bounds of Σ wᵢ·fᵢ on [s0, s1] from each counting element's own range: f is monotone in r², so its extremes on
+    // the piece are at the ends of the element's r² range. Coming from outside (F is continuous), F cannot be above T
+    // on the whole piece: only the upper bound is formed.
+    std::pair<double, double> ranges(double s0, double s1, int previous_sign) const {
+        Double4 low{}, high{};
+        for (std::size_t g = 0; g < groups(); ++g) {
+            const Mask4 mask = counts_[g];
+            const auto [near, far] = m_.distance2_range(g, s0, s1);
+            const Double4 inverse_radius2 = load4(m_.inverse_radius2_ + 4 * g), weight = load4(m_.weight_ + 4 * g);
             if (previous_sign < 0) {
-                settled = sweep_piece::below_threshold(range_high, threshold_);
+                const Double4 x = select(weight > 0.0, near, far) * inverse_radius2;
+                high += select(mask, weight * m_.unit_value(x, BoundMulAdd{}), Double4{});
             } else {
-                settled = sweep_piece::one_side_of_threshold(range_low, range_high, threshold_);
-                start_sign = sign_of(range_low - threshold_);
+                const Double4 w_near = weight * m_.unit_value(near * inverse_radius2, BoundMulAdd{}),
+                              w_far = weight * m_.unit_value(far * inverse_radius2, BoundMulAdd{});
+                low += select(mask, min4(w_near, w_far), Double4{});
+                high += select(mask, max4(w_near, w_far), Double4{});
             }
-            if constexpr (!kPlaceNeeded) {
-                if (!settled) {
-                    // F beyond rounding on both sides of T at the piece's ends: an odd number of crossings inside.
-                    // (Composing, testing and solving the piece was a third of a shadow ray's swept query.)
-                    const double margin = rounding();
-                    const double at_start = value<kGroups>(t0), at_end = value<kGroups>(t1);
-                    if (std::abs(at_start) > margin && std::abs(at_end) > margin && (at_start < 0) != (at_end < 0) &&
-                        crossing(0.5 * (t0 + t1), sign_of(at_start)))
-                        return;
-                }
-            }
-            // A piece from the ray's start (a ray leaving the surface), or any piece of an occlusion query, that the
-            // ranges leave open: the chords' bound before the polynomial. It settles 86–92 % of them on blobs_1k (the
-            // start of a ray leaving the surface is within a hair of T); elsewhere nearly every piece left open holds
-            // a crossing.
-            if (!settled && previous_sign < 0 && (!kPlaceNeeded || t0 == stretch.t_min) && convex_and_falling(unit_)) {
-                const double upper = chord_upper_bound<kGroups>(s0, width, counts);
-                // Beyond its rounding: a few ulps of the terms, which Σ |wᵢ| of the counting elements bounds.
-                settled = threshold_ - upper >
-                          1e-9 * (threshold_ + absolute_weights<kGroups>([&](std::size_t g) { return counts[g]; }));
-            }
-            BernsteinSigns signs;
-            if (!settled) {
-                const PiecePolynomial piece = piece_polynomial<kGroups>(s0, width, counts);
-                int terms = 1;
-                for (std::size_t g = 0; g < groups<kGroups>(); ++g) terms += std::popcount(counting_[g]);
-                on_piece = Polynomial(std::span<const double>(piece.coefficients.data(), kTermSize));
-                signs = sweep_piece::bernstein_signs_on_piece(on_piece, terms, piece.magnitude);
-                start_sign = sign_of(on_piece[0]);
-            }
-            if (signs.variations == 0) {
-                ++work.skipped_pieces;
-                // A root on the boundary with the previous piece, which that piece ended on within rounding.
-                if (start_sign != previous_sign && crossing(t0, previous_sign)) return;
-                previous_sign = start_sign;
-            } else if (sweep_piece::polynomial_piece_crossings(on_piece, signs, t0, width, previous_sign, work,
-                                                               crossing)) {
-                return;
-            }
-            t0 = t1;
         }
-    };
-    sweep();
-    work.joined += std::uint64_t(std::popcount(entered));
+        return {lane_sum(low), lane_sum(high)};
+    }
+
+    MetaballMarch& m_;
+    Mask4 counts_[kMaxLanes / 4];  // per group, the lanes counting on the current piece
+    unsigned entered_ = 0;
+    Polynomial on_piece_;  // F on the current piece in u ∈ [0, 1], for the pieces the bounds leave open
+};
+
+template <class Kernel>
+template <std::size_t kGroups>
+Vec3d MetaballMarch<Kernel>::Pieces<kGroups>::gradient_at(const Vec3d& point) const {
+    Vec3d sum(0, 0, 0);
+    if constexpr (requires(Double4 x) { Kernel::unit_derivative_of(x); }) {
+        // Each element's w·f'(r²)·2(P − C) four lanes at a time, with Metacube::field_gradient's operations in its
+        // order (so its bits), 0 in the lanes that do not count, then summed in ascending element order as
+        // BlobGroup::gradient sums them (adding the zeros changes no bit), with no branch on which lanes count.
+        alignas(32) double gx[kMaxLanes], gy[kMaxLanes], gz[kMaxLanes];
+        for (std::size_t g = 0; g < groups(); ++g) {
+            const Mask4 counts = (Mask4{1, 2, 4, 8} & std::int64_t(m_.counting_[g])) != 0;
+            const Double4 ox = point.x - load4(m_.x_ + 4 * g), oy = point.y - load4(m_.y_ + 4 * g),
+                          oz = point.z - load4(m_.z_ + 4 * g);
+            const Double4 inverse_radius2 = load4(m_.inverse_radius2_ + 4 * g);
+            const Double4 x = (ox * ox + oy * oy + oz * oz) * inverse_radius2;
+            const Double4 slope = load4(m_.weight_ + 4 * g) *
+                                  select(x < 1.0, Kernel::unit_derivative_of(x) * inverse_radius2, Double4{});
+            const Double4 twice = select(counts, 2 * slope, Double4{});
+            store4(gx + 4 * g, ox * twice);
+            store4(gy + 4 * g, oy * twice);
+            store4(gz + 4 * g, oz * twice);
+        }
+        for (std::size_t lane = 0; lane < 4 * groups(); ++lane) sum += Vec3d(gx[lane], gy[lane], gz[lane]);
+    } else {
+        for (std::size_t g = 0; g < groups(); ++g)
+            for (unsigned lanes = m_.counting_[g]; lanes != 0; lanes &= lanes - 1)
+                sum += m_.elements_[m_.index_[4 * g + std::size_t(std::countr_zero(lanes))]].field_gradient(m_.kernel_,
+                                                                                                             point);
+    }
+    return sum;
 }
 
 }  // namespace isotrace

@@ -1,6 +1,6 @@
 #pragma once
-// What every blob sweep shares (the general one, field_sweep.h, and the one for metaballs of a single polynomial
-// kernel piece, metaball_sweep.h): the stretch swept, the crossings it reports, its statistics, and the work on one
+// What every blob march shares (the general one, field_march.h, and the one for metaballs of a single polynomial
+// kernel piece, metaball_march.h): the stretch marched, the crossings it reports, its statistics, and the work on one
 // piece on which F is a polynomial — its Bernstein test and, when that cannot rule a crossing out, its sign
 // changes in order. F > 0 is inside; F = 0 exactly counts as outside; a tangent touch (a double root) is no crossing.
 #include <algorithm>
@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "geometry/implicit/blob_query_work.h"
+#include "geometry/implicit/field_crossing.h"
 #include "geometry/implicit/sphere_prefilter.h"
 #include "geometry/polynomial/bernstein.h"
 #include "geometry/polynomial/bracketed_root.h"
@@ -18,50 +20,15 @@
 
 namespace isotrace {
 
-// Work done by ray queries, for the statistics.
-struct BlobQueryWork {
-    std::uint64_t queries = 0;            // cells swept
-    std::uint64_t queries_bounded = 0;    // of which the candidates' bound proved free of crossings at once
-    std::uint64_t candidates = 0;         // listed elements whose bounding sphere the swept stretch meets
-    std::uint64_t joined = 0;             // of which the sweep reached (sliced and summed)
-    std::uint64_t pieces = 0;             // ray pieces examined
-    std::uint64_t skipped_pieces = 0;     // of which the Bernstein or interval bound proved free of crossings
-    std::uint64_t polynomial_solves = 0;
-    std::uint64_t lipschitz_searches = 0;
-    std::uint64_t root_iterations = 0;  // Newton/bisection steps of the polynomial solves and Lipschitz searches
-    std::uint64_t roots = 0;            // crossings reported (for occlusion, also those proven before a stretch)
-
-    BlobQueryWork& operator+=(const BlobQueryWork& other) {
-        queries += other.queries;
-        queries_bounded += other.queries_bounded;
-        candidates += other.candidates;
-        joined += other.joined;
-        pieces += other.pieces;
-        skipped_pieces += other.skipped_pieces;
-        polynomial_solves += other.polynomial_solves;
-        lipschitz_searches += other.lipschitz_searches;
-        root_iterations += other.root_iterations;
-        roots += other.roots;
-        return *this;
-    }
-};
-
-// A sign change of F: entering the surface (F becomes > 0) or leaving it.
-struct FieldCrossing {
-    double t = 0;
-    bool entering = false;
-    std::uint32_t element = 0;  // an element whose support contains the crossing
-};
-
-// The stretch of a ray one sweep examines.
-struct SweepStretch {
+// The stretch of a ray one march examines.
+struct MarchStretch {
     Vec3d origin, direction;  // direction need not be unit length
-    double t_begin = 0, t_end = 0;  // the part swept (a cell's part of the ray)
+    double t_begin = 0, t_end = 0;  // the part marched (a cell's part of the ray)
     double t_min = 0, t_max = 0;    // crossings are reported only inside (t_min, t_max)
 };
 
 // The float test of the listed elements' bounding spheres against the stretch (sphere_prefilter.h).
-inline SegmentNearSpheres near_stretch_test(const SweepStretch& stretch, double centre_bound) {
+inline SegmentNearSpheres near_stretch_test(const MarchStretch& stretch, double centre_bound) {
     const double length_d = length(stretch.direction);
     return SegmentNearSpheres(stretch.origin + stretch.direction * (0.5 * (stretch.t_begin + stretch.t_end)),
                               stretch.direction / length_d, 0.5 * (stretch.t_end - stretch.t_begin) * length_d,
@@ -71,7 +38,7 @@ inline SegmentNearSpheres near_stretch_test(const SweepStretch& stretch, double 
 // Far above the rounding of a nearest point of the stretch (a few ulps of the coordinates' magnitudes; the centres
 // are at most centre_bound from the origin): the margin of the exact test that keeps an element near the stretch.
 // An element kept because of it that misses the stretch is dropped by its exact chord.
-inline double nearest_approach_rounding(const SweepStretch& stretch, double centre_bound) {
+inline double nearest_approach_rounding(const MarchStretch& stretch, double centre_bound) {
     return 1e-12 * (max_component(abs(stretch.origin)) +
                     length(stretch.direction) * std::max(std::abs(stretch.t_begin), std::abs(stretch.t_end)) +
                     centre_bound);
@@ -81,7 +48,11 @@ inline double nearest_approach_rounding(const SweepStretch& stretch, double cent
 // margin dwarfs the rounding of the nearest approaches).
 inline bool stretch_below_threshold(double upper, double threshold) { return upper * (1 + 1e-9) < threshold; }
 
-namespace sweep_piece {
+// Two ray parameters this close are one place: a crossing that two cells find on their shared face, or a hard-cube
+// face found in the cube's frame against a stretch start found in world coordinates.
+inline double same_place_tolerance(double t) { return 1e-12 * (1 + std::abs(t)); }
+
+namespace march_piece {
 
 inline int sign_of(double value) { return value > 0 ? 1 : -1; }
 
@@ -113,7 +84,7 @@ inline double magnitude_at(const std::array<double, kMaxPolynomialDegree + 1>& c
 // coefficients' magnitudes add up to `magnitude`): writes F on the piece in u ∈ [0, 1] to `on_piece` and returns the
 // signs of its control polygon (bernstein_signs; 0 variations: no crossing), allowing for the rounding of the terms'
 // sum and of the shift to the piece (2·degree + 2 operations per coefficient). `on_piece` is the caller's, declared
-// once per sweep: declared per piece, even as an optional, its 104 bytes were cleared (a rep stos) on every piece.
+// once per march: declared per piece, even as an optional, its 104 bytes were cleared (a rep stos) on every piece.
 inline BernsteinSigns bernstein_variations(const Polynomial& sum,
                                            const std::array<double, kMaxPolynomialDegree + 1>& magnitude, int terms,
                                            double s0, double width, Polynomial& on_piece) {
@@ -123,7 +94,7 @@ inline BernsteinSigns bernstein_variations(const Polynomial& sum,
     return bernstein_signs(on_piece, rounding);
 }
 
-// The Bernstein test of F on a piece composed directly in u ∈ [0, 1] from `terms` terms (MetaballSweep): every value
+// The Bernstein test of F on a piece composed directly in u ∈ [0, 1] from `terms` terms (MetaballMarch): every value
 // its composition rounds is at most `magnitude` (Σ over the terms, and T), and each coefficient went through at most
 // 20 roundings (the quadratic x(u), three Horner steps of three products and two sums, the weight, the sum of terms).
 inline BernsteinSigns bernstein_signs_on_piece(const Polynomial& on_piece, int terms, double magnitude) {
@@ -131,10 +102,10 @@ inline BernsteinSigns bernstein_signs_on_piece(const Polynomial& on_piece, int t
 }
 
 // Reports the sign changes of F = on_piece(u) on the piece [t0, t0 + width] (u = (t − t0)/width) in increasing t,
-// through crossing(t, sign before), which returns true to stop the sweep; `signs` is the piece's Bernstein test
+// through crossing(t, sign before), which returns true to stop the march; `signs` is the piece's Bernstein test
 // (bernstein_variations or bernstein_signs_on_piece; not 0 variations), whose polygon crossing starts the search for a
 // lone root. previous_sign is F's sign just before the piece, and F's sign at its end on return. Returns true
-// when the sweep must stop.
+// when the march must stop.
 template <class Crossing>
 bool polynomial_piece_crossings(const Polynomial& on_piece, const BernsteinSigns& signs, double t0, double width,
                                 int& previous_sign, BlobQueryWork& work, Crossing&& crossing) {
@@ -150,8 +121,8 @@ bool polynomial_piece_crossings(const Polynomial& on_piece, const BernsteinSigns
     const double at_start = on_piece[0], at_end = on_piece.evaluate(1);
     const bool bracketed = signs.variations == 1 && sign_of(at_start) != sign_of(at_end);
     if (bracketed) {
-        // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points to find first
-        // (a third of the cost of a hit, measured).
+        // Exactly one root, a simple one, and the piece brackets it (bernstein.h): no critical points to find first,
+        // which would cost more than the refinement itself.
         const double root =
             refine_bracketed_root(on_piece, 0, 1, at_start, at_end, {}, &root_work, signs.polygon_crossing);
         const int after = sign_of(at_end);
@@ -185,5 +156,5 @@ bool polynomial_piece_crossings(const Polynomial& on_piece, const BernsteinSigns
     return false;
 }
 
-}  // namespace sweep_piece
+}  // namespace march_piece
 }  // namespace isotrace
