@@ -284,9 +284,8 @@ int run_diff(const DiffArguments& args, bool error_map_metric_given) {
 
 }  // namespace
 
-CommandRunner add_diff_command(CLI::App& app) {
+CommandRunner add_diff_options(CLI::App* command) {
     auto args = std::make_shared<DiffArguments>();
-    CLI::App* command = app.add_subcommand("diff", "Compare an image with a reference, or z-test a render");
     command->footer("Metrics: RMSE, relative MSE, PSNR, SSIM and FLIP of test image B against reference A; --ztest: "
                     "a statistical test of a low-budget render against a reference's mean and variance. Exit codes: "
                     "0 every threshold holds (the z-test passes), 3 a threshold or the z-test fails, 2 bad input.");

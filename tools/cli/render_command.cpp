@@ -451,9 +451,8 @@ int run_render(const RenderArguments& args) {
 
 }  // namespace
 
-CommandRunner add_render_command(CLI::App& app) {
+CommandRunner add_render_options(CLI::App* command) {
     auto args = std::make_shared<RenderArguments>();
-    CLI::App* command = app.add_subcommand("render", "Render a scene to image files");
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
     command->add_option("-o,--output", args->outputs,
                         "Output image; repeat for several. .exr: scene-linear with AOVs and metadata; "
