@@ -11,7 +11,7 @@
 
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/polynomial_test_support.h"
-#include "geometry/polynomial/sturm_sequence.h"
+#include "tests/support/sturm_sequence.h"
 
 namespace isotrace {
 namespace {
