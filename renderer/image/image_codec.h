@@ -91,7 +91,8 @@ using ImageCodecEntry = const ImageCodec* (*)(const char* isotrace_version);
 inline constexpr const char* kImageCodecEntry = "isotrace_image_codec";
 
 // The EXR writer module (libisotrace_exr.so, OpenEXR alone) exports this one: every .exr file is encoded there, so
-// that writing EXR does not load OpenImageIO (whose dynamic linking costs ~1 G instructions, docs/decisions.md).
+// that writing EXR does not load OpenImageIO, whose many libraries take a render's worth of CPU time to link
+// (docs/decisions.md, "Image I/O in a module loaded with dlopen").
 using ImageEncoderEntry = const ImageEncoder* (*)(const char* isotrace_version);
 inline constexpr const char* kImageEncoderEntry = "isotrace_image_encoder";
 
