@@ -93,9 +93,7 @@ Comparison compare(const RgbImage& reference, const RgbImage& test, bool display
     const float brightest = *std::max_element(y_reference.begin(), y_reference.end());
     c.ssim_range = display_referred || !(brightest > 0) ? 1.0 : double(brightest);
     c.ssim_map = ssim_map(y_reference, y_test, reference.width, reference.height, c.ssim_range);
-    double ssim_sum = 0;
-    for (float v : c.ssim_map) ssim_sum += v;
-    c.values["ssim"] = ssim_sum / double(c.ssim_map.size());
+    c.values["ssim"] = mean_ssim(c.ssim_map);
     if (display_referred) {
         c.flip_map = ldr_flip(reference, test, ppd);
     } else {
