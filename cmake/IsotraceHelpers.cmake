@@ -49,10 +49,11 @@ function(isotrace_avx2_module target source)
   target_compile_definitions(${target} PRIVATE ${ARGN})
 endfunction()
 
-# A Google Benchmark executable `name` from `source`, built on request (EXCLUDE_FROM_ALL) and not run by ctest:
+# A Google Benchmark executable `name` from `source` (and any further sources in ARGN, such as a test oracle it
+# times), built on request (EXCLUDE_FROM_ALL) and not run by ctest:
 # cmake --build <dir> --target <name> && <dir>/bin/<name>
 function(isotrace_benchmark name source)
   find_package(benchmark REQUIRED)
-  add_executable(${name} EXCLUDE_FROM_ALL ${source})
+  add_executable(${name} EXCLUDE_FROM_ALL ${source} ${ARGN})
   target_link_libraries(${name} PRIVATE isotrace benchmark::benchmark)
 endfunction()

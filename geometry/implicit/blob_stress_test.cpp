@@ -15,7 +15,7 @@
 
 #include "geometry/implicit/implicit_test_support.h"
 #include "geometry/implicit/metacube_ray_slices.h"
-#include "geometry/polynomial/sturm_sequence.h"
+#include "tests/support/sturm_sequence.h"
 
 namespace isotrace {
 namespace {

@@ -48,7 +48,7 @@ TEST(PolynomialBernstein, ThePolygonCrossingStartsNewtonNearTheRoot) {
         std::vector<double> roots{root};
         const int degree = 2 + trial % 5;
         for (int k = 1; k < degree; ++k) roots.push_back(k % 2 ? outside(random) : -outside(random) + 1);
-        const Polynomial p = Polynomial::from_roots(roots, trial % 3 ? 1.0 : -2.5);
+        const Polynomial p = polynomial_from_roots(roots, trial % 3 ? 1.0 : -2.5);
         const BernsteinSigns signs = bernstein_signs(p);
         if (signs.variations != 1) continue;
         ++pieces;
@@ -68,14 +68,14 @@ bool may_have_root(const Polynomial& p) { return bernstein_signs(p).variations !
 TEST(PolynomialBernstein, SkipsOnlyWhenEveryCoefficientHasTheSameStrictSign) {
     EXPECT_FALSE(may_have_root(Polynomial{1, -1, 1}));  // 1 − u + u² > 0
     EXPECT_FALSE(may_have_root(-1e30 * Polynomial{1, -1, 1}));
-    EXPECT_FALSE(may_have_root(1e-30 * Polynomial::from_roots(std::vector<double>{-0.5, 1.5, 2})));
-    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0.5})));
-    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0.5, 0.5})));  // tangent
-    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0, 3})));  // root at 0
-    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{-2, 1})));  // root at 1
+    EXPECT_FALSE(may_have_root(1e-30 * polynomial_from_roots(std::vector<double>{-0.5, 1.5, 2})));
+    EXPECT_TRUE(may_have_root(polynomial_from_roots(std::vector<double>{0.5})));
+    EXPECT_TRUE(may_have_root(polynomial_from_roots(std::vector<double>{0.5, 0.5})));  // tangent
+    EXPECT_TRUE(may_have_root(polynomial_from_roots(std::vector<double>{0, 3})));  // root at 0
+    EXPECT_TRUE(may_have_root(polynomial_from_roots(std::vector<double>{-2, 1})));  // root at 1
     EXPECT_TRUE(may_have_root(Polynomial{}));
     // Conservative: no root in [0,1] but the control polygon crosses zero.
-    EXPECT_TRUE(may_have_root(Polynomial::from_roots(std::vector<double>{0.5, 0.5}) + Polynomial{0.01}));
+    EXPECT_TRUE(may_have_root(polynomial_from_roots(std::vector<double>{0.5, 0.5}) + Polynomial{0.01}));
 }
 
 // Property: over many random polynomials, every one with a root in [0,1] (known by construction, including roots
@@ -99,7 +99,7 @@ TEST(PolynomialBernstein, NeverSkipsAnIntervalContainingARoot) {
         case 2: {  // a double root
             if (degree + 2 > kMaxPolynomialDegree) break;
             const double root = uniform(random);
-            r.polynomial = r.polynomial * Polynomial::from_roots(std::vector<double>{root, root});
+            r.polynomial = r.polynomial * polynomial_from_roots(std::vector<double>{root, root});
             r.real_roots.push_back(root);
             break;
         }
@@ -123,10 +123,10 @@ TEST(PolynomialBernstein, NeverSkipsAnIntervalContainingARoot) {
 
 TEST(PolynomialBernstein, CountsTheControlPolygonsSignVariations) {
     EXPECT_EQ(bernstein_signs(Polynomial{1, -1, 1}).variations, 0);
-    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0.5})).variations, 1);
-    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0.25, 0.75})).variations, 2);
-    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0.2, 0.5, 0.9})).variations, 3);
-    EXPECT_EQ(bernstein_signs(Polynomial::from_roots(std::vector<double>{0, 3})).variations, kUntrustedSign);
+    EXPECT_EQ(bernstein_signs(polynomial_from_roots(std::vector<double>{0.5})).variations, 1);
+    EXPECT_EQ(bernstein_signs(polynomial_from_roots(std::vector<double>{0.25, 0.75})).variations, 2);
+    EXPECT_EQ(bernstein_signs(polynomial_from_roots(std::vector<double>{0.2, 0.5, 0.9})).variations, 3);
+    EXPECT_EQ(bernstein_signs(polynomial_from_roots(std::vector<double>{0, 3})).variations, kUntrustedSign);
     EXPECT_EQ(bernstein_signs(Polynomial{}).variations, kUntrustedSign);
 }
 

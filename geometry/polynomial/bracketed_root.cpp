@@ -58,9 +58,10 @@ double refine(const Evaluate& evaluate, double lo, double hi, double value_at_lo
             t = newton;
             if (last_step <= tolerance.width_at(t)) return t;
             // Two Newton steps in a row: the error left after this one is about C·step² with C ≈ step/previous², so
-            // when step³/previous² is below 10⁻⁴ of the tolerance, another step would only confirm t (it was the last
-            // of ~4.3 per blob hit; 3.6 now). The estimate can be off where convergence is not yet quadratic: at
-            // 10⁻², one of the random brackets of bracketed_root_test ended 2.5× outside its tolerance.
+            // when step³/previous² is below 10⁻⁴ of the tolerance, another step would only confirm t (on blob hits
+            // that step is often the last; docs/benchmarks.md, "Blob groups"). The estimate can be off where
+            // convergence is not yet quadratic: at 10⁻², a random bracket of bracketed_root_test ended outside its
+            // tolerance.
             if (newton_before &&
                 last_step * last_step * last_step <= 1e-4 * tolerance.width_at(t) * step_before_last * step_before_last)
                 return t;

@@ -7,7 +7,7 @@
 
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/polynomial_test_support.h"
-#include "geometry/polynomial/sturm_sequence.h"
+#include "tests/support/sturm_sequence.h"
 
 namespace isotrace {
 namespace {
@@ -24,12 +24,12 @@ TEST(PolynomialMonotoneRootFinder, FirstRootIsTheSmallestRoot) {
         }
     }
     EXPECT_FALSE(first_root(Polynomial{1, 0, 1}, -1, 1));
-    EXPECT_EQ(first_root(Polynomial::from_roots(std::vector<double>{0, 0.5}), 0, 1)->t, 0);
+    EXPECT_EQ(first_root(polynomial_from_roots(std::vector<double>{0, 0.5}), 0, 1)->t, 0);
 }
 
 TEST(PolynomialMonotoneRootFinder, TangentRootsAreReportedOnceWithTheirFlag) {
     for (double double_root : {0.25, 0.3, 0.8123456789}) {
-        const Polynomial p = Polynomial::from_roots(std::vector<double>{double_root, double_root, 0.6, 1.4, -0.1});
+        const Polynomial p = polynomial_from_roots(std::vector<double>{double_root, double_root, 0.6, 1.4, -0.1});
         const PolynomialRoots roots = all_roots(p, 0, 1);
         ASSERT_EQ(roots.size(), 2) << double_root;
         const PolynomialRoot& tangent = double_root < 0.6 ? roots[0] : roots[1];
@@ -40,11 +40,11 @@ TEST(PolynomialMonotoneRootFinder, TangentRootsAreReportedOnceWithTheirFlag) {
         EXPECT_FALSE(crossing.tangent);
     }
     // A grazing contact at scale 1e30 is still within rounding of zero relative to the coefficients.
-    const PolynomialRoots grazing = all_roots(Polynomial::from_roots(std::vector<double>{0.5, 0.5}, 1e30), 0, 1);
+    const PolynomialRoots grazing = all_roots(polynomial_from_roots(std::vector<double>{0.5, 0.5}, 1e30), 0, 1);
     ASSERT_EQ(grazing.size(), 1);
     EXPECT_TRUE(grazing[0].tangent);
     // A quadruple root is one tangent root too.
-    const PolynomialRoots quadruple = all_roots(Polynomial::from_roots(std::vector<double>(4, 0.375)), 0, 1);
+    const PolynomialRoots quadruple = all_roots(polynomial_from_roots(std::vector<double>(4, 0.375)), 0, 1);
     ASSERT_EQ(quadruple.size(), 1);
     EXPECT_NEAR(quadruple[0].t, 0.375, 1e-3);
 }

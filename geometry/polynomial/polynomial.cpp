@@ -19,13 +19,6 @@ void polynomial_detail::throw_degree_too_high() {
 Polynomial::Polynomial(std::initializer_list<double> coefficients_low_to_high)
     : Polynomial(std::span<const double>(coefficients_low_to_high.begin(), coefficients_low_to_high.size())) {}
 
-Polynomial Polynomial::from_roots(std::span<const double> roots, double leading) {
-    polynomial_detail::require_degree_fits(roots.size());
-    Polynomial product{leading};
-    for (double root : roots) product = product * Polynomial{-root, 1};
-    return product;
-}
-
 double Polynomial::evaluation_error_bound(double t) const {
     const double magnitude_t = std::abs(t);
     double magnitude = std::abs(coefficients_[degree_]);

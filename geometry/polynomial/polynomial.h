@@ -51,14 +51,11 @@ public:
         degree_ = static_cast<int>(coefficients_low_to_high.size()) - 1;
         drop_zero_leading_coefficients();
     }
-    // leading · ∏(t − rᵢ). Throws std::length_error for more than kMaxPolynomialDegree roots.
-    static Polynomial from_roots(std::span<const double> roots, double leading = 1);
 
     // The stored degree. Arithmetic drops leading coefficients that are exactly zero, so after it this is the
     // true degree; coefficients that are merely tiny are kept (see without_negligible_leading_terms).
     int degree() const { return degree_; }
     double operator[](int power) const { return coefficients_[power]; }
-    double leading_coefficient() const { return coefficients_[degree_]; }
     bool is_zero() const { return degree_ == 0 && coefficients_[0] == 0; }
 
     double evaluate(double t) const;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/polynomial/monotone_root_finder.h"
-#include "geometry/polynomial/sturm_sequence.h"
+#include "tests/support/sturm_sequence.h"
 
 namespace isotrace {
 namespace {

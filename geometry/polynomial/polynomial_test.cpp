@@ -17,15 +17,16 @@ TEST(PolynomialTest, ConstructionDropsExactlyZeroLeadingCoefficients) {
     EXPECT_EQ(Polynomial({1, 2, 0, 0}).degree(), 1);
     EXPECT_TRUE(Polynomial().is_zero());
     EXPECT_TRUE(Polynomial({0, 0}).is_zero());
-    EXPECT_EQ(Polynomial({0, 0, 3}).leading_coefficient(), 3);
+    EXPECT_EQ(Polynomial({0, 0, 3}).degree(), 2);
+    EXPECT_EQ(Polynomial({0, 0, 3})[2], 3);
 }
 
 TEST(PolynomialTest, DegreeAboveTheMaximumThrows) {
     const std::vector<double> eleven_roots(kMaxPolynomialDegree + 1, 0.5);
-    EXPECT_THROW(Polynomial::from_roots(eleven_roots), std::length_error);
+    EXPECT_THROW(polynomial_from_roots(eleven_roots), std::length_error);
     const std::vector<double> ten_roots(kMaxPolynomialDegree, 0.5);
-    EXPECT_EQ(Polynomial::from_roots(ten_roots).degree(), kMaxPolynomialDegree);
-    const Polynomial six = Polynomial::from_roots(std::vector<double>(6, 1.0));
+    EXPECT_EQ(polynomial_from_roots(ten_roots).degree(), kMaxPolynomialDegree);
+    const Polynomial six = polynomial_from_roots(std::vector<double>(6, 1.0));
     EXPECT_THROW(six * six, std::length_error);
 }
 
@@ -43,9 +44,9 @@ TEST(PolynomialTest, EvaluatesWithHornerAndItsDerivative) {
 
 TEST(PolynomialTest, FromRootsVanishesAtItsRoots) {
     const std::vector<double> roots{-1, 0.25, 2};
-    const Polynomial p = Polynomial::from_roots(roots, 3);
+    const Polynomial p = polynomial_from_roots(roots, 3);
     EXPECT_EQ(p.degree(), 3);
-    EXPECT_EQ(p.leading_coefficient(), 3);
+    EXPECT_EQ(p[3], 3);
     for (double root : roots) EXPECT_EQ(p.evaluate(root), 0);
     EXPECT_DOUBLE_EQ(p.evaluate(1), 3 * 2 * 0.75 * -1);
 }
@@ -74,7 +75,7 @@ TEST(PolynomialTest, ComposeLinearReparametrisesOntoTheUnitInterval) {
 }
 
 TEST(PolynomialTest, NegligibleLeadingTermsAreDroppedRelativeToTheInterval) {
-    const Polynomial p = Polynomial{0, 0, 0, 0, 0, 1e-20} + Polynomial::from_roots(std::vector<double>{0.3, 0.6});
+    const Polynomial p = Polynomial{0, 0, 0, 0, 0, 1e-20} + polynomial_from_roots(std::vector<double>{0.3, 0.6});
     EXPECT_EQ(p.degree(), 5);
     EXPECT_EQ(p.without_negligible_leading_terms(0, 1).degree(), 2);
     // Far from the origin the same term dominates and must stay.
@@ -98,8 +99,8 @@ TEST(PolynomialTest, RemainderOfEuclideanDivision) {
     EXPECT_EQ(rest.degree(), 1);
     EXPECT_DOUBLE_EQ(rest[0], 5);
     EXPECT_DOUBLE_EQ(rest[1], -3);
-    EXPECT_TRUE(Polynomial::from_roots(std::vector<double>{1, 2, 3})
-                    .remainder(Polynomial::from_roots(std::vector<double>{1, 2}))
+    EXPECT_TRUE(polynomial_from_roots(std::vector<double>{1, 2, 3})
+                    .remainder(polynomial_from_roots(std::vector<double>{1, 2}))
                     .is_zero());
     EXPECT_TRUE((Polynomial{1, 2}.remainder(Polynomial{4}).is_zero()));
     // (t + 1)² + 2⁻⁵² divided by t + 1 leaves 2⁻⁵², which is cancellation noise relative to the 1s that cancelled.

@@ -6,12 +6,20 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "geometry/polynomial/polynomial.h"
 #include "geometry/polynomial/polynomial_root.h"
 
 namespace isotrace {
+
+// leading · ∏(t − rᵢ). Throws std::length_error for more than kMaxPolynomialDegree roots.
+inline Polynomial polynomial_from_roots(std::span<const double> roots, double leading = 1) {
+    Polynomial product{leading};
+    for (double root : roots) product = product * Polynomial{-root, 1};
+    return product;
+}
 
 inline long double evaluate_long_double(const Polynomial& p, long double t) {
     long double value = p[p.degree()];

@@ -11,7 +11,7 @@
 
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/polynomial/polynomial_test_support.h"
-#include "geometry/polynomial/sturm_sequence.h"
+#include "tests/support/sturm_sequence.h"
 
 namespace isotrace {
 namespace {
@@ -41,7 +41,7 @@ protected:
 
 TEST_P(RootFinderTest, WellSeparatedRoots) {
     const std::vector<double> known{-0.4, 0.1, 0.35, 0.6, 0.95, 1.3};
-    const Polynomial p = Polynomial::from_roots(known, -2);
+    const Polynomial p = polynomial_from_roots(known, -2);
     expect_same_roots(p, roots(p, 0, 1), oracle_roots(p, 0, 1), kSimpleRootTolerance);
     expect_same_roots(p, roots(p, 0, 1), {0.1, 0.35, 0.6, 0.95}, kSimpleRootTolerance);
     expect_same_roots(p, roots(p, -1, 2), known, kSimpleRootTolerance);
@@ -49,7 +49,7 @@ TEST_P(RootFinderTest, WellSeparatedRoots) {
 }
 
 TEST_P(RootFinderTest, ClusteredRootsOneMillionthApart) {
-    const Polynomial p = Polynomial::from_roots(std::vector<double>{0.3, 0.3 + 1e-6, 0.7, 0.7 + 1e-6, -0.2}, 3);
+    const Polynomial p = polynomial_from_roots(std::vector<double>{0.3, 0.3 + 1e-6, 0.7, 0.7 + 1e-6, -0.2}, 3);
     const std::vector<double> oracle = oracle_roots(p, 0, 1, 1 << 21);  // steps below the cluster spacing
     ASSERT_EQ(oracle.size(), 4u);
     expect_same_roots(p, roots(p, 0, 1), oracle, kSimpleRootTolerance);
@@ -57,7 +57,7 @@ TEST_P(RootFinderTest, ClusteredRootsOneMillionthApart) {
 
 TEST_P(RootFinderTest, DoubleRootsAreFoundNearTheirTrueLocation) {
     for (double double_root : {0.25, 0.3, 0.8123456789}) {
-        const Polynomial p = Polynomial::from_roots(std::vector<double>{double_root, double_root, 0.6, 1.4, -0.1});
+        const Polynomial p = polynomial_from_roots(std::vector<double>{double_root, double_root, 0.6, 1.4, -0.1});
         const std::vector<double> found = roots(p, 0, 1);
         // Rounding may turn a double root into two roots ~√ε apart; each must be near it, and 0.6 stays exact.
         ASSERT_GE(found.size(), 2u) << double_root;
@@ -70,7 +70,7 @@ TEST_P(RootFinderTest, DoubleRootsAreFoundNearTheirTrueLocation) {
 }
 
 TEST_P(RootFinderTest, ExtremaAwayFromZeroAreNotRoots) {
-    const Polynomial parabola = Polynomial::from_roots(std::vector<double>{0.5, 0.5});
+    const Polynomial parabola = polynomial_from_roots(std::vector<double>{0.5, 0.5});
     EXPECT_TRUE(roots(parabola + Polynomial{1e-3}, 0, 1).empty());
     const Polynomial dipping = parabola - Polynomial{1e-6};
     expect_same_roots(dipping, roots(dipping, 0, 1), {0.499, 0.501}, kSimpleRootTolerance);
@@ -78,13 +78,13 @@ TEST_P(RootFinderTest, ExtremaAwayFromZeroAreNotRoots) {
 
 // The interval is closed: a root exactly at either end is reported, once.
 TEST_P(RootFinderTest, RootsAtTheEndsAreIncluded) {
-    const Polynomial p = Polynomial::from_roots(std::vector<double>{0, 0.5, 1});
+    const Polynomial p = polynomial_from_roots(std::vector<double>{0, 0.5, 1});
     expect_same_roots(p, roots(p, 0, 1), {0, 0.5, 1}, kSimpleRootTolerance);
     expect_same_roots(p, roots(p, 0, 0.5), {0, 0.5}, kSimpleRootTolerance);
     expect_same_roots(p, roots(p, 0.5, 1), {0.5, 1}, kSimpleRootTolerance);
     expect_same_roots(p, roots(p, 0.25, 0.75), {0.5}, kSimpleRootTolerance);
     // Ends that are not representable: p(0.1) rounds to ±tiny rather than 0, still a root.
-    const Polynomial q = Polynomial::from_roots(std::vector<double>{0.1, 0.7, 0.9});
+    const Polynomial q = polynomial_from_roots(std::vector<double>{0.1, 0.7, 0.9});
     expect_same_roots(q, roots(q, 0.1, 0.7), {0.1, 0.7}, kSimpleRootTolerance);
     expect_same_roots(q, roots(q, 0.7, 0.9), {0.7, 0.9}, kSimpleRootTolerance);
 }
@@ -92,18 +92,18 @@ TEST_P(RootFinderTest, RootsAtTheEndsAreIncluded) {
 TEST_P(RootFinderTest, HugeAndTinyCoefficientScales) {
     const std::vector<double> known{0.15, 0.4, 0.85, 1.7, -3};
     for (double scale : {1e30, 1e-30, -1e30, -1e-30}) {
-        const Polynomial p = Polynomial::from_roots(known, scale);
+        const Polynomial p = polynomial_from_roots(known, scale);
         expect_same_roots(p, roots(p, 0, 1), {0.15, 0.4, 0.85}, kSimpleRootTolerance);
         expect_same_roots(p, roots(p, -4, 4), {-3, 0.15, 0.4, 0.85, 1.7}, kSimpleRootTolerance);
     }
     // Large t: roots near 1e4 are found to relative accuracy.
-    const Polynomial far = Polynomial::from_roots(std::vector<double>{1e4, 1e4 + 1, 2e4});
+    const Polynomial far = polynomial_from_roots(std::vector<double>{1e4, 1e4 + 1, 2e4});
     expect_same_roots(far, roots(far, 0, 3e4), {1e4, 1e4 + 1, 2e4}, kSimpleRootTolerance);
 }
 
 // A leading coefficient that cannot matter on [a, b] is a lower effective degree; its far-away root is outside.
 TEST_P(RootFinderTest, NearlyZeroLeadingCoefficient) {
-    const Polynomial quadratic = Polynomial::from_roots(std::vector<double>{0.3, 0.6});
+    const Polynomial quadratic = polynomial_from_roots(std::vector<double>{0.3, 0.6});
     for (double tiny : {1e-20, -1e-17, 1e-300}) {
         const Polynomial p = Polynomial{0, 0, 0, 0, 0, 0, tiny} + quadratic;
         EXPECT_EQ(p.degree(), 6);

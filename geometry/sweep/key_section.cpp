@@ -1,8 +1,5 @@
 #include "geometry/sweep/key_section.h"
 
-#include <cmath>
-#include <numbers>
-
 namespace isotrace {
 
 std::vector<KeySection> to_absolute(const std::vector<RelativeKeySection>& relative) {
@@ -49,16 +46,6 @@ void edit_key_section(std::vector<RelativeKeySection>& chain, std::size_t key, c
     k.offset = k.offset + previous.rotate_back(own.rotate(edit.translate));
     k.rotation = normalize(k.rotation * edit.rotate);
     for (double& r : k.radii) r = r * edit.radius_scale + edit.radius_offset;
-}
-
-std::vector<double> offset_circle_radii(double radius, double offset, int samples) {
-    std::vector<double> radii;
-    for (int j = 0; j < samples; ++j) {
-        const double theta = 2 * std::numbers::pi * j / samples;
-        const double s = offset * std::sin(theta);
-        radii.push_back(offset * std::cos(theta) + std::sqrt(radius * radius - s * s));
-    }
-    return radii;
 }
 
 }  // namespace isotrace

@@ -38,8 +38,4 @@ void edit_key_section(std::vector<RelativeKeySection>& chain, std::size_t key, c
 std::vector<KeySection> to_absolute(const std::vector<RelativeKeySection>& relative);
 std::vector<RelativeKeySection> to_relative(const std::vector<KeySection>& absolute);
 
-// The radius of a circle of radius `radius` whose centre is offset by `offset` along the local x axis, seen from
-// the section centre, at the m sample angles: e·cos θ + √(a² − e² sin² θ) (requires |offset| < radius).
-std::vector<double> offset_circle_radii(double radius, double offset, int samples);
-
 }  // namespace isotrace

@@ -10,6 +10,18 @@ namespace isotrace::sweep_test {
 
 inline std::vector<double> constant_radii(double r, int m = 16) { return std::vector<double>(std::size_t(m), r); }
 
+// The radius of a circle of radius `radius` whose centre is offset by `offset` along the local x axis, seen from
+// the section centre, at the m sample angles: e·cos θ + √(a² − e² sin² θ) (requires |offset| < radius).
+inline std::vector<double> offset_circle_radii(double radius, double offset, int samples) {
+    std::vector<double> radii;
+    for (int j = 0; j < samples; ++j) {
+        const double theta = 2 * std::numbers::pi * j / samples;
+        const double s = offset * std::sin(theta);
+        radii.push_back(offset * std::cos(theta) + std::sqrt(radius * radius - s * s));
+    }
+    return radii;
+}
+
 // A circular cylinder of radius r along +z from z = 0 to z = length, through `keys` key sections.
 inline std::vector<KeySection> cylinder(double r, double length, int keys = 4) {
     std::vector<KeySection> k;

@@ -55,7 +55,7 @@ TEST(SweepVolume, StraightTwistedSweepMatchesItsMeshVolume) {
 TEST(SweepVolume, OffsetDiscTorusNeedsTheFirstMomentTerm) {
     // A disc of radius a whose centre is offset by e from C(t), swept three quarters round a ring of radius 2.
     const double a = 0.5, e = 0.3, ring = 2, turn = 1.5 * kPi;
-    const SweepSurface sweep(sweep_test::ring(ring, 270, 13, offset_circle_radii(a, e, 64)));
+    const SweepSurface sweep(sweep_test::ring(ring, 270, 13, sweep_test::offset_circle_radii(a, e, 64)));
     const double mesh_volume = extrapolated_mesh_volume(sweep, 128, 256);
     const double general = sweep_volume(sweep), paper = paper_volume(sweep);
     EXPECT_NEAR(general / mesh_volume, 1, 1e-5);

@@ -3,7 +3,10 @@
 // Misses are black. Usable on its own, for example to check geometry before lighting a scene.
 #include <cmath>
 #include <limits>
+#include <span>
+#include <string>
 
+#include "renderer/core/enum_names.h"
 #include "renderer/plugin/integrator.h"
 #include "renderer/plugin/material.h"
 #include "renderer/sampling/hash.h"
@@ -13,6 +16,19 @@ namespace isotrace {
 namespace {
 
 enum class Shown { Normal, Distance, Albedo, Uv, ObjectId };
+
+// The values of "aov", the default first.
+constexpr EnumName<Shown> kShownNames[] = {{Shown::Normal, "normal"},
+                                           {Shown::Distance, "distance"},
+                                           {Shown::Albedo, "albedo"},
+                                           {Shown::Uv, "uv"},
+                                           {Shown::ObjectId, "object_id"}};
+
+std::string summary() {
+    std::string text = std::string("debug view of the first hit; aov: ") + kShownNames[0].name + " (default)";
+    for (const auto& entry : std::span(kShownNames).subspan(1)) text += std::string(", ") + entry.name;
+    return text;
+}
 
 Rgb id_colour(std::uint32_t id) {
     const std::uint64_t h = mix64(id + 1);
@@ -41,8 +57,7 @@ public:
         return {};
     }
     std::map<std::string, std::string> settings() const override {
-        static const char* names[] = {"normal", "distance", "albedo", "uv", "object_id"};
-        return {{"aov", names[int(shown_)]}};
+        return {{"aov", enum_name(kShownNames, shown_)}};
     }
 
 private:
@@ -51,17 +66,11 @@ private:
 
 }  // namespace
 
-ISOTRACE_REGISTER_PLUGIN(integrator_registry, "aov",
-                         "debug view of the first hit; aov: normal (default), distance, albedo, uv, object_id",
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "aov", summary(),
                          [](const SceneNode& node) -> std::unique_ptr<Integrator> {
                              const std::string aov =
-                                 node.choice_or("aov", "normal", {"normal", "distance", "albedo", "uv", "object_id"});
-                             const Shown shown = aov == "normal"     ? Shown::Normal
-                                                 : aov == "distance" ? Shown::Distance
-                                                 : aov == "albedo"   ? Shown::Albedo
-                                                 : aov == "uv"       ? Shown::Uv
-                                                                     : Shown::ObjectId;
-                             return std::make_unique<AovIntegrator>(shown);
+                                 node.choice_or("aov", kShownNames[0].name, enum_names(kShownNames));
+                             return std::make_unique<AovIntegrator>(enum_value(kShownNames, aov));
                          })
 
 }  // namespace isotrace

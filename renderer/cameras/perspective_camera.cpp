@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/core/enum_names.h"
 #include "renderer/params/world_limit.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/sampling/warps.h"
@@ -9,10 +10,19 @@
 namespace isotrace {
 namespace {
 
+// The image side that "fov" spans.
+enum class FovAxis { X, Y, Diagonal, Smaller, Larger };
+// The values of "fov_axis", the default first.
+constexpr EnumName<FovAxis> kFovAxisNames[] = {{FovAxis::X, "x"},
+                                               {FovAxis::Y, "y"},
+                                               {FovAxis::Diagonal, "diagonal"},
+                                               {FovAxis::Smaller, "smaller"},
+                                               {FovAxis::Larger, "larger"}};
+
 class PerspectiveCamera final : public Camera {
 public:
     PerspectiveCamera(const Transform& to_world, const RasterSize& raster, double fov_degrees,
-                      const std::string& fov_axis, double aperture_radius, double focus_distance)
+                      FovAxis fov_axis, double aperture_radius, double focus_distance)
         : Camera(to_world),
           raster_(raster),
           aperture_radius_(float(aperture_radius)),
@@ -20,13 +30,13 @@ public:
           pinhole_origin_(Vec3f(to_world.point(Vec3d(0, 0, 0)))) {
         const double tan_half = std::tan(fov_degrees * std::numbers::pi / 360.0);
         const double w = raster.width, h = raster.height;
-        std::string axis = fov_axis;
-        if (axis == "smaller") axis = w <= h ? "x" : "y";
-        if (axis == "larger") axis = w >= h ? "x" : "y";
-        if (axis == "x") {
+        FovAxis axis = fov_axis;
+        if (axis == FovAxis::Smaller) axis = w <= h ? FovAxis::X : FovAxis::Y;
+        if (axis == FovAxis::Larger) axis = w >= h ? FovAxis::X : FovAxis::Y;
+        if (axis == FovAxis::X) {
             half_width_ = tan_half;
             half_height_ = tan_half * h / w;
-        } else if (axis == "y") {
+        } else if (axis == FovAxis::Y) {
             half_height_ = tan_half;
             half_width_ = tan_half * w / h;
         } else {  // diagonal
@@ -68,7 +78,8 @@ private:
 std::unique_ptr<Camera> create(const SceneNode& node, const RasterSize& raster) {
     const Transform to_world = parse_camera_placement(node);
     const double fov = node.number_or("fov", 40.0, {0, 180, true, true});
-    const std::string axis = node.choice_or("fov_axis", "x", {"x", "y", "diagonal", "smaller", "larger"});
+    const FovAxis axis =
+        enum_value(kFovAxisNames, node.choice_or("fov_axis", kFovAxisNames[0].name, enum_names(kFovAxisNames)));
     const double aperture = node.number_or("aperture_radius", 0.0, world_length(true));
     check_reach_within_world(node, "aperture_radius", to_world, aperture, "the lens");
     double focus = 1.0;

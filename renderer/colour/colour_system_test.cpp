@@ -7,7 +7,7 @@
 #include <cmath>
 #include <thread>
 
-#include "renderer/colour/scoped_environment_variable.h"
+#include "tests/support/scoped_environment_variable.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "renderer/colour/colour_system.h"
-#include "renderer/colour/scoped_environment_variable.h"
+#include "tests/support/scoped_environment_variable.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 

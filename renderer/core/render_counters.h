@@ -56,9 +56,9 @@ ThreadBlock* new_block();
 // it, docs/decisions.md). Per thread because a count sits inside a ray's arithmetic, where it must cost a plain
 // increment: a shared counter would be an atomic read-modify-write on a cache line every thread writes, and a block
 // passed down as an argument would reach every function that counts. Initial-exec TLS and a plain null test: the
-// default model of a shared library calls __tls_get_addr and a guarded initialiser on every count (measured: ~40
-// instructions per call on the blob hot path); __thread rather than thread_local, which other files would reach
-// through a wrapper function.
+// default model of a shared library calls __tls_get_addr and a guarded initialiser on every count, which on the blob
+// hot path costs more than the count; __thread rather than thread_local, which other files would reach through a
+// wrapper function (docs/decisions.md, "Work counters").
 extern __thread ThreadBlock* thread_block __attribute__((tls_model("initial-exec")));
 
 inline ThreadBlock& local_block() {
@@ -90,8 +90,8 @@ inline void count_nan_sample() { detail::bump(detail::local_block().nan_samples,
 // on the hot path, not twice. (A part that lands in the overflow slot no longer reaches its total.)
 int named_counter_slot(const std::string& name, int total_slot = -1);
 // Adds amounts[i] to slot slots[i] (one lookup of the thread's block for all of them: hot paths count several).
-// Inline with a fixed count, unrolled: every blob cell query adds ten, and the call with its loop over spans cost
-// ~95 instructions of a query's ~2,500 (callgrind, blobs_1k).
+// Inline with a fixed count, unrolled: every blob cell query adds ten, and a call with a loop over spans is a
+// visible part of a query's cost (docs/decisions.md, "Work counters").
 template <std::size_t N>
 void add_to_named(const std::array<int, N>& slots, const std::array<std::uint64_t, N>& amounts) {
     detail::ThreadBlock& block = detail::local_block();

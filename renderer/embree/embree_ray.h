@@ -36,7 +36,8 @@ inline bool is_traceable(const Ray& ray) {
 
 // Writes `ray` into Embree's layout in three 16-byte stores, the way Embree loads it: built field by field, the
 // ray was stored as scalars and reloaded as vectors, and a load wider than the stores before it waits for them
-// (a failed store forwarding; perf put a tenth of the path tracer's time in RenderScene::intersect on such loads).
+// (a failed store forwarding, on the path tracer's hottest path: docs/decisions.md, "Hot data is written the way it
+// is read").
 // The caller has checked is_traceable(ray).
 inline void set_embree_ray(RTCRay& r, const Ray& ray) {
     static_assert(offsetof(RTCRay, tnear) == 12 && offsetof(RTCRay, time) == 28 && offsetof(RTCRay, flags) == 44);

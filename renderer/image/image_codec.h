@@ -91,7 +91,8 @@ using ImageCodecEntry = const ImageCodec* (*)(const char* isotrace_version);
 inline constexpr const char* kImageCodecEntry = "isotrace_image_codec";
 
 // The EXR writer module (libisotrace_exr.so, OpenEXR alone) exports this one: every .exr file is encoded there, so
-// that writing EXR does not load OpenImageIO (whose dynamic linking costs ~1 G instructions, docs/decisions.md).
+// that writing EXR does not load OpenImageIO, whose many libraries take a render's worth of CPU time to link
+// (docs/decisions.md, "Image I/O in a module loaded with dlopen").
 using ImageEncoderEntry = const ImageEncoder* (*)(const char* isotrace_version);
 inline constexpr const char* kImageEncoderEntry = "isotrace_image_encoder";
 
@@ -114,8 +115,8 @@ const ImageCodec& load_image_codec(const std::filesystem::path& module_path);
 const ImageEncoder& load_exr_encoder(const std::filesystem::path& module_path);
 
 // Loads the encoders that files like `outputs` need (image_encoder_for()) on a thread of their own, so that their
-// dynamic linking (~0.4 s for OpenImageIO's) overlaps other work (a render: with a core to spare, it then costs no
-// wall time). image_encoder_for() called before the load ends waits for it; a load that failed calls
+// dynamic linking (long for OpenImageIO's many libraries: docs/decisions.md) overlaps other work (a render: with a
+// core to spare, it then costs no wall time). image_encoder_for() called before the load ends waits for it; a load that failed calls
 // `on_failure` from that thread and is tried again by the next call, which throws its error. The destructor waits
 // for the thread. While a module loads, the loader's lock is held and any thread being created waits: start this
 // after the threads it should overlap.

@@ -43,9 +43,7 @@ std::vector<float> ssim_map(const std::vector<float>& reference, const std::vect
     return map;
 }
 
-double ssim(const std::vector<float>& reference, const std::vector<float>& test, int width, int height,
-            double dynamic_range) {
-    const std::vector<float> map = ssim_map(reference, test, width, height, dynamic_range);
+double mean_ssim(const std::vector<float>& map) {
     return std::accumulate(map.begin(), map.end(), 0.0) / double(map.size());
 }
 

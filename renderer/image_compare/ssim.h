@@ -12,8 +12,7 @@ namespace isotrace {
 std::vector<float> ssim_map(const std::vector<float>& reference, const std::vector<float>& test, int width, int height,
                             double dynamic_range);
 
-// The mean of ssim_map().
-double ssim(const std::vector<float>& reference, const std::vector<float>& test, int width, int height,
-            double dynamic_range);
+// The image's SSIM: the mean of its ssim_map().
+double mean_ssim(const std::vector<float>& map);
 
 }  // namespace isotrace

@@ -15,7 +15,7 @@ namespace isotrace {
 // Incident light at a point from one light.
 // Each vector shares 16 bytes with the float read next to it, so that a light can store each pair at once and the
 // caller's loads of them, across the virtual call, find each in one store (a load spanning two stores waits for
-// them: perf put 8 % of the path tracer's radiance() on such a load of `direction`).
+// them; docs/decisions.md, "Hot data is written the way it is read").
 struct LightSample {
     Vec3f direction;       // unit, from the shading point towards the light
     float distance = 0;    // to the sampled point (infinity for infinite lights)

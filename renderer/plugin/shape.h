@@ -67,8 +67,9 @@ inline LocalShading shading_of_embree_hit(const RTCHit& hit, const Vec3f& geomet
 }
 
 // Whether a shape's shading() is shading_of_embree_hit (and with which uv), so that the scene can complete its
-// hits without the call: the path tracer completes one hit per ray, and the virtual call with its result returned
-// through memory was 1-2 % of a render of flat-shaded triangles (measured; git history of docs/benchmarks.md).
+// hits without the call: the path tracer completes one hit per ray, and a virtual call returning its result
+// through memory on every one of them shows in a render of flat-shaded triangles (docs/decisions.md, "Hot data is
+// written the way it is read").
 enum class HitShading { Computed, EmbreeHit, EmbreeHitSwappedUv };
 
 class Shape {

@@ -1,6 +1,6 @@
 #pragma once
-// Range images after Kim et al. (seed 003, eq. 11): depth mapped to 256 grey levels,
-// g = (Z − Zmin)·256 / (Zmax − Zmin), clamped to 0..255.
+// Range images after T.-E. Kim et al., "3D Shape Reconstruction based on Superquadrics and Single Z-buffer CSG
+// Rendering": depth mapped to 256 grey levels, g = (Z − Zmin)·256 / (Zmax − Zmin), clamped to 0..255.
 //
 // The paper's Z grows towards the viewer (its z-buffer keeps the larger Z as "closer to the observer"), so
 // near is bright. We measure the view depth d (distance along the viewing axis, growing away from the camera),

@@ -237,8 +237,8 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
         // and a film left at another count (a pass shrunk by a time budget, then resumed) is brought back onto
         // the same boundaries that stop_at_pass_end is asked at. The first pass is as large as the group of
         // samples the integrator traces together (8 in SIMD lanes: passes of 1, 1, 2 and 4 would run packets
-        // with 1, 1, 2 and 4 of their 8 lanes live, 35 % more time for the first 8 samples). Under a time budget
-        // the next pass is shrunk to what the measured speed says still fits, so that most budgets end on a
+        // with 1, 1, 2 and 4 of their 8 lanes live; docs/decisions.md, "Passes that fill the lanes"). Under a time
+        // budget the next pass is shrunk to what the measured speed says still fits, so that most budgets end on a
         // whole pass. (The budget is hard either way: a pass that overruns is stopped within a group.)
         const int next_boundary =
             std::max(first_pass_end, int(std::bit_floor(std::uint32_t(completed))) * 2);

@@ -363,7 +363,7 @@ TEST(TileRenderer, TimeBudgetEndsTheRender) {
 // The first pass of this scene (51 x 43 pixels in the crop, one tile, so one thread) takes at least
 // 2193 x 300 us = 0.66 s of sleeping alone; a 0.1 s budget must stop it part-way instead of letting it run to the
 // end. The budget is not scaled for instrumented builds: the pass's length is sleeping, which they do not slow.
-// It must not be tiny either: a budget spent before the first pass starts (a 5 ms one was, once, on a loaded CI
+// It must not be tiny either: a budget spent before the first pass starts (a few milliseconds can be, on a loaded
 // machine) rightly renders nothing, which is not what this test is about.
 TEST(TileRenderer, TimeBudgetStopsTheFirstPassWithinASample) {
     const auto scene = load_test_scene(1000, RasterSize{64, 48}, R"({"type": "test_slow_random"})");

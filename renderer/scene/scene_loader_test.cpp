@@ -4,10 +4,10 @@
 #include <optional>
 #include <set>
 
-#include "renderer/colour/scoped_environment_variable.h"
 #include "renderer/film/aov.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tests/support/scoped_environment_variable.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {

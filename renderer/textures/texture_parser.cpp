@@ -7,6 +7,7 @@
 
 #include "renderer/colour/colour_system.h"
 #include "renderer/core/did_you_mean.h"
+#include "renderer/core/enum_names.h"
 #include "renderer/params/emitted_colour.h"
 #include "renderer/textures/expression_textures.h"
 #include "renderer/textures/field_texture.h"
@@ -23,6 +24,16 @@ constexpr bool kIsColour = std::is_same_v<T, Rgb>;
 bool writes(const SceneNode& node, const std::string& key) {
     return node.json().is_object() && node.json().find(key) != nullptr;
 }
+
+// An image's channel for a number.
+constexpr EnumName<ImageContent> kChannelNames[] = {{ImageContent::Red, "r"},
+                                                    {ImageContent::Green, "g"},
+                                                    {ImageContent::Blue, "b"},
+                                                    {ImageContent::Alpha, "a"},
+                                                    {ImageContent::Luminance, "luminance"}};
+// The values of "wrap", the default first.
+constexpr EnumName<WrapMode> kWrapNames[] = {
+    {WrapMode::Repeat, "repeat"}, {WrapMode::Clamp, "clamp"}, {WrapMode::Mirror, "mirror"}};
 
 std::string listed(const std::vector<std::string>& names) {
     std::string list;
@@ -184,23 +195,15 @@ private:
             if (writes(node, "space"))
                 node.fail_at("space", "a number's image is data, used as stored: it has no colour space");
             if (!writes(node, "channel"))
-                node.fail("an image for a number needs \"channel\": one of r, g, b, a, luminance");
-            static const std::vector<std::string> channels{"r", "g", "b", "a", "luminance"};
-            const std::string channel = node.choice_or("channel", "", channels);
-            options.content = channel == "r"   ? ImageContent::Red
-                              : channel == "g" ? ImageContent::Green
-                              : channel == "b" ? ImageContent::Blue
-                              : channel == "a" ? ImageContent::Alpha
-                                               : ImageContent::Luminance;
+                node.fail("an image for a number needs \"channel\": one of " + listed(enum_names(kChannelNames)));
+            options.content = enum_value(kChannelNames, node.choice_or("channel", "", enum_names(kChannelNames)));
         }
-        const std::string wrap = node.choice_or("wrap", "repeat", {"repeat", "clamp", "mirror"});
+        const std::string wrap = node.choice_or("wrap", kWrapNames[0].name, enum_names(kWrapNames));
         const Projection projection = parse_projection(node, "projection", ProjectionKind::Uv);
         const std::filesystem::path file = node.file_path("file");
         node.finish();  // mistakes in the node before the file is read
         return std::make_shared<ImageMapTexture<T>>(load(node, "file", file, space, options), projection,
-                                                    wrap == "clamp"    ? WrapMode::Clamp
-                                                    : wrap == "mirror" ? WrapMode::Mirror
-                                                                       : WrapMode::Repeat);
+                                                    enum_value(kWrapNames, wrap));
     }
 
     // {"texture": file, "space": name, "scale": colour}: an image mapped by uv, repeating, scaled.

@@ -420,7 +420,7 @@ case_interrupt() {
   ((partial == 1 || spp > 0)) || fail "neither a partial image nor a completed pass (spp $spp, partial $partial)"
 }
 
-# ---- long renders: hard budgets, signals, checkpoints (issue 16) -------------------------------------------
+# ---- long renders: hard budgets, signals, checkpoints ----------------------------------------------------
 
 # The renders below wait for events (a line printed, a checkpoint written), never for fixed delays, so that the
 # slower instrumented builds pass too. Their bounds only catch hangs and are multiplied by $time_scale.
@@ -690,7 +690,7 @@ case_resume_bad_input() {
   expect_in "$work/stderr" "needs --checkpoint" stderr
 }
 
-# ---- hostile input and safe output (issue 10) -------------------------------------------------------------
+# ---- hostile input and safe output -----------------------------------------------------------------------
 
 case_output_symlink_not_followed() {  # a planted symlink at the output or at old-style temporary names: refused, both kept
   echo precious >"$work/victim"

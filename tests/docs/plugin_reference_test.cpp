@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "geometry/mesh/mesh_deformer.h"
-#include "renderer/colour/scoped_environment_variable.h"
 #include "renderer/core/input_error.h"
 #include "renderer/plugin/camera.h"
 #include "renderer/plugin/integrator.h"
@@ -24,6 +23,7 @@
 #include "renderer/plugin/sampler_registry.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tests/support/scoped_environment_variable.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {

@@ -21,9 +21,9 @@
 
 namespace {
 
-// Work units per ray and primitive. A blob ray costs ~3 cell queries of ~4 candidates, ~3 pieces and ~10 root steps
-// each (measured; git history of docs/benchmarks.md), a superquadric ray tens to hundreds of search steps; the cap
-// is ~1000 times that.
+// Work units per ray and primitive. A blob ray costs a few cell queries of a few candidates, pieces and root steps
+// each (isotrace render --stats counts them), a superquadric ray tens to hundreds of search steps; the cap is about
+// a thousand times that, so only a runaway loop reaches it.
 constexpr std::uint64_t kWorkPerPrimitive = 100'000;
 
 // The counters that count the steps of every input-dependent loop along a ray.

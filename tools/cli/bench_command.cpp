@@ -174,9 +174,8 @@ int run_bench(BenchArguments args) {
 
 }  // namespace
 
-CommandRunner add_bench_command(CLI::App& app) {
+CommandRunner add_bench_options(CLI::App* command) {
     auto args = std::make_shared<BenchArguments>();
-    CLI::App* command = app.add_subcommand("bench", "Time fixed workloads (rays, path tracing, polygonising)");
     command->footer("Primary, shadow and bounce rays, the path tracer and the polygoniser on fixed scenes, with thread "
                     "and element-count scaling. Run from the source tree; --list names the workloads.");
     command->add_option("scenes", args->scenes,

@@ -3,16 +3,17 @@
 
 namespace isotrace::cli {
 
-// Each sub-command adds itself to the application and returns the function that runs it (exit code).
+// Each command adds its options to its sub-command (named and described by the command table in main.cpp) and
+// returns the function that runs it (exit code).
 using CommandRunner = std::function<int()>;
 
-CommandRunner add_render_command(CLI::App& app);
-CommandRunner add_info_command(CLI::App& app);
-CommandRunner add_depth_command(CLI::App& app);
-CommandRunner add_bench_command(CLI::App& app);
-CommandRunner add_mesh_command(CLI::App& app);
-CommandRunner add_deform_command(CLI::App& app);
-CommandRunner add_diff_command(CLI::App& app);
+CommandRunner add_render_options(CLI::App* command);
+CommandRunner add_info_options(CLI::App* command);
+CommandRunner add_depth_options(CLI::App* command);
+CommandRunner add_bench_options(CLI::App* command);
+CommandRunner add_mesh_options(CLI::App* command);
+CommandRunner add_deform_options(CLI::App* command);
+CommandRunner add_diff_options(CLI::App* command);
 
 // Exit codes shared by all commands.
 constexpr int kExitOk = 0;

@@ -55,9 +55,8 @@ int run_deform(const DeformArguments& args) {
 
 }  // namespace
 
-CommandRunner add_deform_command(CLI::App& app) {
+CommandRunner add_deform_options(CLI::App* command) {
     auto args = std::make_shared<DeformArguments>();
-    CLI::App* command = app.add_subcommand("deform", "Apply mesh deformers (sweep-based free-form deformation) to a mesh file");
     command->add_option("mesh", args->mesh, "Mesh file (.obj, .ply or .bpt Bezier patches)")->required()->check(CLI::ExistingFile);
     command->add_option("deformers", args->deformers, "Deformer file (JSON: {\"deformers\": [...]})")
         ->required()

@@ -113,10 +113,8 @@ int run_depth(const DepthArguments& args) {
 
 }  // namespace
 
-CommandRunner add_depth_command(CLI::App& app) {
+CommandRunner add_depth_options(CLI::App* command) {
     auto args = std::make_shared<DepthArguments>();
-    CLI::App* command = app.add_subcommand(
-        "depth", "Write a range image: view depth as 256 grey levels, near white, far black");
     command->footer("The range image of T.-E. Kim, \"3D Shape Reconstruction based on Superquadrics and Single "
                     "Z-buffer CSG Rendering\": g = (Z - Zmin) * 256 / (Zmax - Zmin), clamped to 0..255, with Z "
                     "growing towards the viewer; pixels that hit nothing are 0.");

@@ -93,9 +93,7 @@ Comparison compare(const RgbImage& reference, const RgbImage& test, bool display
     const float brightest = *std::max_element(y_reference.begin(), y_reference.end());
     c.ssim_range = display_referred || !(brightest > 0) ? 1.0 : double(brightest);
     c.ssim_map = ssim_map(y_reference, y_test, reference.width, reference.height, c.ssim_range);
-    double ssim_sum = 0;
-    for (float v : c.ssim_map) ssim_sum += v;
-    c.values["ssim"] = ssim_sum / double(c.ssim_map.size());
+    c.values["ssim"] = mean_ssim(c.ssim_map);
     if (display_referred) {
         c.flip_map = ldr_flip(reference, test, ppd);
     } else {
@@ -284,9 +282,8 @@ int run_diff(const DiffArguments& args, bool error_map_metric_given) {
 
 }  // namespace
 
-CommandRunner add_diff_command(CLI::App& app) {
+CommandRunner add_diff_options(CLI::App* command) {
     auto args = std::make_shared<DiffArguments>();
-    CLI::App* command = app.add_subcommand("diff", "Compare an image with a reference, or z-test a render");
     command->footer("Metrics: RMSE, relative MSE, PSNR, SSIM and FLIP of test image B against reference A; --ztest: "
                     "a statistical test of a low-budget render against a reference's mean and variance. Exit codes: "
                     "0 every threshold holds (the z-test passes), 3 a threshold or the z-test fails, 2 bad input.");

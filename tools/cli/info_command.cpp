@@ -102,12 +102,10 @@ int run_info(const std::string& path, const SceneOptions& options) {
 
 }  // namespace
 
-CommandRunner add_info_command(CLI::App& app) {
+CommandRunner add_info_options(CLI::App* command) {
     auto path = std::make_shared<std::string>();
     auto plugins = std::make_shared<bool>(false);
     auto views = std::make_shared<bool>(false);
-    CLI::App* command =
-        app.add_subcommand("info", "Validate a scene and print a summary, or list the plugins or the OCIO views");
     command->add_option("scene", *path, "Scene file (JSON)")->check(CLI::ExistingFile);
     command->add_flag("--plugins", *plugins, "List every registered plugin type");
     command->add_flag("--views", *views,

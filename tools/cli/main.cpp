@@ -15,17 +15,42 @@
 
 namespace {
 
+using namespace isotrace::cli;
+
+// Every command, in the order plain "isotrace" lists them: the sub-commands, that listing and the unknown-command
+// message all come from this table.
+struct Command {
+    const char* name;
+    const char* summary;
+    const char* alias;  // another name the command answers to, or nullptr
+    CommandRunner (*add_options)(CLI::App* command);
+};
+
+constexpr Command kCommands[] = {
+    {"render", "Render a scene to image files", nullptr, add_render_options},
+    {"info", "Validate a scene and print a summary, or list the plugins or the OCIO views", nullptr,
+     add_info_options},
+    {"depth", "Write a range image: view depth as 256 grey levels, near white, far black", nullptr,
+     add_depth_options},
+    {"bench", "Time fixed workloads (rays, path tracing, polygonising)", nullptr, add_bench_options},
+    // "polygonize": the blob-only tessellator this command replaced.
+    {"mesh", "Polygonise an implicit object, or write a traced one's triangles", "polygonize", add_mesh_options},
+    {"deform", "Apply mesh deformers (sweep-based free-form deformation) to a mesh file", nullptr,
+     add_deform_options},
+    {"diff", "Compare an image with a reference, or z-test a render", nullptr, add_diff_options},
+};
+
 // "isotrace rendr scene.json" would otherwise be reported as "A subcommand is required".
-bool reject_unknown_command(const CLI::App& app, int argc, char** argv) {
+bool reject_unknown_command(int argc, char** argv) {
     if (argc < 2 || argv[1][0] == '-') return false;
     const std::string word = argv[1];
     std::vector<std::string> names;
-    for (const CLI::App* command : app.get_subcommands({})) {
-        if (command->check_name(word)) return false;  // its name or an alias
-        names.push_back(command->get_name());
-    }
     std::string list;
-    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    for (const Command& command : kCommands) {
+        if (word == command.name || (command.alias != nullptr && word == command.alias)) return false;
+        names.push_back(command.name);
+        list += (list.empty() ? "" : ", ") + names.back();
+    }
     const std::string suggestion = isotrace::did_you_mean(word, names);
     std::fprintf(stderr, "isotrace: error: unknown command \"%s\"%s; commands: %s\n", word.c_str(),
                  suggestion.c_str(), list.c_str());
@@ -36,18 +61,15 @@ bool reject_unknown_command(const CLI::App& app, int argc, char** argv) {
 void print_usage(const CLI::App& app) {
     std::printf("%s\n\nusage: isotrace COMMAND [options]   (isotrace COMMAND --help lists its options)\n\ncommands:\n",
                 app.get_description().c_str());
-    for (const CLI::App* command : app.get_subcommands({})) {
-        std::string aliases;
-        for (const std::string& alias : command->get_aliases()) aliases += (aliases.empty() ? "" : ", ") + alias;
-        std::printf("  %-8s %s%s\n", command->get_name().c_str(), command->get_description().c_str(),
-                    aliases.empty() ? "" : (" (alias: " + aliases + ")").c_str());
+    for (const Command& command : kCommands) {
+        const std::string alias = command.alias == nullptr ? "" : std::string(" (alias: ") + command.alias + ")";
+        std::printf("  %-8s %s%s\n", command.name, command.summary, alias.c_str());
     }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    using namespace isotrace::cli;
     // Past a file-size limit write() then fails with EFBIG and the output code removes its temporary file;
     // SIGXFSZ's default action would kill the process and leave the temporary behind.
     std::signal(SIGXFSZ, SIG_IGN);
@@ -58,18 +80,17 @@ int main(int argc, char** argv) {
     });
     app.set_version_flag("--version", std::string("isotrace ") + isotrace::kIsotraceVersion);
     app.require_subcommand(1);
-    const CommandRunner render = add_render_command(app);
-    const CommandRunner info = add_info_command(app);
-    const CommandRunner depth = add_depth_command(app);
-    const CommandRunner bench = add_bench_command(app);
-    const CommandRunner mesh = add_mesh_command(app);
-    const CommandRunner deform = add_deform_command(app);
-    const CommandRunner diff = add_diff_command(app);
+    std::vector<std::pair<const CLI::App*, CommandRunner>> runners;
+    for (const Command& command : kCommands) {
+        CLI::App* subcommand = app.add_subcommand(command.name, command.summary);
+        if (command.alias != nullptr) subcommand->alias(command.alias);
+        runners.emplace_back(subcommand, command.add_options(subcommand));
+    }
     if (argc == 1) {
         print_usage(app);
         return kExitOk;
     }
-    if (reject_unknown_command(app, argc, argv)) return kExitBadInput;
+    if (reject_unknown_command(argc, argv)) return kExitBadInput;
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -77,13 +98,10 @@ int main(int argc, char** argv) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (app.got_subcommand("render")) return render();
-        if (app.got_subcommand("depth")) return depth();
-        if (app.got_subcommand("bench")) return bench();
-        if (app.got_subcommand("mesh")) return mesh();
-        if (app.got_subcommand("deform")) return deform();
-        if (app.got_subcommand("diff")) return diff();
-        return info();
+        for (const auto& [subcommand, run] : runners) {
+            if (subcommand->parsed()) return run();
+        }
+        return kExitFailure;  // unreachable: require_subcommand(1) made CLI11 reject a line without one
     } catch (const isotrace::InputError& error) {
         std::fprintf(stderr, "isotrace: error: %s\n", error.what());
         return kExitBadInput;

@@ -174,12 +174,10 @@ int run_mesh(const MeshArguments& args) {
 
 }  // namespace
 
-CommandRunner add_mesh_command(CLI::App& app) {
+CommandRunner add_mesh_options(CLI::App* command) {
     auto args = std::make_shared<MeshArguments>();
-    CLI::App* command = app.add_subcommand("mesh", "Polygonise an implicit object, or write a traced one's triangles");
     command->footer("Implicit objects: marching cubes, octree or spherical-octree dual contouring. Objects traced as "
                     "triangles (mesh, abm_patch): --method traced writes them as they are traced.");
-    command->alias("polygonize");  // the blob-only tessellator this command replaced
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
     command->add_option("--object", args->object,
                         "Name of the scene object to mesh (default: the scene's only implicit object)")

@@ -169,6 +169,40 @@ void write_outputs(const RenderArguments& args, const LoadedScene& scene, const 
                                  " output(s) could not be written");
 }
 
+// What --aov takes: "albedo, normal, ..., or all".
+std::string aov_choices() {
+    std::string list;
+    for (const AovInfo& info : all_aovs()) list += std::string(info.name) + ", ";
+    return list + "or all";
+}
+
+// The values of --stats, the default first, with what each prints beyond the one before.
+struct StatisticsLevel {
+    StatisticsDetail detail;
+    const char* name;
+    const char* prints;  // nullptr: nothing
+};
+constexpr StatisticsLevel kStatisticsLevels[] = {
+    {StatisticsDetail::Short, "short", "default: times, speed, NaNs, memory"},
+    {StatisticsDetail::Full, "full", "also rays, geometry and every work counter"},
+    {StatisticsDetail::None, "none", nullptr}};
+
+void add_stats_option(CLI::App& command, StatisticsDetail& detail) {
+    std::map<std::string, StatisticsDetail> levels;
+    std::string help = "Statistics printed after the render:", type_name;
+    const std::size_t count = std::size(kStatisticsLevels);
+    for (std::size_t i = 0; i < count; ++i) {
+        const StatisticsLevel& level = kStatisticsLevels[i];
+        levels.emplace(level.name, level.detail);
+        help += std::string(i == 0 ? " " : i + 1 == count ? " or " : ", ") + level.name +
+                (level.prints ? std::string(" (") + level.prints + ")" : "");
+        type_name += std::string(i == 0 ? "" : "|") + level.name;
+    }
+    command.add_option("--stats", detail, help)
+        ->transform(CLI::CheckedTransformer(levels, CLI::ignore_case).description(""))
+        ->type_name(type_name);
+}
+
 std::vector<std::string> aov_names(const std::vector<Aov>& aovs) {
     std::vector<std::string> names;
     for (Aov aov : aovs) names.push_back(aov_info(aov).name);
@@ -451,9 +485,8 @@ int run_render(const RenderArguments& args) {
 
 }  // namespace
 
-CommandRunner add_render_command(CLI::App& app) {
+CommandRunner add_render_options(CLI::App* command) {
     auto args = std::make_shared<RenderArguments>();
-    CLI::App* command = app.add_subcommand("render", "Render a scene to image files");
     command->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
     command->add_option("-o,--output", args->outputs,
                         "Output image; repeat for several. .exr: scene-linear with AOVs and metadata; "
@@ -465,20 +498,12 @@ CommandRunner add_render_command(CLI::App& app) {
         ->type_name("WIDTHxHEIGHT");
     add_threads_option(*command, args->threads);
     command->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64 - 1 (sets sampler.seed)")->type_name("UINT64");
-    command->add_option("--aov", args->aovs,
-                        "Comma-separated AOVs to add to the EXR: albedo, normal, depth, position, object_id, "
-                        "primitive_id, sample_count, variance, or all")
+    command->add_option("--aov", args->aovs, "Comma-separated AOVs to add to the EXR: " + aov_choices())
         ->type_name("LIST");
     command->add_option("--stats-json", args->stats_json,
                         "Write every end-of-render statistic as JSON to this file (- for standard output)")
         ->type_name("PATH");
-    const std::map<std::string, StatisticsDetail> stats_levels{
-        {"none", StatisticsDetail::None}, {"short", StatisticsDetail::Short}, {"full", StatisticsDetail::Full}};
-    command->add_option("--stats", args->stats,
-                        "Statistics printed after the render: short (default: times, speed, NaNs, memory), full "
-                        "(also rays, geometry and every work counter) or none")
-        ->transform(CLI::CheckedTransformer(stats_levels, CLI::ignore_case).description(""))
-        ->type_name("short|full|none");
+    add_stats_option(*command, args->stats);
     command->add_option("--time", args->time_budget,
                         "Time budget in seconds: the render stops within a sample of it, mid-pass if need be "
                         "(the image is then marked partial)")

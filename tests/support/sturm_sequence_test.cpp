@@ -6,13 +6,13 @@
 #include <vector>
 
 #include "geometry/polynomial/polynomial_test_support.h"
-#include "geometry/polynomial/sturm_sequence.h"
+#include "tests/support/sturm_sequence.h"
 
 namespace isotrace {
 namespace {
 
 TEST(SturmSequence, CountsDistinctRootsInHalfOpenIntervals) {
-    const SturmSequence sequence(Polynomial::from_roots(std::vector<double>{-1, 0.25, 0.5, 2}));
+    const SturmSequence sequence(polynomial_from_roots(std::vector<double>{-1, 0.25, 0.5, 2}));
     EXPECT_EQ(sequence.count_roots(0, 1), 2);
     EXPECT_EQ(sequence.count_roots(-10, 10), 4);
     EXPECT_EQ(sequence.count_roots(0.3, 0.4), 0);
@@ -21,7 +21,7 @@ TEST(SturmSequence, CountsDistinctRootsInHalfOpenIntervals) {
 }
 
 TEST(SturmSequence, MultipleRootsCountOnceEvenAtTheRootItself) {
-    const Polynomial p = Polynomial::from_roots(std::vector<double>{0.5, 0.5, 0.5, 0.25, 0.75, 0.75});
+    const Polynomial p = polynomial_from_roots(std::vector<double>{0.5, 0.5, 0.5, 0.25, 0.75, 0.75});
     const SturmSequence sequence(p);
     // gcd(p, p') = (t − 0.5)²(t − 0.75) and the square-free part (t − 0.25)(t − 0.5)(t − 0.75), up to scale.
     const Polynomial& repeated = sequence.repeated_factors();
@@ -39,7 +39,7 @@ TEST(SturmSequence, MultipleRootsCountOnceEvenAtTheRootItself) {
 
 TEST(SturmSequence, MembersAreNormalisedAtExtremeScales) {
     for (double scale : {1e-300, 1e300}) {
-        const SturmSequence sequence(Polynomial::from_roots(std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5}, scale));
+        const SturmSequence sequence(polynomial_from_roots(std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5}, scale));
         ASSERT_EQ(sequence.size(), 6);
         for (int i = 0; i < sequence.size(); ++i) {
             double largest = 0;
@@ -56,7 +56,7 @@ TEST(SturmSequence, MultipleRootsAreReportedOnceAsTangent) {
         for (int multiplicity : {2, 3}) {
             std::vector<double> roots_with_multiplicity(multiplicity, multiple_root);
             roots_with_multiplicity.push_back(0.8);
-            const PolynomialRoots roots = sturm_roots(Polynomial::from_roots(roots_with_multiplicity), 0, 1);
+            const PolynomialRoots roots = sturm_roots(polynomial_from_roots(roots_with_multiplicity), 0, 1);
             ASSERT_EQ(roots.size(), 2) << multiple_root << " " << multiplicity;
             EXPECT_NEAR(roots[0].t, multiple_root, 1e-9);
             EXPECT_TRUE(roots[0].tangent);

@@ -1,4 +1,4 @@
-#include "geometry/polynomial/sturm_sequence.h"
+#include "tests/support/sturm_sequence.h"
 
 #include <cmath>
 #include <limits>
