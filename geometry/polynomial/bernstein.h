@@ -109,7 +109,7 @@ BernsteinSigns signs(const Polynomial& p, double coefficient_error) {
 }  // namespace bernstein_detail
 
 inline BernsteinSigns bernstein_signs(const Polynomial& on_unit_interval, double coefficient_error) {
-    // All values at once in lanes (the blob sweep's pieces are of degree ≤ 6: two lanes of four). Inline, so that
+    // All values at once in lanes (the blob march's pieces are of degree ≤ 6: two lanes of four). Inline, so that
     // the AVX2 build of the blob cell queries has its own (blob_cell_queries.h).
     return with_coefficient_quads(on_unit_interval.degree(), [&]<int kQuads>() {
         return bernstein_detail::signs<kQuads>(on_unit_interval, coefficient_error);

@@ -106,7 +106,7 @@ private:
     int degree_ = 0;
 };
 
-// The operations of the blob sweep's inner loops and its root refinement, inline so that they fold into their
+// The operations of the blob march's inner loops and its root refinement, inline so that they fold into their
 // callers.
 inline double Polynomial::evaluate(double t) const {
     double value = coefficients_[degree_];

@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The values the blob sweep passes: signed, zero of both signs, tiny, huge, infinite.
+// The values the blob march passes: signed, zero of both signs, tiny, huge, infinite.
 const std::vector<double> kValues{-kInfinity, -1e300, -2.5, -1e-310, -0.0, 0.0, 1e-310, 0.75, 1.0, 3.0, 1e300,
                                   kInfinity};
 

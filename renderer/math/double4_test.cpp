@@ -1,4 +1,4 @@
-// Double4's horizontal sums: lane_sums must give lane_sum's bits (the blob sweep's piece polynomials rely on it).
+// Double4's horizontal sums: lane_sums must give lane_sum's bits (the blob march's piece polynomials rely on it).
 #include "renderer/math/double4.h"
 
 #include <gtest/gtest.h>

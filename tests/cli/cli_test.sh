@@ -990,7 +990,7 @@ import json, sys
 report = json.load(open(sys.argv[1]))
 problems = []
 machine = report["machine"]
-for key in ("cpu", "cores", "embree_isa", "blob_sweep_isa", "embree_version", "compiler", "flags", "isotrace_version", "commit"):
+for key in ("cpu", "cores", "embree_isa", "blob_march_isa", "embree_version", "compiler", "flags", "isotrace_version", "commit"):
     if not machine.get(key): problems.append("machine lacks " + key)
 # The commit of the build, not of the last configure (regression: it was recorded when CMake configured).
 import subprocess

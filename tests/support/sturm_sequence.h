@@ -1,7 +1,7 @@
 #pragma once
 // Sturm sequences (p, p', −rem(p, p'), ...): the number of sign changes of the sequence drops by one at each
 // distinct real root, which counts and isolates roots exactly up to rounding. Slower than the monotone-interval
-// finder, so it serves as the test oracle of the root finders and of the blob sweep (blob_stress_test.cpp).
+// finder, so it serves as the test oracle of the root finders and of the blob march (blob_stress_test.cpp).
 #include <array>
 
 #include "geometry/polynomial/polynomial.h"

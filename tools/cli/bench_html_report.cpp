@@ -15,7 +15,7 @@ std::string cell(const std::string& text, const char* tag = "td") {
 std::string machine_table(const nlohmann::json& machine) {
     const std::pair<const char*, const char*> rows[] = {
         {"CPU", "cpu"},           {"Cores", "cores"},       {"Embree ISA", "embree_isa"},
-        {"Embree native packets", "embree_native_packets"}, {"Blob sweep", "blob_sweep_isa"},
+        {"Embree native packets", "embree_native_packets"}, {"Blob march", "blob_march_isa"},
         {"Embree", "embree_version"},
         {"Compiler", "compiler"}, {"Flags", "flags"},       {"Build type", "build_type"},
         {"isotrace", "isotrace_version"},                   {"Commit", "commit"}};

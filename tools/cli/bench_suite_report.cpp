@@ -66,10 +66,10 @@ std::string suite_table(const nlohmann::json& report) {
     const auto& machine = report["machine"];
     const auto& settings = report["settings"];
     std::string out =
-        format("isotrace bench: %s, %u cores, Embree ISA %s, blob sweep %s; warm-up + %d run(s) per thread count\n",
+        format("isotrace bench: %s, %u cores, Embree ISA %s, blob march %s; warm-up + %d run(s) per thread count\n",
                machine["cpu"].get<std::string>().c_str(), machine["cores"].get<unsigned>(),
                machine["embree_isa"].get<std::string>().c_str(),
-               machine.value("blob_sweep_isa", std::string("unknown")).c_str(), settings["repeats"].get<int>());
+               machine.value("blob_march_isa", std::string("unknown")).c_str(), settings["repeats"].get<int>());
     const auto& workloads = report["workloads"];
     if (!workloads.empty()) {
         out += format("\n%-30s %-13s %7s %10s %10s %10s %9s %9s %10s\n", "workload", "unit", "threads", "median",

@@ -75,7 +75,7 @@ nlohmann::json machine_description() {
             {"cores", std::thread::hardware_concurrency()},
             {"embree_isa", embree_isa()},
             {"embree_native_packets", native_packets()},
-            {"blob_sweep_isa", blob_cell_queries().isa},
+            {"blob_march_isa", blob_cell_queries().isa},
             {"embree_version", std::to_string(rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_VERSION_MAJOR)) + "." +
                                    std::to_string(rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_VERSION_MINOR)) +
                                    "." +

@@ -6,7 +6,7 @@
 
 namespace isotrace::cli {
 
-// {"cpu", "cores", "embree_isa", "embree_native_packets", "blob_sweep_isa" (the build of the blob cell queries
+// {"cpu", "cores", "embree_isa", "embree_native_packets", "blob_march_isa" (the build of the blob cell queries
 //  this process uses, blob_cell_queries.h), "embree_version", "compiler", "flags", "build_type", "isotrace_version",
 //  "commit"}.
 nlohmann::json machine_description();

@@ -7,7 +7,7 @@ namespace {
 
 TEST(MachineDescription, HasEveryField) {
     const nlohmann::json machine = machine_description();
-    for (const char* key : {"cpu", "cores", "embree_isa", "embree_native_packets", "blob_sweep_isa", "embree_version",
+    for (const char* key : {"cpu", "cores", "embree_isa", "embree_native_packets", "blob_march_isa", "embree_version",
                             "compiler", "flags", "build_type", "isotrace_version", "commit"})
         EXPECT_TRUE(machine.contains(key)) << key;
     EXPECT_GE(machine["cores"].get<unsigned>(), 1u);
