@@ -71,10 +71,6 @@ void CsgShape::bake(const Transform& to_world) {
     for (Operand& operand : operands_) place(operand, to_world);
 }
 
-std::size_t CsgShape::transformed_child_count() const {
-    return std::size_t(std::count_if(operands_.begin(), operands_.end(), [](const Operand& o) { return o.to_csg.has_value(); }));
-}
-
 std::size_t CsgShape::memory_bytes() const {
     std::size_t bytes = operands_.capacity() * sizeof(Operand);
     for (const Operand& operand : operands_) bytes += operand.shape->memory_bytes();

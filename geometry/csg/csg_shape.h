@@ -53,8 +53,6 @@ public:
     const Shape& operand(std::size_t index) const { return *operands_[index].shape; }
     // Operand `index`'s placement in the CSG's space when it could not be baked into the operand.
     const std::optional<Transform>& operand_placement(std::size_t index) const { return operands_[index].to_csg; }
-    // Children whose transform could not be baked into them (they see rays mapped into their own space).
-    std::size_t transformed_child_count() const;
 
 private:
     struct Operand {

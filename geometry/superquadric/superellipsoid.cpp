@@ -94,7 +94,6 @@ IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
             signed_by(box.z, d_dw * (1 / radii.z))};
 }
 
-double Superellipsoid::inside_outside(const Vec3d& p) const { return std::pow(gauge(p), 2 / north_south); }
 
 Vec3d Superellipsoid::normal(const Vec3d& p) const {
     const double p1 = 2 / north_south, p2 = 2 / east_west;

@@ -30,8 +30,6 @@ struct Superellipsoid {
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents
     // above 2 near the coordinate planes).
     IntervalBox gradient_range(const IntervalBox& box) const;
-    // The paper's F = G^(2/ε1) (may overflow to +inf far away; the intersector never uses it).
-    double inside_outside(const Vec3d& p) const;
 
     // Outward unit normal (direction of ∇F). On the coordinate planes, where F has creases or cusps for
     // exponents ≥ 2, it is the limit from the positive side; at the poles of a pinched shape it is ±z.

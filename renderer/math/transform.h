@@ -21,7 +21,6 @@ public:
     static Transform look_at(const Vec3d& eye, const Vec3d& target, const Vec3d& up);
 
     const Matrix& matrix() const { return m_; }
-    const Matrix& inverse_matrix() const { return inv_; }
     Transform inverse() const;
     Transform operator*(const Transform& rhs) const;  // (A * B)(p) = A(B(p))
 

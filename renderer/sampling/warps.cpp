@@ -25,14 +25,6 @@ float square_to_uniform_sphere_pdf() {
     return 1.0f / (4.0f * kPi);
 }
 
-Vec3f square_to_uniform_hemisphere(std::array<float, 2> u) {
-    return direction_from_cos_theta(u[0], 2.0f * kPi * u[1]);
-}
-
-float square_to_uniform_hemisphere_pdf(const Vec3f& direction) {
-    return direction.z >= 0.0f ? 1.0f / (2.0f * kPi) : 0.0f;
-}
-
 std::array<float, 2> square_to_uniform_triangle(std::array<float, 2> u) {
     // Each half of the square is sheared onto one half of the triangle (split along b0 = b1).
     if (u[0] < u[1]) {

@@ -48,9 +48,6 @@ inline float square_to_cosine_hemisphere_pdf(const Vec3f& direction) {
 Vec3f square_to_uniform_sphere(std::array<float, 2> u);
 float square_to_uniform_sphere_pdf();
 
-Vec3f square_to_uniform_hemisphere(std::array<float, 2> u);
-float square_to_uniform_hemisphere_pdf(const Vec3f& direction);
-
 // Barycentrics (b0, b1) of a uniform point on a triangle, b2 = 1 - b0 - b1 (Heitz 2019, "A Low-Distortion
 // Map Between Triangle and Square": keeps strata compact, unlike the square-root map).
 std::array<float, 2> square_to_uniform_triangle(std::array<float, 2> u);
