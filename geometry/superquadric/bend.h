@@ -11,7 +11,7 @@
 // the centre) and the region's total angle is at most 180° (the angle is read within ±180° of the middle one).
 #include <string>
 
-#include "geometry/superquadric/interval.h"
+#include "renderer/math/interval.h"
 #include "geometry/superquadric/jacobian.h"
 
 namespace isotrace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "geometry/polynomial/polynomial.h"
-#include "geometry/superquadric/interval.h"
+#include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/superquadric/crossing_search.h"
+#include "geometry/field/crossing_search.h"
 #include "geometry/superquadric/deformation_chain.h"
 #include "geometry/superquadric/superellipsoid.h"
 #include "renderer/math/transform.h"

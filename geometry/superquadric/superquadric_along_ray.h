@@ -4,7 +4,7 @@
 // [a, b] of the ray — an interval bound of g, from the deformation chain's interval inverse and the gauge's
 // monotonicity in |x|, |y|, |z|, and an interval bound of g′, from the gauge's gradient range and the chain's
 // interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]).
-#include "geometry/superquadric/interval.h"
+#include "renderer/math/interval.h"
 #include "geometry/superquadric/superquadric.h"
 
 namespace isotrace {

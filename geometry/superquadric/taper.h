@@ -4,7 +4,7 @@
 // so the cross-section keeps its size at the bottom (z = −a3) and is scaled by 1 + rate at the top (z = a3).
 #include <string>
 
-#include "geometry/superquadric/interval.h"
+#include "renderer/math/interval.h"
 #include "geometry/superquadric/jacobian.h"
 
 namespace isotrace {

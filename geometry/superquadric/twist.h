@@ -3,7 +3,7 @@
 // bottom (z = −a3) stays put and the top turns by rate·2·a3.
 #include <string>
 
-#include "geometry/superquadric/interval.h"
+#include "renderer/math/interval.h"
 #include "geometry/superquadric/jacobian.h"
 
 namespace isotrace {

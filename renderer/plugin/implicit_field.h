@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 
+#include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
@@ -52,6 +53,20 @@ public:
     // Conservative: false only when no surface point lies within `radius` of `centre`. The polygonisers subdivide
     // only cells for which it is true, so a field that cannot tell may always answer true (at the cost of time).
     virtual bool may_reach_surface(const Vec3d& centre, double radius) const = 0;
+
+    // Guaranteed bounds, for searches that must not miss a thin feature (isosurfaces that use this field as a
+    // term, interval octrees): an interval that contains f over `box`, and one that contains the derivative of f
+    // along `direction` over `box` wherever f is differentiable there. A field that cannot bound answers
+    // Interval::unbounded(), which is always correct and only costs search time.
+    virtual Interval value_range(const IntervalBox& box) const {
+        (void)box;
+        return Interval::unbounded();
+    }
+    virtual Interval slope_range(const IntervalBox& box, const Vec3d& direction) const {
+        (void)box;
+        (void)direction;
+        return Interval::unbounded();
+    }
 };
 
 }  // namespace isotrace

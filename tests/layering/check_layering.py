@@ -35,10 +35,11 @@ LAYERS = {
         ["renderer/distributed"],
     ],
     "geometry": [
-        ["geometry/polynomial", "geometry/curves", "geometry/field"],
+        ["geometry/polynomial", "geometry/curves", "geometry/field", "geometry/expression"],
         ["geometry/csg"],
-        ["geometry/sphere", "geometry/box", "geometry/superquadric", "geometry/mesh"],
-        ["geometry/implicit", "geometry/sweep"],
+        ["geometry/sphere", "geometry/box", "geometry/superquadric", "geometry/mesh", "geometry/plane", "geometry/disk",
+         "geometry/rectangle", "geometry/cylinder", "geometry/cone", "geometry/torus"],
+        ["geometry/implicit", "geometry/sweep", "geometry/isosurface"],
         ["geometry/polygonize", "geometry/abm_patch"],
     ],
     "integrators": [

@@ -2,7 +2,7 @@
 // sign-change bracket is still found first, every crossing is visited in order with its direction, a convex
 // caller's bracket and a bracket proven monotone by the derivative bound are refined at once (with the same
 // crossings as without the derivative bound), and visiting stops when asked.
-#include "geometry/superquadric/crossing_search.h"
+#include "geometry/field/crossing_search.h"
 
 #include <gtest/gtest.h>
 

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "geometry/superquadric/interval.h"
+#include "renderer/math/interval.h"
 
 namespace isotrace {
 

@@ -1,6 +1,6 @@
 #pragma once
-// Closed intervals of doubles and the few operations the superquadric's inverse deformations need, so that the
-// range of the inside-outside function over a stretch of ray can be bounded (interval arithmetic, Moore 1966).
+// Closed intervals of doubles and their arithmetic (Moore, "Interval Analysis"), so that the range of a function
+// over a box or a stretch of ray can be bounded: the superquadrics' inverse deformations, implicit fields.
 // Computed in round-to-nearest: a bound may be off by a few ulps, which can only matter for contacts at the
 // rounding level (see docs/decisions.md).
 #include <algorithm>
