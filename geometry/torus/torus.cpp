@@ -61,9 +61,11 @@ TorusCrossings torus_crossings(const Torus& torus, const Vec3d& origin, const Ve
     const Vec3d& o = line.origin;
     const Vec3d& u = line.direction;
     // Only the chord inside the bounding sphere (radius 1 + r) can hold roots; a line that misses it costs no more.
-    const double outer = 1 + r, nearest2 = dot(o, o);
-    if (!(nearest2 < outer * outer)) return result;
-    const double half_chord = std::sqrt(outer * outer - nearest2) * (1 + 1e-12);
+    // Where the line grazes the outer equator the roots lie at the chord's very ends, which the subtraction below
+    // rounds: the chord is widened by far more than that (1e-6 of R at a tangent line, less elsewhere).
+    const double outer2 = (1 + r) * (1 + r), nearest2 = dot(o, o);
+    if (!(nearest2 < outer2 * (1 + 1e-12))) return result;
+    const double half_chord = std::sqrt(std::max(0.0, outer2 - nearest2) + 1e-12 * outer2);
     const double lo = std::max(-half_chord, t_min * line.scale - line.shift);
     const double hi = std::min(half_chord, t_max * line.scale - line.shift);
     if (!(lo < hi)) return result;
@@ -72,19 +74,24 @@ TorusCrossings torus_crossings(const Torus& torus, const Vec3d& origin, const Ve
     const double radial_u = u.x * u.x + u.y * u.y, radial_ou = o.x * u.x + o.y * u.y, radial_o = o.x * o.x + o.y * o.y;
     const Polynomial quartic{gamma * gamma - 4 * radial_o, 2 * beta * gamma - 8 * radial_ou,
                              beta * beta + 2 * gamma - 4 * radial_u, 2 * beta, 1};
-    const RootTolerance tolerance;
-    double from = lo;
-    // At most four roots, each found once; tangent contacts among them are skipped.
-    for (int found = 0; found < 4 && from <= hi; ++found) {
-        const std::optional<PolynomialRoot> root = first_root(quartic, from, hi, tolerance);
-        if (!root) break;
-        from = root->t + tolerance.width_at(root->t);
-        if (root->tangent) continue;  // touches without crossing: a grazing contact is a miss
-        const double t = (polish(line, r, root->t) + line.shift) / line.scale;
-        if (!(t > t_min && t < t_max)) continue;
-        if (result.count > 0 && !(t > result.t[std::size_t(result.count - 1)])) continue;
+    // A root's polished t, kept when it lies strictly inside the range; a tangent contact is a miss (grazing).
+    const auto add = [&](const PolynomialRoot& root) {
+        if (root.tangent) return;
+        const double t = (polish(line, r, root.t) + line.shift) / line.scale;
+        if (!(t > t_min && t < t_max)) return;
+        if (result.count > 0 && !(t > result.t[std::size_t(result.count - 1)])) return;
         result.t[std::size_t(result.count++)] = t;
-        if (first_only) break;
+    };
+    // The first root alone is cheaper to find than all four; when it is no crossing, all of them are searched.
+    if (first_only) {
+        const std::optional<PolynomialRoot> first = first_root(quartic, lo, hi);
+        if (!first) return result;
+        add(*first);
+        if (result.count > 0) return result;
+    }
+    for (const PolynomialRoot& root : all_roots(quartic, lo, hi)) {
+        add(root);
+        if (first_only && result.count > 0) break;
     }
     return result;
 }
