@@ -243,6 +243,42 @@ case_exr_aovs() {
   if grep -q "albedo.R" "$work/d_info"; then fail "--aov depth,normal added albedo"; fi
 }
 
+case_round_primitives() {  # the cylinders, cones and tori of scenes/includes render without NaN and mesh closed
+  cat >"$work/round.json" <<JSON
+{
+  "isotrace": 1,
+  "include": "$PWD/scenes/includes/round_primitives.json",
+  "film": {"resolution": [48, 24], "spp": 2},
+  "camera": {"type": "perspective", "fov": 60, "look_at": {"eye": [0, 1.8, 4.2], "target": [0, 0.45, -0.7]}},
+  "lights": [{"type": "directional", "direction": [-1, -2, -1.5], "irradiance": 1.5}],
+  "objects": [{"name": "floor", "material": "round_white", "shape": {"type": "box", "center": [0, -0.05, 0], "half_size": [8, 0.05, 8]}}]
+}
+JSON
+  cli_expect 0 render "$work/round.json" --quiet -o "$work/round.exr" --stats-json "$work/s.json"
+  python3 - "$work/s.json" <<'PY' || fail "the round primitives' render statistics are wrong"
+import json, sys
+stats = json.load(open(sys.argv[1]))
+problems = [key for key in ["nan_samples", "non_finite_pixels"] if stats.get(key) != 0]
+for shape in ["cylinder", "cone", "torus"]:
+    if not stats["geometry"].get(shape, {}).get("intersection_tests", 0) > 0: problems.append("no tests of " + shape)
+for problem in problems: print("stats:", problem, file=sys.stderr)
+sys.exit(1 if problems else 0)
+PY
+  # Meshes with the Euler characteristic of closed surfaces of genus 0 (the cylinder) and 1 (the torus, the bored
+  # frustum): V − E + F = 2 − 2g with E = 3F/2.
+  local object genus
+  for object in round_cylinder:0 round_torus:1 round_bored_frustum:1; do
+    genus=${object#*:}
+    cli_expect 0 mesh "$work/round.json" --object "${object%:*}" --method dc --depth 5 -o "$work/m.ply"
+    cat "$work/stdout" "$work/stderr" >"$work/mesh.log"
+    python3 - "$work/mesh.log" "$genus" <<'PY' || fail "the mesh of ${object%:*} is not closed of genus $genus"
+import re, sys
+v, f = map(int, re.search(r"(\d+) vertices, (\d+) triangles", open(sys.argv[1]).read()).groups())
+sys.exit(0 if f % 2 == 0 and v - 3 * f // 2 + f == 2 - 2 * int(sys.argv[2]) else 1)
+PY
+  done
+}
+
 case_valid_minimal_scene() {  # the base of the malformed-scene cases renders
   mkdir -p "$work/scene"
   write_base_scene "$work/scene/scene.json"
