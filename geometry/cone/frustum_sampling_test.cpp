@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geometry/cone/frustum_shape.h"
+#include "geometry/cone/round_shapes_test_support.h"
 #include "renderer/sampling/independent_sampler.h"
 #include "renderer/scene/render_scene.h"
 #include "tests/support/chi_square.h"
@@ -54,19 +55,7 @@ TEST(FrustumSampling, AreaPdfAndOutwardNormals) {
         ASSERT_TRUE(baked.shape->supports_surface_sampling());
         const double area = caps ? kSide + kBase + kTop : kSide;
         EXPECT_NEAR(baked.shape->surface_area(), area, 1e-5 * area);
-        for (uint32_t i = 0; i < 500; ++i) {
-            const SurfaceSample s = baked.shape->sample_surface(u_sample(i));
-            EXPECT_NEAR(s.pdf_area * baked.shape->surface_area(), 1.0, 1e-6);
-            EXPECT_NEAR(length(s.normal), 1.0f, 1e-6f);
-            Ray ray;
-            ray.origin = s.position + s.normal * 0.01f;
-            ray.direction = -s.normal;
-            ray.t_far = 1;
-            const auto hit = baked.scene->intersect(ray, RayKind::Camera);
-            ASSERT_TRUE(hit) << i;
-            EXPECT_NEAR(hit->t, 0.01f, 1e-4f) << i;
-            EXPECT_NEAR(dot(hit->geometric_normal, s.normal), 1.0f, 1e-4f) << i;
-        }
+        round_test::expect_samples_hit_back(*baked.scene, *baked.shape, u_sample);
     }
 }
 

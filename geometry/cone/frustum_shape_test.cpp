@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geometry/cone/frustum_shape.h"
+#include "geometry/cone/round_shapes_test_support.h"
 #include "geometry/csg/csg_test_support.h"
 #include "geometry/mesh/mesh_test_support.h"
 #include "renderer/core/render_counters.h"
@@ -227,14 +228,7 @@ TEST(Frustum, BoundsAreTheRimsBoxes) {
 // ---- through a RenderScene --------------------------------------------------------------------------------
 
 std::unique_ptr<RenderScene> frustum_scene(const Frustum& f, const Transform& to_world = {}, const char* type = "cone") {
-    auto scene = std::make_unique<RenderScene>();
-    SceneObject object;
-    object.name = "frustum";
-    object.shape = std::make_unique<FrustumShape>(type, f);
-    object.to_world = to_world;
-    scene->add_object(std::move(object));
-    scene->commit();
-    return scene;
+    return csg_test::scene_of(std::make_unique<FrustumShape>(type, f), to_world);
 }
 
 TEST(FrustumShape, HitsNormalsAndPartsThroughEmbree) {
@@ -358,35 +352,20 @@ TEST(FrustumShape, SimilaritiesAreBakedOtherTransformsInstanced) {
     const Transform similarity =
         Transform::translate({1, -2, 3}) * Transform::rotate({1, 1, 0}, 30) * Transform::scale({-2.5, 2.5, 2.5});
     const Transform stretch = Transform::translate({0.5, 0, 1}) * Transform::rotate({0, 0, 1}, 20) * Transform::scale({1, 3, 0.5});
-    std::mt19937 random(9);
-    std::uniform_real_distribution<double> unit(-1, 1);
     for (const bool similar : {true, false}) {
         const Transform& to_world = similar ? similarity : stretch;
         const auto scene = frustum_scene(f, to_world);
         ASSERT_EQ(scene->objects()[0].instanced, !similar);
-        int hits = 0;
-        for (int i = 0; i < 300; ++i) {
-            const Vec3d o(Vec3f(to_world.point(Vec3d(unit(random), unit(random), unit(random)) * 6.0)));
-            const Vec3d target = to_world.point(Vec3d(unit(random), 1 + unit(random), unit(random)));
-            const Vec3d d(Vec3f(target - o));
-            // In object space the frustum is f and t is unchanged by the affine map.
-            const Vec3d oo = to_world.inverse().point(o), od = to_world.inverse().vector(d);
-            const FrustumCrossings expected = frustum_crossings(f, oo, od);
-            std::optional<FrustumCrossing> first;  // the first crossing ahead of the origin
-            bool near_origin = false;
-            for (int k = expected.count - 1; k >= 0; --k) {
-                near_origin = near_origin || std::abs(expected.crossing[std::size_t(k)].t) < 1e-3;
-                if (expected.crossing[std::size_t(k)].t > 0) first = expected.crossing[std::size_t(k)];
-            }
-            if (near_origin) continue;
-            const auto hit = scene->intersect(make_ray(o, d), RayKind::Camera);
-            ASSERT_EQ(hit.has_value(), first.has_value()) << i;
-            if (!hit) continue;
-            ++hits;
-            EXPECT_NEAR(hit->t, first->t, 1e-5 * first->t) << i;
-            const Vec3d n = normalize(to_world.normal(frustum_normal(f, first->part, oo + od * first->t)));
-            expect_near(hit->geometric_normal, n, 1e-5, "normal of ray " + std::to_string(i));
-        }
+        const int hits = round_test::expect_hits_as_in_object_space(
+            *scene, to_world, {0, 1, 0}, 9, [&](const Vec3d& o, const Vec3d& d) {
+                const FrustumCrossings c = frustum_crossings(f, o, d);
+                std::vector<round_test::ObjectHit> hits;
+                for (int k = 0; k < c.count; ++k) {
+                    const FrustumCrossing& x = c.crossing[std::size_t(k)];
+                    hits.push_back({x.t, frustum_normal(f, x.part, o + d * x.t)});
+                }
+                return hits;
+            });
         EXPECT_GT(hits, 100);
     }
     // The baked frustum: end points and radii carried, the mirror keeps normals outward.
@@ -464,19 +443,7 @@ TEST(FrustumField, ExactSignedDistanceAndGradient) {
         frustum_bounds(f, lower, upper);
         EXPECT_EQ(box.lower, lower);
         EXPECT_EQ(box.upper, upper);
-        for (int b = 0; b < 50; ++b) {
-            const Vec3d corner = middle + Vec3d(unit(random), unit(random), unit(random)) * 2.0;
-            const Vec3d size = Vec3d(std::abs(unit(random)), std::abs(unit(random)), std::abs(unit(random))) * 0.5;
-            const IntervalBox ib{{corner.x, corner.x + size.x}, {corner.y, corner.y + size.y}, {corner.z, corner.z + size.z}};
-            const Vec3d direction = Vec3d(unit(random), unit(random), unit(random));
-            const Interval values = field->value_range(ib), slopes = field->slope_range(ib, direction);
-            for (int s = 0; s < 50; ++s) {
-                const Vec3d p = corner + Vec3d(size.x * (0.5 + 0.5 * unit(random)), size.y * (0.5 + 0.5 * unit(random)),
-                                               size.z * (0.5 + 0.5 * unit(random)));
-                EXPECT_TRUE(values.contains(field->value(p)));
-                EXPECT_TRUE(slopes.contains(dot(field->gradient(p), direction)));
-            }
-        }
+        round_test::expect_distance_bounds_hold(*field, middle, 2.0, 16);
     }
 }
 
@@ -495,13 +462,7 @@ TEST(FrustumField, KnownDistancesOfACylinder) {
 
 // ---- scene-format errors ----------------------------------------------------------------------------------
 
-std::string scene_with_shape(const std::string& shape) {
-    return R"({"isotrace": 1, "film": {"resolution": [4, 4]},
-  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
-  "materials": {"m": {"type": "diffuse"}},
-  "objects": [{"material": "m", "shape": )" +
-           shape + "}]}";
-}
+using round_test::scene_with_shape;
 
 TEST(ConeScene, LoadsApexAndTruncatedForms) {
     mesh_test::ScratchDirectory dir;
@@ -522,11 +483,7 @@ TEST(ConeScene, LoadsApexAndTruncatedForms) {
 }
 
 TEST(ConeScene, BadInputIsAnInputErrorAtTheKey) {
-    mesh_test::ScratchDirectory dir;
-    const struct {
-        const char* shape;
-        const char* where;
-    } cases[] = {
+    const round_test::BadInput cases[] = {
         {R"({"type": "cone", "base_radius": -1})", "objects[0].shape.base_radius"},
         {R"({"type": "cone", "top_radius": -0.5})", "objects[0].shape.top_radius"},
         {R"({"type": "cone", "base_radius": 0, "top_radius": 0})", "objects[0].shape.base_radius"},
@@ -538,12 +495,7 @@ TEST(ConeScene, BadInputIsAnInputErrorAtTheKey) {
         {R"({"type": "cone", "caps": 1})", "objects[0].shape.caps"},
         {R"({"type": "cone", "apex": [0, NaN, 0]})", "expected a JSON value"},  // JSON has no NaN
     };
-    for (const auto& c : cases) {
-        const std::string path = dir.write("s.json", scene_with_shape(c.shape));
-        const std::string message = mesh_test::input_error_message([&] { load_scene(path); });
-        EXPECT_NE(message.find(c.where), std::string::npos) << c.shape << ": " << message;
-        EXPECT_NE(message.find(path + ":4:"), std::string::npos) << c.shape << ": " << message;
-    }
+    round_test::expect_input_errors(cases);
 }
 
 TEST(ConeScene, AnOpenConeIsRejectedAsACsgChild) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "geometry/cone/frustum_shape.h"
+#include "geometry/cone/round_shapes_test_support.h"
 #include "geometry/csg/csg_test_support.h"
 #include "geometry/mesh/mesh_test_support.h"
 #include "renderer/scene/loaded_scene.h"
@@ -13,13 +14,7 @@
 namespace isotrace {
 namespace {
 
-std::string scene_with_shape(const std::string& shape) {
-    return R"({"isotrace": 1, "film": {"resolution": [4, 4]},
-  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
-  "materials": {"m": {"type": "diffuse"}},
-  "objects": [{"material": "m", "shape": )" +
-           shape + "}]}";
-}
+using round_test::scene_with_shape;
 
 TEST(CylinderScene, LoadsAFrustumOfEqualRadii) {
     mesh_test::ScratchDirectory dir;
@@ -63,11 +58,7 @@ TEST(CylinderScene, ACappedCylinderIsACsgSolid) {
 }
 
 TEST(CylinderScene, BadInputIsAnInputErrorAtTheKey) {
-    mesh_test::ScratchDirectory dir;
-    const struct {
-        const char* shape;
-        const char* where;
-    } cases[] = {
+    const round_test::BadInput cases[] = {
         {R"({"type": "cylinder", "radius": 0})", "objects[0].shape.radius"},
         {R"({"type": "cylinder", "radius": -2})", "objects[0].shape.radius"},
         {R"({"type": "cylinder", "top": [0, 0, 0]})", "objects[0].shape.top"},
@@ -78,12 +69,7 @@ TEST(CylinderScene, BadInputIsAnInputErrorAtTheKey) {
         {R"({"type": "cylinder", "radius": 1, "axis": [0, 1, 0]})", "axis"},
         {R"({"type": "cylinder", "radius": NaN})", "expected a JSON value"},  // JSON has no NaN
     };
-    for (const auto& c : cases) {
-        const std::string path = dir.write("s.json", scene_with_shape(c.shape));
-        const std::string message = mesh_test::input_error_message([&] { load_scene(path); });
-        EXPECT_NE(message.find(c.where), std::string::npos) << c.shape << ": " << message;
-        EXPECT_NE(message.find(path + ":4:"), std::string::npos) << c.shape << ": " << message;
-    }
+    round_test::expect_input_errors(cases);
 }
 
 TEST(CylinderScene, AnOpenCylinderIsRejectedAsACsgChildAtTheChild) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/cone/round_shapes_test_support.h"
 #include "geometry/csg/csg_test_support.h"
 #include "geometry/mesh/mesh_test_support.h"
 #include "geometry/torus/torus_shape.h"
@@ -189,14 +190,7 @@ TEST(Torus, GrazingRaysHitJustInsideAndMissJustOutside) {
 // ---- through a RenderScene --------------------------------------------------------------------------------
 
 std::unique_ptr<RenderScene> torus_scene(const Torus& torus, const Transform& to_world = {}) {
-    auto scene = std::make_unique<RenderScene>();
-    SceneObject object;
-    object.name = "torus";
-    object.shape = std::make_unique<TorusShape>(torus);
-    object.to_world = to_world;
-    scene->add_object(std::move(object));
-    scene->commit();
-    return scene;
+    return csg_test::scene_of(std::make_unique<TorusShape>(torus), to_world);
 }
 
 TEST(TorusShape, HitsAndNormalsThroughEmbree) {
@@ -273,34 +267,16 @@ TEST(TorusShape, SimilaritiesAreBakedOtherTransformsInstanced) {
     const Transform similarity =
         Transform::translate({1, -2, 3}) * Transform::rotate({1, 1, 0}, 30) * Transform::scale({2.5, -2.5, 2.5});
     const Transform stretch = Transform::translate({0.5, 0, 1}) * Transform::rotate({0, 0, 1}, 20) * Transform::scale({1, 3, 0.5});
-    std::mt19937 random(12);
-    std::uniform_real_distribution<double> unit(-1, 1);
     for (const bool similar : {true, false}) {
         const Transform& to_world = similar ? similarity : stretch;
         const auto scene = torus_scene(torus, to_world);
         ASSERT_EQ(scene->objects()[0].instanced, !similar);
-        int hits = 0;
-        for (int i = 0; i < 300; ++i) {
-            const Vec3d o(Vec3f(to_world.point(Vec3d(unit(random), unit(random), unit(random)) * 5.0)));
-            const Vec3d target = to_world.point(Vec3d(unit(random), 0.3 * unit(random), unit(random)));
-            const Vec3d d(Vec3f(target - o));
-            const Vec3d oo = to_world.inverse().point(o), od = to_world.inverse().vector(d);
-            const std::vector<double> all = crossings_of(torus, oo, od);
-            std::optional<double> first;
-            bool near_origin = false;
-            for (const double t : all) {
-                near_origin = near_origin || std::abs(t) < 1e-3;
-                if (t > 0 && !first) first = t;
-            }
-            if (near_origin) continue;
-            const auto hit = scene->intersect(make_ray(o, d), RayKind::Camera);
-            ASSERT_EQ(hit.has_value(), first.has_value()) << i;
-            if (!hit) continue;
-            ++hits;
-            EXPECT_NEAR(hit->t, *first, 1e-5 * *first) << i;
-            const Vec3d n = normalize(to_world.normal(torus_gradient(torus, oo + od * *first)));
-            expect_near(hit->geometric_normal, n, 1e-5, "normal of ray " + std::to_string(i));
-        }
+        const int hits = round_test::expect_hits_as_in_object_space(
+            *scene, to_world, {0, 0, 0}, 12, [&](const Vec3d& o, const Vec3d& d) {
+                std::vector<round_test::ObjectHit> hits;
+                for (const double t : crossings_of(torus, o, d)) hits.push_back({t, torus_gradient(torus, o + d * t)});
+                return hits;
+            });
         EXPECT_GT(hits, 60);
     }
     const auto scene = torus_scene(torus, similarity);
@@ -355,31 +331,12 @@ TEST(TorusField, ExactSignedDistanceGradientAndBounds) {
         }
         EXPECT_NEAR(length(tilted->gradient(p) - numeric), 0, 1e-6) << i;
     }
-    for (int b = 0; b < 50; ++b) {
-        const Vec3d corner = torus.origin + Vec3d(unit(random), unit(random), unit(random)) * 1.5;
-        const Vec3d size = Vec3d(std::abs(unit(random)), std::abs(unit(random)), std::abs(unit(random))) * 0.4;
-        const IntervalBox ib{{corner.x, corner.x + size.x}, {corner.y, corner.y + size.y}, {corner.z, corner.z + size.z}};
-        const Vec3d direction(unit(random), unit(random), unit(random));
-        const Interval values = tilted->value_range(ib), slopes = tilted->slope_range(ib, direction);
-        for (int s = 0; s < 50; ++s) {
-            const Vec3d p = corner + Vec3d(size.x * (0.5 + 0.5 * unit(random)), size.y * (0.5 + 0.5 * unit(random)),
-                                           size.z * (0.5 + 0.5 * unit(random)));
-            EXPECT_TRUE(values.contains(tilted->value(p)));
-            EXPECT_TRUE(slopes.contains(dot(tilted->gradient(p), direction)));
-        }
-        EXPECT_LE(values.width(), length(size) * (1 + 1e-12));  // as tight as a Lipschitz bound gets
-    }
+    round_test::expect_distance_bounds_hold(*tilted, torus.origin, 1.5, 15);
 }
 
 // ---- scene-format errors ----------------------------------------------------------------------------------
 
-std::string scene_with_shape(const std::string& shape) {
-    return R"({"isotrace": 1, "film": {"resolution": [4, 4]},
-  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 5], "target": [0, 0, 0]}},
-  "materials": {"m": {"type": "diffuse"}},
-  "objects": [{"material": "m", "shape": )" +
-           shape + "}]}";
-}
+using round_test::scene_with_shape;
 
 TEST(TorusScene, LoadsAndNormalisesTheAxis) {
     mesh_test::ScratchDirectory dir;
@@ -393,11 +350,7 @@ TEST(TorusScene, LoadsAndNormalisesTheAxis) {
 }
 
 TEST(TorusScene, BadInputIsAnInputErrorAtTheKey) {
-    mesh_test::ScratchDirectory dir;
-    const struct {
-        const char* shape;
-        const char* where;
-    } cases[] = {
+    const round_test::BadInput cases[] = {
         {R"({"type": "torus", "major_radius": 0})", "objects[0].shape.major_radius"},
         {R"({"type": "torus", "minor_radius": -0.1})", "objects[0].shape.minor_radius"},
         {R"({"type": "torus", "major_radius": 1, "minor_radius": 1})", "objects[0].shape.minor_radius"},
@@ -407,12 +360,7 @@ TEST(TorusScene, BadInputIsAnInputErrorAtTheKey) {
         {R"({"type": "torus", "center": [9e17, 0, 0], "major_radius": 2e17})", "objects[0].shape"},
         {R"({"type": "torus", "major_radius": NaN})", "expected a JSON value"},  // JSON has no NaN
     };
-    for (const auto& c : cases) {
-        const std::string path = dir.write("s.json", scene_with_shape(c.shape));
-        const std::string message = mesh_test::input_error_message([&] { load_scene(path); });
-        EXPECT_NE(message.find(c.where), std::string::npos) << c.shape << ": " << message;
-        EXPECT_NE(message.find(path + ":4:"), std::string::npos) << c.shape << ": " << message;
-    }
+    round_test::expect_input_errors(cases);
 }
 
 }  // namespace
