@@ -159,7 +159,7 @@ LocalShading FrustumShape::shading(const RTCHit& hit, const Vec3f& geometric_nor
     } else {
         // p(u, v) = centre + v·r·(cos φ, sin φ).
         const double radius = part == FrustumPart::Top ? f.top_radius : f.base_radius;
-        const double v = std::min(rho / radius, 1.0);
+        const double v = radius > 0 ? std::min(rho / radius, 1.0) : 0;  // a cone's apex, hit head on, is a "cap" of radius 0
         shading.uv = {float(u), float(v)};
         shading.dpdu = Vec3f(around * (kTwoPi * v * radius));
         shading.dpdv = Vec3f(radial * radius);
