@@ -2,15 +2,18 @@
 // AreaLight: an emissive object whose (world-space, baked) shape can draw points uniformly by area. The scene
 // makes one per such object; it is not a registry plugin.
 //
-// sample() draws a point on the surface and converts the area density to solid angle at the shading point:
-// pdf = pdf_area * distance^2 / |cos_light|. The radiance is the material's emission at that point towards the
-// shading point. A one-sided emitter seen from behind therefore yields radiance 0 while the pdf stays the
-// geometric density above (so pdf() needs no knowledge of the material and always equals sample()'s pdf);
-// integrators should skip the shadow ray of a black sample. pdf 0 is returned only when no sample exists
-// (the point lies on the light, or the sampled point is seen exactly edge-on).
+// sample() draws a point on the surface. Where the shape samples by solid angle from the shading point
+// (Shape::supports_solid_angle_sampling, e.g. a rectangle), the point is drawn that way and the pdf is the shape's
+// density per unit solid angle; elsewhere it is drawn uniformly by area and the area density is converted to solid
+// angle at the shading point: pdf = pdf_area * distance^2 / |cos_light|. pdf() asks the shape the same question
+// for the same shading point, so it always returns the density sample() draws with (multiple importance sampling
+// stays consistent). The radiance is the material's emission at that point towards the shading point. A one-sided
+// emitter seen from behind therefore yields radiance 0 while the pdf stays the geometric density above (so pdf()
+// needs no knowledge of the material); integrators should skip the shadow ray of a black sample. pdf 0 is returned
+// only when no sample exists (the point lies on the light, or the sampled point is seen exactly edge-on).
 //
 // The emission is probed with a SurfaceHit holding position, geometric and shading normal (both the sampled
-// normal), t = distance and the material; uv is not known to SurfaceSample and is left at (0, 0).
+// normal), t = distance and the material; uv is not known to the samples and is left at (0, 0).
 #include "renderer/plugin/light.h"
 #include "renderer/plugin/material.h"
 #include "renderer/plugin/shape.h"
@@ -35,7 +38,13 @@ public:
 private:
     const Shape& shape_;
     const Material& material_;
+    // The light at `position` on the surface (front `normal`) seen from `point`, drawn with solid-angle density
+    // pdf(distance², |cos_light|).
+    template <class Pdf>
+    LightSample towards(const Vec3f& point, const Vec3f& position, const Vec3f& normal, Pdf&& pdf) const;
+
     float pdf_area_ = 0;  // 1 / area
+    bool by_solid_angle_ = false;  // the shape may sample by solid angle
     float power_ = 0;
 };
 

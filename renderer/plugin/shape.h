@@ -57,6 +57,13 @@ struct SurfaceSample {
     float pdf_area = 0;  // density per unit area
 };
 
+// A point drawn on a shape's surface as seen from a reference point, for area lights that sample by solid angle.
+struct SolidAngleSample {
+    Vec3f position;
+    Vec3f normal;               // unit geometric normal (the front side)
+    float pdf_solid_angle = 0;  // density per unit solid angle at the reference point; 0 = no sample
+};
+
 // Shading that Embree's hit alone gives: both normals the geometric one (Embree's Ng, normalised) and Embree's
 // barycentric (u, v) as uv, swapped for shapes whose triangles were reversed (see Shape::hit_shading).
 inline LocalShading shading_of_embree_hit(const RTCHit& hit, const Vec3f& geometric_normal, bool swap_uv) {
@@ -103,6 +110,26 @@ public:
         return {};
     }
     virtual float surface_area() const { return 0; }
+    // Area lights by solid angle (optional; e.g. the rectangle, after Ureña, Fajardo and King): a shape that can
+    // draw its points uniformly over the solid angle it subtends at a reference point says so here, and its area
+    // light then samples it that way. solid_angle_pdf(reference) is the density sample_solid_angle(reference, ·)
+    // draws with (uniform, so one number for every point it returns), or 0 where the shape does not sample by
+    // solid angle from `reference` (an angle too small to compute, the reference in the surface's plane): the
+    // light then samples by area from there. Both decide alike, so a light's sample() and pdf() always agree.
+    virtual bool supports_solid_angle_sampling() const { return false; }
+    virtual SolidAngleSample sample_solid_angle(const Vec3f& reference, std::array<float, 2> u) const {
+        (void)reference, (void)u;
+        return {};
+    }
+    virtual float solid_angle_pdf(const Vec3f& reference) const {
+        (void)reference;
+        return 0;
+    }
+    // True for a shape without finite extent (the infinite plane): bounds() is then the finite box it is given to
+    // Embree, which reaches the edge of the world (kWorldLimit), and the scene leaves it out of its own extent
+    // (RenderScene::bounds(): how far lights at infinity must reach) and out of the check that a transformed
+    // shape stays inside the world.
+    virtual bool is_unbounded() const { return false; }
 
     // Completes a hit found by Embree in this shape's space: `geometric_normal` is Embree's Ng normalised and
     // `point` the hit position. Only the accepted hit is completed, so shapes whose normals cost work (implicit

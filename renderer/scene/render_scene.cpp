@@ -9,6 +9,7 @@
 #include "renderer/embree/embree_device.h"
 #include "renderer/embree/embree_ray.h"
 #include "renderer/lights/area_light.h"
+#include "renderer/math/box_corner.h"
 
 namespace isotrace {
 namespace {
@@ -288,11 +289,30 @@ float RenderScene::light_probability(const Light* light) const {
 }
 
 Bounds3f RenderScene::bounds() const {
-    RTCBounds b;
-    rtcGetSceneBounds(scene_, &b);
+    bool unbounded = false;
+    for (const SceneObject& object : objects_) unbounded = unbounded || object.shape->is_unbounded();
     Bounds3f result;
-    result.lower = {b.lower_x, b.lower_y, b.lower_z};
-    result.upper = {b.upper_x, b.upper_y, b.upper_z};
+    if (!unbounded) {
+        RTCBounds b;
+        rtcGetSceneBounds(scene_, &b);
+        result.lower = {b.lower_x, b.lower_y, b.lower_z};
+        result.upper = {b.upper_x, b.upper_y, b.upper_z};
+        return result;
+    }
+    // Embree's box then reaches the world's edge: the extent is that of the other objects' own bounds, or a metre
+    // around the origin when there are none (lights at infinity need some extent to weigh their power by).
+    for (const SceneObject& object : objects_) {
+        const Bounds3f own = object.shape->bounds();
+        if (object.shape->is_unbounded() || own.empty()) continue;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3d p = box_corner(Vec3d(own.lower), Vec3d(own.upper), corner);
+            result.extend(Vec3f(object.instanced ? object.to_world.point(p) : p));
+        }
+    }
+    if (result.empty()) {
+        result.extend({-1, -1, -1});
+        result.extend({1, 1, 1});
+    }
     return result;
 }
 

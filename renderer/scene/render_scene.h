@@ -114,6 +114,8 @@ public:
     std::uint32_t object_of_geometry(unsigned id) const { return object_of_geometry_[id]; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
     const BuildStatistics& build_statistics() const { return build_statistics_; }
+    // The scene's extent: Embree's bounds of the whole scene, without unbounded shapes (Shape::is_unbounded) when
+    // there are any.
     Bounds3f bounds() const;
 
     // The "rays.untraceable" counter: rays answered without Embree.

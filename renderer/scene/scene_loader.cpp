@@ -187,10 +187,11 @@ void check_texture_needs(const SceneObject& object) {
 }
 
 // Fails at object["shape"] when the shape's bounds reach beyond the limit in its own space (shapes whose plugins
-// check no extent: meshes, tubes), else at object["transform"] when `to_world` moves or scales it beyond.
+// check no extent: meshes, tubes), else at object["transform"] when `to_world` moves or scales it beyond. Unbounded
+// shapes (the plane) reach the edge by definition: they are clipped to the world, not held inside it.
 void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world) {
     const Bounds3f local = shape.bounds();
-    if (local.empty()) return;
+    if (local.empty() || shape.is_unbounded()) return;
     const Vec3d lower(local.lower.x, local.lower.y, local.lower.z), upper(local.upper.x, local.upper.y, local.upper.z);
     const auto corner = [&](int i) { return box_corner(lower, upper, i); };
     for (int i = 0; i < 8; ++i)  // the shape's own parameters first (a tube radius, a vertex), then its placement

@@ -348,6 +348,24 @@ case_info_scene() {
   grep -Eq '^objects +[0-9]+' "$work/stdout" || { show_output; fail "info does not print the object count"; }
 }
 
+# An infinite plane is left out of the scene's extent: info prints the sphere's bounds, not the world's, and the
+# scene renders without NaN.
+case_plane_scene_extent() {
+  cat >"$work/plane.json" <<'JSON'
+{"isotrace": 1, "film": {"resolution": [16, 16], "spp": 2},
+ "camera": {"type": "perspective", "look_at": {"eye": [0, 1, 4], "target": [0, 0.5, 0]}},
+ "materials": {"grey": {"type": "diffuse"}, "lamp": {"type": "emissive", "radiance": 5}},
+ "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
+ "objects": [{"material": "grey", "shape": {"type": "plane"}},
+             {"material": "grey", "shape": {"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5}},
+             {"material": "lamp", "shape": {"type": "rectangle", "size": [1, 1]}, "transform": {"rotate": {"axis": [1, 0, 0], "angle": 180}, "translate": [0, 2, 0]}}]}
+JSON
+  cli_expect 0 info "$work/plane.json"
+  expect_in "$work/stdout" "bounds       [-0.5 0 -0.5] .. [0.5 2 0.5]" "info output"
+  cli_expect 0 render "$work/plane.json" -o "$work/plane.exr"
+  expect_in "$work/stderr" "NaN/Inf   0 samples discarded" "render statistics"
+}
+
 # Image I/O lives in a module loaded on first use: commands that read and write no image never load it (nor
 # OpenImageIO's ~260 libraries); without the module, writing an image is a clear failure and leaves no file.
 case_image_module_on_demand() {
