@@ -292,6 +292,17 @@ TEST_F(Instances, AGridIsTheSameOnEveryLoadAndFollowsItsSeed) {
     EXPECT_EQ(materials.size(), 2u);
 }
 
+TEST_F(Instances, EmissivePlacementsEmitButAreNotSampledAsLights) {
+    const auto loaded = load(scene_with(R"("definitions": {"lamp": {"material": {"type": "emissive", "radiance": 2},
+    "shape": {"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}}},
+  "objects": [{"instance": "lamp", "placements": [{}, {"transform": {"translate": [2, 0, 0]}}]}]
+)"));
+    const BuildStatistics& build = loaded->scene->build_statistics();
+    EXPECT_EQ(build.unsampled_emitters, 2u);
+    EXPECT_EQ(build.area_lights, 0u);
+    EXPECT_TRUE(loaded->scene->emission_can_be_hit());
+}
+
 struct BadInstances {
     std::string name, top_level;
     int line, column;
