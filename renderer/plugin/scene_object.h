@@ -16,7 +16,7 @@ class Material;
 
 struct SceneObject {
     std::string name;
-    std::unique_ptr<Shape> shape;
+    std::shared_ptr<Shape> shape;  // shared by the placements of one definition (RenderScene::add_placement)
     const Material* material = nullptr;
     std::vector<const Material*> part_materials;  // per Shape::part_materials() entry; null: `material`
     const Material* blended_material = nullptr;   // for shapes whose hits blend their parts' materials

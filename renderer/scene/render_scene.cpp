@@ -50,34 +50,65 @@ std::vector<std::string> RenderScene::material_names() const {
 
 void RenderScene::add_object(SceneObject object) { objects_.push_back(std::move(object)); }
 
+void RenderScene::add_placement(SceneObject object) {
+    placed_shapes_.insert(object.shape.get());
+    objects_.push_back(std::move(object));
+}
+
 void RenderScene::add_light(std::unique_ptr<Light> light) { lights_.push_back(std::move(light)); }
+
+RTCScene RenderScene::new_instanced_scene(RTCGeometry geometry) {
+    RTCScene child = rtcNewScene(embree_device());
+    instance_scenes_.push_back(child);
+    rtcAttachGeometry(child, geometry);
+    rtcReleaseGeometry(geometry);
+    rtcCommitScene(child);
+    return child;
+}
 
 void RenderScene::commit() {
     const auto start = std::chrono::steady_clock::now();
     const std::int64_t bytes_before = embree_bytes_in_use();
     RTCDevice device = embree_device();
+    std::unordered_map<const Shape*, RTCScene> scene_of_placed_shape;
     for (std::size_t index = 0; index < objects_.size(); ++index) {
         SceneObject& object = objects_[index];
-        object.counter_slot = counters::geometry_type_slot(object.shape->type_name(), object.shape->counts_intersection_tests());
-        build_statistics_.primitives_by_type[object.shape->type_name()] += object.shape->primitive_count();
-        build_statistics_.shape_bytes += object.shape->memory_bytes();
-        object.instanced = !object.shape->can_bake(object.to_world);
-        if (!object.instanced) object.shape->bake(object.to_world);
-        object.hit_shading = object.shape->hit_shading();
-        object.shape->set_object_name(object.name);
-        RTCGeometry geometry = object.shape->create_geometry(device);
-        check_embree("building object \"" + object.name + "\"");
+        Shape& shape = *object.shape;
+        const bool placed = placed_shapes_.count(&shape) > 0;
+        const auto built = scene_of_placed_shape.find(&shape);
+        const bool first_use = built == scene_of_placed_shape.end();
+        object.counter_slot = counters::geometry_type_slot(shape.type_name(), shape.counts_intersection_tests());
+        build_statistics_.object_bytes += sizeof(SceneObject) + (object.name.capacity() > std::string().capacity() ? object.name.capacity() : 0) +
+                                          object.part_materials.capacity() * sizeof(const Material*);
+        if (first_use) {
+            build_statistics_.primitives_by_type[shape.type_name()] += shape.primitive_count();
+            build_statistics_.shape_bytes += shape.memory_bytes();
+        }
+        // A shared shape stays in its own space: baking it would move every placement.
+        object.instanced = placed || !shape.can_bake(object.to_world);
+        if (!object.instanced) shape.bake(object.to_world);
+        object.hit_shading = shape.hit_shading();
+        RTCGeometry geometry = nullptr;
+        RTCScene child = first_use ? nullptr : built->second;
+        if (!child) {
+            if (!placed) shape.set_object_name(object.name);  // a placed shape is named after its definition
+            geometry = shape.create_geometry(device);
+            check_embree("building object \"" + object.name + "\"");
+        }
         if (object.instanced) {
-            RTCScene child = rtcNewScene(device);
-            instance_scenes_.push_back(child);
-            rtcAttachGeometry(child, geometry);
-            rtcReleaseGeometry(geometry);
-            rtcCommitScene(child);
+            if (!child) {
+                child = new_instanced_scene(geometry);
+                if (placed) {
+                    scene_of_placed_shape.emplace(&shape, child);
+                    ++build_statistics_.placed_shapes;
+                }
+            }
             geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
             rtcSetGeometryInstancedScene(geometry, child);
             set_instance_transform(geometry, object.to_world);
             rtcCommitGeometry(geometry);
             ++build_statistics_.instanced_objects;
+            build_statistics_.placements += placed;
         }
         const unsigned id = rtcAttachGeometry(scene_, geometry);
         rtcReleaseGeometry(geometry);
@@ -153,7 +184,8 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
                    .uv = local.uv,
                    .object_index = object_index,
                    .primitive_id = query.hit.primID,
-                   .material = local.blend.count > 0 ? object.blended_material : object.material_of_part(local.part),
+                   .material = local.blend.count > 0 && object.blended_material ? object.blended_material
+                                                                                : object.material_of_part(local.part),
                    .position_error = position_error,
                    .dpdu = dpdu,
                    .dpdv = dpdv,

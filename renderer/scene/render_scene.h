@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "renderer/core/ray.h"
@@ -28,10 +29,13 @@ namespace isotrace {
 struct BuildStatistics {
     double seconds = 0;
     std::size_t objects = 0;
-    std::size_t instanced_objects = 0;
-    std::map<std::string, std::size_t> primitives_by_type;
+    std::size_t instanced_objects = 0;  // in an Embree instance: placements, and objects whose transform cannot bake
+    std::size_t placements = 0;         // objects that place a definition's shape (add_placement)
+    std::size_t placed_shapes = 0;      // the shapes they share, each built once
+    std::map<std::string, std::size_t> primitives_by_type;  // each shape counted once, however often placed
     std::int64_t embree_bytes = 0;
-    std::size_t shape_bytes = 0;  // what the shapes keep besides Embree's buffers and BVHs
+    std::size_t shape_bytes = 0;  // what the shapes keep besides Embree's buffers and BVHs, each shape once
+    std::size_t object_bytes = 0;  // what the scene keeps per object (SceneObject, its name and part materials)
     std::size_t area_lights = 0;
     // Emissive objects that light sampling cannot reach (instanced, or shapes without surface sampling):
     // they still emit when BSDF sampling hits them.
@@ -66,6 +70,10 @@ public:
     const Material* find_material(const std::string& name) const;
     std::vector<std::string> material_names() const;
     void add_object(SceneObject object);
+    // An object that places a shape shared with other placements (a definition's, renderer/scene/scene_definitions.h):
+    // the shape stays in its own space, built once into one Embree scene, and each placement is an Embree instance
+    // of it. Emissive placements are not sampled by lights (BuildStatistics::unsampled_emitters).
+    void add_placement(SceneObject object);
     void add_light(std::unique_ptr<Light> light);
 
     // Builds the Embree BVHs. Throws std::runtime_error on Embree errors.
@@ -124,6 +132,7 @@ public:
 private:
     RTCScene scene_ = nullptr;
     std::vector<RTCScene> instance_scenes_;
+    std::unordered_set<const Shape*> placed_shapes_;  // the shapes of add_placement
     std::vector<SceneObject> objects_;
     std::vector<std::uint32_t> object_of_geometry_;  // top-level geometry id -> object index
     std::map<std::string, std::unique_ptr<Material>> materials_;
@@ -139,6 +148,7 @@ private:
     // The buffers of queries that reach solids (CSG, superquadrics, ...), lent to them through QueryContext.
     mutable QueryScratchPool scratch_pool_;
 
+    RTCScene new_instanced_scene(RTCGeometry geometry);
     void build_lights();
     void describe_flat_lambertian();
 };

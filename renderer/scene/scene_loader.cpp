@@ -4,8 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "renderer/materials/blended_material.h"
-#include "renderer/math/box_corner.h"
 #include "renderer/params/transform_parser.h"
 #include "renderer/params/world_limit.h"
 #include "renderer/plugin/light.h"
@@ -14,6 +12,8 @@
 #include "renderer/plugin/shape.h"
 #include "renderer/scene/loaded_scene.h"
 #include "renderer/scene/named_values.h"
+#include "renderer/scene/object_builder.h"
+#include "renderer/scene/scene_definitions.h"
 #include "renderer/scene/scene_includes.h"
 
 namespace isotrace {
@@ -116,91 +116,6 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
     film.finish();
 }
 
-std::string unknown_material_problem(const std::string& name, const RenderScene& scene) {
-    std::string known;
-    for (const auto& n : scene.material_names())
-        if (n.front() != '<') known += (known.empty() ? "" : ", ") + n;
-    return "unknown material \"" + name + "\"" + did_you_mean(name, scene.material_names()) +
-           (known.empty() ? "; the scene defines no materials" : "; defined: " + known);
-}
-
-const Material* resolve_material(const SceneNode& object, RenderScene& scene, std::size_t index) {
-    const auto value = object.optional_value("material");
-    if (!value) object.fail("missing required field \"material\" (a name from \"materials\" or an inline material)");
-    if (value->json().is_object()) {
-        const std::string name = "<inline material of objects[" + std::to_string(index) + "]>";
-        return scene.add_material(name, material_registry().create(*value));
-    }
-    if (!value->json().is_string()) value->fail("expected a material name or an inline material object");
-    const std::string& name = value->json().string;
-    const Material* material = scene.find_material(name);
-    if (!material) value->fail(unknown_material_problem(name, scene));
-    return material;
-}
-
-// The materials the parts of a composite shape name (null where a part names none).
-std::vector<const Material*> resolve_part_materials(const Shape& shape, const RenderScene& scene) {
-    std::vector<const Material*> materials;
-    for (const MaterialReference& reference : shape.part_materials()) {
-        const Material* material = reference.name.empty() ? nullptr : scene.find_material(reference.name);
-        if (!reference.name.empty() && !material)
-            throw InputError(reference.location, reference.field, unknown_material_problem(reference.name, scene));
-        materials.push_back(material);
-    }
-    return materials;
-}
-
-// The material of a shape whose parts blend: every part's material must be able to blend.
-const Material* blended_material(const SceneNode& node, const SceneObject& object, RenderScene& scene,
-                                 std::size_t index) {
-    const std::vector<MaterialReference> references = object.shape->part_materials();
-    std::vector<const Material*> parts;
-    for (std::size_t part = 0; part < object.part_materials.size(); ++part) {
-        const Material* material = object.material_of_part(std::uint32_t(part));
-        if (!material->can_blend()) {
-            const std::string problem =
-                "materials that blend across a surface must be \"principled\" or \"diffuse\"";
-            if (object.part_materials[part]) throw InputError(references[part].location, references[part].field, problem);
-            node.fail_at("material", problem + " (this object's material is used where its elements name none)");
-        }
-        parts.push_back(material);
-    }
-    return scene.add_material("<blended materials of objects[" + std::to_string(index) + "]>",
-                              make_blended_material(std::move(parts)));
-}
-
-// A texture mapped by uv needs a surface with uv, a field input a surface with a field.
-void check_texture_needs(const SceneObject& object) {
-    TextureNeeds needs = object.material->texture_needs();
-    for (const Material* part : object.part_materials)
-        if (part) needs |= part->texture_needs();
-    const Shape& shape = *object.shape;
-    const std::string whose = "the shape of object \"" + object.name + "\" (" + shape.type_name() + ")";
-    if (needs.uv && !shape.has_uv())
-        throw InputError(needs.where, needs.field_path,
-                         "this texture is mapped by uv, but " + whose +
-                             " has no uv: use a \"solid\", \"planar\", \"triplanar\", \"spherical\" or "
-                             "\"cylindrical\" projection");
-    if (needs.field && !shape.field_value(Vec3d(0, 0, 0)))
-        throw InputError(needs.where, needs.field_path,
-                         "this texture reads a field, but " + whose + " has none (blob groups and superquadrics have one)");
-}
-
-// Fails at object["shape"] when the shape's bounds reach beyond the limit in its own space (shapes whose plugins
-// check no extent: meshes, tubes), else at object["transform"] when `to_world` moves or scales it beyond. Unbounded
-// shapes (the plane) reach the edge by definition: they are clipped to the world, not held inside it.
-void check_object_within_world(const SceneNode& object, const Shape& shape, const Transform& to_world) {
-    const Bounds3f local = shape.bounds();
-    if (local.empty() || shape.is_unbounded()) return;
-    const Vec3d lower(local.lower.x, local.lower.y, local.lower.z), upper(local.upper.x, local.upper.y, local.upper.z);
-    const auto corner = [&](int i) { return box_corner(lower, upper, i); };
-    for (int i = 0; i < 8; ++i)  // the shape's own parameters first (a tube radius, a vertex), then its placement
-        if (!within_world(corner(i))) object.fail_at("shape", beyond_world_problem("the shape"));
-    for (int i = 0; i < 8; ++i)
-        if (!within_world(to_world.point(corner(i))))
-            object.fail_at("transform", beyond_world_problem("the shape, transformed,"));
-}
-
 void load_content(const SceneNode& root, const SceneOverrides& overrides, RenderScene& scene) {
     if (auto materials = root.optional_object("materials")) {
         materials->accept_all_keys();
@@ -217,23 +132,21 @@ void load_content(const SceneNode& root, const SceneOverrides& overrides, Render
         }
         scene.add_light(std::move(created));
     }
+    SceneDefinitions definitions(root.optional_object("definitions"), overrides, scene);
     const std::vector<SceneNode> objects = root.object_array("objects");
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const SceneNode& node = objects[i];
-        SceneObject object;
-        object.name = node.string_or("name", "objects[" + std::to_string(i) + "]");
-        object.material = resolve_material(node, scene, i);
-        object.to_world = parse_optional_transform(node, "transform");
-        object.shape = shape_registry().create(node.object("shape"));
-        for (const auto& [key, wrapper] : shape_wrapper_registry().entries())
-            if (auto settings = node.optional_object(key)) object.shape = wrapper.factory(*settings, std::move(object.shape));
-        if (overrides.replace_shape) object.shape = overrides.replace_shape(std::move(object.shape));
-        check_object_within_world(node, *object.shape, object.to_world);
-        object.part_materials = resolve_part_materials(*object.shape, scene);
-        if (object.shape->blends_parts()) object.blended_material = blended_material(node, object, scene, i);
-        check_texture_needs(object);
+        const std::string name = node.string_or("name", "objects[" + std::to_string(i) + "]");
+        if (node.has("instance")) {
+            definitions.place(node, name, [&](SceneObject placed) { scene.add_placement(std::move(placed)); });
+        } else {
+            SceneObject object = build_shaped_object(node, name, overrides, scene);
+            object.to_world = parse_optional_transform(node, "transform");
+            if (!placed_within_world(*object.shape, object.to_world))
+                node.fail_at("transform", beyond_world_problem("the shape, transformed,"));
+            scene.add_object(std::move(object));
+        }
         node.finish();
-        scene.add_object(std::move(object));
     }
 }
 
@@ -260,7 +173,7 @@ std::unique_ptr<LoadedScene> load_scene(const std::string& path, const SceneOver
     // Reject misspelt sections before anything slow (mesh loading) happens.
     // "include" and "values" are gone by now, but named here for the spelling suggestions.
     for (const char* key : {"isotrace", "description", "include", "values", "colour", "film", "camera", "sampler",
-                            "integrator", "materials", "lights", "objects"})
+                            "integrator", "materials", "lights", "definitions", "objects"})
         root.optional_value(key);
     root.finish();
     DefaultSections defaults;

@@ -222,7 +222,7 @@ TEST_F(LoadScene, CropErrors) {
 
 TEST_F(LoadScene, UnknownTopLevelKey) {
     expect_error(minimal_scene("  \"lights_\": [],\n"), 4, 14, "lights_",
-                 "unknown key \"lights_\" (did you mean \"lights\"?); known keys here: camera, colour, description, "
+                 "unknown key \"lights_\" (did you mean \"lights\"?); known keys here: camera, colour, definitions, description, "
                  "film, include, integrator, isotrace, lights, materials, objects, sampler, values");
 }
 

@@ -1309,6 +1309,40 @@ case_abm_patch_bad_input() {
 
 # ---- isotrace diff ----------------------------------------------------------------------------------------
 
+case_instances() {  # placements of one definition give the pixels of the same objects written out one by one
+  local head='"isotrace": 1, "film": {"resolution": [32, 24], "spp": 2},
+  "camera": {"type": "perspective", "fov": 50, "look_at": {"eye": [0, 1, 9], "target": [0, 0, 0]}},
+  "materials": {"grey": {"type": "diffuse"}, "red": {"type": "diffuse", "reflectance": [0.8, 0.1, 0.1]}},
+  "lights": [{"type": "point", "position": [2, 5, 6], "intensity": 40}]'
+  local ball='{"type": "sphere", "radius": 1}'
+  local squash='{"translate": [-2, 0, 0], "scale": [1, 0.6, 1]}' stretch='{"translate": [2, 0, 0], "scale": [0.5, 1.4, 1]}'
+  cat >"$work/instanced.json" <<JSON
+{ $head,
+  "definitions": {"ball": {"material": "grey", "shape": $ball}},
+  "objects": [{"name": "balls", "instance": "ball",
+               "placements": [{"transform": $squash}, {"transform": $stretch, "material": "red"}]}] }
+JSON
+  cat >"$work/separate.json" <<JSON
+{ $head,
+  "objects": [{"name": "balls[0]", "material": "grey", "transform": $squash, "shape": $ball},
+              {"name": "balls[1]", "material": "red", "transform": $stretch, "shape": $ball}] }
+JSON
+  cli_expect 0 render "$work/instanced.json" -o "$work/instanced.exr" --aov object_id --quiet --stats-json "$work/stats.json"
+  expect_in "$work/stats.json" '"placements": 2' stats.json
+  expect_in "$work/stats.json" '"placed_shapes": 1' stats.json
+  cli_expect 0 render "$work/separate.json" -o "$work/separate.exr" --aov object_id --quiet
+  idiff -fail 0 -warn 0 "$work/instanced.exr" "$work/separate.exr" >"$work/idiff.txt" ||
+    { cat "$work/idiff.txt" >&2; fail "the instanced render differs from the separate objects"; }
+  cli_expect 0 info "$work/instanced.json"
+  expect_in "$work/stdout" "2 placement(s) of 1 shape(s)" stdout
+  # an unknown definition: exit 2 at its position, with a suggestion
+  sed 's/"instance": "ball"/"instance": "bal"/' "$work/instanced.json" >"$work/bad.json"
+  cli_expect 2 render "$work/bad.json" -o "$work/bad.exr" --quiet
+  expect_in "$work/stderr" "bad.json:6:" stderr
+  expect_in "$work/stderr" 'objects[0].instance: unknown definition "bal" (did you mean "ball"?)' stderr
+  expect_no_file "$work/bad.exr"
+}
+
 case_diff_help() {
   cli_expect 0 diff --help
   for option in --json --error-map --error-map-metric --fail --ztest --test-spp --ppd; do

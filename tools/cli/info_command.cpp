@@ -89,14 +89,18 @@ int run_info(const std::string& path, const SceneOptions& options) {
                 scene->colours->config_path().c_str());
     std::printf("objects      %zu (%zu instanced), %zu light(s) of which %zu area light(s)\n", build.objects,
                 build.instanced_objects, scene->scene->lights().size(), build.area_lights);
+    if (build.placements > 0)
+        std::printf("             %zu placement(s) of %zu shape(s) of definitions, each shape built once\n",
+                    build.placements, build.placed_shapes);
     if (build.unsampled_emitters > 0)
         std::printf("             %zu emissive object(s) not reachable by light sampling (found by BSDF sampling only)\n",
                     build.unsampled_emitters);
     for (const auto& [type, count] : build.primitives_by_type) std::printf("  %-18s %zu primitive(s)\n", type.c_str(), count);
     std::printf("bounds       [%g %g %g] .. [%g %g %g]\n", bounds.lower.x, bounds.lower.y, bounds.lower.z,
                 bounds.upper.x, bounds.upper.y, bounds.upper.z);
-    std::printf("build        %.3f s, %.1f MiB in Embree, %.1f MiB in shapes\n", build.seconds,
-                double(build.embree_bytes) / (1 << 20), double(build.shape_bytes) / (1 << 20));
+    std::printf("build        %.3f s, %.1f MiB in Embree, %.1f MiB in shapes, %.1f MiB in objects\n", build.seconds,
+                double(build.embree_bytes) / (1 << 20), double(build.shape_bytes) / (1 << 20),
+                double(build.object_bytes) / (1 << 20));
     return kExitOk;
 }
 

@@ -42,6 +42,9 @@ nlohmann::json render_statistics(const LoadedScene& scene, const RenderResult& r
     const BuildStatistics& build = scene.scene->build_statistics();
     stats["objects"] = build.objects;
     stats["instanced_objects"] = build.instanced_objects;
+    stats["placements"] = build.placements;
+    stats["placed_shapes"] = build.placed_shapes;
+    stats["object_bytes"] = build.object_bytes;
     stats["embree_bytes"] = build.embree_bytes;
     stats["shape_bytes"] = build.shape_bytes;
     nlohmann::json geometry = nlohmann::json::object();
@@ -78,6 +81,16 @@ void format_summary(const nlohmann::json& s, std::ostringstream& out) {
     std::snprintf(line, sizeof line, "  memory    %.1f MiB peak resident\n",
                   double(s["peak_memory_bytes"].get<unsigned long long>()) / (1 << 20));
     out << line;
+    if (s.contains("placements") && s["placements"].get<unsigned long long>() > 0) {
+        std::snprintf(line, sizeof line,
+                      "  instances %llu placement(s) of %llu shape(s); %.1f MiB in Embree, %.1f MiB in shapes, "
+                      "%.1f MiB in objects\n",
+                      s["placements"].get<unsigned long long>(), s["placed_shapes"].get<unsigned long long>(),
+                      double(s["embree_bytes"].get<long long>()) / (1 << 20),
+                      double(s["shape_bytes"].get<unsigned long long>()) / (1 << 20),
+                      double(s["object_bytes"].get<unsigned long long>()) / (1 << 20));
+        out << line;
+    }
 }
 
 }  // namespace

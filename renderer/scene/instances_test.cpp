@@ -1,0 +1,395 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <set>
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/plugin/shape.h"
+#include "renderer/scene/loaded_scene.h"
+#include "tests/support/scene_files.h"
+#include "tests/support/scoped_environment_variable.h"
+
+namespace isotrace {
+namespace {
+
+std::string scene_with(const std::string& top_level) {
+    return R"({"isotrace": 1,
+  "camera": {"type": "perspective", "look_at": {"eye": [0, 0, 20], "target": [0, 0, 0]}},
+  "materials": {"grey": {"type": "diffuse"}, "red": {"type": "diffuse", "reflectance": [0.8, 0.1, 0.1]},
+                "blue": {"type": "diffuse", "reflectance": [0.1, 0.1, 0.8]}},
+)" + top_level + "}\n";
+}
+
+// Transforms that no shape here can bake (a non-uniform scale), so that objects written out separately are placed
+// in Embree instances as the placements are.
+const std::vector<std::string> kTransforms = {
+    R"({"translate": [-4, 0, 0], "scale": [1, 0.5, 1.5]})",
+    R"([{"scale": [0.7, 1.3, 1]}, {"rotate": {"axis": [1, 2, 3], "angle": 40}}, {"translate": [0, 3, -1]}])",
+    R"({"translate": [3.5, -2, 1], "rotate": [10, 20, 30], "scale": [1.2, 0.9, 0.6]})",
+    R"({"translate": [0.5, 0.2, 2], "scale": [0.4, 0.8, 0.5]})"};
+const std::vector<std::string> kMaterials = {"", "red", "", "blue"};  // "": the definition's own
+
+// `shape` placed at every kTransforms entry as instances of one definition.
+std::string instanced_scene(const std::string& shape) {
+    std::string placements;
+    for (std::size_t i = 0; i < kTransforms.size(); ++i)
+        placements += std::string(i ? ", " : "") + R"({"transform": )" + kTransforms[i] +
+                      (kMaterials[i].empty() ? "" : R"(, "material": ")" + kMaterials[i] + "\"") + "}";
+    return scene_with(R"("definitions": {"thing": {"material": "grey", "shape": )" + shape + R"(}},
+  "objects": [{"name": "things", "instance": "thing", "placements": [)" + placements + "]}]\n");
+}
+
+// The same objects written out one by one, each with its own shape.
+std::string separate_scene(const std::string& shape) {
+    std::string objects;
+    for (std::size_t i = 0; i < kTransforms.size(); ++i)
+        objects += std::string(i ? ",\n" : "") + R"({"name": "things[)" + std::to_string(i) + R"(]", "material": ")" +
+                   (kMaterials[i].empty() ? "grey" : kMaterials[i]) + R"(", "transform": )" + kTransforms[i] +
+                   R"(, "shape": )" + shape + "}";
+    return scene_with(R"("objects": [)" + objects + "]\n");
+}
+
+const std::string kSpheres = R"({"type": "sphere", "spheres": [{"center": [0, 0, 0], "radius": 1}, {"center": [0.8, 0.6, 0], "radius": 0.5}]})";
+const std::string kBlobs = R"({"type": "blobs", "field": "kim", "threshold": 0.5, "elements": [
+    {"center": [0, 0, 0], "half_size": [0.8, 0.3, 0.3], "radius": 0.5, "weight": 1},
+    {"center": [0.9, 0.4, 0], "half_size": 0.2, "radius": 0.4, "weight": 1, "rotate": [0, 0, 30]},
+    {"center": [-0.9, -0.3, 0.2], "radius": 0.6, "weight": 0.8}]})";
+const std::string kMesh = R"({"type": "mesh", "positions": [[-1, -1, -1], [1, -1, -1], [0, 1, -1], [0, 0, 1]],
+    "triangles": [[0, 2, 1], [0, 1, 3], [1, 2, 3], [2, 0, 3]]})";
+
+// A shape that never lets its transform be baked: meshes bake every transform, so written out separately they are
+// traced in world space; wrapped in this, they are placed in an Embree instance each, as placements are.
+class RefusesBaking : public Shape {
+public:
+    explicit RefusesBaking(std::unique_ptr<Shape> inner) : inner_(std::move(inner)) {}
+    std::string type_name() const override { return inner_->type_name(); }
+    std::size_t primitive_count() const override { return inner_->primitive_count(); }
+    std::size_t memory_bytes() const override { return inner_->memory_bytes(); }
+    Bounds3f bounds() const override { return inner_->bounds(); }
+    bool can_bake(const Transform&) const override { return false; }
+    void bake(const Transform&) override {}
+    RTCGeometry create_geometry(RTCDevice device) override { return inner_->create_geometry(device); }
+    LocalShading shading(const RTCHit& hit, const Vec3f& ng, const Vec3d& point) const override {
+        return inner_->shading(hit, ng, point);
+    }
+    HitShading hit_shading() const override { return inner_->hit_shading(); }
+    bool has_uv() const override { return inner_->has_uv(); }
+
+private:
+    std::unique_ptr<Shape> inner_;
+};
+
+struct TracedHit {
+    bool hit = false;
+    float t = 0;
+    Vec3f position, geometric_normal, shading_normal;
+    std::string object, material;
+};
+
+// The nearest hits of a fan of rays from the camera's eye over the scene, with object and material names.
+std::vector<TracedHit> trace_fan(const LoadedScene& loaded) {
+    const RenderScene& scene = *loaded.scene;
+    std::vector<TracedHit> hits;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Vec3f direction = normalize(Vec3f(float(x - 32) / 150.0f, float(y - 32) / 150.0f, -1.0f));
+            Ray ray{{0, 0, 20}, direction, 0, 1e30f};
+            TracedHit traced;
+            if (const auto hit = scene.intersect(ray, RayKind::Camera)) {
+                traced = {true, hit->t, hit->position, hit->geometric_normal, hit->shading_normal,
+                          hit->object->name, ""};
+                for (const std::string& name : scene.material_names())
+                    if (scene.find_material(name) == hit->material) traced.material = name;
+            }
+            hits.push_back(traced);
+        }
+    return hits;
+}
+
+bool same_bits(const Vec3f& a, const Vec3f& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+class Instances : public ::testing::Test {
+protected:
+    ScopedEnvironmentVariable no_ocio_{"OCIO", std::nullopt};
+    testing::TemporaryDirectory dir_{"instances"};
+
+    std::unique_ptr<LoadedScene> load(const std::string& text, const SceneOverrides& overrides = {}) {
+        return load_scene(dir_.write("scene.json", text).string(), overrides);
+    }
+
+    void expect_same_hits(const std::string& shape, const SceneOverrides& overrides = {}) {
+        const auto instanced = load(instanced_scene(shape), overrides);
+        const auto separate = load(separate_scene(shape), overrides);
+        EXPECT_EQ(instanced->scene->build_statistics().placements, kTransforms.size());
+        EXPECT_EQ(instanced->scene->build_statistics().placed_shapes, 1u);
+        EXPECT_EQ(separate->scene->build_statistics().instanced_objects, kTransforms.size());
+        const std::vector<TracedHit> a = trace_fan(*instanced), b = trace_fan(*separate);
+        std::size_t hit_count = 0, differing = 0;
+        std::set<std::string> objects_hit;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            hit_count += a[i].hit;
+            if (a[i].hit) objects_hit.insert(a[i].object);
+            const bool same = a[i].hit == b[i].hit && std::memcmp(&a[i].t, &b[i].t, sizeof(float)) == 0 &&
+                              same_bits(a[i].position, b[i].position) &&
+                              same_bits(a[i].geometric_normal, b[i].geometric_normal) &&
+                              same_bits(a[i].shading_normal, b[i].shading_normal) && a[i].object == b[i].object &&
+                              a[i].material == b[i].material;
+            differing += !same;
+        }
+        EXPECT_EQ(differing, 0u) << "of " << a.size() << " rays";
+        EXPECT_GT(hit_count, a.size() / 20) << "the rays must see the shapes";
+        EXPECT_EQ(objects_hit.size(), kTransforms.size()) << "every placement is seen";
+    }
+};
+
+TEST_F(Instances, SpheresGiveTheSameHitsAsSeparateObjects) { expect_same_hits(kSpheres); }
+
+TEST_F(Instances, BlobGroupsGiveTheSameHitsAsSeparateObjects) { expect_same_hits(kBlobs); }
+
+TEST_F(Instances, MeshesGiveTheSameHitsAsSeparateObjectsInInstances) {
+    SceneOverrides overrides;
+    overrides.replace_shape = [](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
+        return std::make_unique<RefusesBaking>(std::move(shape));
+    };
+    expect_same_hits(kMesh, overrides);
+}
+
+TEST_F(Instances, ShapesAreBuiltAndCountedOnce) {
+    const auto loaded = load(instanced_scene(kBlobs));
+    const BuildStatistics& build = loaded->scene->build_statistics();
+    const auto one = load(scene_with(R"("objects": [{"material": "grey", "shape": )" + kBlobs + "}]\n"));
+    EXPECT_EQ(build.primitives_by_type.at("blobs"), one->scene->build_statistics().primitives_by_type.at("blobs"));
+    EXPECT_EQ(build.shape_bytes, one->scene->build_statistics().shape_bytes);
+    const auto& objects = loaded->scene->objects();
+    ASSERT_EQ(objects.size(), kTransforms.size());
+    for (const SceneObject& object : objects) {
+        EXPECT_EQ(object.shape, objects[0].shape) << "one shape for every placement";
+        EXPECT_TRUE(object.instanced);
+    }
+    EXPECT_EQ(objects[0].shape->object_name(), "thing") << "a shared shape keeps statistics under its definition";
+    EXPECT_EQ(objects[2].name, "things[2]");
+}
+
+// A metacube creature: a body, a head, four legs and a tail.
+const std::string kCreature = R"({"type": "blobs", "field": "kim", "threshold": 0.5, "elements": [
+    {"center": [0, 1.5, 0], "half_size": [1, 0.3, 0.35], "radius": 0.55, "weight": 1},
+    {"center": [1.4, 2.2, 0], "half_size": [0.3, 0.28, 0.28], "radius": 0.5, "weight": 1},
+    {"center": [0.8, 0.6, 0.3], "half_size": [0.1, 0.5, 0.1], "radius": 0.3, "weight": 1},
+    {"center": [0.8, 0.6, -0.3], "half_size": [0.1, 0.5, 0.1], "radius": 0.3, "weight": 1},
+    {"center": [-0.8, 0.6, 0.3], "half_size": [0.1, 0.5, 0.1], "radius": 0.3, "weight": 1},
+    {"center": [-0.8, 0.6, -0.3], "half_size": [0.1, 0.5, 0.1], "radius": 0.3, "weight": 1},
+    {"center": [-1.3, 2.0, 0], "half_size": [0.08, 0.35, 0.08], "radius": 0.25, "weight": 1, "rotate": [0, 0, 30]}]})";
+
+std::uint64_t scene_bytes(const BuildStatistics& build) {
+    return std::uint64_t(std::max<std::int64_t>(build.embree_bytes, 0)) + build.shape_bytes + build.object_bytes;
+}
+
+// 10^4 placements keep one copy of the creature and a record each: what the scene holds grows by the placements'
+// records (the SceneObject, most of it its double-precision transform and inverse) and their Embree instances, not by
+// copies of the shape or of its BVH (which a scene of one Embree scene per placement would hold).
+TEST_F(Instances, TenThousandPlacementsCostOneCopyAndARecordEach) {
+    constexpr std::size_t kCount = 10000;
+    const auto one = load(scene_with(R"("objects": [{"material": "grey", "shape": )" + kCreature + "}]\n"));
+    const auto many = load(scene_with(R"("definitions": {"creature": {"material": "grey", "shape": )" + kCreature +
+                                      R"(}}, "objects": [{"instance": "creature", "grid": {"counts": [100, 1, 100],
+                                      "spacing": [4, 0, 4], "rotate": {"angle": [0, 360]}, "seed": 3}}]
+)"));
+    const BuildStatistics& build = many->scene->build_statistics();
+    ASSERT_EQ(build.placements, kCount);
+    const std::uint64_t copy = scene_bytes(one->scene->build_statistics()), all = scene_bytes(build);
+    const double per_placement = double(all - copy) / double(kCount);
+    std::printf("one copy %llu B (Embree %lld, shape %zu, object %zu); %zu placements %llu B (Embree %lld, shape %zu, "
+                "objects %zu): %.0f B per placement\n",
+                (unsigned long long)copy, (long long)one->scene->build_statistics().embree_bytes,
+                one->scene->build_statistics().shape_bytes, one->scene->build_statistics().object_bytes, kCount,
+                (unsigned long long)all, (long long)build.embree_bytes, build.shape_bytes, build.object_bytes,
+                per_placement);
+    EXPECT_EQ(build.shape_bytes, one->scene->build_statistics().shape_bytes);
+    const double embree_per_placement = double(build.embree_bytes) / double(kCount);
+    EXPECT_LT(embree_per_placement, double(one->scene->build_statistics().embree_bytes) / 2) << "no BVH per placement";
+    EXPECT_LT(embree_per_placement, 160.0);
+    EXPECT_LT(per_placement, 560.0);
+}
+
+// A group: its members keep their own materials and transforms; an override paints the whole copy.
+const std::string kGroupScene = scene_with(R"("definitions": {
+    "ball": {"material": "blue", "shape": {"type": "sphere", "radius": 1}},
+    "pair": {"objects": [
+      {"name": "left", "material": "grey", "shape": {"type": "sphere", "radius": 1}, "transform": {"translate": [-1.5, 0, 0]}},
+      {"name": "right", "instance": "ball", "transform": {"translate": [1.5, 0, 0]}}]}},
+  "objects": [{"name": "pairs", "instance": "pair", "placements": [
+    {"transform": {"translate": [0, 2, 0]}}, {"transform": {"translate": [0, -2, 0]}, "material": "red"}]}]
+)");
+
+TEST_F(Instances, GroupsKeepTheirMaterialsUnlessOverridden) {
+    const auto loaded = load(kGroupScene);
+    const RenderScene& scene = *loaded->scene;
+    const auto& objects = scene.objects();
+    ASSERT_EQ(objects.size(), 4u);
+    EXPECT_EQ(objects[0].name, "pairs[0]/left");
+    EXPECT_EQ(objects[1].name, "pairs[0]/right");
+    EXPECT_EQ(objects[3].name, "pairs[1]/right");
+    EXPECT_EQ(objects[0].material, scene.find_material("grey"));
+    EXPECT_EQ(objects[1].material, scene.find_material("blue"));
+    EXPECT_EQ(objects[2].material, scene.find_material("red"));
+    EXPECT_EQ(objects[3].material, scene.find_material("red"));
+    EXPECT_EQ(scene.build_statistics().placed_shapes, 2u);
+    // The group's transform and the placement's multiply: the right ball of the lower pair is centred at (1.5, -2, 0).
+    const auto hit = scene.intersect(Ray{{1.5f, -2, 10}, {0, 0, -1}, 0, 1e30f}, RayKind::Camera);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->object->name, "pairs[1]/right");
+    EXPECT_NEAR(hit->t, 9.0f, 1e-5f);
+    EXPECT_EQ(hit->material, scene.find_material("red"));
+}
+
+TEST_F(Instances, AnOverrideReplacesThePartMaterialsOfAComposite) {
+    const std::string blobs = R"({"type": "blobs", "elements": [
+        {"center": [-0.4, 0, 0], "radius": 1, "material": "red"}, {"center": [0.4, 0, 0], "radius": 1}]})";
+    const auto loaded = load(scene_with(R"("definitions": {"b": {"material": "grey", "shape": )" + blobs + R"(}},
+  "objects": [{"name": "own", "instance": "b", "transform": {"translate": [-3, 0, 0]}},
+              {"name": "painted", "instance": "b", "material": "blue", "transform": {"translate": [3, 0, 0]}}]
+)"));
+    const RenderScene& scene = *loaded->scene;
+    const auto own = scene.intersect(Ray{{-3.4f, 0, 10}, {0, 0, -1}, 0, 1e30f}, RayKind::Camera);
+    const auto painted = scene.intersect(Ray{{2.6f, 0, 10}, {0, 0, -1}, 0, 1e30f}, RayKind::Camera);
+    ASSERT_TRUE(own && painted);
+    EXPECT_NE(own->material, scene.find_material("blue"));
+    EXPECT_TRUE(scene.objects()[0].blended_material != nullptr);
+    EXPECT_EQ(painted->material, scene.find_material("blue"));
+    EXPECT_TRUE(scene.objects()[1].part_materials.empty());
+}
+
+TEST_F(Instances, AGridIsTheSameOnEveryLoadAndFollowsItsSeed) {
+    const auto grid = [&](int seed) {
+        return load(scene_with(R"("definitions": {"b": {"material": "grey", "shape": {"type": "sphere", "radius": 0.2}}},
+  "objects": [{"name": "g", "instance": "b", "transform": {"translate": [0, 0, -3]}, "grid": {"counts": [3, 2, 4],
+    "spacing": [1, 1, 1], "jitter": 0.5, "rotate": {"angle": [0, 90]}, "scale": [0.5, 1], "materials": ["red", "blue"],
+    "seed": )" + std::to_string(seed) + "}}]\n"));
+    };
+    const auto a = grid(1), b = grid(1), c = grid(2);
+    ASSERT_EQ(a->scene->objects().size(), 24u);
+    EXPECT_EQ(a->scene->objects()[23].name, "g[23]");
+    bool differs = false;
+    std::set<std::string> materials;
+    for (std::size_t i = 0; i < 24; ++i) {
+        const Transform& ta = a->scene->objects()[i].to_world;
+        EXPECT_EQ(ta.matrix(), b->scene->objects()[i].to_world.matrix());
+        differs |= ta.matrix() != c->scene->objects()[i].to_world.matrix();
+        materials.insert(a->scene->objects()[i].material == a->scene->find_material("red") ? "red" : "blue");
+        // Placement 0 is the (-x, -y, -z) corner, moved by at most a quarter of the spacing, then by the transform.
+        if (i == 0) {
+            EXPECT_NEAR(ta.matrix()[0][3], -1.0, 0.25);
+            EXPECT_NEAR(ta.matrix()[1][3], -0.5, 0.25);
+            EXPECT_NEAR(ta.matrix()[2][3], -1.5 - 3.0, 0.25);
+        }
+    }
+    EXPECT_TRUE(differs) << "another seed, other placements";
+    EXPECT_EQ(materials.size(), 2u);
+}
+
+TEST_F(Instances, EmissivePlacementsEmitButAreNotSampledAsLights) {
+    const auto loaded = load(scene_with(R"("definitions": {"lamp": {"material": {"type": "emissive", "radiance": 2},
+    "shape": {"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}}},
+  "objects": [{"instance": "lamp", "placements": [{}, {"transform": {"translate": [2, 0, 0]}}]}]
+)"));
+    const BuildStatistics& build = loaded->scene->build_statistics();
+    EXPECT_EQ(build.unsampled_emitters, 2u);
+    EXPECT_EQ(build.area_lights, 0u);
+    EXPECT_TRUE(loaded->scene->emission_can_be_hit());
+}
+
+struct BadInstances {
+    std::string name, top_level;
+    int line, column;
+    std::string field, problem;
+};
+
+class BadInstanceInput : public Instances, public ::testing::WithParamInterface<BadInstances> {};
+
+TEST_P(BadInstanceInput, IsRefusedAtItsPosition) {
+    const BadInstances& c = GetParam();
+    const std::string path = dir_.write("scene.json", scene_with(c.top_level)).string();
+    std::string prefix = path + ":" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": " + c.field + ": ";
+    testing::expect_input_error([&] { load_scene(path); }, path, c.line, c.column, c.field, prefix + c.problem);
+}
+
+const std::string kBall = R"({"material": "grey", "shape": {"type": "sphere", "radius": 1}})";
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadInstanceInput,
+    ::testing::Values(
+        BadInstances{"UnknownDefinition", R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "bal"}]
+)", 6, 26, "objects[0].instance", "unknown definition \"bal\" (did you mean \"ball\"?)"},
+        BadInstances{"NoDefinitions", R"("objects": [{"instance": "ball"}]
+)", 5, 26, "objects[0].instance", "unknown definition \"ball\"; the scene has no \"definitions\""},
+        BadInstances{"PlacesItself", R"("definitions": {"a": {"objects": [{"instance": "b"}]},
+  "b": {"objects": [{"instance": "a"}]}},
+"objects": [{"instance": "a"}]
+)", 6, 34, "definitions.b.objects[0].instance", "definition \"a\" places itself: a -> b -> a"},
+        BadInstances{"TooDeep", R"("definitions": {"d0": {"objects": [{"instance": "d1"}]}, "d1": {"objects": [{"instance": "d2"}]},
+ "d2": {"objects": [{"instance": "d3"}]}, "d3": {"objects": [{"instance": "d4"}]}, "d4": {"objects": [{"instance": "d5"}]},
+ "d5": {"objects": [{"instance": "d6"}]}, "d6": {"objects": [{"instance": "d7"}]}, "d7": {"objects": [{"instance": "d8"}]},
+ "d8": {"objects": [{"instance": "d9"}]}, "d9": {"objects": [{"instance": "e0"}]}, "e0": {"objects": [{"instance": "e1"}]},
+ "e1": {"objects": [{"instance": "e2"}]}, "e2": {"objects": [{"instance": "e3"}]}, "e3": {"objects": [{"instance": "e4"}]},
+ "e4": {"objects": [{"instance": "e5"}]}, "e5": {"objects": [{"instance": "e6"}]}, "e6": )" + kBall + R"(},
+"objects": [{"instance": "d0"}]
+)", 10, 75, "definitions.e5.objects[0].instance",
+                      "definitions nest more than 16 deep: d0 -> d1 -> d2 -> d3 -> d4 -> d5 -> d6 -> d7 -> d8 -> d9 -> "
+                      "e0 -> e1 -> e2 -> e3 -> e4 -> e5 -> e6"},
+        BadInstances{"ShapeAndInstance", R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "ball", "shape": {"type": "sphere"}}]
+)", 6, 43, "objects[0].shape", "an object has a \"shape\" or places an \"instance\", not both"},
+        BadInstances{"EmptyGroup", R"("definitions": {"g": {"objects": []}},
+"objects": [{"instance": "g"}]
+)", 5, 34, "definitions.g.objects", "a group needs at least one object"},
+        BadInstances{"DefinitionOfNeither", R"("definitions": {"g": {"material": "grey"}},
+"objects": [{"instance": "g"}]
+)", 5, 22, "definitions.g",
+                     "a definition has a \"shape\" (with its \"material\") or \"objects\" (a group), one of the two"},
+        BadInstances{"PlacementsAndGrid", R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "ball", "placements": [], "grid": {"counts": [1, 1, 1], "spacing": [1, 1, 1]}}]
+)", 6, 60, "objects[0].grid", "an object places its copies by \"placements\" or by a \"grid\", not both"},
+        BadInstances{"FractionalCount", R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "ball", "grid": {"counts": [1.5, 1, 1], "spacing": [1, 1, 1]}}]
+)", 6, 53, "objects[0].grid.counts", "expected whole numbers of placements along x, y and z"},
+        BadInstances{"TooManyInAGrid", R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "ball", "grid": {"counts": [4096, 4096, 1], "spacing": [1, 1, 1]}}]
+)", 6, 53, "objects[0].grid.counts", "a grid places at most 4194304 copies (asked: 16777216)"},
+        BadInstances{"TooManyObjectsFromAGroup", R"("definitions": {"ball": )" + kBall + R"(,
+  "g": {"objects": [{"instance": "ball", "grid": {"counts": [64, 64, 64], "spacing": [1, 1, 1]}}]}},
+"objects": [{"instance": "g", "grid": {"counts": [2048, 1, 1], "spacing": [1, 1, 1]}}]
+)", 7, 50, "objects[0].grid.counts",
+                     "these placements add 536870912 objects (2048 placements of 262144 parts); at most 16777216 are allowed"},
+        BadInstances{"UnknownOverride", R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "ball", "placements": [{"material": "gren"}]}]
+)", 6, 62, "objects[0].placements[0].material",
+                     "unknown material \"gren\" (did you mean \"grey\"?); defined: blue, grey, red"},
+        BadInstances{"PlacementBeyondTheWorld", R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "ball", "placements": [{"transform": {"translate": [1e19, 0, 0]}}]}]
+)", 6, 63, "objects[0].placements[0].transform",
+                     "the shape, transformed, lies beyond 1e18 from the origin (every coordinate of the scene must be within [-1e18, 1e18])"}),
+    [](const ::testing::TestParamInfo<BadInstances>& info) { return info.param.name; });
+
+TEST_F(Instances, PlacementsAreChargedToTheMemoryLimit) {
+    SceneOverrides overrides;
+    overrides.max_memory_bytes = 64u << 20;
+    const std::string path = dir_.write("scene.json", scene_with(R"("definitions": {"ball": )" + kBall + R"(},
+"objects": [{"instance": "ball", "grid": {"counts": [1000, 100, 10], "spacing": [1, 1, 1]}}]
+)")).string();
+    try {
+        load_scene(path, overrides);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.field(), "objects[0].grid.counts");
+        EXPECT_NE(std::string(error.what()).find("1000000 placed objects"), std::string::npos) << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace isotrace
