@@ -3,24 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/sphere/distance_range.h"
 #include "geometry/sphere/sphere_intersection.h"
 #include "renderer/math/line_box_clip.h"
 
 namespace isotrace {
-namespace {
-
-// The interval of |p| over a box (nearest and farthest points, axis by axis).
-Interval norm_range(const Interval& x, const Interval& y, const Interval& z) {
-    double near2 = 0, far2 = 0;
-    for (const Interval& c : {x, y, z}) {
-        const Interval m = c.magnitude();
-        near2 += m.lo * m.lo;
-        far2 += m.hi * m.hi;
-    }
-    return {std::sqrt(near2), std::sqrt(far2)};
-}
-
-}  // namespace
 
 Container Container::box(const Vec3d& lower, const Vec3d& upper) {
     Container c;
@@ -78,8 +65,7 @@ Vec3d Container::normal(const Vec3d& p) const {
 }
 
 Interval Container::distance_range(const IntervalBox& cell) const {
-    const Interval x = cell.x + (-centre_.x), y = cell.y + (-centre_.y), z = cell.z + (-centre_.z);
-    if (is_sphere_) return norm_range(x, y, z) + (-radius_);
+    if (is_sphere_) return ::isotrace::distance_range(cell, centre_) + (-radius_);
     // The box's signed distance is 1-Lipschitz: its value at the cell's centre, widened by the half diagonal.
     const Vec3d middle = (cell.lower() + cell.upper()) * 0.5;
     const double reach = 0.5 * length(cell.upper() - cell.lower());
