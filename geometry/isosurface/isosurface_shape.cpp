@@ -10,7 +10,7 @@
 
 namespace isotrace {
 
-IsosurfaceShape::IsosurfaceShape(std::unique_ptr<ImplicitField> field, const Container& container,
+IsosurfaceShape::IsosurfaceShape(std::shared_ptr<const ImplicitField> field, const Container& container,
                                  std::vector<IntervalBox> cells, const IsosurfaceSettings& settings,
                                  std::vector<std::unique_ptr<Shape>> keep_alive)
     : keep_alive_(std::move(keep_alive)),
@@ -105,10 +105,22 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::first_hit(std::uint32_t ind
         a = clip->t_enter;
         b = clip->t_exit;
     }
-    const Vec3d p_a = origin + direction * a;
+    const Vec3d p_a = origin + direction * a, p_b = origin + direction * b;
+    const bool enters_container = a == inside->lo && a > t_near, leaves_container = b == inside->hi && b < t_far;
+    // Most segments through a cell miss the surface: one bound settles them before any point is evaluated.
+    IntervalBox segment = IntervalBox::point(p_a);
+    segment.extend(p_b);
+    const Interval range = field_->value_range(segment);
+    ++work.search.interval_bounds;
+    if (range.lo >= 0) return std::nullopt;  // outside throughout, as the search would find
+    if (range.hi < 0) {                      // inside throughout: only the container's boundary is surface here
+        if (enters_container) return Hit{a, container_.normal(p_a)};
+        if (leaves_container) return Hit{b, container_.normal(p_b)};
+        return std::nullopt;
+    }
     const double g_a = field_->value(p_a);
     // The ray enters the container where the function's solid meets its boundary.
-    if (a == inside->lo && a > t_near && g_a < 0) return Hit{a, container_.normal(p_a)};
+    if (enters_container && g_a < 0) return Hit{a, container_.normal(p_a)};
     std::optional<Hit> hit;
     search(origin, direction, a, b, g_a, work, [&](const Crossing& crossing) {
         if (!(crossing.t > t_near && crossing.t < t_far)) return true;
@@ -117,8 +129,7 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::first_hit(std::uint32_t ind
     });
     if (hit) return hit;
     // A ray from inside leaves through the container's boundary.
-    const Vec3d p_b = origin + direction * b;
-    if (b == inside->hi && b < t_far && field_->value(p_b) < 0) return Hit{b, container_.normal(p_b)};
+    if (leaves_container && field_->value(p_b) < 0) return Hit{b, container_.normal(p_b)};
     return std::nullopt;
 }
 
