@@ -43,7 +43,7 @@ public:
             const Interval q = box[k].magnitude() + (-half_size_[k]);
             outside_lo += std::max(q.lo, 0.0) * std::max(q.lo, 0.0);
             outside_hi += std::max(q.hi, 0.0) * std::max(q.hi, 0.0);
-            largest = {std::max(largest.lo, q.lo), std::max(largest.hi, q.hi)};
+            largest = max(largest, q);
         }
         return Interval{std::sqrt(outside_lo), std::sqrt(outside_hi)} + Interval{std::min(largest.lo, 0.0), std::min(largest.hi, 0.0)};
     }

@@ -8,8 +8,6 @@
 namespace isotrace {
 namespace {
 
-Interval hull(const Interval& a, const Interval& b) { return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)}; }
-
 class IsosurfaceField final : public ImplicitField {
 public:
     explicit IsosurfaceField(const IsosurfaceShape& shape) : shape_(shape) {}
@@ -28,7 +26,7 @@ public:
     }
     Interval value_range(const IntervalBox& box) const override {
         const Interval f = shape_.field().value_range(box), d = shape_.container().distance_range(box);
-        return {std::max(f.lo, d.lo), std::max(f.hi, d.hi)};
+        return max(f, d);
     }
     // The derivative of a max is one of its operands' where it exists.
     Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override {

@@ -38,7 +38,7 @@ class IsosurfaceShape final : public Shape, public Solid {
 public:
     // `cells` from surface_cells(*field, container, ...); `keep_alive` owns whatever the field refers to (the shapes
     // of its field terms).
-    IsosurfaceShape(std::unique_ptr<ImplicitField> field, const Container& container, std::vector<IntervalBox> cells,
+    IsosurfaceShape(std::shared_ptr<const ImplicitField> field, const Container& container, std::vector<IntervalBox> cells,
                     const IsosurfaceSettings& settings, std::vector<std::unique_ptr<Shape>> keep_alive = {});
 
     std::string type_name() const override { return "isosurface"; }
@@ -88,7 +88,7 @@ private:
     static void occluded_callback(const RTCOccludedFunctionNArguments* args);
 
     std::vector<std::unique_ptr<Shape>> keep_alive_;
-    std::unique_ptr<ImplicitField> field_;
+    std::shared_ptr<const ImplicitField> field_;
     Container container_;
     std::vector<IntervalBox> cells_;
     double resolution_;

@@ -13,16 +13,8 @@
 
 namespace isotrace::isosurface_test {
 
-inline Interval hull(const Interval& a, const Interval& b) { return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)}; }
-inline Interval max_of(const Interval& a, const Interval& b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
-inline Interval min_of(const Interval& a, const Interval& b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
-inline Interval sqrt_of(const Interval& a) { return {std::sqrt(std::max(a.lo, 0.0)), std::sqrt(std::max(a.hi, 0.0))}; }
-inline Interval square(const Interval& a) {
-    const Interval m = a.magnitude();
-    return {m.lo * m.lo, m.hi * m.hi};
-}
 inline Interval norm(const Interval& x, const Interval& y, const Interval& z) {
-    return sqrt_of(square(x) + square(y) + square(z));
+    return sqrt_of_non_negative(square(x) + square(y) + square(z));
 }
 // The slope of a 1-Lipschitz field along d.
 inline Interval lipschitz_slope(const Vec3d& d) { return {-length(d), length(d)}; }
@@ -67,8 +59,8 @@ public:
     }
     bool may_reach_surface(const Vec3d& c, double r) const override { return std::abs(value(c)) <= r; }
     Interval value_range(const IntervalBox& b) const override {
-        const Interval q = sqrt_of(square(b.x) + square(b.y)) + (-major_);
-        return sqrt_of(square(q) + square(b.z)) + (-minor_);
+        const Interval q = sqrt_of_non_negative(square(b.x) + square(b.y)) + (-major_);
+        return sqrt_of_non_negative(square(q) + square(b.z)) + (-minor_);
     }
     Interval slope_range(const IntervalBox&, const Vec3d& d) const override { return lipschitz_slope(d); }
 
@@ -151,8 +143,8 @@ public:
     Interval value_range(const IntervalBox& b) const override {
         const Interval sphere = norm(b.x, b.y, b.z) + (-1.0);
         const Interval rod =
-            max_of(max_of(sqrt_of(square(b.y) + square(b.z)) + (-width_), b.x + (-length_)), b.x * -1.0);
-        return min_of(sphere, rod);
+            max(max(sqrt_of_non_negative(square(b.y) + square(b.z)) + (-width_), b.x + (-length_)), b.x * -1.0);
+        return min(sphere, rod);
     }
     Interval slope_range(const IntervalBox&, const Vec3d& d) const override { return lipschitz_slope(d); }
 
@@ -173,7 +165,7 @@ public:
     FieldBox bounds() const override { return {{-1, -1, -1}, {1, 1, 1}}; }
     bool may_reach_surface(const Vec3d&, double) const override { return true; }
     Interval value_range(const IntervalBox& b) const override {
-        return max_of(sin_range(b.x * k_) + level_, norm(b.x, b.y, b.z) + (-1.0));
+        return max(sin_range(b.x * k_) + level_, norm(b.x, b.y, b.z) + (-1.0));
     }
     Interval slope_range(const IntervalBox& b, const Vec3d& d) const override {
         return hull(cos_range(b.x * k_) * (k_ * d.x), lipschitz_slope(d));

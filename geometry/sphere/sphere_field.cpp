@@ -35,7 +35,7 @@ public:
         Interval range{INFINITY, INFINITY};
         for (const Sphere& s : spheres_) {
             const Interval own = distance_range(box, s.centre) + (-s.radius);
-            range = {std::min(range.lo, own.lo), std::min(range.hi, own.hi)};
+            range = min(range, own);
         }
         return range;
     }
@@ -53,7 +53,7 @@ public:
                                        (box.z + (-s.centre.z)) * direction.z;
                 own = along * Interval{1 / distance.hi, 1 / distance.lo};
             }
-            slope = {std::min(slope.lo, own.lo), std::max(slope.hi, own.hi)};
+            slope = hull(slope, own);
         }
         return slope;
     }

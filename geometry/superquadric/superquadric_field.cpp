@@ -37,7 +37,7 @@ public:
         Interval range{INFINITY, INFINITY};
         for (const Superquadric& s : shape_.superquadrics()) {
             const Interval own = continued_range(s, box);
-            range = {std::min(range.lo, own.lo), std::min(range.hi, own.hi)};
+            range = min(range, own);
         }
         return range;
     }
