@@ -35,6 +35,23 @@ public:
     bool may_reach_surface(const Vec3d& centre, double radius) const override {
         return std::abs(value(centre)) <= radius;
     }
+    // With q = |p| − h per axis: the length of q's positive part plus its largest component where that is negative.
+    Interval value_range(const IntervalBox& box) const override {
+        double outside_lo = 0, outside_hi = 0;
+        Interval largest{-INFINITY, -INFINITY};
+        for (int k = 0; k < 3; ++k) {
+            const Interval q = box[k].magnitude() + (-half_size_[k]);
+            outside_lo += std::max(q.lo, 0.0) * std::max(q.lo, 0.0);
+            outside_hi += std::max(q.hi, 0.0) * std::max(q.hi, 0.0);
+            largest = max(largest, q);
+        }
+        return Interval{std::sqrt(outside_lo), std::sqrt(outside_hi)} + Interval{std::min(largest.lo, 0.0), std::min(largest.hi, 0.0)};
+    }
+    // A distance: 1-Lipschitz.
+    Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override {
+        (void)box;
+        return {-length(direction), length(direction)};
+    }
 
 private:
     Vec3d half_size_;

@@ -31,6 +31,13 @@ public:
     bool may_reach_surface(const Vec3d& centre, double radius) const override {
         return inner_->may_reach_surface(to_inner_.point(centre), radius * inner_stretch_);
     }
+    Interval value_range(const IntervalBox& box) const override {
+        return inner_->value_range(transformed_box(box, to_inner_));
+    }
+    // d/dt f(A⁻¹(p + t·d)) is the inner field's slope along A⁻¹d.
+    Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override {
+        return inner_->slope_range(transformed_box(box, to_inner_), to_inner_.vector(direction));
+    }
 
 private:
     std::unique_ptr<ImplicitField> inner_;
@@ -39,6 +46,12 @@ private:
 };
 
 }  // namespace
+
+IntervalBox transformed_box(const IntervalBox& box, const Transform& map) {
+    IntervalBox image = IntervalBox::point(map.point(box.lower()));
+    for (int corner = 1; corner < 8; ++corner) image.extend(map.point(box_corner(box.lower(), box.upper(), corner)));
+    return image;
+}
 
 std::unique_ptr<ImplicitField> transformed_field(std::unique_ptr<ImplicitField> inner, const Transform& to_outer) {
     if (to_outer.is_identity()) return inner;

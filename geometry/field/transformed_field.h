@@ -11,4 +11,8 @@ namespace isotrace {
 
 std::unique_ptr<ImplicitField> transformed_field(std::unique_ptr<ImplicitField> inner, const Transform& to_outer);
 
+// The axis-aligned box around the image of `box` under the affine `map` (the box of its corners' images: exact,
+// the image being the parallelepiped they span), for carrying interval bounds from one frame to another.
+IntervalBox transformed_box(const IntervalBox& box, const Transform& map);
+
 }  // namespace isotrace

@@ -1,5 +1,11 @@
 // The implicit field of a blob group for the polygonisers: f = T − Σ wᵢ·fᵢ (negative inside), gradient −∇Σ.
 //
+// value_range sums each element's range over the box: the kernel is non-increasing in dist², so wᵢ·fᵢ lies between
+// its values at the box's farthest and nearest squared distances. slope_range sums each element's slope
+// 2wᵢ·f'(dist²)·(offset·d): f' lies between its values at those two distances (f is convex in dist²), and for a
+// metaball offset·d = (p − c)·d is an interval of the box; a metacube's slope is bounded by its Lipschitz constant,
+// a hard cube's (a step) not at all.
+//
 // may_reach_surface bounds the sum over the ball by Lipschitz constants: element i changes by at most
 // |wᵢ|·2·|f'(0)|/Rᵢ per unit length (f is non-increasing and convex in r², so |df/dr²| ≤ |f'(0)|/R², and
 // |∇dist²| = 2·dist ≤ 2R inside the support). Elements whose support misses the ball contribute nothing there.
@@ -47,7 +53,53 @@ public:
         return !(std::abs(value(centre)) > slope * radius);
     }
 
+    Interval value_range(const IntervalBox& box) const override {
+        const WorldBounds bounds{box.lower(), box.upper()};
+        Interval sum{0, 0};
+        for_each_element_meeting(box, [&](const Metacube& element, std::uint32_t) {
+            const double near2 = element.nearest_squared_distance(bounds), far2 = element.farthest_squared_distance(bounds);
+            Interval own;
+            if (element.is_hard_cube()) own = near2 > 0 ? Interval{0, 0} : (far2 == 0 ? Interval{1, 1} : Interval{0, 1});
+            else own = {group_.kernel().value(far2, element.radius()), group_.kernel().value(near2, element.radius())};
+            sum = sum + own * element.weight();
+            return true;
+        });
+        return {group_.threshold() - sum.hi, group_.threshold() - sum.lo};
+    }
+    Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override {
+        const WorldBounds bounds{box.lower(), box.upper()};
+        Interval sum{0, 0};
+        bool bounded = true;
+        for_each_element_meeting(box, [&](const Metacube& element, std::uint32_t i) {
+            if (element.is_metaball()) {
+                const double near2 = element.nearest_squared_distance(bounds);
+                const double far2 = element.farthest_squared_distance(bounds);
+                const Interval derivative{group_.kernel().derivative(near2, element.radius()),
+                                          group_.kernel().derivative(far2, element.radius())};
+                const Vec3d& c = element.centre();
+                const Interval along =
+                    (box.x + (-c.x)) * direction.x + (box.y + (-c.y)) * direction.y + (box.z + (-c.z)) * direction.z;
+                sum = sum + derivative * along * (2 * element.weight());
+            } else {
+                const double reach = slopes_[i] * length(direction);
+                bounded = std::isfinite(reach);
+                sum = sum + Interval{-reach, reach};
+            }
+            return bounded;
+        });
+        if (!bounded) return Interval::unbounded();
+        return {-sum.hi, -sum.lo};
+    }
+
 private:
+    // Calls visit(element, index) for every element whose support may meet `box`; stops when visit returns false.
+    template <class Visit>
+    void for_each_element_meeting(const IntervalBox& box, Visit&& visit) const {
+        const Vec3d centre = (box.lower() + box.upper()) * 0.5;
+        supports_.for_each_near(centre, 0.5 * length(box.upper() - box.lower()),
+                                [&](std::uint32_t i) { return visit(group_.elements()[i], i); });
+    }
+
     const BlobGroup& group_;
     std::vector<FieldBox> supports_boxes_;
     BoxIndex supports_;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/sphere/distance_range.h"
 #include "geometry/sphere/sphere_shape.h"
 
 namespace isotrace {
@@ -28,6 +29,33 @@ public:
         for (std::size_t i = 0; i < spheres_.size(); ++i)
             if (std::abs(signed_distance(centre, i)) <= radius) return true;
         return false;
+    }
+
+    Interval value_range(const IntervalBox& box) const override {
+        Interval range{INFINITY, INFINITY};
+        for (const Sphere& s : spheres_) {
+            const Interval own = distance_range(box, s.centre) + (-s.radius);
+            range = min(range, own);
+        }
+        return range;
+    }
+    // The slope of the nearest sphere's distance is (p − c)·d/|p − c|: of the spheres that may be the nearest
+    // over the box (their lower bound below the minimum's upper one), the hull of those slopes.
+    Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override {
+        const double least_upper = value_range(box).hi;
+        Interval slope{INFINITY, -INFINITY};
+        for (const Sphere& s : spheres_) {
+            const Interval distance = distance_range(box, s.centre);
+            if (distance.lo - s.radius > least_upper) continue;
+            Interval own{-length(direction), length(direction)};
+            if (distance.lo > 0) {
+                const Interval along = (box.x + (-s.centre.x)) * direction.x + (box.y + (-s.centre.y)) * direction.y +
+                                       (box.z + (-s.centre.z)) * direction.z;
+                own = along * Interval{1 / distance.hi, 1 / distance.lo};
+            }
+            slope = hull(slope, own);
+        }
+        return slope;
     }
 
 private:

@@ -2,9 +2,15 @@
 // (negative inside), min over the set of G(D⁻¹(p)) − 1, continued beyond each deformed box by the distance to it
 // so that it stays positive, continuous and rising there (a dual-contouring vertex clamped to a cell may sit just
 // outside the box, where a constant field had no gradient and |f|/|∇f| was infinite).
+//
+// value_range carries the box into each superquadric's deformed frame, bounds the gauge over the undeformed image
+// of its part inside the deformed box (interval arithmetic through the chain, as the crossing search does) and
+// adds the range of the distance to that box; slope_range is left unbounded (the gauge is not Lipschitz in
+// space), which a search using this field as a term pays for in halvings only.
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/field/transformed_field.h"
 #include "geometry/superquadric/superquadric_shape.h"
 
 namespace isotrace {
@@ -27,7 +33,43 @@ public:
                            [&](const Superquadric& s) { return may_cross(s, centre, radius); });
     }
 
+    Interval value_range(const IntervalBox& box) const override {
+        Interval range{INFINITY, INFINITY};
+        for (const Superquadric& s : shape_.superquadrics()) {
+            const Interval own = continued_range(s, box);
+            range = min(range, own);
+        }
+        return range;
+    }
+
 private:
+    // The range of s.continued_field over `box`: local_field over the box clamped to the deformed box, plus the
+    // distance to the deformed box.
+    static Interval continued_range(const Superquadric& s, const IntervalBox& box) {
+        const IntervalBox local = transformed_box(box, s.placement().inverse());
+        const IntervalBox& deformed = s.deformation().deformed_box();
+        IntervalBox clamped = local;
+        double near2 = 0, far2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            clamped[k] = {std::clamp(local[k].lo, deformed[k].lo, deformed[k].hi),
+                          std::clamp(local[k].hi, deformed[k].lo, deformed[k].hi)};
+            const double below = deformed[k].lo - local[k].lo, above = local[k].hi - deformed[k].hi;
+            const double gap_near = std::max({deformed[k].lo - local[k].hi, local[k].lo - deformed[k].hi, 0.0});
+            const double gap_far = std::max({below, above, 0.0});
+            near2 += gap_near * gap_near;
+            far2 += gap_far * gap_far;
+        }
+        bool clipped = false;
+        const std::optional<IntervalBox> undeformed = s.deformation().inverse_box(clamped, clipped);
+        Interval field{1, 1};  // outside a stage box the field is 1
+        if (undeformed) {
+            const Interval gauge = s.shape().gauge_range(
+                {undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
+            field = {gauge.lo - 1, clipped ? std::max(gauge.hi - 1, 1.0) : gauge.hi - 1};
+        }
+        return field + Interval{std::sqrt(near2), std::sqrt(far2)};
+    }
+
     static bool may_cross(const Superquadric& s, const Vec3d& centre, double radius) {
         const Transform to_local = s.placement().inverse();
         IntervalBox local = IntervalBox::point(to_local.point(centre));

@@ -37,13 +37,56 @@ inline Interval operator+(Interval a, Interval b) { return {a.lo + b.lo, a.hi + 
 inline Interval operator-(Interval a, Interval b) { return {a.lo - b.hi, a.hi - b.lo}; }
 inline Interval operator+(Interval a, double b) { return {a.lo + b, a.hi + b}; }
 inline Interval operator*(Interval a, double s) { return Interval::spanning(a.lo * s, a.hi * s); }
+inline Interval operator-(Interval a) { return {-a.hi, -a.lo}; }
 inline Interval operator*(Interval a, Interval b) {
-    const double p[] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    double p[] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    // An infinite end times a zero end is NaN in IEEE arithmetic, but the ends bound real numbers, so the product
+    // of those ends is 0 (only unbounded intervals get here, so bounded ones pay one test).
+    if (std::isnan(p[0] + p[1] + p[2] + p[3])) {
+        const auto times = [](double u, double v) { return u == 0 || v == 0 ? 0.0 : u * v; };
+        p[0] = times(a.lo, b.lo), p[1] = times(a.lo, b.hi), p[2] = times(a.hi, b.lo), p[3] = times(a.hi, b.hi);
+    }
     return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
 }
 // Requires b.lo > 0 (the callers divide by strictly positive taper factors).
 inline Interval divide_by_positive(Interval a, Interval b) {
     return {a.lo >= 0 ? a.lo / b.hi : a.lo / b.lo, a.hi >= 0 ? a.hi / b.lo : a.hi / b.hi};
+}
+
+// The smallest interval holding both.
+inline Interval hull(Interval a, Interval b) { return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+inline Interval min(Interval a, Interval b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
+inline Interval max(Interval a, Interval b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+inline Interval square(Interval a) {
+    const Interval m = a.magnitude();
+    return {m.lo * m.lo, m.hi * m.hi};
+}
+// a^n for an integer n ≥ 1: monotone for odd n, a function of |a| for even n.
+inline Interval pow_int(Interval a, int n) {
+    if (n % 2 == 0) a = a.magnitude();
+    return {std::pow(a.lo, n), std::pow(a.hi, n)};
+}
+// The interval of 1/b; all the reals when b holds 0 (and the ends do not bound 1/b).
+inline Interval reciprocal(Interval b) {
+    if (b.lo > 0 || b.hi < 0) return {1 / b.hi, 1 / b.lo};
+    return Interval::unbounded();
+}
+// Monotone functions: the function of the ends.
+inline Interval exp(Interval a) { return {std::exp(a.lo), std::exp(a.hi)}; }
+inline Interval atan(Interval a) { return {std::atan(a.lo), std::atan(a.hi)}; }
+// √max(a, 0): the square root of the part of a that is not negative (0 for the rest).
+inline Interval sqrt_of_non_negative(Interval a) {
+    return {std::sqrt(std::max(a.lo, 0.0)), std::sqrt(std::max(a.hi, 0.0))};
+}
+// log max(a, floor) for a floor > 0.
+inline Interval log_above(Interval a, double floor) {
+    return {std::log(std::max(a.lo, floor)), std::log(std::max(a.hi, floor))};
+}
+// The signs of the values: ±1, both where a holds 0.
+inline Interval sign_range(Interval a) {
+    if (a.lo > 0) return {1, 1};
+    if (a.hi < 0) return {-1, -1};
+    return {-1, 1};
 }
 
 namespace interval_detail {
@@ -98,6 +141,25 @@ inline bool clip_box(IntervalBox& box, const IntervalBox& clip) {
         if (box[k].lo > box[k].hi) return false;
     }
     return true;
+}
+
+// tan over an angle interval: monotone between its poles π/2 + kπ, all the reals when one lies inside.
+inline Interval tan_range(Interval angle) {
+    constexpr double pi = std::numbers::pi;
+    if (!angle.is_finite() || angle.width() >= pi) return Interval::unbounded();
+    const double first_pole = pi / 2 + std::ceil((angle.lo - pi / 2) / pi) * pi;
+    if (first_pole <= angle.hi) return Interval::unbounded();
+    return {std::tan(angle.lo), std::tan(angle.hi)};
+}
+
+// atan2(y, x) over a box: a box that holds the origin or meets the branch cut (x < 0, y = 0) may reach the whole
+// [−π, π]; any other box is convex and on one continuous branch, where the angle, constant along rays from the
+// origin, takes its extremes at the corners.
+inline Interval atan2_range(Interval y, Interval x) {
+    constexpr double pi = std::numbers::pi;
+    if (y.lo <= 0 && y.hi >= 0 && x.lo <= 0) return {-pi, pi};
+    const double a[] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
+    return {*std::min_element(a, a + 4), *std::max_element(a, a + 4)};
 }
 
 }  // namespace isotrace

@@ -2245,6 +2245,69 @@ case_texture_nesting_bounded() {  # a deeply nested texture is an error (JSON it
     "materials.grey.reflectance.value.value" "textures nest more than 32 levels deep"
 }
 
+# ---- isosurfaces ----
+
+# An isosurface (a gyroid cut by a ball) renders without NaN, counts its work, gives a range image and a closed mesh.
+case_isosurface_render() {
+  write_shape_scene "$work/scene" '        "type": "isosurface", "parameters": {"k": 4},' \
+    '        "function": "sin(k*x)*cos(k*y) + sin(k*y)*cos(k*z) + sin(k*z)*cos(k*x)", "contained_by": {"sphere": {"radius": 1.2}}'
+  local scene="$work/scene/scene.json"
+  cli_expect 0 render "$scene" --spp 2 -o "$work/out.exr" --stats-json "$work/stats.json"
+  grep -qE "NaN/Inf +0 samples" "$work/stderr" || { show_output; fail "samples were NaN"; }
+  python3 - "$work/stats.json" <<'PY' || fail "the isosurface's work is not in the statistics"
+import json, sys
+stats = json.load(open(sys.argv[1]))
+counters = stats["counters"]
+assert counters.get("isosurface.evaluations", 0) > 0, counters
+assert counters.get("isosurface.budget_exhausted", -1) == 0, counters
+assert stats["geometry"]["isosurface"]["closest_hits"] > 0, stats["geometry"]
+assert stats["non_finite_pixels"] == 0
+PY
+  cli_expect 0 depth "$scene" -o "$work/depth.png"
+  [[ -s "$work/depth.png" ]] || fail "no range image"
+  cli_expect 0 mesh "$scene" -o "$work/gyroid.obj" --depth 5
+  python3 - "$work/gyroid.obj" <<'PY' || fail "the isosurface's mesh is not a closed, consistently oriented surface"
+import collections, sys
+edges = collections.Counter()
+faces = 0
+for line in open(sys.argv[1]):
+    if line.startswith("f "):
+        v = [int(token.split("/")[0]) for token in line.split()[1:]]
+        faces += 1
+        for a, b in zip(v, v[1:] + v[:1]):
+            edges[(a, b)] += 1
+assert faces > 100, faces
+assert all(count == 1 and edges[(b, a)] == 1 for (a, b), count in edges.items())
+PY
+}
+
+# Bad isosurfaces exit 2 at their position: no container, an empty container, a container without surface, an
+# unknown name in the function (with a suggestion), a field the function does not use, terms nested too deep.
+case_isosurface_bad_input() {
+  local function='"function": "length(p) - r", "parameters": {"r": 0.5}'
+  write_shape_scene "$work/scene" '        "type": "isosurface",' "        $function"
+  check_bad_scene "$work/scene" 10 "objects[0].shape" "contained_by"
+  write_shape_scene "$work/scene" '        "type": "isosurface",' \
+    "        $function, \"contained_by\": {\"box\": {\"min\": [-1, -1, 0], \"max\": [1, 1, 0]}}"
+  check_bad_scene "$work/scene" 12 "objects[0].shape.contained_by.box.max" "hold nothing"
+  write_shape_scene "$work/scene" '        "type": "isosurface",' \
+    "        $function, \"contained_by\": {\"box\": {\"min\": [2, 2, 2], \"max\": [3, 3, 3]}}"
+  check_bad_scene "$work/scene" 12 "objects[0].shape.contained_by" "no surface"
+  write_shape_scene "$work/scene" '        "type": "isosurface",' \
+    '        "function": "lenght(p) - 0.5", "contained_by": {"sphere": {"radius": 1}}'
+  check_bad_scene "$work/scene" 12 "objects[0].shape.function" "length"
+  write_shape_scene "$work/scene" '        "type": "isosurface",' \
+    '        "function": "length(p) - 0.5", "fields": {"ball": {"type": "sphere"}}, "contained_by": {"sphere": {"radius": 1}}'
+  check_bad_scene "$work/scene" 12 "objects[0].shape.fields.ball" "does not use"
+  local inner='{"type": "sphere"}' i
+  for ((i = 0; i < 5; ++i)); do
+    inner="{\"type\": \"isosurface\", \"function\": \"f(p)\", \"fields\": {\"f\": $inner}, \"contained_by\": {\"sphere\": {\"radius\": 2}}}"
+  done
+  write_shape_scene "$work/scene" '        "type": "isosurface",' \
+    "        \"function\": \"f(p)\", \"fields\": {\"f\": $inner}, \"contained_by\": {\"sphere\": {\"radius\": 2}}"
+  check_bad_scene "$work/scene" 12 "fields" "nest more than 4"
+}
+
 case_tiny_roughness_no_nan() {  # roughness 1e-5 under an environment made a third of the samples NaN
   mkdir -p "$work/scene"
   write_base_scene "$work/scene/base.json"

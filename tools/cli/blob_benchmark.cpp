@@ -5,8 +5,10 @@
 #include <cmath>
 
 #include "geometry/implicit/blob_group_shape.h"
+#include "geometry/isosurface/isosurface_shape.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "geometry/polygonize/mesh_topology.h"
+#include "geometry/polygonize/polygonize_field.h"
 #include "renderer/core/input_error.h"
 #include "tools/cli/secondary_ray_lists.h"
 
@@ -22,18 +24,36 @@ TracedScene build_of(const LoadedScene& scene) {
     return traced;
 }
 
-// Replaces every blob group by its tessellation as the scene loads, timing the polygoniser.
+// An isosurface's lattice: `cell` (--cell-size) or 2⁷ cells along the longest side of its container.
+int isosurface_depth(const IsosurfaceShape& shape, const std::optional<double>& cell) {
+    const IntervalBox& box = shape.container().bounds();
+    if (!cell) return 7;
+    const double longest = std::max({box.x.width(), box.y.width(), box.z.width()});
+    return std::clamp(int(std::ceil(std::log2(longest / *cell))), 1, kMaxPolygonizeDepth);
+}
+
+// Replaces every blob group and isosurface by its tessellation as the scene loads, timing the polygoniser.
 std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_groups(
     const BlobBenchmarkSettings& settings, const std::string& scene, TessellationSummary& summary) {
     return [&settings, scene, &summary](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
         const auto* blobs = dynamic_cast<const BlobGroupShape*>(shape.get());
-        if (!blobs) return shape;
-        const BlobGroup& group = blobs->group();
-        const double cell = settings.tessellation.cell_size_for(group);
+        const auto* isosurface = dynamic_cast<const IsosurfaceShape*>(shape.get());
+        if (!blobs && !isosurface) return shape;
         const auto start = std::chrono::steady_clock::now();
-        TriangleMeshData mesh = tessellate(group, cell, scene);
+        double cell = 0;
+        TriangleMeshData mesh;
+        if (blobs) {
+            cell = settings.tessellation.cell_size_for(blobs->group());
+            mesh = tessellate(blobs->group(), cell, scene);
+        } else {
+            PolygonizeOptions options;
+            options.depth = isosurface_depth(*isosurface, settings.tessellation.cell_size);
+            const IntervalBox& box = isosurface->container().bounds();
+            cell = std::max({box.x.width(), box.y.width(), box.z.width()}) / double(1 << options.depth);
+            mesh = std::move(polygonize_field(*isosurface->implicit_field(), options).mesh);
+        }
         summary.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (mesh.triangles.empty()) throw InputError({}, scene, "a blob group has no surface to tessellate");
+        if (mesh.triangles.empty()) throw InputError({}, scene, "a blob group or isosurface has no surface to tessellate");
         summary.cell_size = summary.triangles == 0 ? cell : std::min(summary.cell_size, cell);
         summary.triangles += mesh.triangles.size();
         summary.vertices += mesh.positions.size();
@@ -89,10 +109,9 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         log(path + ": loading");
         const std::unique_ptr<LoadedScene> direct = load_scene(path, overrides);
         const auto& primitives = direct->scene->build_statistics().primitives_by_type;
-        const auto blobs = primitives.find("blobs");
-        if (blobs == primitives.end() || blobs->second == 0)
-            throw InputError({}, path, "the scene has no blob group to benchmark");
-        result.elements = blobs->second;
+        for (const char* type : {"blobs", "isosurface"})
+            if (const auto found = primitives.find(type); found != primitives.end()) result.elements += found->second;
+        if (result.elements == 0) throw InputError({}, path, "the scene has no blob group or isosurface to benchmark");
         log(path + ": loading again and tessellating");
         overrides.replace_shape = tessellate_blob_groups(settings, path, result.tessellation);
         const std::unique_ptr<LoadedScene> tessellated = load_scene(path, overrides);

@@ -1,0 +1,137 @@
+#pragma once
+// The four number types an expression tape is evaluated in, and every operation of the tape on each:
+//   double          the value;
+//   Interval        an interval holding every value over a box;
+//   PointGradient   the value and its gradient (forward-mode derivatives along x, y and z at once);
+//   IntervalSlope   an interval of the value and one of its derivative along a direction, over a box.
+// The domain rules of docs/expressions.md are defined here once for doubles and once for intervals (whose
+// intervals hold every point value under the same rules); the derivative types apply the chain rule to them.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "renderer/math/interval.h"
+#include "renderer/math/vec3.h"
+
+namespace isotrace::expression_math {
+
+// log(a) for a below this is log of this (about −708): finite, and far below any value a surface is made of.
+constexpr double kLogFloor = std::numeric_limits<double>::min();
+constexpr double kLargest = std::numeric_limits<double>::max();
+
+// ---- Doubles: the domain rules.
+inline double sqrt(double a) { return std::sqrt(std::max(a, 0.0)); }
+inline double sqrt_slope(double a) { return a > 0 ? 0.5 / std::sqrt(a) : 0; }
+inline double log(double a) { return std::log(std::max(a, kLogFloor)); }
+inline double log_slope(double a) { return a > kLogFloor ? 1 / a : 0; }
+// x/0 = 0.
+inline double inverse(double b) { return b == 0 ? 0 : 1 / b; }
+inline double divide(double a, double b) { return b == 0 ? 0 : a / b; }
+inline double exp(double a) { return std::exp(a); }
+inline double sin(double a) { return std::sin(a); }
+inline double cos(double a) { return std::cos(a); }
+inline double tan(double a) { return std::tan(a); }
+inline double atan(double a) { return std::atan(a); }
+inline double atan2(double y, double x) { return std::atan2(y, x); }  // 0 at the origin
+inline double abs(double a) { return std::abs(a); }
+inline double sign(double a) { return a < 0 ? -1 : 1; }  // the right-hand slope of |a| at 0
+inline double square(double a) { return a * a; }
+inline double pow_int(double a, int n) { return std::pow(a, n); }
+inline double min(double a, double b) { return std::min(a, b); }
+inline double max(double a, double b) { return std::max(a, b); }
+// Overflow stops at the largest double and NaN (which the rules leave no way to) reads 0, so nothing non-finite
+// travels on through the tape.
+inline double settle(double a) { return a >= -kLargest ? std::min(a, kLargest) : (a < 0 ? -kLargest : 0.0); }
+
+// ---- Intervals: the same rules over a range (the operations without rules are those of interval.h).
+inline Interval sqrt(Interval a) { return sqrt_of_non_negative(a); }
+inline Interval sqrt_slope(Interval a) {
+    if (a.hi <= 0) return {0, 0};
+    if (a.lo > 0) return {0.5 / std::sqrt(a.hi), 0.5 / std::sqrt(a.lo)};
+    return {0, std::numeric_limits<double>::infinity()};
+}
+inline Interval log(Interval a) { return log_above(a, kLogFloor); }
+inline Interval log_slope(Interval a) {
+    if (a.hi <= kLogFloor) return {0, 0};
+    if (a.lo > kLogFloor) return {1 / a.hi, 1 / a.lo};
+    return {0, 1 / kLogFloor};
+}
+inline Interval inverse(Interval b) {
+    if (b.lo == 0 && b.hi == 0) return {0, 0};
+    return reciprocal(b);  // all the reals when b holds 0, which holds the rule's 0 as well
+}
+inline Interval divide(Interval a, Interval b) { return a * inverse(b); }
+inline Interval sin(Interval a) { return sin_range(a); }
+inline Interval cos(Interval a) { return cos_range(a); }
+inline Interval tan(Interval a) { return tan_range(a); }
+inline Interval atan2(Interval y, Interval x) { return atan2_range(y, x); }
+inline Interval abs(Interval a) { return a.magnitude(); }
+inline Interval sign(Interval a) { return sign_range(a); }
+// An end that came out NaN (∞ − ∞ of unbounded operands) bounds nothing: it becomes infinite.
+inline Interval settle(Interval a) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {std::isnan(a.lo) ? -inf : a.lo, std::isnan(a.hi) ? inf : a.hi};
+}
+inline Vec3d settle(const Vec3d& a) { return {settle(a.x), settle(a.y), settle(a.z)}; }
+
+// ---- Derivatives: a value and its derivative d (the gradient, or the slope along a direction).
+template <class V, class D>
+struct Dual {
+    V v;
+    D d;
+};
+using PointGradient = Dual<double, Vec3d>;
+using IntervalSlope = Dual<Interval, Interval>;
+
+template <class V, class D> Dual<V, D> operator+(const Dual<V, D>& a, const Dual<V, D>& b) { return {a.v + b.v, a.d + b.d}; }
+template <class V, class D> Dual<V, D> operator-(const Dual<V, D>& a, const Dual<V, D>& b) { return {a.v - b.v, a.d - b.d}; }
+template <class V, class D> Dual<V, D> operator-(const Dual<V, D>& a) { return {-a.v, -a.d}; }
+template <class V, class D> Dual<V, D> operator*(const Dual<V, D>& a, const Dual<V, D>& b) {
+    return {a.v * b.v, a.d * b.v + b.d * a.v};
+}
+// (a/b)′ = (a′ − (a/b) b′) / b, with the rule's x/0 = 0 for both.
+template <class V, class D> Dual<V, D> divide(const Dual<V, D>& a, const Dual<V, D>& b) {
+    const V q = divide(a.v, b.v);
+    return {q, (a.d - b.d * q) * inverse(b.v)};
+}
+template <class V, class D> Dual<V, D> square(const Dual<V, D>& a) { return {square(a.v), a.d * (a.v * 2.0)}; }
+template <class V, class D> Dual<V, D> pow_int(const Dual<V, D>& a, int n) {
+    return {pow_int(a.v, n), a.d * (pow_int(a.v, n - 1) * static_cast<double>(n))};
+}
+template <class V, class D> Dual<V, D> sqrt(const Dual<V, D>& a) { return {sqrt(a.v), a.d * sqrt_slope(a.v)}; }
+template <class V, class D> Dual<V, D> exp(const Dual<V, D>& a) {
+    const V e = exp(a.v);
+    return {e, a.d * e};
+}
+template <class V, class D> Dual<V, D> log(const Dual<V, D>& a) { return {log(a.v), a.d * log_slope(a.v)}; }
+template <class V, class D> Dual<V, D> sin(const Dual<V, D>& a) { return {sin(a.v), a.d * cos(a.v)}; }
+template <class V, class D> Dual<V, D> cos(const Dual<V, D>& a) { return {cos(a.v), a.d * -sin(a.v)}; }
+template <class V, class D> Dual<V, D> tan(const Dual<V, D>& a) {
+    const V t = tan(a.v);
+    return {t, a.d * (square(t) + 1.0)};
+}
+template <class V, class D> Dual<V, D> atan(const Dual<V, D>& a) {
+    return {atan(a.v), a.d * inverse(square(a.v) + 1.0)};
+}
+// atan2(y, x)′ = (x y′ − y x′) / (x² + y²), 0 at the origin by the division rule.
+template <class V, class D> Dual<V, D> atan2(const Dual<V, D>& y, const Dual<V, D>& x) {
+    return {atan2(y.v, x.v), (y.d * x.v - x.d * y.v) * inverse(square(x.v) + square(y.v))};
+}
+template <class V, class D> Dual<V, D> abs(const Dual<V, D>& a) { return {abs(a.v), a.d * sign(a.v)}; }
+
+// min and max take the derivative of the operand they select; over a box where either may be selected, both.
+inline PointGradient min(const PointGradient& a, const PointGradient& b) { return a.v <= b.v ? a : b; }
+inline PointGradient max(const PointGradient& a, const PointGradient& b) { return a.v >= b.v ? a : b; }
+inline IntervalSlope min(const IntervalSlope& a, const IntervalSlope& b) {
+    if (a.v.hi <= b.v.lo) return a;
+    if (b.v.hi <= a.v.lo) return b;
+    return {min(a.v, b.v), hull(a.d, b.d)};
+}
+inline IntervalSlope max(const IntervalSlope& a, const IntervalSlope& b) {
+    if (a.v.lo >= b.v.hi) return a;
+    if (b.v.lo >= a.v.hi) return b;
+    return {max(a.v, b.v), hull(a.d, b.d)};
+}
+template <class V, class D> Dual<V, D> settle(const Dual<V, D>& a) { return {settle(a.v), settle(a.d)}; }
+
+}  // namespace isotrace::expression_math

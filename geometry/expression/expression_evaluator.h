@@ -1,0 +1,105 @@
+#pragma once
+// Runs a tape in any of the number types of expression_arithmetic.h: one interpreter for the value, the gradient,
+// the interval and the interval slope. The slots live on the stack (kMaxExpressionTape of them), so an
+// evaluation allocates nothing and shares nothing with other threads.
+#include "geometry/expression/expression_arithmetic.h"
+#include "geometry/expression/expression_field.h"
+#include "geometry/expression/expression_tape.h"
+
+namespace isotrace::expression_math {
+
+// Noise and field terms of each number type.
+inline double noise(const NoiseTerm& term, double x, double y, double z) { return noise_value(term, {x, y, z}); }
+inline Interval noise(const NoiseTerm& term, Interval x, Interval y, Interval z) {
+    return noise_value_range(term, {x, y, z});
+}
+inline PointGradient noise(const NoiseTerm& term, const PointGradient& x, const PointGradient& y,
+                           const PointGradient& z) {
+    const Vec3d q{x.v, y.v, z.v};
+    const Vec3d g = noise_gradient(term, q);
+    return {noise_value(term, q), x.d * g.x + y.d * g.y + z.d * g.z};
+}
+// |n′| ≤ L × |q′| along the direction, whatever the direction of q′.
+inline IntervalSlope noise(const NoiseTerm& term, const IntervalSlope& x, const IntervalSlope& y,
+                           const IntervalSlope& z) {
+    const double speed = std::sqrt(square(x.d.magnitude().hi) + square(y.d.magnitude().hi) + square(z.d.magnitude().hi));
+    const double reach = term.lipschitz * speed;
+    return {noise_value_range(term, {x.v, y.v, z.v}), Interval{-reach, reach}};
+}
+
+inline double field(const ImplicitField& f, double x, double y, double z) { return f.value({x, y, z}); }
+inline Interval field(const ImplicitField& f, Interval x, Interval y, Interval z) { return f.value_range({x, y, z}); }
+inline PointGradient field(const ImplicitField& f, const PointGradient& x, const PointGradient& y,
+                           const PointGradient& z) {
+    const Vec3d q{x.v, y.v, z.v};
+    const Vec3d g = f.gradient(q);
+    return {f.value(q), x.d * g.x + y.d * g.y + z.d * g.z};
+}
+// The slope along the point's own direction of motion when that is one direction (the term's argument is p moved
+// rigidly, say); otherwise the partial derivatives' bounds times the motion's components.
+inline IntervalSlope field(const ImplicitField& f, const IntervalSlope& x, const IntervalSlope& y,
+                           const IntervalSlope& z) {
+    const IntervalBox box{x.v, y.v, z.v};
+    if (x.d.width() == 0 && y.d.width() == 0 && z.d.width() == 0)
+        return {f.value_range(box), f.slope_range(box, {x.d.lo, y.d.lo, z.d.lo})};
+    const Interval slope = f.slope_range(box, {1, 0, 0}) * x.d + f.slope_range(box, {0, 1, 0}) * y.d +
+                           f.slope_range(box, {0, 0, 1}) * z.d;
+    return {f.value_range(box), slope};
+}
+
+template <class N>
+N constant(double c) {
+    if constexpr (std::is_same_v<N, double>) return c;
+    else if constexpr (std::is_same_v<N, Interval>) return Interval::point(c);
+    else return N{decltype(N::v)(constant<decltype(N::v)>(c)), decltype(N::d){}};
+}
+
+// One instruction, given the slots before it and the point (x, y, z).
+template <class N>
+N apply(const ExpressionTape& tape, const Instruction& in, const N* slots, const N& x, const N& y, const N& z) {
+    const N& a = slots[in.a];
+    const N& b = slots[in.b];
+    switch (in.op) {
+        case Op::Constant: return constant<N>(in.constant);
+        case Op::X: return x;
+        case Op::Y: return y;
+        case Op::Z: return z;
+        case Op::Add: return a + b;
+        case Op::Sub: return a - b;
+        case Op::Mul: return a * b;
+        case Op::Div: return divide(a, b);
+        case Op::Neg: return -a;
+        case Op::Square: return square(a);
+        case Op::PowInt: return pow_int(a, in.index);
+        case Op::Sqrt: return sqrt(a);
+        case Op::Exp: return exp(a);
+        case Op::Log: return log(a);
+        case Op::Sin: return sin(a);
+        case Op::Cos: return cos(a);
+        case Op::Tan: return tan(a);
+        case Op::Atan: return atan(a);
+        case Op::Atan2: return atan2(a, b);
+        case Op::Abs: return abs(a);
+        case Op::Min: return min(a, b);
+        case Op::Max: return max(a, b);
+        case Op::Noise: return noise(tape.noises[in.index], a, b, slots[in.c]);
+        case Op::Field: return field(*tape.fields[in.index], a, b, slots[in.c]);
+    }
+    return a;
+}
+
+// The tape's value at the point (x, y, z).
+template <class N>
+N run(const ExpressionTape& tape, const N& x, const N& y, const N& z) {
+    union Slot {
+        N value;
+        Slot() {}  // left uninitialised: each instruction writes its slot before any later one reads it
+    };
+    Slot slots[kMaxExpressionTape];
+    const std::size_t count = tape.code.size();
+    for (std::size_t i = 0; i < count; ++i)
+        slots[i].value = settle(apply(tape, tape.code[i], &slots[0].value, x, y, z));
+    return slots[count - 1].value;
+}
+
+}  // namespace isotrace::expression_math

@@ -1,0 +1,35 @@
+#pragma once
+// The texture system's noises as expression terms: the same functions (so a surface and a texture built from the
+// same noise agree exactly), each with the constants that make its interval bounds guaranteed: a Lipschitz
+// constant L (|∇n| ≤ L, derived from each noise's construction in docs/decisions.md) and the range of its values.
+#include <cstdint>
+
+#include "renderer/math/interval.h"
+#include "renderer/math/vec3.h"
+#include "renderer/textures/patterns/fractal_noise.h"
+
+namespace isotrace {
+
+enum class NoiseKind { Gradient, Simplex, Fbm, Turbulence, Cellular };
+
+struct NoiseTerm {
+    NoiseKind kind = NoiseKind::Gradient;
+    FractalSettings fractal;  // Fbm, Turbulence (gradient-noise basis); its seed serves every kind
+    float jitter = 0.5f;      // Cellular: at most ½, where the cellular search always finds the nearest point
+    double lipschitz = 0;     // |∇n| ≤ lipschitz everywhere
+    Interval range;           // every value of n
+    double step = 0;          // the central-difference step of the gradient, a small part of the finest detail
+};
+
+// A term with its bounds; the settings are clamped as the textures clamp them, jitter to [0, ½].
+NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float jitter);
+
+// The noise at q, exactly as the textures compute it (in float, footprint 0: a point sample).
+double noise_value(const NoiseTerm& term, const Vec3d& q);
+// Its gradient by central differences (the noises offer no analytic one).
+Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q);
+// An interval holding the noise over the box: the centre's value ± L × the box's half-diagonal, plus an allowance
+// for the float evaluation, within the noise's range.
+Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box);
+
+}  // namespace isotrace

@@ -1,0 +1,199 @@
+#include "geometry/isosurface/isosurface_shape.h"
+
+#include <algorithm>
+#include <span>
+
+#include "geometry/csg/inside_span_list.h"
+#include "renderer/core/render_counters.h"
+#include "renderer/embree/user_geometry.h"
+#include "renderer/math/line_box_clip.h"
+
+namespace isotrace {
+
+IsosurfaceShape::IsosurfaceShape(std::shared_ptr<const ImplicitField> field, const Container& container,
+                                 std::vector<IntervalBox> cells, const IsosurfaceSettings& settings,
+                                 std::vector<std::unique_ptr<Shape>> keep_alive)
+    : keep_alive_(std::move(keep_alive)),
+      field_(std::move(field)),
+      container_(container),
+      cells_(std::move(cells)),
+      resolution_(settings.resolution > 0
+                      ? settings.resolution
+                      : 1e-6 * length(container.bounds().upper() - container.bounds().lower())),
+      max_work_(settings.max_work) {}
+
+Bounds3f IsosurfaceShape::bounds() const {
+    Bounds3f b;
+    for (const IntervalBox& cell : cells_) {
+        b.extend(Vec3f(cell.lower()));
+        b.extend(Vec3f(cell.upper()));
+    }
+    return b;
+}
+
+std::optional<double> IsosurfaceShape::field_value(const Vec3d& point) const {
+    return -std::max(field_->value(point), container_.signed_distance(point));
+}
+
+Vec3d IsosurfaceShape::field_gradient(const Vec3d& point) const {
+    if (container_.signed_distance(point) > field_->value(point)) return -container_.normal(point);
+    return -field_->gradient(point);
+}
+
+RTCGeometry IsosurfaceShape::create_geometry(RTCDevice device) {
+    counter_slot_ = counters::geometry_type_slot(type_name(), true);
+    work_slots_ = {counters::named_counter_slot("isosurface.interval_bounds"),
+                   counters::named_counter_slot("isosurface.slope_bounds"),
+                   counters::named_counter_slot("isosurface.monotone_proofs"),
+                   counters::named_counter_slot("isosurface.evaluations"),
+                   counters::named_counter_slot("isosurface.halvings"),
+                   counters::named_counter_slot("isosurface.refined_crossings"),
+                   counters::named_counter_slot("isosurface.budget_exhausted")};
+    return user_geometry::create<bounds_callback>(device, this, unsigned(cells_.size()), intersect_callback,
+                                                  occluded_callback);
+}
+
+void IsosurfaceShape::record_work(const IsosurfaceWork& work) const {
+    const std::array<std::uint64_t, 7> amounts{
+        work.search.interval_bounds, work.search.slope_bounds, work.search.monotone_proofs, work.search.evaluations,
+        work.search.halvings,        work.search.crossings,    work.budget_exhausted ? 1u : 0u};
+    counters::add_to_named(work_slots_, amounts);
+}
+
+template <class Visit>
+void IsosurfaceShape::search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a,
+                             IsosurfaceWork& work, Visit&& visit) const {
+    const auto point = [&](double t) { return origin + direction * t; };
+    const auto value = [&](double t) { return field_->value(point(t)); };
+    const auto segment_box = [&](double lo, double hi) {
+        IntervalBox box = IntervalBox::point(point(lo));
+        box.extend(point(hi));
+        return box;
+    };
+    const auto spent = [&] {
+        const CrossingSearchWork& s = work.search;
+        if (s.evaluations + s.interval_bounds + s.slope_bounds < max_work_) return false;
+        work.budget_exhausted = true;
+        return true;
+    };
+    // Past the budget, every stretch without a sign change is dropped and every bracket held is refined as one
+    // crossing: the search ends within a few steps per segment on its stack.
+    const auto bound = [&](double lo, double hi) {
+        return spent() ? Interval::point(1) : field_->value_range(segment_box(lo, hi));
+    };
+    const auto slope = [&](double lo, double hi) {
+        return spent() ? Interval::point(1) : field_->slope_range(segment_box(lo, hi), direction);
+    };
+    search_crossings(a, b, g_a, value(b), resolution_ / length(direction), false, value, bound, slope, work.search,
+                     visit);
+}
+
+Vec3d IsosurfaceShape::surface_normal(const Vec3d& p, const Vec3d& direction) const {
+    return safe_normalize(field_->gradient(p), -normalize(direction));
+}
+
+std::optional<IsosurfaceShape::Hit> IsosurfaceShape::first_hit(std::uint32_t index, const Vec3d& origin,
+                                                               const Vec3d& direction, double t_near, double t_far,
+                                                               IsosurfaceWork& work) const {
+    const std::optional<Interval> inside = container_.clip(origin, direction, t_near, t_far);
+    if (!inside) return std::nullopt;
+    double a = inside->lo, b = inside->hi;
+    if (index < cells_.size()) {
+        const IntervalBox& cell = cells_[index];
+        const auto clip = clip_line_to_box(cell.lower(), cell.upper(), origin, direction, a, b);
+        if (!clip) return std::nullopt;
+        a = clip->t_enter;
+        b = clip->t_exit;
+    }
+    const Vec3d p_a = origin + direction * a, p_b = origin + direction * b;
+    const bool enters_container = a == inside->lo && a > t_near, leaves_container = b == inside->hi && b < t_far;
+    // Most segments through a cell miss the surface: one bound settles them before any point is evaluated.
+    IntervalBox segment = IntervalBox::point(p_a);
+    segment.extend(p_b);
+    const Interval range = field_->value_range(segment);
+    ++work.search.interval_bounds;
+    if (range.lo >= 0) return std::nullopt;  // outside throughout, as the search would find
+    if (range.hi < 0) {                      // inside throughout: only the container's boundary is surface here
+        if (enters_container) return Hit{a, container_.normal(p_a)};
+        if (leaves_container) return Hit{b, container_.normal(p_b)};
+        return std::nullopt;
+    }
+    const double g_a = field_->value(p_a);
+    // The ray enters the container where the function's solid meets its boundary.
+    if (enters_container && g_a < 0) return Hit{a, container_.normal(p_a)};
+    std::optional<Hit> hit;
+    search(origin, direction, a, b, g_a, work, [&](const Crossing& crossing) {
+        if (!(crossing.t > t_near && crossing.t < t_far)) return true;
+        hit = Hit{crossing.t, surface_normal(origin + direction * crossing.t, direction)};
+        return false;
+    });
+    if (hit) return hit;
+    // A ray from inside leaves through the container's boundary.
+    if (leaves_container && field_->value(p_b) < 0) return Hit{b, container_.normal(p_b)};
+    return std::nullopt;
+}
+
+void IsosurfaceShape::bounds_callback(const RTCBoundsFunctionArguments* args) {
+    const auto* self = static_cast<const IsosurfaceShape*>(args->geometryUserPtr);
+    const IntervalBox& cell = self->cells_[args->primID];
+    user_geometry::store_bounds(args->bounds_o, cell.lower(), cell.upper());
+}
+
+void IsosurfaceShape::intersect_callback(const RTCIntersectFunctionNArguments* args) {
+    const auto* self = static_cast<const IsosurfaceShape*>(args->geometryUserPtr);
+    Vec3d normal;
+    user_geometry::intersect_rays(
+        args, self->counter_slot_,
+        [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) -> std::optional<double> {
+            IsosurfaceWork work;
+            const auto hit = self->first_hit(args->primID, origin, direction, t_near, t_far, work);
+            self->record_work(work);
+            if (!hit || !(float(hit->t) < t_far)) return std::nullopt;
+            normal = hit->normal;
+            return hit->t;
+        },
+        [&](unsigned i, const Vec3d&, const Vec3d&, double t) { user_geometry::store_hit(args, i, float(t), normal); });
+}
+
+void IsosurfaceShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
+    const auto* self = static_cast<const IsosurfaceShape*>(args->geometryUserPtr);
+    user_geometry::occlude_rays(args, self->counter_slot_,
+                                [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+                                    IsosurfaceWork work;
+                                    const auto hit =
+                                        self->first_hit(args->primID, origin, direction, t_near, t_far, work);
+                                    self->record_work(work);
+                                    return hit && float(hit->t) < t_far;
+                                });
+}
+
+void IsosurfaceShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                   std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+    const std::optional<Interval> inside = container_.clip(origin, direction, t_min, t_max);
+    if (!inside) return;
+    const QueryScratch::Level level(scratch);
+    auto& found = level.get<std::vector<Crossing>>();
+    found.clear();
+    IsosurfaceWork work;
+    const double g_a = field_->value(origin + direction * inside->lo);
+    search(origin, direction, inside->lo, inside->hi, g_a, work, [&](const Crossing& crossing) {
+        found.push_back(crossing);
+        return true;
+    });
+    record_work(work);
+    const std::size_t first = spans.size();
+    append_spans_from_crossings(
+        std::span<const Crossing>(found), g_a < 0, inside->lo, inside->hi,
+        [&](const Crossing& c) { return BoundaryPoint{c.t, surface_normal(origin + direction * c.t, direction), 0, 0}; },
+        spans);
+    // Ends cut where the ray crosses the container's boundary (not the query's range) lie on the surface.
+    const auto on_container = [&](BoundaryPoint& end) {
+        end = BoundaryPoint{end.t, container_.normal(origin + direction * end.t), 0, 0};
+    };
+    for (std::size_t i = first; i < spans.size(); ++i) {
+        if (!spans[i].enter.on_surface() && spans[i].enter.t > t_min) on_container(spans[i].enter);
+        if (!spans[i].exit.on_surface() && spans[i].exit.t < t_max) on_container(spans[i].exit);
+    }
+}
+
+}  // namespace isotrace
