@@ -67,10 +67,11 @@ inline Interval tan(Interval a) { return tan_range(a); }
 inline Interval atan2(Interval y, Interval x) { return atan2_range(y, x); }
 inline Interval abs(Interval a) { return a.magnitude(); }
 inline Interval sign(Interval a) { return sign_range(a); }
-// An end that came out NaN (∞ − ∞ of unbounded operands) bounds nothing: it becomes infinite.
+// An end that came out NaN (∞ − ∞ of unbounded operands) bounds nothing: it becomes infinite. A lower end of +∞
+// (or upper of −∞) comes down to the largest double, where the point values' overflow stops.
 inline Interval settle(Interval a) {
     constexpr double inf = std::numeric_limits<double>::infinity();
-    return {std::isnan(a.lo) ? -inf : a.lo, std::isnan(a.hi) ? inf : a.hi};
+    return {std::isnan(a.lo) ? -inf : std::min(a.lo, kLargest), std::isnan(a.hi) ? inf : std::max(a.hi, -kLargest)};
 }
 inline Vec3d settle(const Vec3d& a) { return {settle(a.x), settle(a.y), settle(a.z)}; }
 

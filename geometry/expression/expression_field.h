@@ -45,7 +45,7 @@ struct ExpressionNames {
 };
 
 // The longest tape (scalar instructions after constant folding and common-subexpression elimination) an
-// expression may compile to: the evaluators keep every slot on the stack (at most 48 bytes a slot).
+// expression may compile to: the evaluators keep every slot on the stack (at most 32 bytes a slot).
 constexpr int kMaxExpressionTape = 1024;
 
 class ExpressionField final : public ImplicitField {

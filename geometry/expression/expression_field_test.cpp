@@ -92,6 +92,7 @@ TEST(ExpressionField, DomainRulesGiveFiniteValuesAndNeverNaN) {
     EXPECT_TRUE(range.contains(0));
     EXPECT_FALSE(std::isnan(range.lo) || std::isnan(range.hi));
     EXPECT_FALSE(std::isnan(compiled("exp(x) - exp(x)")->value_range({{0, 1000}, {0, 0}, {0, 0}}).lo));
+    EXPECT_TRUE(compiled("exp(x)")->value_range({{1000, 1001}, {0, 0}, {0, 0}}).contains(compiled("exp(x)")->value({1000, 0, 0})));
 }
 
 TEST(ExpressionField, ParametersAreConstantsAndCommonSubexpressionsAreShared) {
