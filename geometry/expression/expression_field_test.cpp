@@ -102,6 +102,8 @@ TEST(ExpressionField, ParametersAreConstantsAndCommonSubexpressionsAreShared) {
     // length(p) twice is one computation; constants fold away.
     EXPECT_EQ(compiled("length(p) + length(p)")->tape_length(), compiled("length(p)")->tape_length() + 1);
     EXPECT_EQ(compiled("x + 2 * 3 * pi")->tape_length(), 3);
+    EXPECT_EQ(compiled("fbm(p, 3) + fbm(p, 3)")->tape_length(), compiled("fbm(p, 3)")->tape_length() + 1);
+    EXPECT_EQ(compiled("fbm(p, 3) + fbm(p, 4)")->tape_length(), compiled("fbm(p, 3)")->tape_length() + 2);
 }
 
 TEST(ExpressionField, FieldTermsAreCalledAtTheirArgumentAndTheirBoundsCarryOver) {
