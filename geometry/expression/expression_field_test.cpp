@@ -191,6 +191,17 @@ TEST(ExpressionField, IntervalsHoldEverySampledValueAndSlope) {
     }
 }
 
+TEST(ExpressionField, NoSlopeIsClaimedAcrossTheJumpsOfAtan2AndTan) {
+    const auto angle = compiled("atan2(y, x)");
+    const IntervalBox across{{-2, -1}, {-0.1, 0.1}, {0, 0}};
+    EXPECT_FALSE(angle->slope_range(across, {0, 1, 0}).is_finite());
+    EXPECT_TRUE(angle->slope_range({{1, 2}, {-0.1, 0.1}, {0, 0}}, {0, 1, 0}).is_finite());
+    // tan on [1.4, 3.2] is positive at both ends, with a root at π beyond the pole.
+    const Interval tan_slope = compiled("tan(x)")->slope_range({{1.4, 3.2}, {0, 0}, {0, 0}}, {1, 0, 0});
+    EXPECT_LT(tan_slope.lo, 0);
+    EXPECT_GT(tan_slope.hi, 0);
+}
+
 TEST(ExpressionField, MayReachSurfaceExcludesBoxesTheIntervalsClear) {
     const auto sphere = compiled("length(p) - 1");
     EXPECT_FALSE(sphere->may_reach_surface({3, 0, 0}, 0.5));
