@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
@@ -67,10 +68,11 @@ inline Interval tan(Interval a) { return tan_range(a); }
 inline Interval atan2(Interval y, Interval x) { return atan2_range(y, x); }
 inline Interval abs(Interval a) { return a.magnitude(); }
 inline Interval sign(Interval a) { return sign_range(a); }
-// An end that came out NaN (∞ − ∞ of unbounded operands) bounds nothing: it becomes infinite.
+// An end that came out NaN (∞ − ∞ of unbounded operands) bounds nothing: it becomes infinite. A lower end of +∞
+// (or upper of −∞) comes down to the largest double, where the point values' overflow stops.
 inline Interval settle(Interval a) {
     constexpr double inf = std::numeric_limits<double>::infinity();
-    return {std::isnan(a.lo) ? -inf : a.lo, std::isnan(a.hi) ? inf : a.hi};
+    return {std::isnan(a.lo) ? -inf : std::min(a.lo, kLargest), std::isnan(a.hi) ? inf : std::max(a.hi, -kLargest)};
 }
 inline Vec3d settle(const Vec3d& a) { return {settle(a.x), settle(a.y), settle(a.z)}; }
 
@@ -106,15 +108,23 @@ template <class V, class D> Dual<V, D> exp(const Dual<V, D>& a) {
 template <class V, class D> Dual<V, D> log(const Dual<V, D>& a) { return {log(a.v), a.d * log_slope(a.v)}; }
 template <class V, class D> Dual<V, D> sin(const Dual<V, D>& a) { return {sin(a.v), a.d * cos(a.v)}; }
 template <class V, class D> Dual<V, D> cos(const Dual<V, D>& a) { return {cos(a.v), a.d * -sin(a.v)}; }
+// Across a pole tan jumps from +∞ to −∞: its slope is then unbounded both ways (1 + tan² alone would claim it
+// increases, hiding a root beyond the pole from a search that trusts monotonicity).
 template <class V, class D> Dual<V, D> tan(const Dual<V, D>& a) {
     const V t = tan(a.v);
+    if constexpr (std::is_same_v<V, Interval>)
+        if (!t.is_finite()) return {t, Interval::unbounded()};
     return {t, a.d * (square(t) + 1.0)};
 }
 template <class V, class D> Dual<V, D> atan(const Dual<V, D>& a) {
     return {atan(a.v), a.d * inverse(square(a.v) + 1.0)};
 }
-// atan2(y, x)′ = (x y′ − y x′) / (x² + y²), 0 at the origin by the division rule.
+// atan2(y, x)′ = (x y′ − y x′) / (x² + y²), 0 at the origin by the division rule. Over a box that meets the
+// branch cut the angle jumps by 2π, which no slope bounds: a finite one would let a search call the stretch
+// monotone across the jump.
 template <class V, class D> Dual<V, D> atan2(const Dual<V, D>& y, const Dual<V, D>& x) {
+    if constexpr (std::is_same_v<V, Interval>)
+        if (meets_atan2_cut(y.v, x.v)) return {atan2(y.v, x.v), Interval::unbounded()};
     return {atan2(y.v, x.v), (y.d * x.v - x.d * y.v) * inverse(square(x.v) + square(y.v))};
 }
 template <class V, class D> Dual<V, D> abs(const Dual<V, D>& a) { return {abs(a.v), a.d * sign(a.v)}; }

@@ -152,7 +152,6 @@ private:
     }
 
     Value expression() {
-        const Deeper deeper(*this);
         Value value = product();
         for (;;) {
             const std::size_t offset = peek().offset;
@@ -174,13 +173,16 @@ private:
 
     // Unary minus binds looser than ^: -x^2 is −(x²), and 2^-1 is allowed.
     Value unary() {
-        const Deeper deeper(*this);
         const std::size_t offset = peek().offset;
         if (accept(TokenKind::Minus)) {
+            const Deeper deeper(*this);
             const Value operand = unary();
             return elementwise({operand}, offset, [&](const int* s) { return builder_.unary(Op::Neg, s[0], offset); });
         }
-        if (accept(TokenKind::Plus)) return unary();
+        if (accept(TokenKind::Plus)) {
+            const Deeper deeper(*this);
+            return unary();
+        }
         return power();
     }
 
@@ -188,6 +190,7 @@ private:
         const Value base = postfix();
         const std::size_t offset = peek().offset;
         if (!accept(TokenKind::Caret)) return base;
+        const Deeper deeper(*this);
         const Value exponent = unary();  // right-associative: a^b^c = a^(b^c)
         return raise(base, exponent, offset);
     }
@@ -226,6 +229,7 @@ private:
         return value;
     }
 
+    // Each parenthesis, call, sign and exponent is one level of nesting.
     Value primary() {
         const Deeper deeper(*this);
         const Token& token = next();

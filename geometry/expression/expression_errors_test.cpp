@@ -78,13 +78,22 @@ TEST(ExpressionErrors, DeepNestingAndLongTapesAreRefused) {
     const std::string deep = std::string(100000, '(') + "x" + std::string(100000, ')');
     EXPECT_NE(std::string(error_of(deep).what()).find("nests deeper than"), std::string::npos);
     EXPECT_NE(std::string(error_of(std::string(100000, '-') + "x").what()).find("nests deeper than"), std::string::npos);
+    std::string tower = "x";
+    for (int i = 0; i < 100000; ++i) tower += "^2";
+    EXPECT_NE(std::string(error_of(tower).what()).find("nests deeper than"), std::string::npos);
+    std::string calls;
+    for (int i = 0; i < 100000; ++i) calls += "sin(";
+    calls += "x";
+    EXPECT_NE(std::string(error_of(calls).what()).find("nests deeper than"), std::string::npos);
+    // 200 levels are allowed.
+    EXPECT_NO_THROW(compile_expression({std::string(199, '(') + "x" + std::string(199, ')'), {}, ""}, {}));
     std::string sum = "x";
     for (int i = 0; i < 1100; ++i) sum += " + sin(" + std::to_string(i) + " * x)";
     expect_error(sum, 0, "more than the limit of 1024");
 }
 
 TEST(ExpressionErrors, TheColumnCountsTheEscapesOfTheJsonString) {
-    // "a\"b" is written with a backslash before the quote: the character after it is one column further on.
+    // The tab is written \t in the file: two columns for one character.
     const InputError error = error_of("x\t+ ?");
     EXPECT_EQ(error.location().column, 21 + 4 + 1);
 }

@@ -15,7 +15,9 @@
 // Every problem with the text (syntax, unknown names, argument counts, a tape over kMaxExpressionTape, a constant
 // part that is NaN) throws InputError at the character: the file, line and column of the JSON string plus the
 // offset inside it. Evaluation never yields NaN (docs/expressions.md lists the domain rules), allocates nothing,
-// keeps no per-thread state and may run concurrently.
+// keeps no per-thread state and may run concurrently. A field term calls its field's slope_range with the
+// direction its argument moves in, which for body(p) is the direction itself: fields used as terms should read
+// slope_range as ∇f · direction.
 #include <map>
 #include <memory>
 #include <string>
@@ -45,7 +47,7 @@ struct ExpressionNames {
 };
 
 // The longest tape (scalar instructions after constant folding and common-subexpression elimination) an
-// expression may compile to: the evaluators keep every slot on the stack (at most 48 bytes a slot).
+// expression may compile to: the evaluators keep every slot on the stack (at most 32 bytes a slot).
 constexpr int kMaxExpressionTape = 1024;
 
 class ExpressionField final : public ImplicitField {
@@ -62,6 +64,7 @@ public:
     // False when the value's interval over the cube of half-side `radius` around `centre` excludes 0.
     bool may_reach_surface(const Vec3d& centre, double radius) const override;
     Interval value_range(const IntervalBox& box) const override;
+    // The interval of ∇f · direction over the box (direction need not be a unit vector).
     Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override;
 
     // The number of instructions of the compiled tape.

@@ -92,6 +92,7 @@ TEST(ExpressionField, DomainRulesGiveFiniteValuesAndNeverNaN) {
     EXPECT_TRUE(range.contains(0));
     EXPECT_FALSE(std::isnan(range.lo) || std::isnan(range.hi));
     EXPECT_FALSE(std::isnan(compiled("exp(x) - exp(x)")->value_range({{0, 1000}, {0, 0}, {0, 0}}).lo));
+    EXPECT_TRUE(compiled("exp(x)")->value_range({{1000, 1001}, {0, 0}, {0, 0}}).contains(compiled("exp(x)")->value({1000, 0, 0})));
 }
 
 TEST(ExpressionField, ParametersAreConstantsAndCommonSubexpressionsAreShared) {
@@ -101,6 +102,8 @@ TEST(ExpressionField, ParametersAreConstantsAndCommonSubexpressionsAreShared) {
     // length(p) twice is one computation; constants fold away.
     EXPECT_EQ(compiled("length(p) + length(p)")->tape_length(), compiled("length(p)")->tape_length() + 1);
     EXPECT_EQ(compiled("x + 2 * 3 * pi")->tape_length(), 3);
+    EXPECT_EQ(compiled("fbm(p, 3) + fbm(p, 3)")->tape_length(), compiled("fbm(p, 3)")->tape_length() + 1);
+    EXPECT_EQ(compiled("fbm(p, 3) + fbm(p, 4)")->tape_length(), compiled("fbm(p, 3)")->tape_length() + 2);
 }
 
 TEST(ExpressionField, FieldTermsAreCalledAtTheirArgumentAndTheirBoundsCarryOver) {
@@ -186,6 +189,17 @@ TEST(ExpressionField, IntervalsHoldEverySampledValueAndSlope) {
             }
         }
     }
+}
+
+TEST(ExpressionField, NoSlopeIsClaimedAcrossTheJumpsOfAtan2AndTan) {
+    const auto angle = compiled("atan2(y, x)");
+    const IntervalBox across{{-2, -1}, {-0.1, 0.1}, {0, 0}};
+    EXPECT_FALSE(angle->slope_range(across, {0, 1, 0}).is_finite());
+    EXPECT_TRUE(angle->slope_range({{1, 2}, {-0.1, 0.1}, {0, 0}}, {0, 1, 0}).is_finite());
+    // tan on [1.4, 3.2] is positive at both ends, with a root at π beyond the pole.
+    const Interval tan_slope = compiled("tan(x)")->slope_range({{1.4, 3.2}, {0, 0}, {0, 0}}, {1, 0, 0});
+    EXPECT_LT(tan_slope.lo, 0);
+    EXPECT_GT(tan_slope.hi, 0);
 }
 
 TEST(ExpressionField, MayReachSurfaceExcludesBoxesTheIntervalsClear) {

@@ -155,9 +155,10 @@ inline Interval tan_range(Interval angle) {
 // atan2(y, x) over a box: a box that holds the origin or meets the branch cut (x < 0, y = 0) may reach the whole
 // [−π, π]; any other box is convex and on one continuous branch, where the angle, constant along rays from the
 // origin, takes its extremes at the corners.
+inline bool meets_atan2_cut(Interval y, Interval x) { return y.lo <= 0 && y.hi >= 0 && x.lo <= 0; }
 inline Interval atan2_range(Interval y, Interval x) {
     constexpr double pi = std::numbers::pi;
-    if (y.lo <= 0 && y.hi >= 0 && x.lo <= 0) return {-pi, pi};
+    if (meets_atan2_cut(y, x)) return {-pi, pi};
     const double a[] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo), std::atan2(y.hi, x.hi)};
     return {*std::min_element(a, a + 4), *std::max_element(a, a + 4)};
 }

@@ -1,0 +1,83 @@
+// Interval operations hold every value of their function over the operands (random intervals, dense sampling),
+// unbounded operands give no NaN ends, and the special places are handled: tan's poles, atan2's branch cut and
+// origin, 1/b for b holding 0.
+#include "renderer/math/interval.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+
+namespace isotrace {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+void expect_holds(const char* name, const std::function<Interval(Interval, Interval)>& bound,
+                  const std::function<double(double, double)>& f, double spread) {
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const double a0 = spread * (2 * unit(random) - 1), b0 = spread * (2 * unit(random) - 1);
+        const Interval a{a0, a0 + spread * unit(random) * (trial % 3 == 0 ? 0.01 : 1)};
+        const Interval b{b0, b0 + spread * unit(random)};
+        const Interval r = bound(a, b);
+        for (int sample = 0; sample < 50; ++sample) {
+            const double u = a.lo + a.width() * unit(random), v = b.lo + b.width() * unit(random);
+            const double value = f(u, v);
+            const double tolerance = 1e-14 * (1 + std::abs(value));
+            ASSERT_TRUE(r.lo - tolerance <= value && value <= r.hi + tolerance)
+                << name << "(" << u << ", " << v << ") = " << value << " outside [" << r.lo << ", " << r.hi << "]";
+        }
+    }
+}
+
+TEST(Interval, OperationsHoldEverySampledValue) {
+    expect_holds("product", [](Interval a, Interval b) { return a * b; }, [](double u, double v) { return u * v; }, 3);
+    expect_holds("negation", [](Interval a, Interval) { return -a; }, [](double u, double) { return -u; }, 3);
+    expect_holds("min", [](Interval a, Interval b) { return min(a, b); }, [](double u, double v) { return std::min(u, v); }, 3);
+    expect_holds("max", [](Interval a, Interval b) { return max(a, b); }, [](double u, double v) { return std::max(u, v); }, 3);
+    expect_holds("hull", [](Interval a, Interval b) { return hull(a, b); }, [](double u, double) { return u; }, 3);
+    expect_holds("square", [](Interval a, Interval) { return square(a); }, [](double u, double) { return u * u; }, 3);
+    for (int n = 1; n <= 6; ++n)
+        expect_holds("pow_int", [n](Interval a, Interval) { return pow_int(a, n); },
+                     [n](double u, double) { return std::pow(u, n); }, 2);
+    expect_holds("reciprocal", [](Interval, Interval b) { return reciprocal(b); }, [](double, double v) { return 1 / v; }, 3);
+    expect_holds("exp", [](Interval a, Interval) { return exp(a); }, [](double u, double) { return std::exp(u); }, 5);
+    expect_holds("atan", [](Interval a, Interval) { return atan(a); }, [](double u, double) { return std::atan(u); }, 5);
+    expect_holds("sqrt", [](Interval a, Interval) { return sqrt_of_non_negative(a); },
+                 [](double u, double) { return std::sqrt(std::max(u, 0.0)); }, 3);
+    expect_holds("log", [](Interval a, Interval) { return log_above(a, 1e-3); },
+                 [](double u, double) { return std::log(std::max(u, 1e-3)); }, 3);
+    expect_holds("sign", [](Interval a, Interval) { return sign_range(a); }, [](double u, double) { return u < 0 ? -1.0 : 1.0; }, 3);
+    expect_holds("tan", [](Interval a, Interval) { return tan_range(a); }, [](double u, double) { return std::tan(u); }, 6);
+    expect_holds("atan2", [](Interval y, Interval x) { return atan2_range(y, x); },
+                 [](double v, double u) { return std::atan2(v, u); }, 3);
+}
+
+TEST(Interval, UnboundedOperandsGiveNoNaNEnds) {
+    const Interval all = Interval::unbounded(), zero = Interval::point(0);
+    const Interval product = all * zero;
+    EXPECT_EQ(product.lo, 0);
+    EXPECT_EQ(product.hi, 0);
+    const Interval half = Interval{0, inf} * Interval{0, 1};
+    EXPECT_EQ(half.lo, 0);
+    EXPECT_EQ(half.hi, inf);
+    const Interval reciprocal_of_zero = reciprocal(Interval{-1, 1});
+    EXPECT_EQ(reciprocal_of_zero.lo, -inf);
+    EXPECT_EQ(reciprocal_of_zero.hi, inf);
+}
+
+TEST(Interval, TanIsUnboundedAcrossAPoleAndAtan2AcrossTheCut) {
+    EXPECT_EQ(tan_range({1.5, 1.6}).hi, inf);
+    EXPECT_TRUE(tan_range({-1.5, 1.5}).is_finite());
+    EXPECT_EQ(tan_range({0, 4}).lo, -inf);
+    EXPECT_EQ(atan2_range({-0.1, 0.1}, {-2, -1}).hi, std::numbers::pi);
+    EXPECT_EQ(atan2_range({-0.1, 0.1}, {-2, -1}).lo, -std::numbers::pi);
+    const Interval right = atan2_range({-0.1, 0.1}, {1, 2});
+    EXPECT_NEAR(right.hi, std::atan2(0.1, 1), 1e-15);
+    EXPECT_NEAR(right.lo, -std::atan2(0.1, 1), 1e-15);
+}
+
+}  // namespace
+}  // namespace isotrace
