@@ -19,12 +19,10 @@ inline PointGradient noise(const NoiseTerm& term, const PointGradient& x, const 
     const Vec3d g = noise_gradient(term, q);
     return {noise_value(term, q), x.d * g.x + y.d * g.y + z.d * g.z};
 }
-// |n′| ≤ L × |q′| along the direction, whatever the direction of q′.
 inline IntervalSlope noise(const NoiseTerm& term, const IntervalSlope& x, const IntervalSlope& y,
                            const IntervalSlope& z) {
-    const double speed = std::sqrt(square(x.d.magnitude().hi) + square(y.d.magnitude().hi) + square(z.d.magnitude().hi));
-    const double reach = term.lipschitz * speed;
-    return {noise_value_range(term, {x.v, y.v, z.v}), Interval{-reach, reach}};
+    const IntervalBox box{x.v, y.v, z.v};
+    return {noise_value_range(term, box), noise_slope_range(term, box, {x.d, y.d, z.d})};
 }
 
 inline double field(const ImplicitField& f, double x, double y, double z) { return f.value({x, y, z}); }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/expression/gradient_noise_bounds.h"
 #include "renderer/textures/patterns/cellular_noise.h"
 #include "renderer/textures/patterns/gradient_noise.h"
 #include "renderer/textures/patterns/simplex_noise.h"
@@ -51,6 +52,100 @@ FractalScale fractal_scale(const FractalSettings& settings) {
     return scale;
 }
 
+// The octaves of fractal_sum (its float frequencies and amplitudes), each octave's affine map read off
+// fractal_octave_domain: the offset is the image of 0 (exact), a column of the turn the image of a large multiple
+// of an axis less the offset (so that the float rounding of the image is a small part of it).
+std::vector<NoiseOctave> fractal_octaves(const FractalSettings& settings) {
+    constexpr float kProbe = 4096;
+    std::vector<NoiseOctave> octaves;
+    float frequency = 1, amplitude = 1, total = 0;
+    for (int index = 0; index < settings.octaves; ++index) {
+        NoiseOctave octave;
+        const OctaveDomain origin = fractal_octave_domain({0, 0, 0}, frequency, settings.seed, index);
+        octave.offset = Vec3d(origin.point);
+        for (int k = 0; k < 3; ++k) {
+            Vec3f axis{0, 0, 0};
+            axis[k] = kProbe;
+            const Vec3d image(fractal_octave_domain(axis, frequency, settings.seed, index).point);
+            for (int j = 0; j < 3; ++j) octave.turn[j][k] = (image[j] - octave.offset[j]) / kProbe;
+        }
+        octave.frequency = frequency;
+        octave.weight = amplitude;
+        octave.seed = origin.seed;
+        octaves.push_back(octave);
+        total += amplitude;
+        frequency *= settings.lacunarity;
+        amplitude *= settings.gain;
+    }
+    for (NoiseOctave& octave : octaves) octave.weight = total > 0 ? octave.weight / total : 0;
+    return octaves;
+}
+
+Interval intersect(Interval a, Interval b) { return {std::max(a.lo, b.lo), std::min(a.hi, b.hi)}; }
+
+// The noise's values and gradient over a box by its octaves: `gradient` bounds the gradient in q, apart from a
+// part of length at most `reach` (from the octaves too fine to bound cell by cell).
+struct OctaveSumBounds {
+    Interval value;
+    IntervalBox gradient;
+    double reach = 0;
+};
+
+OctaveSumBounds octave_sum_bounds(const NoiseTerm& term, const IntervalBox& box) {
+    Vec3d centre, half;
+    double size = 0;
+    for (int k = 0; k < 3; ++k) {
+        centre[k] = 0.5 * (box[k].lo + box[k].hi);
+        half[k] = 0.5 * box[k].width();
+        size = std::max({size, std::abs(box[k].lo), std::abs(box[k].hi)});
+    }
+    OctaveSumBounds sum;
+    sum.value = Interval::point(0);
+    for (const NoiseOctave& octave : term.octaves) {
+        // The octave's box: the image of the box, widened for the float rounding of the textures' map.
+        const double margin = 0x1p-20 * (octave.frequency * size + 2);
+        IntervalBox turned;
+        Vec3d turned_centre;
+        double half_diagonal_squared = 0;
+        for (int j = 0; j < 3; ++j) {
+            double radius = margin;
+            turned_centre[j] = octave.offset[j];
+            for (int k = 0; k < 3; ++k) {
+                turned_centre[j] += octave.turn[j][k] * centre[k];
+                radius += std::abs(octave.turn[j][k]) * half[k];
+            }
+            turned[j] = {turned_centre[j] - radius, turned_centre[j] + radius};
+            half_diagonal_squared += radius * radius;
+        }
+        Interval value{-1, 1};
+        IntervalBox gradient;
+        if (const std::optional<NoiseBoxBounds> bounds = gradient_noise_bounds(turned, octave.seed)) {
+            value = intersect(bounds->value, value);
+            gradient = bounds->gradient;
+        } else {
+            // Too many cells: the centre's value ± L × the half-diagonal.
+            if (const auto at_centre = gradient_noise_bounds(IntervalBox::point(turned_centre), octave.seed)) {
+                const double reach = kGradientNoiseLipschitz * std::sqrt(half_diagonal_squared);
+                value = intersect({at_centre->value.lo - reach, at_centre->value.hi + reach}, value);
+            }
+            sum.reach += octave.weight * kGradientNoiseLipschitz * octave.frequency;
+        }
+        if (term.kind == NoiseKind::Turbulence) {
+            // |n|′ = ±n′: the sign is known where n's is.
+            if (value.hi < 0)
+                for (int j = 0; j < 3; ++j) gradient[j] = -gradient[j];
+            else if (!(value.lo > 0))
+                for (int j = 0; j < 3; ++j) gradient[j] = hull(gradient[j], -gradient[j]);
+            value = value.magnitude();
+        }
+        sum.value = sum.value + value * octave.weight;
+        // ∇_q = weight × turnᵀ ∇.
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j) sum.gradient[k] = sum.gradient[k] + gradient[j] * (octave.weight * octave.turn[j][k]);
+    }
+    return sum;
+}
+
 }  // namespace
 
 NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float jitter) {
@@ -86,6 +181,13 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
             break;
     }
     term.step = kRelativeStep / finest_frequency;
+    if (kind == NoiseKind::Gradient) {
+        term.octaves.resize(1);
+        for (int k = 0; k < 3; ++k) term.octaves[0].turn[k][k] = 1;
+        term.octaves[0].seed = term.fractal.seed;
+    } else if (kind == NoiseKind::Fbm || kind == NoiseKind::Turbulence) {
+        term.octaves = fractal_octaves(term.fractal);
+    }
     return term;
 }
 
@@ -102,6 +204,15 @@ double noise_value(const NoiseTerm& term, const Vec3d& q) {
 }
 
 Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q) {
+    if (!term.octaves.empty()) {
+        // The formula's derivative at the point (a point box meets one cell, unless it is beyond the bounded range).
+        const OctaveSumBounds at_point = octave_sum_bounds(term, IntervalBox::point(q));
+        if (at_point.reach == 0) {
+            Vec3d gradient;
+            for (int k = 0; k < 3; ++k) gradient[k] = 0.5 * (at_point.gradient[k].lo + at_point.gradient[k].hi);
+            return gradient;
+        }
+    }
     const double size = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
     const double h = std::max(term.step, size * 0x1p-17);  // dozens of float ulps of q at least
     Vec3d gradient;
@@ -125,7 +236,24 @@ Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box) {
     if (!std::isfinite(half_diagonal_squared) || !std::isfinite(centre.x + centre.y + centre.z)) return term.range;
     const double reach = term.lipschitz * std::sqrt(half_diagonal_squared) + rounding_allowance(term, size);
     const double at_centre = noise_value(term, centre);
-    return {std::max(at_centre - reach, term.range.lo), std::min(at_centre + reach, term.range.hi)};
+    const Interval lipschitz_range = intersect({at_centre - reach, at_centre + reach}, term.range);
+    if (term.octaves.empty()) return lipschitz_range;
+    const Interval allowance{-rounding_allowance(term, size), rounding_allowance(term, size)};
+    return intersect(octave_sum_bounds(term, box).value + allowance, lipschitz_range);
+}
+
+Interval noise_slope_range(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion) {
+    double speed_squared = 0;
+    for (int k = 0; k < 3; ++k) speed_squared += motion[k].magnitude().hi * motion[k].magnitude().hi;
+    const double speed = std::sqrt(speed_squared);
+    const Interval lipschitz_slope{-term.lipschitz * speed, term.lipschitz * speed};
+    if (term.octaves.empty() || !std::isfinite(speed)) return lipschitz_slope;
+    for (int k = 0; k < 3; ++k)
+        if (!box[k].is_finite()) return lipschitz_slope;
+    const OctaveSumBounds bounds = octave_sum_bounds(term, box);
+    Interval slope{-bounds.reach * speed, bounds.reach * speed};
+    for (int k = 0; k < 3; ++k) slope = slope + bounds.gradient[k] * motion[k];
+    return intersect(slope, lipschitz_slope);
 }
 
 }  // namespace isotrace

@@ -3,6 +3,7 @@
 // same noise agree exactly), each with the constants that make its interval bounds guaranteed: a Lipschitz
 // constant L (|∇n| ≤ L, derived from each noise's construction in docs/decisions.md) and the range of its values.
 #include <cstdint>
+#include <vector>
 
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
@@ -12,6 +13,16 @@ namespace isotrace {
 
 enum class NoiseKind { Gradient, Simplex, Fbm, Turbulence, Cellular };
 
+// One gradient-noise octave of a term: it samples gradient_noise(turn × q + offset, seed) (turn is the octave's
+// rotation times its frequency, read off the textures' own fractal_octave_domain) with weight `weight` in the sum.
+struct NoiseOctave {
+    double turn[3][3] = {};
+    Vec3d offset;
+    double frequency = 1;
+    double weight = 1;
+    std::uint32_t seed = 0;
+};
+
 struct NoiseTerm {
     NoiseKind kind = NoiseKind::Gradient;
     FractalSettings fractal;  // Fbm, Turbulence (gradient-noise basis); its seed serves every kind
@@ -19,6 +30,7 @@ struct NoiseTerm {
     double lipschitz = 0;     // |∇n| ≤ lipschitz everywhere
     Interval range;           // every value of n
     double step = 0;          // the central-difference step of the gradient, a small part of the finest detail
+    std::vector<NoiseOctave> octaves;  // Gradient, Fbm, Turbulence: bounded cell by cell over small boxes
 };
 
 // A term with its bounds; the settings are clamped as the textures clamp them, jitter to [0, ½].
@@ -26,10 +38,15 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
 
 // The noise at q, exactly as the textures compute it (in float, footprint 0: a point sample).
 double noise_value(const NoiseTerm& term, const Vec3d& q);
-// Its gradient by central differences (the noises offer no analytic one).
+// Its gradient: the derivative of the noise's formula for the gradient-noise kinds, central differences for the
+// others.
 Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q);
 // An interval holding the noise over the box: the centre's value ± L × the box's half-diagonal, plus an allowance
-// for the float evaluation, within the noise's range.
+// for the float evaluation, within the noise's range; for the gradient-noise kinds intersected with the octaves'
+// formulas evaluated in interval arithmetic (gradient_noise_bounds) wherever an octave's box spans few cells.
 Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box);
+// An interval holding the noise's derivative d/dt n(q(t)) wherever q lies in the box and q′ in `motion`: ±L|q′|,
+// intersected for the gradient-noise kinds with the formulas' gradient bounds.
+Interval noise_slope_range(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion);
 
 }  // namespace isotrace

@@ -79,6 +79,60 @@ TEST(ExpressionNoise, IntervalsHoldEverySampledValue) {
     }
 }
 
+// The gradient-noise kinds' slopes from their formulas: every central difference along the motion lies in the
+// slope's interval (near the origin, where the float noise's rounding is small against the step).
+TEST(ExpressionNoise, SlopeIntervalsHoldEverySampledSlope) {
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> unit(0, 1), signed_unit(-1, 1);
+    for (const NoiseCase& c : noise_cases()) {
+        for (int trial = 0; trial < 300; ++trial) {
+            IntervalBox box;
+            const double size = trial % 2 == 0 ? 0.02 : 0.3;
+            for (int k = 0; k < 3; ++k) {
+                const double lo = -2 + 4 * unit(random);
+                box[k] = {lo, lo + size * (0.2 + unit(random))};
+            }
+            const Vec3d d = normalize(Vec3d{signed_unit(random), signed_unit(random), signed_unit(random)});
+            const Interval slope = noise_slope_range(c.term, box, IntervalBox::point(d));
+            ASSERT_LE(slope.magnitude().hi, c.term.lipschitz + 1e-12) << c.name;
+            const double h = 1e-3;
+            for (int sample = 0; sample < 100; ++sample) {
+                const Vec3d p{box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
+                              box.z.lo + box.z.width() * unit(random)};
+                if (!box.contains(p + d * h) || !box.contains(p - d * h)) continue;
+                const double quotient = (noise_value(c.term, p + d * h) - noise_value(c.term, p - d * h)) / (2 * h);
+                ASSERT_GE(quotient, slope.lo - 0.02) << c.name;
+                ASSERT_LE(quotient, slope.hi + 0.02) << c.name;
+            }
+        }
+    }
+}
+
+// On small boxes the gradient-noise kinds' intervals and slopes are far inside the Lipschitz ones (so the bounds
+// cell by cell are in use).
+TEST(ExpressionNoise, GradientNoiseKindsAreBoundedFarInsideTheLipschitzBounds) {
+    std::mt19937_64 random(6);
+    std::uniform_real_distribution<double> unit(0, 1), signed_unit(-1, 1);
+    for (const NoiseCase& c : noise_cases()) {
+        if (c.term.octaves.empty()) continue;
+        double value_width = 0, value_lipschitz = 0, slope_width = 0, slope_lipschitz = 0;
+        for (int trial = 0; trial < 200; ++trial) {
+            IntervalBox box;
+            for (int k = 0; k < 3; ++k) {
+                const double lo = -10 + 20 * unit(random);
+                box[k] = {lo, lo + 0.01};
+            }
+            const Vec3d d = normalize(Vec3d{signed_unit(random), signed_unit(random), signed_unit(random)});
+            value_width += noise_value_range(c.term, box).width();
+            value_lipschitz += 2 * c.term.lipschitz * 0.005 * std::sqrt(3.0);
+            slope_width += noise_slope_range(c.term, box, IntervalBox::point(d)).width();
+            slope_lipschitz += 2 * c.term.lipschitz;
+        }
+        EXPECT_LT(value_width, 0.3 * value_lipschitz) << c.name;
+        EXPECT_LT(slope_width, 0.3 * slope_lipschitz) << c.name;
+    }
+}
+
 TEST(ExpressionNoise, TermsAreTheTexturesFunctions) {
     const Vec3d p{1.3, -2.7, 0.45};
     const Vec3f pf(p);
