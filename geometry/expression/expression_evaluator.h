@@ -21,8 +21,8 @@ inline PointGradient noise(const NoiseTerm& term, const PointGradient& x, const 
 }
 inline IntervalSlope noise(const NoiseTerm& term, const IntervalSlope& x, const IntervalSlope& y,
                            const IntervalSlope& z) {
-    const IntervalBox box{x.v, y.v, z.v};
-    return {noise_value_range(term, box), noise_slope_range(term, box, {x.d, y.d, z.d})};
+    const NoiseRanges ranges = noise_ranges(term, {x.v, y.v, z.v}, {x.d, y.d, z.d});
+    return {ranges.value, ranges.slope};
 }
 
 inline double field(const ImplicitField& f, double x, double y, double z) { return f.value({x, y, z}); }

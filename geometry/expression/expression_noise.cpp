@@ -225,9 +225,13 @@ Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q) {
     return gradient;
 }
 
-Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box) {
-    double half_diagonal_squared = 0, size = 0;
+namespace {
+
+// The value range by the Lipschitz bound alone; `size` is set to the box's largest coordinate.
+Interval lipschitz_value_range(const NoiseTerm& term, const IntervalBox& box, double& size) {
+    double half_diagonal_squared = 0;
     Vec3d centre;
+    size = 0;
     for (int k = 0; k < 3; ++k) {
         centre[k] = 0.5 * (box[k].lo + box[k].hi);
         half_diagonal_squared += 0.25 * box[k].width() * box[k].width();
@@ -236,24 +240,37 @@ Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box) {
     if (!std::isfinite(half_diagonal_squared) || !std::isfinite(centre.x + centre.y + centre.z)) return term.range;
     const double reach = term.lipschitz * std::sqrt(half_diagonal_squared) + rounding_allowance(term, size);
     const double at_centre = noise_value(term, centre);
-    const Interval lipschitz_range = intersect({at_centre - reach, at_centre + reach}, term.range);
-    if (term.octaves.empty()) return lipschitz_range;
-    const Interval allowance{-rounding_allowance(term, size), rounding_allowance(term, size)};
-    return intersect(octave_sum_bounds(term, box).value + allowance, lipschitz_range);
+    return intersect({at_centre - reach, at_centre + reach}, term.range);
 }
 
-Interval noise_slope_range(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion) {
-    double speed_squared = 0;
+// The octaves' value range with the float allowance, within the Lipschitz one.
+Interval value_within(const NoiseTerm& term, const OctaveSumBounds& bounds, double size, Interval lipschitz_range) {
+    const Interval allowance{-rounding_allowance(term, size), rounding_allowance(term, size)};
+    return intersect(bounds.value + allowance, lipschitz_range);
+}
+
+bool is_finite(const IntervalBox& box) { return box.x.is_finite() && box.y.is_finite() && box.z.is_finite(); }
+
+}  // namespace
+
+Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box) {
+    double size = 0;
+    const Interval lipschitz_range = lipschitz_value_range(term, box, size);
+    if (term.octaves.empty() || !is_finite(box)) return lipschitz_range;
+    return value_within(term, octave_sum_bounds(term, box), size, lipschitz_range);
+}
+
+NoiseRanges noise_ranges(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion) {
+    double size = 0, speed_squared = 0;
+    const Interval lipschitz_range = lipschitz_value_range(term, box, size);
     for (int k = 0; k < 3; ++k) speed_squared += motion[k].magnitude().hi * motion[k].magnitude().hi;
     const double speed = std::sqrt(speed_squared);
     const Interval lipschitz_slope{-term.lipschitz * speed, term.lipschitz * speed};
-    if (term.octaves.empty() || !std::isfinite(speed)) return lipschitz_slope;
-    for (int k = 0; k < 3; ++k)
-        if (!box[k].is_finite()) return lipschitz_slope;
+    if (term.octaves.empty() || !std::isfinite(speed) || !is_finite(box)) return {lipschitz_range, lipschitz_slope};
     const OctaveSumBounds bounds = octave_sum_bounds(term, box);
     Interval slope{-bounds.reach * speed, bounds.reach * speed};
     for (int k = 0; k < 3; ++k) slope = slope + bounds.gradient[k] * motion[k];
-    return intersect(slope, lipschitz_slope);
+    return {value_within(term, bounds, size, lipschitz_range), intersect(slope, lipschitz_slope)};
 }
 
 }  // namespace isotrace

@@ -45,8 +45,12 @@ Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q);
 // for the float evaluation, within the noise's range; for the gradient-noise kinds intersected with the octaves'
 // formulas evaluated in interval arithmetic (gradient_noise_bounds) wherever an octave's box spans few cells.
 Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box);
-// An interval holding the noise's derivative d/dt n(q(t)) wherever q lies in the box and q′ in `motion`: ±L|q′|,
-// intersected for the gradient-noise kinds with the formulas' gradient bounds.
-Interval noise_slope_range(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion);
+// noise_value_range, and an interval holding the noise's derivative d/dt n(q(t)) wherever q lies in the box and q′
+// in `motion`: ±L|q′|, intersected for the gradient-noise kinds with the formulas' gradient bounds (computed with
+// the values, in one pass over the octaves).
+struct NoiseRanges {
+    Interval value, slope;
+};
+NoiseRanges noise_ranges(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion);
 
 }  // namespace isotrace

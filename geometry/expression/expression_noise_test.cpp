@@ -93,7 +93,7 @@ TEST(ExpressionNoise, SlopeIntervalsHoldEverySampledSlope) {
                 box[k] = {lo, lo + size * (0.2 + unit(random))};
             }
             const Vec3d d = normalize(Vec3d{signed_unit(random), signed_unit(random), signed_unit(random)});
-            const Interval slope = noise_slope_range(c.term, box, IntervalBox::point(d));
+            const Interval slope = noise_ranges(c.term, box, IntervalBox::point(d)).slope;
             ASSERT_LE(slope.magnitude().hi, c.term.lipschitz + 1e-12) << c.name;
             const double h = 1e-3;
             for (int sample = 0; sample < 100; ++sample) {
@@ -125,7 +125,7 @@ TEST(ExpressionNoise, GradientNoiseKindsAreBoundedFarInsideTheLipschitzBounds) {
             const Vec3d d = normalize(Vec3d{signed_unit(random), signed_unit(random), signed_unit(random)});
             value_width += noise_value_range(c.term, box).width();
             value_lipschitz += 2 * c.term.lipschitz * 0.005 * std::sqrt(3.0);
-            slope_width += noise_slope_range(c.term, box, IntervalBox::point(d)).width();
+            slope_width += noise_ranges(c.term, box, IntervalBox::point(d)).slope.width();
             slope_lipschitz += 2 * c.term.lipschitz;
         }
         EXPECT_LT(value_width, 0.3 * value_lipschitz) << c.name;
