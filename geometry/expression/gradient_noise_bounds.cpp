@@ -122,12 +122,15 @@ std::optional<NoiseBoxBounds> gradient_noise_bounds(const IntervalBox& box, std:
     std::optional<NoiseBoxBounds> bounds = bounds_over_cells(box, seed);
     if (!bounds) return std::nullopt;
     // The mean-value form n(c) + ∇n(box) · (box − c), tighter than the cell formula's own interval on small boxes
-    // (its excess shrinks with the square of the width, not the width).
-    Vec3d centre;
-    for (int k = 0; k < 3; ++k) centre[k] = 0.5 * (box[k].lo + box[k].hi);
-    Interval mean_value = bounds_over_cells(IntervalBox::point(centre), seed)->value;
-    for (int k = 0; k < 3; ++k) mean_value = mean_value + bounds->gradient[k] * (box[k] + -centre[k]);
-    bounds->value = {std::max(bounds->value.lo, mean_value.lo), std::min(bounds->value.hi, mean_value.hi)};
+    // (its excess shrinks with the square of the width, not the width); a point's value is exact already.
+    const bool is_point = box.x.width() == 0 && box.y.width() == 0 && box.z.width() == 0;
+    if (!is_point) {
+        Vec3d centre;
+        for (int k = 0; k < 3; ++k) centre[k] = 0.5 * (box[k].lo + box[k].hi);
+        Interval mean_value = bounds_over_cells(IntervalBox::point(centre), seed)->value;
+        for (int k = 0; k < 3; ++k) mean_value = mean_value + bounds->gradient[k] * (box[k] + -centre[k]);
+        bounds->value = {std::max(bounds->value.lo, mean_value.lo), std::min(bounds->value.hi, mean_value.hi)};
+    }
     const double scale = 1 / kUnscaledExtreme;
     bounds->value = bounds->value * scale;
     for (int k = 0; k < 3; ++k) bounds->gradient[k] = bounds->gradient[k] * scale;
