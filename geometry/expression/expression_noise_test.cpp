@@ -36,6 +36,23 @@ std::vector<NoiseCase> noise_cases() {
             {"cellular", make_noise_term(NoiseKind::Cellular, fractal, 0.5f)}};
 }
 
+// A box with its lower corner in [−reach, reach)³ and each side up to `size` wide, and a point in a box.
+IntervalBox random_box(std::mt19937_64& random, double reach, double size) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    IntervalBox box;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = -reach + 2 * reach * unit(random);
+        box[k] = {lo, lo + size * unit(random)};
+    }
+    return box;
+}
+
+Vec3d random_point(std::mt19937_64& random, const IntervalBox& box) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    return {box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
+            box.z.lo + box.z.width() * unit(random)};
+}
+
 TEST(ExpressionNoise, DifferenceQuotientsStayUnderTheLipschitzBound) {
     std::mt19937_64 random(3);
     std::uniform_real_distribution<double> coordinate(-20, 20), unit(-1, 1);
@@ -57,22 +74,14 @@ TEST(ExpressionNoise, DifferenceQuotientsStayUnderTheLipschitzBound) {
 
 TEST(ExpressionNoise, IntervalsHoldEverySampledValue) {
     std::mt19937_64 random(4);
-    std::uniform_real_distribution<double> unit(0, 1);
     for (const NoiseCase& c : noise_cases()) {
         for (int trial = 0; trial < 400; ++trial) {
-            IntervalBox box;
-            const double size = trial % 2 == 0 ? 0.02 : 0.3;
-            for (int k = 0; k < 3; ++k) {
-                const double lo = -50 + 100 * unit(random);
-                box[k] = {lo, lo + size * unit(random)};
-            }
+            const IntervalBox box = random_box(random, 50, trial % 2 == 0 ? 0.02 : 0.3);
             const Interval range = noise_value_range(c.term, box);
             ASSERT_LE(c.term.range.lo, range.lo);
             ASSERT_GE(c.term.range.hi, range.hi);
             for (int sample = 0; sample < 200; ++sample) {
-                const Vec3d p{box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
-                              box.z.lo + box.z.width() * unit(random)};
-                const double v = noise_value(c.term, p);
+                const double v = noise_value(c.term, random_point(random, box));
                 ASSERT_TRUE(range.contains(v)) << c.name << ": " << v << " outside [" << range.lo << ", " << range.hi << "]";
             }
         }
@@ -83,22 +92,16 @@ TEST(ExpressionNoise, IntervalsHoldEverySampledValue) {
 // slope's interval (near the origin, where the float noise's rounding is small against the step).
 TEST(ExpressionNoise, SlopeIntervalsHoldEverySampledSlope) {
     std::mt19937_64 random(5);
-    std::uniform_real_distribution<double> unit(0, 1), signed_unit(-1, 1);
+    std::uniform_real_distribution<double> signed_unit(-1, 1);
     for (const NoiseCase& c : noise_cases()) {
         for (int trial = 0; trial < 300; ++trial) {
-            IntervalBox box;
-            const double size = trial % 2 == 0 ? 0.02 : 0.3;
-            for (int k = 0; k < 3; ++k) {
-                const double lo = -2 + 4 * unit(random);
-                box[k] = {lo, lo + size * (0.2 + unit(random))};
-            }
+            const IntervalBox box = random_box(random, 2, trial % 2 == 0 ? 0.02 : 0.3);
             const Vec3d d = normalize(Vec3d{signed_unit(random), signed_unit(random), signed_unit(random)});
             const Interval slope = noise_ranges(c.term, box, IntervalBox::point(d)).slope;
             ASSERT_LE(slope.magnitude().hi, c.term.lipschitz + 1e-12) << c.name;
             const double h = 1e-3;
             for (int sample = 0; sample < 100; ++sample) {
-                const Vec3d p{box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
-                              box.z.lo + box.z.width() * unit(random)};
+                const Vec3d p = random_point(random, box);
                 if (!box.contains(p + d * h) || !box.contains(p - d * h)) continue;
                 const double quotient = (noise_value(c.term, p + d * h) - noise_value(c.term, p - d * h)) / (2 * h);
                 ASSERT_GE(quotient, slope.lo - 0.02) << c.name;
