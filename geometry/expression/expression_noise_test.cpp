@@ -9,6 +9,7 @@
 #include <random>
 
 #include "geometry/expression/expression_field.h"
+#include "geometry/expression/random_box_test_support.h"
 #include "renderer/textures/patterns/cellular_noise.h"
 #include "renderer/textures/patterns/gradient_noise.h"
 #include "renderer/textures/patterns/simplex_noise.h"
@@ -34,23 +35,6 @@ std::vector<NoiseCase> noise_cases() {
             {"fbm rough", make_noise_term(NoiseKind::Fbm, rough, 0)},
             {"turbulence", make_noise_term(NoiseKind::Turbulence, fractal, 0)},
             {"cellular", make_noise_term(NoiseKind::Cellular, fractal, 0.5f)}};
-}
-
-// A box with its lower corner in [−reach, reach)³ and each side up to `size` wide, and a point in a box.
-IntervalBox random_box(std::mt19937_64& random, double reach, double size) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    IntervalBox box;
-    for (int k = 0; k < 3; ++k) {
-        const double lo = -reach + 2 * reach * unit(random);
-        box[k] = {lo, lo + size * unit(random)};
-    }
-    return box;
-}
-
-Vec3d random_point(std::mt19937_64& random, const IntervalBox& box) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    return {box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
-            box.z.lo + box.z.width() * unit(random)};
 }
 
 TEST(ExpressionNoise, DifferenceQuotientsStayUnderTheLipschitzBound) {

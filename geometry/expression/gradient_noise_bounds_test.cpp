@@ -7,28 +7,13 @@
 
 #include <random>
 
+#include "geometry/expression/random_box_test_support.h"
 #include "renderer/textures/patterns/gradient_noise.h"
 
 namespace isotrace {
 namespace {
 
 constexpr double kLipschitz = 10.8;  // expression_noise's bound of |∇n|
-
-IntervalBox random_box(std::mt19937_64& random, double size) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    IntervalBox box;
-    for (int k = 0; k < 3; ++k) {
-        const double lo = -40 + 80 * unit(random);
-        box[k] = {lo, lo + size * unit(random)};
-    }
-    return box;
-}
-
-Vec3d random_point(std::mt19937_64& random, const IntervalBox& box) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    return {box.x.lo + box.x.width() * unit(random), box.y.lo + box.y.width() * unit(random),
-            box.z.lo + box.z.width() * unit(random)};
-}
 
 double noise(const Vec3d& p, std::uint32_t seed) { return gradient_noise(Vec3f(p), seed); }
 
@@ -38,7 +23,7 @@ TEST(GradientNoiseBounds, HoldEverySampledValueAndSlope) {
     int bounded = 0;
     for (const double size : {0.01, 0.1, 0.5, 1.5}) {
         for (int trial = 0; trial < 300; ++trial) {
-            const IntervalBox box = random_box(random, size);
+            const IntervalBox box = random_box(random, 40, size);
             const std::uint32_t seed = static_cast<std::uint32_t>(trial % 5);
             const std::optional<NoiseBoxBounds> bounds = gradient_noise_bounds(box, seed);
             if (!bounds) continue;
@@ -82,7 +67,7 @@ TEST(GradientNoiseBounds, AreFarTighterThanTheLipschitzBoundOnSmallBoxes) {
     std::mt19937_64 random(13);
     double bound_width = 0, lipschitz_width = 0;
     for (int trial = 0; trial < 500; ++trial) {
-        const IntervalBox box = random_box(random, 0.05);
+        const IntervalBox box = random_box(random, 40, 0.05);
         const std::optional<NoiseBoxBounds> bounds = gradient_noise_bounds(box, 1);
         ASSERT_TRUE(bounds);
         const double half_diagonal = 0.5 * length(box.upper() - box.lower());
