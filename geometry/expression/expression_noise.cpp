@@ -204,15 +204,6 @@ double noise_value(const NoiseTerm& term, const Vec3d& q) {
 }
 
 Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q) {
-    if (!term.octaves.empty()) {
-        // The formula's derivative at the point (a point box meets one cell, unless it is beyond the bounded range).
-        const OctaveSumBounds at_point = octave_sum_bounds(term, IntervalBox::point(q));
-        if (at_point.reach == 0) {
-            Vec3d gradient;
-            for (int k = 0; k < 3; ++k) gradient[k] = 0.5 * (at_point.gradient[k].lo + at_point.gradient[k].hi);
-            return gradient;
-        }
-    }
     const double size = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
     const double h = std::max(term.step, size * 0x1p-17);  // dozens of float ulps of q at least
     Vec3d gradient;
