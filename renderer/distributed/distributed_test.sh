@@ -10,6 +10,7 @@ cd "$source_dir"
 # $work, $time_scale, fail, run, show_output
 source "$source_dir/tests/cli/test_script_helpers.sh"
 cornell=scenes/cornell_box.json
+scene=$cornell  # what expect_identical_to_one_process renders
 # Test machines and containers often run as root, which Open MPI refuses unless told.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # Two ranks on however few cores: one thread each, no binding to cores.
@@ -48,12 +49,12 @@ json_value() {  # json_value <file> <python expression on j>
   python3 -c "import json,sys; j=json.load(open(sys.argv[1])); print($2)" "$1"
 }
 
-# The single-process render and the 2-rank render with the given arguments: the same pixels, the same rays, and
+# The single-process render of $scene and the 2-rank render with the given arguments: the same pixels, the same rays, and
 # statistics from both ranks.
 expect_identical_to_one_process() {
-  run "$work/stdout" "$work/stderr" "$cli" render "$cornell" --quiet --threads 2 "$@" -o "$work/one.exr" --stats-json "$work/one.json"
+  run "$work/stdout" "$work/stderr" "$cli" render "$scene" --quiet --threads 2 "$@" -o "$work/one.exr" --stats-json "$work/one.json"
   expect_status 0 "the single-process render"
-  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$cornell" --quiet --threads 1 "$@" -o "$work/two.exr" \
+  run "$work/stdout" "$work/stderr" "${mpi[@]}" -np 2 "$cli" render "$scene" --quiet --threads 1 "$@" -o "$work/two.exr" \
     --stats-json "$work/two.json"
   expect_status 0 "mpirun -np 2 isotrace render $*"
   identical "$work/one.exr" "$work/two.exr" "2 ranks ($*) give other pixels than one process"
@@ -106,6 +107,13 @@ print(film["completed_spp"], film["max_spp"])' "$work/ck.bin")
 case_identical_aovs() {
   expect_identical_to_one_process --res 32x24 --spp 72 --tile-size 8 --aov all --distribute samples
   expect_identical_to_one_process --res 32x24 --spp 72 --tile-size 8 --aov all --distribute tiles
+}
+
+# Isosurfaces placed as instances, the round primitives, an infinite plane and a rectangle light, with every AOV.
+case_identical_surfaces() {
+  scene=tests/cli/data/surfaces/instanced.json
+  expect_identical_to_one_process --res 32x24 --spp 40 --tile-size 8 --aov all --distribute samples
+  expect_identical_to_one_process --res 32x24 --spp 16 --tile-size 8 --aov all --distribute tiles
 }
 
 # A rank killed mid-render: the job fails naming the rank, writes no image, and its checkpoint resumes (under

@@ -2,7 +2,7 @@
 # End-to-end runs under mpirun (2 ranks on this machine, also as root): images bit-identical to one process with
 # both splits, a killed rank, bad input. Small renders, so that they stay in the default test run.
 if(ISOTRACE_MPI AND MPIEXEC_EXECUTABLE)
-  set(mpi_cases identical_samples identical_tiles identical_aovs killed_rank bad_input bench)
+  set(mpi_cases identical_samples identical_tiles identical_aovs identical_surfaces killed_rank bad_input bench)
   isotrace_test_timeout(mpi_test_timeout 180)
   foreach(case IN LISTS mpi_cases)
     add_test(NAME mpi_${case}

@@ -2275,6 +2275,17 @@ case_isosurface_gallery_meshes() {
   done
 }
 
+# Isosurfaces placed from one definition render, in every AOV, exactly as the same objects written out separately,
+# beside the round primitives, an infinite plane and a rectangle light.
+case_instanced_isosurfaces_match_separate_objects() {
+  local scene
+  for scene in instanced separate; do
+    cli_expect 0 render tests/cli/data/surfaces/$scene.json --quiet --aov all -o "$work/$scene.exr"
+  done
+  idiff -fail 0 -failpercent 0 -warn 0 "$work/instanced.exr" "$work/separate.exr" >"$work/idiff" 2>&1 ||
+    { cat "$work/idiff" >&2; fail "the placements render other pixels than the same objects written out separately"; }
+}
+
 # Bad isosurfaces exit 2 at their position: no container, an empty container, a container without surface, an
 # unknown name in the function (with a suggestion), a field the function does not use, terms nested too deep.
 case_isosurface_bad_input() {
