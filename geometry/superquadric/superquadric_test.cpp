@@ -15,6 +15,8 @@ namespace isotrace {
 namespace {
 
 using superquadric_test::make_superquadric;
+using superquadric_test::random_ray;
+using superquadric_test::RandomRay;
 using superquadric_test::random_deformed_superquadric;
 using superquadric_test::sampled_crossings;
 
@@ -31,20 +33,6 @@ std::optional<std::array<double, 2>> ellipsoid_roots(const Vec3d& radii, const V
     if (disc < 0) return std::nullopt;
     const long double root = std::sqrt(disc);
     return std::array<double, 2>{double((-b - root) / a), double((-b + root) / a)};
-}
-
-struct RandomRay {
-    Vec3d origin, direction;
-};
-
-// Rays from a shell around the object toward random points near it (some miss, some graze), and rays from inside.
-RandomRay random_ray(std::mt19937& random, const Vec3d& radii, bool from_inside) {
-    std::uniform_real_distribution<double> unit(-1, 1);
-    const Vec3d target{unit(random) * radii.x * 1.2, unit(random) * radii.y * 1.2, unit(random) * radii.z * 1.2};
-    Vec3d origin{unit(random), unit(random), unit(random)};
-    origin = from_inside ? origin * 0.3 * std::min({radii.x, radii.y, radii.z}) : normalize(origin) * 6.0;
-    Vec3d direction = from_inside ? Vec3d{unit(random), unit(random), unit(random)} : target - origin;
-    return {origin, direction * (0.5 + std::abs(unit(random)))};  // not unit length on purpose
 }
 
 void expect_ellipsoid_hits(const Superquadric& s, const Vec3d& radii, const char* what) {

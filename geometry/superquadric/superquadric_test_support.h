@@ -1,6 +1,7 @@
 #pragma once
 // Test helpers for the superquadric: building one from parameters, random deformation chains, and a dense
 // sampling oracle for sign changes of the field along a ray.
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -39,6 +40,20 @@ inline Superquadric random_deformed_superquadric(std::mt19937& random, const Vec
                                                  const Transform& placement = {}) {
     const double north_south = exponent(random), east_west = exponent(random);
     return make_superquadric(radii, north_south, east_west, random_deformations(random, radii), placement);
+}
+
+struct RandomRay {
+    Vec3d origin, direction;
+};
+
+// Rays from a shell around the object toward random points near it (some miss, some graze), and rays from inside.
+inline RandomRay random_ray(std::mt19937& random, const Vec3d& radii, bool from_inside) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const Vec3d target{unit(random) * radii.x * 1.2, unit(random) * radii.y * 1.2, unit(random) * radii.z * 1.2};
+    Vec3d origin{unit(random), unit(random), unit(random)};
+    origin = from_inside ? origin * 0.3 * std::min({radii.x, radii.y, radii.z}) : normalize(origin) * 6.0;
+    Vec3d direction = from_inside ? Vec3d{unit(random), unit(random), unit(random)} : target - origin;
+    return {origin, direction * (0.5 + std::abs(unit(random)))};  // not unit length on purpose
 }
 
 // Sign changes of the field along origin + t·direction on [t0, t1] by dense sampling (the crossings' midpoints).
