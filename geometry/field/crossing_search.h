@@ -10,11 +10,15 @@
 // sub-segment narrower than `resolution` whose bound still straddles zero without a sign change at its ends is a
 // grazing contact (two crossings closer than the resolution, or none) and is not reported — the project's rule
 // for tangent contacts (docs/decisions.md). When the caller knows that {g < 0} meets the ray in one interval (a
-// convex solid), a sign change brackets exactly one crossing and is refined at once.
+// convex solid), a sign change brackets exactly one crossing and is refined at once. Where the caller can give g′
+// at a point too, refinement takes safeguarded Newton steps instead (renderer/math/safeguarded_newton.h).
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <type_traits>
 
 #include "renderer/math/interval.h"
+#include "renderer/math/safeguarded_newton.h"
 
 namespace isotrace {
 
@@ -71,15 +75,26 @@ double refine(double lo, double hi, double g_lo, double g_hi, const Value& value
     return 0.5 * (lo + hi);
 }
 
+// The bracket width refinement stops at, as for regula falsi: a few ulps of t, or 10⁻¹⁵ of the first bracket.
+struct RefinementTolerance {
+    double floor;
+    double width_at(double t) const { return 4e-16 * std::abs(t) + floor; }
+};
+
 }  // namespace crossing_search_detail
+
+// For search_crossings without point derivatives.
+struct NoPointSlope {};
 
 // Visits the crossings of g in [t0, t1] in increasing t; g0 = g(t0), g1 = g(t1). `bound(a, b)` returns an
 // Interval containing g over [a, b], `slope(a, b)` one containing g′ wherever g is differentiable on [a, b] (g
 // continuous there, differentiable but at finitely many points; an unbounded interval when nothing is known);
-// `visit(Crossing)` returns false to stop. Returns false when stopped.
-template <class Value, class Bound, class Slope, class Visit>
+// `visit(Crossing)` returns false to stop. Returns false when stopped. With `point_slope(t)` returning {value,
+// derivative} (value bit for bit value(t); derivative NaN where unknown), brackets are refined by Newton steps.
+template <class Value, class Bound, class Slope, class Visit, class PointSlope = NoPointSlope>
 bool search_crossings(double t0, double t1, double g0, double g1, double resolution, bool convex, const Value& value,
-                      const Bound& bound, const Slope& slope, CrossingSearchWork& work, Visit&& visit) {
+                      const Bound& bound, const Slope& slope, CrossingSearchWork& work, Visit&& visit,
+                      const PointSlope& point_slope = {}) {
     using crossing_search_detail::inside;
     struct Segment {
         double lo, hi, g_lo, g_hi;
@@ -102,7 +117,14 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
             s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
         if (sign_change && (narrow || convex || monotone(s))) {
             ++work.crossings;
-            const double t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
+            double t;
+            if constexpr (std::is_same_v<PointSlope, NoPointSlope>) {
+                t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
+            } else {
+                t = safeguarded_newton(point_slope, s.lo, s.hi, s.g_lo, s.g_hi,
+                                       crossing_search_detail::RefinementTolerance{1e-15 * (s.hi - s.lo)},
+                                       &work.evaluations, std::numeric_limits<double>::quiet_NaN());
+            }
             if (!visit(Crossing{t, inside(s.g_hi)})) return false;
             continue;
         }

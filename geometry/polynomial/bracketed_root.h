@@ -1,6 +1,6 @@
 #pragma once
-// Refines a root inside a bracket where the polynomial changes sign: Newton steps while they stay inside the
-// (shrinking) bracket and make progress, bisection otherwise. Always converges; quadratically when Newton works.
+// Refines a root inside a bracket where the polynomial changes sign by safeguarded Newton steps
+// (renderer/math/safeguarded_newton.h). Always converges; quadratically when Newton works.
 #include <limits>
 
 #include "geometry/polynomial/polynomial.h"

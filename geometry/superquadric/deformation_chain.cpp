@@ -64,6 +64,14 @@ std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q) const {
     return path[0];
 }
 
+std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velocity) const {
+    Path path;
+    if (!walk_inverse(q, true, path)) return std::nullopt;
+    for (std::size_t k = stages_.size(); k > 0; --k)
+        velocity = std::visit([&](const auto& s) { return s.jacobian(path[k - 1]); }, stages_[k - 1]).solve(velocity);
+    return path[0];
+}
+
 DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
     Path path;
     walk_inverse(q, false, path);

@@ -43,6 +43,8 @@ public:
     Vec3d forward(const Vec3d& p) const;
     // The undeformed point of q, or nothing when q lies outside a stage box (then it is outside the object).
     std::optional<Vec3d> inverse(const Vec3d& q) const;
+    // inverse(q), and `velocity` (of a curve through q) carried back to the undeformed point's velocity.
+    std::optional<Vec3d> inverse_along(const Vec3d& q, Vec3d& velocity) const;
     // The point at every stage of the inverse of q, without the stage-box checks (for normals at surface points).
     Path inverse_path(const Vec3d& q) const;
     // A box bounding the undeformed points of the part of `box` that lies inside every stage box, or nothing when

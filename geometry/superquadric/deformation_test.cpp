@@ -88,6 +88,29 @@ TEST(SuperquadricDeformation, JacobiansMatchFiniteDifferences) {
     }
 }
 
+// A curve's velocity carried back through random chains is the derivative of the inverse along it (Newton steps of
+// the ray search in the undeformed frame), and the point is the inverse's.
+TEST(SuperquadricDeformation, InverseAlongCarriesVelocitiesBack) {
+    std::mt19937 random(14);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const Superellipsoid shape{kRadii, 0.7, 1.3};
+    for (int c = 0; c < 20; ++c) {
+        DeformationChain chain(shape);
+        for (const Deformation& stage : random_deformations(random, kRadii)) chain.append(stage);
+        for (int i = 0; i < 50; ++i) {
+            const Vec3d q = chain.forward(random_point_of(random, shape)), d{unit(random), unit(random), unit(random)};
+            Vec3d velocity = d;
+            const auto undeformed = chain.inverse_along(q, velocity);
+            ASSERT_TRUE(undeformed);
+            EXPECT_EQ(*undeformed, *chain.inverse(q));
+            const double h = 1e-6;
+            const auto ahead = chain.inverse(q + d * h), behind = chain.inverse(q - d * h);
+            if (!ahead || !behind) continue;
+            EXPECT_NEAR(length(velocity - (*ahead - *behind) / (2 * h)), 0, 1e-5 * (1 + length(velocity))) << c << " " << i;
+        }
+    }
+}
+
 TEST(SuperquadricDeformation, BoxesMapConservativelyBothWays) {
     std::mt19937 random(13);
     std::uniform_real_distribution<double> unit(0, 1);

@@ -13,6 +13,12 @@ struct Jacobian {
     Vec3d transform_normal(const Vec3d& n) const {
         return cross(column[1], column[2]) * n.x + cross(column[2], column[0]) * n.y + cross(column[0], column[1]) * n.z;
     }
+    // J⁻¹·v by Cramer's rule: the vector w with J·w = v (a curve's velocity carried back through the stage).
+    Vec3d solve(const Vec3d& v) const {
+        const Vec3d c12 = cross(column[1], column[2]);
+        return Vec3d(dot(v, c12), dot(column[0], cross(v, column[2])), dot(column[0], cross(column[1], v))) /
+               dot(column[0], c12);
+    }
 };
 
 }  // namespace isotrace

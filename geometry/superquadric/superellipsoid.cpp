@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace isotrace {
 namespace {
@@ -27,11 +28,28 @@ double root(double s, double p) {
     return std::pow(s, 1 / p);
 }
 
-// (a^p + b^p)^(1/p) for a, b ≥ 0, scaled by the larger so that neither overflows nor underflows matter.
-double p_norm(double a, double b, double p) {
+// (a^p + b^p)^(1/p) for a, b ≥ 0 as larger·(1 + (smaller/larger)^p)^(1/p), scaled by the larger so that neither
+// overflows nor underflows matter; `sum` keeps 1 + (smaller/larger)^p for the partial derivatives.
+struct PNorm {
+    double larger, smaller, sum, norm;
+};
+
+PNorm p_norm_parts(double a, double b, double p) {
     const double larger = std::max(a, b), smaller = std::min(a, b);
-    if (larger == 0 || std::isinf(larger)) return larger;
-    return larger * root(1 + unit_power(smaller / larger, p), p);
+    if (larger == 0 || std::isinf(larger)) return {larger, smaller, 1, larger};
+    const double sum = 1 + unit_power(smaller / larger, p);
+    return {larger, smaller, sum, larger * root(sum, p)};
+}
+
+double p_norm(double a, double b, double p) { return p_norm_parts(a, b, p).norm; }
+
+// ∂‖(a, b)‖_p/∂a and ∂/∂b: (a/N)^(p−1) = (a/N)^p·N/a, where (larger/N)^p = 1/sum and (smaller/N)^p = (sum − 1)/sum.
+// At a zero argument the limit: 0 for p > 1, 1 for p = 1, unbounded (NaN, so that no Newton step is taken) below.
+std::pair<double, double> p_norm_partials(const PNorm& n, double a, double p) {
+    if (n.larger == 0 || std::isinf(n.larger)) return {NAN, NAN};
+    const double of_larger = n.norm / (n.larger * n.sum);
+    const double of_smaller = n.smaller > 0 ? (n.sum - 1) / n.sum * (n.norm / n.smaller) : p > 1 ? 0 : p == 1 ? 1 : NAN;
+    return a >= n.smaller && a == n.larger ? std::pair{of_larger, of_smaller} : std::pair{of_smaller, of_larger};
 }
 
 double signed_power(double base, double exponent) { return std::copysign(std::pow(std::abs(base), exponent), base); }
@@ -41,6 +59,21 @@ double signed_power(double base, double exponent) { return std::copysign(std::po
 double Superellipsoid::gauge(const Vec3d& p) const {
     const double horizontal = p_norm(std::abs(p.x) / radii.x, std::abs(p.y) / radii.y, 2 / east_west);
     return p_norm(horizontal, std::abs(p.z) / radii.z, 2 / north_south);
+}
+
+ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const Vec3d& direction) const {
+    const double p1 = 2 / north_south, p2 = 2 / east_west;
+    const double u = std::abs(p.x) / radii.x, v = std::abs(p.y) / radii.y, w = std::abs(p.z) / radii.z;
+    // d|x|/dt: on each piece the search cuts at the coordinate planes, |x| is linear.
+    const auto rate = [](double coordinate, double along, double radius) {
+        return (coordinate < 0 || (coordinate == 0 && along < 0) ? -along : along) / radius;
+    };
+    const PNorm h = p_norm_parts(u, v, p2), g = p_norm_parts(h.norm, w, p1);
+    const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2);
+    const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1);
+    const double dh = dh_du * rate(p.x, direction.x, radii.x) + dh_dv * rate(p.y, direction.y, radii.y);
+    const double slope = dg_dh * dh + dg_dw * rate(p.z, direction.z, radii.z);
+    return {g.norm, std::isfinite(slope) ? slope : NAN};
 }
 
 Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {

@@ -23,6 +23,9 @@ struct Superellipsoid {
     static constexpr double kMinExponent = 0.02, kMaxExponent = 4;
 
     double gauge(const Vec3d& p) const;
+    // The gauge at p (bit for bit gauge(p)) and its derivative along `direction` (NaN where it is unbounded or
+    // undefined, at coordinate planes for exponents above 2), for Newton steps along a ray.
+    ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const;
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south <= 2 && east_west <= 2; }
     // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative).

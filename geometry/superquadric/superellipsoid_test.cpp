@@ -96,6 +96,29 @@ TEST(SuperquadricSuperellipsoid, NormalsFollowTheGradient) {
     EXPECT_GT(checked, 500);
 }
 
+// The gauge along a direction gives the gauge bit for bit and its directional derivative (the Newton steps of the
+// ray search), checked by central differences away from the coordinate planes; where the derivative is unbounded
+// (a zero coordinate with an exponent above 2) it is NaN, never a finite wrong value.
+TEST(SuperquadricSuperellipsoid, GaugeAlongADirectionHasTheGaugesDerivative) {
+    std::mt19937 random(41);
+    std::uniform_real_distribution<double> unit(-1, 1), exponent(0.05, 4);
+    for (int i = 0; i < 2000; ++i) {
+        const Superellipsoid s{{0.5 + std::abs(unit(random)), 0.5 + std::abs(unit(random)), 0.5 + std::abs(unit(random))},
+                               exponent(random), exponent(random)};
+        const Vec3d p{unit(random), unit(random), unit(random)}, d{unit(random), unit(random), unit(random)};
+        if (std::min({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) < 1e-2) continue;
+        const ValueAndDerivative along = s.gauge_along(p, d);
+        EXPECT_EQ(along.value, s.gauge(p)) << i;
+        const double h = 1e-6, expected = (s.gauge(p + d * h) - s.gauge(p - d * h)) / (2 * h);
+        EXPECT_NEAR(along.derivative, expected, 1e-5 * (1 + std::abs(expected))) << i;
+    }
+    const Superellipsoid star{{1, 1, 1}, 3, 3};
+    EXPECT_TRUE(std::isnan(star.gauge_along({0.3, 0, 0.2}, {0.1, 1, 0.3}).derivative));
+    const Superellipsoid ball{{1, 1, 1}, 1, 1};
+    EXPECT_NEAR(ball.gauge_along({0.6, 0, 0}, {0, 1, 0}).derivative, 0, 1e-15);  // tangent to the sphere's level set
+    EXPECT_NEAR(ball.gauge_along({0.6, 0, 0}, {-2, 0, 0}).derivative, -2, 1e-15);
+}
+
 TEST(SuperquadricSuperellipsoid, NormalsOnTheCoordinatePlanesAreTheLimits) {
     for (double e1 : {0.02, 0.5, 1.0, 2.0, 3.0, 4.0})
         for (double e2 : {0.02, 0.5, 1.0, 2.0, 3.0, 4.0}) {

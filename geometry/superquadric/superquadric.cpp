@@ -79,6 +79,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     const auto value = [&](double t) { return ray.value(t); };
     const auto bound = [&](double a, double b) { return ray.bound(a, b); };
     const auto slope = [&](double a, double b) { return ray.slope_bound(a, b); };
+    const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
 
     // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
@@ -100,7 +101,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
         if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, slope,
-                              work.search, visit))
+                              work.search, visit, value_and_slope))
             return;
         g_start = g_end;
     }

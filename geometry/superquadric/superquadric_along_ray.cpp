@@ -10,6 +10,14 @@ SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, con
       origin_(superquadric.placement().inverse().point(origin)),
       direction_(superquadric.placement().inverse().vector(direction)) {}
 
+ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
+    Vec3d velocity = direction_;
+    const std::optional<Vec3d> undeformed = superquadric_.deformation().inverse_along(origin_ + direction_ * t, velocity);
+    if (!undeformed) return {1, std::numeric_limits<double>::quiet_NaN()};  // outside a stage box: outside
+    const ValueAndDerivative gauge = superquadric_.shape().gauge_along(*undeformed, velocity);
+    return {gauge.value - 1, gauge.derivative};
+}
+
 IntervalBox SuperquadricAlongRay::stretch(double a, double b) const {
     IntervalBox box = IntervalBox::point(origin_ + direction_ * a);
     box.extend(origin_ + direction_ * b);

@@ -18,6 +18,8 @@ public:
     const Vec3d& local_direction() const { return direction_; }
 
     double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t); }
+    // g(t) (bit for bit value(t)) and g′(t) (NaN where unknown: outside a stage box, on a crease).
+    ValueAndDerivative value_and_slope(double t) const;
     // Contains g over [a, b] (points outside a stage box count as outside, g = 1).
     Interval bound(double a, double b) const;
     // Contains g′ over [a, b] wherever g is differentiable; unbounded when some of the stretch lies outside a
