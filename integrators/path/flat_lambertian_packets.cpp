@@ -273,6 +273,7 @@ void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const R
                 alive & ~is_black(incident) & ~is_black(throughput_f) & (dot(to_light, normal) * wi.z > 0.0f);
             if (any(shadow)) {
                 alignas(64) EmbreeRays shadow_rays;
+                // A point light's distance is finite where its incident light is not black: no lane is at infinity.
                 const Vec3Lanes shadow_origin = spawn_origin(position, normal, position_error, to_light);
                 const ShadowSegment<Vec3Lanes, FloatLanes> segment =
                     shadow_segment(position, shadow_origin, to_light, distance);
