@@ -11,6 +11,7 @@
 
 #include "renderer/core/version.h"
 #include "renderer/math/lanes.h"
+#include "renderer/plugin/shadow_ray.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/sampling/warps.h"
 
@@ -29,7 +30,8 @@ Vec3Lanes operator-(const Vec3Lanes& a, const Vec3Lanes& b) { return {a.x - b.x,
 Vec3Lanes operator-(const Vec3Lanes& a) { return {-a.x, -a.y, -a.z}; }
 Vec3Lanes operator*(const Vec3Lanes& a, FloatLanes s) { return {a.x * s, a.y * s, a.z * s}; }
 FloatLanes dot(const Vec3Lanes& a, const Vec3Lanes& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3Lanes normalize(const Vec3Lanes& a) { return a * (1.0f / sqrt(dot(a, a))); }
+FloatLanes length(const Vec3Lanes& a) { return sqrt(dot(a, a)); }
+Vec3Lanes normalize(const Vec3Lanes& a) { return a * (1.0f / length(a)); }
 Vec3Lanes select(IntLanes mask, const Vec3Lanes& a, const Vec3Lanes& b) {
     return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)};
 }
@@ -271,8 +273,11 @@ void trace_flat_lambertian_paths(const PathSettings& settings, std::span<const R
                 alive & ~is_black(incident) & ~is_black(throughput_f) & (dot(to_light, normal) * wi.z > 0.0f);
             if (any(shadow)) {
                 alignas(64) EmbreeRays shadow_rays;
-                const FloatLanes shadow_far = select(distance == kInfinity, distance, distance * (1 - 1e-4f));
-                set_rays(shadow_rays, spawn_origin(position, normal, position_error, to_light), to_light, zero, shadow_far);
+                // A point light's distance is finite where its incident light is not black: no lane is at infinity.
+                const Vec3Lanes shadow_origin = spawn_origin(position, normal, position_error, to_light);
+                const ShadowSegment<Vec3Lanes, FloatLanes> segment =
+                    shadow_segment(position, shadow_origin, to_light, distance);
+                set_rays(shadow_rays, shadow_origin, segment.direction, zero, segment.t_far);
                 store_lanes(valid, shadow);
                 scene.occluded_packet(valid, shadow_rays);
                 const IntLanes lit = shadow & (load_lanes(shadow_rays.tfar) != -kInfinity);

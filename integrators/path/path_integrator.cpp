@@ -7,6 +7,7 @@
 #include "renderer/bsdf/shading_frame.h"
 #include "renderer/bsdf/surface_bsdf.h"
 #include "renderer/plugin/material.h"
+#include "renderer/plugin/shadow_ray.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/scene/render_scene.h"
 
@@ -136,9 +137,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
                     // every channel (a red wall seen along a green path), the shadow ray cannot change the result.
                     const Rgb throughput_f = throughput * (bsdf.eval(wo, wi) * std::abs(wi.z));
                     if (!throughput_f.is_black() && sides_agree(light.direction, hit.geometric_normal, wi.z)) {
-                        const float t_far = std::isinf(light.distance) ? light.distance : light.distance * (1 - 1e-4f);
-                        const Ray shadow{hit.spawn_origin(light.direction), light.direction, 0, t_far};
-                        if (!scene.occluded(shadow)) {
+                        if (!scene.occluded(shadow_ray(hit, light.direction, light.distance))) {
                             const float light_pdf = choice.probability * light.pdf;
                             const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, wi));
                             contributions.add(throughput_f * light.radiance * (weight / light_pdf));

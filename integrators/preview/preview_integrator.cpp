@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "renderer/params/emitted_colour.h"
+#include "renderer/plugin/shadow_ray.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/sampling/warps.h"
 #include "renderer/scene/render_scene.h"
@@ -31,8 +32,7 @@ Rgb PreviewIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene,
         const LightSample s = light->sample(hit.position, samples.next_2d());
         const float cosine = dot(hit.shading_normal, s.direction);
         if (cosine <= 0 || s.pdf <= 0 || s.radiance.is_black()) continue;
-        Ray shadow{hit.spawn_origin(s.direction), s.direction, 0, s.distance * (1 - 1e-4f)};
-        if (!scene.occluded(shadow)) direct += s.radiance * (cosine / s.pdf);
+        if (!scene.occluded(shadow_ray(hit, s.direction, s.distance))) direct += s.radiance * (cosine / s.pdf);
     }
     result += albedo * direct * float(std::numbers::inv_pi);
 

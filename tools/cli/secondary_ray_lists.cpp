@@ -8,6 +8,7 @@
 #include "renderer/core/input_error.h"
 #include "renderer/core/parallel_for.h"
 #include "renderer/embree/embree_device.h"
+#include "renderer/plugin/shadow_ray.h"
 #include "renderer/render/depth_map.h"
 #include "renderer/sampling/independent_sampler.h"
 #include "renderer/sampling/warps.h"
@@ -67,10 +68,8 @@ SecondaryRayLists build_secondary_rays(const LoadedScene& scene) {
             }
             const Vec3f to_light = lists.light - hit.position;
             const float distance = length(to_light);
-            if (distance > 0 && dot(to_light, hit.geometric_normal) > 0) {
-                const Vec3f direction = to_light / distance;
-                row.shadow.push_back({hit.spawn_origin(direction), direction, 0, distance * (1 - 1e-4f)});
-            }
+            if (distance > 0 && dot(to_light, hit.geometric_normal) > 0)
+                row.shadow.push_back(shadow_ray(hit, to_light / distance, distance));
             const PixelSampleKey key{std::uint32_t(x), std::uint32_t(y), 0};
             const Vec3f local = square_to_cosine_hemisphere({sampler.sample(key, 0), sampler.sample(key, 1)});
             Vec3f tangent, bitangent;

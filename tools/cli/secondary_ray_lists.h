@@ -19,11 +19,11 @@ struct SecondaryRayLists {
 };
 
 // Both lists in pixel order (row-major over the crop window), identical across thread counts. As the integrators
-// do, normals are turned towards the camera, every ray starts at SurfaceHit::spawn_origin, and a hit gets no
-// shadow ray when the light is behind its surface and no bounce when the sampled direction (around the shading
-// normal) falls below the geometric surface. The bounce direction of pixel (x, y) comes from an
-// IndependentSampler with the scene's seed, sample 0, dimensions 0 and 1. Throws InputError when the scene's
-// bounds are empty.
+// do, normals are turned towards the camera, every ray starts at SurfaceHit::spawn_origin (a shadow ray is
+// shadow_ray's, aimed at the light from there), and a hit gets no shadow ray when the light is behind its surface
+// and no bounce when the sampled direction (around the shading normal) falls below the geometric surface. The
+// bounce direction of pixel (x, y) comes from an IndependentSampler with the scene's seed, sample 0, dimensions 0
+// and 1. Throws InputError when the scene's bounds are empty.
 SecondaryRayLists build_secondary_rays(const LoadedScene& scene);
 
 }  // namespace isotrace::cli
