@@ -55,7 +55,9 @@ bool DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, Path& path
         if (check_boxes && !boxes_[k].contains(path[k])) return false;
         path[k - 1] = std::visit([&](const auto& s) { return s.inverse(path[k]); }, stages_[k - 1]);
     }
-    return !check_boxes || boxes_[0].contains(path[0]);
+    // Undeformed, no box is needed: the gauge exceeds 1 everywhere outside the superellipsoid's box, and a box
+    // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton).
+    return !check_boxes || stages_.empty() || boxes_[0].contains(path[0]);
 }
 
 std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q) const {

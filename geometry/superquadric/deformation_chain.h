@@ -41,7 +41,8 @@ public:
     const IntervalBox& deformed_box() const { return boxes_.back(); }
 
     Vec3d forward(const Vec3d& p) const;
-    // The undeformed point of q, or nothing when q lies outside a stage box (then it is outside the object).
+    // The undeformed point of q, or nothing when q lies outside a stage box (then it is outside the object; an
+    // undeformed object has no box to leave).
     std::optional<Vec3d> inverse(const Vec3d& q) const;
     // inverse(q), and `velocity` (of a curve through q) carried back to the undeformed point's velocity.
     std::optional<Vec3d> inverse_along(const Vec3d& q, Vec3d& velocity) const;

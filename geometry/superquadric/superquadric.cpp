@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "geometry/field/convex_crossings.h"
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/superquadric/superquadric_along_ray.h"
 #include "renderer/math/line_box_clip.h"
@@ -55,7 +56,7 @@ Vec3d Superquadric::surface_point(double eta, double omega) const {
 }
 
 template <class Visit>
-void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, bool first_only,
                           SuperquadricWork& work, Visit&& visit) const {
     const SuperquadricAlongRay ray(*this, origin, direction);
     const Vec3d &o = ray.local_origin(), &d = ray.local_direction();
@@ -80,6 +81,10 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     const auto bound = [&](double a, double b) { return ray.bound(a, b); };
     const auto slope = [&](double a, double b) { return ray.slope_bound(a, b); };
     const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
+    const bool convex = deformation_.empty() && shape_.is_convex();
+    double g_start = value(t0);
+    if (convex && visit_convex_crossings(t0, t1, g_start, value(t1), value_and_slope, first_only, work.search, visit))
+        return;
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
 
     // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
@@ -96,8 +101,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         }
     }
     cuts[count++] = t1;
-    const bool convex = deformation_.empty() && shape_.is_convex();
-    double g_start = value(t0);
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
         if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, slope,
@@ -110,7 +113,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
 std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
                                                    double t_max, SuperquadricWork& work) const {
     std::optional<double> first;
-    search(origin, direction, t_min, t_max, work, [&](const Crossing& c) {
+    search(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
         first = c.t;
         return false;
     });
@@ -119,7 +122,7 @@ std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Ve
 
 void Superquadric::crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                              std::vector<Crossing>& out, SuperquadricWork& work) const {
-    search(origin, direction, t_min, t_max, work, [&](const Crossing& c) {
+    search(origin, direction, t_min, t_max, false, work, [&](const Crossing& c) {
         out.push_back(c);
         return true;
     });

@@ -6,7 +6,9 @@
 // - undeformed with ε1 = ε2 = 2/n, n even: F − 1 is a polynomial in t, solved by the monotone-interval finder;
 // - otherwise: the ray is cut at the local coordinate planes when undeformed (where F changes form), then each
 //   piece is searched by interval subdivision (crossing_search.h) with the bounds of g and g′ along the ray
-//   (superquadric_along_ray.h).
+//   (superquadric_along_ray.h);
+// - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches from the ends find its
+//   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts.
 #include <optional>
 #include <vector>
 
@@ -58,10 +60,11 @@ public:
                    std::vector<Crossing>& out, SuperquadricWork& work) const;
 
 private:
-    // Visits the crossings in [t_min, t_max] in order until visit(Crossing) returns false.
+    // Visits the crossings in [t_min, t_max] in order until visit(Crossing) returns false (after the first when
+    // `first_only`).
     template <class Visit>
-    void search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, SuperquadricWork& work,
-                Visit&& visit) const;
+    void search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, bool first_only,
+                SuperquadricWork& work, Visit&& visit) const;
 
     Superellipsoid shape_;
     DeformationChain deformation_;

@@ -190,25 +190,35 @@ TEST(SuperquadricIntersection, EveryHitIsTheFirstSignChangeOnRandomDeformedShape
     EXPECT_GT(hits, 500);
 }
 
-// Brackets are refined by Newton steps on the gauge's derivative along the ray, undeformed and deformed: a handful
-// of point evaluations per hit where regula falsi took twice as many or more.
-TEST(SuperquadricIntersection, HitsAreRefinedInAFewNewtonSteps) {
+// Convex superquadrics are answered by Newton marches without a single interval bound, a few point evaluations per
+// ray; deformed ones refine their brackets by Newton steps, a handful of evaluations per hit where regula falsi took
+// twice as many or more.
+TEST(SuperquadricIntersection, RaysCostAFewNewtonSteps) {
     std::mt19937 random(25);
     std::uniform_real_distribution<double> exponent(0.3, 1.8);
     for (const bool deformed : {false, true}) {
         SuperquadricWork work;
+        int rays = 0;
         for (int shape = 0; shape < 20; ++shape) {
             const Vec3d radii{1, 0.8, 1.2};
             const Superquadric s = deformed ? random_deformed_superquadric(random, radii, exponent)
                                             : make_superquadric(radii, exponent(random), exponent(random));
-            for (int i = 0; i < 50; ++i) {
+            for (int i = 0; i < 50; ++i, ++rays) {
                 const RandomRay ray = random_ray(random, radii, false);
                 s.first_crossing(ray.origin, ray.direction, 0, 20, work);
             }
         }
         ASSERT_GT(work.search.crossings, 200u);
+        if (!deformed) {
+            const double per_ray = double(work.search.evaluations) / rays;
+            std::printf("convex: %.2f evaluations per ray, %llu interval bounds\n", per_ray,
+                        (unsigned long long)(work.search.interval_bounds + work.search.slope_bounds));
+            EXPECT_EQ(work.search.interval_bounds + work.search.slope_bounds, 0u);
+            EXPECT_LT(per_ray, 8.0);
+            continue;
+        }
         const double per_hit = double(work.search.evaluations - work.search.halvings) / double(work.search.crossings);
-        std::printf("%s: %.2f refinement evaluations per hit\n", deformed ? "deformed" : "undeformed", per_hit);
+        std::printf("deformed: %.2f refinement evaluations per hit\n", per_hit);
         EXPECT_LT(per_hit, 6.0);
     }
 }
