@@ -1026,6 +1026,27 @@ PY
   expect_in "$work/stderr" "no_such_scene.json" stderr
 }
 
+# Superquadrics and CSG solids are compared with their dual-contouring tessellation like blob groups: both kinds are
+# replaced (a closed mesh), counted and traced; a scene without implicit surfaces is refused.
+case_bench_superquadrics_and_csg() {
+  cli_expect 0 bench tests/cli/data/surfaces/superquadric_and_csg.json --filter direct_vs_tessellated --threads 1 \
+    --repeats 1 --resolution 48x27 --json "$work/bench.json"
+  python3 - "$work/bench.json" <<'PY' || fail "the superquadric and CSG comparison is wrong"
+import json, sys
+scene = json.load(open(sys.argv[1]))["blob_comparison"]["scenes"][0]
+t = scene["tessellated"]
+problems = []
+if scene["elements"] != 2: problems.append("elements %r (a superquadric and a CSG solid)" % scene["elements"])
+if not (t["triangles"] > 1000 and t["closed"]): problems.append("tessellation %r" % t)
+if not scene["pixel_agreement"] > 0.98: problems.append("pixel agreement %r" % scene["pixel_agreement"])
+for p in problems: print("bench:", p, file=sys.stderr)
+sys.exit(1 if problems else 0)
+PY
+  write_base_scene "$work/sphere.json"
+  cli_expect 2 bench "$work/sphere.json" --filter direct_vs_tessellated --repeats 1
+  expect_in "$work/stderr" "no blob group, isosurface, superquadric or CSG solid" stderr
+}
+
 case_bench_suite() {  # two workloads of the suite on two thread counts, with JSON and the HTML report
   cli_expect 0 bench --quick --resolution 32x18 --threads 1,2 --filter '^cornell_box/(primary|path)$' \
     --json "$work/suite.json" --report "$work/suite.html"

@@ -1,11 +1,11 @@
 #include "tools/cli/blob_benchmark.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
 #include "geometry/implicit/blob_group_shape.h"
-#include "geometry/isosurface/isosurface_shape.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "geometry/polygonize/mesh_topology.h"
 #include "geometry/polygonize/polygonize_field.h"
@@ -24,36 +24,44 @@ TracedScene build_of(const LoadedScene& scene) {
     return traced;
 }
 
-// An isosurface's lattice: `cell` (--cell-size) or 2⁷ cells along the longest side of its container.
-int isosurface_depth(const IsosurfaceShape& shape, const std::optional<double>& cell) {
-    const IntervalBox& box = shape.container().bounds();
+// The shapes the comparison replaces by their tessellation: the implicit surfaces isotrace traces directly.
+constexpr std::array<const char*, 4> kTessellatedTypes = {"blobs", "isosurface", "superquadric", "csg"};
+
+bool is_tessellated(const Shape& shape) {
+    return std::find_if(kTessellatedTypes.begin(), kTessellatedTypes.end(),
+                        [&](const char* type) { return shape.type_name() == type; }) != kTessellatedTypes.end();
+}
+
+// A field's lattice: `cell` (--cell-size) or 2⁷ cells along the longest side of its bounds.
+int lattice_depth(const ImplicitField& field, const std::optional<double>& cell) {
+    const FieldBox box = field.bounds();
     if (!cell) return 7;
-    const double longest = std::max({box.x.width(), box.y.width(), box.z.width()});
+    const double longest = max_component(box.upper - box.lower);
     return std::clamp(int(std::ceil(std::log2(longest / *cell))), 1, kMaxPolygonizeDepth);
 }
 
-// Replaces every blob group and isosurface by its tessellation as the scene loads, timing the polygoniser.
+// Replaces every blob group, isosurface, superquadric and CSG solid by its tessellation as the scene loads, timing
+// the polygoniser: blob groups by their own tessellator, the others by dual contouring of their field.
 std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_groups(
     const BlobBenchmarkSettings& settings, const std::string& scene, TessellationSummary& summary) {
     return [&settings, scene, &summary](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
-        const auto* blobs = dynamic_cast<const BlobGroupShape*>(shape.get());
-        const auto* isosurface = dynamic_cast<const IsosurfaceShape*>(shape.get());
-        if (!blobs && !isosurface) return shape;
+        if (!is_tessellated(*shape)) return shape;
         const auto start = std::chrono::steady_clock::now();
         double cell = 0;
         TriangleMeshData mesh;
-        if (blobs) {
+        if (const auto* blobs = dynamic_cast<const BlobGroupShape*>(shape.get())) {
             cell = settings.tessellation.cell_size_for(blobs->group());
             mesh = tessellate(blobs->group(), cell, scene);
         } else {
+            const std::unique_ptr<ImplicitField> field = shape->implicit_field();
             PolygonizeOptions options;
-            options.depth = isosurface_depth(*isosurface, settings.tessellation.cell_size);
-            const IntervalBox& box = isosurface->container().bounds();
-            cell = std::max({box.x.width(), box.y.width(), box.z.width()}) / double(1 << options.depth);
-            mesh = std::move(polygonize_field(*isosurface->implicit_field(), options).mesh);
+            options.depth = lattice_depth(*field, settings.tessellation.cell_size);
+            cell = max_component(field->bounds().upper - field->bounds().lower) / double(1 << options.depth);
+            mesh = std::move(polygonize_field(*field, options).mesh);
         }
         summary.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (mesh.triangles.empty()) throw InputError({}, scene, "a blob group or isosurface has no surface to tessellate");
+        if (mesh.triangles.empty())
+            throw InputError({}, scene, "a " + std::string(shape->type_name()) + " shape has no surface to tessellate");
         summary.cell_size = summary.triangles == 0 ? cell : std::min(summary.cell_size, cell);
         summary.triangles += mesh.triangles.size();
         summary.vertices += mesh.positions.size();
@@ -109,9 +117,10 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         log(path + ": loading");
         const std::unique_ptr<LoadedScene> direct = load_scene(path, overrides);
         const auto& primitives = direct->scene->build_statistics().primitives_by_type;
-        for (const char* type : {"blobs", "isosurface"})
+        for (const char* type : kTessellatedTypes)
             if (const auto found = primitives.find(type); found != primitives.end()) result.elements += found->second;
-        if (result.elements == 0) throw InputError({}, path, "the scene has no blob group or isosurface to benchmark");
+        if (result.elements == 0)
+            throw InputError({}, path, "the scene has no blob group, isosurface, superquadric or CSG solid to benchmark");
         log(path + ": loading again and tessellating");
         overrides.replace_shape = tessellate_blob_groups(settings, path, result.tessellation);
         const std::unique_ptr<LoadedScene> tessellated = load_scene(path, overrides);

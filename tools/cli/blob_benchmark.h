@@ -1,8 +1,8 @@
 #pragma once
-// The blob-group benchmark, in one process and one run: every scene is loaded twice and traced
-// with primary, shadow and one-bounce diffuse rays, directly (blob groups and isosurfaces as Embree user geometry)
-// and with every blob group and isosurface replaced by its tessellation (geometry/polygonize; an isosurface by dual
-// contouring at 2⁷ cells along its container, or --cell-size) traced natively by Embree as triangles, taking
+// The implicit-surface benchmark, in one process and one run: every scene is loaded twice and traced with primary,
+// shadow and one-bounce diffuse rays, directly (blob groups, isosurfaces, superquadrics and CSG solids as Embree user
+// geometry) and with each of them replaced by its tessellation (geometry/polygonize; all but blob groups by dual
+// contouring at 2⁷ cells along their field's bounds, or --cell-size) traced natively by Embree as triangles, taking
 // turns, on each thread count. The secondary rays are built once from the direct scene's primary hits
 // (tools/cli/secondary_ray_lists.h) and the same lists are traced in both scenes.
 #include <functional>
