@@ -22,7 +22,15 @@ struct SpanBuffers {
 }  // namespace
 
 SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
-    : superquadrics_(std::move(superquadrics)) {
+    : superquadrics_(std::move(superquadrics)),
+      // Named here, not with the Embree geometry: a CSG operand records its work without one.
+      work_slots_{counters::named_counter_slot("superquadric.interval_bounds"),
+                  counters::named_counter_slot("superquadric.slope_bounds"),
+                  counters::named_counter_slot("superquadric.monotone_proofs"),
+                  counters::named_counter_slot("superquadric.evaluations"),
+                  counters::named_counter_slot("superquadric.halvings"),
+                  counters::named_counter_slot("superquadric.refined_crossings"),
+                  counters::named_counter_slot("superquadric.polynomial_solves")} {
     measure_field_step();
 }
 
@@ -85,13 +93,6 @@ void SuperquadricShape::bake(const Transform& to_world) {
 
 RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
-    work_slots_ = {counters::named_counter_slot("superquadric.interval_bounds"),
-                   counters::named_counter_slot("superquadric.slope_bounds"),
-                   counters::named_counter_slot("superquadric.monotone_proofs"),
-                   counters::named_counter_slot("superquadric.evaluations"),
-                   counters::named_counter_slot("superquadric.halvings"),
-                   counters::named_counter_slot("superquadric.refined_crossings"),
-                   counters::named_counter_slot("superquadric.polynomial_solves")};
     return user_geometry::create<bounds_callback>(device, this, unsigned(superquadrics_.size()), intersect_callback,
                                                   occluded_callback);
 }
@@ -146,6 +147,7 @@ void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin
     found.clear();
     SuperquadricWork work;
     s.crossings(origin, direction, t_min, t_max, found, work);
+    record_work(work);
     append_spans_from_crossings(
         std::span<const Crossing>(found), s.field(origin + direction * t_min) < 0, t_min, t_max,
         [&](const Crossing& c) { return BoundaryPoint{c.t, s.normal(origin + direction * c.t), index, 0}; }, spans);

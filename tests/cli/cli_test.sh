@@ -1045,6 +1045,12 @@ PY
   write_base_scene "$work/sphere.json"
   cli_expect 2 bench "$work/sphere.json" --filter direct_vs_tessellated --repeats 1
   expect_in "$work/stderr" "no blob group, isosurface, superquadric or CSG solid" stderr
+  # A superquadric inside a CSG solid counts its work in the statistics like one on its own.
+  grep -v '"name": "tapered"\|"shape": {"type": "superquadric", "radii": \[0.4' tests/cli/data/surfaces/superquadric_and_csg.json \
+    >"$work/csg_only.json"
+  cli_expect 0 render "$work/csg_only.json" --quiet -o "$work/csg.exr" --stats-json "$work/stats.json"
+  python3 -c 'import json, sys; c = json.load(open(sys.argv[1]))["counters"]; sys.exit(0 if c.get("superquadric.evaluations", 0) > 0 else 1)' \
+    "$work/stats.json" || fail "the CSG operand's superquadric work is not counted"
 }
 
 case_bench_suite() {  # two workloads of the suite on two thread counts, with JSON and the HTML report
