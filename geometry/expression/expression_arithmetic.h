@@ -106,8 +106,24 @@ template <class V, class D> Dual<V, D> exp(const Dual<V, D>& a) {
     return {e, a.d * e};
 }
 template <class V, class D> Dual<V, D> log(const Dual<V, D>& a) { return {log(a.v), a.d * log_slope(a.v)}; }
-template <class V, class D> Dual<V, D> sin(const Dual<V, D>& a) { return {sin(a.v), a.d * cos(a.v)}; }
-template <class V, class D> Dual<V, D> cos(const Dual<V, D>& a) { return {cos(a.v), a.d * -sin(a.v)}; }
+// sin and cos of one value from one call: a derivative needs both (sincos returns sin's and cos's own values).
+struct SinCos {
+    double sin, cos;
+};
+inline SinCos sin_cos(double a) {
+    SinCos r;
+    ::sincos(a, &r.sin, &r.cos);
+    return r;
+}
+inline SinCosRange sin_cos(Interval a) { return sin_cos_range(a); }
+template <class V, class D> Dual<V, D> sin(const Dual<V, D>& a) {
+    const auto both = sin_cos(a.v);
+    return {both.sin, a.d * both.cos};
+}
+template <class V, class D> Dual<V, D> cos(const Dual<V, D>& a) {
+    const auto both = sin_cos(a.v);
+    return {both.cos, a.d * -both.sin};
+}
 // Across a pole tan jumps from +∞ to −∞: its slope is then unbounded both ways (1 + tan² alone would claim it
 // increases, hiding a root beyond the pole from a search that trusts monotonicity).
 template <class V, class D> Dual<V, D> tan(const Dual<V, D>& a) {

@@ -12,6 +12,7 @@
 // for tangent contacts (docs/decisions.md). When the caller knows that {g < 0} meets the ray in one interval (a
 // convex solid), a sign change brackets exactly one crossing and is refined at once. Where the caller can give g′
 // at a point too, refinement takes safeguarded Newton steps instead (renderer/math/safeguarded_newton.h).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -25,7 +26,13 @@ namespace isotrace {
 struct Crossing {
     double t;
     bool entering;  // g goes from ≥ 0 (outside) to < 0 (inside)
+    // The bracket it was found in (lo ≤ t ≤ hi); a search that does not refine reports its midpoint as t.
+    double lo = t, hi = t;
 };
+
+// Whether the search locates each crossing to a few ulps or only reports the bracket that holds it (enough for a
+// query that asks whether there is a crossing in a range, such as an occlusion test).
+enum class CrossingPrecision { Refined, Bracketed };
 
 struct CrossingSearchWork {
     std::uint64_t interval_bounds = 0;
@@ -42,16 +49,22 @@ inline bool inside(double g) { return g < 0; }
 
 // A crossing in [lo, hi], whose end values differ in sign, located to a few ulps of t (Illinois: when the same
 // end is replaced twice in a row the other end's value is halved; a bisection step whenever the bracket has not
-// halved in three steps).
+// halved in three steps; a step never closer to an end than half the final width, so that the bracket closes
+// as soon as the secant has converged from one side).
 template <class Value>
 double refine(double lo, double hi, double g_lo, double g_hi, const Value& value, CrossingSearchWork& work) {
     const double floor = 1e-15 * (hi - lo);
     double width_at_last_halving = hi - lo;
     int steps_since_halving = 0, last_replaced = 0;  // -1: lo, +1: hi
     for (int i = 0; i < 200; ++i) {
-        if (hi - lo <= 4e-16 * std::max(std::abs(lo), std::abs(hi)) + floor) break;
-        double t = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-        if (!(t > lo && t < hi) || steps_since_halving >= 3) t = 0.5 * (lo + hi);
+        const double tolerance = 4e-16 * std::max(std::abs(lo), std::abs(hi)) + floor;
+        if (hi - lo <= tolerance) break;
+        // The secant step measured from an end: its rounding error is relative to the bracket's width, not to t.
+        double t = hi - g_hi * ((hi - lo) / (g_hi - g_lo));
+        if (!(t >= lo && t <= hi) || steps_since_halving >= 3) t = 0.5 * (lo + hi);
+        // A step within the tolerance of an end would leave the other end where it is: step half the tolerance
+        // inside instead, so that a secant converging from one side closes the bracket on the next step.
+        t = std::clamp(t, lo + 0.5 * tolerance, hi - 0.5 * tolerance);
         const double g = value(t);
         ++work.evaluations;
         if (inside(g) == inside(g_lo)) {
@@ -86,12 +99,15 @@ struct RefinementTolerance {
 // For search_crossings without point derivatives.
 struct NoPointSlope {};
 
-// Visits the crossings of g in [t0, t1] in increasing t; g0 = g(t0), g1 = g(t1). `bound(a, b)` returns an
-// Interval containing g over [a, b], `slope(a, b)` one containing g′ wherever g is differentiable on [a, b] (g
-// continuous there, differentiable but at finitely many points; an unbounded interval when nothing is known);
-// `visit(Crossing)` returns false to stop. Returns false when stopped. With `point_slope(t)` returning {value,
-// derivative} (value bit for bit value(t); derivative NaN where unknown), brackets are refined by Newton steps.
-template <class Value, class Bound, class Slope, class Visit, class PointSlope = NoPointSlope>
+// Visits the crossings of g in [t0, t1] in increasing t; g0 = g(t0), g1 = g(t1). With CrossingPrecision::Bracketed
+// every crossing is reported with the bracket that holds exactly it (or a pair closer than the resolution).
+// `bound(a, b)` returns an Interval containing g over [a, b], `slope(a, b)` one containing g′ wherever g is
+// differentiable on [a, b] (g continuous there, differentiable but at finitely many points; an unbounded interval
+// when nothing is known); `visit(Crossing)` returns false to stop. Returns false when stopped. With
+// `point_slope(t)` returning {value, derivative} (value bit for bit value(t); derivative NaN where unknown),
+// brackets are refined by Newton steps.
+template <CrossingPrecision precision = CrossingPrecision::Refined, class Value, class Bound, class Slope, class Visit,
+          class PointSlope = NoPointSlope>
 bool search_crossings(double t0, double t1, double g0, double g1, double resolution, bool convex, const Value& value,
                       const Bound& bound, const Slope& slope, CrossingSearchWork& work, Visit&& visit,
                       const PointSlope& point_slope = {}) {
@@ -116,16 +132,18 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         const bool narrow =
             s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
         if (sign_change && (narrow || convex || monotone(s))) {
-            ++work.crossings;
-            double t;
-            if constexpr (std::is_same_v<PointSlope, NoPointSlope>) {
-                t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
-            } else {
-                t = safeguarded_newton(point_slope, s.lo, s.hi, s.g_lo, s.g_hi,
-                                       crossing_search_detail::RefinementTolerance{1e-15 * (s.hi - s.lo)},
-                                       &work.evaluations, std::numeric_limits<double>::quiet_NaN());
+            double t = 0.5 * (s.lo + s.hi);
+            if constexpr (precision == CrossingPrecision::Refined) {
+                ++work.crossings;
+                if constexpr (std::is_same_v<PointSlope, NoPointSlope>) {
+                    t = crossing_search_detail::refine(s.lo, s.hi, s.g_lo, s.g_hi, value, work);
+                } else {
+                    t = safeguarded_newton(point_slope, s.lo, s.hi, s.g_lo, s.g_hi,
+                                           crossing_search_detail::RefinementTolerance{1e-15 * (s.hi - s.lo)},
+                                           &work.evaluations, std::numeric_limits<double>::quiet_NaN());
+                }
             }
-            if (!visit(Crossing{t, inside(s.g_hi)})) return false;
+            if (!visit(Crossing{t, inside(s.g_hi), s.lo, s.hi})) return false;
             continue;
         }
         if (!sign_change) {

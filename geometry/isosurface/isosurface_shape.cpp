@@ -60,7 +60,7 @@ void IsosurfaceShape::record_work(const IsosurfaceWork& work) const {
     counters::add_to_named(work_slots_, amounts);
 }
 
-template <class Visit>
+template <CrossingPrecision precision, class Visit>
 void IsosurfaceShape::search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a,
                              IsosurfaceWork& work, Visit&& visit) const {
     const auto point = [&](double t) { return origin + direction * t; };
@@ -84,7 +84,7 @@ void IsosurfaceShape::search(const Vec3d& origin, const Vec3d& direction, double
     const auto slope = [&](double lo, double hi) {
         return spent() ? Interval::point(1) : field_->slope_range(segment_box(lo, hi), direction);
     };
-    search_crossings(a, b, g_a, value(b), resolution_ / length(direction), false, value, bound, slope, work.search,
+    search_crossings<precision>(a, b, g_a, value(b), resolution_ / length(direction), false, value, bound, slope, work.search,
                      visit);
 }
 
@@ -95,6 +95,24 @@ Vec3d IsosurfaceShape::surface_normal(const Vec3d& p, const Vec3d& direction) co
 std::optional<IsosurfaceShape::Hit> IsosurfaceShape::first_hit(std::uint32_t index, const Vec3d& origin,
                                                                const Vec3d& direction, double t_near, double t_far,
                                                                IsosurfaceWork& work) const {
+    bool undecided = false;
+    return surface_in_cell<CrossingPrecision::Refined>(index, origin, direction, t_near, t_far, work, undecided);
+}
+
+bool IsosurfaceShape::occludes(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
+                               float t_far, IsosurfaceWork& work) const {
+    bool undecided = false;
+    std::optional<Hit> hit =
+        surface_in_cell<CrossingPrecision::Bracketed>(index, origin, direction, t_near, t_far, work, undecided);
+    if (undecided) hit = first_hit(index, origin, direction, t_near, t_far, work);
+    return hit && float(hit->t) < t_far;
+}
+
+template <CrossingPrecision precision>
+std::optional<IsosurfaceShape::Hit> IsosurfaceShape::surface_in_cell(std::uint32_t index, const Vec3d& origin,
+                                                                     const Vec3d& direction, double t_near,
+                                                                     double t_far, IsosurfaceWork& work,
+                                                                     bool& undecided) const {
     const std::optional<Interval> inside = container_.clip(origin, direction, t_near, t_far);
     if (!inside) return std::nullopt;
     double a = inside->lo, b = inside->hi;
@@ -122,10 +140,17 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::first_hit(std::uint32_t ind
     // The ray enters the container where the function's solid meets its boundary.
     if (enters_container && g_a < 0) return Hit{a, container_.normal(p_a)};
     std::optional<Hit> hit;
-    search(origin, direction, a, b, g_a, work, [&](const Crossing& crossing) {
-        if (!(crossing.t > t_near && crossing.t < t_far)) return true;
-        hit = Hit{crossing.t, surface_normal(origin + direction * crossing.t, direction)};
-        return false;
+    search<precision>(origin, direction, a, b, g_a, work, [&](const Crossing& crossing) {
+        if constexpr (precision == CrossingPrecision::Bracketed) {
+            // Within the range whatever its refined t: the same answer as refining, up to the float t_far.
+            undecided = !(crossing.lo > t_near && float(crossing.hi) < t_far);
+            if (!undecided) hit = Hit{crossing.t, {}};
+            return false;
+        } else {
+            if (!(crossing.t > t_near && crossing.t < t_far)) return true;
+            hit = Hit{crossing.t, surface_normal(origin + direction * crossing.t, direction)};
+            return false;
+        }
     });
     if (hit) return hit;
     // A ray from inside leaves through the container's boundary.
@@ -160,10 +185,9 @@ void IsosurfaceShape::occluded_callback(const RTCOccludedFunctionNArguments* arg
     user_geometry::occlude_rays(args, self->counter_slot_,
                                 [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
                                     IsosurfaceWork work;
-                                    const auto hit =
-                                        self->first_hit(args->primID, origin, direction, t_near, t_far, work);
+                                    const bool hit = self->occludes(args->primID, origin, direction, t_near, t_far, work);
                                     self->record_work(work);
-                                    return hit && float(hit->t) < t_far;
+                                    return hit;
                                 });
 }
 

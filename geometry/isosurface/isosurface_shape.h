@@ -69,6 +69,11 @@ public:
     std::optional<Hit> first_hit(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
                                  double t_far, IsosurfaceWork& work) const;
 
+    // Whether the surface crosses origin + t·direction for a t in (t_near, t_far) within cell `index`: first_hit's
+    // answer, without refining a crossing whose bracket already lies within the range.
+    bool occludes(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near, float t_far,
+                  IsosurfaceWork& work) const;
+
     const ImplicitField& field() const { return *field_; }
     const Container& container() const { return container_; }
     const std::vector<IntervalBox>& cells() const { return cells_; }
@@ -76,7 +81,12 @@ public:
 private:
     // Visits the crossings of f along [a, b] (inside the container; g_a = f there), nearest first, within the work
     // budget.
-    template <class Visit>
+    // first_hit, or with Bracketed a hit at a crossing whose bracket lies within (t_near, t_far) (t only within
+    // the bracket, no normal); `undecided` is set when the first bracket reaches past either end of the range.
+    template <CrossingPrecision precision>
+    std::optional<Hit> surface_in_cell(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
+                                       double t_far, IsosurfaceWork& work, bool& undecided) const;
+    template <CrossingPrecision precision = CrossingPrecision::Refined, class Visit>
     void search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a, IsosurfaceWork& work,
                 Visit&& visit) const;
     // The outward normal where f crosses zero: its normalised gradient (facing the ray where it has none).

@@ -1,7 +1,7 @@
 // The isosurface shape on analytic fields: exact hits and normals on spheres, tori, planes and gyroids; thin
 // features (a sub-pixel spike, sin(1000 x) sheets) against a float64 brute-force oracle; tangent rays; the work
-// budget; the container's boundary as surface; inside spans, CSG with an isosurface operand, Embree rays; the
-// octree's cells.
+// budget; the occlusion query against first_hit; the container's boundary as surface; inside spans, CSG with an
+// isosurface operand, Embree rays; the octree's cells.
 #include "geometry/isosurface/isosurface_shape.h"
 
 #include <gtest/gtest.h>
@@ -131,6 +131,42 @@ TEST(Isosurface, GyroidHitsAgreeWithTheOracleAndLieOnTheSurface) {
         EXPECT_LE(length(hit->normal - normalize(gyroid.gradient(p))), 1e-9);
     }
     EXPECT_GT(compared, 200);
+}
+
+// The occlusion query answers as first_hit does, cell by cell, for ranges that end anywhere: before, at or just
+// past a hit, and starting on it; it refines fewer crossings (a bracket within the range settles it).
+TEST(Isosurface, OcclusionAgreesWithTheFirstHit) {
+    const auto shape = isosurface(std::make_unique<GyroidField>(3), unit_box(1));
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    int occluded = 0, compared = 0;
+    std::uint64_t refined_by_hits = 0, refined_by_occlusion = 0;
+    for (int i = 0; i < 40; ++i) {
+        const Vec3d d = random_direction(rng);
+        const Vec3d o = random_direction(rng) * 0.3 - d * 4.0;
+        const auto nearest = hit_of(*shape, o, d);
+        const double t_hit = nearest ? nearest->t : 4.0;
+        for (const double t_near : {0.0, t_hit, t_hit * (1 - 1e-7)}) {
+            for (const float t_far : {float(t_hit), std::nextafter(float(t_hit), INFINITY), float(t_hit * 1.01),
+                                      float(t_hit * (0.5 + uniform(rng))), INFINITY}) {
+                for (std::uint32_t cell = 0; cell < shape->cells().size(); ++cell) {
+                    IsosurfaceWork hits, occlusion;
+                    const auto hit = shape->first_hit(cell, o, d, t_near, t_far, hits);
+                    const bool expected = hit && float(hit->t) < t_far;
+                    ASSERT_EQ(shape->occludes(cell, o, d, t_near, t_far, occlusion), expected)
+                        << i << " cell " << cell << " t_near " << t_near << " t_far " << t_far;
+                    occluded += expected;
+                    ++compared;
+                    refined_by_hits += hits.search.crossings;
+                    refined_by_occlusion += occlusion.search.crossings;
+                }
+            }
+        }
+    }
+    EXPECT_GT(occluded, 100);
+    EXPECT_LT(occluded, compared);
+    // Ranges that end at the hit leave its bracket undecided, and first_hit refines it: most of what is left.
+    EXPECT_LT(refined_by_occlusion * 2, refined_by_hits);
 }
 
 // How many of `rays` random rays aimed at `target()` the isosurface misses or hits later than the oracle (or hits

@@ -90,30 +90,45 @@ inline Interval sign_range(Interval a) {
 }
 
 namespace interval_detail {
-// Range of f = cos or sin over [θlo, θhi]: the values at the ends, widened to ±1 where an extremum lies inside
-// (f(first_extremum + kπ) is +1 for even k, −1 for odd k).
-template <class F>
-Interval periodic_range(Interval angle, F f, double first_extremum) {
+// Range of f = cos or sin over [θlo, θhi] (no wider than 2π), whose values at the ends are f_lo and f_hi: those,
+// widened to ±1 where an extremum lies inside (f(first_extremum + kπ) is +1 for even k, −1 for odd k).
+inline Interval periodic_range(Interval angle, double f_lo, double f_hi, double first_extremum) {
     constexpr double pi = std::numbers::pi;
-    if (angle.width() >= 2 * pi) return {-1, 1};
-    Interval r = Interval::spanning(f(angle.lo), f(angle.hi));
+    Interval r = Interval::spanning(f_lo, f_hi);
     for (double k = std::ceil((angle.lo - first_extremum) / pi); first_extremum + k * pi <= angle.hi; ++k) {
         if (std::fmod(std::abs(k), 2.0) == 0) r.hi = 1;
         else r.lo = -1;
     }
     return r;
 }
+inline bool covers_a_period(Interval angle) { return angle.width() >= 2 * std::numbers::pi; }
 }  // namespace interval_detail
 
 inline Interval cos_range(Interval angle) {
-    return interval_detail::periodic_range(angle, [](double a) { return std::cos(a); }, 0);
+    if (interval_detail::covers_a_period(angle)) return {-1, 1};
+    return interval_detail::periodic_range(angle, std::cos(angle.lo), std::cos(angle.hi), 0);
 }
 
 // The sine's own values at the ends, not the cosine of θ − π/2: that difference rounds to the ulp of π/2, which
 // loses the relative precision of a small sine, and a slight bend divides its sine by the curvature (an identity
 // bend, k = 10⁻¹², lost 5·10⁻⁵ of its object's bottom face from its bounds: a regression test).
 inline Interval sin_range(Interval angle) {
-    return interval_detail::periodic_range(angle, [](double a) { return std::sin(a); }, std::numbers::pi / 2);
+    if (interval_detail::covers_a_period(angle)) return {-1, 1};
+    return interval_detail::periodic_range(angle, std::sin(angle.lo), std::sin(angle.hi), std::numbers::pi / 2);
+}
+
+// sin_range and cos_range of one angle at the cost of one sincos per end (glibc's sincos returns sin's and cos's
+// own values, so both ranges are exactly those of the two functions).
+struct SinCosRange {
+    Interval sin, cos;
+};
+inline SinCosRange sin_cos_range(Interval angle) {
+    if (interval_detail::covers_a_period(angle)) return {{-1, 1}, {-1, 1}};
+    double sin_lo, cos_lo, sin_hi, cos_hi;
+    ::sincos(angle.lo, &sin_lo, &cos_lo);
+    ::sincos(angle.hi, &sin_hi, &cos_hi);
+    return {interval_detail::periodic_range(angle, sin_lo, sin_hi, std::numbers::pi / 2),
+            interval_detail::periodic_range(angle, cos_lo, cos_hi, 0)};
 }
 
 struct IntervalBox {

@@ -1,6 +1,6 @@
 // Interval operations hold every value of their function over the operands (random intervals, dense sampling),
 // unbounded operands give no NaN ends, and the special places are handled: tan's poles, atan2's branch cut and
-// origin, 1/b for b holding 0.
+// origin, 1/b for b holding 0; the sine and cosine ranges of one angle from sincos are the two functions' own.
 #include "renderer/math/interval.h"
 
 #include <gtest/gtest.h>
@@ -77,6 +77,21 @@ TEST(Interval, TanIsUnboundedAcrossAPoleAndAtan2AcrossTheCut) {
     const Interval right = atan2_range({-0.1, 0.1}, {1, 2});
     EXPECT_NEAR(right.hi, std::atan2(0.1, 1), 1e-15);
     EXPECT_NEAR(right.lo, -std::atan2(0.1, 1), 1e-15);
+}
+
+// The sine and cosine ranges of one angle from sincos are exactly the two functions' own ranges.
+TEST(Interval, SinCosRangeIsSinRangeAndCosRange) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> centre(-50, 50), log_width(-12, 1.2);
+    for (int i = 0; i < 20000; ++i) {
+        const double lo = centre(rng), hi = lo + std::pow(10.0, log_width(rng));
+        const SinCosRange both = sin_cos_range({lo, hi});
+        const Interval sin = sin_range({lo, hi}), cos = cos_range({lo, hi});
+        ASSERT_EQ(both.sin.lo, sin.lo) << lo << " " << hi;
+        ASSERT_EQ(both.sin.hi, sin.hi) << lo << " " << hi;
+        ASSERT_EQ(both.cos.lo, cos.lo) << lo << " " << hi;
+        ASSERT_EQ(both.cos.hi, cos.hi) << lo << " " << hi;
+    }
 }
 
 }  // namespace

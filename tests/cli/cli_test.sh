@@ -1053,6 +1053,26 @@ PY
     "$work/stats.json" || fail "the CSG operand's superquadric work is not counted"
 }
 
+# The secondary rays of the direct-vs-tessellated comparison start half a tessellation cell off the exact surface:
+# from on it they would start inside the dual-contouring mesh of a sphere (its vertices lie outside a convex
+# surface) and hit it at once, and a third of them would disagree.
+case_bench_isosurface_agreement() {
+  write_shape_scene "$work/scene" '        "type": "isosurface", "function": "length(p) - 1",' \
+    '        "contained_by": {"box": {"min": [-1.2, -1.2, -1.2], "max": [1.2, 1.2, 1.2]}}'
+  cli_expect 0 bench "$work/scene/scene.json" --filter direct_vs_tessellated --threads 1 --repeats 1 \
+    --resolution 48x48 --json "$work/bench.json"
+  python3 - "$work/bench.json" <<'PY' || fail "the isosurface's secondary rays disagree with its tessellation"
+import json, sys
+scene = json.load(open(sys.argv[1]))["blob_comparison"]["scenes"][0]
+cell = scene["tessellated"]["cell_size"]
+assert abs(cell - 2.4 / 128) < 1e-9, cell
+assert abs(scene["secondary_clearance"] - cell / 2) < 1e-9, scene["secondary_clearance"]
+for kind in ("shadow", "bounce"):
+    assert scene[kind]["rays"] > 100, (kind, scene[kind]["rays"])
+    assert scene[kind]["agreement"] > 0.99, (kind, scene[kind]["agreement"])
+PY
+}
+
 case_bench_suite() {  # two workloads of the suite on two thread counts, with JSON and the HTML report
   cli_expect 0 bench --quick --resolution 32x18 --threads 1,2 --filter '^cornell_box/(primary|path)$' \
     --json "$work/suite.json" --report "$work/suite.html"

@@ -105,6 +105,7 @@ nlohmann::json benchmark_json(const BlobBenchmarkSettings& settings, const std::
                           {"pixel_agreement", r.pixel_agreement},
                           {"median_depth_difference", r.median_depth_difference},
                           {"light", {r.light.x, r.light.y, r.light.z}},
+                          {"secondary_clearance", r.secondary_clearance},
                           {"shadow", secondary_json(r.shadow)},
                           {"bounce", secondary_json(r.bounce)}});
     }
@@ -168,7 +169,8 @@ std::string benchmark_table(const nlohmann::json& report) {
     }
     out += "\nPer ray kind, the same rays in both scenes: primary (one per pixel centre), shadow (from every\n"
            "primary hit of the direct scene facing a point light above the scene) and bounce (one cosine-distributed\n"
-           "direction per primary hit, nearest hit); agree %: same hit/miss or occluded answer in both scenes\n";
+           "direction per primary hit, nearest hit), starting half a tessellation cell off the surface;\n"
+           "agree %: same hit/miss or occluded answer in both scenes\n";
     const char* const header = "%-12s %-8s %9s %8s %9s %8s %9s %8s %11s %8s\n";
     out += format(header, "scene", "kind", "rays", "threads", "direct", "ns/ray", "tess", "ns/ray", "direct/tess",
                   "agree %");

@@ -63,6 +63,7 @@ std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_gr
         if (mesh.triangles.empty())
             throw InputError({}, scene, "a " + std::string(shape->type_name()) + " shape has no surface to tessellate");
         summary.cell_size = summary.triangles == 0 ? cell : std::min(summary.cell_size, cell);
+        summary.coarsest_cell = std::max(summary.coarsest_cell, cell);
         summary.triangles += mesh.triangles.size();
         summary.vertices += mesh.positions.size();
         summary.closed = summary.closed && is_closed_and_consistently_oriented(mesh);
@@ -127,7 +128,8 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         result.direct = build_of(*direct);
         result.tessellated = build_of(*tessellated);
         log(path + ": building the shadow and bounce rays from the direct scene's primary hits");
-        const SecondaryRayLists secondary = build_secondary_rays(*direct);
+        result.secondary_clearance = kSecondaryClearanceInCells * result.tessellation.coarsest_cell;
+        const SecondaryRayLists secondary = build_secondary_rays(*direct, float(result.secondary_clearance));
         result.light = secondary.light;
         const std::vector<const LoadedScene*> scenes = {direct.get(), tessellated.get()};
         for (int threads : settings.threads) {

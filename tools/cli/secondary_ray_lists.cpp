@@ -47,7 +47,7 @@ struct RowRays {
 
 }  // namespace
 
-SecondaryRayLists build_secondary_rays(const LoadedScene& scene) {
+SecondaryRayLists build_secondary_rays(const LoadedScene& scene, float clearance) {
     SecondaryRayLists lists;
     lists.light = light_above(content_bounds(*scene.scene), scene.path);
     const PixelBounds window = scene.film.crop;
@@ -66,6 +66,7 @@ SecondaryRayLists build_secondary_rays(const LoadedScene& scene) {
                 hit.geometric_normal = -hit.geometric_normal;
                 hit.shading_normal = -hit.shading_normal;
             }
+            hit.position_error += clearance;  // spawn_origin pushes off by it
             const Vec3f to_light = lists.light - hit.position;
             const float distance = length(to_light);
             if (distance > 0 && dot(to_light, hit.geometric_normal) > 0)

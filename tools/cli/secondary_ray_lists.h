@@ -23,7 +23,9 @@ struct SecondaryRayLists {
 // shadow_ray's, aimed at the light from there), and a hit gets no shadow ray when the light is behind its surface
 // and no bounce when the sampled direction (around the shading normal) falls below the geometric surface. The
 // bounce direction of pixel (x, y) comes from an IndependentSampler with the scene's seed, sample 0, dimensions 0
-// and 1. Throws InputError when the scene's bounds are empty.
-SecondaryRayLists build_secondary_rays(const LoadedScene& scene);
+// and 1. `clearance` (world units) pushes every origin that much further off along the geometric normal: a
+// tessellation of the hit surface strays from it by up to about a cell, and a ray starting within that band would
+// hit the mesh at once where the exact surface lets it go. Throws InputError when the scene's bounds are empty.
+SecondaryRayLists build_secondary_rays(const LoadedScene& scene, float clearance = 0);
 
 }  // namespace isotrace::cli

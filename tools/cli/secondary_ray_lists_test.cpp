@@ -30,5 +30,24 @@ TEST(SecondaryRayLists, LightIsPlacedFromTheShapesOwnBoundsNotEmbrees) {
     EXPECT_FALSE(lists.shadow.empty());
 }
 
+// Every secondary ray starts off the surface by at least the clearance, on the side it travels to: a unit sphere
+// seen from outside, so every origin lies at least 1 + clearance from its centre.
+TEST(SecondaryRayLists, OriginsKeepTheClearanceFromTheSurface) {
+    const testing::SceneFile file(R"({"isotrace": 1,
+  "film": {"resolution": [16, 16], "spp": 1},
+  "camera": {"type": "perspective", "fov": 30, "look_at": {"eye": [0, 0, 6], "target": [0, 0, 0]}},
+  "materials": {"m": {"type": "diffuse"}},
+  "objects": [{"material": "m", "shape": {"type": "sphere", "radius": 1}}]})");
+    const auto scene = load_scene(file.path());
+    constexpr float kClearance = 0.05f;
+    const SecondaryRayLists lists = build_secondary_rays(*scene, kClearance);
+    ASSERT_FALSE(lists.shadow.empty());
+    ASSERT_FALSE(lists.bounce.empty());
+    for (const std::vector<Ray>* rays : {&lists.shadow, &lists.bounce})
+        for (const Ray& ray : *rays) EXPECT_GE(length(ray.origin), 1 + 0.99f * kClearance);
+    // Without a clearance they start within the position error of the surface.
+    for (const Ray& ray : build_secondary_rays(*scene).bounce) EXPECT_LT(length(ray.origin), 1 + 1e-3f);
+}
+
 }  // namespace
 }  // namespace isotrace::cli
