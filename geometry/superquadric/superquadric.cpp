@@ -55,7 +55,7 @@ Vec3d Superquadric::surface_point(double eta, double omega) const {
     return placement_.point(deformation_.forward(shape_.surface_point(eta, omega)));
 }
 
-template <class Visit>
+template <CrossingPrecision precision, class Visit>
 void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, bool first_only,
                           SuperquadricWork& work, Visit&& visit) const {
     const SuperquadricAlongRay ray(*this, origin, direction);
@@ -103,8 +103,8 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     cuts[count++] = t1;
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
-        if (!search_crossings(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound, slope,
-                              work.search, visit, value_and_slope))
+        if (!search_crossings<precision>(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound,
+                                         slope, work.search, visit, value_and_slope))
             return;
         g_start = g_end;
     }
@@ -113,16 +113,30 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
 std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
                                                    double t_max, SuperquadricWork& work) const {
     std::optional<double> first;
-    search(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
+    search<CrossingPrecision::Refined>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
         first = c.t;
         return false;
     });
     return first;
 }
 
+bool Superquadric::blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max,
+                          SuperquadricWork& work) const {
+    bool blocked = false, undecided = false;
+    search<CrossingPrecision::Bracketed>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
+        // Inside the range whatever its refined t: the answer refining would give, up to the float t_max.
+        undecided = !(c.lo > t_min && float(c.hi) < t_max);
+        blocked = !undecided;
+        return false;
+    });
+    if (!undecided) return blocked;
+    const std::optional<double> t = first_crossing(origin, direction, t_min, t_max, work);
+    return t && *t > t_min && float(*t) < t_max;
+}
+
 void Superquadric::crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                              std::vector<Crossing>& out, SuperquadricWork& work) const {
-    search(origin, direction, t_min, t_max, false, work, [&](const Crossing& c) {
+    search<CrossingPrecision::Refined>(origin, direction, t_min, t_max, false, work, [&](const Crossing& c) {
         out.push_back(c);
         return true;
     });

@@ -136,7 +136,11 @@ void SuperquadricShape::occluded_callback(const RTCOccludedFunctionNArguments* a
     const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
     user_geometry::occlude_rays(args, self->counter_slot_,
                                 [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
-                                    return self->first_hit(args->primID, origin, direction, t_near, t_far);
+                                    SuperquadricWork work;
+                                    const bool blocked =
+                                        self->superquadrics_[args->primID].blocks(origin, direction, t_near, t_far, work);
+                                    self->record_work(work);
+                                    return blocked;
                                 });
 }
 

@@ -223,6 +223,32 @@ TEST(SuperquadricIntersection, RaysCostAFewNewtonSteps) {
     }
 }
 
+// Occlusion settled by an unrefined bracket gives first_crossing's answer on every ray, ranges cut short included,
+// for less work.
+TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {
+    std::mt19937 random(26);
+    std::uniform_real_distribution<double> exponent(0.1, 4), size(0.4, 1.5), range(0, 12);
+    SuperquadricWork by_blocks, by_crossing;
+    int blocked = 0;
+    for (int shape = 0; shape < 40; ++shape) {
+        const Vec3d radii{size(random), size(random), size(random)};
+        const Superquadric s = shape % 2 ? random_deformed_superquadric(random, radii, exponent)
+                                         : make_superquadric(radii, exponent(random), exponent(random));
+        for (int i = 0; i < 50; ++i) {
+            const RandomRay ray = random_ray(random, radii, i % 5 == 0);
+            const float t_max = float(range(random));
+            const std::optional<double> t = s.first_crossing(ray.origin, ray.direction, 0, t_max, by_crossing);
+            const bool expected = t && *t > 0 && float(*t) < t_max;
+            EXPECT_EQ(s.blocks(ray.origin, ray.direction, 0, t_max, by_blocks), expected) << shape << " " << i;
+            blocked += expected;
+        }
+    }
+    EXPECT_GT(blocked, 300);
+    EXPECT_LT(by_blocks.search.evaluations, by_crossing.search.evaluations);
+    std::printf("point evaluations: %llu blocking, %llu locating\n", (unsigned long long)by_blocks.search.evaluations,
+                (unsigned long long)by_crossing.search.evaluations);
+}
+
 TEST(SuperquadricIntersection, PlacementIsAppliedAndTIsPreserved) {
     const Transform placement = Transform::translate({1, -2, 0.5}) * Transform::rotate({1, 2, 3}, 40) *
                                 Transform::scale({1.5, 1.5, 1.5});
