@@ -82,6 +82,12 @@ PlacementArray::PlacementArray(std::shared_ptr<Shape> shape, std::vector<const S
 
 RTCGeometry PlacementArray::create_geometry(RTCDevice device, RTCScene shape_scene) {
     shape_scene_ = shape_scene;
+    // What the shape's scene can hit: Embree's bounds of it, which hold every primitive's box (the shape's own
+    // bounds() may be tighter than the boxes its primitives report).
+    RTCBounds b;
+    rtcGetSceneBounds(shape_scene, &b);
+    shape_scene_bounds_.lower = {b.lower_x, b.lower_y, b.lower_z};
+    shape_scene_bounds_.upper = {b.upper_x, b.upper_y, b.upper_z};
     return user_geometry::create<bounds>(device, this, size(), intersect, occluded);
 }
 
@@ -102,7 +108,7 @@ std::size_t PlacementArray::memory_bytes() const {
 
 void PlacementArray::bounds(const RTCBoundsFunctionArguments* args) {
     const auto& array = *static_cast<const PlacementArray*>(args->geometryUserPtr);
-    const Bounds3f own = array.shape_->bounds();
+    const Bounds3f& own = array.shape_scene_bounds_;
     if (own.empty()) {  // Embree leaves out a primitive whose box is not valid
         constexpr float kInfinity = std::numeric_limits<float>::infinity();
         *args->bounds_o = {kInfinity, kInfinity, kInfinity, 0, -kInfinity, -kInfinity, -kInfinity, 0};

@@ -1,7 +1,7 @@
 #pragma once
 // PlacementArray: one shape, in its own space, placed many times — the copies of a definition's shape, or a single
 // object whose transform its shape cannot bake. Embree sees one user geometry whose primitives are the placements:
-// a primitive's box is the shape's box carried to the world, and its callbacks carry the ray into the placement's
+// a primitive's box is the shape scene's box carried to the world, and its callbacks carry the ray into the placement's
 // space and trace the shape's own Embree scene there (built once, shared by every placement). A placement keeps a
 // PlacementRecord and its share of Embree's BVH over the placements; the rest is computed when a ray needs it.
 #include <embree3/rtcore.h>
@@ -77,6 +77,7 @@ private:
     std::vector<PlacementRecord> records_;
     PlacementNames names_;
     RTCScene shape_scene_ = nullptr;
+    Bounds3f shape_scene_bounds_;  // Embree's bounds of shape_scene_, in the shape's space
 };
 
 }  // namespace isotrace
