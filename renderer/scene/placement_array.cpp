@@ -102,7 +102,8 @@ std::size_t PlacementArray::memory_bytes() const {
     std::size_t bytes = sizeof(PlacementArray) + records_.capacity() * sizeof(PlacementRecord) +
                         variants_.capacity() * sizeof(const SceneObject*) + names_.object.capacity() +
                         names_.part_suffix.capacity() + names_.own.capacity() * sizeof(names_.own[0]);
-    for (const auto& [index, name] : names_.own) bytes += name.capacity() > std::string().capacity() ? name.capacity() : 0;
+    for (const auto& [index, name] : names_.own)
+        bytes += name.capacity() > std::string().capacity() ? name.capacity() : 0;
     return bytes;
 }
 

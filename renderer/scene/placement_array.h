@@ -1,9 +1,9 @@
 #pragma once
 // PlacementArray: one shape, in its own space, placed many times — the copies of a definition's shape, or a single
 // object whose transform its shape cannot bake. Embree sees one user geometry whose primitives are the placements:
-// a primitive's box is the shape scene's box carried to the world, and its callbacks carry the ray into the placement's
-// space and trace the shape's own Embree scene there (built once, shared by every placement). A placement keeps a
-// PlacementRecord and its share of Embree's BVH over the placements; the rest is computed when a ray needs it.
+// a primitive's box is the box of the shape's Embree scene carried to the world, and its callbacks carry the ray
+// into the placement's space and trace that scene there (built once, shared by every placement). A placement keeps
+// a PlacementRecord and its share of Embree's BVH over the placements; the rest is computed when a ray needs it.
 #include <embree3/rtcore.h>
 
 #include <array>

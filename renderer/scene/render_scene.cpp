@@ -57,8 +57,9 @@ void RenderScene::add_placements(Placements placements) {
 }
 
 SceneObject RenderScene::object(std::uint32_t id) const {
-    const auto after = std::upper_bound(id_ranges_.begin(), id_ranges_.end(), id,
-                                        [](std::uint32_t wanted, const IdRange& range) { return wanted < range.first_id; });
+    const auto after =
+        std::upper_bound(id_ranges_.begin(), id_ranges_.end(), id,
+                         [](std::uint32_t wanted, const IdRange& range) { return wanted < range.first_id; });
     const IdRange& range = *std::prev(after);
     return range.placed ? placed_[range.index]->copy(id - range.first_id) : objects_[range.index];
 }
@@ -143,7 +144,8 @@ void RenderScene::commit() {
         if (!record)
             throw std::runtime_error("object \"" + object.name + "\": its transform is singular in single precision");
         single_placements_.push_back(std::make_unique<PlacementArray>(
-            object.shape, std::vector{&std::as_const(object)}, std::vector{*record}, PlacementNames{object.name, "", {}}));
+            object.shape, std::vector{&std::as_const(object)}, std::vector{*record},
+            PlacementNames{object.name, "", {}}));
         arrays.push_back({single_placements_.back().get(), new_shape_scene(geometry), range.first_id});
     }
     if (!arrays.empty()) {

@@ -30,7 +30,8 @@ namespace isotrace {
 struct BuildStatistics {
     double seconds = 0;
     std::size_t objects = 0;
-    std::size_t instanced_objects = 0;  // traced in their shape's space: placements, and objects whose transform cannot bake
+    // Traced in their shape's space: placements, and objects whose transform cannot bake.
+    std::size_t instanced_objects = 0;
     std::size_t placements = 0;         // copies of a definition's shapes (add_placements)
     std::size_t placed_shapes = 0;      // the shapes they share, each built once
     std::map<std::string, std::size_t> primitives_by_type;  // each shape counted once, however often placed

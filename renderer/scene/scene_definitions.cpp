@@ -76,7 +76,8 @@ void SceneDefinitions::place(const SceneNode& node, const std::string& name) {
             const Transform to_world = placed_part(node, placement, part);
             const auto [variant, added] =
                 variant_of_override.try_emplace(placement.material, std::uint32_t(copies.variants.size()));
-            if (added) copies.variants.push_back(painted(part, placement.material, placement.name + copies.names.part_suffix));
+            if (added)
+                copies.variants.push_back(painted(part, placement.material, placement.name + copies.names.part_suffix));
             const std::optional<PlacementRecord> record = placement_record(to_world, variant->second);
             if (!record) fail_at_placement(node, placement, kSingularInSinglePrecision);
             copies.records.push_back(*record);
@@ -139,7 +140,8 @@ std::vector<SceneObject> SceneDefinitions::build(const std::string& name, const 
         for (const Placement& placement : read_placements(member, member_name, inner.size(), scene_))
             for (const SceneObject& part : inner) {
                 if (parts.size() >= kMaxPlacedObjects)
-                    member.fail("the group \"" + name + "\" has more than " + std::to_string(kMaxPlacedObjects) + " parts");
+                    member.fail("the group \"" + name + "\" has more than " + std::to_string(kMaxPlacedObjects) +
+                                " parts");
                 SceneObject placed = painted(part, placement.material, placement.name + part_suffix(part));
                 placed.to_world = placed_part(member, placement, part);
                 parts.push_back(std::move(placed));
