@@ -149,13 +149,16 @@ void RenderScene::commit() {
         arrays.push_back({single_placements_.back().get(), new_shape_scene(geometry), range.first_id});
     }
     if (!arrays.empty()) {
-        // The placements' own scene, built by Embree's quicker builder: its BVH costs a quarter of the default one's
-        // per placement (docs/decisions.md, "Placements are primitives of a user geometry"). One instance, with no
-        // transform, puts it in the scene. Its geometries take ids after the scene's own, so that a hit's geomID
-        // says which it is.
+        // The placements' own scene. Many placements are built by Embree's quicker builder, whose BVH costs a fifth
+        // of the default one's per placement but is looser; a few by the default one, which traces them faster
+        // (docs/decisions.md, "Instances: one shape, many placements"). One instance, with no transform, puts the
+        // scene in the scene. Its geometries take ids after the scene's own, so that a hit's geomID says which it is.
         RTCScene placements = rtcNewScene(device);
         shape_scenes_.push_back(placements);
-        rtcSetSceneBuildQuality(placements, RTC_BUILD_QUALITY_LOW);
+        std::size_t count = 0;
+        for (const Traced& traced : arrays) count += traced.array->size();
+        rtcSetSceneBuildQuality(placements, count >= kPlacementsBuiltCompactly ? RTC_BUILD_QUALITY_LOW
+                                                                                : RTC_BUILD_QUALITY_MEDIUM);
         const auto instance_id = unsigned(traced_.size());
         traced_.emplace_back();  // the instance: hits on it are hits on its placements
         for (const Traced& traced : arrays) {

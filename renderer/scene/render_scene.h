@@ -72,6 +72,10 @@ struct FlatLambertianScene {
 
 class RenderScene {
 public:
+    // From this many placements on, their BVH is built for memory rather than speed (RTC_BUILD_QUALITY_LOW: about 24
+    // bytes per placement instead of 120, and about 6 % slower to trace).
+    static constexpr std::size_t kPlacementsBuiltCompactly = 4096;
+
     RenderScene();
     ~RenderScene();
     RenderScene(const RenderScene&) = delete;
