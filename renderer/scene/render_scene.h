@@ -3,13 +3,13 @@
 // Embree scene that holds their geometry; answers nearest-hit and occlusion queries.
 #include <embree3/rtcore.h>
 
+#include <deque>
 #include <limits>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
-#include <deque>
 #include <vector>
 
 #include "renderer/core/ray.h"
