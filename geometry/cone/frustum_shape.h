@@ -1,7 +1,7 @@
 #pragma once
 // The cylinder and cone shapes: one frustum (frustum.h) as an Embree user geometry of one primitive, its hits'
 // primID naming the part (side, base cap, top cap) for shading. Rigid motions and uniform scales are baked into
-// the frustum; other transforms place it in an Embree instance. Capped, it is a closed convex solid for CSG; open,
+// the frustum; other transforms trace it in its own space. Capped, it is a closed convex solid for CSG; open,
 // it is the side alone and no solid.
 #include <string>
 

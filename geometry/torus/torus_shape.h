@@ -1,6 +1,6 @@
 #pragma once
 // The torus shape: one ring torus (torus.h) as an Embree user geometry of one primitive. Rigid motions and uniform
-// scales are baked; other transforms place it in an Embree instance. It is a closed solid for CSG (a line is
+// scales are baked; other transforms trace it in its own space. It is a closed solid for CSG (a line is
 // inside it on up to two spans).
 #include "geometry/torus/torus.h"
 #include "renderer/plugin/shape.h"

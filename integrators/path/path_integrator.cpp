@@ -83,7 +83,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
         const Rgb emitted = hit.material->emission(hit, towards_viewer);
         if (!emitted.is_black()) {
             float weight = 1;
-            const Light* area_light = scene.objects()[hit.object_index].area_light;
+            const Light* area_light = hit.object->area_light;
             if (!previous_was_delta && area_light) {
                 const float light_pdf = scene.light_probability(area_light) *
                                         area_light->pdf(previous_point, ray.direction, hit.t, hit.geometric_normal);

@@ -69,7 +69,8 @@ std::vector<std::string> PreviewIntegrator::light_left_out(const RenderScene& sc
         left_out.push_back("the environment as seen by rays that leave the scene (they show the uniform background; "
                            "only the environment's direct light is kept)");
     std::size_t unlit_by = 0, area_lights = 0;
-    for (const SceneObject& object : scene.objects()) {
+    for (std::uint32_t id = 0; id < scene.object_count(); ++id) {
+        const SceneObject object = scene.object(id);
         if (emits(object) && !object.area_light) ++unlit_by;
         if (object.area_light) ++area_lights;
     }

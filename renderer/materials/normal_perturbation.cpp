@@ -13,7 +13,7 @@ namespace {
 
 // A world-space vector in the hit object's own space.
 Vec3f to_object(const SurfaceHit& hit, const Vec3f& v) {
-    return hit.object ? Vec3f(hit.object->to_world.inverse_vector(Vec3d(v))) : v;
+    return Vec3f(hit.to_world.inverse_vector(Vec3d(v)));
 }
 
 // The uv step that moves the point by the world-space `offset` along the surface (least squares on dp/du, dp/dv;

@@ -16,12 +16,12 @@ class Material;
 
 struct SceneObject {
     std::string name;
-    std::shared_ptr<Shape> shape;  // shared by the placements of one definition (RenderScene::add_placement)
+    std::shared_ptr<Shape> shape;  // shared by the placements of one definition (RenderScene::add_placements)
     const Material* material = nullptr;
     std::vector<const Material*> part_materials;  // per Shape::part_materials() entry; null: `material`
     const Material* blended_material = nullptr;   // for shapes whose hits blend their parts' materials
     Transform to_world;
-    bool instanced = false;  // true: shape in object space inside an Embree instance
+    bool instanced = false;  // true: the shape stays in object space, traced as a placement (PlacementArray)
     HitShading hit_shading = HitShading::Computed;  // the shape's, after any bake (set by commit)
     int counter_slot = 0;
     const Light* area_light = nullptr;  // set when the object emits and its surface can be sampled

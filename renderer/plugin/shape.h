@@ -1,7 +1,7 @@
 #pragma once
 // Shape: a geometry plugin. It owns its data, builds one Embree geometry, and completes hits with shading
 // data. The scene either bakes an object's transform into the shape (when the shape can represent the
-// transformed result exactly) or places the shape in an Embree instance.
+// transformed result exactly) or traces the shape in its own space, as a placement.
 #include <embree3/rtcore.h>
 
 #include <array>

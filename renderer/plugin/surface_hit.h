@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 
+#include "renderer/math/transform.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
@@ -33,7 +34,8 @@ struct SurfaceHit {
     Vec3f dpdu, dpdv;          // world-space derivatives of position along uv; zero where the shape has no uv
     Vec3f tangent;             // unit, perpendicular to shading_normal: the frame's x axis; zero lets the frame choose
     float footprint = 0;       // world-space width of the pixel's footprint at the hit (ray cone); 0: a point
-    const SceneObject* object = nullptr;  // the object hit (its shape and placement, for object-space textures)
+    const SceneObject* object = nullptr;  // the object hit: its shape and materials (shared by the copies of a placement)
+    Transform to_world;  // the object's placement (a placed copy's own), for object-space textures and frames
     MaterialBlend blend;
 
     // Origin for a ray leaving the surface in `direction`: pushed off along the geometric normal, to the

@@ -37,6 +37,7 @@ TEST(TextureContext, ObjectSpaceUndoesThePlacement) {
     object.to_world = Transform::translate({0, 10, 0}) * Transform::scale({4, 2, 2});
     SurfaceHit hit = hit_at({4, 12, 0}, normalize(Vec3f(1, 1, 0)));
     hit.object = &object;
+    hit.to_world = object.to_world;
     object.instanced = true;
     const TextureContext instanced(hit);
     expect_near(instanced.object_position, {1, 1, 0});

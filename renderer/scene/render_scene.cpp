@@ -1,10 +1,12 @@
 #include "renderer/scene/render_scene.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <utility>
 
 #include "renderer/embree/embree_device.h"
 #include "renderer/embree/embree_ray.h"
@@ -12,23 +14,11 @@
 #include "renderer/math/box_corner.h"
 
 namespace isotrace {
-namespace {
-
-void set_instance_transform(RTCGeometry instance, const Transform& to_world) {
-    float row_major[12];
-    const auto& m = to_world.matrix();
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 4; ++j) row_major[i * 4 + j] = float(m[i][j]);
-    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, row_major);
-}
-
-}  // namespace
-
 RenderScene::RenderScene() : scene_(rtcNewScene(embree_device())) { check_embree("creating the scene"); }
 
 RenderScene::~RenderScene() {
-    for (RTCScene child : instance_scenes_) rtcReleaseScene(child);
-    rtcReleaseScene(scene_);
+    rtcReleaseScene(scene_);  // first: its geometries refer to the shape scenes
+    for (RTCScene child : shape_scenes_) rtcReleaseScene(child);
 }
 
 const Material* RenderScene::add_material(const std::string& name, std::unique_ptr<Material> material) {
@@ -48,79 +38,158 @@ std::vector<std::string> RenderScene::material_names() const {
     return names;
 }
 
-void RenderScene::add_object(SceneObject object) { objects_.push_back(std::move(object)); }
-
-void RenderScene::add_placement(SceneObject object) {
-    placed_shapes_.insert(object.shape.get());
+void RenderScene::add_object(SceneObject object) {
+    id_ranges_.push_back({next_id_++, std::uint32_t(objects_.size()), false});
     objects_.push_back(std::move(object));
+}
+
+void RenderScene::add_placements(Placements placements) {
+    std::vector<const SceneObject*> variants;
+    for (SceneObject& variant : placements.variants) {
+        placement_variants_.push_back(std::move(variant));
+        variants.push_back(&placement_variants_.back());
+    }
+    const auto count = std::uint32_t(placements.records.size());
+    placed_.push_back(std::make_unique<PlacementArray>(std::move(placements.shape), std::move(variants),
+                                                       std::move(placements.records), std::move(placements.names)));
+    id_ranges_.push_back({next_id_, std::uint32_t(placed_.size() - 1), true});
+    next_id_ += count;
+}
+
+SceneObject RenderScene::object(std::uint32_t id) const {
+    const auto after =
+        std::upper_bound(id_ranges_.begin(), id_ranges_.end(), id,
+                         [](std::uint32_t wanted, const IdRange& range) { return wanted < range.first_id; });
+    const IdRange& range = *std::prev(after);
+    return range.placed ? placed_[range.index]->copy(id - range.first_id) : objects_[range.index];
 }
 
 void RenderScene::add_light(std::unique_ptr<Light> light) { lights_.push_back(std::move(light)); }
 
-RTCScene RenderScene::new_instanced_scene(RTCGeometry geometry) {
+RTCScene RenderScene::new_shape_scene(RTCGeometry geometry) {
     RTCScene child = rtcNewScene(embree_device());
-    instance_scenes_.push_back(child);
+    shape_scenes_.push_back(child);
     rtcAttachGeometry(child, geometry);
     rtcReleaseGeometry(geometry);
     rtcCommitScene(child);
     return child;
 }
 
+void RenderScene::attach(RTCGeometry geometry, const TracedGeometry& traced, const std::string& name) {
+    const unsigned id = rtcAttachGeometry(scene_, geometry);
+    rtcReleaseGeometry(geometry);
+    if (traced_.size() <= id) traced_.resize(id + 1);
+    traced_[id] = traced;
+    check_embree("adding object \"" + name + "\"");
+}
+
+namespace {
+
+std::size_t object_record_bytes(const SceneObject& object) {
+    return sizeof(SceneObject) + (object.name.capacity() > std::string().capacity() ? object.name.capacity() : 0) +
+           object.part_materials.capacity() * sizeof(const Material*);
+}
+
+}  // namespace
+
 void RenderScene::commit() {
     const auto start = std::chrono::steady_clock::now();
     const std::int64_t bytes_before = embree_bytes_in_use();
     RTCDevice device = embree_device();
+    const auto count_shape = [&](const Shape& shape) {
+        build_statistics_.primitives_by_type[shape.type_name()] += shape.primitive_count();
+        build_statistics_.shape_bytes += shape.memory_bytes();
+    };
+    // The arrays of placements, with the scenes of their shapes, traced after the objects in world space.
+    struct Traced {
+        PlacementArray* array;
+        RTCScene shape_scene;
+        std::uint32_t first_id;
+    };
+    std::vector<Traced> arrays;
     std::unordered_map<const Shape*, RTCScene> scene_of_placed_shape;
-    for (std::size_t index = 0; index < objects_.size(); ++index) {
-        SceneObject& object = objects_[index];
-        Shape& shape = *object.shape;
-        const bool placed = placed_shapes_.count(&shape) > 0;
-        const auto built = scene_of_placed_shape.find(&shape);
-        const bool first_use = built == scene_of_placed_shape.end();
-        object.counter_slot = counters::geometry_type_slot(shape.type_name(), shape.counts_intersection_tests());
-        build_statistics_.object_bytes += sizeof(SceneObject) + (object.name.capacity() > std::string().capacity() ? object.name.capacity() : 0) +
-                                          object.part_materials.capacity() * sizeof(const Material*);
-        if (first_use) {
-            build_statistics_.primitives_by_type[shape.type_name()] += shape.primitive_count();
-            build_statistics_.shape_bytes += shape.memory_bytes();
+    for (const IdRange& range : id_ranges_) {
+        if (range.placed) {
+            PlacementArray& array = *placed_[range.index];
+            Shape& shape = array.shape();
+            auto [built, first_use] = scene_of_placed_shape.try_emplace(&shape, nullptr);
+            if (first_use) {  // a placed shape is named after its definition, and stays in its own space
+                count_shape(shape);
+                RTCGeometry geometry = shape.create_geometry(device);
+                check_embree("building the shape of \"" + shape.object_name() + "\"");
+                built->second = new_shape_scene(geometry);
+                ++build_statistics_.placed_shapes;
+            }
+            arrays.push_back({&array, built->second, range.first_id});
+            build_statistics_.placements += array.size();
+            continue;
         }
-        // A shared shape stays in its own space: baking it would move every placement.
-        object.instanced = placed || !shape.can_bake(object.to_world);
+        SceneObject& object = objects_[range.index];
+        Shape& shape = *object.shape;
+        object.counter_slot = counters::geometry_type_slot(shape.type_name(), shape.counts_intersection_tests());
+        build_statistics_.object_bytes += object_record_bytes(object);
+        count_shape(shape);
+        object.instanced = !shape.can_bake(object.to_world);
         if (!object.instanced) shape.bake(object.to_world);
         object.hit_shading = shape.hit_shading();
-        RTCGeometry geometry = nullptr;
-        RTCScene child = first_use ? nullptr : built->second;
-        if (!child) {
-            if (!placed) shape.set_object_name(object.name);  // a placed shape is named after its definition
-            geometry = shape.create_geometry(device);
-            check_embree("building object \"" + object.name + "\"");
+        shape.set_object_name(object.name);
+        RTCGeometry geometry = shape.create_geometry(device);
+        check_embree("building object \"" + object.name + "\"");
+        if (!object.instanced) {
+            attach(geometry, {&object, nullptr, range.first_id}, object.name);
+            continue;
         }
-        if (object.instanced) {
-            if (!child) {
-                child = new_instanced_scene(geometry);
-                if (placed) {
-                    scene_of_placed_shape.emplace(&shape, child);
-                    ++build_statistics_.placed_shapes;
-                }
-            }
-            geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-            rtcSetGeometryInstancedScene(geometry, child);
-            set_instance_transform(geometry, object.to_world);
-            rtcCommitGeometry(geometry);
-            ++build_statistics_.instanced_objects;
-            build_statistics_.placements += placed;
+        // Traced in its own space as a placement is, so that both give the same hits.
+        const std::optional<PlacementRecord> record = placement_record(object.to_world, 0);
+        if (!record)
+            throw std::runtime_error("object \"" + object.name + "\": its transform is singular in single precision");
+        single_placements_.push_back(std::make_unique<PlacementArray>(
+            object.shape, std::vector{&std::as_const(object)}, std::vector{*record},
+            PlacementNames{object.name, "", {}}));
+        arrays.push_back({single_placements_.back().get(), new_shape_scene(geometry), range.first_id});
+    }
+    if (!arrays.empty()) {
+        // The placements' own scene. Many placements are built by Embree's quicker builder, whose BVH costs a fifth
+        // of the default one's per placement but is looser; a few by the default one, which traces them faster
+        // (docs/decisions.md, "Instances: one shape, many placements"). One instance, with no transform, puts the
+        // scene in the scene. Its geometries take ids after the scene's own, so that a hit's geomID says which it is.
+        RTCScene placements = rtcNewScene(device);
+        shape_scenes_.push_back(placements);
+        std::size_t count = 0;
+        for (const Traced& traced : arrays) count += traced.array->size();
+        rtcSetSceneBuildQuality(placements, count >= kPlacementsBuiltCompactly ? RTC_BUILD_QUALITY_LOW
+                                                                                : RTC_BUILD_QUALITY_MEDIUM);
+        const auto instance_id = unsigned(traced_.size());
+        traced_.emplace_back();  // the instance: hits on it are hits on its placements
+        for (const Traced& traced : arrays) {
+            traced_.push_back({nullptr, traced.array, traced.first_id});
+            RTCGeometry geometry = traced.array->create_geometry(device, traced.shape_scene);
+            rtcAttachGeometryByID(placements, geometry, unsigned(traced_.size() - 1));
+            rtcReleaseGeometry(geometry);
+            check_embree("adding the placements of \"" + traced.array->names().object + "\"");
+            build_statistics_.instanced_objects += traced.array->size();
+            build_statistics_.object_bytes += traced.array->memory_bytes();
         }
-        const unsigned id = rtcAttachGeometry(scene_, geometry);
-        rtcReleaseGeometry(geometry);
-        if (object_of_geometry_.size() <= id) object_of_geometry_.resize(id + 1);
-        object_of_geometry_[id] = std::uint32_t(index);
-        check_embree("adding object \"" + object.name + "\"");
+        rtcCommitScene(placements);
+        RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(instance, placements);
+        rtcCommitGeometry(instance);
+        rtcAttachGeometryByID(scene_, instance, instance_id);
+        rtcReleaseGeometry(instance);
+        check_embree("adding the placements");
+    }
+    for (SceneObject& variant : placement_variants_) {
+        const Shape& shape = *variant.shape;
+        variant.instanced = true;
+        variant.hit_shading = shape.hit_shading();
+        variant.counter_slot = counters::geometry_type_slot(shape.type_name(), shape.counts_intersection_tests());
+        build_statistics_.object_bytes += object_record_bytes(variant);
     }
     rtcCommitScene(scene_);
     check_embree("building the scene BVH");
     build_lights();
     describe_flat_lambertian();
-    build_statistics_.objects = objects_.size();
+    build_statistics_.objects = next_id_;
     build_statistics_.embree_bytes = embree_bytes_in_use() - bytes_before;
     build_statistics_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -146,9 +215,11 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     rtcIntersect1(scene_, &context.embree, &query);
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
 
-    const bool via_instance = query.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
-    const std::uint32_t object_index = object_of_geometry_[via_instance ? query.hit.instID[0] : query.hit.geomID];
-    const SceneObject& object = objects_[object_index];
+    // A placement array's hit names the placement in instID[0] (PlacementArray::intersect).
+    const TracedGeometry& traced = traced_[query.hit.geomID];
+    const std::uint32_t placement = traced.placements ? query.hit.instID[0] : 0;
+    const SceneObject& object = traced.placements ? traced.placements->variant_of(placement) : *traced.object;
+    const std::uint32_t object_index = traced.id + placement;
     counters::count_closest_hit(object.counter_slot);
 
     // The normal is read a float at a time, and the result is built once from registers rather than in pieces on
@@ -156,10 +227,11 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const float t = query.ray.tfar;
     const Vec3f embree_ng =
         safe_normalize(Vec3f(alone(query.hit.Ng_x), alone(query.hit.Ng_y), alone(query.hit.Ng_z)), {0, 0, 1});
+    const Transform to_world = traced.placements ? traced.placements->to_world(placement) : object.to_world;
     const auto shape_shading = [&] {
         // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
         const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
-        const Vec3d local_point = object.instanced ? object.to_world.inverse_point(world_point) : world_point;
+        const Vec3d local_point = object.instanced ? to_world.inverse_point(world_point) : world_point;
         return object.shape->shading(query.hit, embree_ng, local_point);
     };
     const LocalShading local =
@@ -168,11 +240,11 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
             : shading_of_embree_hit(query.hit, embree_ng, object.hit_shading == HitShading::EmbreeHitSwappedUv);
     Vec3f geometric_normal = local.geometric_normal, shading_normal = local.normal;
     Vec3f dpdu = local.dpdu, dpdv = local.dpdv;
-    if (object.instanced) {  // Embree reports Ng in the instanced object's space
-        geometric_normal = safe_normalize(object.to_world.normal(local.geometric_normal), local.geometric_normal);
-        shading_normal = safe_normalize(object.to_world.normal(local.normal), geometric_normal);
-        dpdu = object.to_world.vector(dpdu);
-        dpdv = object.to_world.vector(dpdv);
+    if (object.instanced) {  // the hit's Ng is in the shape's space
+        geometric_normal = safe_normalize(to_world.normal(local.geometric_normal), local.geometric_normal);
+        shading_normal = safe_normalize(to_world.normal(local.normal), geometric_normal);
+        dpdu = to_world.vector(dpdu);
+        dpdv = to_world.vector(dpdv);
     }
     if (dot(shading_normal, geometric_normal) < 0) shading_normal = -shading_normal;
     const Vec3f position = ray.at(t);
@@ -191,6 +263,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
                    .dpdv = dpdv,
                    .footprint = ray.cone_width + ray.cone_spread * t * length(ray.direction),
                    .object = &object,
+                   .to_world = to_world,
                    .blend = local.blend};
     if (hit.material) hit.material->perturb_normal(hit);
     return hit;
@@ -239,7 +312,7 @@ void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query,
     }
     for (int lane = 0; lane < 8; ++lane)
         if (valid[lane] && query.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID)
-            counters::count_closest_hit(objects_[object_of_geometry_[query.hit.geomID[lane]]].counter_slot);
+            counters::count_closest_hit(traced_[query.hit.geomID[lane]].object->counter_slot);
 }
 
 void RenderScene::occluded_packet(const std::int32_t* valid, RTCRay8& query) const {
@@ -260,13 +333,14 @@ void RenderScene::describe_flat_lambertian() {
         if (!point) return;
         flat.lights.push_back(*point);
     }
-    flat.reflectance_of_geometry.resize(object_of_geometry_.size());
+    flat.reflectance_of_geometry.resize(traced_.size());
     flat.counter_slot = objects_.empty() ? -1 : objects_[0].counter_slot;
-    for (std::size_t id = 0; id < object_of_geometry_.size(); ++id) {
-        const SceneObject& object = objects_[object_of_geometry_[id]];
+    for (std::size_t id = 0; id < traced_.size(); ++id) {
+        if (!traced_[id].object) return;  // placements
+        const SceneObject& object = *traced_[id].object;
         // Embree-hit shading has no parts: its material is that of part 0.
         const Material* material = object.material_of_part(0);
-        if (object.instanced || object.hit_shading == HitShading::Computed || !material) return;
+        if (object.hit_shading == HitShading::Computed || !material) return;
         const std::optional<Rgb> reflectance = material->constant_lambertian_reflectance();
         if (!reflectance) return;
         flat.reflectance_of_geometry[id] = *reflectance;
@@ -277,12 +351,15 @@ void RenderScene::describe_flat_lambertian() {
 }
 
 void RenderScene::build_lights() {
-    for (SceneObject& object : objects_) {
-        // Emission found by rays: every emissive material, also per-part ones and those of unsampled emitters.
+    // Emission found by rays: every emissive material, also per-part ones and those of unsampled emitters.
+    const auto note_emission = [&](const SceneObject& object) {
         if (object.material && object.material->is_emissive()) emission_can_be_hit_ = true;
         for (const Material* part : object.part_materials)
             if (part && part->is_emissive()) emission_can_be_hit_ = true;
-        if (!object.material || !object.material->is_emissive()) continue;
+        return object.material && object.material->is_emissive();
+    };
+    for (SceneObject& object : objects_) {
+        if (!note_emission(object)) continue;
         if (object.instanced || !object.shape->supports_surface_sampling()) {
             ++build_statistics_.unsampled_emitters;
             continue;
@@ -291,6 +368,9 @@ void RenderScene::build_lights() {
         object.area_light = lights_.back().get();
         ++build_statistics_.area_lights;
     }
+    for (const auto& array : placed_)
+        for (std::uint32_t placement = 0; placement < array->size(); ++placement)
+            build_statistics_.unsampled_emitters += note_emission(array->variant_of(placement));
     const Bounds3f scene_bounds = bounds();
     std::vector<float> powers;
     for (const auto& light : lights_) {
@@ -323,6 +403,7 @@ float RenderScene::light_probability(const Light* light) const {
 Bounds3f RenderScene::bounds() const {
     bool unbounded = false;
     for (const SceneObject& object : objects_) unbounded = unbounded || object.shape->is_unbounded();
+    for (const auto& array : placed_) unbounded = unbounded || array->shape().is_unbounded();
     Bounds3f result;
     if (!unbounded) {
         RTCBounds b;
@@ -333,14 +414,20 @@ Bounds3f RenderScene::bounds() const {
     }
     // Embree's box then reaches the world's edge: the extent is that of the other objects' own bounds, or a metre
     // around the origin when there are none (lights at infinity need some extent to weigh their power by).
-    for (const SceneObject& object : objects_) {
-        const Bounds3f own = object.shape->bounds();
-        if (object.shape->is_unbounded() || own.empty()) continue;
+    const auto extend = [&](const Shape& shape, const Transform* to_world) {
+        const Bounds3f own = shape.bounds();
+        if (shape.is_unbounded() || own.empty()) return;
         for (int corner = 0; corner < 8; ++corner) {
             const Vec3d p = box_corner(Vec3d(own.lower), Vec3d(own.upper), corner);
-            result.extend(Vec3f(object.instanced ? object.to_world.point(p) : p));
+            result.extend(Vec3f(to_world ? to_world->point(p) : p));
         }
-    }
+    };
+    for (const SceneObject& object : objects_) extend(*object.shape, object.instanced ? &object.to_world : nullptr);
+    for (const auto& array : placed_)
+        for (std::uint32_t placement = 0; placement < array->size(); ++placement) {
+            const Transform to_world = array->to_world(placement);
+            extend(array->shape(), &to_world);
+        }
     if (result.empty()) {
         result.extend({-1, -1, -1});
         result.extend({1, 1, 1});

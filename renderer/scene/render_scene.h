@@ -3,13 +3,13 @@
 // Embree scene that holds their geometry; answers nearest-hit and occlusion queries.
 #include <embree3/rtcore.h>
 
+#include <deque>
 #include <limits>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "renderer/core/ray.h"
@@ -23,23 +23,35 @@
 #include "renderer/plugin/shape.h"
 #include "renderer/plugin/surface_hit.h"
 #include "renderer/sampling/distribution_1d.h"
+#include "renderer/scene/placement_array.h"
 
 namespace isotrace {
 
 struct BuildStatistics {
     double seconds = 0;
     std::size_t objects = 0;
-    std::size_t instanced_objects = 0;  // in an Embree instance: placements, and objects whose transform cannot bake
-    std::size_t placements = 0;         // objects that place a definition's shape (add_placement)
+    // Traced in their shape's space: placements, and objects whose transform cannot bake.
+    std::size_t instanced_objects = 0;
+    std::size_t placements = 0;         // copies of a definition's shapes (add_placements)
     std::size_t placed_shapes = 0;      // the shapes they share, each built once
     std::map<std::string, std::size_t> primitives_by_type;  // each shape counted once, however often placed
     std::int64_t embree_bytes = 0;
     std::size_t shape_bytes = 0;  // what the shapes keep besides Embree's buffers and BVHs, each shape once
-    std::size_t object_bytes = 0;  // what the scene keeps per object (SceneObject, its name and part materials)
+    std::size_t object_bytes = 0;  // what the scene keeps per object (SceneObject, its name and part materials; a
+                                   // placement's record)
     std::size_t area_lights = 0;
     // Emissive objects that light sampling cannot reach (instanced, or shapes without surface sampling):
     // they still emit when BSDF sampling hits them.
     std::size_t unsampled_emitters = 0;
+};
+
+// The copies of one shape that an instancing object places (renderer/scene/scene_definitions.h), as
+// RenderScene::add_placements takes them.
+struct Placements {
+    std::shared_ptr<Shape> shape;         // shared with other placements of the same definition
+    std::vector<SceneObject> variants;    // the materials the copies show; shape set, to_world identity, no name
+    std::vector<PlacementRecord> records;  // one per copy
+    PlacementNames names;
 };
 
 // One light chosen for next-event estimation, with the probability of choosing it.
@@ -60,6 +72,10 @@ struct FlatLambertianScene {
 
 class RenderScene {
 public:
+    // From this many placements on, their BVH is built for memory rather than speed (RTC_BUILD_QUALITY_LOW: about 24
+    // bytes per placement instead of 120, and about 6 % slower to trace).
+    static constexpr std::size_t kPlacementsBuiltCompactly = 4096;
+
     RenderScene();
     ~RenderScene();
     RenderScene(const RenderScene&) = delete;
@@ -70,10 +86,10 @@ public:
     const Material* find_material(const std::string& name) const;
     std::vector<std::string> material_names() const;
     void add_object(SceneObject object);
-    // An object that places a shape shared with other placements (a definition's, renderer/scene/scene_definitions.h):
-    // the shape stays in its own space, built once into one Embree scene, and each placement is an Embree instance
-    // of it. Emissive placements are not sampled by lights (BuildStatistics::unsampled_emitters).
-    void add_placement(SceneObject object);
+    // Copies of a shape shared with other placements (a definition's, renderer/scene/scene_definitions.h): the shape
+    // stays in its own space, built once into one Embree scene, and the copies are the primitives of one
+    // PlacementArray. Emissive placements are not sampled by lights (BuildStatistics::unsampled_emitters).
+    void add_placements(Placements placements);
     void add_light(std::unique_ptr<Light> light);
 
     // Builds the Embree BVHs. Throws std::runtime_error on Embree errors.
@@ -117,9 +133,14 @@ public:
     void intersect_packet(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const;
     void occluded_packet(const std::int32_t* valid, RTCRay8& query) const;
 
+    // The objects written with a shape of their own (add_object), in the order added; placements are not among them.
     const std::vector<SceneObject>& objects() const { return objects_; }
-    // The index in objects() of the object Embree knows as top-level geometry `id`.
-    std::uint32_t object_of_geometry(unsigned id) const { return object_of_geometry_[id]; }
+    // Every object, placements included, by the id that hits report (SurfaceHit::object_index): ids follow the order
+    // objects and placements were added. object(id) is a copy (for tools and tests, not for every ray).
+    std::uint32_t object_count() const { return next_id_; }
+    SceneObject object(std::uint32_t id) const;
+    // The id of the object Embree knows as top-level geometry `id`, for scenes without placements.
+    std::uint32_t object_of_geometry(unsigned id) const { return traced_[id].id; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
     const BuildStatistics& build_statistics() const { return build_statistics_; }
     // The scene's extent: Embree's bounds of the whole scene, without unbounded shapes (Shape::is_unbounded) when
@@ -130,11 +151,28 @@ public:
     static void count_untraceable_rays(std::uint64_t count);
 
 private:
+    // What a top-level Embree geometry is: an object of objects_ traced in world space, or an array of placements.
+    struct TracedGeometry {
+        const SceneObject* object = nullptr;
+        const PlacementArray* placements = nullptr;
+        std::uint32_t id = 0;  // the object's id; the first placement's for an array
+    };
+    // The ids of an object of objects_ (one) or of an array of placed_ (one per placement), in the order added.
+    struct IdRange {
+        std::uint32_t first_id = 0;
+        std::uint32_t index = 0;  // in objects_ or placed_
+        bool placed = false;
+    };
+
     RTCScene scene_ = nullptr;
-    std::vector<RTCScene> instance_scenes_;
-    std::unordered_set<const Shape*> placed_shapes_;  // the shapes of add_placement
+    std::vector<RTCScene> shape_scenes_;  // the Embree scenes that placement arrays trace in, and theirs
     std::vector<SceneObject> objects_;
-    std::vector<std::uint32_t> object_of_geometry_;  // top-level geometry id -> object index
+    std::deque<SceneObject> placement_variants_;         // the objects that placements show (stable addresses)
+    std::vector<std::unique_ptr<PlacementArray>> placed_;  // add_placements' arrays, in the order added
+    std::vector<std::unique_ptr<PlacementArray>> single_placements_;  // objects whose transform cannot bake
+    std::vector<TracedGeometry> traced_;  // by top-level geometry id
+    std::vector<IdRange> id_ranges_;      // by increasing first_id
+    std::uint32_t next_id_ = 0;
     std::map<std::string, std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Light>> lights_;  // scene-file lights, then area lights
     std::vector<const Light*> all_lights_;
@@ -148,7 +186,8 @@ private:
     // The buffers of queries that reach solids (CSG, superquadrics, ...), lent to them through QueryContext.
     mutable QueryScratchPool scratch_pool_;
 
-    RTCScene new_instanced_scene(RTCGeometry geometry);
+    RTCScene new_shape_scene(RTCGeometry geometry);
+    void attach(RTCGeometry geometry, const TracedGeometry& traced, const std::string& name);
     void build_lights();
     void describe_flat_lambertian();
 };

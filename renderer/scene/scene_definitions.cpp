@@ -1,6 +1,7 @@
 #include "renderer/scene/scene_definitions.h"
 
 #include <algorithm>
+#include <map>
 
 #include "renderer/core/did_you_mean.h"
 #include "renderer/params/transform_parser.h"
@@ -11,11 +12,40 @@
 namespace isotrace {
 namespace {
 
+const char* const kShapeAndInstance = "an object has a \"shape\" or places an \"instance\", not both";
+
 std::string chain_text(const std::vector<std::string>& chain, const std::string& last) {
     std::string text;
     for (const std::string& name : chain) text += name + " -> ";
     return text + last;
 }
+
+// A copy of `part` with its materials: the part's own, or `override`, which paints the whole copy (the parts' own
+// materials give way). `name` is the copy's, for messages.
+SceneObject painted(const SceneObject& part, const Material* override, const std::string& name) {
+    SceneObject copy;
+    copy.name = name;
+    copy.shape = part.shape;
+    if (override) {
+        copy.material = override;
+        check_texture_needs(copy);
+    } else {
+        copy.material = part.material;
+        copy.part_materials = part.part_materials;
+        copy.blended_material = part.blended_material;
+    }
+    return copy;
+}
+
+// Where `part` goes at `placement`; fails at the placement when that lies beyond the world.
+Transform placed_part(const SceneNode& node, const Placement& placement, const SceneObject& part) {
+    Transform to_world = placement.to_world * part.to_world;
+    if (!placed_within_world(*part.shape, to_world))
+        fail_at_placement(node, placement, beyond_world_problem("the shape, transformed,"));
+    return to_world;
+}
+
+std::string part_suffix(const SceneObject& part) { return part.name.empty() ? "" : "/" + part.name; }
 
 }  // namespace
 
@@ -30,32 +60,36 @@ SceneDefinitions::SceneDefinitions(std::optional<SceneNode> definitions, const S
     }
 }
 
-void SceneDefinitions::place(const SceneNode& node, const std::string& name,
-                             const std::function<void(SceneObject)>& sink) {
-    if (node.has("shape")) node.fail_at("shape", "an object has a \"shape\" or places an \"instance\", not both");
+void SceneDefinitions::place(const SceneNode& node, const std::string& name) {
     const std::vector<SceneObject>& parts = parts_of(node);
-    for (const Placement& placement : read_placements(node, name, parts.size(), scene_)) {
-        for (const SceneObject& part : parts) {
-            SceneObject placed;
-            placed.name = part.name.empty() ? placement.name : placement.name + "/" + part.name;
-            placed.shape = part.shape;
-            placed.to_world = placement.to_world * part.to_world;
-            if (placement.material) {  // the override paints the whole copy: the parts' own materials give way
-                placed.material = placement.material;
-                check_texture_needs(placed);
-            } else {
-                placed.material = part.material;
-                placed.part_materials = part.part_materials;
-                placed.blended_material = part.blended_material;
-            }
-            if (!placed_within_world(*placed.shape, placed.to_world))
-                fail_at_placement(node, placement, beyond_world_problem("the shape, transformed,"));
-            sink(std::move(placed));
+    const std::vector<Placement> placements = read_placements(node, name, parts.size(), scene_);
+    // Part by part: each part's copies are one array of placements.
+    for (const SceneObject& part : parts) {
+        Placements copies;
+        copies.shape = part.shape;
+        copies.names.object = name;
+        copies.names.part_suffix = part_suffix(part);
+        copies.records.reserve(placements.size());
+        std::map<const Material*, std::uint32_t> variant_of_override;
+        for (std::size_t i = 0; i < placements.size(); ++i) {
+            const Placement& placement = placements[i];
+            const Transform to_world = placed_part(node, placement, part);
+            const auto [variant, added] =
+                variant_of_override.try_emplace(placement.material, std::uint32_t(copies.variants.size()));
+            if (added)
+                copies.variants.push_back(painted(part, placement.material, placement.name + copies.names.part_suffix));
+            const std::optional<PlacementRecord> record = placement_record(to_world, variant->second);
+            if (!record) fail_at_placement(node, placement, kSingularInSinglePrecision);
+            copies.records.push_back(*record);
+            if (placement.name != copies.names.default_name(std::uint32_t(i)))
+                copies.names.own.emplace_back(std::uint32_t(i), placement.name);
         }
+        scene_.add_placements(std::move(copies));
     }
 }
 
 const std::vector<SceneObject>& SceneDefinitions::parts_of(const SceneNode& node) {
+    if (node.has("shape")) node.fail_at("shape", kShapeAndInstance);
     const auto reference = node.optional_value("instance");
     if (!reference->json().is_string()) reference->fail("expected the name of a definition");
     const std::string& name = reference->json().string;
@@ -102,11 +136,16 @@ std::vector<SceneObject> SceneDefinitions::build(const std::string& name, const 
             add_shape(member, member_name);
             continue;
         }
-        place(member, member_name, [&](SceneObject placed) {
-            if (parts.size() >= kMaxPlacedObjects)
-                member.fail("the group \"" + name + "\" has more than " + std::to_string(kMaxPlacedObjects) + " parts");
-            parts.push_back(std::move(placed));
-        });
+        const std::vector<SceneObject>& inner = parts_of(member);
+        for (const Placement& placement : read_placements(member, member_name, inner.size(), scene_))
+            for (const SceneObject& part : inner) {
+                if (parts.size() >= kMaxPlacedObjects)
+                    member.fail("the group \"" + name + "\" has more than " + std::to_string(kMaxPlacedObjects) +
+                                " parts");
+                SceneObject placed = painted(part, placement.material, placement.name + part_suffix(part));
+                placed.to_world = placed_part(member, placement, part);
+                parts.push_back(std::move(placed));
+            }
         member.finish();
     }
     definition.finish();

@@ -1,8 +1,7 @@
 #pragma once
 // SceneDefinitions: the scene's "definitions" — named shapes and groups of objects that instancing objects place
 // many times (docs/scene-format.md, "Instances"). A definition is read on its first use and its shapes are built
-// once: every placement shares them, in Embree instances of one scene per shape (RenderScene::add_placement).
-#include <functional>
+// once: every placement shares them, each part's copies one array of placements (RenderScene::add_placements).
 #include <map>
 #include <optional>
 #include <string>
@@ -23,9 +22,9 @@ public:
     // `definitions`: the scene's "definitions" object, when it has one.
     SceneDefinitions(std::optional<SceneNode> definitions, const SceneOverrides& overrides, RenderScene& scene);
 
-    // Gives `sink` every object that the instancing object `node` (one with "instance") places, in world space (up
-    // to the object's own parent), named after `name`. Fails at the position of what is wrong.
-    void place(const SceneNode& node, const std::string& name, const std::function<void(SceneObject)>& sink);
+    // Adds to the scene the copies that the top-level instancing object `node` (one with "instance") places, named
+    // after `name`: for each part of its definition, one array of placements. Fails at the position of what is wrong.
+    void place(const SceneNode& node, const std::string& name);
 
 private:
     struct Definition {

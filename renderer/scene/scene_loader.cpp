@@ -138,12 +138,14 @@ void load_content(const SceneNode& root, const SceneOverrides& overrides, Render
         const SceneNode& node = objects[i];
         const std::string name = node.string_or("name", "objects[" + std::to_string(i) + "]");
         if (node.has("instance")) {
-            definitions.place(node, name, [&](SceneObject placed) { scene.add_placement(std::move(placed)); });
+            definitions.place(node, name);
         } else {
             SceneObject object = build_shaped_object(node, name, overrides, scene);
             object.to_world = parse_optional_transform(node, "transform");
             if (!placed_within_world(*object.shape, object.to_world))
                 node.fail_at("transform", beyond_world_problem("the shape, transformed,"));
+            // A shape that cannot bake its transform is traced as a placement (RenderScene::commit).
+            if (!placement_record(object.to_world, 0)) node.fail_at("transform", kSingularInSinglePrecision);
             scene.add_object(std::move(object));
         }
         node.finish();

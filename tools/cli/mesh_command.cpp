@@ -43,7 +43,7 @@ struct MeshArguments {
 };
 
 struct ObjectField {
-    const SceneObject* object;
+    SceneObject object;
     std::unique_ptr<ImplicitField> field;
 };
 
@@ -52,7 +52,8 @@ struct ObjectField {
 ObjectField only_implicit_object(const RenderScene& scene, const std::string& file) {
     std::vector<ObjectField> implicit;
     std::vector<std::string> names;
-    for (const SceneObject& object : scene.objects()) {
+    for (std::uint32_t id = 0; id < scene.object_count(); ++id) {
+        SceneObject object = scene.object(id);
         std::unique_ptr<ImplicitField> field;
         try {
             field = object.shape->implicit_field();
@@ -60,12 +61,13 @@ ObjectField only_implicit_object(const RenderScene& scene, const std::string& fi
             continue;  // an open mesh, say: no inside to mesh
         }
         if (!field) continue;
-        implicit.push_back({&object, std::move(field)});
         names.push_back(object.name);
+        implicit.push_back({std::move(object), std::move(field)});
     }
     if (implicit.size() == 1) {
-        const SceneObject& object = *implicit.front().object;
-        return {&object, placed(object, std::move(implicit.front().field))};
+        ObjectField& only = implicit.front();
+        only.field = placed(only.object, std::move(only.field));
+        return std::move(only);
     }
     throw InputError({}, "--object",
                      implicit.empty() ? file + " has no object with an implicit surface"
@@ -109,8 +111,8 @@ int run_mesh(const MeshArguments& args) {
     const std::unique_ptr<LoadedScene> scene = load_scene(args.scene, overrides);
     check_output_paths({{args.output, "--output"}}, scene_inputs(*scene));
     ObjectField chosen = args.object.empty() ? only_implicit_object(*scene->scene, args.scene)
-                                             : ObjectField{&find_object(*scene->scene, args.object, args.scene), nullptr};
-    const SceneObject& object = *chosen.object;
+                                             : ObjectField{find_object(*scene->scene, args.object, args.scene), nullptr};
+    const SceneObject& object = chosen.object;
     if (traced) {
         const auto* triangles = dynamic_cast<const TriangleMeshShape*>(object.shape.get());
         if (!triangles)

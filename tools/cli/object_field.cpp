@@ -14,9 +14,10 @@ std::string joined_names(const std::vector<std::string>& names) {
     return list;
 }
 
-const SceneObject& find_object(const RenderScene& scene, const std::string& name, const std::string& file) {
+SceneObject find_object(const RenderScene& scene, const std::string& name, const std::string& file) {
     std::vector<std::string> names;
-    for (const SceneObject& object : scene.objects()) {
+    for (std::uint32_t id = 0; id < scene.object_count(); ++id) {
+        SceneObject object = scene.object(id);
         if (object.name == name) return object;
         names.push_back(object.name);
     }

@@ -12,9 +12,9 @@ namespace isotrace::cli {
 // "a, b, c": names for an error message.
 std::string joined_names(const std::vector<std::string>& names);
 
-// The object called `name` in the scene read from `file`; throws InputError naming --object (with the names
-// there are) when there is none.
-const SceneObject& find_object(const RenderScene& scene, const std::string& name, const std::string& file);
+// The object (or placed copy) called `name` in the scene read from `file`; throws InputError naming --object (with
+// the names there are) when there is none.
+SceneObject find_object(const RenderScene& scene, const std::string& name, const std::string& file);
 
 // An object's field in world space (an instanced object's shape is in object space).
 std::unique_ptr<ImplicitField> placed(const SceneObject& object, std::unique_ptr<ImplicitField> field);

@@ -30,7 +30,8 @@ Vec3f light_above(const Bounds3f& bounds, const std::string& scene) {
 // move whenever that changes, and two builds would not time the same rays.
 Bounds3f content_bounds(const RenderScene& scene) {
     Bounds3f bounds;
-    for (const SceneObject& object : scene.objects()) {
+    for (std::uint32_t id = 0; id < scene.object_count(); ++id) {
+        const SceneObject object = scene.object(id);
         Bounds3f own = object.shape->bounds();
         if (own.empty()) continue;
         if (object.instanced) own = transformed_bounds(Vec3d(own.lower), Vec3d(own.upper), object.to_world);
