@@ -28,6 +28,10 @@ struct Crossing {
     bool entering;  // g goes from ≥ 0 (outside) to < 0 (inside)
     // The bracket it was found in (lo ≤ t ≤ hi); a search that does not refine reports its midpoint as t.
     double lo = t, hi = t;
+
+    // Whether the crossing lies in the ray's range (t_near, t_far) whatever t refining its bracket would give, up to
+    // the float t_far a hit is reported in: then an occlusion query is settled without refining it.
+    bool settles_occlusion(double t_near, float t_far) const { return lo > t_near && float(hi) < t_far; }
 };
 
 // Whether the search locates each crossing to a few ulps or only reports the bracket that holds it (enough for a

@@ -142,8 +142,7 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::surface_in_cell(std::uint32
     std::optional<Hit> hit;
     search<precision>(origin, direction, a, b, g_a, work, [&](const Crossing& crossing) {
         if constexpr (precision == CrossingPrecision::Bracketed) {
-            // Within the range whatever its refined t: the same answer as refining, up to the float t_far.
-            undecided = !(crossing.lo > t_near && float(crossing.hi) < t_far);
+            undecided = !crossing.settles_occlusion(t_near, t_far);
             if (!undecided) hit = Hit{crossing.t, {}};
             return false;
         } else {

@@ -124,8 +124,7 @@ bool Superquadric::blocks(const Vec3d& origin, const Vec3d& direction, double t_
                           SuperquadricWork& work) const {
     bool blocked = false, undecided = false;
     search<CrossingPrecision::Bracketed>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
-        // Inside the range whatever its refined t: the answer refining would give, up to the float t_max.
-        undecided = !(c.lo > t_min && float(c.hi) < t_max);
+        undecided = !c.settles_occlusion(t_min, t_max);
         blocked = !undecided;
         return false;
     });
