@@ -5,8 +5,9 @@
 // whose bound excludes zero holds none and is dropped; the others are halved. A crossing bracket on which the
 // bound of g′ excludes zero holds exactly one crossing (g is strictly monotone there) and is refined at once;
 // otherwise it is halved further until it is no wider than `resolution` (so no earlier pair of crossings hides
-// in it) before it is refined. A sub-segment without a sign change on which g is proven monotone holds no
-// crossing. Refinement is the Illinois variant of regula falsi with bisection steps whenever it stalls. A
+// in it) before it is refined. A sub-segment without a sign change holds no crossing when g is proven monotone
+// on it, or when its end values and the bound of g′ leave no room to reach zero in between (a mean-value test,
+// much tighter than the interval bound on short sub-segments). Refinement is the Illinois variant of regula falsi with bisection steps whenever it stalls. A
 // sub-segment narrower than `resolution` whose bound still straddles zero without a sign change at its ends is a
 // grazing contact (two crossings closer than the resolution, or none) and is not reported — the project's rule
 // for tangent contacts (docs/decisions.md). When the caller knows that {g < 0} meets the ray in one interval (a
@@ -41,7 +42,7 @@ enum class CrossingPrecision { Refined, Bracketed };
 struct CrossingSearchWork {
     std::uint64_t interval_bounds = 0;
     std::uint64_t slope_bounds = 0;
-    std::uint64_t monotone_proofs = 0;  // sub-segments settled by the bound of g′
+    std::uint64_t slope_proofs = 0;  // sub-segments settled by the bound of g′ (monotone, or keeping their sign)
     std::uint64_t evaluations = 0;  // all point values: halvings and refinement steps
     std::uint64_t halvings = 0;
     std::uint64_t crossings = 0;    // brackets refined
@@ -92,6 +93,20 @@ double refine(double lo, double hi, double g_lo, double g_hi, const Value& value
     return 0.5 * (lo + hi);
 }
 
+// The least value g can take on [0, width] given g(0) = g_lo, g(width) = g_hi and g′ ∈ slope with slope.lo < 0 <
+// slope.hi: where the steepest descent from the left end meets the steepest ascent into the right end.
+inline double least_value(double width, double g_lo, double g_hi, Interval slope) {
+    const double x = (g_hi - g_lo - slope.hi * width) / (slope.lo - slope.hi);
+    return g_lo + slope.lo * std::clamp(x, 0.0, width);
+}
+
+// Whether g, with the same sign at both ends of a sub-segment, provably keeps it in between.
+inline bool keeps_sign(double width, double g_lo, double g_hi, Interval slope) {
+    if (!slope.is_finite()) return false;
+    if (!inside(g_lo)) return least_value(width, g_lo, g_hi, slope) > 0;
+    return -least_value(width, -g_lo, -g_hi, Interval{-slope.hi, -slope.lo}) < 0;
+}
+
 // The bracket width refinement stops at, as for regula falsi: a few ulps of t, or 10⁻¹⁵ of the first bracket.
 struct RefinementTolerance {
     double floor;
@@ -119,10 +134,13 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
     struct Segment {
         double lo, hi, g_lo, g_hi;
     };
-    const auto monotone = [&](const Segment& s) {
+    // Whether the bound of g′ settles the sub-segment: monotone, or (without a sign change) keeping its sign.
+    const auto settled_by_slope = [&](const Segment& s, bool sign_change) {
         ++work.slope_bounds;
-        const bool proven = slope(s.lo, s.hi).excludes_zero();
-        work.monotone_proofs += proven;
+        const Interval g_slope = slope(s.lo, s.hi);
+        const bool proven = g_slope.excludes_zero() ||
+                            (!sign_change && crossing_search_detail::keeps_sign(s.hi - s.lo, s.g_lo, s.g_hi, g_slope));
+        work.slope_proofs += proven;
         return proven;
     };
     constexpr int kMaxDepth = 96;
@@ -135,7 +153,7 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         const double mid = 0.5 * (s.lo + s.hi);
         const bool narrow =
             s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
-        if (sign_change && (narrow || convex || monotone(s))) {
+        if (sign_change && (narrow || convex || settled_by_slope(s, true))) {
             double t = 0.5 * (s.lo + s.hi);
             if constexpr (precision == CrossingPrecision::Refined) {
                 ++work.crossings;
@@ -153,7 +171,7 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         if (!sign_change) {
             ++work.interval_bounds;
             const Interval range = bound(s.lo, s.hi);
-            if (range.lo >= 0 || range.hi < 0 || narrow || monotone(s)) continue;
+            if (range.lo >= 0 || range.hi < 0 || narrow || settled_by_slope(s, false)) continue;
         }
         const double g_mid = value(mid);
         ++work.evaluations;

@@ -88,9 +88,41 @@ TEST(SuperquadricCrossingSearch, ABracketProvenMonotoneIsRefinedAtOnceToTheSameC
         EXPECT_EQ(fast[i].entering, slow[i].entering);
     }
     EXPECT_NEAR(fast[0].t, 0.21, 1e-14);
-    EXPECT_GT(with_slope.monotone_proofs, 0u);
-    EXPECT_EQ(without_slope.monotone_proofs, 0u);
+    EXPECT_GT(with_slope.slope_proofs, 0u);
+    EXPECT_EQ(without_slope.slope_proofs, 0u);
     EXPECT_LT(with_slope.halvings * 4, without_slope.halvings);
+}
+
+TEST(SuperquadricCrossingSearch, EndValuesAndTheSlopeBoundGiveTheLeastValueInBetween) {
+    using crossing_search_detail::keeps_sign;
+    using crossing_search_detail::least_value;
+    // |t − ½| + c on [0, 1] with g′ ∈ [−1, 1]: the least value is exactly c.
+    EXPECT_DOUBLE_EQ(least_value(1, 0.6, 0.6, {-1, 1}), 0.1);
+    EXPECT_TRUE(keeps_sign(1, 0.6, 0.6, {-1, 1}));
+    EXPECT_FALSE(keeps_sign(1, 0.45, 0.45, {-1, 1}));  // c = −0.05: it may dip inside
+    // The same mirrored: inside at both ends, provably inside between, or not.
+    EXPECT_TRUE(keeps_sign(1, -0.6, -0.6, {-1, 1}));
+    EXPECT_FALSE(keeps_sign(1, -0.45, -0.45, {-1, 1}));
+    // Uneven slopes: from 0.2 falling at most 0.1 per unit, rising into 0.9 at most 2 per unit.
+    EXPECT_GT(least_value(1, 0.2, 0.9, {-0.1, 2}), 0);
+    EXPECT_FALSE(keeps_sign(1, 0.2, 0.9, Interval::unbounded()));
+}
+
+TEST(SuperquadricCrossingSearch, AGapProvenByTheSlopeBoundIsNotHalvedDownToTheResolution) {
+    // (t − ½)² + 0.01 stays outside; its interval bound is useless on purpose, its slope bound exact. The segment
+    // around the minimum is never monotone, but its end values and slopes show it cannot reach zero.
+    const auto g = [](double t) { return (t - 0.5) * (t - 0.5) + 0.01; };
+    CrossingSearchWork work;
+    std::vector<Crossing> found;
+    search_crossings(
+        0, 1, g(0), g(1), 1e-9, false, g, [](double, double) { return Interval{-1, 2}; },
+        [](double a, double b) { return Interval{2 * (a - 0.5), 2 * (b - 0.5)}; }, work,
+        [&](const Crossing& c) {
+            found.push_back(c);
+            return true;
+        });
+    EXPECT_TRUE(found.empty());
+    EXPECT_LE(work.halvings, 4u);
 }
 
 TEST(SuperquadricCrossingSearch, ARootApproachedFromOneSideClosesTheBracketAtOnce) {

@@ -44,7 +44,7 @@ RTCGeometry IsosurfaceShape::create_geometry(RTCDevice device) {
     counter_slot_ = counters::geometry_type_slot(type_name(), true);
     work_slots_ = {counters::named_counter_slot("isosurface.interval_bounds"),
                    counters::named_counter_slot("isosurface.slope_bounds"),
-                   counters::named_counter_slot("isosurface.monotone_proofs"),
+                   counters::named_counter_slot("isosurface.slope_proofs"),
                    counters::named_counter_slot("isosurface.evaluations"),
                    counters::named_counter_slot("isosurface.halvings"),
                    counters::named_counter_slot("isosurface.refined_crossings"),
@@ -55,7 +55,7 @@ RTCGeometry IsosurfaceShape::create_geometry(RTCDevice device) {
 
 void IsosurfaceShape::record_work(const IsosurfaceWork& work) const {
     const std::array<std::uint64_t, 7> amounts{
-        work.search.interval_bounds, work.search.slope_bounds, work.search.monotone_proofs, work.search.evaluations,
+        work.search.interval_bounds, work.search.slope_bounds, work.search.slope_proofs, work.search.evaluations,
         work.search.halvings,        work.search.crossings,    work.budget_exhausted ? 1u : 0u};
     counters::add_to_named(work_slots_, amounts);
 }

@@ -104,7 +104,7 @@ private:
     double resolution_;
     std::uint64_t max_work_;
     int counter_slot_ = 0;
-    // interval bounds, slope bounds, monotone proofs, evaluations, halvings, refined crossings, budget exhausted
+    // interval bounds, slope bounds, slope proofs, evaluations, halvings, refined crossings, budget exhausted
     std::array<int, 7> work_slots_{};
 };
 

@@ -82,19 +82,26 @@ Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {
 
 namespace {
 
-// The range of a/‖(a, b)‖_p = 1/‖(1, b/a)‖_p (in [0, 1], decreasing in b/a) for a, b ≥ 0 in the given ranges;
-// where a = b = 0 is possible it is undefined and every value of [0, 1] is allowed.
-Interval share_range(Interval a, Interval b, double p) {
-    const auto share = [p](double x, double y, double if_undefined) {
-        return x == 0 && y == 0 ? if_undefined : x / p_norm(x, y, p);
-    };
-    return {share(a.lo, b.hi, 0), share(a.hi, b.lo, 1)};
-}
+// The range of (a/‖(a, b)‖_p)^(p−1) for a, b ≥ 0 in the given ranges, together with that of the same power of
+// b's share: with t = (b/a)^p the two are (1 + t)^(1/p − 1) and (1 + 1/t)^(1/p − 1), monotone in t, so four pows
+// bound both (against ten for the shares' norms and powers taken one by one). Where a = b = 0 is possible a share
+// is undefined and every value in [0, 1] is allowed, which t ∈ [0, ∞] gives.
+struct SharePowers {
+    Interval first, second;
+};
 
-// r^e over r in `ratio` ⊂ [0, 1] (0^negative is +inf).
-Interval power_range(Interval ratio, double e) {
-    const double at_lo = std::pow(ratio.lo, e), at_hi = std::pow(ratio.hi, e);
-    return e >= 0 ? Interval{at_lo, at_hi} : Interval{at_hi, at_lo};
+SharePowers share_powers(Interval a, Interval b, double p) {
+    if (p == 1) return {{1, 1}, {1, 1}};
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const double t_lo = b.lo == 0 ? 0 : std::pow(b.lo / a.hi, p);  // a ≡ 0 gives ∞: b's share is 1
+    const double t_hi = a.lo == 0 ? inf : std::pow(b.hi / a.lo, p);
+    const double e = 1 / p - 1;
+    // (1 + t)^e and (1 + 1/t)^e, their limits taken at t = 0 and ∞ so that no inf/inf or 0·∞ appears.
+    const auto first = [&](double t) { return t == inf ? (e < 0 ? 0 : inf) : std::pow(1 + t, e); };
+    const auto second = [&](double t) { return t == 0 ? (e < 0 ? 0 : inf) : t == inf ? 1 : std::pow(1 + 1 / t, e); };
+    // p > 1 (e < 0): the first falls and the second rises with t; p < 1 the other way round.
+    if (e < 0) return {{first(t_hi), first(t_lo)}, {second(t_lo), second(t_hi)}};
+    return {{first(t_lo), first(t_hi)}, {second(t_hi), second(t_lo)}};
 }
 
 // The product of two ranges of non-negative values, where 0·∞ bounds stay 0 below and ∞ above.
@@ -119,10 +126,9 @@ IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
     const Interval u = box.x.magnitude() * (1 / radii.x), v = box.y.magnitude() * (1 / radii.y),
                    w = box.z.magnitude() * (1 / radii.z);
     const Interval h = {p_norm(u.lo, v.lo, p2), p_norm(u.hi, v.hi, p2)};
-    const Interval horizontal = power_range(share_range(h, w, p1), p1 - 1);
-    const Interval d_du = non_negative_product(horizontal, power_range(share_range(u, v, p2), p2 - 1));
-    const Interval d_dv = non_negative_product(horizontal, power_range(share_range(v, u, p2), p2 - 1));
-    const Interval d_dw = power_range(share_range(w, h, p1), p1 - 1);
+    const auto [horizontal, d_dw] = share_powers(h, w, p1);
+    const auto [of_u, of_v] = share_powers(u, v, p2);
+    const Interval d_du = non_negative_product(horizontal, of_u), d_dv = non_negative_product(horizontal, of_v);
     return {signed_by(box.x, d_du * (1 / radii.x)), signed_by(box.y, d_dv * (1 / radii.y)),
             signed_by(box.z, d_dw * (1 / radii.z))};
 }

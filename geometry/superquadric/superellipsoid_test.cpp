@@ -119,6 +119,47 @@ TEST(SuperquadricSuperellipsoid, GaugeAlongADirectionHasTheGaugesDerivative) {
     EXPECT_NEAR(ball.gauge_along({0.6, 0, 0}, {-2, 0, 0}).derivative, -2, 1e-15);
 }
 
+// The gradient bound over a box holds every partial derivative inside the box (boxes that straddle coordinate
+// planes included), and over a box shrunk to a point it is the gradient there.
+TEST(SuperquadricSuperellipsoid, TheGradientRangeHoldsThePartialDerivativesAndIsExactAtAPoint) {
+    std::mt19937 random(43);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1), exponent(0.05, 4);
+    const Vec3d axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    int checked = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Superellipsoid s{{0.5 + fraction(random), 0.5 + fraction(random), 0.5 + fraction(random)},
+                               exponent(random), exponent(random)};
+        const Vec3d corner{unit(random), unit(random), unit(random)};
+        const Vec3d size = Vec3d(fraction(random), fraction(random), fraction(random)) * (i % 2 ? 0.02 : 0.6);
+        const IntervalBox box{{corner.x, corner.x + size.x}, {corner.y, corner.y + size.y}, {corner.z, corner.z + size.z}};
+        const IntervalBox range = s.gradient_range(box);
+        const Interval components[3] = {range.x, range.y, range.z};
+        for (int k = 0; k < 20; ++k) {
+            const Vec3d p = corner + Vec3d(size.x * fraction(random), size.y * fraction(random), size.z * fraction(random));
+            for (int axis = 0; axis < 3; ++axis) {
+                const double partial = s.gauge_along(p, axes[axis]).derivative;
+                if (std::isnan(partial)) continue;
+                const Interval bound = components[axis];
+                // The reference loses digits below the gauge's unit scale where a share's sum is 1 + tiny.
+                const double tolerance = 1e-12 * std::max(std::abs(bound.lo), std::abs(bound.hi)) + 1e-15;
+                EXPECT_GE(partial, bound.lo - tolerance) << i << " axis " << axis;
+                EXPECT_LE(partial, bound.hi + tolerance) << i << " axis " << axis;
+                ++checked;
+            }
+        }
+        const IntervalBox point{{corner.x, corner.x}, {corner.y, corner.y}, {corner.z, corner.z}};
+        const IntervalBox at_point = s.gradient_range(point);
+        const Interval point_components[3] = {at_point.x, at_point.y, at_point.z};
+        for (int axis = 0; axis < 3; ++axis) {
+            const double partial = s.gauge_along(corner, axes[axis]).derivative;
+            if (std::isnan(partial)) continue;
+            EXPECT_NEAR(point_components[axis].lo, partial, 1e-6 * std::abs(partial) + 1e-12) << i << " axis " << axis;
+            EXPECT_NEAR(point_components[axis].hi, partial, 1e-6 * std::abs(partial) + 1e-12) << i << " axis " << axis;
+        }
+    }
+    EXPECT_GT(checked, 100000);
+}
+
 TEST(SuperquadricSuperellipsoid, NormalsOnTheCoordinatePlanesAreTheLimits) {
     for (double e1 : {0.02, 0.5, 1.0, 2.0, 3.0, 4.0})
         for (double e2 : {0.02, 0.5, 1.0, 2.0, 3.0, 4.0}) {

@@ -26,7 +26,7 @@ SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
       // Named here, not with the Embree geometry: a CSG operand records its work without one.
       work_slots_{counters::named_counter_slot("superquadric.interval_bounds"),
                   counters::named_counter_slot("superquadric.slope_bounds"),
-                  counters::named_counter_slot("superquadric.monotone_proofs"),
+                  counters::named_counter_slot("superquadric.slope_proofs"),
                   counters::named_counter_slot("superquadric.evaluations"),
                   counters::named_counter_slot("superquadric.halvings"),
                   counters::named_counter_slot("superquadric.refined_crossings"),
@@ -99,7 +99,7 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
 
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {
     const std::array<std::uint64_t, 7> amounts{
-        work.search.interval_bounds, work.search.slope_bounds, work.search.monotone_proofs, work.search.evaluations,
+        work.search.interval_bounds, work.search.slope_bounds, work.search.slope_proofs, work.search.evaluations,
         work.search.halvings,        work.search.crossings,    work.polynomial_solves};
     counters::add_to_named(work_slots_, amounts);
 }
