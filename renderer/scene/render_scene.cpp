@@ -108,6 +108,8 @@ void RenderScene::commit() {
     };
     std::vector<Traced> arrays;
     std::unordered_map<const Shape*, RTCScene> scene_of_placed_shape;
+    std::size_t user_primitives = 0;  // of the user geometries in the scene itself, and their box
+    Bounds3f user_bounds;
     for (const IdRange& range : id_ranges_) {
         if (range.placed) {
             PlacementArray& array = *placed_[range.index];
@@ -136,6 +138,11 @@ void RenderScene::commit() {
         RTCGeometry geometry = shape.create_geometry(device);
         check_embree("building object \"" + object.name + "\"");
         if (!object.instanced) {
+            if (shape.counts_intersection_tests()) {
+                user_primitives += shape.primitive_count();
+                const Bounds3f own = shape.bounds();
+                if (!own.empty()) user_bounds.extend(own.lower), user_bounds.extend(own.upper);
+            }
             attach(geometry, {&object, nullptr, range.first_id}, object.name);
             continue;
         }
@@ -170,6 +177,12 @@ void RenderScene::commit() {
             build_statistics_.instanced_objects += traced.array->size();
             build_statistics_.object_bytes += traced.array->memory_bytes();
         }
+        if (count == 1) {
+            RTCBounds own;
+            rtcGetSceneBounds(arrays.front().shape_scene, &own);
+            const Vec3d centre = 0.5 * (Vec3d(own.lower_x, own.lower_y, own.lower_z) + Vec3d(own.upper_x, own.upper_y, own.upper_z));
+            placements_sentinel_.add_to(device, placements, Vec3f(arrays.front().array->to_world(0).point(centre)));
+        }
         rtcCommitScene(placements);
         RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(instance, placements);
@@ -185,6 +198,8 @@ void RenderScene::commit() {
         variant.counter_slot = counters::geometry_type_slot(shape.type_name(), shape.counts_intersection_tests());
         build_statistics_.object_bytes += object_record_bytes(variant);
     }
+    if (user_primitives == 1 && !user_bounds.empty())  // its id comes after every id the hits use
+        scene_sentinel_.add_to(device, scene_, 0.5f * (user_bounds.lower + user_bounds.upper));
     rtcCommitScene(scene_);
     check_embree("building the scene BVH");
     build_lights();

@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "renderer/embree/inner_root.h"
 #include "renderer/core/ray.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/embree_ray.h"
@@ -166,6 +167,7 @@ private:
 
     RTCScene scene_ = nullptr;
     std::vector<RTCScene> shape_scenes_;  // the Embree scenes that placement arrays trace in, and theirs
+    InnerRootSentinel scene_sentinel_, placements_sentinel_;  // for a lone user primitive or placement
     std::vector<SceneObject> objects_;
     std::deque<SceneObject> placement_variants_;         // the objects that placements show (stable addresses)
     std::vector<std::unique_ptr<PlacementArray>> placed_;  // add_placements' arrays, in the order added

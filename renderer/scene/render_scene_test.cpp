@@ -112,6 +112,27 @@ TEST(RenderScene, OcclusionAgreesWithIntersection) {
     }
 }
 
+// A lone user primitive (a sphere baked into the scene, or one placed by a transform it cannot bake) is tested only
+// by rays that reach its box, as every primitive among several is; the rays here hit the floor far from it.
+TEST(RenderScene, ALoneUserPrimitiveIsTestedOnlyByRaysNearIt) {
+    for (const Transform& placement : {Transform::translate({0, 1, 0}), Transform::scale({1, 0.5, 1})}) {
+        RenderScene scene;
+        scene.add_object(make_object("floor", floor_quad(), Transform()));
+        scene.add_object(make_object("sphere", unit_sphere(), placement));
+        scene.commit();
+        const std::uint64_t before = counters::totals().geometry["sphere"].tests;
+        for (int i = 0; i < 100; ++i) {
+            const Ray down = ray_between({3 + 0.01f * float(i), 4, 3}, {0, -1, 0});
+            ASSERT_TRUE(scene.intersect(down, RayKind::Camera).has_value());
+            ASSERT_TRUE(scene.occluded(down));
+        }
+        EXPECT_EQ(counters::totals().geometry["sphere"].tests, before);
+        const Ray at_sphere = ray_between({0, 4, 0}, {0, -1, 0});
+        ASSERT_TRUE(scene.intersect(at_sphere, RayKind::Camera).has_value());
+        EXPECT_EQ(scene.intersect(at_sphere, RayKind::Camera)->object->name, "sphere");
+    }
+}
+
 // Rays Embree cannot trace: each would abort the process inside Embree (its ray.valid() assertion).
 std::vector<Ray> untraceable_rays() {
     constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
