@@ -53,6 +53,7 @@ AbmPatch::AbmPatch(std::shared_ptr<const PatchDomain> domain, std::vector<PatchS
         throw std::invalid_argument("p: the weight exponent must be in [1, 8], got " + std::to_string(exponent_));
     check_not_degenerate(sides_);
     check_closed_loop(sides_, closure_tolerance);
+    check_not_self_crossing(sides_);
 }
 
 Vec3d AbmPatch::operator()(DomainPoint x) const { return evaluate(x, nullptr); }

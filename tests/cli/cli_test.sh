@@ -1337,6 +1337,9 @@ case_abm_patch_bad_input() {
     write_shape_scene "$dir" '        "type": "abm_patch", "p": '"$p"',' '        "boundary": ['"$e0, $e1, $e2"']'
     check_bad_scene "$dir" 11 "objects[0].shape.p" "value $p out of range: must be in [1, 8]"
   done
+  # A bow-tie: the loop runs (0,0) → (1,1) → (1,0) → (0,1) and crosses itself.
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": [{"points": [[0,0,0],[1,1,0]]}, {"points": [[1,1,0],[1,0,0]]}, {"points": [[1,0,0],[0,1,0]]}, {"points": [[0,1,0],[0,0,0]]}]'
+  check_bad_scene "$dir" 12 "objects[0].shape.boundary" "the boundary loop crosses itself: curve 0 crosses curve 2"
   write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"', {"curve": "nope"}]'
   check_bad_scene "$dir" 12 "objects[0].shape.boundary[2]" 'no curve named "nope"'
   # 3 × 2048 × 4095 triangles need about 4.5 GB: refused under a 1 GB limit before anything is built.
