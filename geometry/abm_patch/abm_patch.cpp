@@ -56,6 +56,13 @@ AbmPatch::AbmPatch(std::shared_ptr<const PatchDomain> domain, std::vector<PatchS
     check_not_self_crossing(sides_);
 }
 
+AbmPatch AbmPatch::with_sides(std::vector<PatchSide> sides) const {
+    if (sides.size() != sides_.size()) throw std::invalid_argument("with_sides: the patch has " + std::to_string(sides_.size()) + " sides");
+    AbmPatch patch = *this;
+    patch.sides_ = std::move(sides);
+    return patch;
+}
+
 Vec3d AbmPatch::operator()(DomainPoint x) const { return evaluate(x, nullptr); }
 
 PatchJet AbmPatch::jet(DomainPoint x) const {

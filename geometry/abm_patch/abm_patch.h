@@ -28,6 +28,11 @@ public:
     AbmPatch(std::shared_ptr<const PatchDomain> domain, std::vector<PatchSide> sides, double exponent = 1,
              double closure_tolerance = 1e-6);
 
+    // The same patch (domain, p) along other sides that run within the closure tolerance of its own (a curve
+    // shared by geometry, sides with cross-boundary tangents): the loop checks are not repeated. Throws
+    // std::invalid_argument for a different number of sides.
+    AbmPatch with_sides(std::vector<PatchSide> sides) const;
+
     const PatchDomain& domain() const { return *domain_; }
     const std::vector<PatchSide>& sides() const { return sides_; }
     double exponent() const { return exponent_; }

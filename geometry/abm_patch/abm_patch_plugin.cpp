@@ -7,6 +7,7 @@
 
 #include "geometry/abm_patch/abm_patch.h"
 #include "geometry/abm_patch/boundary_tubes.h"
+#include "geometry/abm_patch/curve_sharing.h"
 #include "geometry/abm_patch/patch_tessellation.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "renderer/core/memory_budget.h"
@@ -130,6 +131,11 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         for (const SceneNode& patch : list) {
             patches.push_back(parse_patch(patch, named, closure_tolerance));
             patch.finish();
+        }
+        try {
+            patches = share_coincident_curves(patches, closure_tolerance);
+        } catch (const NearlySharedCurve& near) {
+            list[near.patch].optional_value("boundary")->elements()[near.side].fail(near.what());
         }
     }
     const std::string draw = node.choice_or("draw", "surface", {"surface", "curves"});

@@ -8,7 +8,6 @@
 #include <string>
 
 namespace isotrace {
-namespace {
 
 std::string format_point(const Vec3d& p) {
     char text[96];
@@ -21,6 +20,8 @@ std::string format_number(double v) {
     std::snprintf(text, sizeof text, "%.3g", v);
     return text;
 }
+
+namespace {
 
 struct LoopPoint {
     Vec3d position;

@@ -1,5 +1,6 @@
 #pragma once
 // Boundary curves of a patch must form a closed loop: each side ends where the next begins.
+#include <string>
 #include <vector>
 
 #include "geometry/abm_patch/patch_side.h"
@@ -7,6 +8,10 @@
 namespace isotrace {
 
 inline constexpr int kLoopSamplesPerCurve = 32;
+
+// A point and a distance as the patch messages print them: "(1, 0, 0.5)", "0.0001".
+std::string format_point(const Vec3d& p);
+std::string format_number(double v);
 
 // Throws std::invalid_argument naming the two curves, their end points and the gap when side i's end and side
 // i+1's start (mod N) are farther apart than `tolerance`; when the gap closes with one of them run backwards, the

@@ -1318,6 +1318,47 @@ PY
   expect_no_file "$work/floor.ply"
 }
 
+# The gem with every curve written out inline in each patch that uses it (no names): the copies are found by their
+# geometry and welded, so the mesh stays watertight; one copy moved by 1e-4 is refused with its place.
+case_abm_patch_inline_curves() {
+  python3 - scenes/abm_models.json "$work/inline.json" "$work/near.json" <<'PY'
+import copy, json, sys
+scene = json.load(open(sys.argv[1]))
+gem = next(o for o in scene["objects"] if o["name"] == "gem")
+curves = gem["shape"].pop("curves")
+def inline(item):
+    if isinstance(item, str): return copy.deepcopy(curves[item])
+    curve = copy.deepcopy(curves[item["curve"]])
+    if item.get("reversed"): curve["points"] = curve["points"][::-1]
+    return curve
+for patch in gem["shape"]["patches"]: patch["boundary"] = [inline(c) for c in patch["boundary"]]
+scene["objects"] = [gem]
+scene["lights"] = [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}]
+json.dump(scene, open(sys.argv[2], "w"), indent=1)
+gem["shape"]["patches"][1]["boundary"][0]["points"][1][1] += 1e-4
+json.dump(scene, open(sys.argv[3], "w"), indent=1)
+PY
+  cli_expect 0 mesh "$work/inline.json" --object gem --method traced -o "$work/inline.obj" --quiet
+  python3 - "$work/inline.obj" <<'PY' || fail "the gem of inline curves has a crack"
+import sys
+from collections import Counter
+positions, edges = [], Counter()
+for line in open(sys.argv[1]):
+    f = line.split()
+    if f and f[0] == "v": positions.append(tuple(f[1:4]))
+    elif f and f[0] == "f":
+        corners = [positions[int(c.split("/")[0]) - 1] for c in f[1:]]
+        if len(set(corners)) == 3:
+            for k in range(3): edges[(corners[k], corners[(k + 1) % 3])] += 1
+open_edges = [e for e, n in edges.items() if n != 1 or edges.get((e[1], e[0])) != 1]
+print(len(open_edges), "open edges")
+sys.exit(1 if open_edges else 0)
+PY
+  cli_expect 2 mesh "$work/near.json" --object gem --method traced -o "$work/near.obj" --quiet
+  expect_in "$work/stderr" "objects[0].shape.patches[1].boundary[0]: curve 0 of patch 1 nearly coincides with curve 0 of patch 0: they differ by up to 5e-05" stderr
+  expect_no_file "$work/near.obj"
+}
+
 # Bad patches: exit 2 with file:line:column, the JSON path and what is wrong; nothing written.
 case_abm_patch_bad_input() {
   local dir="$work/scene" e0='{"points": [[0,0,0],[1,0,0]]}' e1='{"points": [[1,0,0],[0,1,0]]}' e2='{"points": [[0,1,0],[0,0,0]]}'
