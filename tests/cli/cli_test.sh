@@ -1359,6 +1359,44 @@ PY
   expect_no_file "$work/near.obj"
 }
 
+# Smooth joins: the gem and the rounded corner of scenes/abm_smooth_joins.json, exported by isotrace mesh. At every
+# position on a shared curve (carried by a vertex of each of the two patches) the creased versions' normals jump by
+# tens of degrees, the smooth versions' by at most 1°. p = 1 with smooth joins is refused at the patch's p.
+case_abm_patch_smooth_joins() {
+  local object
+  for object in gem_crease gem_smooth rounded_corner_crease rounded_corner_smooth; do
+    cli_expect 0 mesh scenes/abm_smooth_joins.json --object "$object" --method traced -o "$work/$object.obj" --quiet
+  done
+  python3 - "$work" <<'PY' || fail "normals across shared curves"
+import math, statistics, sys
+from collections import defaultdict
+def jumps(path):
+    positions, normals = [], []
+    for line in open(path):
+        f = line.split()
+        if f and f[0] == "v": positions.append(tuple(f[1:4]))
+        elif f and f[0] == "vn": normals.append([float(x) for x in f[1:4]])
+    copies = defaultdict(list)
+    for i, p in enumerate(positions): copies[p].append(i)
+    result = []
+    for ids in copies.values():
+        if len(ids) != 2: continue
+        a, b = normals[ids[0]], normals[ids[1]]
+        cosine = sum(x * y for x, y in zip(a, b)) / math.sqrt(sum(x * x for x in a) * sum(y * y for y in b))
+        result.append(math.degrees(math.acos(max(-1.0, min(1.0, cosine)))))
+    return result
+ok = True
+for model, creased_median in (("gem", 90), ("rounded_corner", 30)):
+    creased, smooth = jumps(f"{sys.argv[1]}/{model}_crease.obj"), jumps(f"{sys.argv[1]}/{model}_smooth.obj")
+    print(model, "creased: median %.1f max %.1f; smooth: median %.4f max %.4f degrees (%d vertices)"
+          % (statistics.median(creased), max(creased), statistics.median(smooth), max(smooth), len(smooth)))
+    ok = ok and len(smooth) > 100 and statistics.median(creased) > creased_median and max(smooth) <= 1
+sys.exit(0 if ok else 1)
+PY
+  cli_expect 2 info scenes/abm_smooth_joins.json --set 'objects.gem_smooth.shape.patches.3.p=1'
+  expect_in "$work/stderr" "objects[3].shape.patches[3].p: smooth joins need p > 1" stderr
+}
+
 # Bad patches: exit 2 with file:line:column, the JSON path and what is wrong; nothing written.
 case_abm_patch_bad_input() {
   local dir="$work/scene" e0='{"points": [[0,0,0],[1,0,0]]}' e1='{"points": [[1,0,0],[0,1,0]]}' e2='{"points": [[0,1,0],[0,0,0]]}'
