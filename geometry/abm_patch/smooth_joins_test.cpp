@@ -98,6 +98,25 @@ TEST(SmoothJoins, APlanarModelStaysPlanar) {
             }
 }
 
+// The jet's ribbon terms (f_i′ ∇s_i with the ribbon's derivative, r_i ∇d_i) against central differences of F.
+TEST(SmoothJoins, DerivativesMatchFiniteDifferences) {
+    for (bool polygon : {false, true}) {
+        const std::vector<AbmPatch> smooth = with_smooth_joins(curved_tetrahedron(polygon, 2));
+        const AbmPatch& patch = smooth[0];
+        for (int side = 0; side < 3; ++side)
+            for (double along : {0.2, 0.5, 0.8})
+                for (double inside : {0.05, 0.3, 0.7}) {
+                    const DomainPoint x = just_inside(patch, side, along, inside);
+                    const PatchJet jet = patch.jet(x);
+                    const double h = 1e-6;
+                    const Vec3d dx = (1 / (2 * h)) * (patch({x.x + h, x.y}) - patch({x.x - h, x.y}));
+                    const Vec3d dy = (1 / (2 * h)) * (patch({x.x, x.y + h}) - patch({x.x, x.y - h}));
+                    EXPECT_NEAR(length(jet.dx - dx), 0, 1e-5 * (1 + length(dx))) << side << " " << along << " " << inside;
+                    EXPECT_NEAR(length(jet.dy - dy), 0, 1e-5 * (1 + length(dy))) << side << " " << along << " " << inside;
+                }
+    }
+}
+
 TEST(SmoothJoins, NeedAWeightExponentAboveOne) {
     EXPECT_THROW(with_smooth_joins(curved_tetrahedron(false, 1)), std::invalid_argument);
 }
