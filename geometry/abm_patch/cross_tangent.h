@@ -35,8 +35,13 @@ private:
     BSplineCurve<double> reach_;
 };
 
+// The unit tangent of a side (the curve run backwards when `reversed`) at its parameter λ. Where the curve stops (a
+// zero derivative, as at a doubled control point), the direction of its chord over a short step; zero for a curve
+// that does not move there at all.
+Vec3d side_direction(const SpaceCurve& curve, bool reversed, double along);
+
 // The unit direction into a patch across its side, normal to `normal` (facing the patch's front) and to the
-// side's tangent; `fallback` where `normal` runs along the tangent.
-Vec3d inward_across(const Vec3d& normal, const Vec3d& side_tangent, const Vec3d& fallback);
+// side's unit tangent; `fallback` where `normal` runs along the tangent or there is no tangent.
+Vec3d inward_across(const Vec3d& normal, const Vec3d& tangent, const Vec3d& fallback);
 
 }  // namespace isotrace

@@ -40,9 +40,9 @@ SideView view(const AbmPatch& patch, std::size_t side, double along) {
     const DomainPoint centre = patch.domain().centre();
     Footprint footprints[PatchDomain::kMaxSides];
     patch.domain().footprints(centre, footprints);
-    const auto [point, derivative] = patch.sides()[side].point_and_tangent(along);
-    const Vec3d tangent = normalize(derivative);
-    const Vec3d toward = patch(centre) - point;
+    const PatchSide& s = patch.sides()[side];
+    const Vec3d tangent = side_direction(*s.curve, s.reversed, along);
+    const Vec3d toward = patch(centre) - s.point(along);
     return {tangent, (1 / footprints[side].distance) * (toward - dot(toward, tangent) * tangent)};
 }
 

@@ -117,6 +117,22 @@ TEST(SmoothJoins, DerivativesMatchFiniteDifferences) {
     }
 }
 
+// A shared curve that stops at its start (a doubled control point: zero derivative there) takes the direction of
+// its chord there; nothing becomes NaN.
+TEST(SmoothJoins, ACurveThatStopsAtAnEndStaysFinite) {
+    const auto shared = bezier({{0, 0, 0}, {0, 0, 0}, {0.5, 0.3, 0.5}, {1, 0, 1}});
+    const std::vector<AbmPatch> pair = {
+        AbmPatch(right_triangle_domain(), {{shared, false, "s"}, {bezier({{1, 0, 1}, {1, 0, 0}}), false, "a"},
+                                           {bezier({{1, 0, 0}, {0, 0, 0}}), false, "b"}}, 2),
+        AbmPatch(right_triangle_domain(), {{shared, true, "s"}, {bezier({{0, 0, 0}, {0, 0, 1}}), false, "c"},
+                                           {bezier({{0, 0, 1}, {1, 0, 1}}), false, "d"}}, 2)};
+    for (const AbmPatch& patch : with_smooth_joins(pair))
+        for (int i = 0; i <= 20; ++i) {
+            EXPECT_TRUE(is_finite(patch.side_normal(0, i / 20.0))) << i;
+            for (int j = 0; i + j <= 20; ++j) EXPECT_TRUE(is_finite(patch({i / 20.0, j / 20.0}))) << i << " " << j;
+        }
+}
+
 TEST(SmoothJoins, NeedAWeightExponentAboveOne) {
     EXPECT_THROW(with_smooth_joins(curved_tetrahedron(false, 1)), std::invalid_argument);
 }
