@@ -107,7 +107,7 @@ std::vector<AbmPatch> with_smooth_joins(const std::vector<AbmPatch>& patches) {
                 const double lambda = parameters[std::size_t(k)];
                 const SideView v = view(patch, use.side, lambda);
                 const Vec3d n = facing * (*shared)(side.reversed ? 1 - lambda : lambda);
-                const Vec3d inward = inward_across(n, v.tangent, normalize(v.secant));
+                const Vec3d inward = inward_across(n, v.tangent, safe_normalize(v.secant, Vec3d{}));
                 // Turned by φ into the shared plane, the secant's reach shrinks by cos φ: a patch tilted up by φ
                 // then rises about as much as a circular arc would.
                 reach.push_back(std::max(dot(v.secant, inward), kLeastRibbonReach * length(v.secant)));
