@@ -53,6 +53,14 @@ AbmPatch::AbmPatch(std::shared_ptr<const PatchDomain> domain, std::vector<PatchS
         throw std::invalid_argument("p: the weight exponent must be in [1, 8], got " + std::to_string(exponent_));
     check_not_degenerate(sides_);
     check_closed_loop(sides_, closure_tolerance);
+    check_not_self_crossing(sides_);
+}
+
+AbmPatch AbmPatch::with_sides(std::vector<PatchSide> sides) const {
+    if (sides.size() != sides_.size()) throw std::invalid_argument("with_sides: the patch has " + std::to_string(sides_.size()) + " sides");
+    AbmPatch patch = *this;
+    patch.sides_ = std::move(sides);
+    return patch;
 }
 
 Vec3d AbmPatch::operator()(DomainPoint x) const { return evaluate(x, nullptr); }
@@ -81,22 +89,34 @@ Vec3d AbmPatch::evaluate(DomainPoint x, PatchJet* jet) const {
         return sides_[std::size_t(side)].end();
     }
 
-    Vec3d attribute[kMaxSides], tangent[kMaxSides];
+    // Attribute i is c_i(s_i), plus d_i·r_i(s_i) where the side has a cross-boundary tangent r_i (with the true
+    // domain distance: r is per unit of it); tangent[i] is its derivative in s_i, ribbon[i] the one in d_i.
+    Vec3d attribute[kMaxSides], tangent[kMaxSides], ribbon[kMaxSides];
     Vec3d sum{};
     for (int i = 0; i < n; ++i) {
+        const PatchSide& side = sides_[std::size_t(i)];
+        const double s = footprints[i].parameter, d = footprints[i].distance;
         if (jet) {
-            const auto [point, derivative] = sides_[std::size_t(i)].point_and_tangent(footprints[i].parameter);
+            const auto [point, derivative] = side.point_and_tangent(s);
             attribute[i] = point;
             tangent[i] = derivative;
+            ribbon[i] = Vec3d{};
+            if (side.ribbon) {
+                const auto [r, dr] = side.ribbon->value_and_derivative(s);
+                attribute[i] = attribute[i] + d * r;
+                tangent[i] = tangent[i] + d * dr;
+                ribbon[i] = r;
+            }
         } else if (weight[i] > 0) {
-            attribute[i] = sides_[std::size_t(i)].point(footprints[i].parameter);
+            attribute[i] = side.point(s);
+            if (side.ribbon) attribute[i] = attribute[i] + d * (*side.ribbon)(s);
         }
         if (weight[i] > 0) sum = sum + weight[i] * attribute[i];
     }
     const Vec3d value = (1 / total) * sum;
     if (!jet) return value;
 
-    // ∇F = Σ_i [∇W_i (c_i − F) + W_i c_i′ ∇s_i] / Σ W, with ∇W_i = Σ_{k≠i} ∇(d_k^p) Π_{j≠i,k} d_j^p.
+    // ∇F = Σ_i [∇W_i (f_i − F) + W_i (f_i′ ∇s_i + r_i ∇d_i)] / Σ W, with ∇W_i = Σ_{k≠i} ∇(d_k^p) Π_{j≠i,k} d_j^p.
     Vec3d dx{}, dy{};
     for (int i = 0; i < n; ++i) {
         double weight_dx = 0, weight_dy = 0;
@@ -107,8 +127,10 @@ Vec3d AbmPatch::evaluate(DomainPoint x, PatchJet* jet) const {
             weight_dy += powers.dy[k] * others;
         }
         const Vec3d offset = attribute[i] - value;
-        dx = dx + weight_dx * offset + (weight[i] * footprints[i].parameter_dx) * tangent[i];
-        dy = dy + weight_dy * offset + (weight[i] * footprints[i].parameter_dy) * tangent[i];
+        dx = dx + weight_dx * offset + (weight[i] * footprints[i].parameter_dx) * tangent[i] +
+             (weight[i] * footprints[i].distance_dx) * ribbon[i];
+        dy = dy + weight_dy * offset + (weight[i] * footprints[i].parameter_dy) * tangent[i] +
+             (weight[i] * footprints[i].distance_dy) * ribbon[i];
     }
     jet->dx = (1 / total) * dx;
     jet->dy = (1 / total) * dy;
@@ -138,6 +160,10 @@ Vec3d AbmPatch::side_normal(int side, double t) const {
     footprints[side].distance = 0;  // exactly on the side, whatever the rounding of x
     const DistancePowers powers = distance_powers(footprints, n, exponent_);
     const auto [point, tangent] = sides_[std::size_t(side)].point_and_tangent(t);
+    if (const auto& ribbon = sides_[std::size_t(side)].ribbon) {  // p > 1: the patch leaves the side along r
+        const Vec3d r = (*ribbon)(t);
+        return unit_or_inside(cross(tangent, r), length(tangent) * length(r), x);
+    }
     Vec3d away{};
     for (int j = 0; j < n; ++j)
         if (j != side)

@@ -7,7 +7,9 @@
 
 #include "geometry/abm_patch/abm_patch.h"
 #include "geometry/abm_patch/boundary_tubes.h"
+#include "geometry/abm_patch/curve_sharing.h"
 #include "geometry/abm_patch/patch_tessellation.h"
+#include "geometry/abm_patch/smooth_joins.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "renderer/core/memory_budget.h"
 #include "renderer/params/world_limit.h"
@@ -99,7 +101,8 @@ std::shared_ptr<const PatchDomain> domain_for(const SceneNode& patch, int sides)
     return at_node(patch, [&] { return std::shared_ptr<const PatchDomain>(regular_polygon_domain(sides)); });
 }
 
-AbmPatch parse_patch(const SceneNode& patch, const NamedCurves& named, double closure_tolerance) {
+// `smooth`: the shape's joins are smooth, which need p > 1 (and make 2 the default).
+AbmPatch parse_patch(const SceneNode& patch, const NamedCurves& named, double closure_tolerance, bool smooth) {
     const std::optional<SceneNode> boundary = patch.optional_value("boundary");
     if (!boundary || !boundary->json().is_array()) patch.fail("a patch needs \"boundary\": a list of 3 to 8 curves");
     const std::vector<SceneNode> items = boundary->elements();
@@ -108,7 +111,10 @@ AbmPatch parse_patch(const SceneNode& patch, const NamedCurves& named, double cl
                        std::to_string(items.size()));
     std::vector<PatchSide> sides;
     for (std::size_t i = 0; i < items.size(); ++i) sides.push_back(parse_side(items[i], named, "curve " + std::to_string(i)));
-    const double p = patch.number_or("p", 1, NumberRange::between(AbmPatch::kMinExponent, AbmPatch::kMaxExponent));
+    const double p = patch.number_or("p", smooth ? 2 : 1, NumberRange::between(AbmPatch::kMinExponent, AbmPatch::kMaxExponent));
+    if (smooth && !(p > 1))
+        patch.fail_at("p", "smooth joins need p > 1: with p = 1 the other curves pull the surface off the shared "
+                           "tangent plane");
     const std::shared_ptr<const PatchDomain> domain = domain_for(patch, int(sides.size()));
     return at_node(*boundary, [&] { return AbmPatch(domain, std::move(sides), p, closure_tolerance); });
 }
@@ -120,17 +126,24 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         for (const std::string& name : curves->keys()) named[name] = parse_curve(curves->object(name));
     }
     const double closure_tolerance = node.number_or("closure_tolerance", 1e-6, NumberRange::positive());
+    const bool smooth = node.choice_or("joins", "crease", {"crease", "smooth"}) == "smooth";
     std::vector<AbmPatch> patches;
     if (node.has("patches") == node.has("boundary")) node.fail("give one patch (\"boundary\") or a list (\"patches\")");
     if (node.has("boundary")) {
-        patches.push_back(parse_patch(node, named, closure_tolerance));
+        patches.push_back(parse_patch(node, named, closure_tolerance, smooth));
     } else {
         const std::vector<SceneNode> list = node.object_array("patches");
         if (list.empty()) node.fail_at("patches", "needs at least one patch");
         for (const SceneNode& patch : list) {
-            patches.push_back(parse_patch(patch, named, closure_tolerance));
+            patches.push_back(parse_patch(patch, named, closure_tolerance, smooth));
             patch.finish();
         }
+        try {
+            patches = share_coincident_curves(patches, closure_tolerance);
+        } catch (const NearlySharedCurve& near) {
+            list[near.patch].optional_value("boundary")->elements()[near.side].fail(near.what());
+        }
+        if (smooth) patches = at_node(node, [&] { return with_smooth_joins(patches); });
     }
     const std::string draw = node.choice_or("draw", "surface", {"surface", "curves"});
     const SourceLocation where = node.location();
@@ -172,7 +185,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "abm_patch",
                          "attribute-based multi-sided patches (3 to 8 boundary curves each): boundary or patches, "
-                         "curves (named), p, domain, closure_tolerance, tolerance, max_segments, segments, draw (surface/curves), "
+                         "curves (named), p, domain, joins (crease/smooth), closure_tolerance, tolerance, max_segments, segments, draw (surface/curves), "
                          "tube_radius",
                          create)
 

@@ -199,6 +199,32 @@ TEST(AbmPatch, ThreeSidedPolygonDomainDiffersFromTheRightTriangleInside) {
     EXPECT_GT(length(triangle(triangle.domain().centre()) - polygon(polygon.domain().centre())), 1e-3);
 }
 
+// A bow-tie: the loop (0,0) → (1,1) → (1,0) → (0,1) crosses itself; its lobes cancel, so its Newell normal is zero
+// and the plane its points span is used. Lifted out of the plane at alternate corners it still crosses itself
+// seen from above. The straight square in the right order is accepted.
+TEST(AbmPatch, RefusesALoopThatCrossesItself) {
+    auto loop = [](std::vector<Vec3d> corners) {
+        std::vector<PatchSide> sides;
+        for (std::size_t k = 0; k < corners.size(); ++k) {
+            sides.push_back(side(bezier({corners[k], corners[(k + 1) % corners.size()]})));
+            sides.back().name = "curve " + std::to_string(k);
+        }
+        return sides;
+    };
+    for (const double lift : {0.0, 0.3}) {
+        try {
+            AbmPatch(unit_square_domain(), loop({{0, 0, 0}, {1, 1, lift}, {1, 0, 0}, {0, 1, lift}}));
+            FAIL() << "a bow-tie was accepted (lift " << lift << ")";
+        } catch (const std::invalid_argument& error) {
+            EXPECT_NE(std::string(error.what()).find("the boundary loop crosses itself: curve 0 crosses curve 2"),
+                      std::string::npos)
+                << error.what();
+        }
+    }
+    EXPECT_NO_THROW(AbmPatch(unit_square_domain(), loop({{0, 0, 0}, {0, 1, 0.3}, {1, 1, 0}, {1, 0, 0.3}})));
+    for (int n = 3; n <= 8; ++n) EXPECT_NO_THROW(AbmPatch(regular_polygon_domain(n), curved_loop(n))) << n;
+}
+
 TEST(AbmPatch, RejectsBadInput) {
     const std::vector<PatchSide> loop = curved_loop(3);
     EXPECT_THROW(AbmPatch(unit_square_domain(), loop), std::invalid_argument);  // 3 curves, 4 sides

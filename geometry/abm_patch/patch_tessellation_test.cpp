@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <map>
 #include <random>
 
 #include "geometry/abm_patch/abm_patch_test_support.h"
@@ -14,45 +13,11 @@ namespace {
 
 using abm_test::bezier;
 using abm_test::curved_loop;
+using abm_test::curved_tetrahedron;
 
-// A closed curved tetrahedron: four three-sided patches over six shared bulging curves, each patch's loop
-// counter-clockwise seen from outside, so every curve is used once forwards and once backwards.
-std::vector<AbmPatch> curved_tetrahedron(bool polygon_domains) {
-    const Vec3d v[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-    std::map<std::pair<int, int>, std::shared_ptr<const SpaceCurve>> edges;
-    auto edge = [&](int a, int b) -> PatchSide {
-        const bool reversed = a > b;
-        const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-        if (!edges.count(key)) {
-            const Vec3d p = v[key.first], q = v[key.second], bulge = 0.35 * normalize(p + q);
-            edges[key] = bezier({p, (2.0 / 3) * p + (1.0 / 3) * q + bulge, (1.0 / 3) * p + (2.0 / 3) * q + bulge, q});
-        }
-        return {edges[key], reversed, "edge"};
-    };
-    const int faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
-    std::vector<AbmPatch> patches;
-    for (const auto& f : faces)
-        patches.emplace_back(polygon_domains ? regular_polygon_domain(3) : right_triangle_domain(),
-                             std::vector<PatchSide>{edge(f[0], f[1]), edge(f[1], f[2]), edge(f[2], f[0])}, 1.0);
-    return patches;
-}
-
-// Every edge of the mesh, keyed by the positions of its ends (vertices are per patch, positions are shared),
-// must be used exactly twice, once in each direction.
+// Every edge of the mesh, keyed by the positions of its ends, must be used exactly twice, once in each direction.
 void expect_closed_by_position(const TriangleMeshData& mesh) {
-    std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> directed;
-    auto key = [&](std::uint32_t i) {
-        const Vec3f& p = mesh.positions[i];
-        return std::array<float, 3>{p.x, p.y, p.z};
-    };
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) ++directed[{key(t[std::size_t(k)]), key(t[std::size_t((k + 1) % 3)])}];
-    int open = 0;
-    for (const auto& [edge, count] : directed) {
-        const auto back = directed.find({edge.second, edge.first});
-        if (count != 1 || back == directed.end() || back->second != 1) ++open;
-    }
-    EXPECT_EQ(open, 0) << "of " << directed.size() << " directed edges";
+    EXPECT_EQ(abm_test::open_edges(mesh), 0);
 }
 
 TEST(PatchTessellation, PatchesSharingCurvesAreWatertight) {

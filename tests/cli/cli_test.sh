@@ -1318,6 +1318,85 @@ PY
   expect_no_file "$work/floor.ply"
 }
 
+# The gem with every curve written out inline in each patch that uses it (no names): the copies are found by their
+# geometry and welded, so the mesh stays watertight; one copy moved by 1e-4 is refused with its place.
+case_abm_patch_inline_curves() {
+  python3 - scenes/abm_models.json "$work/inline.json" "$work/near.json" <<'PY'
+import copy, json, sys
+scene = json.load(open(sys.argv[1]))
+gem = next(o for o in scene["objects"] if o["name"] == "gem")
+curves = gem["shape"].pop("curves")
+def inline(item):
+    if isinstance(item, str): return copy.deepcopy(curves[item])
+    curve = copy.deepcopy(curves[item["curve"]])
+    if item.get("reversed"): curve["points"] = curve["points"][::-1]
+    return curve
+for patch in gem["shape"]["patches"]: patch["boundary"] = [inline(c) for c in patch["boundary"]]
+scene["objects"] = [gem]
+scene["lights"] = [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}]
+json.dump(scene, open(sys.argv[2], "w"), indent=1)
+gem["shape"]["patches"][1]["boundary"][0]["points"][1][1] += 1e-4
+json.dump(scene, open(sys.argv[3], "w"), indent=1)
+PY
+  cli_expect 0 mesh "$work/inline.json" --object gem --method traced -o "$work/inline.obj" --quiet
+  python3 - "$work/inline.obj" <<'PY' || fail "the gem of inline curves has a crack"
+import sys
+from collections import Counter
+positions, edges = [], Counter()
+for line in open(sys.argv[1]):
+    f = line.split()
+    if f and f[0] == "v": positions.append(tuple(f[1:4]))
+    elif f and f[0] == "f":
+        corners = [positions[int(c.split("/")[0]) - 1] for c in f[1:]]
+        if len(set(corners)) == 3:
+            for k in range(3): edges[(corners[k], corners[(k + 1) % 3])] += 1
+open_edges = [e for e, n in edges.items() if n != 1 or edges.get((e[1], e[0])) != 1]
+print(len(open_edges), "open edges")
+sys.exit(1 if open_edges else 0)
+PY
+  cli_expect 2 mesh "$work/near.json" --object gem --method traced -o "$work/near.obj" --quiet
+  expect_in "$work/stderr" "objects[0].shape.patches[1].boundary[0]: curve 0 of patch 1 nearly coincides with curve 0 of patch 0: they differ by up to 5e-05" stderr
+  expect_no_file "$work/near.obj"
+}
+
+# Smooth joins: the gem and the rounded corner of scenes/abm_smooth_joins.json, exported by isotrace mesh. At every
+# position on a shared curve (carried by a vertex of each of the two patches) the creased versions' normals jump by
+# tens of degrees, the smooth versions' by at most 1°. p = 1 with smooth joins is refused at the patch's p.
+case_abm_patch_smooth_joins() {
+  local object
+  for object in gem_crease gem_smooth rounded_corner_crease rounded_corner_smooth; do
+    cli_expect 0 mesh scenes/abm_smooth_joins.json --object "$object" --method traced -o "$work/$object.obj" --quiet
+  done
+  python3 - "$work" <<'PY' || fail "normals across shared curves"
+import math, statistics, sys
+from collections import defaultdict
+def jumps(path):
+    positions, normals = [], []
+    for line in open(path):
+        f = line.split()
+        if f and f[0] == "v": positions.append(tuple(f[1:4]))
+        elif f and f[0] == "vn": normals.append([float(x) for x in f[1:4]])
+    copies = defaultdict(list)
+    for i, p in enumerate(positions): copies[p].append(i)
+    result = []
+    for ids in copies.values():
+        if len(ids) != 2: continue
+        a, b = normals[ids[0]], normals[ids[1]]
+        cosine = sum(x * y for x, y in zip(a, b)) / math.sqrt(sum(x * x for x in a) * sum(y * y for y in b))
+        result.append(math.degrees(math.acos(max(-1.0, min(1.0, cosine)))))
+    return result
+ok = True
+for model, creased_median in (("gem", 90), ("rounded_corner", 30)):
+    creased, smooth = jumps(f"{sys.argv[1]}/{model}_crease.obj"), jumps(f"{sys.argv[1]}/{model}_smooth.obj")
+    print(model, "creased: median %.1f max %.1f; smooth: median %.4f max %.4f degrees (%d vertices)"
+          % (statistics.median(creased), max(creased), statistics.median(smooth), max(smooth), len(smooth)))
+    ok = ok and len(smooth) > 100 and statistics.median(creased) > creased_median and max(smooth) <= 1
+sys.exit(0 if ok else 1)
+PY
+  cli_expect 2 info scenes/abm_smooth_joins.json --set 'objects.gem_smooth.shape.patches.3.p=1'
+  expect_in "$work/stderr" "objects[3].shape.patches[3].p: smooth joins need p > 1" stderr
+}
+
 # Bad patches: exit 2 with file:line:column, the JSON path and what is wrong; nothing written.
 case_abm_patch_bad_input() {
   local dir="$work/scene" e0='{"points": [[0,0,0],[1,0,0]]}' e1='{"points": [[1,0,0],[0,1,0]]}' e2='{"points": [[0,1,0],[0,0,0]]}'
@@ -1337,6 +1416,9 @@ case_abm_patch_bad_input() {
     write_shape_scene "$dir" '        "type": "abm_patch", "p": '"$p"',' '        "boundary": ['"$e0, $e1, $e2"']'
     check_bad_scene "$dir" 11 "objects[0].shape.p" "value $p out of range: must be in [1, 8]"
   done
+  # A bow-tie: the loop runs (0,0) → (1,1) → (1,0) → (0,1) and crosses itself.
+  write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": [{"points": [[0,0,0],[1,1,0]]}, {"points": [[1,1,0],[1,0,0]]}, {"points": [[1,0,0],[0,1,0]]}, {"points": [[0,1,0],[0,0,0]]}]'
+  check_bad_scene "$dir" 12 "objects[0].shape.boundary" "the boundary loop crosses itself: curve 0 crosses curve 2"
   write_shape_scene "$dir" '        "type": "abm_patch",' '        "boundary": ['"$e0, $e1"', {"curve": "nope"}]'
   check_bad_scene "$dir" 12 "objects[0].shape.boundary[2]" 'no curve named "nope"'
   # 3 × 2048 × 4095 triangles need about 4.5 GB: refused under a 1 GB limit before anything is built.
