@@ -8,7 +8,8 @@
 namespace isotrace {
 
 Vec3d bound_position(const SweepSurface& sweep, const VertexBinding& b) {
-    const double rho = sweep.radius(b.theta, b.t) + b.d;
+    const double r = sweep.radius(b.theta, b.t);
+    const double rho = b.d < 0 && b.radius > 0 ? r * (b.radius + b.d) / b.radius : r + b.d;
     return sweep.place({rho * std::cos(b.theta), rho * std::sin(b.theta), 0}, b.t);
 }
 
@@ -33,7 +34,8 @@ VertexBinding SweepBinder::binding_at(const Vec3d& v, double t) const {
     VertexBinding b;
     b.t = t;
     b.theta = std::atan2(local.y, local.x);
-    b.d = std::hypot(local.x, local.y) - sweep_.radius(b.theta, t);
+    b.radius = sweep_.radius(b.theta, t);
+    b.d = std::hypot(local.x, local.y) - b.radius;
     return b;
 }
 

@@ -25,9 +25,13 @@ struct VertexBinding {
     double theta = 0;  // (−π, π]
     double t = 0;      // [0, 1]
     double d = 0;      // signed distance from the surface within the section, < 0 inside
+    double radius = 0; // r(θ, t) when bound (0: unknown, eq. (8) as printed for every point)
 };
 
-// Eq. (8) with θ_i: C(t) + R(t)·((r(θ,t) + d)·cos θ, (r(θ,t) + d)·sin θ, 0) on any (edited) sweep.
+// Eq. (8) with θ_i: C(t) + R(t)·(ρ·cos θ, ρ·sin θ, 0) on any (edited) sweep, ρ = r(θ,t) + d outside the sweep.
+// Inside it (d < 0, radius known) ρ = r(θ,t)·(radius + d)/radius: the point keeps its share of the section's
+// radius, as printed it would keep its depth below the surface, so that a widened section tears points near its
+// axis apart by the whole widening (a thin part through the axis splits) and a narrowed one folds them over it.
 Vec3d bound_position(const SweepSurface& sweep, const VertexBinding& binding);
 
 // Samples C and N once per sweep so that binding many vertices only refines the brackets.
