@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "geometry/curves/curve_interpolation.h"
+#include "geometry/sweep/sweep_assignment.h"
 #include "geometry/sweep/sweep_deformer.h"
 #include "geometry/sweep/sweep_family_deformer.h"
 #include "geometry/sweep/sweep_hierarchy.h"
@@ -31,8 +32,11 @@ constexpr std::uint64_t kBinderBytesPerSample = sizeof(double) + 2 * sizeof(Vec3
 // moved positions and uvs.
 constexpr std::uint64_t kSweepBytesPerVertex =
     3 * sizeof(Vec3d) + sizeof(std::optional<VertexBinding>) + sizeof(double) + sizeof(std::array<float, 2>);
-// A hierarchy's: the positions in double, each vertex's sweep and binding.
-constexpr std::uint64_t kHierarchyBytesPerVertex = sizeof(Vec3d) + sizeof(int) + sizeof(VertexBinding);
+// A hierarchy's: the positions in double, each vertex's sweep, its distance and neighbours (about six, in a
+// vector, and a position map node) while sweeps are assigned; per sweep, its binding.
+constexpr std::uint64_t kHierarchyBytesPerVertex =
+    sizeof(Vec3d) + sizeof(int) + sizeof(double) + sizeof(std::vector<std::uint32_t>) + 6 * sizeof(std::uint32_t) + 64;
+constexpr std::uint64_t kHierarchyBytesPerBinding = sizeof(std::optional<VertexBinding>);
 // Keeping a child's volume ratio rebuilds it once per secant step, at most this many times.
 constexpr std::uint64_t kVolumeRebuilds = 42;
 
@@ -46,6 +50,18 @@ std::uint64_t construction_steps(const SweepSpec& sweep, std::uint64_t keys) {
 // Radii measured on the mesh trace a copy of it (RadiusProbe): as much memory per triangle as a traced tube.
 std::uint64_t probe_bytes(const SweepSpec& sweep, const TriangleMeshData& mesh) {
     return sweep.measures_radii() ? saturating_product({mesh.triangles.size(), kSweepTubeTrianglePeakBytes}) : 0;
+}
+
+// The mean of a sweep's key radii: the scale of the band over which two sweeps' vertices are blended.
+double mean_radius(const SweepSurface& sweep) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (const KeySection& key : sweep.keys())
+        for (double r : key.radii) {
+            sum += r;
+            ++count;
+        }
+    return sum / double(count);
 }
 
 std::vector<Vec3d> positions_of(const TriangleMeshData& mesh) {
@@ -132,7 +148,8 @@ class HierarchyDeformer final : public SweepFamilyDeformer {
 public:
     explicit HierarchyDeformer(const SceneNode& node)
         : preserve_volume_(node.boolean_or("preserve_volume", false)),
-          max_iterations_(node.integer_or("max_iterations", 50, NumberRange::between(1, 10000))) {
+          max_iterations_(node.integer_or("max_iterations", 50, NumberRange::between(1, 10000))),
+          blend_(node.number_or("blend", 0.5, NumberRange::between(0, 10))) {
         for (const SceneNode& s : node.object_array("sweeps")) {
             Member m{parse_sweep_spec(s), s.string_or("parent", ""), Attachment::root};
             if (m.sweep.name.empty()) s.fail("every sweep of a hierarchy needs a \"name\"");
@@ -166,6 +183,7 @@ public:
         Cost cost{saturating_sum({saturating_product({vertices, samples + kBindingStepsPerVertex * members_.size()}),
                                   saturating_product({rebuild, edits_.size() + 1})}),
                   saturating_sum({saturating_product({vertices, kHierarchyBytesPerVertex}),
+                                  saturating_product({vertices, members_.size(), kHierarchyBytesPerBinding}),
                                   samples * kBinderBytesPerSample, probe})};
         std::uint64_t solver_bytes = 0;
         for (const EditSpec& e : edits_) {
@@ -194,38 +212,34 @@ public:
 
     std::string apply(TriangleMeshData& mesh) const override {
         SweepHierarchy tree = build(mesh);
-        // Each vertex follows the sweep it lies deepest in: the smallest u = (r + d)/r of its bindings.
         const auto binding_start = std::chrono::steady_clock::now();
         const std::vector<Vec3d> points = positions_of(mesh);
-        std::vector<SweepBinder> binders;
-        for (std::size_t n = 0; n < tree.size(); ++n) binders.emplace_back(tree.surface(int(n)));
-        std::vector<int> owner(points.size(), -1);
-        std::vector<VertexBinding> bindings(points.size());
-        parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
-            double best = INFINITY;
-            for (std::size_t n = 0; n < binders.size(); ++n) {
-                const auto b = binders[n].bind(points[i]);
-                if (!b) continue;
-                const double u = 1 + b->d / tree.surface(int(n)).radius(b->theta, b->t);
-                if (u < best) {
-                    best = u;
-                    owner[i] = int(n);
-                    bindings[i] = *b;
-                }
-            }
-        });
+        std::vector<std::vector<std::optional<VertexBinding>>> bindings(tree.size());
+        for (std::size_t n = 0; n < tree.size(); ++n) {
+            const SweepBinder binder(tree.surface(int(n)));
+            bindings[n].resize(points.size());
+            parallel_for(std::size_t(0), points.size(), [&](std::size_t i) { bindings[n][i] = binder.bind(points[i]); });
+        }
+        const VertexNeighbours next = vertex_neighbours(mesh);
+        const std::vector<int> owner = assign_sweeps(mesh, next, bindings, {});
+        std::vector<double> widths;
+        for (std::size_t n = 0; n < tree.size(); ++n) widths.push_back(blend_ * mean_radius(tree.surface(int(n))));
+        const std::vector<std::vector<SweepShare>> shares = blend_sweeps(mesh, next, bindings, owner, widths);
         const double binding_seconds = seconds_since(binding_start);
         const auto deformation_start = std::chrono::steady_clock::now();
         const std::string pulls = edit(tree);
         std::vector<std::size_t> counts(tree.size(), 0);
         std::size_t unbound = 0;
         for (std::size_t i = 0; i < points.size(); ++i) {
-            if (owner[i] < 0) {
+            if (owner[i] < 0 || !bindings[std::size_t(owner[i])][i]) {
                 ++unbound;
                 continue;
             }
             ++counts[std::size_t(owner[i])];
-            mesh.positions[i] = Vec3f(bound_position(tree.surface(owner[i]), bindings[i]));
+            Vec3d moved;
+            for (const SweepShare& s : shares[i])
+                moved += s.weight * bound_position(tree.surface(s.sweep), *bindings[std::size_t(s.sweep)][i]);
+            mesh.positions[i] = Vec3f(moved);
         }
         std::ostringstream head;
         head << "sweep hierarchy: " << points.size() << " vertices";
@@ -290,6 +304,7 @@ private:
 
     bool preserve_volume_;
     int max_iterations_;
+    double blend_;
     std::vector<Member> members_;
     std::vector<EditSpec> edits_;
 };
