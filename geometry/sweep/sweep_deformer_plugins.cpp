@@ -275,8 +275,12 @@ private:
                         tree.pull(node, {{e.key, tree.surface(node).keys()[std::size_t(e.key)].centre + *e.pull}}, max_iterations_);
                     if (!result.converged) {
                         std::ostringstream problem;
-                        problem << "pull: backward deformation did not converge: residual " << result.residual << " after "
-                                << result.iterations << " iterations (max_iterations " << max_iterations_ << ")";
+                        if (result.limit.empty())
+                            problem << "pull: backward deformation did not converge: residual " << result.residual << " after "
+                                    << result.iterations << " iterations (max_iterations " << max_iterations_ << ")";
+                        else
+                            problem << "pull: the target is out of reach: residual " << result.residual << " after "
+                                    << result.iterations << " iterations; going further, " << result.limit;
                         throw std::invalid_argument(problem.str());
                     }
                     summary << "; pull of " << e.sweep << "[" << e.key << "]: residual " << result.residual << " after "

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "geometry/curves/dense_solve.h"
+#include "geometry/sweep/sweep_fold.h"
 #include "geometry/sweep/sweep_volume.h"
 
 namespace isotrace {
@@ -130,8 +131,9 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         }
         return keys;
     };
-    auto residual = [&](const std::vector<double>& x) {
-        const SweepSurface p(parent_keys(x), nodes_[std::size_t(parent)].parameters);
+    const SweepSurface& start_surface = nodes_[std::size_t(parent)].surface;
+    const std::string& parent_name = nodes_[std::size_t(parent)].name;
+    auto residual = [&](const SweepSurface& p) {
         std::vector<double> e;
         for (const auto& [key, target] : targets) {
             const Vec3d at = bound_position(p, child.bound[std::size_t(key)].position);
@@ -145,9 +147,29 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         return std::sqrt(sum / double(targets.size()));
     };
 
-    std::vector<double> x(unknowns, 0.0), e = residual(x);
+    auto surface_of = [&](const std::vector<double>& x) { return SweepSurface(parent_keys(x), nodes_[std::size_t(parent)].parameters); };
+    // Why the parent `p` may not be used ("" when it may).
+    auto refusal = [&](const SweepSurface& p) -> std::string {
+        if (std::string fold = sweep_fold(p); !fold.empty()) return "the " + parent_name + " sweep's " + fold;
+        if (sweep_stretch(start_surface, p) > kMaxPullStretch)
+            return "the " + parent_name + " sweep would stretch or shrink more than " + std::to_string(int(kMaxPullStretch)) + "×";
+        return {};
+    };
+    // The step metric: identity plus kPullSmoothness × the squared differences of neighbouring keys' unknowns.
+    std::vector<double> metric(unknowns * unknowns, 0.0);
+    for (std::size_t a = 0; a < unknowns; ++a) metric[a * unknowns + a] = 1;
+    for (std::size_t k = 0; k + 1 < start.size(); ++k)
+        for (std::size_t c = 0; c < 4; ++c) {
+            const std::size_t a = 4 * k + c, b = 4 * (k + 1) + c;
+            metric[a * unknowns + a] += kPullSmoothness;
+            metric[b * unknowns + b] += kPullSmoothness;
+            metric[a * unknowns + b] -= kPullSmoothness;
+            metric[b * unknowns + a] -= kPullSmoothness;
+        }
+    std::vector<double> x(unknowns, 0.0), e = residual(start_surface);
     BackwardResult result;
     result.residual = rms(e);
+    std::string refused;  // why the last refused step was refused
     double damping = 0.1 * size;
     const double h = 1e-7 * size;
     while (result.iterations < max_iterations && result.residual > kBackwardTolerance * size) {
@@ -156,7 +178,7 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         for (std::size_t j = 0; j < unknowns; ++j) {
             std::vector<double> shifted = x;
             shifted[j] += h;
-            const std::vector<double> e2 = residual(shifted);
+            const std::vector<double> e2 = residual(surface_of(shifted));
             for (std::size_t i = 0; i < equations; ++i) jacobian[i * unknowns + j] = (e[i] - e2[i]) / h;
         }
         // (JᵀJ + λ²I)·Δx = Jᵀe; a step that does not reduce the residual raises λ, a good one lowers it.
@@ -166,7 +188,7 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
             for (std::size_t a = 0; a < unknowns; ++a) {
                 for (std::size_t i = 0; i < equations; ++i) rhs[a] += jacobian[i * unknowns + a] * e[i];
                 for (std::size_t b = 0; b < unknowns; ++b) {
-                    double sum = a == b ? damping * damping : 0;
+                    double sum = damping * damping * metric[a * unknowns + b];
                     for (std::size_t i = 0; i < equations; ++i) sum += jacobian[i * unknowns + a] * jacobian[i * unknowns + b];
                     normal[a * unknowns + b] = sum;
                 }
@@ -176,8 +198,15 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
             for (std::size_t a = 0; a < unknowns; ++a) trial[a] += step[a];
             std::vector<double> trial_e;
             try {
-                trial_e = residual(trial);
-            } catch (const std::invalid_argument&) {  // the step broke the parent (coinciding keys): damp more
+                const SweepSurface p = surface_of(trial);
+                if (std::string why = refusal(p); !why.empty()) {  // a valid parent only: damp more
+                    refused = std::move(why);
+                    damping *= 4;
+                    continue;
+                }
+                trial_e = residual(p);
+            } catch (const std::invalid_argument& broken) {  // coinciding keys: damp more
+                refused = "the " + parent_name + " sweep would break (" + broken.what() + ")";
                 damping *= 4;
                 continue;
             }
@@ -191,7 +220,10 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
                 damping *= 4;
             }
         }
-        if (!improved) break;  // stalled: the targets are out of reach
+        if (!improved) {  // stalled: the targets are out of reach
+            result.limit = refused;
+            break;
+        }
     }
     result.converged = result.residual <= kBackwardTolerance * size;
     set_keys(parent, parent_keys(x));

@@ -7,7 +7,11 @@
 // Rules: (1) forward deformation — editing a node re-places all its descendants; (2) backward deformation — a
 // loop child cannot be edited directly (it would tear away from the parent): moving its key sections towards
 // targets is achieved by editing the parent instead, by damped least squares on the parent's key centres and
-// radius scales (target tracking), with a convergence test, an iteration cap and the residual reported;
+// radius scales (target tracking), with a convergence test, an iteration cap and the residual reported. The
+// damping measures a step with a smoothness metric (neighbouring keys' changes differing cost more), so the
+// parent bends as a whole rather than kinking at one key, and a step that would leave the parent invalid — its
+// sections crossing (sweep_fold.h) or any of its lengths stretched or shrunk beyond kMaxPullStretch — is
+// refused like one that does not help: a target that needs such a parent is out of reach and reported so;
 // (3) optional volume-ratio preservation — after an edit each descendant's radii are scaled (solved
 // numerically) so that its volume keeps its ratio to its parent's volume (general volume formula).
 #include <optional>
@@ -31,12 +35,17 @@ struct BackwardResult {
     int iterations = 0;
     double residual = 0;  // RMS distance of the targeted keys from their targets after the last iteration
     bool converged = false;
+    std::string limit;    // when it stalled short of the targets after refusing a step: why ("the body sweep's sections ... cross")
 };
 
 class SweepHierarchy {
 public:
     // Tolerance of the backward deformation's convergence test, relative to the parent sweep's size.
     static constexpr double kBackwardTolerance = 1e-6;
+    // How far a pull may stretch (or shrink) the parent's axis and radii: its reach.
+    static constexpr double kMaxPullStretch = 2;
+    // Weight of the differences of neighbouring keys' changes in the step metric, against the changes themselves.
+    static constexpr double kPullSmoothness = 10;
 
     // `preserve_volume`: rule 3 (each child's volume ratio to its parent, measured when it is added, is kept).
     explicit SweepHierarchy(bool preserve_volume = false) : preserve_volume_(preserve_volume) {}

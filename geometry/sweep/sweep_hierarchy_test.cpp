@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/sweep/sweep_fold.h"
 #include "geometry/sweep/sweep_hierarchy.h"
 #include "geometry/sweep/sweep_test_support.h"
 #include "geometry/sweep/sweep_volume.h"
@@ -131,6 +132,25 @@ TEST(SweepHierarchy, UnreachableTargetReportsItsResidual) {
     EXPECT_THROW(pot.tree.set_keys(pot.handle, pot.handle_keys), std::invalid_argument);
     EXPECT_THROW(pot.tree.pull(pot.spout, {{0, {0, 0, 0}}}), std::invalid_argument);
     EXPECT_THROW(pot.tree.pull(pot.handle, {{7, {0, 0, 0}}}), std::invalid_argument);
+}
+
+TEST(SweepHierarchy, APullBeyondTheParentsReachStopsAndSaysWhy) {
+    Teapot pot = make_teapot(false);
+    const SweepSurface body_before = pot.tree.surface(pot.body);
+    const BackwardResult far = pot.tree.pull(pot.handle, {{2, pot.handle_keys[2].centre + Vec3d(0, 0, 1000)}}, 200);
+    EXPECT_FALSE(far.converged);
+    EXPECT_GT(far.residual, 900);
+    EXPECT_NE(far.limit.find("the body sweep would stretch or shrink more than 2×"), std::string::npos) << far.limit;
+    EXPECT_LE(sweep_stretch(body_before, pot.tree.surface(pot.body)), SweepHierarchy::kMaxPullStretch);
+    EXPECT_EQ(sweep_fold(pot.tree.surface(pot.body)), "");
+}
+
+TEST(SweepHierarchy, AReachablePullKeepsTheParentsSectionsInOrder) {
+    Teapot pot = make_teapot(false);
+    const BackwardResult result = pot.tree.pull(pot.handle, {{2, pot.handle_keys[2].centre + Vec3d(0, 0, 0.5)}});
+    EXPECT_TRUE(result.converged);
+    EXPECT_EQ(result.limit, "");
+    EXPECT_EQ(sweep_fold(pot.tree.surface(pot.body)), "");
 }
 
 TEST(SweepHierarchy, KeySectionOutsideTheParentIsAnError) {

@@ -1287,6 +1287,38 @@ PY
   expect_no_file "$work/out.ply"
 }
 
+# Every shipped sweep figure deforms its mesh without turning a face over or stretching an edge past 2.5x, and
+# deform prints the check.
+case_deform_sweep_figures_quality() {
+  local spec mesh
+  for spec in scenes/sweeps/*.json; do
+    case $spec in *teapot*) mesh=scenes/data/teapot.bpt ;; *) mesh=scenes/data/bunny.obj ;; esac
+    cli_expect 0 deform "$mesh" "$spec" -o "$work/out.ply"
+    expect_in "$work/stderr" "mesh quality: 0 flipped faces, max edge stretch" "stderr of $spec"
+    awk -v spec="$spec" '/mesh quality:/ { for (i = 1; i <= NF; ++i) if ($i == "stretch") { s = $(i + 1); sub("×", "", s); found = 1
+        if (s + 0 > 2.5) { print spec ": edge stretch " s "x > 2.5x"; exit 1 } } } END { if (!found) exit 1 }' \
+      "$work/stderr" || { show_output; fail "$spec stretches an edge too far"; }
+  done
+}
+
+# Pulls the parent cannot follow without folding or stretching beyond its reach are refused with the residual and
+# the reason, and nothing is written.
+case_deform_pull_out_of_reach() {
+  local pull
+  for pull in "[0, 0, 1000]" "[0, 0, 1.5]"; do
+    python3 - scenes/sweeps/teapot_pull.json "$work/far.json" "$pull" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec["deformers"][0]["edits"][0]["pull"] = json.loads(sys.argv[3])
+json.dump(spec, open(sys.argv[2], "w"))
+PY
+    cli_expect 2 deform scenes/data/teapot.bpt "$work/far.json" -o "$work/out.ply"
+    expect_in "$work/stderr" "edits[0]: pull: the target is out of reach: residual" stderr
+    expect_in "$work/stderr" "going further, the body sweep would stretch or shrink more than 2×" stderr
+    expect_no_file "$work/out.ply"
+  done
+}
+
 # Attribute-based patches: the closed gem of scenes/abm_models.json exported by isotrace mesh is watertight (every
 # edge, keyed by its end positions, is used once in each direction) and carries a normal per vertex.
 case_abm_patch_mesh() {
