@@ -12,6 +12,7 @@
 #include "geometry/sweep/sweep_spec.h"
 #include "geometry/sweep/sweep_surface.h"
 #include "geometry/sweep/sweep_tessellation.h"
+#include "geometry/sweep/vertex_group.h"
 #include "renderer/core/memory_budget.h"
 #include "renderer/core/parallel_for.h"
 
@@ -32,10 +33,10 @@ constexpr std::uint64_t kBinderBytesPerSample = sizeof(double) + 2 * sizeof(Vec3
 // moved positions and uvs.
 constexpr std::uint64_t kSweepBytesPerVertex =
     3 * sizeof(Vec3d) + sizeof(std::optional<VertexBinding>) + sizeof(double) + sizeof(std::array<float, 2>);
-// A hierarchy's: the positions in double, each vertex's sweep, its distance and neighbours (about six, in a
+// A hierarchy's: the positions in double, each vertex's sweep and group, its distance and neighbours (about six, in a
 // vector, and a position map node) while sweeps are assigned; per sweep, its binding.
 constexpr std::uint64_t kHierarchyBytesPerVertex =
-    sizeof(Vec3d) + sizeof(int) + sizeof(double) + sizeof(std::vector<std::uint32_t>) + 6 * sizeof(std::uint32_t) + 64;
+    sizeof(Vec3d) + 2 * sizeof(int) + sizeof(double) + sizeof(std::vector<std::uint32_t>) + 6 * sizeof(std::uint32_t) + 64;
 constexpr std::uint64_t kHierarchyBytesPerBinding = sizeof(std::optional<VertexBinding>);
 // Keeping a child's volume ratio rebuilds it once per secant step, at most this many times.
 constexpr std::uint64_t kVolumeRebuilds = 42;
@@ -151,7 +152,7 @@ public:
           max_iterations_(node.integer_or("max_iterations", 50, NumberRange::between(1, 10000))),
           blend_(node.number_or("blend", 0.5, NumberRange::between(0, 10))) {
         for (const SceneNode& s : node.object_array("sweeps")) {
-            Member m{parse_sweep_spec(s), s.string_or("parent", ""), Attachment::root};
+            Member m{parse_sweep_spec(s), s.string_or("parent", ""), Attachment::root, parse_vertex_group(s)};
             if (m.sweep.name.empty()) s.fail("every sweep of a hierarchy needs a \"name\"");
             if (!m.parent.empty()) {
                 if (index_of(m.parent) < 0) s.fail_at("parent", "no earlier sweep is called \"" + m.parent + "\"");
@@ -221,7 +222,7 @@ public:
             parallel_for(std::size_t(0), points.size(), [&](std::size_t i) { bindings[n][i] = binder.bind(points[i]); });
         }
         const VertexNeighbours next = vertex_neighbours(mesh);
-        const std::vector<int> owner = assign_sweeps(mesh, next, bindings, {});
+        const std::vector<int> owner = assign_sweeps(mesh, next, bindings, grouped(mesh));
         std::vector<double> widths;
         for (std::size_t n = 0; n < tree.size(); ++n) widths.push_back(blend_ * mean_radius(tree.surface(int(n))));
         const std::vector<std::vector<SweepShare>> shares = blend_sweeps(mesh, next, bindings, owner, widths);
@@ -250,6 +251,19 @@ public:
     }
 
 private:
+    // The sweep each vertex's explicit group puts it in (−1: none); empty when no sweep has a group.
+    std::vector<int> grouped(const TriangleMeshData& mesh) const {
+        std::vector<std::string> names;
+        for (const Member& m : members_) names.push_back(m.sweep.name);
+        std::vector<int> groups;
+        for (std::size_t n = 0; n < members_.size(); ++n) {
+            if (!members_[n].group) continue;
+            groups.resize(mesh.positions.size(), -1);
+            mark_vertex_group(*members_[n].group, mesh, int(n), names, groups);
+        }
+        return groups;
+    }
+
     SweepHierarchy build(const TriangleMeshData& mesh) const {
         SweepHierarchy tree(preserve_volume_);
         for (const Member& m : members_)
@@ -299,6 +313,7 @@ private:
         SweepSpec sweep;
         std::string parent;
         Attachment attachment;
+        std::optional<VertexGroupSpec> group;
     };
     int index_of(const std::string& name) const {
         for (std::size_t i = 0; i < members_.size(); ++i)

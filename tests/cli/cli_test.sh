@@ -1319,6 +1319,40 @@ PY
   done
 }
 
+# Explicit vertex groups of a hierarchy: a box or an index list puts vertices in a sweep; groups that name missing
+# vertices, overlap or select nothing are errors at their field.
+case_deform_vertex_groups() {
+  group() {  # group <output> <python statements editing the sweeps list "s">
+    python3 - scenes/sweeps/teapot_body_edit.json "$1" "$2" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+s = spec["deformers"][0]["sweeps"]
+exec(sys.argv[3])
+json.dump(spec, open(sys.argv[2], "w"), indent=1)
+PY
+  }
+  cli_expect 0 deform scenes/data/teapot.bpt scenes/sweeps/teapot_body_edit.json -o "$work/out.ply"
+  expect_in "$work/stderr" "5194 on body, 1056 on spout, 1046 on handle" stderr
+  # Everything beyond x = 1.6 (the spout and a band of the body) named for the spout; what the spout does not bind
+  # (behind its first section) stays.
+  group "$work/box.json" 's[1]["select"] = {"min": [1.6, -5, -5], "max": [5, 5, 5]}'
+  cli_expect 0 deform scenes/data/teapot.bpt "$work/box.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "4941 on body, 1287 on spout, 1046 on handle, 22 unbound" stderr
+  rm "$work/out.ply"
+  bad_group() {  # bad_group <python statements> <expected message>
+    group "$work/bad.json" "$1"
+    cli_expect 2 deform scenes/data/teapot.bpt "$work/bad.json" -o "$work/out.ply"
+    expect_in "$work/stderr" "$2" stderr
+    expect_no_file "$work/out.ply"
+  }
+  bad_group 's[2]["vertices"] = [0, 7296]' "sweeps[2].vertices[1]: vertex 7296 does not exist (the mesh has 7296 vertices)"
+  bad_group 's[1]["vertices"] = [5]; s[2]["vertices"] = [4, 5]' "sweeps[2].vertices[1]: vertex 5 is also in the group of sweep \"spout\""
+  bad_group 's[1]["select"] = {"min": [10, 10, 10], "max": [11, 11, 11]}' "sweeps[1].select: the box selects no vertex of the mesh"
+  bad_group 's[1]["select"] = {"min": [1, 0, 0], "max": [0, 1, 1]}' "sweeps[1].select: \"min\" must not exceed \"max\" on any axis"
+  bad_group 's[1]["vertices"] = [1.5]' "sweeps[1].vertices[0]: a vertex index must be a whole number"
+  bad_group 's[1]["vertices"] = []' "sweeps[1].vertices: the list names no vertex"
+}
+
 # Attribute-based patches: the closed gem of scenes/abm_models.json exported by isotrace mesh is watertight (every
 # edge, keyed by its end positions, is used once in each direction) and carries a normal per vertex.
 case_abm_patch_mesh() {
