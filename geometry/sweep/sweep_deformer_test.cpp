@@ -114,6 +114,20 @@ TEST(SweepDeformer, WideningASectionScalesWhatIsInsideIt) {
     EXPECT_NEAR(moved[3].x, 2.5, 1e-9);                    // outside: keeps its distance from the surface
 }
 
+TEST(SweepDeformer, PointsOnAnEndPlaneBindToThatEnd) {
+    const SweepSurface sweep(sweep_test::cylinder(0.5, 2));
+    const SweepBinder binder(sweep);
+    for (const double z : {-1e-12, 0.0, 1e-12}) {
+        const auto start = binder.bind({0.2, 0.1, z});
+        ASSERT_TRUE(start) << z;
+        EXPECT_NEAR(start->t, 0, 1e-9);
+        const auto end = binder.bind({0.2, 0.1, 2 + z});
+        ASSERT_TRUE(end) << z;
+        EXPECT_NEAR(end->t, 1, 1e-9);
+    }
+    EXPECT_FALSE(binder.bind({0.2, 0.1, -1e-6}));  // beyond the end, not on it
+}
+
 TEST(SweepDeformer, ChoosesTheContainingSectionThenTheNearestSurface) {
     const SweepSurface sweep(sweep_test::ring(1, 240, 9, sweep_test::constant_radii(0.35)));
     const SweepBinder binder(sweep);

@@ -42,6 +42,11 @@ std::vector<KeySection> checked(std::vector<KeySection> keys) {
             if (!(key.radii[j] > 0) || !std::isfinite(key.radii[j]))
                 fail(k, "radii[" + std::to_string(j) + "]", "must be finite and > 0, got " + number(key.radii[j]));
         if (k > 0 && key.centre == keys[k - 1].centre) fail(k, "center", "coincides with the previous key section's");
+        // Sections whose planes face each other make the sweep turn back on itself: every vertex between them
+        // would have two sections and the deformation would fold.
+        if (k > 0 && dot(key.orientation.axis_z(), keys[k - 1].orientation.axis_z()) < 0)
+            fail(k, "normal", "points against key section " + std::to_string(k - 1) +
+                                  "'s normal (more than 90° from it): the sweep would turn back on itself");
     }
     return keys;
 }

@@ -22,7 +22,8 @@ public:
 
     // Throws std::invalid_argument "key_sections[k].field: problem" for: fewer than two keys, radii of differing
     // counts, fewer than 3 or more than 512 radii, a radius that is not finite and > 0, an orientation that is not
-    // finite or not of unit length (within 1e-6), coinciding consecutive centres, or |Q(t)| below the limit.
+    // finite or not of unit length (within 1e-6), coinciding consecutive centres, consecutive normals more than 90°
+    // apart (reversed), or |Q(t)| below the limit.
     // `parameters`: the keys' t, strictly increasing from 0 to 1; empty = chord lengths of the centres. Edited
     // sweeps keep the parameters of the sweep as first placed, so that an edit of one key section does not shift
     // the sections of every bound vertex along the sweep.

@@ -116,13 +116,14 @@ TEST(SweepSurface, RejectsBadKeySections) {
     bad = keys;
     bad[2].centre = bad[1].centre;
     expect_error(bad, "key_sections[2].center: coincides");
-    // Signs made consistent keep |Q| near 1 for evenly spaced keys; very uneven spacing makes the quadratic
-    // overshoot through the origin of R⁴ (found by a random search).
-    const std::vector<Quaternion> turns{{0.034, -0.015, 0.012, -0.999}, {-0.488, -0.384, 0.616, -0.486},
-                                        {-0.768, -0.428, 0.321, -0.352}, {-0.664, -0.323, 0.120, 0.664}};
-    const double z[] = {0, 0.5059, 0.9908, 1};
     bad = keys;
-    for (std::size_t k = 0; k < 4; ++k) bad[k] = {{0, 0, z[k]}, normalize(turns[k]), bad[k].radii};
+    bad[2].orientation = Quaternion::from_axis_angle({1, 0, 0}, 120);
+    expect_error(bad, "key_sections[2].normal: points against key section 1's normal");
+    // Signs made consistent keep |Q| near 1 for evenly spaced keys; very uneven spacing makes the quadratic
+    // overshoot through the origin of R⁴: here twists about the (shared) normal (found by a random search).
+    const double z[] = {0, 0.8210, 0.9925, 1}, twist[] = {0, 131.4, 248.4, 387.8};
+    bad = keys;
+    for (std::size_t k = 0; k < 4; ++k) bad[k] = {{0, 0, z[k]}, Quaternion::from_axis_angle({0, 0, 1}, twist[k]), bad[k].radii};
     expect_error(bad, "almost half a turn apart");
 }
 

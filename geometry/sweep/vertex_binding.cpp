@@ -41,10 +41,17 @@ VertexBinding SweepBinder::binding_at(const Vec3d& v, double t) const {
 
 std::vector<VertexBinding> SweepBinder::all_roots(const Vec3d& v) const {
     std::vector<VertexBinding> roots;
+    // A point on an end plane, up to rounding, is bound to that end section: with an exact test it could fall
+    // just beyond it and take a far section instead (or none), and jump when the sweep is edited.
+    const double end_tolerance = kEndPlaneTolerance * sweep_.size();
     double previous = dot(v - centre_[0], normal_[0]);
-    if (previous == 0) roots.push_back(binding_at(v, t_[0]));
+    if (std::abs(previous) <= end_tolerance) {
+        roots.push_back(binding_at(v, t_[0]));
+        previous = 0;
+    }
     for (std::size_t i = 1; i < t_.size(); ++i) {
-        const double current = dot(v - centre_[i], normal_[i]);
+        double current = dot(v - centre_[i], normal_[i]);
+        if (i + 1 == t_.size() && std::abs(current) <= end_tolerance) current = 0;
         if (current == 0) {
             roots.push_back(binding_at(v, t_[i]));
         } else if (previous != 0 && (previous < 0) != (current < 0)) {

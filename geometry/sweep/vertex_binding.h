@@ -6,7 +6,7 @@
 //   2. then the smallest |d| (the nearest sweep surface),
 //   3. then the smallest t.
 // A point that no section plane passes through within [0, 1] (beyond the sweep's ends), or that only touches
-// one without crossing it, is not bound. Step 2: v̂ = R(t)ᵀ(v − C(t)) (eq. 6), θ = atan2(v̂_y, v̂_x) of the local
+// one without crossing it, is not bound; a point on an end plane (within kEndPlaneTolerance) is bound to it. Step 2: v̂ = R(t)ᵀ(v − C(t)) (eq. 6), θ = atan2(v̂_y, v̂_x) of the local
 // coordinates (the paper prints tan⁻¹ of global ones) and d = |v̂| − r(θ, t) (eq. 7), |v̂| measured in the
 // section plane (v̂_z is zero at the root up to the refinement tolerance).
 #include <algorithm>
@@ -38,6 +38,8 @@ Vec3d bound_position(const SweepSurface& sweep, const VertexBinding& binding);
 class SweepBinder {
 public:
     static constexpr int kSamplesPerKey = 64;
+    // Points within this fraction of the sweep's size of an end section's plane lie on it.
+    static constexpr double kEndPlaneTolerance = 1e-9;
 
     // `samples_per_key` samples of t per key interval (≥ 2, at most 4096).
     explicit SweepBinder(const SweepSurface& sweep, int samples_per_key = kSamplesPerKey);

@@ -1260,6 +1260,12 @@ JSON
 JSON
   cli_expect 2 deform scenes/data/bunny.obj "$work/one_key.json" -o "$work/out.ply"
   expect_in "$work/stderr" "a sweep needs at least 2 key_sections, got 1" stderr
+  cat >"$work/reversed.json" <<'JSON'
+{"deformers": [{"type": "sweep", "key_sections": [{"center": [0, 0, 0], "radius": 0.1}, {"center": [0, 0, 1], "radius": 0.1, "normal": [0, 0.2, -1]}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/reversed.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "key_sections[1].normal: points against key section 0's normal" stderr
+  expect_no_file "$work/out.ply"
   cat >"$work/bad_weight.json" <<'JSON'
 {"deformers": [{"type": "sweep", "weight_curve": [1, 1.5, 0],
   "key_sections": [{"center": [0, 0, 0], "radius": 0.1}, {"center": [0, 0, 1], "radius": 0.1}]}]}
