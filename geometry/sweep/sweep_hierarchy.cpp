@@ -64,9 +64,8 @@ std::vector<KeySection> SweepHierarchy::placed_keys(const Node& child, const Swe
     return to_absolute(relative);
 }
 
-void SweepHierarchy::keep_volume_ratio(int child) {
-    Node& node = nodes_[std::size_t(child)];
-    const double target = node.volume_ratio * sweep_volume(nodes_[std::size_t(node.parent)].surface);
+void SweepHierarchy::scale_to_volume(int index, double target) {
+    Node& node = nodes_[std::size_t(index)];
     const std::vector<KeySection> keys = node.surface.keys();
     auto volume_at = [&](double scale) { return sweep_volume(SweepSurface(with_radius_scale(keys, scale), node.parameters)); };
     // Secant on the radius scale, starting from the area law V ∝ s².
@@ -88,7 +87,7 @@ void SweepHierarchy::place_children(int node) {
     for (std::size_t c = 0; c < nodes_.size(); ++c) {
         if (nodes_[c].parent != node) continue;
         nodes_[c].surface = SweepSurface(placed_keys(nodes_[c], nodes_[std::size_t(node)].surface), nodes_[c].parameters);
-        if (preserve_volume_) keep_volume_ratio(int(c));
+        if (preserve_volume_) scale_to_volume(int(c), nodes_[c].volume_ratio * sweep_volume(nodes_[std::size_t(node)].surface));
         place_children(int(c));
     }
 }
@@ -105,7 +104,15 @@ void SweepHierarchy::set_keys(int node, std::vector<KeySection> keys) {
         n.bound[0] = bind_key(nodes_[std::size_t(n.parent)].surface, keys[0], n.name + ".key_sections[0]");
     n.shape = to_relative(keys);
     n.surface = std::move(surface);
-    place_children(node);
+    // Rule 3 upwards: an edited child changes its ancestors' volumes by the same factor, so that every ratio
+    // stays; re-placing from the highest of them then carries the edited child and its siblings along.
+    int top = node;
+    for (int child = node; preserve_volume_ && nodes_[std::size_t(child)].parent >= 0; child = top) {
+        const Node& c = nodes_[std::size_t(child)];
+        top = c.parent;
+        scale_to_volume(top, sweep_volume(c.surface) / c.volume_ratio);
+    }
+    place_children(top);
 }
 
 BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<int, Vec3d>>& targets, int max_iterations) {

@@ -12,8 +12,9 @@
 // parent bends as a whole rather than kinking at one key, and a step that would leave the parent invalid — its
 // sections crossing (sweep_fold.h) or any of its lengths stretched or shrunk beyond kMaxPullStretch — is
 // refused like one that does not help: a target that needs such a parent is out of reach and reported so;
-// (3) optional volume-ratio preservation — after an edit each descendant's radii are scaled (solved
-// numerically) so that its volume keeps its ratio to its parent's volume (general volume formula).
+// (3) optional volume-ratio preservation, both ways as the paper has it — after an edit each descendant's radii are
+// scaled (solved numerically) so that its volume keeps its ratio to its parent's volume (general volume formula),
+// and an edited child's ancestors are scaled first so that their ratios to it are kept too.
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,8 +63,8 @@ public:
     const SweepSurface& surface(int node) const { return nodes_[std::size_t(node)].surface; }
     const std::vector<BoundKeySection>& bindings(int node) const { return nodes_[std::size_t(node)].bound; }
 
-    // Rule 1 (and rule 3 when preserve_volume): replaces a root's or branch child's key sections and re-places
-    // every descendant. A branch child's first key section is re-bound where it is now. Throws for loop children.
+    // Rule 1 (and rule 3 when preserve_volume, for the ancestors as well): replaces a root's or branch child's key
+    // sections and re-places every descendant. A branch child's first key section is re-bound where it is now. Throws for loop children.
     void set_keys(int node, std::vector<KeySection> keys);
     // Rule 2: moves the loop child's key sections `targets[i].first` towards the points `targets[i].second` by
     // editing its parent (then rule 1 for everything below the parent). `max_iterations` ≥ 1.
@@ -82,7 +83,8 @@ private:
     };
     void place_children(int node);
     std::vector<KeySection> placed_keys(const Node& child, const SweepSurface& parent) const;
-    void keep_volume_ratio(int child);
+    // Scales the node's radii (a secant solve) so that its volume is `target`.
+    void scale_to_volume(int node, double target);
 
     std::vector<Node> nodes_;
     bool preserve_volume_;

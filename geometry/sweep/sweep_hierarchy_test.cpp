@@ -103,6 +103,22 @@ TEST(SweepHierarchy, VolumeRatiosAreKeptUnderRuleThree) {
     EXPECT_LT(sweep_volume(plain.tree.surface(plain.handle)) / sweep_volume(plain.tree.surface(plain.body)), 0.9 * handle_before);
 }
 
+TEST(SweepHierarchy, AChildEditCarriesItsParentUnderRuleThree) {
+    Teapot pot = make_teapot(true);
+    auto volume = [&](int node) { return sweep_volume(pot.tree.surface(node)); };
+    const double body_before = volume(pot.body), spout_before = volume(pot.spout), handle_before = volume(pot.handle);
+    std::vector<KeySection> spout = pot.tree.surface(pot.spout).keys();
+    for (KeySection& key : spout)
+        for (double& r : key.radii) r *= 1.4;  // about doubles the spout's volume
+    pot.tree.set_keys(pot.spout, spout);
+    const double growth = volume(pot.spout) / spout_before;
+    EXPECT_GT(growth, 1.8);
+    EXPECT_NEAR(volume(pot.body) / body_before / growth, 1, 0.01);    // the body follows the spout
+    EXPECT_NEAR(volume(pot.handle) / handle_before / growth, 1, 0.01);  // and the handle the body
+    // The handle's ends are still on the grown body.
+    EXPECT_LT(off_surface(pot.tree.surface(pot.body), pot.tree.surface(pot.handle).keys()[0].centre), 1e-8);
+}
+
 TEST(SweepHierarchy, PullingTheHandleDeformsTheBody) {
     Teapot pot = make_teapot(false);
     const Vec3d target = pot.handle_keys[2].centre + Vec3d(-0.1, 0, 0.25);
