@@ -6,6 +6,7 @@
 
 #include "geometry/curves/curve_interpolation.h"
 #include "geometry/sweep/sweep_assignment.h"
+#include "geometry/sweep/sweep_coverage.h"
 #include "geometry/sweep/sweep_deformer.h"
 #include "geometry/sweep/sweep_family_deformer.h"
 #include "geometry/sweep/sweep_hierarchy.h"
@@ -126,6 +127,9 @@ public:
                 << ", " << levels_ << " level" << (levels_ > 1 ? "s" : "") << "): " << s.points << " vertices, " << s.bound
                 << " bound (" << s.inside << " inside the sweep, " << s.weighted << " moved), " << s.unbound() << " unbound"
                 << "; binding " << binding_seconds << " s, deformation " << deformation_seconds << " s";
+        const SweepCoverage coverage = sweep_coverage(vertex_neighbours(mesh), deformer.bindings(), deformer.weights());
+        if (const std::string problem = describe(coverage, sweep_.measured_radius_scale); !problem.empty())
+            summary << "; coverage: " << problem;
         return summary.str();
     }
 

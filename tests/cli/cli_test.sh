@@ -1228,6 +1228,11 @@ case_deform_mesh() {  # the bunny's ear bent by its sweep, as PLY and OBJ; stati
   expect_in "$work/stderr" "unbound" stderr
   expect_in "$work/stderr" "wrote $work/bent.ply" stderr
   head -c 200 "$work/bent.ply" | grep -q "element vertex 13934" || fail "PLY header lacks the vertex count"
+  # A sweep too thin for the ear: deform says so and suggests a radius scale.
+  sed -e 's/"measured_radius_scale": 2/"measured_radius_scale": 1.3/' -e 's/"weight_curve": \[1, 1, 1, 1, 0\]/"weight_curve": [1, 1, 1, 0.5, 0]/' \
+    -e 's/"radius": 0.025/"radius": 0.012/' scenes/sweeps/bunny_ear_bend.json >"$work/thin.json"
+  cli_expect 0 deform scenes/data/bunny.obj "$work/thin.json" -o "$work/thin.ply"
+  expect_in "$work/stderr" "10 edges leave the sweep through its surface from moved vertices (out to 1.01 × its radius: measured_radius_scale 1.45 would enclose them)" stderr
   cli_expect 0 deform scenes/data/teapot.bpt scenes/sweeps/teapot_pull.json -o "$work/teapot.obj" --quiet
   [[ ! -s "$work/stderr" ]] || { show_output; fail "--quiet printed something"; }
   (($(grep -c '^v ' "$work/teapot.obj") > 1000)) || fail "too few vertices in the OBJ"
