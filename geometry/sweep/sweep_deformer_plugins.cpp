@@ -135,7 +135,7 @@ public:
 
 private:
     MultiResolutionSweep initial(const TriangleMeshData& mesh) const {
-        return at_node(sweep_.node, [&] { return MultiResolutionSweep(sweep_.key_sections(&mesh), levels_); });
+        return at_node(sweep_.node, [&] { return MultiResolutionSweep(sweep_.key_sections(&mesh), levels_, sweep_.spline); });
     }
     void edit(MultiResolutionSweep& sweep) const {
         for (const EditSpec& e : edits_) at_node(e.node, [&] { sweep.edit(e.level, e.key, e.edit); });
@@ -273,8 +273,9 @@ private:
         for (const Member& m : members_)
             at_node(m.sweep.node, [&] {
                 std::vector<KeySection> keys = m.sweep.key_sections(&mesh);
-                return m.parent.empty() ? tree.add_root(m.sweep.name, std::move(keys))
-                                        : tree.add_child(m.sweep.name, std::move(keys), index_of(m.parent), m.attachment);
+                return m.parent.empty() ? tree.add_root(m.sweep.name, std::move(keys), m.sweep.spline)
+                                        : tree.add_child(m.sweep.name, std::move(keys), index_of(m.parent), m.attachment,
+                                                         m.sweep.spline);
             });
         return tree;
     }
@@ -293,12 +294,14 @@ private:
                         tree.pull(node, {{e.key, tree.surface(node).keys()[std::size_t(e.key)].centre + *e.pull}}, max_iterations_);
                     if (!result.converged) {
                         std::ostringstream problem;
-                        if (result.limit.empty())
-                            problem << "pull: backward deformation did not converge: residual " << result.residual << " after "
-                                    << result.iterations << " iterations (max_iterations " << max_iterations_ << ")";
-                        else
+                        if (result.iterations < max_iterations_ && !result.limit.empty()) {  // stalled at a limit
                             problem << "pull: the target is out of reach: residual " << result.residual << " after "
                                     << result.iterations << " iterations; going further, " << result.limit;
+                        } else {
+                            problem << "pull: backward deformation did not converge: residual " << result.residual << " after "
+                                    << result.iterations << " iterations (max_iterations " << max_iterations_ << ")";
+                            if (!result.limit.empty()) problem << "; steps were held back: " << result.limit;
+                        }
                         throw std::invalid_argument(problem.str());
                     }
                     summary << "; pull of " << e.sweep << "[" << e.key << "]: residual " << result.residual << " after "

@@ -29,17 +29,18 @@ std::vector<KeySection> with_radius_scale(std::vector<KeySection> keys, double s
 
 }  // namespace
 
-int SweepHierarchy::add_root(std::string name, std::vector<KeySection> keys) {
-    SweepSurface surface(keys);
+int SweepHierarchy::add_root(std::string name, std::vector<KeySection> keys, SweepSpline spline) {
+    SweepSurface surface(keys, {}, spline);
     std::vector<double> parameters = surface.key_parameters();
     nodes_.push_back({std::move(name), -1, Attachment::root, std::move(surface), std::move(parameters), to_relative(keys), {}, 1});
     return int(nodes_.size()) - 1;
 }
 
-int SweepHierarchy::add_child(std::string name, std::vector<KeySection> keys, int parent, Attachment attachment) {
+int SweepHierarchy::add_child(std::string name, std::vector<KeySection> keys, int parent, Attachment attachment,
+                              SweepSpline spline) {
     if (parent < 0 || parent >= int(nodes_.size())) throw std::invalid_argument(name + ".parent: no such sweep");
     if (attachment == Attachment::root) throw std::invalid_argument(name + ".attachment: a child is a branch or a loop");
-    SweepSurface surface(keys);
+    SweepSurface surface(keys, {}, spline);
     std::vector<double> parameters = surface.key_parameters();
     Node node{name, parent, attachment, std::move(surface), std::move(parameters), to_relative(keys), {}, 1};
     const SweepSurface& parent_surface = nodes_[std::size_t(parent)].surface;
@@ -67,7 +68,9 @@ std::vector<KeySection> SweepHierarchy::placed_keys(const Node& child, const Swe
 void SweepHierarchy::scale_to_volume(int index, double target) {
     Node& node = nodes_[std::size_t(index)];
     const std::vector<KeySection> keys = node.surface.keys();
-    auto volume_at = [&](double scale) { return sweep_volume(SweepSurface(with_radius_scale(keys, scale), node.parameters)); };
+    auto volume_at = [&](double scale) {
+        return sweep_volume(SweepSurface(with_radius_scale(keys, scale), node.parameters, node.surface.spline()));
+    };
     // Secant on the radius scale, starting from the area law V ∝ s².
     double s0 = 1, v0 = volume_at(1);
     double s1 = std::sqrt(std::max(target / v0, 1e-6)), v1 = volume_at(s1);
@@ -80,13 +83,14 @@ void SweepHierarchy::scale_to_volume(int index, double target) {
     }
     for (RelativeKeySection& key : node.shape)
         for (double& r : key.radii) r *= s1;
-    node.surface = SweepSurface(with_radius_scale(keys, s1), node.parameters);
+    node.surface = SweepSurface(with_radius_scale(keys, s1), node.parameters, node.surface.spline());
 }
 
 void SweepHierarchy::place_children(int node) {
     for (std::size_t c = 0; c < nodes_.size(); ++c) {
         if (nodes_[c].parent != node) continue;
-        nodes_[c].surface = SweepSurface(placed_keys(nodes_[c], nodes_[std::size_t(node)].surface), nodes_[c].parameters);
+        nodes_[c].surface = SweepSurface(placed_keys(nodes_[c], nodes_[std::size_t(node)].surface), nodes_[c].parameters,
+                                         nodes_[c].surface.spline());
         if (preserve_volume_) scale_to_volume(int(c), nodes_[c].volume_ratio * sweep_volume(nodes_[std::size_t(node)].surface));
         place_children(int(c));
     }
@@ -99,7 +103,7 @@ void SweepHierarchy::set_keys(int node, std::vector<KeySection> keys) {
     if (keys.size() != n.parameters.size())
         throw std::invalid_argument(n.name + ".key_sections: the sweep has " + std::to_string(n.parameters.size()) +
                                     " key sections, got " + std::to_string(keys.size()));
-    SweepSurface surface(keys, n.parameters);
+    SweepSurface surface(keys, n.parameters, n.surface.spline());
     if (n.attachment == Attachment::branch)
         n.bound[0] = bind_key(nodes_[std::size_t(n.parent)].surface, keys[0], n.name + ".key_sections[0]");
     n.shape = to_relative(keys);
@@ -154,7 +158,9 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         return std::sqrt(sum / double(targets.size()));
     };
 
-    auto surface_of = [&](const std::vector<double>& x) { return SweepSurface(parent_keys(x), nodes_[std::size_t(parent)].parameters); };
+    auto surface_of = [&](const std::vector<double>& x) {
+        return SweepSurface(parent_keys(x), nodes_[std::size_t(parent)].parameters, start_surface.spline());
+    };
     // Why the parent `p` may not be used ("" when it may).
     auto refusal = [&](const SweepSurface& p) -> std::string {
         if (std::string fold = sweep_fold(p); !fold.empty()) return "the " + parent_name + " sweep's " + fold;
@@ -227,12 +233,10 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
                 damping *= 4;
             }
         }
-        if (!improved) {  // stalled: the targets are out of reach
-            result.limit = refused;
-            break;
-        }
+        if (!improved) break;  // stalled: the targets are out of reach
     }
     result.converged = result.residual <= kBackwardTolerance * size;
+    if (!result.converged) result.limit = refused;
     set_keys(parent, parent_keys(x));
     return result;
 }

@@ -36,7 +36,7 @@ struct BackwardResult {
     int iterations = 0;
     double residual = 0;  // RMS distance of the targeted keys from their targets after the last iteration
     bool converged = false;
-    std::string limit;    // when it stalled short of the targets after refusing a step: why ("the body sweep's sections ... cross")
+    std::string limit;    // when not converged: why its last refused step was refused ("the body sweep's sections ... cross")
 };
 
 class SweepHierarchy {
@@ -51,10 +51,11 @@ public:
     // `preserve_volume`: rule 3 (each child's volume ratio to its parent, measured when it is added, is kept).
     explicit SweepHierarchy(bool preserve_volume = false) : preserve_volume_(preserve_volume) {}
 
-    int add_root(std::string name, std::vector<KeySection> keys);
+    int add_root(std::string name, std::vector<KeySection> keys, SweepSpline spline = SweepSpline::cubic);
     // Binds the child's key sections (the first or all) to the parent's current sweep. Throws
     // std::invalid_argument "<name>.key_sections[k]: ..." when a key section to be bound has no binding.
-    int add_child(std::string name, std::vector<KeySection> keys, int parent, Attachment attachment);
+    int add_child(std::string name, std::vector<KeySection> keys, int parent, Attachment attachment,
+                  SweepSpline spline = SweepSpline::cubic);
 
     std::size_t size() const { return nodes_.size(); }
     const std::string& name(int node) const { return nodes_[std::size_t(node)].name; }

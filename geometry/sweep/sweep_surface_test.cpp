@@ -87,6 +87,28 @@ TEST(SweepSurface, RelativeKeySectionsCarryTheFollowingKeysAlong) {
     }
 }
 
+TEST(SweepSurface, ShapePreservingSplineDoesNotNarrowNextToWidenedKeys) {
+    // Widening the middle of a cylinder: the cubic's radii dip below the unedited ones next to the widened keys
+    // (a teapot's bottom shrinks when its belly is widened); the shape-preserving spline's stay at or above them.
+    std::vector<KeySection> keys = sweep_test::cylinder(1, 6, 7);
+    for (std::size_t k : {3u, 4u})
+        for (double& r : keys[k].radii) r *= 1.3;
+    auto narrowest = [&](SweepSpline spline) {
+        const SweepSurface sweep(keys, {}, spline);
+        double low = INFINITY;
+        for (int i = 0; i <= 600; ++i) low = std::min(low, sweep.radius(0.3, i / 600.0));
+        return low;
+    };
+    EXPECT_LT(narrowest(SweepSpline::cubic), 0.99);
+    EXPECT_GE(narrowest(SweepSpline::shape_preserving), 1 - 1e-12);
+    const SweepSurface sweep(keys, {}, SweepSpline::shape_preserving);
+    for (const KeySection& key : keys) {  // still through every key section
+        const double t = sweep.key_parameters()[std::size_t(&key - keys.data())];
+        EXPECT_LT(length(sweep.centre(t) - key.centre), 1e-12);
+        EXPECT_NEAR(sweep.radius(0.3, t), key.radii[0], 1e-12);
+    }
+}
+
 TEST(SweepSurface, RejectsBadKeySections) {
     auto expect_error = [](std::vector<KeySection> keys, const std::string& fragment) {
         try {
