@@ -339,10 +339,10 @@ private:
 
 ISOTRACE_REGISTER_PLUGIN(mesh_deformer_registry, "sweep",
                          "sweep-based free-form deformation: key_sections, name, mode (local/global), weight_curve, levels, "
-                         "edits, radius_samples, relative, measure, measured_radius_scale, weights_as_uv",
+                         "edits, radius_samples, relative, measure, measured_radius_scale, spline, weights_as_uv",
                          [](const SceneNode& node) -> std::unique_ptr<MeshDeformer> { return std::make_unique<SingleSweepDeformer>(node); })
 ISOTRACE_REGISTER_PLUGIN(mesh_deformer_registry, "sweep_hierarchy",
-                         "tree of sweeps (branch/loop children): sweeps, edits (incl. pull), preserve_volume, max_iterations",
+                         "tree of sweeps (branch/loop children): sweeps, edits (incl. pull), preserve_volume, max_iterations, blend",
                          [](const SceneNode& node) -> std::unique_ptr<MeshDeformer> { return std::make_unique<HierarchyDeformer>(node); })
 
 }  // namespace isotrace
