@@ -251,6 +251,10 @@ public:
         for (std::size_t n = 0; n < tree.size(); ++n) head << ", " << counts[n] << " on " << tree.name(int(n));
         head << ", " << unbound << " unbound; binding " << binding_seconds << " s, deformation "
              << seconds_since(deformation_start) << " s";
+        if (tree.preserves_volume()) {
+            head << "; volume ratios to the parent, now over before:";
+            for (std::size_t n = 1; n < tree.size(); ++n) head << " " << tree.name(int(n)) << " " << tree.volume_ratio_drift(int(n));
+        }
         return head.str() + pulls;
     }
 

@@ -86,6 +86,12 @@ void SweepHierarchy::scale_to_volume(int index, double target) {
     node.surface = SweepSurface(with_radius_scale(keys, s1), node.parameters, node.surface.spline());
 }
 
+double SweepHierarchy::volume_ratio_drift(int child) const {
+    const Node& node = nodes_[std::size_t(child)];
+    const double ratio = sweep_volume(node.surface) / sweep_volume(nodes_[std::size_t(node.parent)].surface);
+    return preserve_volume_ ? ratio / node.volume_ratio : 1;
+}
+
 void SweepHierarchy::place_children(int node) {
     for (std::size_t c = 0; c < nodes_.size(); ++c) {
         if (nodes_[c].parent != node) continue;

@@ -63,6 +63,9 @@ public:
     Attachment attachment(int node) const { return nodes_[std::size_t(node)].attachment; }
     const SweepSurface& surface(int node) const { return nodes_[std::size_t(node)].surface; }
     const std::vector<BoundKeySection>& bindings(int node) const { return nodes_[std::size_t(node)].bound; }
+    bool preserves_volume() const { return preserve_volume_; }
+    // A child's volume ratio to its parent now, over the ratio when it was added (rule 3 keeps it at 1).
+    double volume_ratio_drift(int child) const;
 
     // Rule 1 (and rule 3 when preserve_volume, for the ancestors as well): replaces a root's or branch child's key
     // sections and re-places every descendant. A branch child's first key section is re-bound where it is now. Throws for loop children.

@@ -1310,6 +1310,17 @@ case_deform_sweep_figures_quality() {
         if (s + 0 > 2.5) { print spec ": edge stretch " s "x > 2.5x"; exit 1 } } } END { if (!found) exit 1 }' \
       "$work/stderr" || { show_output; fail "$spec stretches an edge too far"; }
   done
+  expect_in "$work/stderr" "volume ratios to the parent, now over before: spout 1 handle 1" "teapot_volume's stderr"
+  # Rule 3 from a child: widening the spout widens the body and, through it, the handle.
+  python3 - scenes/sweeps/teapot_volume.json "$work/child.json" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec["deformers"][0]["edits"] = [{"sweep": "spout", "key": 0, "scale_radii": 1.4}]
+json.dump(spec, open(sys.argv[2], "w"))
+PY
+  cli_expect 0 deform scenes/data/teapot.bpt "$work/child.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "volume ratios to the parent, now over before: spout 1 handle 1" stderr
+  expect_in "$work/stderr" "mesh quality: 0 flipped faces" stderr
 }
 
 # Pulls the parent cannot follow without folding or stretching beyond its reach are refused with the residual and
