@@ -3,6 +3,7 @@
 // against the input's orientation, the largest factor by which an edge grew, and edges that pass through a
 // triangle they do not touch (self-intersections), counted in the output and, for comparison, in the input.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "geometry/mesh/triangle_mesh_data.h"
@@ -18,6 +19,10 @@ struct MeshQuality {
 
     static constexpr double kStretchLimit = 2;
 };
+
+// Peak working memory per triangle while measuring: the edge list (three pairs before duplicates go) and a traced
+// copy of the mesh with Embree's BVH (about 200 bytes per triangle, as measured for sweep tubes).
+inline constexpr std::uint64_t kMeshQualityBytesPerTriangle = 3 * 2 * sizeof(std::uint32_t) + 200;
 
 // `before` and `after` have the same triangles; throws std::invalid_argument otherwise.
 MeshQuality measure_mesh_quality(const TriangleMeshData& before, const TriangleMeshData& after);

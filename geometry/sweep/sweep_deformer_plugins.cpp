@@ -30,14 +30,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 constexpr std::uint64_t kBindingStepsPerVertex = 150;
 // What binding holds per sample of t: the parameter, the centre and the normal there.
 constexpr std::uint64_t kBinderBytesPerSample = sizeof(double) + 2 * sizeof(Vec3d);
+// A vertex's neighbours (about six, in a vector) and its node in the map of positions (vertex_neighbours).
+constexpr std::uint64_t kNeighbourBytesPerVertex = sizeof(std::vector<std::uint32_t>) + 6 * sizeof(std::uint32_t) + 64;
 // What a sweep deformer holds per vertex: the positions in double and its copy of them, the bindings, weights,
-// moved positions and uvs.
-constexpr std::uint64_t kSweepBytesPerVertex =
-    3 * sizeof(Vec3d) + sizeof(std::optional<VertexBinding>) + sizeof(double) + sizeof(std::array<float, 2>);
-// A hierarchy's: the positions in double, each vertex's sweep and group, its distance and neighbours (about six, in a
-// vector, and a position map node) while sweeps are assigned; per sweep, its binding.
-constexpr std::uint64_t kHierarchyBytesPerVertex =
-    sizeof(Vec3d) + 2 * sizeof(int) + sizeof(double) + sizeof(std::vector<std::uint32_t>) + 6 * sizeof(std::uint32_t) + 64;
+// moved positions and uvs, and the neighbours for the coverage check.
+constexpr std::uint64_t kSweepBytesPerVertex = 3 * sizeof(Vec3d) + sizeof(std::optional<VertexBinding>) + sizeof(double) +
+                                               sizeof(std::array<float, 2>) + kNeighbourBytesPerVertex;
+// A hierarchy's: the positions in double, each vertex's sweep and group, its distance and neighbours while sweeps
+// are assigned; per sweep, its binding.
+constexpr std::uint64_t kHierarchyBytesPerVertex = sizeof(Vec3d) + 2 * sizeof(int) + sizeof(double) + kNeighbourBytesPerVertex;
 constexpr std::uint64_t kHierarchyBytesPerBinding = sizeof(std::optional<VertexBinding>);
 // Keeping a child's volume ratio rebuilds it once per secant step, at most this many times.
 constexpr std::uint64_t kVolumeRebuilds = 42;

@@ -1887,6 +1887,10 @@ case_checkpoint_lost_is_a_failure() {  # "wrote checkpoint" used to follow "no c
 case_max_memory_every_command() {  # mesh, depth, deform and diff had no limit but 80 % of physical memory
   cli_expect 2 deform scenes/data/teapot.bpt scenes/sweeps/teapot_pull.json -o "$work/t.ply" --max-memory 2M
   expect_in "$work/stderr" "more than the memory limit of 2.1 MB" stderr
+  # The quality check (not with --quiet) is charged too: the bunny's traced copy and edge list.
+  cli_expect 0 deform scenes/data/bunny.obj scenes/sweeps/bunny_ear_bend.json -o "$work/q.ply" --max-memory 12M --quiet
+  cli_expect 2 deform scenes/data/bunny.obj scenes/sweeps/bunny_ear_bend.json -o "$work/r.ply" --max-memory 12M
+  expect_in "$work/stderr" "needs about 8.93 MB (on top of 6.95 MB already needed)" stderr
   cli_expect 2 mesh scenes/metacube_dog.json --max-memory 1M -o "$work/m.ply"
   expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
   cli_expect 2 depth "$cornell" --max-memory 1M --res 1024x1024 -o "$work/d.png"

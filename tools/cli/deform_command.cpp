@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "geometry/mesh/mesh_deformer.h"
 #include "geometry/mesh/mesh_file.h"
@@ -39,7 +40,17 @@ int run_deform(const DeformArguments& args) {
     const auto memory = std::make_shared<MemoryBudget>(
         max_memory_bytes(args.max_memory).value_or(MemoryBudget::default_limit_bytes()));
     TriangleMeshData mesh = load_mesh_file(args.mesh, *memory);
-    const TriangleMeshData input = mesh;
+    // The quality check (not with --quiet) compares with a copy of the input.
+    std::optional<MemoryReservation> quality_memory;
+    if (!args.quiet) {
+        const std::uint64_t copy = saturating_sum({saturating_product({mesh.positions.size(), sizeof(Vec3f)}),
+                                                   saturating_product({mesh.normals.size(), sizeof(Vec3f)}),
+                                                   saturating_product({mesh.uvs.size(), sizeof(mesh.uvs[0])}),
+                                                   saturating_product({mesh.triangles.size(), sizeof(mesh.triangles[0])})});
+        quality_memory.emplace(*memory, saturating_sum({copy, saturating_product({mesh.triangles.size(), kMeshQualityBytesPerTriangle})}),
+                               "the input mesh's copy and the quality check of the output");
+    }
+    const TriangleMeshData input = args.quiet ? TriangleMeshData{} : mesh;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh, memory);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
