@@ -7,7 +7,8 @@
 
 namespace isotrace {
 
-MultiResolutionSweep::MultiResolutionSweep(const std::vector<KeySection>& keys, int levels) {
+MultiResolutionSweep::MultiResolutionSweep(const std::vector<KeySection>& keys, int levels, SweepSpline spline)
+    : spline_(spline) {
     if (levels < 1 || levels > kMaxLevels)
         throw std::invalid_argument("levels: must be in [1, " + std::to_string(kMaxLevels) + "], got " +
                                     std::to_string(levels));
@@ -50,7 +51,7 @@ std::vector<KeySection> MultiResolutionSweep::keys_at(int level) const {
 SweepSurface MultiResolutionSweep::surface(int level) const {
     if (level < 1 || level > levels())
         throw std::invalid_argument("level: must be in [1, " + std::to_string(levels()) + "], got " + std::to_string(level));
-    return SweepSurface(keys_at(level), parameters_[std::size_t(level - 1)]);
+    return SweepSurface(keys_at(level), parameters_[std::size_t(level - 1)], spline_);
 }
 
 void MultiResolutionSweep::edit(int level, int key, const KeyEdit& e) {

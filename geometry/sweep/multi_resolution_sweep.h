@@ -18,7 +18,7 @@ public:
     static constexpr int kMaxLevels = 6;
 
     // `levels` ≥ 1 (at most kMaxLevels). Throws std::invalid_argument for bad key sections (SweepSurface) or levels.
-    MultiResolutionSweep(const std::vector<KeySection>& keys, int levels);
+    MultiResolutionSweep(const std::vector<KeySection>& keys, int levels, SweepSpline spline = SweepSpline::cubic);
 
     int levels() const { return int(offsets_.size()) + 1; }
     // Key sections of level ℓ (1-based): the user's keys at level 1, 2^(ℓ−1)·(n − 1) + 1 keys at level ℓ.
@@ -41,6 +41,7 @@ private:
     std::vector<KeySection> keys_at(int level) const;
 
     std::vector<RelativeKeySection> base_;
+    SweepSpline spline_;
     std::vector<std::vector<double>> parameters_;  // [level − 1]: the keys' t, fixed when the levels are made
     std::vector<std::vector<Offset>> offsets_;  // [level − 2][key]
 };

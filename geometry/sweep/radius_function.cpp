@@ -4,11 +4,13 @@
 #include <numbers>
 
 #include "geometry/curves/curve_interpolation.h"
+#include "geometry/curves/shape_preserving_curve.h"
 
 namespace isotrace {
-RadiusFunction::RadiusFunction(const std::vector<std::vector<double>>& radii, const std::vector<double>& parameters)
+RadiusFunction::RadiusFunction(const std::vector<std::vector<double>>& radii, const std::vector<double>& parameters,
+                               bool shape_preserving)
     : samples_(int(radii.front().size())),
-      t_knots_(interpolation_knots(parameters, 3)),
+      t_knots_(shape_preserving ? shape_preserving_knots(parameters) : interpolation_knots(parameters, 3)),
       theta_knots_(KnotVector::uniform(3, samples_ + 3)) {
     const std::size_t m = std::size_t(samples_);
     // θ first: the periodic control points of each key; then t: each θ control column interpolated over the keys.
@@ -18,8 +20,9 @@ RadiusFunction::RadiusFunction(const std::vector<std::vector<double>>& radii, co
     for (std::size_t j = 0; j < m; ++j) {
         std::vector<double> column;
         for (const auto& key : per_key) column.push_back(key[j]);
-        const BSplineCurve<double> curve = interpolate_curve(column, parameters, 3);
-        for (std::size_t i = 0; i < curve.control_points().size(); ++i) control_[i * m + j] = curve.control_points()[i];
+        const std::vector<double> points = shape_preserving ? shape_preserving_control_points(column, parameters)
+                                                            : interpolate_curve(column, parameters, 3).control_points();
+        for (std::size_t i = 0; i < points.size(); ++i) control_[i * m + j] = points[i];
     }
 }
 

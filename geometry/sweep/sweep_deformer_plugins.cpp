@@ -5,12 +5,15 @@
 #include <sstream>
 
 #include "geometry/curves/curve_interpolation.h"
+#include "geometry/sweep/sweep_assignment.h"
+#include "geometry/sweep/sweep_coverage.h"
 #include "geometry/sweep/sweep_deformer.h"
 #include "geometry/sweep/sweep_family_deformer.h"
 #include "geometry/sweep/sweep_hierarchy.h"
 #include "geometry/sweep/sweep_spec.h"
 #include "geometry/sweep/sweep_surface.h"
 #include "geometry/sweep/sweep_tessellation.h"
+#include "geometry/sweep/vertex_group.h"
 #include "renderer/core/memory_budget.h"
 #include "renderer/core/parallel_for.h"
 
@@ -27,12 +30,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 constexpr std::uint64_t kBindingStepsPerVertex = 150;
 // What binding holds per sample of t: the parameter, the centre and the normal there.
 constexpr std::uint64_t kBinderBytesPerSample = sizeof(double) + 2 * sizeof(Vec3d);
+// A vertex's neighbours (about six, in a vector) and its node in the map of positions (vertex_neighbours).
+constexpr std::uint64_t kNeighbourBytesPerVertex = sizeof(std::vector<std::uint32_t>) + 6 * sizeof(std::uint32_t) + 64;
 // What a sweep deformer holds per vertex: the positions in double and its copy of them, the bindings, weights,
-// moved positions and uvs.
-constexpr std::uint64_t kSweepBytesPerVertex =
-    3 * sizeof(Vec3d) + sizeof(std::optional<VertexBinding>) + sizeof(double) + sizeof(std::array<float, 2>);
-// A hierarchy's: the positions in double, each vertex's sweep and binding.
-constexpr std::uint64_t kHierarchyBytesPerVertex = sizeof(Vec3d) + sizeof(int) + sizeof(VertexBinding);
+// moved positions and uvs, and the neighbours for the coverage check.
+constexpr std::uint64_t kSweepBytesPerVertex = 3 * sizeof(Vec3d) + sizeof(std::optional<VertexBinding>) + sizeof(double) +
+                                               sizeof(std::array<float, 2>) + kNeighbourBytesPerVertex;
+// A hierarchy's: the positions in double, each vertex's sweep and group, its distance and neighbours while sweeps
+// are assigned; per sweep, its binding.
+constexpr std::uint64_t kHierarchyBytesPerVertex = sizeof(Vec3d) + 2 * sizeof(int) + sizeof(double) + kNeighbourBytesPerVertex;
+constexpr std::uint64_t kHierarchyBytesPerBinding = sizeof(std::optional<VertexBinding>);
 // Keeping a child's volume ratio rebuilds it once per secant step, at most this many times.
 constexpr std::uint64_t kVolumeRebuilds = 42;
 
@@ -46,6 +53,18 @@ std::uint64_t construction_steps(const SweepSpec& sweep, std::uint64_t keys) {
 // Radii measured on the mesh trace a copy of it (RadiusProbe): as much memory per triangle as a traced tube.
 std::uint64_t probe_bytes(const SweepSpec& sweep, const TriangleMeshData& mesh) {
     return sweep.measures_radii() ? saturating_product({mesh.triangles.size(), kSweepTubeTrianglePeakBytes}) : 0;
+}
+
+// The mean of a sweep's key radii: the scale of the band over which two sweeps' vertices are blended.
+double mean_radius(const SweepSurface& sweep) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (const KeySection& key : sweep.keys())
+        for (double r : key.radii) {
+            sum += r;
+            ++count;
+        }
+    return sum / double(count);
 }
 
 std::vector<Vec3d> positions_of(const TriangleMeshData& mesh) {
@@ -109,12 +128,15 @@ public:
                 << ", " << levels_ << " level" << (levels_ > 1 ? "s" : "") << "): " << s.points << " vertices, " << s.bound
                 << " bound (" << s.inside << " inside the sweep, " << s.weighted << " moved), " << s.unbound() << " unbound"
                 << "; binding " << binding_seconds << " s, deformation " << deformation_seconds << " s";
+        const SweepCoverage coverage = sweep_coverage(vertex_neighbours(mesh), deformer.bindings(), deformer.weights());
+        if (const std::string problem = describe(coverage, sweep_.measured_radius_scale); !problem.empty())
+            summary << "; coverage: " << problem;
         return summary.str();
     }
 
 private:
     MultiResolutionSweep initial(const TriangleMeshData& mesh) const {
-        return at_node(sweep_.node, [&] { return MultiResolutionSweep(sweep_.key_sections(&mesh), levels_); });
+        return at_node(sweep_.node, [&] { return MultiResolutionSweep(sweep_.key_sections(&mesh), levels_, sweep_.spline); });
     }
     void edit(MultiResolutionSweep& sweep) const {
         for (const EditSpec& e : edits_) at_node(e.node, [&] { sweep.edit(e.level, e.key, e.edit); });
@@ -132,9 +154,10 @@ class HierarchyDeformer final : public SweepFamilyDeformer {
 public:
     explicit HierarchyDeformer(const SceneNode& node)
         : preserve_volume_(node.boolean_or("preserve_volume", false)),
-          max_iterations_(node.integer_or("max_iterations", 50, NumberRange::between(1, 10000))) {
+          max_iterations_(node.integer_or("max_iterations", 50, NumberRange::between(1, 10000))),
+          blend_(node.number_or("blend", 0.5, NumberRange::between(0, 10))) {
         for (const SceneNode& s : node.object_array("sweeps")) {
-            Member m{parse_sweep_spec(s), s.string_or("parent", ""), Attachment::root};
+            Member m{parse_sweep_spec(s), s.string_or("parent", ""), Attachment::root, parse_vertex_group(s)};
             if (m.sweep.name.empty()) s.fail("every sweep of a hierarchy needs a \"name\"");
             if (!m.parent.empty()) {
                 if (index_of(m.parent) < 0) s.fail_at("parent", "no earlier sweep is called \"" + m.parent + "\"");
@@ -166,6 +189,7 @@ public:
         Cost cost{saturating_sum({saturating_product({vertices, samples + kBindingStepsPerVertex * members_.size()}),
                                   saturating_product({rebuild, edits_.size() + 1})}),
                   saturating_sum({saturating_product({vertices, kHierarchyBytesPerVertex}),
+                                  saturating_product({vertices, members_.size(), kHierarchyBytesPerBinding}),
                                   samples * kBinderBytesPerSample, probe})};
         std::uint64_t solver_bytes = 0;
         for (const EditSpec& e : edits_) {
@@ -194,55 +218,69 @@ public:
 
     std::string apply(TriangleMeshData& mesh) const override {
         SweepHierarchy tree = build(mesh);
-        // Each vertex follows the sweep it lies deepest in: the smallest u = (r + d)/r of its bindings.
         const auto binding_start = std::chrono::steady_clock::now();
         const std::vector<Vec3d> points = positions_of(mesh);
-        std::vector<SweepBinder> binders;
-        for (std::size_t n = 0; n < tree.size(); ++n) binders.emplace_back(tree.surface(int(n)));
-        std::vector<int> owner(points.size(), -1);
-        std::vector<VertexBinding> bindings(points.size());
-        parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
-            double best = INFINITY;
-            for (std::size_t n = 0; n < binders.size(); ++n) {
-                const auto b = binders[n].bind(points[i]);
-                if (!b) continue;
-                const double u = 1 + b->d / tree.surface(int(n)).radius(b->theta, b->t);
-                if (u < best) {
-                    best = u;
-                    owner[i] = int(n);
-                    bindings[i] = *b;
-                }
-            }
-        });
+        std::vector<std::vector<std::optional<VertexBinding>>> bindings(tree.size());
+        for (std::size_t n = 0; n < tree.size(); ++n) {
+            const SweepBinder binder(tree.surface(int(n)));
+            bindings[n].resize(points.size());
+            parallel_for(std::size_t(0), points.size(), [&](std::size_t i) { bindings[n][i] = binder.bind(points[i]); });
+        }
+        const VertexNeighbours next = vertex_neighbours(mesh);
+        const std::vector<int> owner = assign_sweeps(mesh, next, bindings, grouped(mesh));
+        std::vector<double> widths;
+        for (std::size_t n = 0; n < tree.size(); ++n) widths.push_back(blend_ * mean_radius(tree.surface(int(n))));
+        const std::vector<std::vector<SweepShare>> shares = blend_sweeps(mesh, next, bindings, owner, widths);
         const double binding_seconds = seconds_since(binding_start);
         const auto deformation_start = std::chrono::steady_clock::now();
         const std::string pulls = edit(tree);
         std::vector<std::size_t> counts(tree.size(), 0);
         std::size_t unbound = 0;
         for (std::size_t i = 0; i < points.size(); ++i) {
-            if (owner[i] < 0) {
+            if (owner[i] < 0 || !bindings[std::size_t(owner[i])][i]) {
                 ++unbound;
                 continue;
             }
             ++counts[std::size_t(owner[i])];
-            mesh.positions[i] = Vec3f(bound_position(tree.surface(owner[i]), bindings[i]));
+            Vec3d moved;
+            for (const SweepShare& s : shares[i])
+                moved += s.weight * bound_position(tree.surface(s.sweep), *bindings[std::size_t(s.sweep)][i]);
+            mesh.positions[i] = Vec3f(moved);
         }
         std::ostringstream head;
         head << "sweep hierarchy: " << points.size() << " vertices";
         for (std::size_t n = 0; n < tree.size(); ++n) head << ", " << counts[n] << " on " << tree.name(int(n));
         head << ", " << unbound << " unbound; binding " << binding_seconds << " s, deformation "
              << seconds_since(deformation_start) << " s";
+        if (tree.preserves_volume()) {
+            head << "; volume ratios to the parent, now over before:";
+            for (std::size_t n = 1; n < tree.size(); ++n) head << " " << tree.name(int(n)) << " " << tree.volume_ratio_drift(int(n));
+        }
         return head.str() + pulls;
     }
 
 private:
+    // The sweep each vertex's explicit group puts it in (−1: none); empty when no sweep has a group.
+    std::vector<int> grouped(const TriangleMeshData& mesh) const {
+        std::vector<std::string> names;
+        for (const Member& m : members_) names.push_back(m.sweep.name);
+        std::vector<int> groups;
+        for (std::size_t n = 0; n < members_.size(); ++n) {
+            if (!members_[n].group) continue;
+            groups.resize(mesh.positions.size(), -1);
+            mark_vertex_group(*members_[n].group, mesh, int(n), names, groups);
+        }
+        return groups;
+    }
+
     SweepHierarchy build(const TriangleMeshData& mesh) const {
         SweepHierarchy tree(preserve_volume_);
         for (const Member& m : members_)
             at_node(m.sweep.node, [&] {
                 std::vector<KeySection> keys = m.sweep.key_sections(&mesh);
-                return m.parent.empty() ? tree.add_root(m.sweep.name, std::move(keys))
-                                        : tree.add_child(m.sweep.name, std::move(keys), index_of(m.parent), m.attachment);
+                return m.parent.empty() ? tree.add_root(m.sweep.name, std::move(keys), m.sweep.spline)
+                                        : tree.add_child(m.sweep.name, std::move(keys), index_of(m.parent), m.attachment,
+                                                         m.sweep.spline);
             });
         return tree;
     }
@@ -261,8 +299,14 @@ private:
                         tree.pull(node, {{e.key, tree.surface(node).keys()[std::size_t(e.key)].centre + *e.pull}}, max_iterations_);
                     if (!result.converged) {
                         std::ostringstream problem;
-                        problem << "pull: backward deformation did not converge: residual " << result.residual << " after "
-                                << result.iterations << " iterations (max_iterations " << max_iterations_ << ")";
+                        if (result.iterations < max_iterations_ && !result.limit.empty()) {  // stalled at a limit
+                            problem << "pull: the target is out of reach: residual " << result.residual << " after "
+                                    << result.iterations << " iterations; going further, " << result.limit;
+                        } else {
+                            problem << "pull: backward deformation did not converge: residual " << result.residual << " after "
+                                    << result.iterations << " iterations (max_iterations " << max_iterations_ << ")";
+                            if (!result.limit.empty()) problem << "; steps were held back: " << result.limit;
+                        }
                         throw std::invalid_argument(problem.str());
                     }
                     summary << "; pull of " << e.sweep << "[" << e.key << "]: residual " << result.residual << " after "
@@ -281,6 +325,7 @@ private:
         SweepSpec sweep;
         std::string parent;
         Attachment attachment;
+        std::optional<VertexGroupSpec> group;
     };
     int index_of(const std::string& name) const {
         for (std::size_t i = 0; i < members_.size(); ++i)
@@ -290,6 +335,7 @@ private:
 
     bool preserve_volume_;
     int max_iterations_;
+    double blend_;
     std::vector<Member> members_;
     std::vector<EditSpec> edits_;
 };
@@ -298,10 +344,10 @@ private:
 
 ISOTRACE_REGISTER_PLUGIN(mesh_deformer_registry, "sweep",
                          "sweep-based free-form deformation: key_sections, name, mode (local/global), weight_curve, levels, "
-                         "edits, radius_samples, relative, measure, measured_radius_scale, weights_as_uv",
+                         "edits, radius_samples, relative, measure, measured_radius_scale, spline, weights_as_uv",
                          [](const SceneNode& node) -> std::unique_ptr<MeshDeformer> { return std::make_unique<SingleSweepDeformer>(node); })
 ISOTRACE_REGISTER_PLUGIN(mesh_deformer_registry, "sweep_hierarchy",
-                         "tree of sweeps (branch/loop children): sweeps, edits (incl. pull), preserve_volume, max_iterations",
+                         "tree of sweeps (branch/loop children): sweeps, edits (incl. pull), preserve_volume, max_iterations, blend",
                          [](const SceneNode& node) -> std::unique_ptr<MeshDeformer> { return std::make_unique<HierarchyDeformer>(node); })
 
 }  // namespace isotrace

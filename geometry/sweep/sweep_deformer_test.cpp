@@ -95,11 +95,37 @@ TEST(SweepDeformer, SmallEditsKeepEveryPointOnItsBranch) {
             const auto after = rebinder.bind(moved[i]);
             ASSERT_TRUE(after) << i;
             EXPECT_NEAR(after->t, before->t, 1e-6) << i;
-            EXPECT_NEAR(after->d, before->d, 1e-6) << i;
+            // Inside points keep their share of the section's radius.
+            EXPECT_NEAR(1 + after->d / after->radius, 1 + before->d / before->radius, 1e-6) << i;
             ++compared;
         }
         EXPECT_GT(compared, 200u);
     }
+}
+
+TEST(SweepDeformer, WideningASectionScalesWhatIsInsideIt) {
+    // A thin plate through the axis of a cylinder: widened sections must spread it, not tear it at the axis.
+    const SweepSurface sweep(sweep_test::cylinder(1, 3));
+    const std::vector<Vec3d> points = {{-0.01, 0, 1.5}, {0.01, 0, 1.5}, {0.5, 0, 1.5}, {1.5, 0, 1.5}};
+    const SweepDeformer deformer(sweep, points, SweepDeformer::Mode::global);
+    const std::vector<Vec3d> moved = deformer.deform(SweepSurface(sweep_test::cylinder(2, 3)));
+    EXPECT_NEAR(length(moved[1] - moved[0]), 0.04, 1e-9);  // twice as far apart, not 2 + 0.02
+    EXPECT_NEAR(moved[2].x, 1.0, 1e-9);                    // half way out stays half way out
+    EXPECT_NEAR(moved[3].x, 2.5, 1e-9);                    // outside: keeps its distance from the surface
+}
+
+TEST(SweepDeformer, PointsOnAnEndPlaneBindToThatEnd) {
+    const SweepSurface sweep(sweep_test::cylinder(0.5, 2));
+    const SweepBinder binder(sweep);
+    for (const double z : {-1e-12, 0.0, 1e-12}) {
+        const auto start = binder.bind({0.2, 0.1, z});
+        ASSERT_TRUE(start) << z;
+        EXPECT_NEAR(start->t, 0, 1e-9);
+        const auto end = binder.bind({0.2, 0.1, 2 + z});
+        ASSERT_TRUE(end) << z;
+        EXPECT_NEAR(end->t, 1, 1e-9);
+    }
+    EXPECT_FALSE(binder.bind({0.2, 0.1, -1e-6}));  // beyond the end, not on it
 }
 
 TEST(SweepDeformer, ChoosesTheContainingSectionThenTheNearestSurface) {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "geometry/curves/dense_solve.h"
+#include "geometry/sweep/sweep_fold.h"
 #include "geometry/sweep/sweep_volume.h"
 
 namespace isotrace {
@@ -28,17 +29,18 @@ std::vector<KeySection> with_radius_scale(std::vector<KeySection> keys, double s
 
 }  // namespace
 
-int SweepHierarchy::add_root(std::string name, std::vector<KeySection> keys) {
-    SweepSurface surface(keys);
+int SweepHierarchy::add_root(std::string name, std::vector<KeySection> keys, SweepSpline spline) {
+    SweepSurface surface(keys, {}, spline);
     std::vector<double> parameters = surface.key_parameters();
     nodes_.push_back({std::move(name), -1, Attachment::root, std::move(surface), std::move(parameters), to_relative(keys), {}, 1});
     return int(nodes_.size()) - 1;
 }
 
-int SweepHierarchy::add_child(std::string name, std::vector<KeySection> keys, int parent, Attachment attachment) {
+int SweepHierarchy::add_child(std::string name, std::vector<KeySection> keys, int parent, Attachment attachment,
+                              SweepSpline spline) {
     if (parent < 0 || parent >= int(nodes_.size())) throw std::invalid_argument(name + ".parent: no such sweep");
     if (attachment == Attachment::root) throw std::invalid_argument(name + ".attachment: a child is a branch or a loop");
-    SweepSurface surface(keys);
+    SweepSurface surface(keys, {}, spline);
     std::vector<double> parameters = surface.key_parameters();
     Node node{name, parent, attachment, std::move(surface), std::move(parameters), to_relative(keys), {}, 1};
     const SweepSurface& parent_surface = nodes_[std::size_t(parent)].surface;
@@ -63,11 +65,12 @@ std::vector<KeySection> SweepHierarchy::placed_keys(const Node& child, const Swe
     return to_absolute(relative);
 }
 
-void SweepHierarchy::keep_volume_ratio(int child) {
-    Node& node = nodes_[std::size_t(child)];
-    const double target = node.volume_ratio * sweep_volume(nodes_[std::size_t(node.parent)].surface);
+void SweepHierarchy::scale_to_volume(int index, double target) {
+    Node& node = nodes_[std::size_t(index)];
     const std::vector<KeySection> keys = node.surface.keys();
-    auto volume_at = [&](double scale) { return sweep_volume(SweepSurface(with_radius_scale(keys, scale), node.parameters)); };
+    auto volume_at = [&](double scale) {
+        return sweep_volume(SweepSurface(with_radius_scale(keys, scale), node.parameters, node.surface.spline()));
+    };
     // Secant on the radius scale, starting from the area law V ∝ s².
     double s0 = 1, v0 = volume_at(1);
     double s1 = std::sqrt(std::max(target / v0, 1e-6)), v1 = volume_at(s1);
@@ -80,14 +83,21 @@ void SweepHierarchy::keep_volume_ratio(int child) {
     }
     for (RelativeKeySection& key : node.shape)
         for (double& r : key.radii) r *= s1;
-    node.surface = SweepSurface(with_radius_scale(keys, s1), node.parameters);
+    node.surface = SweepSurface(with_radius_scale(keys, s1), node.parameters, node.surface.spline());
+}
+
+double SweepHierarchy::volume_ratio_drift(int child) const {
+    const Node& node = nodes_[std::size_t(child)];
+    const double ratio = sweep_volume(node.surface) / sweep_volume(nodes_[std::size_t(node.parent)].surface);
+    return preserve_volume_ ? ratio / node.volume_ratio : 1;
 }
 
 void SweepHierarchy::place_children(int node) {
     for (std::size_t c = 0; c < nodes_.size(); ++c) {
         if (nodes_[c].parent != node) continue;
-        nodes_[c].surface = SweepSurface(placed_keys(nodes_[c], nodes_[std::size_t(node)].surface), nodes_[c].parameters);
-        if (preserve_volume_) keep_volume_ratio(int(c));
+        nodes_[c].surface = SweepSurface(placed_keys(nodes_[c], nodes_[std::size_t(node)].surface), nodes_[c].parameters,
+                                         nodes_[c].surface.spline());
+        if (preserve_volume_) scale_to_volume(int(c), nodes_[c].volume_ratio * sweep_volume(nodes_[std::size_t(node)].surface));
         place_children(int(c));
     }
 }
@@ -99,12 +109,20 @@ void SweepHierarchy::set_keys(int node, std::vector<KeySection> keys) {
     if (keys.size() != n.parameters.size())
         throw std::invalid_argument(n.name + ".key_sections: the sweep has " + std::to_string(n.parameters.size()) +
                                     " key sections, got " + std::to_string(keys.size()));
-    SweepSurface surface(keys, n.parameters);
+    SweepSurface surface(keys, n.parameters, n.surface.spline());
     if (n.attachment == Attachment::branch)
         n.bound[0] = bind_key(nodes_[std::size_t(n.parent)].surface, keys[0], n.name + ".key_sections[0]");
     n.shape = to_relative(keys);
     n.surface = std::move(surface);
-    place_children(node);
+    // Rule 3 upwards: an edited child changes its ancestors' volumes by the same factor, so that every ratio
+    // stays; re-placing from the highest of them then carries the edited child and its siblings along.
+    int top = node;
+    for (int child = node; preserve_volume_ && nodes_[std::size_t(child)].parent >= 0; child = top) {
+        const Node& c = nodes_[std::size_t(child)];
+        top = c.parent;
+        scale_to_volume(top, sweep_volume(c.surface) / c.volume_ratio);
+    }
+    place_children(top);
 }
 
 BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<int, Vec3d>>& targets, int max_iterations) {
@@ -130,8 +148,9 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         }
         return keys;
     };
-    auto residual = [&](const std::vector<double>& x) {
-        const SweepSurface p(parent_keys(x), nodes_[std::size_t(parent)].parameters);
+    const SweepSurface& start_surface = nodes_[std::size_t(parent)].surface;
+    const std::string& parent_name = nodes_[std::size_t(parent)].name;
+    auto residual = [&](const SweepSurface& p) {
         std::vector<double> e;
         for (const auto& [key, target] : targets) {
             const Vec3d at = bound_position(p, child.bound[std::size_t(key)].position);
@@ -145,9 +164,31 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         return std::sqrt(sum / double(targets.size()));
     };
 
-    std::vector<double> x(unknowns, 0.0), e = residual(x);
+    auto surface_of = [&](const std::vector<double>& x) {
+        return SweepSurface(parent_keys(x), nodes_[std::size_t(parent)].parameters, start_surface.spline());
+    };
+    // Why the parent `p` may not be used ("" when it may).
+    auto refusal = [&](const SweepSurface& p) -> std::string {
+        if (std::string fold = sweep_fold(p); !fold.empty()) return "the " + parent_name + " sweep's " + fold;
+        if (sweep_stretch(start_surface, p) > kMaxPullStretch)
+            return "the " + parent_name + " sweep would stretch or shrink more than " + std::to_string(int(kMaxPullStretch)) + "×";
+        return {};
+    };
+    // The step metric: identity plus kPullSmoothness × the squared differences of neighbouring keys' unknowns.
+    std::vector<double> metric(unknowns * unknowns, 0.0);
+    for (std::size_t a = 0; a < unknowns; ++a) metric[a * unknowns + a] = 1;
+    for (std::size_t k = 0; k + 1 < start.size(); ++k)
+        for (std::size_t c = 0; c < 4; ++c) {
+            const std::size_t a = 4 * k + c, b = 4 * (k + 1) + c;
+            metric[a * unknowns + a] += kPullSmoothness;
+            metric[b * unknowns + b] += kPullSmoothness;
+            metric[a * unknowns + b] -= kPullSmoothness;
+            metric[b * unknowns + a] -= kPullSmoothness;
+        }
+    std::vector<double> x(unknowns, 0.0), e = residual(start_surface);
     BackwardResult result;
     result.residual = rms(e);
+    std::string refused;  // why the last refused step was refused
     double damping = 0.1 * size;
     const double h = 1e-7 * size;
     while (result.iterations < max_iterations && result.residual > kBackwardTolerance * size) {
@@ -156,7 +197,7 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         for (std::size_t j = 0; j < unknowns; ++j) {
             std::vector<double> shifted = x;
             shifted[j] += h;
-            const std::vector<double> e2 = residual(shifted);
+            const std::vector<double> e2 = residual(surface_of(shifted));
             for (std::size_t i = 0; i < equations; ++i) jacobian[i * unknowns + j] = (e[i] - e2[i]) / h;
         }
         // (JᵀJ + λ²I)·Δx = Jᵀe; a step that does not reduce the residual raises λ, a good one lowers it.
@@ -166,7 +207,7 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
             for (std::size_t a = 0; a < unknowns; ++a) {
                 for (std::size_t i = 0; i < equations; ++i) rhs[a] += jacobian[i * unknowns + a] * e[i];
                 for (std::size_t b = 0; b < unknowns; ++b) {
-                    double sum = a == b ? damping * damping : 0;
+                    double sum = damping * damping * metric[a * unknowns + b];
                     for (std::size_t i = 0; i < equations; ++i) sum += jacobian[i * unknowns + a] * jacobian[i * unknowns + b];
                     normal[a * unknowns + b] = sum;
                 }
@@ -176,8 +217,15 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
             for (std::size_t a = 0; a < unknowns; ++a) trial[a] += step[a];
             std::vector<double> trial_e;
             try {
-                trial_e = residual(trial);
-            } catch (const std::invalid_argument&) {  // the step broke the parent (coinciding keys): damp more
+                const SweepSurface p = surface_of(trial);
+                if (std::string why = refusal(p); !why.empty()) {  // a valid parent only: damp more
+                    refused = std::move(why);
+                    damping *= 4;
+                    continue;
+                }
+                trial_e = residual(p);
+            } catch (const std::invalid_argument& broken) {  // coinciding keys: damp more
+                refused = "the " + parent_name + " sweep would break (" + broken.what() + ")";
                 damping *= 4;
                 continue;
             }
@@ -194,6 +242,7 @@ BackwardResult SweepHierarchy::pull(int loop_child, const std::vector<std::pair<
         if (!improved) break;  // stalled: the targets are out of reach
     }
     result.converged = result.residual <= kBackwardTolerance * size;
+    if (!result.converged) result.limit = refused;
     set_keys(parent, parent_keys(x));
     return result;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/sweep/sweep_fold.h"
 #include "geometry/sweep/sweep_hierarchy.h"
 #include "geometry/sweep/sweep_test_support.h"
 #include "geometry/sweep/sweep_volume.h"
@@ -102,6 +103,22 @@ TEST(SweepHierarchy, VolumeRatiosAreKeptUnderRuleThree) {
     EXPECT_LT(sweep_volume(plain.tree.surface(plain.handle)) / sweep_volume(plain.tree.surface(plain.body)), 0.9 * handle_before);
 }
 
+TEST(SweepHierarchy, AChildEditCarriesItsParentUnderRuleThree) {
+    Teapot pot = make_teapot(true);
+    auto volume = [&](int node) { return sweep_volume(pot.tree.surface(node)); };
+    const double body_before = volume(pot.body), spout_before = volume(pot.spout), handle_before = volume(pot.handle);
+    std::vector<KeySection> spout = pot.tree.surface(pot.spout).keys();
+    for (KeySection& key : spout)
+        for (double& r : key.radii) r *= 1.4;  // about doubles the spout's volume
+    pot.tree.set_keys(pot.spout, spout);
+    const double growth = volume(pot.spout) / spout_before;
+    EXPECT_GT(growth, 1.8);
+    EXPECT_NEAR(volume(pot.body) / body_before / growth, 1, 0.01);    // the body follows the spout
+    EXPECT_NEAR(volume(pot.handle) / handle_before / growth, 1, 0.01);  // and the handle the body
+    // The handle's ends are still on the grown body.
+    EXPECT_LT(off_surface(pot.tree.surface(pot.body), pot.tree.surface(pot.handle).keys()[0].centre), 1e-8);
+}
+
 TEST(SweepHierarchy, PullingTheHandleDeformsTheBody) {
     Teapot pot = make_teapot(false);
     const Vec3d target = pot.handle_keys[2].centre + Vec3d(-0.1, 0, 0.25);
@@ -131,6 +148,25 @@ TEST(SweepHierarchy, UnreachableTargetReportsItsResidual) {
     EXPECT_THROW(pot.tree.set_keys(pot.handle, pot.handle_keys), std::invalid_argument);
     EXPECT_THROW(pot.tree.pull(pot.spout, {{0, {0, 0, 0}}}), std::invalid_argument);
     EXPECT_THROW(pot.tree.pull(pot.handle, {{7, {0, 0, 0}}}), std::invalid_argument);
+}
+
+TEST(SweepHierarchy, APullBeyondTheParentsReachStopsAndSaysWhy) {
+    Teapot pot = make_teapot(false);
+    const SweepSurface body_before = pot.tree.surface(pot.body);
+    const BackwardResult far = pot.tree.pull(pot.handle, {{2, pot.handle_keys[2].centre + Vec3d(0, 0, 1000)}}, 200);
+    EXPECT_FALSE(far.converged);
+    EXPECT_GT(far.residual, 900);
+    EXPECT_NE(far.limit.find("the body sweep would stretch or shrink more than 2×"), std::string::npos) << far.limit;
+    EXPECT_LE(sweep_stretch(body_before, pot.tree.surface(pot.body)), SweepHierarchy::kMaxPullStretch);
+    EXPECT_EQ(sweep_fold(pot.tree.surface(pot.body)), "");
+}
+
+TEST(SweepHierarchy, AReachablePullKeepsTheParentsSectionsInOrder) {
+    Teapot pot = make_teapot(false);
+    const BackwardResult result = pot.tree.pull(pot.handle, {{2, pot.handle_keys[2].centre + Vec3d(0, 0, 0.5)}});
+    EXPECT_TRUE(result.converged);
+    EXPECT_EQ(result.limit, "");
+    EXPECT_EQ(sweep_fold(pot.tree.surface(pot.body)), "");
 }
 
 TEST(SweepHierarchy, KeySectionOutsideTheParentIsAnError) {

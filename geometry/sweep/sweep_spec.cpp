@@ -44,7 +44,9 @@ Quaternion parse_orientation(const SceneNode& key) {
 SweepSpec parse_sweep_spec(const SceneNode& node) {
     SweepSpec spec{node, node.string_or("name", ""), {}, node.integer_or("radius_samples", 16, NumberRange::between(3, 512)),
                    node.boolean_or("relative", false), node.number_or("measured_radius_scale", 1, NumberRange::between(0.01, 100)),
-                   node.choice_or("measure", "radii", {"radii", "circle"}) == "circle"};
+                   node.choice_or("measure", "radii", {"radii", "circle"}) == "circle",
+                   node.choice_or("spline", "cubic", {"cubic", "shape_preserving"}) == "cubic" ? SweepSpline::cubic
+                                                                                         : SweepSpline::shape_preserving};
     for (const SceneNode& key : node.object_array("key_sections")) {
         KeySectionSpec k{key, key.vec3("center"), parse_orientation(key), {}};
         if (key.has("radii") && key.has("radius")) key.fail("give \"radii\" or \"radius\", not both");

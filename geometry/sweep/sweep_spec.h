@@ -10,6 +10,7 @@
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "geometry/sweep/key_section.h"
 #include "geometry/sweep/multi_resolution_sweep.h"
+#include "geometry/sweep/sweep_surface.h"
 #include "renderer/params/scene_node.h"
 
 namespace isotrace {
@@ -29,6 +30,7 @@ struct SweepSpec {
     bool relative = false;  // key centres and rotations relative to the previous key section
     double measured_radius_scale = 1;  // measured radii are multiplied by it (a sweep should enclose its part)
     bool measure_circle = false;       // measured sections become circles of the largest measured radius
+    SweepSpline spline = SweepSpline::cubic;
 
     // Radii per key section: those given, or the samples measured.
     std::size_t radius_count() const {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geometry/curves/curve_interpolation.h"
+#include "geometry/curves/shape_preserving_curve.h"
 
 namespace isotrace {
 namespace {
@@ -42,6 +43,11 @@ std::vector<KeySection> checked(std::vector<KeySection> keys) {
             if (!(key.radii[j] > 0) || !std::isfinite(key.radii[j]))
                 fail(k, "radii[" + std::to_string(j) + "]", "must be finite and > 0, got " + number(key.radii[j]));
         if (k > 0 && key.centre == keys[k - 1].centre) fail(k, "center", "coincides with the previous key section's");
+        // Sections whose planes face each other make the sweep turn back on itself: every vertex between them
+        // would have two sections and the deformation would fold.
+        if (k > 0 && dot(key.orientation.axis_z(), keys[k - 1].orientation.axis_z()) < 0)
+            fail(k, "normal", "points against key section " + std::to_string(k - 1) +
+                                  "'s normal (more than 90° from it): the sweep would turn back on itself");
     }
     return keys;
 }
@@ -71,12 +77,14 @@ std::vector<std::vector<double>> radii_of(const std::vector<KeySection>& keys) {
 
 }  // namespace
 
-SweepSurface::SweepSurface(std::vector<KeySection> keys, std::vector<double> parameters)
+SweepSurface::SweepSurface(std::vector<KeySection> keys, std::vector<double> parameters, SweepSpline spline)
     : keys_(checked(std::move(keys))),
       parameters_(parameters.empty() ? chord_length_parameters(centres_of(keys_)) : std::move(parameters)),
-      centre_(interpolate_curve(centres_of(keys_), parameters_, 3)),
+      spline_(spline),
+      centre_(spline == SweepSpline::cubic ? interpolate_curve(centres_of(keys_), parameters_, 3)
+                                           : shape_preserving_curve(centres_of(keys_), parameters_)),
       orientation_(interpolate_curve(consistent_orientations(keys_), parameters_, 2)),
-      radius_(radii_of(keys_), parameters_) {
+      radius_(radii_of(keys_), parameters_, spline == SweepSpline::shape_preserving) {
     // The |Q| guard, on a sampling fine enough for a quadratic between keys.
     const int samples = 64 * int(keys_.size());
     for (int i = 0; i <= samples; ++i) {

@@ -14,6 +14,11 @@
 
 namespace isotrace {
 
+// How the centre curve and the radii run between key sections: the paper's cubic interpolating B-spline (C²,
+// but it overshoots: widening two key sections narrows their neighbours), or shape-preserving piecewise cubics
+// (C¹, never beyond the values of the two key sections around; geometry/curves/shape_preserving_curve.h).
+enum class SweepSpline { cubic, shape_preserving };
+
 class SweepSurface {
 public:
     // Smallest |Q(t)| accepted; below it the normalised orientation swings too fast to be meaningful (two
@@ -22,11 +27,13 @@ public:
 
     // Throws std::invalid_argument "key_sections[k].field: problem" for: fewer than two keys, radii of differing
     // counts, fewer than 3 or more than 512 radii, a radius that is not finite and > 0, an orientation that is not
-    // finite or not of unit length (within 1e-6), coinciding consecutive centres, or |Q(t)| below the limit.
+    // finite or not of unit length (within 1e-6), coinciding consecutive centres, consecutive normals more than 90°
+    // apart (reversed), or |Q(t)| below the limit.
     // `parameters`: the keys' t, strictly increasing from 0 to 1; empty = chord lengths of the centres. Edited
     // sweeps keep the parameters of the sweep as first placed, so that an edit of one key section does not shift
     // the sections of every bound vertex along the sweep.
-    explicit SweepSurface(std::vector<KeySection> keys, std::vector<double> parameters = {});
+    explicit SweepSurface(std::vector<KeySection> keys, std::vector<double> parameters = {},
+                          SweepSpline spline = SweepSpline::cubic);
 
     // About the operations the constructor's interpolation takes for `keys` key sections of `radius_samples`
     // radii: a banded solve over the keys per radius sample and a cyclic one over the radii per key.
@@ -36,6 +43,7 @@ public:
 
     const std::vector<KeySection>& keys() const { return keys_; }
     const std::vector<double>& key_parameters() const { return parameters_; }
+    SweepSpline spline() const { return spline_; }
     int radius_samples() const { return radius_.samples(); }
 
     Vec3d centre(double t) const { return centre_(t); }
@@ -54,6 +62,7 @@ public:
 private:
     std::vector<KeySection> keys_;
     std::vector<double> parameters_;
+    SweepSpline spline_;
     DifferentiableCurve<Vec3d> centre_;
     DifferentiableCurve<Quaternion> orientation_;
     RadiusFunction radius_;

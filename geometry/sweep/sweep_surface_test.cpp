@@ -87,6 +87,28 @@ TEST(SweepSurface, RelativeKeySectionsCarryTheFollowingKeysAlong) {
     }
 }
 
+TEST(SweepSurface, ShapePreservingSplineDoesNotNarrowNextToWidenedKeys) {
+    // Widening the middle of a cylinder: the cubic's radii dip below the unedited ones next to the widened keys
+    // (a teapot's bottom shrinks when its belly is widened); the shape-preserving spline's stay at or above them.
+    std::vector<KeySection> keys = sweep_test::cylinder(1, 6, 7);
+    for (std::size_t k : {3u, 4u})
+        for (double& r : keys[k].radii) r *= 1.3;
+    auto narrowest = [&](SweepSpline spline) {
+        const SweepSurface sweep(keys, {}, spline);
+        double low = INFINITY;
+        for (int i = 0; i <= 600; ++i) low = std::min(low, sweep.radius(0.3, i / 600.0));
+        return low;
+    };
+    EXPECT_LT(narrowest(SweepSpline::cubic), 0.99);
+    EXPECT_GE(narrowest(SweepSpline::shape_preserving), 1 - 1e-12);
+    const SweepSurface sweep(keys, {}, SweepSpline::shape_preserving);
+    for (const KeySection& key : keys) {  // still through every key section
+        const double t = sweep.key_parameters()[std::size_t(&key - keys.data())];
+        EXPECT_LT(length(sweep.centre(t) - key.centre), 1e-12);
+        EXPECT_NEAR(sweep.radius(0.3, t), key.radii[0], 1e-12);
+    }
+}
+
 TEST(SweepSurface, RejectsBadKeySections) {
     auto expect_error = [](std::vector<KeySection> keys, const std::string& fragment) {
         try {
@@ -116,13 +138,14 @@ TEST(SweepSurface, RejectsBadKeySections) {
     bad = keys;
     bad[2].centre = bad[1].centre;
     expect_error(bad, "key_sections[2].center: coincides");
-    // Signs made consistent keep |Q| near 1 for evenly spaced keys; very uneven spacing makes the quadratic
-    // overshoot through the origin of R⁴ (found by a random search).
-    const std::vector<Quaternion> turns{{0.034, -0.015, 0.012, -0.999}, {-0.488, -0.384, 0.616, -0.486},
-                                        {-0.768, -0.428, 0.321, -0.352}, {-0.664, -0.323, 0.120, 0.664}};
-    const double z[] = {0, 0.5059, 0.9908, 1};
     bad = keys;
-    for (std::size_t k = 0; k < 4; ++k) bad[k] = {{0, 0, z[k]}, normalize(turns[k]), bad[k].radii};
+    bad[2].orientation = Quaternion::from_axis_angle({1, 0, 0}, 120);
+    expect_error(bad, "key_sections[2].normal: points against key section 1's normal");
+    // Signs made consistent keep |Q| near 1 for evenly spaced keys; very uneven spacing makes the quadratic
+    // overshoot through the origin of R⁴: here twists about the (shared) normal (found by a random search).
+    const double z[] = {0, 0.8210, 0.9925, 1}, twist[] = {0, 131.4, 248.4, 387.8};
+    bad = keys;
+    for (std::size_t k = 0; k < 4; ++k) bad[k] = {{0, 0, z[k]}, Quaternion::from_axis_angle({0, 0, 1}, twist[k]), bad[k].radii};
     expect_error(bad, "almost half a turn apart");
 }
 

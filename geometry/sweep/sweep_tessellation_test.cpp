@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geometry/mesh/mesh_closedness.h"
+#include "geometry/mesh/mesh_quality.h"
 #include "geometry/mesh/vertex_normals.h"
 #include "geometry/sweep/sweep_surface.h"
 #include "geometry/sweep/sweep_test_support.h"
@@ -59,6 +60,28 @@ TEST(SweepTessellation, UnwrappedSeamsGiveEveryTriangleAShortSpanOfVWithoutMovin
         }
     }
     EXPECT_EQ(closed_mesh_problem(mesh), "");  // still closed: vertices count by position
+}
+
+// The torso of scenes/sweep_torso.json (Fig. 2): turning its third key section by 30° keeps every face of the tube
+// facing out, stretches no edge beyond 2.5× and makes the tube cross itself nowhere.
+TEST(SweepTessellation, TorsoFigureBendsWithoutFolding) {
+    const std::vector<std::vector<double>> radii = {
+        {0.34, 0.3099, 0.2612, 0.23, 0.22, 0.23, 0.2612, 0.3099, 0.34, 0.3099, 0.2612, 0.23, 0.22, 0.23, 0.2612, 0.3099},
+        {0.27, 0.2442, 0.2034, 0.1781, 0.17, 0.1781, 0.2034, 0.2442, 0.27, 0.2442, 0.2034, 0.1781, 0.17, 0.1781, 0.2034, 0.2442},
+        {0.33, 0.2994, 0.2506, 0.2198, 0.21, 0.2198, 0.2506, 0.2994, 0.33, 0.2994, 0.2506, 0.2198, 0.21, 0.2198, 0.2506, 0.2994},
+        {0.42, 0.343, 0.2554, 0.2124, 0.2, 0.2124, 0.2554, 0.343, 0.42, 0.343, 0.2554, 0.2124, 0.2, 0.2124, 0.2554, 0.343},
+        {0.11, 0.1083, 0.1046, 0.1013, 0.1, 0.1013, 0.1046, 0.1083, 0.11, 0.1083, 0.1046, 0.1013, 0.1, 0.1013, 0.1046, 0.1083}};
+    const double rise[] = {0, 0.32, 0.3, 0.28, 0.2};
+    std::vector<RelativeKeySection> chain;
+    for (std::size_t k = 0; k < 5; ++k)
+        chain.push_back({{0, k == 0 ? 0.9 : 0.0, rise[k]}, k == 0 ? Quaternion::from_axis_angle({1, 0, 0}, -90) : Quaternion::identity(), radii[k]});
+    const SweepSurface modelled(to_absolute(chain));
+    edit_key_section(chain, 2, {{}, Quaternion::from_axis_angle({0, 1, 0}, 30), 1, 0});
+    const SweepSurface turned(to_absolute(chain), modelled.key_parameters());
+    const MeshQuality q = measure_mesh_quality(tessellate(modelled), tessellate(turned));
+    EXPECT_EQ(q.flipped_faces, 0u) << describe(q);
+    EXPECT_LE(q.max_edge_stretch, 2.5);
+    EXPECT_EQ(q.crossing_edges, 0u);
 }
 
 }  // namespace

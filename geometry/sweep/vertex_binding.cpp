@@ -8,7 +8,8 @@
 namespace isotrace {
 
 Vec3d bound_position(const SweepSurface& sweep, const VertexBinding& b) {
-    const double rho = sweep.radius(b.theta, b.t) + b.d;
+    const double r = sweep.radius(b.theta, b.t);
+    const double rho = b.d < 0 && b.radius > 0 ? r * (b.radius + b.d) / b.radius : r + b.d;
     return sweep.place({rho * std::cos(b.theta), rho * std::sin(b.theta), 0}, b.t);
 }
 
@@ -33,16 +34,24 @@ VertexBinding SweepBinder::binding_at(const Vec3d& v, double t) const {
     VertexBinding b;
     b.t = t;
     b.theta = std::atan2(local.y, local.x);
-    b.d = std::hypot(local.x, local.y) - sweep_.radius(b.theta, t);
+    b.radius = sweep_.radius(b.theta, t);
+    b.d = std::hypot(local.x, local.y) - b.radius;
     return b;
 }
 
 std::vector<VertexBinding> SweepBinder::all_roots(const Vec3d& v) const {
     std::vector<VertexBinding> roots;
+    // A point on an end plane, up to rounding, is bound to that end section: with an exact test it could fall
+    // just beyond it and take a far section instead (or none), and jump when the sweep is edited.
+    const double end_tolerance = kEndPlaneTolerance * sweep_.size();
     double previous = dot(v - centre_[0], normal_[0]);
-    if (previous == 0) roots.push_back(binding_at(v, t_[0]));
+    if (std::abs(previous) <= end_tolerance) {
+        roots.push_back(binding_at(v, t_[0]));
+        previous = 0;
+    }
     for (std::size_t i = 1; i < t_.size(); ++i) {
-        const double current = dot(v - centre_[i], normal_[i]);
+        double current = dot(v - centre_[i], normal_[i]);
+        if (i + 1 == t_.size() && std::abs(current) <= end_tolerance) current = 0;
         if (current == 0) {
             roots.push_back(binding_at(v, t_[i]));
         } else if (previous != 0 && (previous < 0) != (current < 0)) {

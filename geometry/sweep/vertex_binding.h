@@ -6,7 +6,7 @@
 //   2. then the smallest |d| (the nearest sweep surface),
 //   3. then the smallest t.
 // A point that no section plane passes through within [0, 1] (beyond the sweep's ends), or that only touches
-// one without crossing it, is not bound. Step 2: v̂ = R(t)ᵀ(v − C(t)) (eq. 6), θ = atan2(v̂_y, v̂_x) of the local
+// one without crossing it, is not bound; a point on an end plane (within kEndPlaneTolerance) is bound to it. Step 2: v̂ = R(t)ᵀ(v − C(t)) (eq. 6), θ = atan2(v̂_y, v̂_x) of the local
 // coordinates (the paper prints tan⁻¹ of global ones) and d = |v̂| − r(θ, t) (eq. 7), |v̂| measured in the
 // section plane (v̂_z is zero at the root up to the refinement tolerance).
 #include <algorithm>
@@ -25,15 +25,21 @@ struct VertexBinding {
     double theta = 0;  // (−π, π]
     double t = 0;      // [0, 1]
     double d = 0;      // signed distance from the surface within the section, < 0 inside
+    double radius = 0; // r(θ, t) when bound (0: unknown, eq. (8) as printed for every point)
 };
 
-// Eq. (8) with θ_i: C(t) + R(t)·((r(θ,t) + d)·cos θ, (r(θ,t) + d)·sin θ, 0) on any (edited) sweep.
+// Eq. (8) with θ_i: C(t) + R(t)·(ρ·cos θ, ρ·sin θ, 0) on any (edited) sweep, ρ = r(θ,t) + d outside the sweep.
+// Inside it (d < 0, radius known) ρ = r(θ,t)·(radius + d)/radius: the point keeps its share of the section's
+// radius, as printed it would keep its depth below the surface, so that a widened section tears points near its
+// axis apart by the whole widening (a thin part through the axis splits) and a narrowed one folds them over it.
 Vec3d bound_position(const SweepSurface& sweep, const VertexBinding& binding);
 
 // Samples C and N once per sweep so that binding many vertices only refines the brackets.
 class SweepBinder {
 public:
     static constexpr int kSamplesPerKey = 64;
+    // Points within this fraction of the sweep's size of an end section's plane lie on it.
+    static constexpr double kEndPlaneTolerance = 1e-9;
 
     // `samples_per_key` samples of t per key interval (≥ 2, at most 4096).
     explicit SweepBinder(const SweepSurface& sweep, int samples_per_key = kSamplesPerKey);

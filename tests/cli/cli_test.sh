@@ -1228,6 +1228,11 @@ case_deform_mesh() {  # the bunny's ear bent by its sweep, as PLY and OBJ; stati
   expect_in "$work/stderr" "unbound" stderr
   expect_in "$work/stderr" "wrote $work/bent.ply" stderr
   head -c 200 "$work/bent.ply" | grep -q "element vertex 13934" || fail "PLY header lacks the vertex count"
+  # A sweep too thin for the ear: deform says so and suggests a radius scale.
+  sed -e 's/"measured_radius_scale": 2/"measured_radius_scale": 1.3/' -e 's/"weight_curve": \[1, 1, 1, 1, 0\]/"weight_curve": [1, 1, 1, 0.5, 0]/' \
+    -e 's/"radius": 0.025/"radius": 0.012/' scenes/sweeps/bunny_ear_bend.json >"$work/thin.json"
+  cli_expect 0 deform scenes/data/bunny.obj "$work/thin.json" -o "$work/thin.ply"
+  expect_in "$work/stderr" "10 edges leave the sweep through its surface from moved vertices (out to 1.01 × its radius: measured_radius_scale 1.45 would enclose them)" stderr
   cli_expect 0 deform scenes/data/teapot.bpt scenes/sweeps/teapot_pull.json -o "$work/teapot.obj" --quiet
   [[ ! -s "$work/stderr" ]] || { show_output; fail "--quiet printed something"; }
   (($(grep -c '^v ' "$work/teapot.obj") > 1000)) || fail "too few vertices in the OBJ"
@@ -1260,6 +1265,12 @@ JSON
 JSON
   cli_expect 2 deform scenes/data/bunny.obj "$work/one_key.json" -o "$work/out.ply"
   expect_in "$work/stderr" "a sweep needs at least 2 key_sections, got 1" stderr
+  cat >"$work/reversed.json" <<'JSON'
+{"deformers": [{"type": "sweep", "key_sections": [{"center": [0, 0, 0], "radius": 0.1}, {"center": [0, 0, 1], "radius": 0.1, "normal": [0, 0.2, -1]}]}]}
+JSON
+  cli_expect 2 deform scenes/data/bunny.obj "$work/reversed.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "key_sections[1].normal: points against key section 0's normal" stderr
+  expect_no_file "$work/out.ply"
   cat >"$work/bad_weight.json" <<'JSON'
 {"deformers": [{"type": "sweep", "weight_curve": [1, 1.5, 0],
   "key_sections": [{"center": [0, 0, 0], "radius": 0.1}, {"center": [0, 0, 1], "radius": 0.1}]}]}
@@ -1285,6 +1296,87 @@ PY
   expect_in "$work/stderr" "edits[0]: pull: backward deformation did not converge: residual" stderr
   expect_in "$work/stderr" "(max_iterations 1)" stderr
   expect_no_file "$work/out.ply"
+}
+
+# Every shipped sweep figure deforms its mesh without turning a face over or stretching an edge past 2.5x, and
+# deform prints the check.
+case_deform_sweep_figures_quality() {
+  local spec mesh
+  for spec in scenes/sweeps/*.json; do
+    case $spec in *teapot*) mesh=scenes/data/teapot.bpt ;; *) mesh=scenes/data/bunny.obj ;; esac
+    cli_expect 0 deform "$mesh" "$spec" -o "$work/out.ply"
+    expect_in "$work/stderr" "mesh quality: 0 flipped faces, max edge stretch" "stderr of $spec"
+    # Where the teapot's parts meet, no edge between two sweeps (nor any other) grows beyond 2x.
+    [[ $spec != *teapot* ]] || expect_in "$work/stderr" "(0 edges > 2×)" "stderr of $spec"
+    awk -v spec="$spec" '/mesh quality:/ { for (i = 1; i <= NF; ++i) if ($i == "stretch") { s = $(i + 1); sub("×", "", s); found = 1
+        if (s + 0 > 2.5) { print spec ": edge stretch " s "x > 2.5x"; exit 1 } } } END { if (!found) exit 1 }' \
+      "$work/stderr" || { show_output; fail "$spec stretches an edge too far"; }
+  done
+  expect_in "$work/stderr" "volume ratios to the parent, now over before: spout 1 handle 1" "teapot_volume's stderr"
+  # Rule 3 from a child: widening the spout widens the body and, through it, the handle.
+  python3 - scenes/sweeps/teapot_volume.json "$work/child.json" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec["deformers"][0]["edits"] = [{"sweep": "spout", "key": 0, "scale_radii": 1.4}]
+json.dump(spec, open(sys.argv[2], "w"))
+PY
+  cli_expect 0 deform scenes/data/teapot.bpt "$work/child.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "volume ratios to the parent, now over before: spout 1 handle 1" stderr
+  expect_in "$work/stderr" "mesh quality: 0 flipped faces" stderr
+}
+
+# Pulls the parent cannot follow without folding or stretching beyond its reach are refused with the residual and
+# the reason, and nothing is written.
+case_deform_pull_out_of_reach() {
+  local pull
+  for pull in "[0, 0, 1000]" "[0, 0, 3]"; do
+    python3 - scenes/sweeps/teapot_pull.json "$work/far.json" "$pull" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec["deformers"][0]["edits"][0]["pull"] = json.loads(sys.argv[3])
+json.dump(spec, open(sys.argv[2], "w"))
+PY
+    cli_expect 2 deform scenes/data/teapot.bpt "$work/far.json" -o "$work/out.ply"
+    [[ $pull != "[0, 0, 1000]" ]] || expect_in "$work/stderr" "pull: the target is out of reach: residual 998" stderr
+    expect_in "$work/stderr" "edits[0]: pull: " stderr
+    expect_in "$work/stderr" "the body sweep would stretch or shrink more than 2×" stderr
+    expect_no_file "$work/out.ply"
+  done
+  expect_in "$work/stderr" "did not converge: residual 1.8" stderr  # 3 units: creeping along the limit
+}
+
+# Explicit vertex groups of a hierarchy: a box or an index list puts vertices in a sweep; groups that name missing
+# vertices, overlap or select nothing are errors at their field.
+case_deform_vertex_groups() {
+  group() {  # group <output> <python statements editing the sweeps list "s">
+    python3 - scenes/sweeps/teapot_body_edit.json "$1" "$2" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+s = spec["deformers"][0]["sweeps"]
+exec(sys.argv[3])
+json.dump(spec, open(sys.argv[2], "w"), indent=1)
+PY
+  }
+  cli_expect 0 deform scenes/data/teapot.bpt scenes/sweeps/teapot_body_edit.json -o "$work/out.ply"
+  expect_in "$work/stderr" "5190 on body, 1056 on spout, 1050 on handle" stderr
+  # Everything beyond x = 1.6 (the spout and a band of the body) named for the spout; what the spout does not bind
+  # (behind its first section) stays.
+  group "$work/box.json" 's[1]["select"] = {"min": [1.6, -5, -5], "max": [5, 5, 5]}'
+  cli_expect 0 deform scenes/data/teapot.bpt "$work/box.json" -o "$work/out.ply"
+  expect_in "$work/stderr" "4937 on body, 1287 on spout, 1050 on handle, 22 unbound" stderr
+  rm "$work/out.ply"
+  bad_group() {  # bad_group <python statements> <expected message>
+    group "$work/bad.json" "$1"
+    cli_expect 2 deform scenes/data/teapot.bpt "$work/bad.json" -o "$work/out.ply"
+    expect_in "$work/stderr" "$2" stderr
+    expect_no_file "$work/out.ply"
+  }
+  bad_group 's[2]["vertices"] = [0, 7296]' "sweeps[2].vertices[1]: vertex 7296 does not exist (the mesh has 7296 vertices)"
+  bad_group 's[1]["vertices"] = [5]; s[2]["vertices"] = [4, 5]' "sweeps[2].vertices[1]: vertex 5 is also in the group of sweep \"spout\""
+  bad_group 's[1]["select"] = {"min": [10, 10, 10], "max": [11, 11, 11]}' "sweeps[1].select: the box selects no vertex of the mesh"
+  bad_group 's[1]["select"] = {"min": [1, 0, 0], "max": [0, 1, 1]}' "sweeps[1].select: \"min\" must not exceed \"max\" on any axis"
+  bad_group 's[1]["vertices"] = [1.5]' "sweeps[1].vertices[0]: a vertex index must be a whole number"
+  bad_group 's[1]["vertices"] = []' "sweeps[1].vertices: the list names no vertex"
 }
 
 # Attribute-based patches: the closed gem of scenes/abm_models.json exported by isotrace mesh is watertight (every
@@ -1879,6 +1971,10 @@ case_checkpoint_lost_is_a_failure() {  # "wrote checkpoint" used to follow "no c
 case_max_memory_every_command() {  # mesh, depth, deform and diff had no limit but 80 % of physical memory
   cli_expect 2 deform scenes/data/teapot.bpt scenes/sweeps/teapot_pull.json -o "$work/t.ply" --max-memory 2M
   expect_in "$work/stderr" "more than the memory limit of 2.1 MB" stderr
+  # The quality check (not with --quiet) is charged too: the bunny's traced copy and edge list.
+  cli_expect 0 deform scenes/data/bunny.obj scenes/sweeps/bunny_ear_bend.json -o "$work/q.ply" --max-memory 12M --quiet
+  cli_expect 2 deform scenes/data/bunny.obj scenes/sweeps/bunny_ear_bend.json -o "$work/r.ply" --max-memory 12M
+  expect_in "$work/stderr" "needs about 8.93 MB (on top of 6.95 MB already needed)" stderr
   cli_expect 2 mesh scenes/metacube_dog.json --max-memory 1M -o "$work/m.ply"
   expect_in "$work/stderr" "more than the memory limit of 1.05 MB" stderr
   cli_expect 2 depth "$cornell" --max-memory 1M --res 1024x1024 -o "$work/d.png"

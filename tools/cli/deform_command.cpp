@@ -1,11 +1,14 @@
 // isotrace deform: applies sweep deformers (or any registered mesh deformer) to a mesh file offline and writes
-// the result as PLY or OBJ, printing binding statistics.
+// the result as PLY or OBJ, printing binding statistics and the output's quality against the input (flipped
+// faces, edge stretch, self-intersections).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "geometry/mesh/mesh_deformer.h"
 #include "geometry/mesh/mesh_file.h"
+#include "geometry/mesh/mesh_quality.h"
 #include "renderer/core/input_error.h"
 #include "renderer/core/memory_budget.h"
 #include "renderer/core/lower_extension.h"
@@ -37,6 +40,17 @@ int run_deform(const DeformArguments& args) {
     const auto memory = std::make_shared<MemoryBudget>(
         max_memory_bytes(args.max_memory).value_or(MemoryBudget::default_limit_bytes()));
     TriangleMeshData mesh = load_mesh_file(args.mesh, *memory);
+    // The quality check (not with --quiet) compares with a copy of the input.
+    std::optional<MemoryReservation> quality_memory;
+    if (!args.quiet) {
+        const std::uint64_t copy = saturating_sum({saturating_product({mesh.positions.size(), sizeof(Vec3f)}),
+                                                   saturating_product({mesh.normals.size(), sizeof(Vec3f)}),
+                                                   saturating_product({mesh.uvs.size(), sizeof(mesh.uvs[0])}),
+                                                   saturating_product({mesh.triangles.size(), sizeof(mesh.triangles[0])})});
+        quality_memory.emplace(*memory, saturating_sum({copy, saturating_product({mesh.triangles.size(), kMeshQualityBytesPerTriangle})}),
+                               "the input mesh's copy and the quality check of the output");
+    }
+    const TriangleMeshData input = args.quiet ? TriangleMeshData{} : mesh;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::string> summaries = apply_mesh_deformer_file(args.deformers, mesh, memory);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -47,6 +61,7 @@ int run_deform(const DeformArguments& args) {
     }
     if (!args.quiet) {
         for (const std::string& line : summaries) std::fprintf(stderr, "isotrace: %s\n", line.c_str());
+        std::fprintf(stderr, "isotrace: mesh quality: %s\n", describe(measure_mesh_quality(input, mesh)).c_str());
         std::fprintf(stderr, "isotrace: deformed %zu vertices in %.3f s on %d thread(s)\nwrote %s\n",
                      mesh.positions.size(), seconds, limit.threads(), args.output.c_str());
     }
