@@ -123,7 +123,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "isosurface",
                          "the zero set of function (docs/expressions.md) with parameters and fields (other shapes as "
-                         "terms), inside contained_by {box} or {sphere} (derived when interval arithmetic can bound it); resolution, max_work, octree_depth, max_cells",
+                         "terms), inside contained_by {box} or {sphere} (derived when interval arithmetic can bound "
+                         "it); resolution, max_work, octree_depth, max_cells",
                          create)
 
 }  // namespace isotrace
