@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geometry/expression/expression_field.h"
+#include "geometry/isosurface/derived_container.h"
 #include "geometry/isosurface/isosurface_shape.h"
 #include "renderer/core/did_you_mean.h"
 #include "renderer/params/world_limit.h"
@@ -23,10 +24,13 @@ int field_nesting(const SceneNode& node) {
     return levels;
 }
 
-Container parse_container(const SceneNode& node) {
-    if (!node.has("contained_by"))
-        node.fail("an isosurface needs \"contained_by\": {\"box\": {\"min\": [x, y, z], \"max\": [x, y, z]}} or "
-                  "{\"sphere\": {\"center\": [x, y, z], \"radius\": r}}, a finite region that holds its surface");
+constexpr const char* kContainerSyntax =
+    "\"contained_by\": {\"box\": {\"min\": [x, y, z], \"max\": [x, y, z]}} or {\"sphere\": {\"center\": [x, y, z], "
+    "\"radius\": r}}, a finite region that holds its surface";
+
+// The container written in the scene, or nothing when there is none.
+std::optional<Container> parse_container(const SceneNode& node) {
+    if (!node.has("contained_by")) return std::nullopt;
     const SceneNode container = node.object("contained_by");
     if (container.keys().size() != 1 || !(container.has("box") || container.has("sphere"))) {
         container.finish();  // names an unknown key, with a suggestion
@@ -47,6 +51,17 @@ Container parse_container(const SceneNode& node) {
         sphere.fail_at("radius", beyond_world_problem("the sphere"));
     sphere.finish();
     return Container::sphere(centre, radius);
+}
+
+// A cube about the origin proven to hold the surface, for a function given without a container.
+Container derived_container(const SceneNode& node, const ExpressionSource& source, const ExpressionNames& names) {
+    // Other shapes' fields are not required to bound their values over unbounded boxes.
+    if (!names.fields.empty())
+        node.fail(std::string("an isosurface with field terms needs ") + kContainerSyntax);
+    if (const std::optional<Container> derived = derive_container(*compile_expression(source, names))) return *derived;
+    node.fail("interval evaluation cannot prove that the function is positive outside a cube of half-size up to 2^" +
+              std::to_string(kLargestDerivedHalfSize) + " m about the origin (its surface may be unbounded): give it " +
+              kContainerSyntax);
 }
 
 // The shapes of "fields", each one's field under its name; `used` are the names the function calls.
@@ -77,12 +92,13 @@ std::vector<std::unique_ptr<Shape>> parse_fields(const SceneNode& node, const st
 }
 
 std::unique_ptr<Shape> create(const SceneNode& node) {
-    const Container container = parse_container(node);
+    const std::optional<Container> given = parse_container(node);
     const ExpressionSource source = expression_source(node, "function");
     const std::vector<std::string> used = expression_field_terms(source);
     ExpressionNames names;
     names.parameters = expression_parameters(node, "parameters");
     std::vector<std::unique_ptr<Shape>> shapes = parse_fields(node, used, names);
+    const Container container = given ? *given : derived_container(node, source, names);
 
     IsosurfaceSettings settings;
     settings.resolution = node.number_or("resolution", 0, world_length(true));
@@ -95,6 +111,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     std::shared_ptr<const ImplicitField> field = compile_expression(source, names, {box.lower(), box.upper()});
     std::vector<IntervalBox> cells =
         surface_cells(*field, container, settings.octree, *node.context().memory, node.location());
+    if (cells.empty() && !given)
+        node.fail("the function has no surface (interval evaluation proves it positive everywhere)");
     if (cells.empty())
         node.fail_at("contained_by", "the function has no surface inside the container (interval evaluation "
                                      "proves it positive throughout)");
@@ -105,7 +123,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "isosurface",
                          "the zero set of function (docs/expressions.md) with parameters and fields (other shapes as "
-                         "terms), inside contained_by {box} or {sphere}; resolution, max_work, octree_depth, max_cells",
+                         "terms), inside contained_by {box} or {sphere} (derived when interval arithmetic can bound "
+                         "it); resolution, max_work, octree_depth, max_cells",
                          create)
 
 }  // namespace isotrace

@@ -79,8 +79,19 @@ TEST(IsosurfacePlugin, IsACsgOperandAndHasAField) {
     EXPECT_NEAR(*shape->field_value({0, 0, 0.25}), 0.25, 1e-12);
 }
 
+// Without contained_by, a bounded function gets a derived container and is traced as with one.
+TEST(IsosurfacePlugin, ABoundedFunctionNeedsNoContainer) {
+    const auto shape = shape_from_json(R"({"type": "isosurface", "function": "length(p - vec(3, 0, 0)) - 1"})");
+    const auto hit = first_hit(*shape, {3, 0, -5}, {0, 0, 1});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 4, 1e-12);
+    EXPECT_NEAR(hit->normal.z, -1, 1e-12);
+    EXPECT_FALSE(first_hit(*shape, {0, 0, -5}, {0, 0, 1}));
+}
+
 TEST(IsosurfacePlugin, BadInputIsRefusedAtItsPlace) {
-    EXPECT_NE(error_of(R"({"type": "isosurface", "function": "length(p) - 1"})").find("contained_by"), std::string::npos);
+    EXPECT_NE(error_of(R"({"type": "isosurface", "function": "z"})").find("contained_by"), std::string::npos);
+    EXPECT_NE(error_of(R"({"type": "isosurface", "function": "length(p) + 1"})").find("no surface"), std::string::npos);
     EXPECT_NE(error_of(R"({"type": "isosurface", "function": "length(p) - 1",
                            "contained_by": {"sphere": {"radius": 0}}})").find("contained_by.sphere.radius"),
               std::string::npos);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "geometry/mesh/mesh_index_problem.h"
 #include "renderer/core/input_error.h"
@@ -78,6 +79,13 @@ void TriangleMeshData::append_positions_and_triangles(const TriangleMeshData& pa
         uvs.clear();
     positions.insert(positions.end(), part.positions.begin(), part.positions.end());
     for (const auto& t : part.triangles) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+void TriangleMeshData::transform(const Transform& to_world) {
+    for (Vec3f& p : positions) p = to_world.point(p);
+    for (Vec3f& n : normals) n = to_world.normal(n);
+    if (to_world.determinant() < 0)
+        for (auto& triangle : triangles) std::swap(triangle[1], triangle[2]);
 }
 
 }  // namespace isotrace

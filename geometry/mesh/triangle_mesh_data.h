@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/math/transform.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
@@ -36,6 +37,10 @@ struct TriangleMeshData {
     // Adds the positions and triangles of `part` (its normals are dropped: for meshes whose normals are computed
     // afterwards). The uvs are kept while every part has them, and dropped as soon as one has none.
     void append_positions_and_triangles(const TriangleMeshData& part);
+
+    // Carries the mesh by `to_world`: positions, normals (by the inverse transpose), and for a mirroring transform
+    // two corners of every triangle swapped, so that the front (the outside of a closed mesh) stays the front.
+    void transform(const Transform& to_world);
 };
 
 }  // namespace isotrace

@@ -62,15 +62,10 @@ Bounds3f TriangleMeshShape::bounds() const {
 }
 
 void TriangleMeshShape::bake(const Transform& to_world) {
-    for (Vec3f& p : mesh_.positions) p = to_world.point(p);
-    for (Vec3f& n : mesh_.normals) n = to_world.normal(n);
-    // A mirroring transform turns counter-clockwise into clockwise: swap two corners so that the front
-    // (and with it the outward side of closed meshes) is preserved. Normals and uvs belong to vertices and
-    // follow them; only the barycentric fallback uv needs to know (see shading()).
-    if (to_world.determinant() < 0) {
-        for (auto& triangle : mesh_.triangles) std::swap(triangle[1], triangle[2]);
-        winding_swapped_ = !winding_swapped_;
-    }
+    mesh_.transform(to_world);
+    // Normals and uvs belong to vertices and follow a mirroring transform's swapped corners; only the barycentric
+    // fallback uv needs to know (see shading()).
+    if (to_world.determinant() < 0) winding_swapped_ = !winding_swapped_;
     build_area_distribution();
 }
 

@@ -258,5 +258,51 @@ TEST(AreaLight, WorksWithTheEmissiveMaterialPlugin) {
     EXPECT_EQ(double_light.sample({0, 3, 0}, {0.3f, 0.7f}).radiance, kRadiance);
 }
 
+// A unit sphere placed as an oblate ellipsoid (semi-axes 0.5, 0.25, 0.5 about (0, 3, 0)): a placed shape's light.
+// Its irradiance at the origin is π L times the share of cosine-weighted directions that hit it, counted here by
+// intersecting those directions with the ellipsoid; sample() and pdf() agree; its power is π L times its area.
+const Transform kEllipsoid = Transform::translate({0, 3, 0}) * Transform::scale({0.5, 0.25, 0.5});
+
+// Whether the ray from the origin along `direction` meets the ellipsoid (the unit sphere in the placement's space).
+bool meets_ellipsoid(const Vec3d& direction) {
+    const Vec3d o = kEllipsoid.inverse_point(Vec3d{}), d = kEllipsoid.inverse_vector(direction);
+    const double b = dot(o, d), c = dot(o, o) - 1;
+    return b < 0 && b * b - dot(d, d) * c >= 0;
+}
+
+TEST(AreaLight, APlacedShapesLightIsTheTransformedSurfaces) {
+    const SphereShape unit({{{0, 0, 0}, 1}});
+    const TestEmitter material(false);
+    const AreaLight light(unit, material, kEllipsoid);
+    EXPECT_FALSE(light.is_delta());
+
+    constexpr int n = 400000;
+    int hits = 0;
+    for (int i = 0; i < n; ++i) {  // cosine-weighted directions about +y
+        const auto u = u_sample(std::uint32_t(i));
+        const double r = std::sqrt(double(u[0])), phi = 2 * kPi * u[1];
+        hits += meets_ellipsoid({r * std::cos(phi), std::sqrt(1 - r * r), r * std::sin(phi)});
+    }
+    const double share = double(hits) / n, share_error = std::sqrt(share * (1 - share) / n);
+    const Estimate e = estimate_irradiance(light, {0, 0, 0}, {0, 1, 0}, 200000);
+    EXPECT_NEAR(e.mean, kPi * kRadiance.r * share, 3 * std::hypot(e.standard_error, kPi * kRadiance.r * share_error));
+
+    for (const Vec3f& point : {Vec3f(0, 0, 0), Vec3f(0.3f, -1, 2), Vec3f(-3, 1.2f, 0.5f)})
+        for (std::uint32_t i = 0; i < 200; ++i) {
+            const LightSample s = light.sample(point, u_sample(i));
+            ASSERT_GT(s.pdf, 0.0f);
+            const Vec3d on = Vec3d(point + s.direction * s.distance) - Vec3d{0, 3, 0};
+            EXPECT_NEAR(on.x * on.x / 0.25 + on.y * on.y / 0.0625 + on.z * on.z / 0.25, 1, 1e-4);
+            const Vec3f normal(normalize(Vec3d{on.x / 0.25, on.y / 0.0625, on.z / 0.25}));
+            const float cos_light = std::abs(dot(normal, s.direction));
+            EXPECT_NEAR(light.pdf(point, s.direction, s.distance, normal), s.pdf, (1e-4f + 1e-5f / cos_light) * s.pdf);
+        }
+
+    // An oblate spheroid of semi-axes a and c < a has area 2πa² (1 + (1 − e²) atanh(e) / e), e² = 1 − c²/a².
+    const double a = 0.5, e2 = 1 - 0.25 * 0.25 / (a * a), eccentricity = std::sqrt(e2);
+    const double area = 2 * kPi * a * a * (1 + (1 - e2) * std::atanh(eccentricity) / eccentricity);
+    EXPECT_NEAR(light.power(), kPi * area * 2, 0.01 * kPi * area * 2);
+}
+
 }  // namespace
 }  // namespace isotrace

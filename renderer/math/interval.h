@@ -36,7 +36,6 @@ struct Interval {
 inline Interval operator+(Interval a, Interval b) { return {a.lo + b.lo, a.hi + b.hi}; }
 inline Interval operator-(Interval a, Interval b) { return {a.lo - b.hi, a.hi - b.lo}; }
 inline Interval operator+(Interval a, double b) { return {a.lo + b, a.hi + b}; }
-inline Interval operator*(Interval a, double s) { return Interval::spanning(a.lo * s, a.hi * s); }
 inline Interval operator-(Interval a) { return {-a.hi, -a.lo}; }
 inline Interval operator*(Interval a, Interval b) {
     double p[] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
@@ -47,6 +46,11 @@ inline Interval operator*(Interval a, Interval b) {
         p[0] = times(a.lo, b.lo), p[1] = times(a.lo, b.hi), p[2] = times(a.hi, b.lo), p[3] = times(a.hi, b.hi);
     }
     return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
+}
+inline Interval operator*(Interval a, double s) {
+    const double lo = a.lo * s, hi = a.hi * s;
+    if (std::isnan(lo + hi)) return a * Interval::point(s);  // an infinite end times 0: the product's rule
+    return Interval::spanning(lo, hi);
 }
 // Requires b.lo > 0 (the callers divide by strictly positive taper factors).
 inline Interval divide_by_positive(Interval a, Interval b) {
@@ -101,7 +105,14 @@ inline Interval periodic_range(Interval angle, double f_lo, double f_hi, double 
     }
     return r;
 }
-inline bool covers_a_period(Interval angle) { return angle.width() >= 2 * std::numbers::pi; }
+// Beyond this magnitude doubles are spaced so widely that an angle's few ulps of rounding may span a period, and
+// counting extrema by k·π would no longer advance k (a hang): such angles are treated as covering one.
+constexpr double kLargestResolvedAngle = 0x1p50;
+inline bool resolves(Interval angle) {
+    return std::abs(angle.lo) < kLargestResolvedAngle && std::abs(angle.hi) < kLargestResolvedAngle;
+}
+// Also true for an unbounded angle, and for one too large to resolve.
+inline bool covers_a_period(Interval angle) { return !(angle.width() < 2 * std::numbers::pi) || !resolves(angle); }
 }  // namespace interval_detail
 
 inline Interval cos_range(Interval angle) {
@@ -161,7 +172,7 @@ inline bool clip_box(IntervalBox& box, const IntervalBox& clip) {
 // tan over an angle interval: monotone between its poles π/2 + kπ, all the reals when one lies inside.
 inline Interval tan_range(Interval angle) {
     constexpr double pi = std::numbers::pi;
-    if (!angle.is_finite() || angle.width() >= pi) return Interval::unbounded();
+    if (!interval_detail::resolves(angle) || !(angle.width() < pi)) return Interval::unbounded();
     const double first_pole = pi / 2 + std::ceil((angle.lo - pi / 2) / pi) * pi;
     if (first_pole <= angle.hi) return Interval::unbounded();
     return {std::tan(angle.lo), std::tan(angle.hi)};

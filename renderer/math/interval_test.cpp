@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <random>
+#include <vector>
 
 namespace isotrace {
 namespace {
@@ -66,6 +67,87 @@ TEST(Interval, UnboundedOperandsGiveNoNaNEnds) {
     const Interval reciprocal_of_zero = reciprocal(Interval{-1, 1});
     EXPECT_EQ(reciprocal_of_zero.lo, -inf);
     EXPECT_EQ(reciprocal_of_zero.hi, inf);
+}
+
+// Intervals with infinite ends (the slabs outside a box, over which an isosurface's bound is proven) bound every
+// finite value of their operands: ∞ − ∞, 0 · ∞ and the like give no NaN end and no end that excludes a value.
+std::vector<double> finite_samples(Interval a) {
+    std::vector<double> samples;
+    for (double v : {0.0, 1e-300, 0.5, 1.0, 3.0, 7.25, 1e5, 3e15, 1e200, std::numeric_limits<double>::max()})
+        for (double s : {v, -v})
+            if (a.contains(s)) samples.push_back(s);
+    if (std::isfinite(a.lo)) samples.push_back(a.lo);
+    if (std::isfinite(a.hi)) samples.push_back(a.hi);
+    return samples;
+}
+
+void expect_holds_over_unbounded(const char* name, const std::function<Interval(Interval, Interval)>& bound,
+                                 const std::function<double(double, double)>& f) {
+    const Interval operands[] = {{-inf, inf}, {2, inf}, {-inf, -2}, {0, inf}, {-inf, 0}, {-1, 3}, {0, 0}, {5, 5}};
+    for (const Interval& a : operands)
+        for (const Interval& b : operands) {
+            const Interval r = bound(a, b);
+            ASSERT_FALSE(std::isnan(r.lo) || std::isnan(r.hi)) << name << " has a NaN end";
+            for (double u : finite_samples(a))
+                for (double v : finite_samples(b)) {
+                    const double value = f(u, v);
+                    if (std::isnan(value)) continue;  // outside the function's domain (a rule's business)
+                    const double tolerance = 1e-14 * std::abs(value);
+                    ASSERT_TRUE(r.lo - tolerance <= value && value <= r.hi + tolerance)
+                        << name << "(" << u << ", " << v << ") = " << value << " outside [" << r.lo << ", " << r.hi
+                        << "] for [" << a.lo << ", " << a.hi << "], [" << b.lo << ", " << b.hi << "]";
+                }
+        }
+}
+
+TEST(Interval, InfiniteEndsBoundEveryFiniteValue) {
+    expect_holds_over_unbounded("sum", [](Interval a, Interval b) { return a + b; }, [](double u, double v) { return u + v; });
+    expect_holds_over_unbounded("difference", [](Interval a, Interval b) { return a - b; },
+                                [](double u, double v) { return u - v; });
+    expect_holds_over_unbounded("product", [](Interval a, Interval b) { return a * b; },
+                                [](double u, double v) { return u * v; });
+    for (double s : {0.0, -2.0, 0.5})
+        expect_holds_over_unbounded("scaled", [s](Interval a, Interval) { return a * s; }, [s](double u, double) { return u * s; });
+    expect_holds_over_unbounded("shifted", [](Interval a, Interval) { return a + 4.0; }, [](double u, double) { return u + 4; });
+    expect_holds_over_unbounded("min", [](Interval a, Interval b) { return min(a, b); },
+                                [](double u, double v) { return std::min(u, v); });
+    expect_holds_over_unbounded("max", [](Interval a, Interval b) { return max(a, b); },
+                                [](double u, double v) { return std::max(u, v); });
+    expect_holds_over_unbounded("magnitude", [](Interval a, Interval) { return a.magnitude(); },
+                                [](double u, double) { return std::abs(u); });
+    expect_holds_over_unbounded("square", [](Interval a, Interval) { return square(a); }, [](double u, double) { return u * u; });
+    for (int n = 1; n <= 4; ++n)
+        expect_holds_over_unbounded("pow_int", [n](Interval a, Interval) { return pow_int(a, n); },
+                                    [n](double u, double) { return std::pow(u, n); });
+    expect_holds_over_unbounded("reciprocal", [](Interval, Interval b) { return reciprocal(b); },
+                                [](double, double v) { return v == 0 ? 0 : 1 / v; });
+    expect_holds_over_unbounded("exp", [](Interval a, Interval) { return exp(a); }, [](double u, double) { return std::exp(u); });
+    expect_holds_over_unbounded("atan", [](Interval a, Interval) { return atan(a); }, [](double u, double) { return std::atan(u); });
+    expect_holds_over_unbounded("sqrt", [](Interval a, Interval) { return sqrt_of_non_negative(a); },
+                                [](double u, double) { return std::sqrt(std::max(u, 0.0)); });
+    expect_holds_over_unbounded("log", [](Interval a, Interval) { return log_above(a, 1e-3); },
+                                [](double u, double) { return std::log(std::max(u, 1e-3)); });
+    expect_holds_over_unbounded("sign", [](Interval a, Interval) { return sign_range(a); },
+                                [](double u, double) { return u < 0 ? -1.0 : 1.0; });
+    expect_holds_over_unbounded("sin", [](Interval a, Interval) { return sin_range(a); }, [](double u, double) { return std::sin(u); });
+    expect_holds_over_unbounded("cos", [](Interval a, Interval) { return cos_range(a); }, [](double u, double) { return std::cos(u); });
+    expect_holds_over_unbounded("sin_cos", [](Interval a, Interval) { return sin_cos_range(a).cos; },
+                                [](double u, double) { return std::cos(u); });
+    expect_holds_over_unbounded("tan", [](Interval a, Interval) { return tan_range(a); }, [](double u, double) { return std::tan(u); });
+    expect_holds_over_unbounded("atan2", [](Interval y, Interval x) { return atan2_range(y, x); },
+                                [](double v, double u) { return std::atan2(v, u); });
+}
+
+// An angle so large that doubles are spaced wider than the period: the whole range, at once (counting the extrema
+// by k·π once looped forever there, k + 1 rounding back to k).
+TEST(Interval, HugeAnglesCoverAPeriod) {
+    for (double angle : {1e17, -3e20, 1e300, std::numeric_limits<double>::max()}) {
+        for (const Interval r : {sin_range(Interval::point(angle)), cos_range(Interval::point(angle))}) {
+            EXPECT_EQ(r.lo, -1) << angle;
+            EXPECT_EQ(r.hi, 1) << angle;
+        }
+        EXPECT_EQ(tan_range(Interval::point(angle)).hi, inf) << angle;
+    }
 }
 
 TEST(Interval, TanIsUnboundedAcrossAPoleAndAtan2AcrossTheCut) {

@@ -86,6 +86,12 @@ Transform Transform::from_matrix(const Matrix& m) {
     return t;
 }
 
+Transform Transform::inverse_of_accepted(const Matrix& m) {
+    Matrix inv;
+    invert(m, inv);
+    return {inv, m};
+}
+
 Transform Transform::translate(const Vec3d& o) {
     Matrix m = identity_matrix(), inv = identity_matrix();
     for (int i = 0; i < 3; ++i) {

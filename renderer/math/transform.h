@@ -14,6 +14,9 @@ public:
     Transform();  // identity
     // Throws std::invalid_argument when the matrix is singular or not affine.
     static Transform from_matrix(const Matrix& m);
+    // from_matrix(m).inverse() for a matrix from_matrix has accepted before, without checking it again: the same bits
+    // for the cost of the inversion alone (a placed copy's to_world, made from its inverse at every hit).
+    static Transform inverse_of_accepted(const Matrix& m);
     static Transform translate(const Vec3d& offset);
     static Transform scale(const Vec3d& factors);
     static Transform rotate(const Vec3d& axis, double degrees);

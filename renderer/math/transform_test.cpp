@@ -118,6 +118,14 @@ TEST(Transform, InverseSwapsTheMatrices) {
     expect_near(a.inverse().vector(a.vector(p)), p);
 }
 
+// The unchecked inverse of an accepted matrix is bit for bit the checked one's.
+TEST(Transform, InverseOfAcceptedIsTheInverseOfFromMatrix) {
+    const Transform checked = Transform::from_matrix(general_affine()).inverse();
+    const Transform unchecked = Transform::inverse_of_accepted(general_affine());
+    EXPECT_EQ(unchecked.matrix(), checked.matrix());
+    EXPECT_EQ(unchecked.inverse().matrix(), checked.inverse().matrix());
+}
+
 TEST(Transform, InversePointAndNormalAreTheInverseTransforms) {
     const Transform a = Transform::from_matrix(general_affine());
     const Vec3d p{0.5, -7, 2};

@@ -351,15 +351,33 @@ TEST_F(Instances, AGridIsTheSameOnEveryLoadAndFollowsItsSeed) {
     EXPECT_EQ(materials.size(), 2u);
 }
 
-TEST_F(Instances, EmissivePlacementsEmitButAreNotSampledAsLights) {
+// Each emissive placement is an area light of its own, whose samples lie on the placed copy, and a hit on the copy
+// finds that light.
+TEST_F(Instances, EmissivePlacementsAreSampledAsLights) {
     const auto loaded = load(scene_with(R"("definitions": {"lamp": {"material": {"type": "emissive", "radiance": 2},
     "shape": {"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}}},
   "objects": [{"instance": "lamp", "placements": [{}, {"transform": {"translate": [2, 0, 0]}}]}]
 )"));
-    const BuildStatistics& build = loaded->scene->build_statistics();
-    EXPECT_EQ(build.unsampled_emitters, 2u);
-    EXPECT_EQ(build.area_lights, 0u);
-    EXPECT_TRUE(loaded->scene->emission_can_be_hit());
+    const RenderScene& scene = *loaded->scene;
+    const BuildStatistics& build = scene.build_statistics();
+    EXPECT_EQ(build.unsampled_emitters, 0u);
+    EXPECT_EQ(build.area_lights, 2u);
+    EXPECT_TRUE(scene.emission_can_be_hit());
+    for (std::uint32_t id = 0; id < 2; ++id) {
+        const Light* light = scene.object(id).area_light;
+        ASSERT_NE(light, nullptr);
+        EXPECT_GT(scene.light_probability(light), 0);
+        const Vec3f from(0.25f + 2.0f * float(id), 0.25f, 3);
+        const LightSample sample = light->sample(from, {0.3f, 0.4f});
+        ASSERT_GT(sample.pdf, 0);
+        const Vec3f on = from + sample.direction * sample.distance;
+        EXPECT_NEAR(on.z, 0, 1e-5);
+        EXPECT_GE(on.x, 2.0f * float(id) - 1e-5f);
+        EXPECT_LE(on.x, 2.0f * float(id) + 1 + 1e-5f);
+        const std::optional<SurfaceHit> hit = scene.intersect({from, {0, 0, -1}, 0, 10}, RayKind::Camera);
+        ASSERT_TRUE(hit);
+        EXPECT_EQ(hit->object->area_light, light);
+    }
 }
 
 struct BadInstances {

@@ -61,7 +61,7 @@ std::optional<PlacementRecord> placement_record(const Transform& to_world, std::
 
 Transform to_world_of_record(const PlacementRecord& record) {
     // placement_record checked that this succeeds, and the same bits give the same answer.
-    return Transform::from_matrix(promoted(record.from_world)).inverse();
+    return Transform::inverse_of_accepted(promoted(record.from_world));
 }
 
 std::string PlacementNames::default_name(std::uint32_t placement) const {

@@ -49,9 +49,22 @@ void RenderScene::add_placements(Placements placements) {
         placement_variants_.push_back(std::move(variant));
         variants.push_back(&placement_variants_.back());
     }
+    // An emissive placement that is an area light shows an object of its own, whose area_light is its light.
+    std::vector<std::pair<std::uint32_t, SceneObject*>> lit;
+    if (placements.shape->supports_surface_sampling())
+        for (std::uint32_t placement = 0; placement < placements.records.size(); ++placement) {
+            PlacementRecord& record = placements.records[placement];
+            const SceneObject& shown = *variants[record.variant];
+            if (!shown.material || !shown.material->is_emissive()) continue;
+            placement_variants_.push_back(shown);
+            record.variant = std::uint32_t(variants.size());
+            variants.push_back(&placement_variants_.back());
+            lit.emplace_back(placement, &placement_variants_.back());
+        }
     const auto count = std::uint32_t(placements.records.size());
     placed_.push_back(std::make_unique<PlacementArray>(std::move(placements.shape), std::move(variants),
                                                        std::move(placements.records), std::move(placements.names)));
+    for (const auto& [placement, object] : lit) emissive_placements_.push_back({placed_.back().get(), placement, object});
     id_ranges_.push_back({next_id_, std::uint32_t(placed_.size() - 1), true});
     next_id_ += count;
 }
@@ -373,19 +386,33 @@ void RenderScene::build_lights() {
             if (part && part->is_emissive()) emission_can_be_hit_ = true;
         return object.material && object.material->is_emissive();
     };
-    for (SceneObject& object : objects_) {
+    // An object's light, in world space or placed as its hits are (to_world_of_record), in the order of the ids.
+    const auto add_area_light = [&](SceneObject& object, std::optional<Transform> placed) {
+        lights_.push_back(std::make_unique<AreaLight>(*object.shape, *object.material, std::move(placed)));
+        object.area_light = lights_.back().get();
+        ++build_statistics_.area_lights;
+    };
+    auto emissive_placement = emissive_placements_.begin();
+    for (const IdRange& range : id_ranges_) {
+        if (range.placed) {
+            const PlacementArray& array = *placed_[range.index];
+            for (; emissive_placement != emissive_placements_.end() && emissive_placement->array == &array;
+                 ++emissive_placement)
+                add_area_light(*emissive_placement->object, array.to_world(emissive_placement->placement));
+            for (std::uint32_t placement = 0; placement < array.size(); ++placement)
+                if (note_emission(array.variant_of(placement)) && !array.variant_of(placement).area_light)
+                    ++build_statistics_.unsampled_emitters;
+            continue;
+        }
+        SceneObject& object = objects_[range.index];
         if (!note_emission(object)) continue;
-        if (object.instanced || !object.shape->supports_surface_sampling()) {
+        if (!object.shape->supports_surface_sampling()) {
             ++build_statistics_.unsampled_emitters;
             continue;
         }
-        lights_.push_back(std::make_unique<AreaLight>(*object.shape, *object.material));
-        object.area_light = lights_.back().get();
-        ++build_statistics_.area_lights;
+        add_area_light(object, object.instanced ? std::optional(to_world_of_record(*placement_record(object.to_world, 0)))
+                                                : std::nullopt);
     }
-    for (const auto& array : placed_)
-        for (std::uint32_t placement = 0; placement < array->size(); ++placement)
-            build_statistics_.unsampled_emitters += note_emission(array->variant_of(placement));
     const Bounds3f scene_bounds = bounds();
     std::vector<float> powers;
     for (const auto& light : lights_) {
@@ -437,12 +464,16 @@ Bounds3f RenderScene::bounds() const {
             result.extend(Vec3f(to_world ? to_world->point(p) : p));
         }
     };
-    for (const SceneObject& object : objects_) extend(*object.shape, object.instanced ? &object.to_world : nullptr);
-    for (const auto& array : placed_)
-        for (std::uint32_t placement = 0; placement < array->size(); ++placement) {
-            const Transform to_world = array->to_world(placement);
-            extend(array->shape(), &to_world);
-        }
+    // Objects traced in their shape's space are placed as their hits are (to_world_of_record), so that an object
+    // and the same placed copy give the same extent.
+    for (const SceneObject& object : objects_)
+        if (!object.instanced) extend(*object.shape, nullptr);
+    for (const auto* arrays : {&placed_, &single_placements_})
+        for (const auto& array : *arrays)
+            for (std::uint32_t placement = 0; placement < array->size(); ++placement) {
+                const Transform to_world = array->to_world(placement);
+                extend(array->shape(), &to_world);
+            }
     if (result.empty()) {
         result.extend({-1, -1, -1});
         result.extend({1, 1, 1});

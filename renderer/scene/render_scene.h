@@ -41,8 +41,8 @@ struct BuildStatistics {
     std::size_t object_bytes = 0;  // what the scene keeps per object (SceneObject, its name and part materials; a
                                    // placement's record)
     std::size_t area_lights = 0;
-    // Emissive objects that light sampling cannot reach (instanced, or shapes without surface sampling):
-    // they still emit when BSDF sampling hits them.
+    // Emissive objects that light sampling cannot reach (shapes without surface sampling): they still emit when
+    // BSDF sampling hits them.
     std::size_t unsampled_emitters = 0;
 };
 
@@ -89,7 +89,8 @@ public:
     void add_object(SceneObject object);
     // Copies of a shape shared with other placements (a definition's, renderer/scene/scene_definitions.h): the shape
     // stays in its own space, built once into one Embree scene, and the copies are the primitives of one
-    // PlacementArray. Emissive placements are not sampled by lights (BuildStatistics::unsampled_emitters).
+    // PlacementArray. An emissive placement whose shape can sample its surface is an area light of its own, as
+    // the same object written out separately is.
     void add_placements(Placements placements);
     void add_light(std::unique_ptr<Light> light);
 
@@ -172,6 +173,14 @@ private:
     std::deque<SceneObject> placement_variants_;         // the objects that placements show (stable addresses)
     std::vector<std::unique_ptr<PlacementArray>> placed_;  // add_placements' arrays, in the order added
     std::vector<std::unique_ptr<PlacementArray>> single_placements_;  // objects whose transform cannot bake
+    // The emissive placements that are area lights, by increasing object id: each shows an object of its own in
+    // placement_variants_, which holds its light.
+    struct EmissivePlacement {
+        const PlacementArray* array;
+        std::uint32_t placement;
+        SceneObject* object;
+    };
+    std::vector<EmissivePlacement> emissive_placements_;
     std::vector<TracedGeometry> traced_;  // by top-level geometry id
     std::vector<IdRange> id_ranges_;      // by increasing first_id
     std::uint32_t next_id_ = 0;

@@ -1026,6 +1026,42 @@ PY
   expect_in "$work/stderr" "no_such_scene.json" stderr
 }
 
+# The round primitives are compared with their tessellation too, and the secondary rays' clearance is half the
+# coarsest cell in the world: an isosurface scaled 4× by its transform has cells 4× as long as in its own space.
+case_bench_round_primitives_and_scaled_cells() {
+  cat >"$work/scaled.json" <<'JSON'
+{
+  "isotrace": 1,
+  "film": {"resolution": [32, 18], "spp": 1},
+  "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 2, 8], "target": [0, 0.5, 0]}},
+  "materials": {"grey": {"type": "diffuse", "reflectance": 0.5}},
+  "lights": [{"type": "directional", "direction": [-1, -2, -1], "irradiance": 2}],
+  "objects": [
+    {"name": "ball", "material": "grey", "transform": {"scale": 4, "translate": [-1, 0.5, 0]},
+     "shape": {"type": "isosurface", "function": "length(p) - 0.25",
+               "contained_by": {"box": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]}}}},
+    {"name": "ring", "material": "grey", "transform": {"translate": [1.5, 0.3, 0]},
+     "shape": {"type": "torus", "major_radius": 0.5, "minor_radius": 0.2}}
+  ]
+}
+JSON
+  cli_expect 0 bench "$work/scaled.json" --filter direct_vs_tessellated --threads 1 --repeats 1 --json "$work/bench.json"
+  python3 - "$work/bench.json" <<'PY' || fail "the round primitives or the scaled cells are compared wrongly"
+import json, sys
+scene = json.load(open(sys.argv[1]))["blob_comparison"]["scenes"][0]
+t = scene["tessellated"]
+print("elements", scene["elements"], "finest cell", t["cell_size"], "clearance", scene["secondary_clearance"])
+problems = []
+if scene["elements"] < 2: problems.append("elements %r (an isosurface and a torus)" % scene["elements"])
+if not t["closed"]: problems.append("tessellation not closed")
+# The torus's bounds are about 1.4 m across: cells of about 1.4/128 m; the ball's box is 4 m in the world: 4/128 m.
+if not 1.3 / 128 < t["cell_size"] < 2 / 128: problems.append("finest cell %r" % t["cell_size"])
+if abs(scene["secondary_clearance"] - 0.5 * 4 / 128) > 1e-9: problems.append("clearance %r" % scene["secondary_clearance"])
+for p in problems: print("bench:", p, file=sys.stderr)
+sys.exit(1 if problems else 0)
+PY
+}
+
 # Superquadrics and CSG solids are compared with their dual-contouring tessellation like blob groups: both kinds are
 # replaced (a closed mesh), counted and traced; a scene without implicit surfaces is refused.
 case_bench_superquadrics_and_csg() {
@@ -1044,7 +1080,7 @@ sys.exit(1 if problems else 0)
 PY
   write_base_scene "$work/sphere.json"
   cli_expect 2 bench "$work/sphere.json" --filter direct_vs_tessellated --repeats 1
-  expect_in "$work/stderr" "no blob group, isosurface, superquadric or CSG solid" stderr
+  expect_in "$work/stderr" "no blob group, isosurface, superquadric, CSG solid, torus, cylinder or cone" stderr
   # A superquadric inside a CSG solid counts its work in the statistics like one on its own.
   grep -v '"name": "tapered"\|"shape": {"type": "superquadric", "radii": \[0.4' tests/cli/data/surfaces/superquadric_and_csg.json \
     >"$work/csg_only.json"
@@ -2500,23 +2536,81 @@ case_isosurface_gallery_meshes() {
   done
 }
 
-# Isosurfaces placed from one definition render, in every AOV, exactly as the same objects written out separately,
-# beside the round primitives, an infinite plane and a rectangle light.
+# isotrace mesh --method traced writes a placed triangle mesh in the world, where its placement puts it: each
+# placement at its own transform, a mirroring one with its winding turned so that the front stays the front.
+case_mesh_traced_placements_in_world_space() {
+  cat >"$work/placed.json" <<'JSON'
+{
+  "isotrace": 1,
+  "film": {"resolution": [8, 8], "spp": 1},
+  "camera": {"type": "perspective", "fov": 40, "look_at": {"eye": [0, 0, 10], "target": [0, 0, 0]}},
+  "materials": {"grey": {"type": "diffuse", "reflectance": 0.5}},
+  "lights": [{"type": "environment", "radiance": 1}],
+  "definitions": {"tile": {"material": "grey", "shape": {"type": "mesh",
+    "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}}},
+  "objects": [{"name": "tiles", "instance": "tile", "placements": [
+    {"transform": {"translate": [5, 0, 0]}},
+    {"transform": {"scale": [-2, 1, 1], "translate": [0, 3, 0]}}]}]
+}
+JSON
+  cli_expect 0 mesh "$work/placed.json" --object 'tiles[0]' --method traced -o "$work/t0.obj" --quiet
+  cli_expect 0 mesh "$work/placed.json" --object 'tiles[1]' --method traced -o "$work/t1.obj" --quiet
+  python3 - "$work/t0.obj" "$work/t1.obj" <<'PY' || fail "the placed meshes are not where their placements put them"
+import sys
+def triangle(path):
+    v = [tuple(float(x) for x in l.split()[1:4]) for l in open(path) if l.startswith("v ")]
+    f = [l.split()[1:4] for l in open(path) if l.startswith("f ")]
+    return [v[int(c.split("/")[0]) - 1] for c in f[0]]
+def normal_z(t):
+    (a, b, c) = t
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+t0, t1 = triangle(sys.argv[1]), triangle(sys.argv[2])
+print(t0, t1)
+ok = sorted(t0) == sorted([(5, 0, 0), (6, 0, 0), (5, 1, 0)]) and normal_z(t0) > 0
+ok = ok and sorted(t1) == sorted([(0, 3, 0), (-2, 3, 0), (0, 4, 0)]) and normal_z(t1) > 0
+sys.exit(0 if ok else 1)
+PY
+}
+
+# Isosurfaces and emissive ellipsoids placed from definitions render, in every AOV, exactly as the same objects
+# written out separately, beside the round primitives, an infinite plane and a rectangle light; the emissive
+# placements are area lights, as the separate objects are (the rectangle and two ellipsoids).
 case_instanced_isosurfaces_match_separate_objects() {
   local scene
   for scene in instanced separate; do
     cli_expect 0 render tests/cli/data/surfaces/$scene.json --quiet --aov all -o "$work/$scene.exr"
+    cli_expect 0 info tests/cli/data/surfaces/$scene.json
+    expect_in "$work/stdout" "of which 3 area light(s)" stdout
   done
   idiff -fail 0 -failpercent 0 -warn 0 "$work/instanced.exr" "$work/separate.exr" >"$work/idiff" 2>&1 ||
     { cat "$work/idiff" >&2; fail "the placements render other pixels than the same objects written out separately"; }
 }
 
-# Bad isosurfaces exit 2 at their position: no container, an empty container, a container without surface, an
+# An isosurface without a container gets one where interval arithmetic proves the function positive outside a
+# cube (a ball, a noisy ball); one whose surface is unbounded (a gyroid, a plane), or that has field terms, needs
+# "contained_by" and exits 2 at its position.
+case_isosurface_derived_container() {
+  local function
+  for function in 'length(p) - 0.5' 'length(p) - 0.5 + 0.05*fbm(8*p)'; do
+    write_shape_scene "$work/scene" '        "type": "isosurface",' "        \"function\": \"$function\""
+    cli_expect 0 render "$work/scene/scene.json" --quiet -o "$work/derived.exr"
+    cli_expect 0 info "$work/scene/scene.json"
+    expect_in "$work/stdout" "isosurface" stdout
+  done
+  for function in 'sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)' 'z'; do
+    write_shape_scene "$work/scene" '        "type": "isosurface",' "        \"function\": \"$function\""
+    check_bad_scene "$work/scene" 10 "objects[0].shape" "contained_by"
+    expect_in "$work/stderr" "cannot prove" stderr
+  done
+  write_shape_scene "$work/scene" '        "type": "isosurface",' \
+    '        "function": "ball(p)", "fields": {"ball": {"type": "sphere"}}'
+  check_bad_scene "$work/scene" 10 "objects[0].shape" "with field terms needs \"contained_by\""
+}
+
+# Bad isosurfaces exit 2 at their position: an empty container, a container without surface, an
 # unknown name in the function (with a suggestion), a field the function does not use, terms nested too deep.
 case_isosurface_bad_input() {
   local function='"function": "length(p) - r", "parameters": {"r": 0.5}'
-  write_shape_scene "$work/scene" '        "type": "isosurface",' "        $function"
-  check_bad_scene "$work/scene" 10 "objects[0].shape" "contained_by"
   write_shape_scene "$work/scene" '        "type": "isosurface",' \
     "        $function, \"contained_by\": {\"box\": {\"min\": [-1, -1, 0], \"max\": [1, 1, 0]}}"
   check_bad_scene "$work/scene" 12 "objects[0].shape.contained_by.box.max" "hold nothing"

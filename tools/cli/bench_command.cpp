@@ -179,7 +179,7 @@ CommandRunner add_bench_options(CLI::App* command) {
     command->footer("Primary, shadow and bounce rays, the path tracer and the polygoniser on fixed scenes, with thread "
                     "and element-count scaling. Run from the source tree; --list names the workloads.");
     command->add_option("scenes", args->scenes,
-                        "Scene files with blob groups, isosurfaces, superquadrics or CSG solids for the "
+                        "Scene files with blob groups, isosurfaces, superquadrics, CSG solids, tori, cylinders or cones for the "
                         "blobs/direct_vs_tessellated workload (default: "
                         "scenes/blobs_1k, _10k, _100k)");
     command

@@ -4,6 +4,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <unordered_map>
 
 #include "geometry/implicit/blob_group_shape.h"
 #include "geometry/mesh/triangle_mesh_shape.h"
@@ -24,8 +26,10 @@ TracedScene build_of(const LoadedScene& scene) {
     return traced;
 }
 
-// The shapes the comparison replaces by their tessellation: the implicit surfaces isotrace traces directly.
-constexpr std::array<const char*, 4> kTessellatedTypes = {"blobs", "isosurface", "superquadric", "csg"};
+// The shapes the comparison replaces by their tessellation: the implicit surfaces isotrace traces directly, and the
+// round primitives (an open cylinder or cone, which has no inside, stays as it is in both scenes).
+constexpr std::array<const char*, 7> kTessellatedTypes = {"blobs", "isosurface", "superquadric", "csg",
+                                                          "torus", "cylinder", "cone"};
 
 bool is_tessellated(const Shape& shape) {
     return std::find_if(kTessellatedTypes.begin(), kTessellatedTypes.end(),
@@ -40,11 +44,14 @@ int lattice_depth(const ImplicitField& field, const std::optional<double>& cell)
     return std::clamp(int(std::ceil(std::log2(longest / *cell))), 1, kMaxPolygonizeDepth);
 }
 
-// Replaces every blob group, isosurface, superquadric and CSG solid by its tessellation as the scene loads, timing
-// the polygoniser: blob groups by their own tessellator, the others by dual contouring of their field.
+// Replaces every blob group, isosurface, superquadric, CSG solid, torus and closed cylinder and cone by its
+// tessellation as the scene loads, timing the polygoniser: blob groups by their own tessellator, the others by dual
+// contouring of their field.
+// `cells` receives each tessellation's cell size, in its shape's own space, by the mesh that replaces the shape.
 std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_groups(
-    const BlobBenchmarkSettings& settings, const std::string& scene, TessellationSummary& summary) {
-    return [&settings, scene, &summary](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
+    const BlobBenchmarkSettings& settings, const std::string& scene, TessellationSummary& summary,
+    std::unordered_map<const Shape*, double>& cells) {
+    return [&settings, scene, &summary, &cells](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
         if (!is_tessellated(*shape)) return shape;
         const auto start = std::chrono::steady_clock::now();
         double cell = 0;
@@ -53,7 +60,12 @@ std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_gr
             cell = settings.tessellation.cell_size_for(blobs->group());
             mesh = tessellate(blobs->group(), cell, scene);
         } else {
-            const std::unique_ptr<ImplicitField> field = shape->implicit_field();
+            std::unique_ptr<ImplicitField> field;
+            try {
+                field = shape->implicit_field();
+            } catch (const std::invalid_argument&) {
+                return shape;  // a surface without an inside
+            }
             PolygonizeOptions options;
             options.depth = lattice_depth(*field, settings.tessellation.cell_size);
             cell = max_component(field->bounds().upper - field->bounds().lower) / double(1 << options.depth);
@@ -62,13 +74,32 @@ std::function<std::unique_ptr<Shape>(std::unique_ptr<Shape>)> tessellate_blob_gr
         summary.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (mesh.triangles.empty())
             throw InputError({}, scene, "a " + std::string(shape->type_name()) + " shape has no surface to tessellate");
-        summary.cell_size = summary.triangles == 0 ? cell : std::min(summary.cell_size, cell);
-        summary.coarsest_cell = std::max(summary.coarsest_cell, cell);
         summary.triangles += mesh.triangles.size();
         summary.vertices += mesh.positions.size();
         summary.closed = summary.closed && is_closed_and_consistently_oriented(mesh);
-        return std::make_unique<TriangleMeshShape>(std::move(mesh));
+        auto tessellation = std::make_unique<TriangleMeshShape>(std::move(mesh));
+        cells[tessellation.get()] = cell;
+        return tessellation;
     };
+}
+
+// The finest and coarsest tessellation cells in the world: a cell's longest edge once its object's transform (or a
+// placement's) has carried it there, so that a scaled object's cells are as large as they are drawn.
+void measure_world_cells(const RenderScene& scene, const std::unordered_map<const Shape*, double>& cells,
+                         TessellationSummary& summary) {
+    bool first = true;
+    for (std::uint32_t id = 0; id < scene.object_count(); ++id) {
+        const SceneObject object = scene.object(id);
+        const auto found = cells.find(object.shape.get());
+        if (found == cells.end()) continue;
+        double longest = 0;
+        for (const Vec3d& axis : {Vec3d{1, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0, 0, 1}})
+            longest = std::max(longest, length(object.to_world.vector(axis)));
+        const double cell = found->second * longest;
+        summary.cell_size = first ? cell : std::min(summary.cell_size, cell);
+        summary.coarsest_cell = std::max(summary.coarsest_cell, cell);
+        first = false;
+    }
 }
 
 void compare_images(const DepthMap& direct, const DepthMap& tessellated, SceneBenchmark& result) {
@@ -121,10 +152,14 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         for (const char* type : kTessellatedTypes)
             if (const auto found = primitives.find(type); found != primitives.end()) result.elements += found->second;
         if (result.elements == 0)
-            throw InputError({}, path, "the scene has no blob group, isosurface, superquadric or CSG solid to benchmark");
+            throw InputError({}, path,
+                             "the scene has no blob group, isosurface, superquadric, CSG solid, torus, cylinder or "
+                             "cone to benchmark");
         log(path + ": loading again and tessellating");
-        overrides.replace_shape = tessellate_blob_groups(settings, path, result.tessellation);
+        std::unordered_map<const Shape*, double> cells;
+        overrides.replace_shape = tessellate_blob_groups(settings, path, result.tessellation, cells);
         const std::unique_ptr<LoadedScene> tessellated = load_scene(path, overrides);
+        measure_world_cells(*tessellated->scene, cells, result.tessellation);
         result.direct = build_of(*direct);
         result.tessellated = build_of(*tessellated);
         log(path + ": building the shadow and bounce rays from the direct scene's primary hits");

@@ -34,7 +34,7 @@ struct TracedScene {
 };
 
 struct TessellationSummary {
-    double cell_size = 0;      // the finest of the tessellations' cells
+    double cell_size = 0;      // the finest of the tessellations' cells, in the world (a cell's longest edge once placed)
     double coarsest_cell = 0;  // and the coarsest
     double seconds = 0;
     std::size_t triangles = 0, vertices = 0;

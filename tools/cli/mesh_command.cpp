@@ -118,10 +118,13 @@ int run_mesh(const MeshArguments& args) {
         if (!triangles)
             throw InputError({}, "--object", "object \"" + object.name + "\" is a \"" + object.shape->type_name() +
                                                  "\", which is not traced as triangles");
-        write_mesh(args.output, extension, object.name, triangles->data());  // baked: already in world space
+        // A placement's triangles are in its definition's space; any other object's are baked into the world.
+        TriangleMeshData mesh = triangles->data();
+        if (object.instanced) mesh.transform(object.to_world);
+        write_mesh(args.output, extension, object.name, mesh);
         if (!args.quiet)
             std::printf("%s: traced as triangles: %zu vertices, %zu triangles\nwrote %s\n", printable(object.name).c_str(),
-                        triangles->data().positions.size(), triangles->data().triangles.size(), args.output.c_str());
+                        mesh.positions.size(), mesh.triangles.size(), args.output.c_str());
         return kExitOk;
     }
     const std::unique_ptr<ImplicitField> field = chosen.field ? std::move(chosen.field) : field_of(object);

@@ -79,8 +79,9 @@ constexpr const char* kEnvironment = R"({"type": "environment", "radiance": 0.5}
 // is not.
 constexpr const char* kSampledEmitter =
     R"(, {"material": "glow", "shape": {"type": "sphere", "radius": 0.2}, "transform": {"translate": [2, 0, 0]}})";
+// A superquadric cannot draw points on its surface: not a light.
 constexpr const char* kUnsampledEmitter =
-    R"(, {"material": "glow", "shape": {"type": "sphere", "radius": 0.2}, "transform": {"scale": [1, 2, 1]}})";
+    R"(, {"material": "glow", "shape": {"type": "superquadric", "radii": [0.2, 0.4, 0.2], "exponents": [1, 1]}})";
 
 std::string warning_for(const std::string& json) {
     const testing::SceneFile file(json);
