@@ -10,6 +10,7 @@
 
 #include "geometry/mesh/triangle_mesh_data.h"
 #include "geometry/polygonize/dual_contouring.h"
+#include "geometry/polygonize/mesh_topology.h"
 #include "geometry/polygonize/octree_simplification.h"
 #include "geometry/polygonize/spherical_lattice.h"
 #include "renderer/plugin/implicit_field.h"
@@ -21,9 +22,10 @@ enum class PolygonizeMethod { MarchingCubes, DualContouring, SphericalDualContou
 struct PolygonizeOptions {
     PolygonizeMethod method = PolygonizeMethod::DualContouring;
     int depth = 6;                 // 2^depth cells along each lattice axis
-    std::optional<Vec3d> origin;   // spherical: the lattice's origin (default: the centre of the field's bounds)
-    bool correct_origin = true;    // spherical: move the origin off the surface first (spherical_origin.h)
-    PoleCap pole_cap = PoleCap::AxisRoot;
+    // Spherical only (given for another method, they are errors):
+    std::optional<Vec3d> origin;       // the lattice's origin (default: the centre of the field's bounds)
+    bool correct_origin = true;        // move the origin off the surface first (spherical_origin.h)
+    std::optional<PoleCap> pole_cap;   // default: PoleCap::AxisRoot
     // dc only: collapse octree nodes whose vertex lies within this distance (scene units) of every tangent plane
     // in the node, where the topology allows (octree_simplification.h).
     std::optional<double> simplify;
@@ -36,6 +38,7 @@ struct PolygonizeReport {
     std::size_t cut_edges = 0;
     DualContouringStatistics dual;
     SimplificationStatistics simplification;
+    EdgeUse edges;  // boundary and over-shared edges of the mesh: both 0 unless correct_origin was off
     // Spherical only.
     Vec3d requested_origin;
     SphericalRange range;
@@ -55,9 +58,13 @@ constexpr int kMaxPolygonizeDepth = 10;
 std::optional<PolygonizeMethod> polygonize_method_named(const std::string& name);
 std::optional<PoleCap> pole_cap_named(const std::string& name);  // "axis", "normal", "vertical"
 
-// Throws std::invalid_argument naming the setting at fault ("depth: ...", "origin: ...", "simplify: ...") for a depth
-// out of range (with the memory it would need), an origin outside the field's bounds, a simplification tolerance
-// that is negative or not finite or given for another method than dc, or a field whose bounds are empty.
+// Throws std::invalid_argument naming the setting at fault ("depth: ...", "origin: ...", "pole_cap: ...",
+// "correct_origin: ...", "simplify: ...") for a depth out of range (with the memory it would need), an origin that is not finite or lies
+// outside the field's bounds, spherical settings given for a Cartesian method, a simplification tolerance that is
+// negative or not finite or given for another method than dc, or a field whose bounds are empty; and, naming no
+// setting, when it cannot make a closed mesh: an origin that origin correction cannot move off the surface (the
+// field is flat all round it), or a mesh with boundary or over-shared edges. With correct_origin off, a mesh with
+// holes is returned (for comparison) and its edges are counted in the report.
 Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOptions& options);
 
 }  // namespace isotrace

@@ -4,8 +4,11 @@
 // Origin correction (the paper's §III.3, with its slip fixed): the paper steps x₁ = x₀ + δ∇f, which only ever moves
 // outwards. Here the origin steps x_{k+1} = x_k + δ·s·∇f/|∇f| with s = the sign of f(x₀) (−1, inside, when f is
 // exactly 0): it stays on the side it is already on, which is the nearer one, and leaves the surface along the
-// shortest way. δ is one finest cell of the bounds (max extent / 2^L); steps continue until the estimated
-// distance |f|/|∇f| reaches two cells, at most kMaxOriginSteps times.
+// shortest way. δ is one finest cell of the bounds (max extent / 2^L); steps continue until the origin is clear:
+// the estimated distance |f|/|∇f| reaches two cells, and f keeps its sign at 26 probes one cell away (up, down,
+// across the faces, edges and corners of a cube). Where the gradient is zero or undefined (the saddle where two
+// blobs touch, a hard cube's flat field) the probes alone decide, and the step goes to the probe deepest on the
+// origin's side. At most kMaxOriginSteps steps; `converged` says whether the origin ended clear.
 #include <optional>
 
 #include "geometry/polygonize/spherical_lattice.h"

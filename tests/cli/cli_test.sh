@@ -1215,6 +1215,51 @@ case_mesh_simplify() {  # octree simplification by QEF error: fewer vertices; ba
   expect_no_file "$work/bad.obj"
 }
 
+# Two equal Kim metaballs whose surfaces touch at the centre of their bounds, a saddle of the field where the
+# gradient is 0: the default origin of the spherical octree.
+write_touching_blobs_scene() {  # write_touching_blobs_scene <path>
+  cat >"$1" <<'JSON'
+{
+  "isotrace": 1,
+  "film": { "resolution": [24, 16], "spp": 1 },
+  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0] } },
+  "materials": { "grey": { "type": "diffuse" } },
+  "objects": [ { "material": "grey", "shape": { "type": "blobs", "field": "kim", "threshold": 0.5, "elements": [
+    { "center": [-1.2166174009154453, 0, 0], "radius": 2 }, { "center": [1.2166174009154453, 0, 0], "radius": 2 } ] } } ]
+}
+JSON
+}
+
+case_mesh_touching_blobs() {  # the origin leaves the saddle: closed meshes, or exit 2 with the reason and no file
+  write_touching_blobs_scene "$work/touch.json"
+  for depth in 4 5 6; do
+    cli_expect 0 mesh "$work/touch.json" --method sdc --depth "$depth" -q -o "$work/touch$depth.obj"
+    python3 "$closed_mesh" "$work/touch$depth.obj" 0 || fail "sdc depth $depth: the mesh is not closed"
+  done
+  # Cells as large as the balls: no origin two cells clear of the surface.
+  cli_expect 2 mesh "$work/touch.json" --method sdc --depth 3 -q -o "$work/bad.obj"
+  expect_in "$work/stderr" "--origin: (0, 0, 0) could not be moved clear of the surface" stderr
+  expect_no_file "$work/bad.obj"
+  # Uncorrected, the holes are written with a warning, even when quiet.
+  cli_expect 0 mesh "$work/touch.json" --method sdc --depth 5 --no-origin-correction -q -o "$work/holes.obj"
+  expect_in "$work/stderr" "warning: the mesh has 104 boundary" stderr
+}
+
+case_mesh_method_options() {  # spherical settings for mc/dc and NaN origins exit 2, naming the option
+  write_blob_scene "$work/blobs.json"
+  for method in mc dc; do
+    cli_expect 2 mesh "$work/blobs.json" --method "$method" --origin 0,0,0 -o "$work/bad.obj"
+    expect_in "$work/stderr" "--origin: an origin applies only to spherical-octree dual contouring (sdc)" stderr
+    cli_expect 2 mesh "$work/blobs.json" --method "$method" --pole-cap normal -o "$work/bad.obj"
+    expect_in "$work/stderr" "--pole-cap: the pole cap applies only to spherical-octree dual contouring" stderr
+    cli_expect 2 mesh "$work/blobs.json" --method "$method" --no-origin-correction -o "$work/bad.obj"
+    expect_in "$work/stderr" "--no-origin-correction: origin correction applies only" stderr
+  done
+  cli_expect 2 mesh "$work/blobs.json" --method sdc --origin nan,0,0 -o "$work/bad.obj"
+  expect_in "$work/stderr" "--origin: (nan, 0, 0) has a coordinate that is NaN (not a number)" stderr
+  expect_no_file "$work/bad.obj"
+}
+
 case_deform_help() {
   cli_expect 0 deform --help
   for option in --output --quiet mesh deformers; do
