@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "geometry/field/surface_bounds.h"
 #include "geometry/polygonize/cartesian_lattice.h"
 #include "geometry/polygonize/marching_cubes.h"
 #include "geometry/polygonize/spherical_origin.h"
@@ -87,17 +88,21 @@ Polygonization mesh_of(const ImplicitField& field, const FieldBox& bounds, const
                                     " lies outside the surface's bounds " + point_text(bounds.lower) + " to " +
                                     point_text(bounds.upper));
     Vec3d origin = report.requested_origin;
+    std::optional<OriginCorrection> correction;
     if (options.correct_origin) {
-        const OriginCorrection correction = correct_origin(field, origin, options.depth);
-        origin = correction.origin;
-        report.origin_steps = correction.steps;
-        if (!correction.converged)
-            throw std::invalid_argument(
-                "origin: " + point_text(report.requested_origin) + " could not be moved clear of the surface (stopped after " +
-                std::to_string(correction.steps) + " steps at " + point_text(origin) +
-                ", where the field is flat or the surface is still near); give another origin");
+        correction = correct_origin(field, origin, options.depth);
+        origin = correction->origin;
+        report.origin_steps = correction->steps;
+        report.origin_clear = correction->converged;
     }
     report.range = spherical_range(field, origin);
+    // An origin short of two cells' clearance still serves while no surface comes within r_min; one that found no
+    // room at all (r_min at its floor) would leave a hole around it.
+    if (correction && !correction->converged && report.range.r_min <= kMinRadiusFraction * report.range.r_max)
+        throw std::invalid_argument("origin: " + point_text(report.requested_origin) +
+                                    " could not be moved clear of the surface (stopped after " +
+                                    std::to_string(correction->steps) + " steps at " + point_text(origin) +
+                                    ", where the field is flat or the surface is still near); give another origin");
     const SphericalLattice lattice(report.range, options.depth);
     const LatticeSamples samples = sample_lattice(field, lattice);
     report_samples(samples, report);
@@ -128,10 +133,13 @@ Polygonization polygonize_field(const ImplicitField& field, const PolygonizeOpti
     check_depth(options.method, options.depth);
     check_simplify(options);
     check_spherical_settings(options);
-    const FieldBox bounds = field.bounds();
+    // The lattices span the surface, not what the field's bounds promise (surface_bounds.h).
+    const SurfaceBoundedField bounded(field);
+    const FieldBox bounds = bounded.bounds();
     if (!is_finite(bounds.lower) || !is_finite(bounds.upper) || !(max_component(bounds.extent()) > 0))
         throw std::invalid_argument("the surface is empty (its bounds have no extent)");
-    Polygonization result = mesh_of(field, bounds, options);
+    Polygonization result = mesh_of(bounded, bounds, options);
+    result.report.bounds = bounds;
     // A closed surface inside the bounds must give a closed mesh; anything else is a failure, not a result
     // (unless origin correction was turned off to show what it prevents).
     result.report.edges = edge_use(result.mesh);

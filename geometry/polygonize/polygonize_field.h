@@ -3,7 +3,8 @@
 // octree's finest level, or dual contouring on a spherical octree (Kim et al. 2011, and the seed paper's stable
 // construction). The octrees subdivide only cells that may hold surface (ImplicitField::may_reach_surface), so
 // every cell that does is kept at the finest level; empty space stays coarse and produces nothing. Cartesian dual
-// contouring may then simplify the octree by QEF error (octree_simplification.h).
+// contouring may then simplify the octree by QEF error (octree_simplification.h). Both octrees span the box of
+// the surface (surface_bounds.h), not the field's bounds(): the depth is a cell size relative to the surface.
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -23,7 +24,7 @@ struct PolygonizeOptions {
     PolygonizeMethod method = PolygonizeMethod::DualContouring;
     int depth = 6;                 // 2^depth cells along each lattice axis
     // Spherical only (given for another method, they are errors):
-    std::optional<Vec3d> origin;       // the lattice's origin (default: the centre of the field's bounds)
+    std::optional<Vec3d> origin;       // the lattice's origin (default: the centre of the surface's bounds)
     bool correct_origin = true;        // move the origin off the surface first (spherical_origin.h)
     std::optional<PoleCap> pole_cap;   // default: PoleCap::AxisRoot
     // dc only: collapse octree nodes whose vertex lies within this distance (scene units) of every tangent plane
@@ -32,6 +33,7 @@ struct PolygonizeOptions {
 };
 
 struct PolygonizeReport {
+    FieldBox bounds;                  // the surface's, which the lattice spans (surface_bounds.h)
     std::size_t candidate_cells = 0;  // finest cells the octree kept
     std::size_t surface_cells = 0;    // those with corners of both signs
     std::size_t corner_samples = 0;
@@ -43,6 +45,7 @@ struct PolygonizeReport {
     Vec3d requested_origin;
     SphericalRange range;
     int origin_steps = 0;
+    bool origin_clear = false;  // origin correction ended two cells clear of the surface (spherical_origin.h)
 };
 
 struct Polygonization {
@@ -60,7 +63,7 @@ std::optional<PoleCap> pole_cap_named(const std::string& name);  // "axis", "nor
 
 // Throws std::invalid_argument naming the setting at fault ("depth: ...", "origin: ...", "pole_cap: ...",
 // "correct_origin: ...", "simplify: ...") for a depth out of range (with the memory it would need), an origin that is not finite or lies
-// outside the field's bounds, spherical settings given for a Cartesian method, a simplification tolerance that is
+// outside the surface's bounds (surface_bounds.h), spherical settings given for a Cartesian method, a simplification tolerance that is
 // negative or not finite or given for another method than dc, or a field whose bounds are empty; and, naming no
 // setting, when it cannot make a closed mesh: an origin that origin correction cannot move off the surface (the
 // field is flat all round it), or a mesh with boundary or over-shared edges. With correct_origin off, a mesh with

@@ -4,27 +4,16 @@
 #include <array>
 #include <cmath>
 
+#include "geometry/polygonize/neighbour_directions.h"
 #include "renderer/math/box_corner.h"
 
 namespace isotrace {
 namespace {
 
-// The 26 directions from a cube's centre to its corners, edge midpoints and face centres, of unit length.
-std::array<Vec3d, 26> neighbour_directions() {
-    std::array<Vec3d, 26> directions{};
-    std::size_t n = 0;
-    for (int x = -1; x <= 1; ++x)
-        for (int y = -1; y <= 1; ++y)
-            for (int z = -1; z <= 1; ++z)
-                if (x || y || z) directions[n++] = normalize(Vec3d{double(x), double(y), double(z)});
-    return directions;
-}
-const std::array<Vec3d, 26> kNeighbourDirections = neighbour_directions();
-
 // f at p + distance·d for the 26 directions d, times `side`: how far each probe lies on the origin's side.
 std::array<double, 26> probes(const ImplicitField& field, const Vec3d& p, double distance, double side) {
     std::array<double, 26> values{};
-    for (std::size_t i = 0; i < values.size(); ++i) values[i] = side * field.value(p + kNeighbourDirections[i] * distance);
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = side * field.value(p + neighbour_directions()[i] * distance);
     return values;
 }
 
@@ -62,7 +51,7 @@ OriginCorrection correct_origin(const ImplicitField& field, const Vec3d& origin,
         const std::array<double, 26> values = probes(field, result.origin, cell, side);
         const std::size_t best = std::size_t(std::max_element(values.begin(), values.end()) - values.begin());
         if (!(values[best] > side * f)) return result;  // flat all round: nowhere to go
-        result.origin += kNeighbourDirections[best] * cell;
+        result.origin += neighbour_directions()[best] * cell;
     }
 }
 
@@ -77,7 +66,7 @@ SphericalRange spherical_range(const ImplicitField& field, const Vec3d& origin) 
         const double r = (clear + reached) / 2;
         (field.may_reach_surface(origin, r) ? reached : clear) = r;
     }
-    return {origin, std::max(0.9 * clear, 1e-3 * r_max), r_max};
+    return {origin, std::max(0.9 * clear, kMinRadiusFraction * r_max), r_max};
 }
 
 }  // namespace isotrace

@@ -17,6 +17,8 @@
 namespace isotrace {
 
 constexpr int kMaxOriginSteps = 256;
+// r_min's floor, as a fraction of r_max (spherical_range).
+constexpr double kMinRadiusFraction = 1e-3;
 
 struct OriginCorrection {
     Vec3d origin;
@@ -27,7 +29,8 @@ struct OriginCorrection {
 OriginCorrection correct_origin(const ImplicitField& field, const Vec3d& origin, int depth);
 
 // r_max reaches past every corner of the field's bounds; r_min is 0.9 × the largest radius (found by bisection on
-// may_reach_surface) around the origin that holds no surface, but at least 1e-3·r_max: an origin on the surface
+// may_reach_surface) around the origin that holds no surface, but at least kMinRadiusFraction·r_max: an origin on
+// the surface
 // gets that floor, and the surface near it falls inside r_min — the mesh then has a hole there (the paper's
 // Fig. 5 failure, which origin correction avoids).
 SphericalRange spherical_range(const ImplicitField& field, const Vec3d& origin);

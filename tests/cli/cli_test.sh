@@ -1236,8 +1236,15 @@ case_mesh_touching_blobs() {  # the origin leaves the saddle: closed meshes, or 
     cli_expect 0 mesh "$work/touch.json" --method sdc --depth "$depth" -q -o "$work/touch$depth.obj"
     python3 "$closed_mesh" "$work/touch$depth.obj" 0 || fail "sdc depth $depth: the mesh is not closed"
   done
-  # Cells as large as the balls: no origin two cells clear of the surface.
-  cli_expect 2 mesh "$work/touch.json" --method sdc --depth 3 -q -o "$work/bad.obj"
+  # An origin on a sheet of no thickness has nowhere to go: exit 2, no file.
+  python3 - "$work/touch.json" "$work/sheet.json" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+scene["objects"][0]["shape"] = {"type": "isosurface", "function": "max(abs(z), abs(x) - 1, abs(y) - 1)",
+                                "contained_by": {"box": {"min": [-1.5, -1.5, -0.5], "max": [1.5, 1.5, 0.5]}}}
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+  cli_expect 2 mesh "$work/sheet.json" --method sdc --depth 4 -q -o "$work/bad.obj"
   expect_in "$work/stderr" "--origin: (0, 0, 0) could not be moved clear of the surface" stderr
   expect_no_file "$work/bad.obj"
   # Uncorrected, the holes are written with a warning, even when quiet.

@@ -163,17 +163,18 @@ int run_mesh(const MeshArguments& args) {
                     result.mesh.triangles.size(), seconds, limit.threads(), r.candidate_cells, r.surface_cells,
                     double(usage.ru_maxrss) / 1024);
         if (options->method == PolygonizeMethod::SphericalDualContouring)
-            std::printf("origin (%g, %g, %g) -> (%g, %g, %g) in %d steps; r in [%g, %g]; %zu ghost vertices\n",
+            std::printf("origin (%g, %g, %g) -> (%g, %g, %g) in %d steps%s; r in [%g, %g]; %zu ghost vertices\n",
                         r.requested_origin.x, r.requested_origin.y, r.requested_origin.z, r.range.origin.x,
-                        r.range.origin.y, r.range.origin.z, r.origin_steps, r.range.r_min, r.range.r_max,
-                        r.dual.ghost_vertices);
+                        r.range.origin.y, r.range.origin.z, r.origin_steps,
+                        options->correct_origin && !r.origin_clear ? " (less than two cells clear of the surface)" : "",
+                        r.range.r_min, r.range.r_max, r.dual.ghost_vertices);
         if (options->simplify)
             std::printf("simplified to tolerance %g: %zu octree nodes collapsed (%zu refused by topology, %zu by error)\n",
                         *options->simplify, r.simplification.collapsed_nodes, r.simplification.rejected_by_topology,
                         r.simplification.rejected_by_error);
         if (r.dual.split_vertices)
             std::printf("%zu split vertices (tunnels through ambiguous faces)\n", r.dual.split_vertices);
-        std::printf("vertex |f|/|grad f|: mean %.3g, max %.3g; Hausdorff estimate %.3g (mesh->surface %.3g, "
+        std::printf("vertex distance to the surface: mean %.3g, max %.3g; Hausdorff estimate %.3g (mesh->surface %.3g, "
                     "surface->mesh %.3g over %zu surface points)\n",
                     error.vertex_mean, error.vertex_max, error.hausdorff(), error.mesh_to_surface,
                     error.surface_to_mesh, error.surface_samples);
