@@ -1117,7 +1117,9 @@ PY
   done
   cli_expect 0 bench --list
   expect_in "$work/stdout" "blobs/direct_vs_tessellated" "bench --list"
-  expect_in "$work/stdout" "metacube_dog/mesh_dc" "bench --list"
+  for name in metacube_dog/mesh_mc metacube_dog/mesh_dc metacube_dog/mesh_sdc blobs_10k/mesh_mc blobs_10k/mesh_dc blobs_10k/mesh_sdc; do
+    expect_in "$work/stdout" "$name" "bench --list"
+  done
 }
 
 case_bench_scaling() {  # the element-count scaling alone (a filter that matches no workload)
