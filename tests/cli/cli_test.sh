@@ -2370,7 +2370,8 @@ case_isosurface_gallery_meshes() {
   local object method
   for object in "gyroid:" "rock:0" "twisted torus:1" "smooth union:0"; do
     for method in mc dc sdc; do
-      cli_expect 0 mesh scenes/isosurfaces.json --object "${object%:*}" --method $method --depth 5 -o "$work/m.obj"
+      cli_expect 0 mesh scenes/isosurfaces.json --object "${object%:*}" --method $method --depth 5 --error-samples 500 \
+        -o "$work/m.obj"
       python3 "$closed_mesh" "$work/m.obj" ${object#*:} || fail "the $method mesh of ${object%:*} is not closed"
     done
   done
