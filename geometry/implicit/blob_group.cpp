@@ -128,8 +128,17 @@ Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& p
     if (const std::optional<Vec3d> normal = outward_normal(gradient_from(near, point)))
         return *normal;
     // Only hard cubes (step fields) meet here: take the face of the nearest hard-cube boundary.
-    double best = std::numeric_limits<double>::infinity();
-    Vec3d result(0, 0, 1);
+    const std::optional<HardCubeFace> face = nearest_hard_cube_face_from(near, point);
+    return face ? face->normal : Vec3d(0, 0, 1);
+}
+
+std::optional<BlobGroup::HardCubeFace> BlobGroup::nearest_hard_cube_face(const Vec3d& point) const {
+    return nearest_hard_cube_face_from(cells_.elements_near(point), point);
+}
+
+std::optional<BlobGroup::HardCubeFace> BlobGroup::nearest_hard_cube_face_from(std::span<const std::uint32_t> near,
+                                                                               const Vec3d& point) const {
+    std::optional<HardCubeFace> nearest;
     for (std::uint32_t j : near) {
         const Metacube& element = elements_[j];
         if (!element.is_hard_cube()) continue;
@@ -137,15 +146,13 @@ Vec3d BlobGroup::normal_from(std::span<const std::uint32_t> near, const Vec3d& p
         const Vec3d p = box.to_local(point);
         for (int axis = 0; axis < 3; ++axis) {
             const double gap = std::abs(std::abs(p[axis]) - box.half_size[axis]);
-            if (gap < best) {
-                best = gap;
-                Vec3d local(0, 0, 0);
-                local[axis] = p[axis] >= 0 ? 1 : -1;
-                result = box.to_world_vector(local);
-            }
+            if (nearest && !(gap < nearest->gap)) continue;
+            Vec3d local(0, 0, 0);
+            local[axis] = p[axis] >= 0 ? 1 : -1;
+            nearest = HardCubeFace{j, box.to_world_vector(local), gap};
         }
     }
-    return result;
+    return nearest;
 }
 
 }  // namespace isotrace

@@ -85,6 +85,17 @@ public:
     Vec3d normal(const Vec3d& point) const;
     Vec3d normal_in_cell(std::uint32_t cell, const Vec3d& point) const;
 
+    // The face of a hard cube (of those listed near the point, or of `listed`) whose plane lies nearest to it: the
+    // cube, the face's outward unit normal and the distance to its plane. std::nullopt when there is no hard cube.
+    struct HardCubeFace {
+        std::uint32_t element;
+        Vec3d normal;
+        double gap;
+    };
+    std::optional<HardCubeFace> nearest_hard_cube_face(const Vec3d& point) const;
+    std::optional<HardCubeFace> nearest_hard_cube_face_from(std::span<const std::uint32_t> listed,
+                                                            const Vec3d& point) const;
+
     // Applies a similarity transform (rotation, uniform scale, translation; `scale` is its scale factor).
     void bake(const Transform& similarity, double scale);
 

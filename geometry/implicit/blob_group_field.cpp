@@ -1,4 +1,5 @@
-// The implicit field of a blob group for the polygonisers: f = T − Σ wᵢ·fᵢ (negative inside), gradient −∇Σ.
+// The implicit field of a blob group for the polygonisers: f = T − Σ wᵢ·fᵢ (negative inside), gradient −∇Σ; where
+// a hard cube's step makes the surface, the gradient is along that face's normal instead (a step has no gradient).
 //
 // value_range sums each element's range over the box: the kernel is non-increasing in dist², so wᵢ·fᵢ lies between
 // its values at the box's farthest and nearest squared distances. slope_range sums each element's slope
@@ -9,6 +10,7 @@
 // may_reach_surface bounds the sum over the ball by Lipschitz constants: element i changes by at most
 // |wᵢ|·2·|f'(0)|/Rᵢ per unit length (f is non-increasing and convex in r², so |df/dr²| ≤ |f'(0)|/R², and
 // |∇dist²| = 2·dist ≤ 2R inside the support). Elements whose support misses the ball contribute nothing there.
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/field/box_index.h"
@@ -36,10 +38,39 @@ public:
                                   : std::abs(element.weight()) * 2 * std::abs(group.kernel().unit_derivative(0)) /
                                         element.radius());
         for (const FieldBox& support : supports_boxes_) bounds_.extend(support);
+        for (const Metacube& element : group.elements()) has_hard_cubes_ = has_hard_cubes_ || element.is_hard_cube();
+        hair_ = 1e-6 * length(bounds_.extent());
     }
 
     double value(const Vec3d& p) const override { return group_.threshold() - group_.field(p); }
-    Vec3d gradient(const Vec3d& p) const override { return -group_.gradient(p); }
+    Vec3d gradient(const Vec3d& p) const override {
+        const Vec3d smooth = -group_.gradient(p);
+        if (!has_hard_cubes_) return smooth;
+        std::optional<BlobGroup::HardCubeFace> face = group_.nearest_hard_cube_face(p);
+        if (!face) {
+            // A point rounded just outside every support (a crossing on the outer face of a lone hard cube) is in
+            // no cell: look for the cubes within a hair of it.
+            std::vector<std::uint32_t> near;
+            supports_.for_each_near(p, hair_, [&](std::uint32_t i) {
+                near.push_back(i);
+                return true;
+            });
+            face = group_.nearest_hard_cube_face_from(near, p);
+        }
+        if (!face) return smooth;
+        // The step of the nearest hard cube's face decides the sign there when f differs in sign with the cube
+        // and without it: the face is the surface, and its normal the gradient's direction (as the ray tracer's
+        // normal), away from the cube for a positive weight. Its length, |f|/gap, makes |f|/|∇f| the distance to
+        // the face; the floors keep it finite and non-zero on the face.
+        const Metacube& cube = group_.elements()[face->element];
+        const double sum = group_.field(p);
+        const double without = cube.distance_squared(p) == 0 ? sum - cube.weight() : sum;
+        const double threshold = group_.threshold();
+        if ((without < threshold) == (without + cube.weight() < threshold)) return smooth;
+        const double f = threshold - sum;
+        const double length = (std::abs(f) + 1e-12 * threshold) / std::max(face->gap, 1e-12 * (1 + max_component(abs(p))));
+        return face->normal * (cube.weight() > 0 ? length : -length);
+    }
     FieldBox bounds() const override { return bounds_; }
     bool may_reach_surface(const Vec3d& centre, double radius) const override {
         double slope = 0;
@@ -105,6 +136,8 @@ private:
     BoxIndex supports_;
     std::vector<double> slopes_;  // per element, the Lipschitz constant of wᵢ·fᵢ (infinite for hard cubes)
     FieldBox bounds_ = FieldBox::none();
+    bool has_hard_cubes_ = false;
+    double hair_ = 0;  // how far off a hard cube's support a point may be rounded and still see its faces
 };
 
 }  // namespace

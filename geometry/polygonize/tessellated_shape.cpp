@@ -18,7 +18,8 @@ std::unique_ptr<Shape> tessellated_shape(const SceneNode& settings, std::unique_
     PolygonizeOptions options;
     options.method = *polygonize_method_named(settings.choice_or("method", "dc", {"mc", "dc", "sdc"}));
     options.depth = settings.integer_or("depth", 6, NumberRange::between(min_depth(options.method), kMaxPolygonizeDepth));
-    options.pole_cap = *pole_cap_named(settings.choice_or("pole_cap", "axis", {"axis", "normal", "vertical"}));
+    if (settings.has("pole_cap"))
+        options.pole_cap = *pole_cap_named(settings.choice_or("pole_cap", "axis", {"axis", "normal", "vertical"}));
     if (settings.has("simplify")) options.simplify = settings.number("simplify", NumberRange::non_negative());
     if (settings.has("origin")) {
         const std::vector<double> o = settings.numbers("origin", 3);

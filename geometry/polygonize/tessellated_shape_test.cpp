@@ -56,6 +56,11 @@ TEST(TessellatedShape, BadSettingsAreReportedWhereTheyAreWritten) {
     EXPECT_NE(simplify_mc.find("only dual contouring"), std::string::npos) << simplify_mc;
     const std::string origin = error_for(R"("shape": {"type": "sphere"}, "tessellate": {"method": "sdc", "origin": [5, 0, 0]})");
     EXPECT_NE(origin.find("origin"), std::string::npos) << origin;
+    for (const char* setting : {R"("origin": [0, 0, 0])", R"("pole_cap": "normal")"}) {
+        const std::string for_dc = error_for(std::string(R"("shape": {"type": "sphere"}, "tessellate": {"method": "dc", )") +
+                                             setting + "}");
+        EXPECT_NE(for_dc.find("applies only to spherical-octree dual contouring"), std::string::npos) << for_dc;
+    }
     const std::string open_mesh = error_for(R"("shape": {"type": "mesh", "positions": [[0,0,0], [1,0,0], [0,1,0]], "triangles": [[0,1,2]]},
         "tessellate": {})");
     EXPECT_NE(open_mesh.find("boundary edges"), std::string::npos) << open_mesh;

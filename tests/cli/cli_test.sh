@@ -1153,7 +1153,9 @@ PY
   done
   cli_expect 0 bench --list
   expect_in "$work/stdout" "blobs/direct_vs_tessellated" "bench --list"
-  expect_in "$work/stdout" "metacube_dog/mesh_dc" "bench --list"
+  for name in metacube_dog/mesh_mc metacube_dog/mesh_dc metacube_dog/mesh_sdc blobs_10k/mesh_mc blobs_10k/mesh_dc blobs_10k/mesh_sdc; do
+    expect_in "$work/stdout" "$name" "bench --list"
+  done
 }
 
 case_bench_scaling() {  # the element-count scaling alone (a filter that matches no workload)
@@ -1248,6 +1250,58 @@ case_mesh_simplify() {  # octree simplification by QEF error: fewer vertices; ba
   done
   cli_expect 2 mesh "$work/blobs.json" -o "$work/bad.obj" --depth 5 --method sdc --simplify 0.01
   expect_in "$work/stderr" "only dual contouring" stderr
+  expect_no_file "$work/bad.obj"
+}
+
+# Two equal Kim metaballs whose surfaces touch at the centre of their bounds, a saddle of the field where the
+# gradient is 0: the default origin of the spherical octree.
+write_touching_blobs_scene() {  # write_touching_blobs_scene <path>
+  cat >"$1" <<'JSON'
+{
+  "isotrace": 1,
+  "film": { "resolution": [24, 16], "spp": 1 },
+  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0] } },
+  "materials": { "grey": { "type": "diffuse" } },
+  "objects": [ { "material": "grey", "shape": { "type": "blobs", "field": "kim", "threshold": 0.5, "elements": [
+    { "center": [-1.2166174009154453, 0, 0], "radius": 2 }, { "center": [1.2166174009154453, 0, 0], "radius": 2 } ] } } ]
+}
+JSON
+}
+
+case_mesh_touching_blobs() {  # the origin leaves the saddle: closed meshes, or exit 2 with the reason and no file
+  write_touching_blobs_scene "$work/touch.json"
+  for depth in 4 5 6; do
+    cli_expect 0 mesh "$work/touch.json" --method sdc --depth "$depth" -q -o "$work/touch$depth.obj"
+    python3 "$closed_mesh" "$work/touch$depth.obj" 0 || fail "sdc depth $depth: the mesh is not closed"
+  done
+  # An origin on a sheet of no thickness has nowhere to go: exit 2, no file.
+  python3 - "$work/touch.json" "$work/sheet.json" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+scene["objects"][0]["shape"] = {"type": "isosurface", "function": "max(abs(z), abs(x) - 1, abs(y) - 1)",
+                                "contained_by": {"box": {"min": [-1.5, -1.5, -0.5], "max": [1.5, 1.5, 0.5]}}}
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+  cli_expect 2 mesh "$work/sheet.json" --method sdc --depth 4 -q -o "$work/bad.obj"
+  expect_in "$work/stderr" "--origin: (0, 0, 0) could not be moved clear of the surface" stderr
+  expect_no_file "$work/bad.obj"
+  # Uncorrected, the holes are written with a warning, even when quiet.
+  cli_expect 0 mesh "$work/touch.json" --method sdc --depth 5 --no-origin-correction -q -o "$work/holes.obj"
+  expect_in "$work/stderr" "warning: the mesh has 104 boundary" stderr
+}
+
+case_mesh_method_options() {  # spherical settings for mc/dc and NaN origins exit 2, naming the option
+  write_blob_scene "$work/blobs.json"
+  for method in mc dc; do
+    cli_expect 2 mesh "$work/blobs.json" --method "$method" --origin 0,0,0 -o "$work/bad.obj"
+    expect_in "$work/stderr" "--origin: an origin applies only to spherical-octree dual contouring (sdc)" stderr
+    cli_expect 2 mesh "$work/blobs.json" --method "$method" --pole-cap normal -o "$work/bad.obj"
+    expect_in "$work/stderr" "--pole-cap: the pole cap applies only to spherical-octree dual contouring" stderr
+    cli_expect 2 mesh "$work/blobs.json" --method "$method" --no-origin-correction -o "$work/bad.obj"
+    expect_in "$work/stderr" "--no-origin-correction: origin correction applies only" stderr
+  done
+  cli_expect 2 mesh "$work/blobs.json" --method sdc --origin nan,0,0 -o "$work/bad.obj"
+  expect_in "$work/stderr" "--origin: (nan, 0, 0) has a coordinate that is NaN (not a number)" stderr
   expect_no_file "$work/bad.obj"
 }
 
@@ -2530,7 +2584,8 @@ case_isosurface_gallery_meshes() {
   local object method
   for object in "gyroid:" "rock:0" "twisted torus:1" "smooth union:0"; do
     for method in mc dc sdc; do
-      cli_expect 0 mesh scenes/isosurfaces.json --object "${object%:*}" --method $method --depth 5 -o "$work/m.obj"
+      cli_expect 0 mesh scenes/isosurfaces.json --object "${object%:*}" --method $method --depth 5 --error-samples 500 \
+        -o "$work/m.obj"
       python3 "$closed_mesh" "$work/m.obj" ${object#*:} || fail "the $method mesh of ${object%:*} is not closed"
     done
   done

@@ -110,7 +110,7 @@ int run_bench(BenchArguments args) {
     suite.repeats = args.repeats;
     if (args.resolution != "scene") suite.resolution = parse_resolution(args.resolution, "--resolution");
     suite.path_spp = args.quick ? 1 : 4;
-    suite.mesh_depth = args.quick ? 6 : 7;
+    suite.mesh_depth = args.quick ? 6 : 8;
 
     const bool run_comparison = std::any_of(selected.begin(), selected.end(), [](const Workload& w) {
         return w.kind == WorkloadKind::BlobComparison;

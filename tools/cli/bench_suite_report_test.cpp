@@ -69,7 +69,10 @@ TEST(BenchWorkloads, FilterSelectsByName) {
               (std::vector<std::string>{"cornell_box/primary", "cornell_box/shadow", "cornell_box/bounce",
                                         "cornell_box/path"}));
     const std::vector<Workload> blobs = workloads_matching(all, std::regex("blob"));
-    EXPECT_EQ(blobs.size(), 10u);  // three ray kinds on three scenes, and the comparison
+    EXPECT_EQ(blobs.size(), 13u);  // three ray kinds on three scenes, three polygonisers on one, and the comparison
+    EXPECT_EQ(names(workloads_matching(all, std::regex("/mesh_"))),
+              (std::vector<std::string>{"blobs_10k/mesh_mc", "blobs_10k/mesh_dc", "blobs_10k/mesh_sdc",
+                                        "metacube_dog/mesh_mc", "metacube_dog/mesh_dc", "metacube_dog/mesh_sdc"}));
     EXPECT_EQ(blobs.back().kind, WorkloadKind::BlobComparison);
     EXPECT_TRUE(workloads_matching(all, std::regex("no such workload")).empty());
     EXPECT_EQ(workloads_matching(all, std::regex(".")).size(), all.size());

@@ -18,13 +18,27 @@ constexpr int kWarmUpRuns = 1;
 const char* unit_of(WorkloadKind kind) {
     switch (kind) {
         case WorkloadKind::PathTracer: return "Msamples/s";
-        case WorkloadKind::DualContouring: return "Mtriangles/s";
+        case WorkloadKind::MarchingCubes:
+        case WorkloadKind::DualContouring:
+        case WorkloadKind::SphericalDualContouring: return "Mtriangles/s";
         default: return "Mrays/s";
     }
 }
 
-// The object the polygoniser workload meshes: the dog of metacube_dog (a blended metacube group).
-constexpr const char* kMeshedObject = "dog";
+// The object the polygoniser workloads mesh: the dog of metacube_dog (a blended metacube group), the cloud of
+// blobs_10k (10 000 metaballs).
+std::string meshed_object(const std::string& scene_path) {
+    return std::filesystem::path(scene_path).stem() == "blobs_10k" ? "cloud" : "dog";
+}
+
+std::optional<PolygonizeMethod> method_of(WorkloadKind kind) {
+    switch (kind) {
+        case WorkloadKind::MarchingCubes: return PolygonizeMethod::MarchingCubes;
+        case WorkloadKind::DualContouring: return PolygonizeMethod::DualContouring;
+        case WorkloadKind::SphericalDualContouring: return PolygonizeMethod::SphericalDualContouring;
+        default: return std::nullopt;
+    }
+}
 
 // The scene's workloads and the per-scene timing state they share: secondary rays are built once.
 class SceneWorkloads {
@@ -71,11 +85,13 @@ private:
                     timing.ray_count = std::size_t(scene_->film.crop.width()) * std::size_t(scene_->film.crop.height()) *
                                        std::size_t(render.completed_spp);
                 }).front();
-            case WorkloadKind::DualContouring: {
+            case WorkloadKind::MarchingCubes:
+            case WorkloadKind::DualContouring:
+            case WorkloadKind::SphericalDualContouring: {
                 const std::unique_ptr<ImplicitField> field =
-                    field_of(find_object(*scene_->scene, kMeshedObject, scene_->path));
+                    field_of(find_object(*scene_->scene, meshed_object(scene_->path), scene_->path));
                 PolygonizeOptions options;
-                options.method = PolygonizeMethod::DualContouring;
+                options.method = *method_of(kind);
                 options.depth = settings_.mesh_depth;
                 return time_taking_turns(1, threads, runs, [&](RayCastTiming& timing, std::size_t) {
                     timing.ray_count = polygonize_field(*field, options).mesh.triangles.size();
@@ -104,7 +120,9 @@ const char* kind_name(WorkloadKind kind) {
         case WorkloadKind::ShadowRays: return "shadow";
         case WorkloadKind::BounceRays: return "bounce";
         case WorkloadKind::PathTracer: return "path";
+        case WorkloadKind::MarchingCubes: return "mesh_mc";
         case WorkloadKind::DualContouring: return "mesh_dc";
+        case WorkloadKind::SphericalDualContouring: return "mesh_sdc";
         case WorkloadKind::BlobComparison: return "direct_vs_tessellated";
     }
     return "?";
@@ -116,16 +134,18 @@ std::vector<Workload> suite_workloads() {
     const std::vector<K> rays_and_paths = {K::PrimaryRays, K::ShadowRays, K::BounceRays, K::PathTracer};
     // Triangles (the Cornell box; Embree's tutorial box lit by a point, as tools/compare-embree renders it; the
     // sweep-deformed bunny, traced as its mesh), blob groups of growing size (their scenes use the AOV integrator,
-    // so no path tracer workload), metacubes (and the polygoniser; the same dog again with textured, bumped and
+    // so no path tracer workload; blobs_10k is meshed by the polygonisers), metacubes (and the polygonisers; the same dog again with textured, bumped and
     // blended principled materials, for the cost of shading), superquadrics, CSG and multi-sided patches.
     const std::vector<std::pair<std::string, std::vector<K>>> scenes = {
         {"cornell_box", rays_and_paths},
         {"embree_cornell_box", {K::PathTracer}},
         {"sweep_bunny", rays_and_paths},
         {"blobs_1k", rays},
-        {"blobs_10k", rays},
+        {"blobs_10k", {K::PrimaryRays, K::ShadowRays, K::BounceRays, K::MarchingCubes, K::DualContouring,
+                       K::SphericalDualContouring}},
         {"blobs_100k", rays},
-        {"metacube_dog", {K::PrimaryRays, K::ShadowRays, K::BounceRays, K::PathTracer, K::DualContouring}},
+        {"metacube_dog", {K::PrimaryRays, K::ShadowRays, K::BounceRays, K::PathTracer, K::MarchingCubes,
+                          K::DualContouring, K::SphericalDualContouring}},
         {"spotted_dog", {K::PathTracer}},
         {"superquadric_gallery", rays_and_paths},
         {"csg_cup", rays_and_paths},

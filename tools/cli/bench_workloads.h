@@ -1,6 +1,6 @@
 #pragma once
 // The fixed workloads of isotrace bench: for shipped scenes, primary, shadow and one-bounce diffuse rays
-// and the full path tracer, and the polygoniser on metacube_dog. Each workload is named "<scene>/<kind>" (the
+// and the full path tracer, and the three polygonisers on metacube_dog and blobs_10k. Each workload is named "<scene>/<kind>" (the
 // names --filter matches); each runs once as a warm-up and then `repeats` timed times per thread count.
 // The blob direct-vs-tessellated comparison is a workload of the registry too ("blobs/direct_vs_tessellated")
 // but is run by tools/cli/blob_benchmark.h, which measures its own way.
@@ -16,9 +16,19 @@
 
 namespace isotrace::cli {
 
-enum class WorkloadKind { PrimaryRays, ShadowRays, BounceRays, PathTracer, DualContouring, BlobComparison };
+enum class WorkloadKind {
+    PrimaryRays,
+    ShadowRays,
+    BounceRays,
+    PathTracer,
+    MarchingCubes,
+    DualContouring,
+    SphericalDualContouring,
+    BlobComparison
+};
 
-// "primary", "shadow", "bounce", "path", "mesh_dc", "direct_vs_tessellated": the part of a name after the scene.
+// "primary", "shadow", "bounce", "path", "mesh_mc", "mesh_dc", "mesh_sdc", "direct_vs_tessellated": the part of a
+// name after the scene.
 const char* kind_name(WorkloadKind kind);
 
 struct Workload {
@@ -38,7 +48,7 @@ struct SuiteSettings {
     int repeats = 3;
     std::optional<RasterSize> resolution;  // of the ray and path workloads; default: each scene's own
     int path_spp = 4;                      // samples per pixel of one path tracer run
-    int mesh_depth = 7;                    // octree depth of the dual contouring workload
+    int mesh_depth = 8;                    // octree depth of the polygoniser workloads
 };
 
 struct WorkloadResult {

@@ -34,7 +34,7 @@ struct MeshArguments {
     int depth = 6;
     std::vector<double> origin;
     std::optional<double> simplify;
-    std::string pole_cap = "axis";
+    std::string pole_cap;  // empty: not given
     bool no_origin_correction = false;
     std::size_t error_samples = 20000;
     int threads = 0;
@@ -81,9 +81,11 @@ PolygonizeOptions options_from(const MeshArguments& args) {
     if (!method) throw InputError({}, "--method", "unknown method \"" + args.method + "\"; expected mc, dc, sdc or traced");
     options.method = *method;
     options.depth = args.depth;
-    const auto cap = pole_cap_named(args.pole_cap);
-    if (!cap) throw InputError({}, "--pole-cap", "unknown placement \"" + args.pole_cap + "\"; expected axis, normal or vertical");
-    options.pole_cap = *cap;
+    if (!args.pole_cap.empty()) {
+        options.pole_cap = pole_cap_named(args.pole_cap);
+        if (!options.pole_cap)
+            throw InputError({}, "--pole-cap", "unknown placement \"" + args.pole_cap + "\"; expected axis, normal or vertical");
+    }
     options.correct_origin = !args.no_origin_correction;
     options.simplify = args.simplify;
     if (!args.origin.empty()) {
@@ -136,8 +138,10 @@ int run_mesh(const MeshArguments& args) {
     } catch (const std::invalid_argument& error) {
         const std::string message = error.what();
         std::string option = "--object";
-        for (const char* setting : {"origin", "depth", "simplify"})
-            if (message.rfind(std::string(setting) + ":", 0) == 0) option = std::string("--") + setting;
+        for (const auto& [setting, name] : {std::pair{"origin", "--origin"}, {"depth", "--depth"},
+                                            {"simplify", "--simplify"}, {"pole_cap", "--pole-cap"},
+                                            {"correct_origin", "--no-origin-correction"}})
+            if (message.rfind(std::string(setting) + ":", 0) == 0) option = name;
         throw InputError({}, option, message.substr(message.find(':') == std::string::npos ? 0 : message.find(':') + 2));
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -146,6 +150,11 @@ int run_mesh(const MeshArguments& args) {
     const MeshError error = measure_mesh_error(*field, result.mesh, args.error_samples);
 
     write_mesh(args.output, extension, object.name, result.mesh);
+    // Only without origin correction may a mesh have holes (polygonize_field refuses them otherwise): say so, even
+    // when quiet.
+    if (result.report.edges.boundary || result.report.edges.over_shared)
+        std::fprintf(stderr, "warning: the mesh has %zu boundary and %zu over-shared edges (holes where the surface "
+                     "passes the uncorrected origin)\n", result.report.edges.boundary, result.report.edges.over_shared);
 
     if (!args.quiet) {
         const PolygonizeReport& r = result.report;
@@ -157,18 +166,18 @@ int run_mesh(const MeshArguments& args) {
                     result.mesh.triangles.size(), seconds, limit.threads(), r.candidate_cells, r.surface_cells,
                     double(usage.ru_maxrss) / 1024);
         if (options->method == PolygonizeMethod::SphericalDualContouring)
-            std::printf("origin (%g, %g, %g) -> (%g, %g, %g) in %d steps; r in [%g, %g]; %zu ghost vertices\n",
+            std::printf("origin (%g, %g, %g) -> (%g, %g, %g) in %d steps%s; r in [%g, %g]; %zu ghost vertices\n",
                         r.requested_origin.x, r.requested_origin.y, r.requested_origin.z, r.range.origin.x,
-                        r.range.origin.y, r.range.origin.z, r.origin_steps, r.range.r_min, r.range.r_max,
-                        r.dual.ghost_vertices);
+                        r.range.origin.y, r.range.origin.z, r.origin_steps,
+                        options->correct_origin && !r.origin_clear ? " (less than two cells clear of the surface)" : "",
+                        r.range.r_min, r.range.r_max, r.dual.ghost_vertices);
         if (options->simplify)
             std::printf("simplified to tolerance %g: %zu octree nodes collapsed (%zu refused by topology, %zu by error)\n",
                         *options->simplify, r.simplification.collapsed_nodes, r.simplification.rejected_by_topology,
                         r.simplification.rejected_by_error);
         if (r.dual.split_vertices)
             std::printf("%zu split vertices (tunnels through ambiguous faces)\n", r.dual.split_vertices);
-        if (r.dual.open_edges) std::printf("warning: %zu cut edges left open\n", r.dual.open_edges);
-        std::printf("vertex |f|/|grad f|: mean %.3g, max %.3g; Hausdorff estimate %.3g (mesh->surface %.3g, "
+        std::printf("vertex distance to the surface: mean %.3g, max %.3g; Hausdorff estimate %.3g (mesh->surface %.3g, "
                     "surface->mesh %.3g over %zu surface points)\n",
                     error.vertex_mean, error.vertex_max, error.hausdorff(), error.mesh_to_surface,
                     error.surface_to_mesh, error.surface_samples);
@@ -204,9 +213,9 @@ CommandRunner add_mesh_options(CLI::App* command) {
         ->type_name("DISTANCE>=0");
     command->add_flag("--no-origin-correction", args->no_origin_correction,
                       "sdc: keep the origin even when it lies on the surface (for comparison)");
-    command->add_option("--pole-cap", args->pole_cap, "sdc: ghost vertex at the poles: axis, normal or vertical")
-        ->type_name("axis|normal|vertical")
-        ->capture_default_str();
+    command->add_option("--pole-cap", args->pole_cap,
+                        "sdc: ghost vertex at the poles: axis, normal or vertical (default: axis)")
+        ->type_name("axis|normal|vertical");
     command->add_option("--error-samples", args->error_samples, "Sample points for the Hausdorff estimate")
         ->capture_default_str()
         ->check(CLI::Range(std::size_t(1), std::size_t(10000000)));
