@@ -1266,6 +1266,23 @@ case_benchmark_bad_input() {  # exit 2 before any work: unknown workloads, bad o
   expect_in "$work/stderr" "--threads" stderr
 }
 
+case_benchmark_compare() {  # two results compared; another suite's result or a file of isotrace bench: exit 2
+  cli_expect 0 benchmark --short --workloads blobs_1k,dog_mesh --json "$work/a.json" --quiet
+  cli_expect 0 benchmark --short --workloads blobs_1k --json "$work/b.json" --quiet
+  cli_expect 0 benchmark compare "$work/a.json" "$work/b.json"
+  grep -qE '^blobs_1k +threads 1 .*\[' "$work/stdout" || fail "no ratio for blobs_1k: $(cat "$work/stdout")"
+  ! grep -q dog_mesh "$work/stdout" || fail "a workload of one result only was compared"
+  expect_in "$work/stdout" "overall" stdout
+  sed 's/isotrace-bench 1/isotrace-bench 2/' "$work/a.json" >"$work/other.json"
+  cli_expect 2 benchmark compare "$work/a.json" "$work/other.json"
+  expect_in "$work/stderr" 'a result of "isotrace-bench 2"' stderr
+  cli_expect 0 bench --quick --resolution 32x18 --filter '^cornell_box/primary$' --json "$work/bench.json"
+  cli_expect 2 benchmark compare "$work/bench.json" "$work/b.json"
+  expect_in "$work/stderr" "not a result of isotrace benchmark" stderr
+  cli_expect 2 benchmark compare "$work/a.json"
+  cli_expect 2 benchmark compare "$work/a.json" "$work/missing.json"
+}
+
 case_benchmark_full() {  # the whole suite as people run it: valid, one score per thread count
   benchmark_in_empty_directory 0 --json "$work/full.json" --report "$work/full.html"
   expect_in "$work/stdout" "Score (1 thread):" stdout

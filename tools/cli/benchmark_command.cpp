@@ -6,6 +6,7 @@
 
 #include "renderer/core/did_you_mean.h"
 #include "renderer/core/input_error.h"
+#include "tools/cli/benchmark_compare.h"
 #include "tools/cli/benchmark_html_report.h"
 #include "tools/cli/benchmark_result.h"
 #include "tools/cli/command_helpers.h"
@@ -25,6 +26,8 @@ struct BenchmarkArguments {
     std::string suite;  // folder; empty: the one installed with the program
     std::string json, report;
     bool quiet = false;
+    std::vector<std::string> compare;  // A.json B.json of "benchmark compare"
+    CLI::App* compare_command = nullptr;
 };
 
 std::vector<const BenchmarkWorkload*> selected_workloads(const std::vector<std::string>& names) {
@@ -85,6 +88,12 @@ double expected_unit_seconds(const BenchmarkReference& reference, int threads) {
 }
 
 int run_benchmark(const BenchmarkArguments& args) {
+    if (args.compare_command->parsed()) {
+        const nlohmann::json a = read_benchmark_result(args.compare[0]);
+        const nlohmann::json b = read_benchmark_result(args.compare[1]);
+        std::fputs(benchmark_comparison(a, b).c_str(), stdout);
+        return kExitOk;
+    }
     if (args.list) {
         for (const BenchmarkWorkload& w : benchmark_workloads())
             std::printf("%-20s %s\n", w.name.c_str(), w.measures.c_str());
@@ -159,6 +168,11 @@ CommandRunner add_benchmark_options(CLI::App* command) {
     command->add_option("--report", args->report, "Also write an HTML page with the result as plots to this file")
         ->type_name("PATH");
     command->add_flag("-q,--quiet", args->quiet, "No progress bar on stderr");
+    args->compare_command = command->add_subcommand(
+        "compare", "Compare two results (--json files of this suite): B's speed over A's per workload, with 95 % "
+                   "confidence intervals");
+    args->compare_command->add_option("results", args->compare, "A.json B.json")->required()->expected(2)->check(
+        CLI::ExistingFile);
     return [args] { return run_benchmark(*args); };
 }
 

@@ -22,6 +22,7 @@ nlohmann::json run_json(const BenchmarkRun& run, double reference_rate, bool val
     return {{"threads", run.threads},
             {"units", run.seconds.size()},
             {"seconds", seconds},
+            {"unit_seconds", run.seconds},
             {"units_per_second", rate},
             {"units_per_second_min", low},
             {"units_per_second_max", high},

@@ -22,7 +22,7 @@ struct BenchmarkWorkloadResult {
 
 // {"benchmark", "result_format", "mode", "valid", "problems", "system", "reference_machine", "threads",
 //  "workloads": [{"name", "measures", "units_per_run", "hash", "reference_hash", "valid",
-//                 "runs": [{"threads", "units", "seconds", "units_per_second", "units_per_second_min",
+//                 "runs": [{"threads", "units", "seconds", "unit_seconds", "units_per_second", "units_per_second_min",
 //                           "units_per_second_max", "score", "score_min", "score_max"}]}],
 //  "scores": [{"threads", "score", "score_min", "score_max"}]}.
 // A workload is valid when all its units gave one hash, the reference's; the result is valid when every workload
