@@ -1283,6 +1283,19 @@ case_benchmark_compare() {  # two results compared; another suite's result or a 
   cli_expect 2 benchmark compare "$work/a.json" "$work/missing.json"
 }
 
+case_benchmark_progress_bar() {  # on a terminal: one bar over the whole run, with its ETA and the workload running
+  command -v script >/dev/null || fail "script (util-linux) is needed for a terminal"
+  script -qec "stty cols 70; '$cli' benchmark --short --workloads blobs_1k,dog_mesh" /dev/null >"$work/tty" ||
+    { cat "$work/tty" >&2; fail "benchmark on a terminal failed"; }
+  tr '\r' '\n' <"$work/tty" | sed 's/\x1b\[K//g' | grep -a '%.*ETA' >"$work/bar" || fail "no progress bar drawn"
+  cat "$work/bar" >&2
+  awk 'length($0) > 69 { exit 1 }' "$work/bar" || fail "a progress line is wider than the 70-column terminal"
+  grep -q 'blobs_1k on 1 thread' "$work/bar" || fail "the bar does not name the workload running"
+  tail -n 1 "$work/bar" | grep -q '100.0%' || fail "the progress bar did not end at 100 %"
+  # Drawn after every unit: 2 workloads, 2 thread counts (on a machine with more than one hardware thread).
+  (($(wc -l <"$work/bar") >= 2)) || fail "the bar was drawn once only"
+}
+
 case_benchmark_full() {  # the whole suite as people run it: valid, one score per thread count
   benchmark_in_empty_directory 0 --json "$work/full.json" --report "$work/full.html"
   expect_in "$work/stdout" "Score (1 thread):" stdout
