@@ -1,5 +1,6 @@
 // isotrace benchmark: the frozen suite of tools/cli/benchmark_suite.h on one thread and on all threads, validated
 // against the suite's reference outputs and scored against the reference machine (docs/benchmarking.md).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <thread>
@@ -30,19 +31,17 @@ struct BenchmarkArguments {
     CLI::App* compare_command = nullptr;
 };
 
+// The suite's workloads named in `names` (all for none), in the suite's order.
 std::vector<const BenchmarkWorkload*> selected_workloads(const std::vector<std::string>& names) {
-    std::vector<const BenchmarkWorkload*> selected;
     std::vector<std::string> all;
     for (const BenchmarkWorkload& w : benchmark_workloads()) all.push_back(w.name);
-    for (const BenchmarkWorkload& w : benchmark_workloads())
-        for (const std::string& name : names)
-            if (name == w.name) selected.push_back(&w);
     for (const std::string& name : names)
         if (std::find(all.begin(), all.end(), name) == all.end())
             throw InputError({}, "--workloads",
                              "no workload \"" + name + "\"" + did_you_mean(name, all) + "; workloads: " + joined_names(all));
-    if (names.empty())
-        for (const BenchmarkWorkload& w : benchmark_workloads()) selected.push_back(&w);
+    std::vector<const BenchmarkWorkload*> selected;
+    for (const BenchmarkWorkload& w : benchmark_workloads())
+        if (names.empty() || std::find(names.begin(), names.end(), w.name) != names.end()) selected.push_back(&w);
     return selected;
 }
 
