@@ -9,22 +9,22 @@ namespace isotrace::cli {
 
 const std::vector<BenchmarkWorkload>& benchmark_workloads() {
     using K = BenchmarkUnitKind;
-    // Units: renders at the resolution and samples per pixel the frozen scene files set, each about a second on one
-    // core of the reference machine, so that a timed run of `units` units lasts about 12 s there.
+    // Units: renders at the resolution and samples per pixel the frozen scene files set, or one mesh, each 0.25 to
+    // 0.4 s on one core of the reference machine; `units` makes a timed run last about 14 s there on one thread.
     static const std::vector<BenchmarkWorkload> workloads = {
-        {"blobs_1k", "blobs_1k.json", K::Render, "", 0, 12,
+        {"blobs_1k", "blobs_1k.json", K::Render, "", 0, 44,
          "a group of 1000 blobs, first hits and normals (AOV integrator): the blob field's cell queries"},
-        {"blobs_10k", "blobs_10k.json", K::Render, "", 0, 12, "the same at 10 000 blobs: deeper BVH, more overlap"},
-        {"blobs_100k", "blobs_100k.json", K::Render, "", 0, 12,
+        {"blobs_10k", "blobs_10k.json", K::Render, "", 0, 44, "the same at 10 000 blobs: deeper BVH, more overlap"},
+        {"blobs_100k", "blobs_100k.json", K::Render, "", 0, 40,
          "the same at 100 000 blobs: memory-bound traversal"},
-        {"metacube_dog", "metacube_dog.json", K::Render, "", 0, 12,
+        {"metacube_dog", "metacube_dog.json", K::Render, "", 0, 35,
          "blended metacubes under a sky, path traced: root finding in a soft field, shading, shadows"},
-        {"superquadric_deform", "superquadric_deform.json", K::Render, "", 0, 12,
+        {"superquadric_deform", "superquadric_deform.json", K::Render, "", 0, 56,
          "superquadrics twisted, tapered and bent, path traced: deformed implicit surfaces"},
-        {"csg_cup", "csg_cup.json", K::Render, "", 0, 12, "a CSG cup (unions, differences, intersections), path traced"},
-        {"showcase", "showcase.json", K::Render, "", 0, 12,
+        {"csg_cup", "csg_cup.json", K::Render, "", 0, 45, "a CSG cup (unions, differences, intersections), path traced"},
+        {"showcase", "showcase.json", K::Render, "", 0, 44,
          "the showcase still, small: every kind of shape, glass, depth of field, the full path tracer"},
-        {"dog_mesh", "metacube_dog.json", K::Polygonise, "dog", 7, 12,
+        {"dog_mesh", "metacube_dog.json", K::Polygonise, "dog", 7, 55,
          "the dog polygonised by dual contouring at octree depth 7: field sampling and the QEF solves"},
     };
     return workloads;

@@ -23,7 +23,7 @@ struct BenchmarkWorkload {
     BenchmarkUnitKind kind;
     std::string object;    // Polygonise: the object meshed
     int depth = 0;         // Polygonise: octree depth
-    int units = 1;         // units in one timed run: about 12 s on one core of the reference machine
+    int units = 1;         // units in one timed run: about 14 s on one core of the reference machine
     std::string measures;  // what the workload stands for, for the help text and the docs
 };
 

@@ -3,6 +3,7 @@
 #include <hwloc.h>
 #include <oneapi/tbb/version.h>
 #include <sys/utsname.h>
+#include <unistd.h>
 // Version macros only: the benchmark reads no images through OpenImageIO in this process's own code, and the image
 // module it loads is built against the same Debian package.
 #include <OpenColorIO/OpenColorABI.h>
@@ -87,11 +88,6 @@ public:
         return list;
     }
 
-    nlohmann::json memory_bytes() const {
-        if (!loaded_) return nullptr;
-        return hwloc_get_root_obj(topology_)->total_memory;
-    }
-
 private:
     hwloc_topology_t topology_ = nullptr;
     bool loaded_ = false;
@@ -121,7 +117,11 @@ nlohmann::json system_description() {
                         ? nlohmann::json(system["hardware_threads"].get<int>() > system["physical_cores"].get<int>())
                         : nlohmann::json();
     system["caches"] = topology.caches();
-    system["memory_bytes"] = topology.memory_bytes();
+    // The kernel's figure (as /proc/meminfo's MemTotal): hwloc sums its NUMA nodes, which some virtual machines
+    // describe with less memory than they have.
+    const long pages = sysconf(_SC_PHYS_PAGES), page_bytes = sysconf(_SC_PAGE_SIZE);
+    system["memory_bytes"] = pages > 0 && page_bytes > 0 ? nlohmann::json(std::uint64_t(pages) * std::uint64_t(page_bytes))
+                                                         : nlohmann::json();
     system["memory_speed"] = nullptr;  // only the SMBIOS tables say it, and they need root (dmidecode)
     const std::string cpufreq = "/sys/devices/system/cpu/cpu0/cpufreq/";
     system["clock_mhz"] = {{"base", sys_megahertz(cpufreq + "base_frequency")},

@@ -1,7 +1,7 @@
 #pragma once
-// The system facts of an isotrace benchmark result: machine_description() (CPU, ISA, compiler, commit) and the
-// topology from hwloc (sockets, cores, hardware threads, SMT, caches, memory), clocks where /sys or /proc tell
-// them, the operating system and kernel, and the versions of the libraries the work runs on.
+// The system facts of an isotrace benchmark result: machine_description() (CPU, ISA, compiler, commit), the
+// topology from hwloc (sockets, cores, hardware threads, SMT, caches), the memory size, clocks where /sys or /proc
+// tell them, the operating system and kernel, and the versions of the libraries the work runs on.
 #include <nlohmann/json.hpp>
 
 #include <string>
