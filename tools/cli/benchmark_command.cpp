@@ -124,7 +124,7 @@ int run_benchmark(const BenchmarkArguments& args) {
         BenchmarkWorkloadResult result{w, {}};
         for (int threads : thread_counts) {
             const double expected = expected_unit_seconds(references.workloads.at(w->name), threads);
-            const std::string what = w->name + " on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+            const std::string what = w->name + " on " + threads_name(threads);
             result.runs.push_back(
                 runner.run(threads, warm_up, units_of(*w), [&] { progress.unit_done(expected, what); }));
         }

@@ -1,5 +1,6 @@
 #include "tools/cli/benchmark_html_report.h"
 
+#include "tools/cli/benchmark_result.h"
 #include "tools/cli/html_page.h"
 #include "tools/cli/svg_plot.h"
 
@@ -29,8 +30,6 @@ const std::vector<std::pair<const char*, const char*>> kSystemRows = {
     {"Build type", "build_type"},
     {"isotrace", "isotrace_version"},
     {"Commit", "commit"}};
-
-std::string threads_name(int threads) { return std::to_string(threads) + (threads == 1 ? " thread" : " threads"); }
 
 double number_or_zero(const nlohmann::json& value) { return value.is_number() ? value.get<double>() : 0; }
 

@@ -48,9 +48,9 @@ std::string figure(const nlohmann::json& value, const char* format) {
     return text;
 }
 
-std::string threads_name(int threads) { return std::to_string(threads) + (threads == 1 ? " thread" : " threads"); }
-
 }  // namespace
+
+std::string threads_name(int threads) { return std::to_string(threads) + (threads == 1 ? " thread" : " threads"); }
 
 double geometric_mean(const std::vector<double>& values) {
     if (values.empty()) return 0;
@@ -92,9 +92,10 @@ nlohmann::json benchmark_result_json(const std::vector<BenchmarkWorkloadResult>&
                                    {"reference_hash", reference.hash},
                                    {"valid", valid},
                                    {"runs", nlohmann::json::array()}};
+        // A short run (one unit, no warm-up) checks the outputs; its times are not scored.
         for (const BenchmarkRun& run : r.runs)
-            workload["runs"].push_back(
-                run_json(run, run.threads == 1 ? reference.single_thread_rate : reference.all_threads_rate, valid));
+            workload["runs"].push_back(run_json(
+                run, run.threads == 1 ? reference.single_thread_rate : reference.all_threads_rate, valid && !short_mode));
         result["workloads"].push_back(workload);
     }
     // A score stands only for a valid result of the whole suite.
@@ -143,6 +144,7 @@ std::string benchmark_summary(const nlohmann::json& result) {
         for (const auto& problem : result["problems"]) text += "  " + problem.get<std::string>() + "\n";
         return text;
     }
+    if (result["mode"] == "short") return text + "No scores: a short run only checks the outputs.\n";
     for (const auto& s : result["scores"]) {
         if (s["score"].is_null()) {
             text += "Score (" + threads_name(s["threads"].get<int>()) +

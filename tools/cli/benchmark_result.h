@@ -27,13 +27,17 @@ struct BenchmarkWorkloadResult {
 //  "scores": [{"threads", "score", "score_min", "score_max"}]}.
 // A workload is valid when all its units gave one hash, the reference's; the result is valid when every workload
 // is. Scores are units per second over the reference machine's, times 1000 (its geometric mean over the workloads
-// for "scores"), null when the result is invalid, a reference rate is missing or (overall) not every workload ran.
+// for "scores"), null when the result is invalid or short, a reference rate is missing or (overall) not every
+// workload ran.
 nlohmann::json benchmark_result_json(const std::vector<BenchmarkWorkloadResult>& results,
                                      const BenchmarkReferences& references, bool short_mode,
                                      const nlohmann::json& system);
 
 // The geometric mean of positive values; 0 for none.
 double geometric_mean(const std::vector<double>& values);
+
+// "1 thread", "2 threads".
+std::string threads_name(int threads);
 
 // The table and the score lines, from a result.
 std::string benchmark_summary(const nlohmann::json& result);

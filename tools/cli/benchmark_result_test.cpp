@@ -78,9 +78,12 @@ TEST(BenchmarkResult, OneThreadCountHasNoSpeedUpAndAPartialSuiteNoOverallScore) 
     EXPECT_EQ(result["mode"], "short");
     EXPECT_TRUE(result["valid"].get<bool>());
     EXPECT_TRUE(result["scores"][0]["score"].is_null());
+    EXPECT_TRUE(result["workloads"][0]["runs"][0]["score"].is_null());  // short: no per-workload score either
+    EXPECT_TRUE(benchmark_result_json(all, references(), false, {})["workloads"][0]["runs"][0]["score"].is_number());
     const std::string summary = benchmark_summary(result);
     EXPECT_EQ(summary.find("speed-up"), std::string::npos) << summary;
     EXPECT_NE(summary.find("not scores to quote"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("No scores: a short run"), std::string::npos) << summary;
 }
 
 }  // namespace
