@@ -2,6 +2,7 @@
 
 #include <system_error>
 
+#include "renderer/core/input_error.h"
 #include "renderer/params/json_document.h"
 #include "renderer/params/scene_node.h"
 
