@@ -1296,6 +1296,35 @@ case_benchmark_progress_bar() {  # on a terminal: one bar over the whole run, wi
   (($(wc -l <"$work/bar") >= 2)) || fail "the bar was drawn once only"
 }
 
+case_benchmark_report_in_browser() {  # the HTML page as a browser (headless Chromium) parses it: its plots are there
+  command -v chromium >/dev/null || fail "chromium (Debian package) is needed to open the HTML report"
+  cli_expect 0 benchmark --short --workloads blobs_1k,csg_cup --report "$work/page.html" --quiet
+  # No sandbox: tests may run as root, where Chromium's sandbox refuses to start.
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom "file://$work/page.html" >"$work/dom.html" \
+    2>"$work/chromium.log" || { tail -5 "$work/chromium.log" >&2; fail "headless Chromium could not open the report"; }
+  python3 - "$work/dom.html" <<'PY' || fail "the report, as the browser parsed it, lacks its plots"
+import sys
+from html.parser import HTMLParser
+class Plots(HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.svg = self.rect = 0
+        self.titles = []
+    def handle_starttag(self, tag, attrs):
+        if tag == "svg": self.svg += 1
+        if tag == "rect": self.rect += 1
+    def handle_data(self, data):
+        self.titles.append(data)
+p = Plots()
+p.feed(open(sys.argv[1]).read())
+text = " ".join(p.titles)
+# One chart per thread count (units per second: a short run has no scores), and the speed-up chart on 2 threads.
+assert p.svg >= 2, p.svg
+assert p.rect >= 2 * 2, p.rect  # a bar per workload in every chart
+assert "Units per second on 1 thread" in text and "blobs_1k" in text and "csg_cup" in text, text[:500]
+PY
+}
+
 case_benchmark_full() {  # the whole suite as people run it: valid, one score per thread count
   benchmark_in_empty_directory 0 --json "$work/full.json" --report "$work/full.html"
   expect_in "$work/stdout" "Score (1 thread):" stdout
