@@ -108,7 +108,10 @@ std::string benchmark_html_report(const nlohmann::json& result) {
     html += "</table>\n<p>Reference machine (1000): " + xml_escaped(result["reference_machine"].get<std::string>()) +
             "</p>\n";
     html += "<h2>Workloads</h2>\n" + score_charts(result) + speedup_chart(result);
-    html += "<h2>System</h2>\n" + html_facts_table(result["system"], kSystemRows);
+    nlohmann::json readable = nlohmann::json::object();
+    for (const auto& [title, key] : kSystemRows)
+        readable[key] = readable_system_fact(key, result["system"].contains(key) ? result["system"][key] : nlohmann::json());
+    html += "<h2>System</h2>\n" + html_facts_table(readable, kSystemRows);
     html += "<h2>All figures</h2>\n" + figures_table(result);
     return html + "</body>\n</html>\n";
 }

@@ -18,7 +18,9 @@ nlohmann::json result(const std::string& hash, int thread_counts) {
         if (thread_counts == 2) r.runs.push_back({2, {0.5, 0.6}, {hash}});
         results.push_back(r);
     }
-    return benchmark_result_json(results, references, false, {{"cpu", "Test CPU"}, {"caches", nlohmann::json::array()}});
+    return benchmark_result_json(
+        results, references, false,
+        {{"cpu", "Test CPU"}, {"caches", {{{"level", 2}, {"type", "unified"}, {"bytes", 524288}, {"count", 2}}}}});
 }
 
 TEST(BenchmarkHtmlReport, ScoresSpeedUpAndSystem) {
@@ -27,6 +29,7 @@ TEST(BenchmarkHtmlReport, ScoresSpeedUpAndSystem) {
     EXPECT_NE(html.find("Score on 2 threads"), std::string::npos);
     EXPECT_NE(html.find("Speed-up of 2 threads over 1 thread"), std::string::npos);
     EXPECT_NE(html.find("Test CPU"), std::string::npos);
+    EXPECT_NE(html.find("L2 unified 512 KiB x2"), std::string::npos);
     EXPECT_NE(html.find("the &lt;reference&gt; box"), std::string::npos);
     EXPECT_EQ(html.find("Score void"), std::string::npos);
     EXPECT_EQ(html.find("<script"), std::string::npos);

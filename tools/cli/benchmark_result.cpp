@@ -48,7 +48,59 @@ std::string figure(const nlohmann::json& value, const char* format) {
     return text;
 }
 
+std::string bytes_text(std::uint64_t bytes) {
+    char text[32];
+    if (bytes >= (std::uint64_t(1) << 30)) std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1 << 30));
+    else if (bytes >= (std::uint64_t(1) << 20)) std::snprintf(text, sizeof text, "%.0f MiB", double(bytes) / double(1 << 20));
+    else std::snprintf(text, sizeof text, "%.0f KiB", double(bytes) / 1024);
+    return text;
+}
+
+// The facts of `keys`, readable, after their labels: "CPU AMD EPYC, sockets 1, ...".
+std::string facts_line(const nlohmann::json& system, std::initializer_list<std::pair<const char*, const char*>> keys) {
+    std::string line;
+    for (const auto& [label, key] : keys)
+        line += std::string(line.empty() ? "" : ", ") + label + " " +
+                readable_system_fact(key, system.is_object() && system.contains(key) ? system[key] : nlohmann::json());
+    return line + "\n";
+}
+
+std::string system_lines(const nlohmann::json& system) {
+    return facts_line(system, {{"CPU", "cpu"},
+                               {"sockets", "sockets"},
+                               {"cores", "physical_cores"},
+                               {"hardware threads", "hardware_threads"},
+                               {"SMT", "smt"}}) +
+           facts_line(system, {{"caches", "caches"}, {"clock", "clock_mhz"}, {"memory", "memory_bytes"}}) +
+           facts_line(system, {{"OS", "os"}, {"kernel", "kernel"}}) +
+           facts_line(system, {{"isotrace", "isotrace_version"},
+                               {"commit", "commit"},
+                               {"compiler", "compiler"},
+                               {"Embree", "embree_version"},
+                               {"on", "embree_isa"}});
+}
+
 }  // namespace
+
+std::string readable_system_fact(const std::string& key, const nlohmann::json& value) {
+    if (value.is_null()) return "unknown";
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";
+    std::string text;
+    if (key == "caches" && value.is_array()) {
+        for (const auto& c : value)
+            text += (text.empty() ? "L" : ", L") + c["level"].dump() + " " + c["type"].get<std::string>() + " " +
+                    bytes_text(c["bytes"].get<std::uint64_t>()) + " x" + c["count"].dump();
+        return text.empty() ? "unknown" : text;
+    }
+    if (key == "clock_mhz" && value.is_object()) {
+        for (const auto& [name, mhz] : value.items())
+            if (mhz.is_number()) text += (text.empty() ? "" : ", ") + name + " " + figure(mhz, "%.0f") + " MHz";
+        return text.empty() ? "unknown" : text;
+    }
+    if (key == "memory_bytes" && value.is_number_unsigned()) return bytes_text(value.get<std::uint64_t>());
+    return value.dump();
+}
 
 std::string threads_name(int threads) { return std::to_string(threads) + (threads == 1 ? " thread" : " threads"); }
 
@@ -118,6 +170,7 @@ std::string benchmark_summary(const nlohmann::json& result) {
                        (result["mode"] == "short" ? " (short run: checks the outputs; its figures are not scores to quote)"
                                                   : "") +
                        "\n\n";
+    text += system_lines(result["system"]) + "\n";
     char line[256];
     std::snprintf(line, sizeof line, "%-20s", "workload");
     text += line;

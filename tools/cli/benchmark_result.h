@@ -36,6 +36,10 @@ nlohmann::json benchmark_result_json(const std::vector<BenchmarkWorkloadResult>&
 // The geometric mean of positive values; 0 for none.
 double geometric_mean(const std::vector<double>& values);
 
+// The system facts as people read them: caches as "L1 data 32 KiB x2, ...", clocks as "current 2445 MHz", memory
+// in GiB, true and false as "yes" and "no", null as "unknown"; other values as they are (strings) or as JSON.
+std::string readable_system_fact(const std::string& key, const nlohmann::json& value);
+
 // "1 thread", "2 threads".
 std::string threads_name(int threads);
 

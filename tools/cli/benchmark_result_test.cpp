@@ -21,6 +21,18 @@ std::vector<BenchmarkWorkloadResult> results(double seconds, const std::string& 
     return all;
 }
 
+TEST(BenchmarkResult, ReadableSystemFacts) {
+    const nlohmann::json caches = nlohmann::json::parse(
+        R"([{"level": 1, "type": "data", "bytes": 32768, "count": 2}, {"level": 3, "type": "unified", "bytes": 33554432, "count": 1}])");
+    EXPECT_EQ(readable_system_fact("caches", caches), "L1 data 32 KiB x2, L3 unified 32 MiB x1");
+    EXPECT_EQ(readable_system_fact("clock_mhz", {{"base", nullptr}, {"current", 2445.4}}), "current 2445 MHz");
+    EXPECT_EQ(readable_system_fact("clock_mhz", {{"base", nullptr}}), "unknown");
+    EXPECT_EQ(readable_system_fact("memory_bytes", std::uint64_t(24) << 30), "24.0 GiB");
+    EXPECT_EQ(readable_system_fact("smt", false), "no");
+    EXPECT_EQ(readable_system_fact("os", "Debian"), "Debian");
+    EXPECT_EQ(readable_system_fact("memory_speed", nullptr), "unknown");
+}
+
 TEST(BenchmarkResult, GeometricMean) {
     EXPECT_DOUBLE_EQ(geometric_mean({4, 9}), 6);
     EXPECT_DOUBLE_EQ(geometric_mean({1000}), 1000);
