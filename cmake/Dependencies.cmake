@@ -9,6 +9,8 @@ find_package(tinyobjloader CONFIG REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET OpenColorIO)
+# The machine's topology (sockets, cores, SMT, caches) for isotrace benchmark results.
+pkg_check_modules(HWLOC REQUIRED IMPORTED_TARGET hwloc)
 # Distributed rendering (renderer/distributed, docs/distributed.md): on when an MPI implementation is found
 # (Debian: libopenmpi-dev); the build works without it.
 find_package(MPI COMPONENTS CXX QUIET)

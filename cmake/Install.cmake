@@ -13,6 +13,7 @@ endforeach()
 install(FILES ${CMAKE_BINARY_DIR}/include/renderer/core/version.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace/renderer/core)
 install(DIRECTORY config/ DESTINATION ${CMAKE_INSTALL_DATADIR}/isotrace/config)
+install(DIRECTORY scenes/benchmark/ DESTINATION ${CMAKE_INSTALL_DATADIR}/isotrace/benchmark)
 install(TARGETS isotrace_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 set_target_properties(isotrace_cli PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
 

@@ -1,6 +1,9 @@
 #pragma once
 // 64-bit FNV-1a: a small, dependency-free hash for detecting changed or corrupted bytes (not for security).
+#include <cinttypes>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <string_view>
 
 namespace isotrace {
@@ -14,6 +17,13 @@ inline std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t h = kFnv1aOf
         h *= 0x100000001b3ull;
     }
     return h;
+}
+
+// A hash as 16 lower-case hex digits, as reports and messages print it.
+inline std::string hex64(std::uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016" PRIx64, value);
+    return text;
 }
 
 }  // namespace isotrace

@@ -38,12 +38,6 @@ std::uint64_t hash_scene(const LoadedScene& scene) {
     return fnv1a_64(settings.take(), h);
 }
 
-std::string hex(std::uint64_t value) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016" PRIx64, value);
-    return text;
-}
-
 std::string host_name() {
     char name[256] = {};
     if (gethostname(name, sizeof name - 1) != 0) return "unknown host";
@@ -93,11 +87,11 @@ std::string disagreement(const std::vector<RankIdentity>& ranks) {
             return who + " runs isotrace " + other.version + ", rank 0 isotrace " + first.version +
                    ": every rank must run the same build";
         if (other.binary != first.binary)
-            return who + " runs another isotrace build than rank 0 (binary fingerprint " + hex(other.binary) +
-                   ", rank 0's " + hex(first.binary) + "): every rank must run the same build";
+            return who + " runs another isotrace build than rank 0 (binary fingerprint " + hex64(other.binary) +
+                   ", rank 0's " + hex64(first.binary) + "): every rank must run the same build";
         if (other.scene != first.scene)
-            return who + " loaded another scene than rank 0 (scene fingerprint " + hex(other.scene) + ", rank 0's " +
-                   hex(first.scene) + "): the scene file, a file it references or an option differs between ranks";
+            return who + " loaded another scene than rank 0 (scene fingerprint " + hex64(other.scene) + ", rank 0's " +
+                   hex64(first.scene) + "): the scene file, a file it references or an option differs between ranks";
     }
     return {};
 }

@@ -134,9 +134,10 @@ case_info_help() {
 case_no_subcommand() {  # plain isotrace: a short usage, every command with what it does; exit 0
   cli_expect 0
   local command
-  for command in "render   Render a scene to image files" "info     Validate a scene and print a summary" "depth    Write a range image" \
-    "bench    Time fixed workloads" "mesh     Polygonise" "(alias: polygonize)" "deform   Apply mesh deformers" \
-    "diff     Compare an image with a reference" "isotrace COMMAND --help"; do
+  for command in "render    Render a scene to image files" "info      Validate a scene and print a summary" \
+    "depth     Write a range image" "bench     Time fixed workloads" "benchmark Run the frozen benchmark suite" \
+    "mesh      Polygonise" "(alias: polygonize)" "deform    Apply mesh deformers" \
+    "diff      Compare an image with a reference" "isotrace COMMAND --help"; do
     expect_in "$work/stdout" "$command" "the usage"
   done
   (($(wc -l <"$work/stdout") <= 15)) || fail "the usage is not short: $(wc -l <"$work/stdout") lines"
@@ -1199,6 +1200,180 @@ case_bench_bad_input() {  # each with --quick and one workload, so that a wrongl
   expect_in "$work/stderr" "--scaling-max" stderr
   cli_expect 2 bench --resolution 0x5 --quick --filter '^cornell_box/primary$'
   expect_in "$work/stderr" "--resolution" stderr
+}
+
+# isotrace benchmark: from a directory without scenes, the suite found beside the program.
+benchmark_in_empty_directory() {  # benchmark_in_empty_directory <exit code> <benchmark arguments...>
+  local expected=$1
+  shift
+  mkdir -p "$work/empty"
+  (cd "$work/empty" && cli_expect "$expected" benchmark "$@")
+}
+
+# Checks a result file against docs/benchmark-result.schema.json; more checks as Python after it, on `result`.
+expect_benchmark_json() {  # expect_benchmark_json <result.json> <python statements>
+  python3 - "$1" docs/benchmark-result.schema.json "$2" <<'PY' || fail "the benchmark result $1 is wrong"
+import json, sys
+import jsonschema
+result = json.load(open(sys.argv[1]))
+jsonschema.validate(result, json.load(open(sys.argv[2])))
+exec(sys.argv[3])
+PY
+}
+
+case_benchmark_short() {  # the short mode from another directory: every workload's output matches the reference
+  benchmark_in_empty_directory 0 --short --json "$work/short.json" --report "$work/short.html"
+  expect_in "$work/stdout" "short run" stdout
+  local name
+  for name in blobs_1k blobs_10k blobs_100k metacube_dog superquadric_deform csg_cup showcase dog_mesh; do
+    grep -qE "^$name .* ok\$" "$work/stdout" || fail "$name is not validated: $(cat "$work/stdout")"
+  done
+  ! grep -q "WRONG\|VOID" "$work/stdout" || fail "the short run is not valid"
+  expect_benchmark_json "$work/short.json" '
+assert result["valid"] and result["mode"] == "short" and not result["problems"], result["problems"]
+assert len(result["workloads"]) == 8
+for w in result["workloads"]:
+    assert w["hash"] == w["reference_hash"], w
+    assert all(r["units"] == 1 for r in w["runs"]), w
+assert result["system"]["hardware_threads"] >= 1 and result["system"]["caches"], result["system"]
+'
+  expect_in "$work/short.html" "<svg" "the HTML report"
+  expect_in "$work/short.html" "Units per second on 1 thread" "the HTML report"
+}
+
+case_benchmark_tampered() {  # a reference hash or a scene changed: the score is void, exit 3, the outputs written
+  cp -r "$(dirname "$cli")/../share/isotrace/benchmark/isotrace-bench-1" "$work/suite"
+  python3 - "$work/suite/references.json" <<'PY'
+import json, sys
+references = json.load(open(sys.argv[1]))
+references["workloads"]["blobs_1k"]["hash"] = "0123456789abcdef"
+json.dump(references, open(sys.argv[1], "w"))
+PY
+  benchmark_in_empty_directory 3 --short --suite "$work/suite" --workloads blobs_1k --json "$work/void.json"
+  expect_in "$work/stdout" "SCORE VOID" stdout
+  expect_in "$work/stdout" "0123456789abcdef" stdout
+  expect_benchmark_json "$work/void.json" '
+assert not result["valid"] and len(result["problems"]) == 1
+assert result["scores"][0]["score"] is None
+'
+  # The reference restored but the scene changed: another image, so another hash.
+  cp "$(dirname "$cli")/../share/isotrace/benchmark/isotrace-bench-1/references.json" "$work/suite/"
+  sed -i 's/"seed": \([0-9]*\)/"seed": 1\1/' "$work/suite/blobs_1k.json"
+  ! cmp -s "$work/suite/blobs_1k.json" "$(dirname "$cli")/../share/isotrace/benchmark/isotrace-bench-1/blobs_1k.json" ||
+    fail "the scene was not changed"
+  benchmark_in_empty_directory 3 --short --suite "$work/suite" --workloads blobs_1k
+  expect_in "$work/stdout" "is not the reference output" stdout
+}
+
+case_benchmark_installed() {  # cmake --install puts the suite where the installed program finds it
+  cmake --install "$(dirname "$cli")/.." --prefix "$work/prefix" >"$work/install.log" 2>&1 ||
+    fail "cmake --install failed: $(tail -5 "$work/install.log")"
+  [[ -f "$work/prefix/share/isotrace/benchmark/isotrace-bench-1/references.json" ]] || fail "the suite is not installed"
+  mkdir -p "$work/empty"
+  (
+    cd "$work/empty"
+    run "$work/stdout" "$work/stderr" "$work/prefix/bin/isotrace" benchmark --short --workloads blobs_1k
+    ((status == 0)) || { show_output; fail "the installed benchmark exited with $status"; }
+  )
+  grep -qE "^blobs_1k .* ok\$" "$work/stdout" || fail "the installed suite's output is not validated"
+}
+
+case_benchmark_bad_input() {  # exit 2 before any work: unknown workloads, bad outputs, a missing or other suite
+  cli_expect 2 benchmark --workloads blobs_1k,blob_10k
+  expect_in "$work/stderr" 'no workload "blob_10k"' stderr
+  expect_in "$work/stderr" "blobs_10k" stderr
+  cli_expect 2 benchmark --short --workloads blobs_1k --json "$work/missing/b.json"
+  expect_in "$work/stderr" "--json" stderr
+  cli_expect 2 benchmark --short --workloads blobs_1k --report "$work"
+  expect_in "$work/stderr" "--report" stderr
+  local suite
+  suite=$(dirname "$cli")/../share/isotrace/benchmark/isotrace-bench-1
+  cli_expect 2 benchmark --short --workloads blobs_1k --json "$suite/references.json"
+  expect_in "$work/stderr" "--json" stderr
+  cli_expect 2 benchmark --short --suite "$work/no_such_folder"
+  expect_in "$work/stderr" "--suite" stderr
+  cp -r "$suite" "$work/suite"
+  sed -i 's/isotrace-bench 1/isotrace-bench 0/' "$work/suite/references.json"
+  cli_expect 2 benchmark --short --suite "$work/suite"
+  expect_in "$work/stderr" 'references of "isotrace-bench 0"' stderr
+  rm "$work/suite/csg_cup.json"
+  sed -i 's/isotrace-bench 0/isotrace-bench 1/' "$work/suite/references.json"
+  cli_expect 2 benchmark --short --suite "$work/suite" --workloads csg_cup
+  expect_in "$work/stderr" "suite folder is incomplete" stderr
+  cli_expect 2 benchmark --threads 0
+  expect_in "$work/stderr" "--threads" stderr
+}
+
+case_benchmark_compare() {  # two results compared; another suite's result or a file of isotrace bench: exit 2
+  cli_expect 0 benchmark --short --workloads blobs_1k,dog_mesh --json "$work/a.json" --quiet
+  cli_expect 0 benchmark --short --workloads blobs_1k --json "$work/b.json" --quiet
+  cli_expect 0 benchmark compare "$work/a.json" "$work/b.json"
+  grep -qE '^blobs_1k +threads 1 .*\[' "$work/stdout" || fail "no ratio for blobs_1k: $(cat "$work/stdout")"
+  ! grep -q dog_mesh "$work/stdout" || fail "a workload of one result only was compared"
+  expect_in "$work/stdout" "overall" stdout
+  sed 's/isotrace-bench 1/isotrace-bench 2/' "$work/a.json" >"$work/other.json"
+  cli_expect 2 benchmark compare "$work/a.json" "$work/other.json"
+  expect_in "$work/stderr" 'a result of "isotrace-bench 2"' stderr
+  cli_expect 0 bench --quick --resolution 32x18 --filter '^cornell_box/primary$' --json "$work/bench.json"
+  cli_expect 2 benchmark compare "$work/bench.json" "$work/b.json"
+  expect_in "$work/stderr" "not a result of isotrace benchmark" stderr
+  cli_expect 2 benchmark compare "$work/a.json"
+  cli_expect 2 benchmark compare "$work/a.json" "$work/missing.json"
+}
+
+case_benchmark_progress_bar() {  # on a terminal: one bar over the whole run, with its ETA and the workload running
+  command -v script >/dev/null || fail "script (util-linux) is needed for a terminal"
+  script -qec "stty cols 70; '$cli' benchmark --short --workloads blobs_1k,dog_mesh" /dev/null >"$work/tty" ||
+    { cat "$work/tty" >&2; fail "benchmark on a terminal failed"; }
+  tr '\r' '\n' <"$work/tty" | sed 's/\x1b\[K//g' | grep -a '%.*ETA' >"$work/bar" || fail "no progress bar drawn"
+  cat "$work/bar" >&2
+  awk 'length($0) > 69 { exit 1 }' "$work/bar" || fail "a progress line is wider than the 70-column terminal"
+  grep -q 'blobs_1k on 1 thread' "$work/bar" || fail "the bar does not name the workload running"
+  tail -n 1 "$work/bar" | grep -q '100.0%' || fail "the progress bar did not end at 100 %"
+  # Drawn after every unit: 2 workloads, 2 thread counts (on a machine with more than one hardware thread).
+  (($(wc -l <"$work/bar") >= 2)) || fail "the bar was drawn once only"
+}
+
+case_benchmark_report_in_browser() {  # the HTML page as a browser (headless Chromium) parses it: its plots are there
+  command -v chromium >/dev/null || fail "chromium (Debian package) is needed to open the HTML report"
+  cli_expect 0 benchmark --short --workloads blobs_1k,csg_cup --report "$work/page.html" --quiet
+  # No sandbox: tests may run as root, where Chromium's sandbox refuses to start.
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom "file://$work/page.html" >"$work/dom.html" \
+    2>"$work/chromium.log" || { tail -5 "$work/chromium.log" >&2; fail "headless Chromium could not open the report"; }
+  python3 - "$work/dom.html" <<'PY' || fail "the report, as the browser parsed it, lacks its plots"
+import sys
+from html.parser import HTMLParser
+class Plots(HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.svg = self.rect = 0
+        self.titles = []
+    def handle_starttag(self, tag, attrs):
+        if tag == "svg": self.svg += 1
+        if tag == "rect": self.rect += 1
+    def handle_data(self, data):
+        self.titles.append(data)
+p = Plots()
+p.feed(open(sys.argv[1]).read())
+text = " ".join(p.titles)
+# One chart per thread count (units per second: a short run has no scores), and the speed-up chart on 2 threads.
+assert p.svg >= 2, p.svg
+assert p.rect >= 2 * 2, p.rect  # a bar per workload in every chart
+assert "Units per second on 1 thread" in text and "blobs_1k" in text and "csg_cup" in text, text[:500]
+PY
+}
+
+case_benchmark_full() {  # the whole suite as people run it: valid, one score per thread count
+  benchmark_in_empty_directory 0 --json "$work/full.json" --report "$work/full.html"
+  expect_in "$work/stdout" "Score (1 thread):" stdout
+  expect_benchmark_json "$work/full.json" '
+assert result["valid"] and result["mode"] == "full"
+for w in result["workloads"]:
+    for r in w["runs"]:
+        assert r["units"] == w["units_per_run"] and r["seconds"] > 0, w
+assert all(s["score"] is not None for s in result["scores"]), result["scores"]
+'
+  expect_in "$work/full.html" "Score on 1 thread" "the HTML report"
 }
 
 case_polygonize_obj() {  # "polygonize" is an alias of "mesh": the scene's one implicit object by default

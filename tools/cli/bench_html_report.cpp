@@ -3,30 +3,19 @@
 #include <map>
 
 #include "tools/cli/bench_report.h"
+#include "tools/cli/html_page.h"
 #include "tools/cli/svg_plot.h"
 
 namespace isotrace::cli {
 namespace {
 
-std::string cell(const std::string& text, const char* tag = "td") {
-    return std::string("<") + tag + ">" + xml_escaped(text) + "</" + tag + ">";
-}
-
-std::string machine_table(const nlohmann::json& machine) {
-    const std::pair<const char*, const char*> rows[] = {
-        {"CPU", "cpu"},           {"Cores", "cores"},       {"Embree ISA", "embree_isa"},
-        {"Embree native packets", "embree_native_packets"}, {"Blob march", "blob_march_isa"},
-        {"Embree", "embree_version"},
-        {"Compiler", "compiler"}, {"Flags", "flags"},       {"Build type", "build_type"},
-        {"isotrace", "isotrace_version"},                   {"Commit", "commit"}};
-    std::string html = "<table class=\"machine\">\n";
-    for (const auto& [title, key] : rows) {
-        const nlohmann::json& value = machine.contains(key) ? machine[key] : nlohmann::json("unknown");
-        html += "<tr>" + cell(title, "th") + cell(value.is_string() ? value.get<std::string>() : value.dump()) +
-                "</tr>\n";
-    }
-    return html + "</table>\n";
-}
+// The machine's facts, in the order the page lists them.
+const std::vector<std::pair<const char*, const char*>> kMachineRows = {
+    {"CPU", "cpu"},           {"Cores", "cores"},       {"Embree ISA", "embree_isa"},
+    {"Embree native packets", "embree_native_packets"}, {"Blob march", "blob_march_isa"},
+    {"Embree", "embree_version"},
+    {"Compiler", "compiler"}, {"Flags", "flags"},       {"Build type", "build_type"},
+    {"isotrace", "isotrace_version"},                   {"Commit", "commit"}};
 
 // One bar chart per unit, of the runs on the last (largest) thread count: median with a min–max whisker.
 std::string throughput_charts(const nlohmann::json& workloads) {
@@ -79,13 +68,13 @@ std::string element_scaling_plots(const nlohmann::json& scaling) {
     }
     std::string table = "<table>\n<tr>";
     for (const char* title : {"elements", "rays", "ns per ray", "cost growth", "build ms", "bytes per element"})
-        table += cell(title, "th");
+        table += html_cell(title, "th");
     table += "</tr>\n";
     for (const auto& p : scaling["points"])
-        table += "<tr>" + cell(short_number(p["elements"].get<double>())) + cell(short_number(p["rays"].get<double>())) +
-                 cell(short_number(p["ns_per_ray"].get<double>())) + cell(short_number(p["cost_growth"].get<double>())) +
-                 cell(short_number(p["build_seconds"].get<double>() * 1e3)) +
-                 cell(short_number(p["bytes_per_element"].get<double>())) + "</tr>\n";
+        table += "<tr>" + html_cell(short_number(p["elements"].get<double>())) + html_cell(short_number(p["rays"].get<double>())) +
+                 html_cell(short_number(p["ns_per_ray"].get<double>())) + html_cell(short_number(p["cost_growth"].get<double>())) +
+                 html_cell(short_number(p["build_seconds"].get<double>() * 1e3)) +
+                 html_cell(short_number(p["bytes_per_element"].get<double>())) + "</tr>\n";
     table += "</table>\n";
     cost.series.push_back(ns);
     memory.series.push_back(bytes);
@@ -98,18 +87,18 @@ std::string figures_table(const nlohmann::json& workloads) {
     std::string html = "<table>\n<tr>";
     for (const char* title : {"workload", "unit", "threads", "median", "min", "q1", "q3", "max", "speed-up",
                               "efficiency", "build ms", "peak MiB"})
-        html += cell(title, "th");
+        html += html_cell(title, "th");
     html += "</tr>\n";
     for (const auto& w : workloads)
         for (const auto& run : w["runs"]) {
             const auto& t = run["throughput"];
-            html += "<tr>" + cell(w["name"].get<std::string>()) + cell(w["unit"].get<std::string>()) +
-                    cell(std::to_string(run["threads"].get<int>()));
-            for (const char* key : {"median", "min", "q1", "q3", "max"}) html += cell(short_number(t[key].get<double>()));
-            html += cell(short_number(run["speedup"].get<double>())) +
-                    cell(short_number(100 * run["efficiency"].get<double>()) + " %") +
-                    cell(short_number(w["build_seconds"].get<double>() * 1e3)) +
-                    cell(short_number(double(w["peak_memory_bytes"].get<std::uint64_t>()) / (1 << 20))) + "</tr>\n";
+            html += "<tr>" + html_cell(w["name"].get<std::string>()) + html_cell(w["unit"].get<std::string>()) +
+                    html_cell(std::to_string(run["threads"].get<int>()));
+            for (const char* key : {"median", "min", "q1", "q3", "max"}) html += html_cell(short_number(t[key].get<double>()));
+            html += html_cell(short_number(run["speedup"].get<double>())) +
+                    html_cell(short_number(100 * run["efficiency"].get<double>()) + " %") +
+                    html_cell(short_number(w["build_seconds"].get<double>() * 1e3)) +
+                    html_cell(short_number(double(w["peak_memory_bytes"].get<std::uint64_t>()) / (1 << 20))) + "</tr>\n";
         }
     return html + "</table>\n";
 }
@@ -117,17 +106,12 @@ std::string figures_table(const nlohmann::json& workloads) {
 }  // namespace
 
 std::string bench_html_report(const nlohmann::json& report) {
-    std::string html =
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>isotrace bench</title>\n"
-        "<style>\nbody{font-family:sans-serif;margin:2em;color:#222;max-width:1100px}\n"
-        "table{border-collapse:collapse;margin:1em 0}th,td{border:1px solid #ccc;padding:3px 8px;text-align:left}\n"
-        "td{font-variant-numeric:tabular-nums}figure{margin:1em 0}pre{background:#f6f6f6;padding:1em;overflow:auto}\n"
-        "</style>\n</head>\n<body>\n<h1>isotrace bench</h1>\n";
+    std::string html = html_page_start("isotrace bench");
     const auto& settings = report["settings"];
     html += "<p>Warm-up run and " + std::to_string(settings["repeats"].get<int>()) +
             " timed run(s) per workload and thread count" + (settings["quick"].get<bool>() ? " (--quick)" : "") +
             ".</p>\n";
-    html += "<h2>Machine</h2>\n" + machine_table(report["machine"]);
+    html += "<h2>Machine</h2>\n" + html_facts_table(report["machine"], kMachineRows);
     if (!report["workloads"].empty()) {
         html += "<h2>Throughput</h2>\n" + throughput_charts(report["workloads"]);
         html += "<h2>Thread scaling</h2>\n" + thread_scaling_plot(report);

@@ -11,6 +11,7 @@ CommandRunner add_render_options(CLI::App* command);
 CommandRunner add_info_options(CLI::App* command);
 CommandRunner add_depth_options(CLI::App* command);
 CommandRunner add_bench_options(CLI::App* command);
+CommandRunner add_benchmark_options(CLI::App* command);
 CommandRunner add_mesh_options(CLI::App* command);
 CommandRunner add_deform_options(CLI::App* command);
 CommandRunner add_diff_options(CLI::App* command);

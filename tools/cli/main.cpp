@@ -32,7 +32,9 @@ constexpr Command kCommands[] = {
      add_info_options},
     {"depth", "Write a range image: view depth as 256 grey levels, near white, far black", nullptr,
      add_depth_options},
-    {"bench", "Time fixed workloads (rays, path tracing, polygonising)", nullptr, add_bench_options},
+    {"bench", "Time fixed workloads (rays, path tracing, polygonising), for developers", nullptr, add_bench_options},
+    {"benchmark", "Run the frozen benchmark suite: validated outputs, one score to quote", nullptr,
+     add_benchmark_options},
     // "polygonize": the blob-only tessellator this command replaced.
     {"mesh", "Polygonise an implicit object, or write a traced one's triangles", "polygonize", add_mesh_options},
     {"deform", "Apply mesh deformers (sweep-based free-form deformation) to a mesh file", nullptr,
@@ -63,7 +65,7 @@ void print_usage(const CLI::App& app) {
                 app.get_description().c_str());
     for (const Command& command : kCommands) {
         const std::string alias = command.alias == nullptr ? "" : std::string(" (alias: ") + command.alias + ")";
-        std::printf("  %-8s %s%s\n", command.name, command.summary, alias.c_str());
+        std::printf("  %-9s %s%s\n", command.name, command.summary, alias.c_str());
     }
 }
 

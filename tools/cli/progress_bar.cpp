@@ -26,9 +26,6 @@ std::string format_duration(double seconds) {
 }
 
 std::string format_progress_line(const RenderProgress& progress, int columns) {
-    const double fraction = std::clamp(progress.fraction, 0.0, 1.0);
-    char percent[16];
-    std::snprintf(percent, sizeof percent, "%5.1f%%", fraction * 100);
     const double mrays = progress.elapsed_seconds > 0 ? progress.rays / progress.elapsed_seconds * 1e-6 : 0;
     char speed[32];
     std::snprintf(speed, sizeof speed, "%.2f Mrays/s", mrays);
@@ -38,9 +35,16 @@ std::string format_progress_line(const RenderProgress& progress, int columns) {
                                        format_duration(*progress.time_budget_seconds) + " budget"
                                  : format_duration(progress.elapsed_seconds) + " elapsed  ETA " +
                                        format_duration(progress.eta_seconds);
-    // Parts in order of importance; the least important go first when the terminal is narrow.
-    const std::vector<std::string> parts = {percent, time, std::to_string(progress.completed_spp) + " spp done",
-                                            speed};
+    return format_progress(progress.fraction, {time, std::to_string(progress.completed_spp) + " spp done", speed},
+                           columns);
+}
+
+std::string format_progress(double fraction, const std::vector<std::string>& details, int columns) {
+    fraction = std::clamp(fraction, 0.0, 1.0);
+    char percent[16];
+    std::snprintf(percent, sizeof percent, "%5.1f%%", fraction * 100);
+    std::vector<std::string> parts = {percent};
+    parts.insert(parts.end(), details.begin(), details.end());
     constexpr int kMaxBar = 30, kMinBar = 10;
     const int usable = std::max(1, columns - 1);  // the last column would wrap on some terminals
     std::size_t shown = parts.size();
@@ -64,11 +68,15 @@ std::string format_progress_line(const RenderProgress& progress, int columns) {
     return line;
 }
 
-void ProgressBar::update(const RenderProgress& progress) {
+void ProgressBar::draw(const std::string& line) {
     if (!enabled_) return;
-    std::fprintf(stderr, "\r%s\x1b[K", format_progress_line(progress, terminal_columns()).c_str());
+    std::fprintf(stderr, "\r%s\x1b[K", line.c_str());
     std::fflush(stderr);
     drawn_ = true;
+}
+
+void ProgressBar::update(const RenderProgress& progress) {
+    if (enabled_) draw(format_progress_line(progress, terminal_columns()));
 }
 
 void ProgressBar::finish() {

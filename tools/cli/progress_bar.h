@@ -13,6 +13,7 @@ class ProgressBar {
 public:
     explicit ProgressBar(bool enabled) : enabled_(enabled) {}
     void update(const RenderProgress& progress);
+    void draw(const std::string& line);  // any line, e.g. from format_progress
     void finish();  // ends the line
 
 private:
@@ -27,6 +28,10 @@ std::string format_duration(double seconds);
 
 // The line the bar draws, at most columns - 1 characters: the bar shrinks, then the least important parts go.
 std::string format_progress_line(const RenderProgress& progress, int columns);
+
+// A bar, the percentage and then `details` in order of importance, at most columns - 1 characters: the bar
+// shrinks, then the last details go.
+std::string format_progress(double fraction, const std::vector<std::string>& details, int columns);
 
 // Width of the terminal on stderr (80 when unknown).
 int terminal_columns();

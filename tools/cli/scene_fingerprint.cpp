@@ -9,15 +9,9 @@
 namespace isotrace::cli {
 namespace {
 
-std::string hex(std::uint64_t value) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-    return text;
-}
-
 nlohmann::json fingerprint(const std::filesystem::path& file) {
     const std::string bytes = read_input_file(file, UINT64_MAX, "");
-    return {{"path", file.string()}, {"bytes", bytes.size()}, {"fnv1a64", hex(fnv1a_64(bytes))}};
+    return {{"path", file.string()}, {"bytes", bytes.size()}, {"fnv1a64", hex64(fnv1a_64(bytes))}};
 }
 
 }  // namespace
@@ -34,7 +28,7 @@ std::string scene_hash(const LoadedScene& scene) {
         lines += std::to_string(file.at("bytes").get<std::uint64_t>()) + " " + file.at("fnv1a64").get<std::string>() + "\n";
     // The scene's overrides change it as its files do; a scene without them keeps the hash it always had.
     for (const std::string& setting : scene.settings) lines += "set " + setting + "\n";
-    return hex(fnv1a_64(lines));
+    return hex64(fnv1a_64(lines));
 }
 
 }  // namespace isotrace::cli
