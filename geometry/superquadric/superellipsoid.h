@@ -28,6 +28,9 @@ struct Superellipsoid {
     ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const;
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south <= 2 && east_west <= 2; }
+    // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave
+    // within each octant: along a ray, between the coordinate planes.
+    bool is_concave_in_octants() const { return north_south >= 2 && east_west >= 2; }
     // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative).
     Interval gauge_range(const IntervalBox& magnitudes) const;
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 
+#include "geometry/field/concave_crossings.h"
 #include "geometry/field/convex_crossings.h"
 #include "geometry/polynomial/monotone_root_finder.h"
+#include "geometry/sphere/sphere_intersection.h"
 #include "geometry/superquadric/superquadric_along_ray.h"
 #include "renderer/math/line_box_clip.h"
 
@@ -35,10 +37,10 @@ double Superquadric::local_field(const Vec3d& local) const {
     return undeformed ? shape_.gauge(*undeformed) - 1 : 1;  // outside a stage box is outside the object
 }
 
-double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse().point(point)); }
+double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse_point(point)); }
 
 double Superquadric::continued_field(const Vec3d& point) const {
-    const Vec3d local = placement_.inverse().point(point);
+    const Vec3d local = placement_.inverse_point(point);
     const IntervalBox& box = deformation_.deformed_box();
     const Vec3d clamped(std::clamp(local.x, box.x.lo, box.x.hi), std::clamp(local.y, box.y.lo, box.y.hi),
                         std::clamp(local.z, box.z.lo, box.z.hi));
@@ -46,7 +48,7 @@ double Superquadric::continued_field(const Vec3d& point) const {
 }
 
 Vec3d Superquadric::normal(const Vec3d& point) const {
-    const DeformationChain::Path path = deformation_.inverse_path(placement_.inverse().point(point));
+    const DeformationChain::Path path = deformation_.inverse_path(placement_.inverse_point(point));
     const Vec3d local = deformation_.deform_normal(path, shape_.normal(path[0]));
     return normalize(placement_.normal(local));
 }
@@ -65,6 +67,19 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (!clip) return;
     const double t0 = clip->t_enter, t1 = clip->t_exit;
 
+    if (deformation_.empty() && shape_.polynomial_degree() == 2) {
+        // ε1 = ε2 = 1: an ellipsoid, the unit sphere once lengths are divided by the radii; its closed form (a
+        // cancellation-free quadratic) is exact and much cheaper than the general polynomial solver.
+        ++work.polynomial_solves;
+        const Vec3d& r = shape_.radii;
+        const Vec3d start = o + d * t0;  // in u = t − t0, for precision
+        const std::optional<SphereRoots> roots = intersect_sphere({start.x / r.x, start.y / r.y, start.z / r.z},
+                                                                  {d.x / r.x, d.y / r.y, d.z / r.z}, {0, 0, 0}, 1);
+        if (!roots || !(roots->t0 < roots->t1)) return;  // grazing contacts are misses (docs/decisions.md)
+        if (roots->t0 >= 0 && roots->t0 <= t1 - t0 && !visit(Crossing{t0 + roots->t0, true})) return;
+        if (roots->t1 >= 0 && roots->t1 <= t1 - t0) visit(Crossing{t0 + roots->t1, false});
+        return;
+    }
     if (deformation_.empty() && shape_.polynomial_degree() > 0) {
         ++work.polynomial_solves;
         const Polynomial p = shape_.polynomial_along(o + d * t0, d);  // in u = t − t0, for precision
@@ -101,8 +116,19 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         }
     }
     cuts[count++] = t1;
+    const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
+        if (concave) {
+            const ConcaveOutcome outcome =
+                visit_concave_crossings<precision>(cuts[i], cuts[i + 1], g_start, g_end, i > 0, i + 2 < count,
+                                                   resolution, value_and_slope, work.search, visit);
+            if (outcome == ConcaveOutcome::Stopped) return;
+            if (outcome == ConcaveOutcome::Settled) {
+                g_start = g_end;
+                continue;
+            }
+        }
         if (!search_crossings<precision>(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound,
                                          slope, work.search, visit, value_and_slope))
             return;

@@ -3,12 +3,15 @@
 // TR: local frame → the shape's space). Rays are intersected in the local deformed frame, where the placement
 // keeps t unchanged, and the surface is found as the sign changes of g = G(D⁻¹(p(t))) − 1 along the ray
 // (G the superellipsoid's gauge, D the deformation chain):
+// - undeformed with ε1 = ε2 = 1: an ellipsoid, intersected in closed form (a quadratic);
 // - undeformed with ε1 = ε2 = 2/n, n even: F − 1 is a polynomial in t, solved by the monotone-interval finder;
 // - otherwise: the ray is cut at the local coordinate planes when undeformed (where F changes form), then each
 //   piece is searched by interval subdivision (crossing_search.h) with the bounds of g and g′ along the ray
 //   (superquadric_along_ray.h);
 // - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches from the ends find its
-//   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts.
+//   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts;
+// - undeformed with ε1, ε2 ≥ 2: g is concave on each piece between the coordinate planes, and tangent cutting
+//   planes settle each piece without bounds (concave_crossings.h), again the search taking over near tangents.
 #include <optional>
 #include <vector>
 

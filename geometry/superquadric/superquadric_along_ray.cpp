@@ -7,8 +7,8 @@ namespace isotrace {
 SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, const Vec3d& origin,
                                            const Vec3d& direction)
     : superquadric_(superquadric),
-      origin_(superquadric.placement().inverse().point(origin)),
-      direction_(superquadric.placement().inverse().vector(direction)) {}
+      origin_(superquadric.placement().inverse_point(origin)),
+      direction_(superquadric.placement().inverse_vector(direction)) {}
 
 ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
     Vec3d velocity = direction_;
