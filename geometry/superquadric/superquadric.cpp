@@ -1,6 +1,8 @@
 #include "geometry/superquadric/superquadric.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "geometry/field/concave_crossings.h"
 #include "geometry/field/convex_crossings.h"
@@ -15,6 +17,31 @@ namespace {
 double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
 }
+
+// The last few points of a search whose difference-of-convex parts were taken: a halved stretch shares its ends with
+// its parent and its sibling.
+class MixedSamples {
+public:
+    template <class Take>
+    DifferenceOfConvexSample at(double t, const Take& take) {
+        for (int k = 0; k < filled_; ++k)
+            if (entries_[k].t == t) return entries_[k].sample;
+        Entry& slot = entries_[next_];
+        slot = {t, take()};
+        next_ = (next_ + 1) % kSize;
+        filled_ = std::min(filled_ + 1, kSize);
+        return slot.sample;
+    }
+
+private:
+    static constexpr int kSize = 4;
+    struct Entry {
+        double t;
+        DifferenceOfConvexSample sample;
+    };
+    Entry entries_[kSize];
+    int filled_ = 0, next_ = 0;
+};
 
 }  // namespace
 
@@ -93,10 +120,41 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     }
 
     const auto value = [&](double t) { return ray.value(t); };
-    const auto bound = [&](double a, double b) { return ray.bound(a, b); };
-    const auto slope = [&](double a, double b) { return ray.slope_bound(a, b); };
     const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const bool convex = deformation_.empty() && shape_.is_convex();
+    const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
+    const bool mixed = deformation_.empty() && !convex && !concave;
+    // The piece being searched, and whether its ends lie on coordinate planes (cusps: no tangents there).
+    double piece_lo = t0, piece_hi = t1;
+    bool cusp_lo = false, cusp_hi = false;
+    MixedSamples samples;
+    const auto sample_at = [&](double t) {
+        return samples.at(t, [&] {
+            DifferenceOfConvexSample sample = shape_.inside_difference(o + d * t, d);
+            if ((t == piece_lo && cusp_lo) || (t == piece_hi && cusp_hi)) sample.convex.slope = sample.subtracted.slope = NAN;
+            return sample;
+        });
+    };
+    // Mixed exponents: the chords and tangents of φ's convex parts (difference_of_convex.h) bound far tighter
+    // than interval arithmetic; where they settle nothing, the interval bounds are asked. φ has g's sign but not
+    // its slope: a bound of φ′ that excludes zero is handed to the search only as what the search takes from such
+    // a bound of g′ — that g changes sign at most once on the stretch.
+    const auto bound = [&](double a, double b) {
+        if (mixed) {
+            const Interval phi = difference_of_convex_range(a, sample_at(a), b, sample_at(b));
+            if (phi.lo >= 0) return Interval{0, std::numeric_limits<double>::infinity()};
+            if (phi.hi < 0) return Interval{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::denorm_min()};
+            return Interval::unbounded();
+        }
+        return ray.bound(a, b);
+    };
+    const auto slope = [&](double a, double b) {
+        if (mixed) {
+            const Interval phi = difference_of_convex_slope(sample_at(a), sample_at(b));
+            return phi.excludes_zero() ? phi : Interval::unbounded();
+        }
+        return ray.slope_bound(a, b);
+    };
     double g_start = value(t0);
     if (convex && visit_convex_crossings(t0, t1, g_start, value(t1), value_and_slope, first_only, work.search, visit))
         return;
@@ -116,13 +174,13 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         }
     }
     cuts[count++] = t1;
-    const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
+        piece_lo = cuts[i], piece_hi = cuts[i + 1], cusp_lo = i > 0, cusp_hi = i + 2 < count;
         if (concave) {
             const ConcaveOutcome outcome =
-                visit_concave_crossings<precision>(cuts[i], cuts[i + 1], g_start, g_end, i > 0, i + 2 < count,
-                                                   resolution, value_and_slope, work.search, visit);
+                visit_concave_crossings<precision>(piece_lo, piece_hi, g_start, g_end, cusp_lo, cusp_hi, resolution,
+                                                   value_and_slope, work.search, visit);
             if (outcome == ConcaveOutcome::Stopped) return;
             if (outcome == ConcaveOutcome::Settled) {
                 g_start = g_end;

@@ -158,19 +158,23 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
     EXPECT_GT(hits, rays / 5);
 }
 
-// Undeformed stars with both exponents ≥ 2, whose crossings come from tangent cutting planes on each piece between
-// the coordinate planes (concave_crossings.h): every crossing, not only the first, against the oracle, with rays
+// Undeformed stars, whose crossings come from tangent cutting planes (both exponents ≥ 2, concave_crossings.h) or
+// from the bounds of a difference of convex functions (one exponent on each side of 2, difference_of_convex.h) on
+// each piece between the coordinate planes: every crossing, not only the first, against the oracle, with rays
 // aimed at the coordinate planes and axes, where the pieces meet at the stars' cusps.
-TEST(SuperquadricStress, ConcaveStarsGiveEveryCrossingTheOracleSees) {
+TEST(SuperquadricStress, UndeformedStarsGiveEveryCrossingTheOracleSees) {
     const std::size_t rays = stress_rays() / 4;
     constexpr int kRaysPerShape = 20, kSamples = 4000;
     constexpr double kTMax = 40;
     std::mt19937 random(57);
-    std::uniform_real_distribution<double> unit(-1, 1), size(0.3, 1.5), exponent(2, Superellipsoid::kMaxExponent);
+    std::uniform_real_distribution<double> unit(-1, 1), size(0.3, 1.5), star(2, Superellipsoid::kMaxExponent),
+        log_round(std::log(Superellipsoid::kMinExponent), std::log(2.0));
     std::size_t crossings_found = 0, grazing_pairs = 0, failures = 0;
     for (std::size_t done = 0; done < rays && failures < 20;) {
         const Vec3d radii{size(random), size(random), size(random)};
-        const Superellipsoid shape{radii, exponent(random), exponent(random)};
+        const bool mixed = done % 40 >= 20, round_north_south = random() % 2;
+        const double first = star(random), second = mixed ? std::exp(log_round(random)) : star(random);
+        const Superellipsoid shape{radii, round_north_south ? second : first, round_north_south ? first : second};
         const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
                                     Transform::rotate({unit(random), unit(random), unit(random) + 1e-3}, 180 * unit(random));
         const Superquadric s(shape, DeformationChain(shape), placement);
