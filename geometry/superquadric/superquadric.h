@@ -11,7 +11,9 @@
 // - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches from the ends find its
 //   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts;
 // - undeformed with ε1, ε2 ≥ 2: g is concave on each piece between the coordinate planes, and tangent cutting
-//   planes settle each piece without bounds (concave_crossings.h), again the search taking over near tangents.
+//   planes settle each piece without bounds (concave_crossings.h), again the search taking over near tangents;
+// - undeformed with one exponent on each side of 2: the search takes bounds of a difference of convex functions
+//   with g's sign (difference_of_convex.h) instead of interval bounds.
 #include <optional>
 #include <vector>
 
