@@ -46,7 +46,9 @@ private:
 }  // namespace
 
 Superquadric::Superquadric(Superellipsoid shape, DeformationChain deformation, Transform placement)
-    : shape_(shape), deformation_(std::move(deformation)), placement_(placement) {}
+    : shape_(shape), deformation_(std::move(deformation)), placement_(placement) {
+    if (!deformation_.empty()) shell_ = SurfaceShell(deformation_.deformed_box());
+}
 
 IntervalBox Superquadric::bounds() const {
     const IntervalBox& local = deformation_.deformed_box();
@@ -62,6 +64,14 @@ IntervalBox Superquadric::bounds() const {
 double Superquadric::local_field(const Vec3d& local) const {
     const std::optional<Vec3d> undeformed = deformation_.inverse(local);
     return undeformed ? shape_.gauge(*undeformed) - 1 : 1;  // outside a stage box is outside the object
+}
+
+Interval Superquadric::local_field_range(const IntervalBox& local) const {
+    bool clipped = false;
+    const std::optional<IntervalBox> undeformed = deformation_.inverse_box(local, clipped);
+    if (!undeformed) return Interval{1, 1};
+    const Interval gauge = shape_.gauge_range({undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
+    return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
 }
 
 double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse_point(point)); }
@@ -155,10 +165,18 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         }
         return ray.slope_bound(a, b);
     };
+    const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
+    if (!deformation_.empty()) {
+        const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
+        shell_.visit_runs(o, d, t0, t1, range, [&](double a, double b) {
+            return search_crossings<precision>(a, b, value(a), value(b), resolution, false, value, bound, slope,
+                                               work.search, visit, value_and_slope);
+        });
+        return;
+    }
     double g_start = value(t0);
     if (convex && visit_convex_crossings(t0, t1, g_start, value(t1), value_and_slope, first_only, work.search, visit))
         return;
-    const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
 
     // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
     // linear and the bound is exact.

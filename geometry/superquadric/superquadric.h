@@ -20,6 +20,7 @@
 #include "geometry/field/crossing_search.h"
 #include "geometry/superquadric/deformation_chain.h"
 #include "geometry/superquadric/superellipsoid.h"
+#include "geometry/superquadric/surface_shell.h"
 #include "renderer/math/transform.h"
 
 namespace isotrace {
@@ -48,6 +49,9 @@ public:
     double field(const Vec3d& point) const;
     // The field at a point of the local deformed frame (before the placement).
     double local_field(const Vec3d& local) const;
+    // Contains local_field over a box of the local deformed frame (interval inverse of the chain, then the gauge's
+    // range; points outside a stage box count as outside, 1).
+    Interval local_field_range(const IntervalBox& local) const;
     // field() continued beyond the deformed box by the distance to it, in the local deformed frame (field() is a
     // constant 1 out there, the ray tracer needing only its sign): negative inside, continuous and rising outward.
     double continued_field(const Vec3d& point) const;
@@ -78,6 +82,7 @@ private:
     Superellipsoid shape_;
     DeformationChain deformation_;
     Transform placement_;
+    SurfaceShell shell_;  // deformed only: where the search needs to look
 };
 
 }  // namespace isotrace
