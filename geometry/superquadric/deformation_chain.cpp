@@ -49,34 +49,37 @@ Vec3d DeformationChain::forward(const Vec3d& p) const {
     return q;
 }
 
-bool DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, Path& path) const {
-    path[stages_.size()] = q;
+template <class AtStage>
+std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, AtStage&& at_stage) const {
+    Vec3d point = q;
     for (std::size_t k = stages_.size(); k > 0; --k) {
-        if (check_boxes && !boxes_[k].contains(path[k])) return false;
-        path[k - 1] = std::visit([&](const auto& s) { return s.inverse(path[k]); }, stages_[k - 1]);
+        if (check_boxes && !boxes_[k].contains(point)) return std::nullopt;
+        point = std::visit([&](const auto& s) { return s.inverse(point); }, stages_[k - 1]);
+        at_stage(k - 1, point);
     }
     // Undeformed, no box is needed: the gauge exceeds 1 everywhere outside the superellipsoid's box, and a box
     // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton).
-    return !check_boxes || stages_.empty() || boxes_[0].contains(path[0]);
+    if (check_boxes && !stages_.empty() && !boxes_[0].contains(point)) return std::nullopt;
+    return point;
 }
 
 std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q) const {
-    Path path;
-    if (!walk_inverse(q, true, path)) return std::nullopt;
-    return path[0];
+    return walk_inverse(q, true, [](std::size_t, const Vec3d&) {});
 }
 
 std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velocity) const {
-    Path path;
-    if (!walk_inverse(q, true, path)) return std::nullopt;
-    for (std::size_t k = stages_.size(); k > 0; --k)
-        velocity = std::visit([&](const auto& s) { return s.jacobian(path[k - 1]); }, stages_[k - 1]).solve(velocity);
-    return path[0];
+    Vec3d along = velocity;
+    const std::optional<Vec3d> point = walk_inverse(q, true, [&](std::size_t stage, const Vec3d& preimage) {
+        along = std::visit([&](const auto& s) { return s.jacobian(preimage); }, stages_[stage]).solve(along);
+    });
+    if (point) velocity = along;
+    return point;
 }
 
 DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
     Path path;
-    walk_inverse(q, false, path);
+    path[stages_.size()] = q;
+    walk_inverse(q, false, [&](std::size_t stage, const Vec3d& preimage) { path[stage] = preimage; });
     return path;
 }
 

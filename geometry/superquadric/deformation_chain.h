@@ -57,9 +57,11 @@ public:
     Vec3d deform_normal(const Path& path, const Vec3d& undeformed_normal) const;
 
 private:
-    // The shared inverse walk: stops (returning false) at the first stage box that does not contain the point
-    // when `check_boxes`, and records every stage's point in `path`.
-    bool walk_inverse(const Vec3d& q, bool check_boxes, Path& path) const;
+    // The shared inverse walk, last stage first: hands each stage's preimage to at_stage(stage, preimage) and
+    // returns the undeformed point; nullopt at the first stage box that does not contain the point when
+    // `check_boxes`. Keeps only the current point (the search's point evaluations fill no path).
+    template <class AtStage>
+    std::optional<Vec3d> walk_inverse(const Vec3d& q, bool check_boxes, AtStage&& at_stage) const;
 
     // Recomputes boxes_ for the current stages (at construction only, so the cells need not be kept).
     void compute_stage_boxes();

@@ -61,19 +61,46 @@ double Superellipsoid::gauge(const Vec3d& p) const {
     return p_norm(horizontal, std::abs(p.z) / radii.z, 2 / north_south);
 }
 
+namespace {
+
+// d(|x|/a)/dt: on each piece the search cuts at the coordinate planes, |x| is linear.
+double rate(double coordinate, double along, double radius) {
+    return (coordinate < 0 || (coordinate == 0 && along < 0) ? -along : along) / radius;
+}
+
+}  // namespace
+
 ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const Vec3d& direction) const {
     const double p1 = 2 / north_south, p2 = 2 / east_west;
     const double u = std::abs(p.x) / radii.x, v = std::abs(p.y) / radii.y, w = std::abs(p.z) / radii.z;
-    // d|x|/dt: on each piece the search cuts at the coordinate planes, |x| is linear.
-    const auto rate = [](double coordinate, double along, double radius) {
-        return (coordinate < 0 || (coordinate == 0 && along < 0) ? -along : along) / radius;
-    };
     const PNorm h = p_norm_parts(u, v, p2), g = p_norm_parts(h.norm, w, p1);
     const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2);
     const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1);
     const double dh = dh_du * rate(p.x, direction.x, radii.x) + dh_dv * rate(p.y, direction.y, radii.y);
     const double slope = dg_dh * dh + dg_dw * rate(p.z, direction.z, radii.z);
     return {g.norm, std::isfinite(slope) ? slope : NAN};
+}
+
+// h = ‖(u, v)‖_p2 is convex along a piece for p2 ≥ 1 and concave for p2 ≤ 1; R(w) = (1 − w^p1)^(1/p1), the edge of
+// the p1-ball, is concave for p1 ≥ 1 and convex for p1 ≤ 1. With one exponent on each side of 2 both are convex or
+// both concave, and φ = h − R is their difference (negated for the concave pair).
+DifferenceOfConvexSample Superellipsoid::inside_difference(const Vec3d& p, const Vec3d& direction) const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const double p1 = 2 / north_south, p2 = 2 / east_west;
+    const double u = std::abs(p.x) / radii.x, v = std::abs(p.y) / radii.y, w = std::min(std::abs(p.z) / radii.z, 1.0);
+    const PNorm h = p_norm_parts(u, v, p2);
+    const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2);
+    const double h_slope = dh_du * rate(p.x, direction.x, radii.x) + dh_dv * rate(p.y, direction.y, radii.y);
+    const double w_power = unit_power(w, p1), rest = 1 - w_power;
+    const double edge = rest > 0 ? root(rest, p1) : 0;
+    // dR/dw = −w^(p1−1)·R^(1−p1) = −(w^p1/w)·(R/(1 − w^p1)), with its limits at w = 0 and w = 1.
+    const double dr_dw = w == 0      ? (p1 > 1 ? 0 : p1 == 1 ? -1 : -inf)
+                         : rest <= 0 ? (p1 < 1 ? 0 : -inf)
+                                     : -(w_power / w) * (edge / rest);
+    const double edge_slope = dr_dw * rate(p.z, direction.z, radii.z);
+    const ConvexSample horizontal{h.norm, std::isfinite(h_slope) ? h_slope : NAN}, vertical{edge, edge_slope};
+    if (p2 >= 1) return {horizontal, vertical};
+    return {{-vertical.value, -vertical.slope}, {-horizontal.value, -horizontal.slope}};
 }
 
 Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {

@@ -8,6 +8,7 @@
 // u, v, w, so its range over a box of magnitudes is given by the box's two extreme corners.
 #include <vector>
 
+#include "geometry/field/difference_of_convex.h"
 #include "geometry/polynomial/polynomial.h"
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
@@ -28,6 +29,13 @@ struct Superellipsoid {
     ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const;
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south <= 2 && east_west <= 2; }
+    // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave
+    // within each octant: along a ray, between the coordinate planes.
+    bool is_concave_in_octants() const { return north_south >= 2 && east_west >= 2; }
+    // With one exponent below 2 and the other above (neither convex nor concave in octants): φ = c − s with c and s
+    // convex along the ray between the coordinate planes, where φ < 0 exactly inside (for points within the
+    // superellipsoid's box), at p with the slopes along `direction` (non-finite at cusps).
+    DifferenceOfConvexSample inside_difference(const Vec3d& p, const Vec3d& direction) const;
     // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative).
     Interval gauge_range(const IntervalBox& magnitudes) const;
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents

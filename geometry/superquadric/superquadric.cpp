@@ -1,9 +1,13 @@
 #include "geometry/superquadric/superquadric.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
+#include "geometry/field/concave_crossings.h"
 #include "geometry/field/convex_crossings.h"
 #include "geometry/polynomial/monotone_root_finder.h"
+#include "geometry/sphere/sphere_intersection.h"
 #include "geometry/superquadric/superquadric_along_ray.h"
 #include "renderer/math/line_box_clip.h"
 
@@ -14,10 +18,37 @@ double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
 }
 
+// The last few points of a search whose difference-of-convex parts were taken: a halved stretch shares its ends with
+// its parent and its sibling.
+class MixedSamples {
+public:
+    template <class Take>
+    DifferenceOfConvexSample at(double t, const Take& take) {
+        for (int k = 0; k < filled_; ++k)
+            if (entries_[k].t == t) return entries_[k].sample;
+        Entry& slot = entries_[next_];
+        slot = {t, take()};
+        next_ = (next_ + 1) % kSize;
+        filled_ = std::min(filled_ + 1, kSize);
+        return slot.sample;
+    }
+
+private:
+    static constexpr int kSize = 4;
+    struct Entry {
+        double t;
+        DifferenceOfConvexSample sample;
+    };
+    Entry entries_[kSize];
+    int filled_ = 0, next_ = 0;
+};
+
 }  // namespace
 
 Superquadric::Superquadric(Superellipsoid shape, DeformationChain deformation, Transform placement)
-    : shape_(shape), deformation_(std::move(deformation)), placement_(placement) {}
+    : shape_(shape), deformation_(std::move(deformation)), placement_(placement) {
+    if (!deformation_.empty()) shell_ = SurfaceShell(deformation_.deformed_box());
+}
 
 IntervalBox Superquadric::bounds() const {
     const IntervalBox& local = deformation_.deformed_box();
@@ -35,10 +66,18 @@ double Superquadric::local_field(const Vec3d& local) const {
     return undeformed ? shape_.gauge(*undeformed) - 1 : 1;  // outside a stage box is outside the object
 }
 
-double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse().point(point)); }
+Interval Superquadric::local_field_range(const IntervalBox& local) const {
+    bool clipped = false;
+    const std::optional<IntervalBox> undeformed = deformation_.inverse_box(local, clipped);
+    if (!undeformed) return Interval{1, 1};
+    const Interval gauge = shape_.gauge_range({undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
+    return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
+}
+
+double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse_point(point)); }
 
 double Superquadric::continued_field(const Vec3d& point) const {
-    const Vec3d local = placement_.inverse().point(point);
+    const Vec3d local = placement_.inverse_point(point);
     const IntervalBox& box = deformation_.deformed_box();
     const Vec3d clamped(std::clamp(local.x, box.x.lo, box.x.hi), std::clamp(local.y, box.y.lo, box.y.hi),
                         std::clamp(local.z, box.z.lo, box.z.hi));
@@ -46,7 +85,7 @@ double Superquadric::continued_field(const Vec3d& point) const {
 }
 
 Vec3d Superquadric::normal(const Vec3d& point) const {
-    const DeformationChain::Path path = deformation_.inverse_path(placement_.inverse().point(point));
+    const DeformationChain::Path path = deformation_.inverse_path(placement_.inverse_point(point));
     const Vec3d local = deformation_.deform_normal(path, shape_.normal(path[0]));
     return normalize(placement_.normal(local));
 }
@@ -65,6 +104,19 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (!clip) return;
     const double t0 = clip->t_enter, t1 = clip->t_exit;
 
+    if (deformation_.empty() && shape_.polynomial_degree() == 2) {
+        // ε1 = ε2 = 1: an ellipsoid, the unit sphere once lengths are divided by the radii; its closed form (a
+        // cancellation-free quadratic) is exact and much cheaper than the general polynomial solver.
+        ++work.polynomial_solves;
+        const Vec3d& r = shape_.radii;
+        const Vec3d start = o + d * t0;  // in u = t − t0, for precision
+        const std::optional<SphereRoots> roots = intersect_sphere({start.x / r.x, start.y / r.y, start.z / r.z},
+                                                                  {d.x / r.x, d.y / r.y, d.z / r.z}, {0, 0, 0}, 1);
+        if (!roots || !(roots->t0 < roots->t1)) return;  // grazing contacts are misses (docs/decisions.md)
+        if (roots->t0 >= 0 && roots->t0 <= t1 - t0 && !visit(Crossing{t0 + roots->t0, true})) return;
+        if (roots->t1 >= 0 && roots->t1 <= t1 - t0) visit(Crossing{t0 + roots->t1, false});
+        return;
+    }
     if (deformation_.empty() && shape_.polynomial_degree() > 0) {
         ++work.polynomial_solves;
         const Polynomial p = shape_.polynomial_along(o + d * t0, d);  // in u = t − t0, for precision
@@ -78,14 +130,53 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     }
 
     const auto value = [&](double t) { return ray.value(t); };
-    const auto bound = [&](double a, double b) { return ray.bound(a, b); };
-    const auto slope = [&](double a, double b) { return ray.slope_bound(a, b); };
     const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const bool convex = deformation_.empty() && shape_.is_convex();
+    const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
+    const bool mixed = deformation_.empty() && !convex && !concave;
+    // The piece being searched, and whether its ends lie on coordinate planes (cusps: no tangents there).
+    double piece_lo = t0, piece_hi = t1;
+    bool cusp_lo = false, cusp_hi = false;
+    MixedSamples samples;
+    const auto sample_at = [&](double t) {
+        return samples.at(t, [&] {
+            DifferenceOfConvexSample sample = shape_.inside_difference(o + d * t, d);
+            if ((t == piece_lo && cusp_lo) || (t == piece_hi && cusp_hi)) sample.convex.slope = sample.subtracted.slope = NAN;
+            return sample;
+        });
+    };
+    // Mixed exponents: the chords and tangents of φ's convex parts (difference_of_convex.h) bound far tighter
+    // than interval arithmetic; where they settle nothing, the interval bounds are asked. φ has g's sign but not
+    // its slope: a bound of φ′ that excludes zero is handed to the search only as what the search takes from such
+    // a bound of g′ — that g changes sign at most once on the stretch.
+    const auto bound = [&](double a, double b) {
+        if (mixed) {
+            const Interval phi = difference_of_convex_range(a, sample_at(a), b, sample_at(b));
+            if (phi.lo >= 0) return Interval{0, std::numeric_limits<double>::infinity()};
+            if (phi.hi < 0) return Interval{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::denorm_min()};
+            return Interval::unbounded();
+        }
+        return ray.bound(a, b);
+    };
+    const auto slope = [&](double a, double b) {
+        if (mixed) {
+            const Interval phi = difference_of_convex_slope(sample_at(a), sample_at(b));
+            return phi.excludes_zero() ? phi : Interval::unbounded();
+        }
+        return ray.slope_bound(a, b);
+    };
+    const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
+    if (!deformation_.empty()) {
+        const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
+        shell_.visit_runs(o, d, t0, t1, range, [&](double a, double b) {
+            return search_crossings<precision>(a, b, value(a), value(b), resolution, false, value, bound, slope,
+                                               work.search, visit, value_and_slope);
+        });
+        return;
+    }
     double g_start = value(t0);
     if (convex && visit_convex_crossings(t0, t1, g_start, value(t1), value_and_slope, first_only, work.search, visit))
         return;
-    const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
 
     // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
     // linear and the bound is exact.
@@ -103,6 +194,17 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     cuts[count++] = t1;
     for (int i = 0; i + 1 < count; ++i) {
         const double g_end = value(cuts[i + 1]);
+        piece_lo = cuts[i], piece_hi = cuts[i + 1], cusp_lo = i > 0, cusp_hi = i + 2 < count;
+        if (concave) {
+            const ConcaveOutcome outcome =
+                visit_concave_crossings<precision>(piece_lo, piece_hi, g_start, g_end, cusp_lo, cusp_hi, resolution,
+                                                   value_and_slope, work.search, visit);
+            if (outcome == ConcaveOutcome::Stopped) return;
+            if (outcome == ConcaveOutcome::Settled) {
+                g_start = g_end;
+                continue;
+            }
+        }
         if (!search_crossings<precision>(cuts[i], cuts[i + 1], g_start, g_end, resolution, convex, value, bound,
                                          slope, work.search, visit, value_and_slope))
             return;

@@ -3,18 +3,24 @@
 // TR: local frame → the shape's space). Rays are intersected in the local deformed frame, where the placement
 // keeps t unchanged, and the surface is found as the sign changes of g = G(D⁻¹(p(t))) − 1 along the ray
 // (G the superellipsoid's gauge, D the deformation chain):
+// - undeformed with ε1 = ε2 = 1: an ellipsoid, intersected in closed form (a quadratic);
 // - undeformed with ε1 = ε2 = 2/n, n even: F − 1 is a polynomial in t, solved by the monotone-interval finder;
 // - otherwise: the ray is cut at the local coordinate planes when undeformed (where F changes form), then each
 //   piece is searched by interval subdivision (crossing_search.h) with the bounds of g and g′ along the ray
 //   (superquadric_along_ray.h);
 // - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches from the ends find its
-//   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts.
+//   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts;
+// - undeformed with ε1, ε2 ≥ 2: g is concave on each piece between the coordinate planes, and tangent cutting
+//   planes settle each piece without bounds (concave_crossings.h), again the search taking over near tangents;
+// - undeformed with one exponent on each side of 2: the search takes bounds of a difference of convex functions
+//   with g's sign (difference_of_convex.h) instead of interval bounds.
 #include <optional>
 #include <vector>
 
 #include "geometry/field/crossing_search.h"
 #include "geometry/superquadric/deformation_chain.h"
 #include "geometry/superquadric/superellipsoid.h"
+#include "geometry/superquadric/surface_shell.h"
 #include "renderer/math/transform.h"
 
 namespace isotrace {
@@ -43,6 +49,9 @@ public:
     double field(const Vec3d& point) const;
     // The field at a point of the local deformed frame (before the placement).
     double local_field(const Vec3d& local) const;
+    // Contains local_field over a box of the local deformed frame (interval inverse of the chain, then the gauge's
+    // range; points outside a stage box count as outside, 1).
+    Interval local_field_range(const IntervalBox& local) const;
     // field() continued beyond the deformed box by the distance to it, in the local deformed frame (field() is a
     // constant 1 out there, the ray tracer needing only its sign): negative inside, continuous and rising outward.
     double continued_field(const Vec3d& point) const;
@@ -73,6 +82,7 @@ private:
     Superellipsoid shape_;
     DeformationChain deformation_;
     Transform placement_;
+    SurfaceShell shell_;  // deformed only: where the search needs to look
 };
 
 }  // namespace isotrace

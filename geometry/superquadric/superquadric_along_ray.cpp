@@ -7,8 +7,8 @@ namespace isotrace {
 SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, const Vec3d& origin,
                                            const Vec3d& direction)
     : superquadric_(superquadric),
-      origin_(superquadric.placement().inverse().point(origin)),
-      direction_(superquadric.placement().inverse().vector(direction)) {}
+      origin_(superquadric.placement().inverse_point(origin)),
+      direction_(superquadric.placement().inverse_vector(direction)) {}
 
 ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
     Vec3d velocity = direction_;
@@ -24,14 +24,7 @@ IntervalBox SuperquadricAlongRay::stretch(double a, double b) const {
     return box;
 }
 
-Interval SuperquadricAlongRay::bound(double a, double b) const {
-    bool clipped = false;
-    const std::optional<IntervalBox> undeformed = superquadric_.deformation().inverse_box(stretch(a, b), clipped);
-    if (!undeformed) return Interval{1, 1};
-    const Interval gauge = superquadric_.shape().gauge_range(
-        {undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
-    return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
-}
+Interval SuperquadricAlongRay::bound(double a, double b) const { return superquadric_.local_field_range(stretch(a, b)); }
 
 Interval SuperquadricAlongRay::slope_bound(double a, double b) const {
     bool clipped = false;

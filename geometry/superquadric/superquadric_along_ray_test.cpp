@@ -106,6 +106,19 @@ TEST(SuperquadricAlongRay, AStretchProvenMonotoneHoldsOneCrossingOrNone) {
     EXPECT_GT(proven_without, 200);
 }
 
+// The crossings without the pairs closer together than `resolution`.
+std::vector<Crossing> without_grazing_pairs(const std::vector<Crossing>& crossings, double resolution) {
+    std::vector<Crossing> kept;
+    for (std::size_t k = 0; k < crossings.size(); ++k) {
+        if (k + 1 < crossings.size() && crossings[k + 1].t - crossings[k].t < resolution) {
+            ++k;
+            continue;
+        }
+        kept.push_back(crossings[k]);
+    }
+    return kept;
+}
+
 TEST(SuperquadricAlongRay, TheSearchFindsTheSameCrossingsAsWithoutTheSlopeBound) {
     std::mt19937 random(93);
     int crossings = 0;
@@ -131,6 +144,10 @@ TEST(SuperquadricAlongRay, TheSearchFindsTheSameCrossingsAsWithoutTheSlopeBound)
                 without_slope.push_back(found);
                 return true;
             });
+        // Two crossings closer than the resolution may be taken for a grazing contact (the search's rule), the
+        // more so where the searches cut the ray differently (the shell's runs): compare the rest.
+        with_slope = without_grazing_pairs(with_slope, resolution);
+        without_slope = without_grazing_pairs(without_slope, resolution);
         ASSERT_EQ(with_slope.size(), without_slope.size()) << "case " << i;
         for (std::size_t k = 0; k < with_slope.size(); ++k) {
             EXPECT_NEAR(with_slope[k].t, without_slope[k].t, 1e-12 * std::abs(without_slope[k].t))

@@ -158,5 +158,78 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
     EXPECT_GT(hits, rays / 5);
 }
 
+// Undeformed stars, whose crossings come from tangent cutting planes (both exponents ≥ 2, concave_crossings.h) or
+// from the bounds of a difference of convex functions (one exponent on each side of 2, difference_of_convex.h) on
+// each piece between the coordinate planes: every crossing, not only the first, against the oracle, with rays
+// aimed at the coordinate planes and axes, where the pieces meet at the stars' cusps.
+TEST(SuperquadricStress, UndeformedStarsGiveEveryCrossingTheOracleSees) {
+    const std::size_t rays = stress_rays() / 4;
+    constexpr int kRaysPerShape = 20, kSamples = 4000;
+    constexpr double kTMax = 40;
+    std::mt19937 random(57);
+    std::uniform_real_distribution<double> unit(-1, 1), size(0.3, 1.5), star(2, Superellipsoid::kMaxExponent),
+        log_round(std::log(Superellipsoid::kMinExponent), std::log(2.0));
+    std::size_t crossings_found = 0, grazing_pairs = 0, failures = 0;
+    for (std::size_t done = 0; done < rays && failures < 20;) {
+        const Vec3d radii{size(random), size(random), size(random)};
+        const bool mixed = done % 40 >= 20, round_north_south = random() % 2;
+        const double first = star(random), second = mixed ? std::exp(log_round(random)) : star(random);
+        const Superellipsoid shape{radii, round_north_south ? second : first, round_north_south ? first : second};
+        const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
+                                    Transform::rotate({unit(random), unit(random), unit(random) + 1e-3}, 180 * unit(random));
+        const Superquadric s(shape, DeformationChain(shape), placement);
+        const IntervalBox bounds = s.bounds();
+        const double grazing = 4 * Superquadric::kRelativeResolution *
+                               std::max({bounds.x.width(), bounds.y.width(), bounds.z.width()});
+        for (int r = 0; r < kRaysPerShape && done < rays; ++r, ++done) {
+            RandomRay local = random_ray(random, radii, r % 5 == 0);
+            if (r % 3 == 1) {  // through a coordinate plane's trace or an axis of the star
+                Vec3d target = local.origin + local.direction * 0.5;
+                target[r % 3] = 0;
+                if (r % 2) target[(r + 1) % 3] = 0;
+                local.direction = target - local.origin;
+            }
+            const Vec3d origin = placement.point(local.origin), direction = placement.vector(local.direction);
+            SuperquadricWork work;
+            std::vector<Crossing> found;
+            s.crossings(origin, direction, 0, kTMax, found, work);
+            const auto [t0, t1] = clip_to_box(bounds, origin, direction, 0, kTMax);
+            const std::vector<double> expected =
+                t0 < t1 ? oracle(s, origin, direction, t0, t1, kSamples).crossings : std::vector<double>{};
+            const double scale = length(direction);
+            std::string problem;
+            std::size_t next = 0;  // the next reported crossing to match
+            for (std::size_t i = 0; i < expected.size() && problem.empty(); ++i) {
+                const bool paired_closely = (i + 1 < expected.size() && expected[i + 1] - expected[i] < grazing / scale) ||
+                                            (i > 0 && expected[i] - expected[i - 1] < grazing / scale);
+                while (next < found.size() && found[next].t < expected[i] - 1e-9 * std::max(1.0, expected[i])) {
+                    // A crossing the oracle's samples stepped over must still be a real sign change.
+                    const double at = found[next].t, step = 1e-9 * (t1 - t0) + 1e-12 * at;
+                    if ((s.field(origin + direction * (at - step)) < 0) == (s.field(origin + direction * (at + step)) < 0))
+                        problem = "a crossing at " + std::to_string(at) + " where the field keeps its sign";
+                    ++next;
+                }
+                if (next < found.size() && std::abs(found[next].t - expected[i]) <= 1e-9 * std::max(1.0, expected[i])) {
+                    const bool entering = s.field(origin + direction * (expected[i] + 1e-9 * (t1 - t0))) < 0;
+                    if (found[next].entering != entering) problem = "a crossing reported with the wrong direction";
+                    ++next;
+                    ++crossings_found;
+                } else if (paired_closely) {
+                    ++grazing_pairs;
+                } else if (problem.empty()) {
+                    problem = "the field changes sign at " + std::to_string(expected[i]) + ", not reported";
+                }
+            }
+            if (!problem.empty()) {
+                ++failures;
+                ADD_FAILURE() << problem << " (ε1 " << shape.north_south << ", ε2 " << shape.east_west << ", ray "
+                              << done << ")";
+            }
+        }
+    }
+    std::printf("%zu rays: %zu crossings found, %zu grazing pairs left out\n", rays, crossings_found, grazing_pairs);
+    EXPECT_GT(crossings_found, rays / 2);
+}
+
 }  // namespace
 }  // namespace isotrace

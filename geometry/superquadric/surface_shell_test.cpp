@@ -1,0 +1,103 @@
+// The shell grid against a ball of radius 0.5 in the box [−1, 1]³, whose field range over a box is known exactly
+// (distance to the nearest and farthest point, minus the radius): every crossing of a random line lies in a run,
+// the runs are ordered, disjoint and inside the line's stretch, lines through the box's empty corners have none,
+// a visit that returns false stops the walk, and a copy keeps what was found.
+#include "geometry/superquadric/surface_shell.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "geometry/sphere/sphere_intersection.h"
+#include "renderer/math/line_box_clip.h"
+
+namespace isotrace {
+namespace {
+
+constexpr double kRadius = 0.5;
+const IntervalBox kBox{{-1, 1}, {-1, 1}, {-1, 1}};
+
+Interval ball_range(const IntervalBox& box) {
+    double near = 0, far = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = box[k].lo, hi = box[k].hi;
+        const double nearest = lo > 0 ? lo : hi < 0 ? hi : 0, farthest = std::max(std::abs(lo), std::abs(hi));
+        near += nearest * nearest, far += farthest * farthest;
+    }
+    return {std::sqrt(near) - kRadius, std::sqrt(far) - kRadius};
+}
+
+struct ShellRun {
+    double lo, hi;
+};
+
+std::vector<ShellRun> runs_of(const SurfaceShell& shell, const Vec3d& o, const Vec3d& d, int* ranges = nullptr) {
+    std::vector<ShellRun> runs;
+    const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
+    if (!clip) return runs;
+    int calls = 0;
+    shell.visit_runs(o, d, clip->t_enter, clip->t_exit, [&](const IntervalBox& b) { ++calls; return ball_range(b); },
+                     [&](double a, double b) {
+                         runs.push_back({a, b});
+                         EXPECT_GE(a, clip->t_enter);
+                         EXPECT_LE(b, clip->t_exit);
+                         return true;
+                     });
+    if (ranges) *ranges = calls;
+    return runs;
+}
+
+TEST(SurfaceShell, EveryCrossingLiesInARun) {
+    const SurfaceShell shell(kBox);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int crossings = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 3.0;
+        const Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.6 - o;
+        const std::vector<ShellRun> runs = runs_of(shell, o, d);
+        for (std::size_t k = 1; k < runs.size(); ++k) EXPECT_GT(runs[k].lo, runs[k - 1].hi);
+        const auto roots = intersect_sphere(o, d, {0, 0, 0}, kRadius);
+        if (!roots) continue;
+        for (const double t : {roots->t0, roots->t1}) {
+            ++crossings;
+            bool inside = false;
+            for (const ShellRun& r : runs) inside = inside || (t >= r.lo && t <= r.hi);
+            EXPECT_TRUE(inside) << "ray " << i << " crossing at " << t;
+        }
+    }
+    EXPECT_GT(crossings, 1000);
+}
+
+TEST(SurfaceShell, LinesThroughEmptyCornersHaveNoRuns) {
+    const SurfaceShell shell(kBox);
+    EXPECT_TRUE(runs_of(shell, {-2, 0.9, 0.9}, {1, 0, 0}).empty());  // along an edge, 1.27 from the centre
+    EXPECT_EQ(runs_of(shell, {-2, 0, 0}, {1, 0, 0}).size(), 2u);     // through the centre: in and out
+}
+
+TEST(SurfaceShell, AVisitThatReturnsFalseStopsTheWalk) {
+    const SurfaceShell shell(kBox);
+    int visits = 0;
+    const bool finished = shell.visit_runs({-2, 0, 0}, {1, 0, 0}, 1, 3, ball_range, [&](double, double) {
+        ++visits;
+        return false;
+    });
+    EXPECT_FALSE(finished);
+    EXPECT_EQ(visits, 1);
+}
+
+TEST(SurfaceShell, BlocksAreFoundOnceAndKeptByCopies) {
+    const SurfaceShell shell(kBox);
+    int first = 0, again = 0, copied = 0;
+    runs_of(shell, {-2, 0.1, 0}, {1, 0, 0}, &first);
+    runs_of(shell, {-2, 0.1, 0}, {1, 0, 0}, &again);
+    const SurfaceShell copy = shell;
+    runs_of(copy, {-2, 0.1, 0}, {1, 0, 0}, &copied);
+    EXPECT_GT(first, 0);
+    EXPECT_EQ(again, 0);
+    EXPECT_EQ(copied, 0);
+}
+
+}  // namespace
+}  // namespace isotrace
