@@ -13,8 +13,8 @@ inline double noise(const NoiseTerm& term, double x, double y, double z) { retur
 inline Interval noise(const NoiseTerm& term, Interval x, Interval y, Interval z) {
     return noise_value_range(term, {x, y, z});
 }
-inline PointGradient noise(const NoiseTerm& term, const PointGradient& x, const PointGradient& y,
-                           const PointGradient& z) {
+template <class D>
+Dual<double, D> noise(const NoiseTerm& term, const Dual<double, D>& x, const Dual<double, D>& y, const Dual<double, D>& z) {
     const Vec3d q{x.v, y.v, z.v};
     const Vec3d g = noise_gradient(term, q);
     return {noise_value(term, q), x.d * g.x + y.d * g.y + z.d * g.z};
@@ -27,8 +27,8 @@ inline IntervalSlope noise(const NoiseTerm& term, const IntervalSlope& x, const 
 
 inline double field(const ImplicitField& f, double x, double y, double z) { return f.value({x, y, z}); }
 inline Interval field(const ImplicitField& f, Interval x, Interval y, Interval z) { return f.value_range({x, y, z}); }
-inline PointGradient field(const ImplicitField& f, const PointGradient& x, const PointGradient& y,
-                           const PointGradient& z) {
+template <class D>
+Dual<double, D> field(const ImplicitField& f, const Dual<double, D>& x, const Dual<double, D>& y, const Dual<double, D>& z) {
     const Vec3d q{x.v, y.v, z.v};
     const Vec3d g = f.gradient(q);
     return {f.value(q), x.d * g.x + y.d * g.y + z.d * g.z};
@@ -73,7 +73,8 @@ template <class N>
         case Op::Sqrt: return sqrt(a);
         case Op::Exp: return exp(a);
         case Op::Log: return log(a);
-        case Op::Sin: return sin(a);
+        case Op::Sin:
+        case Op::SinCos: return sin(a);  // run() writes the pair's cosine too
         case Op::Cos: return cos(a);
         case Op::Tan: return tan(a);
         case Op::Atan: return atan(a);
@@ -96,8 +97,16 @@ N run(const ExpressionTape& tape, const N& x, const N& y, const N& z) {
     };
     Slot slots[kMaxExpressionTape];
     const std::size_t count = tape.code.size();
-    for (std::size_t i = 0; i < count; ++i)
-        slots[i].value = settle(apply(tape, tape.code[i], &slots[0].value, x, y, z));
+    for (std::size_t i = 0; i < count; ++i) {
+        const Instruction& in = tape.code[i];
+        if (in.op == Op::SinCos) {
+            const auto both = sin_cos(slots[in.a].value);
+            slots[i].value = settle(both.sin);
+            slots[++i].value = settle(both.cos);
+            continue;
+        }
+        slots[i].value = settle(apply(tape, in, &slots[0].value, x, y, z));
+    }
     return slots[count - 1].value;
 }
 

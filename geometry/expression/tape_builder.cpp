@@ -111,18 +111,36 @@ ExpressionTape TapeBuilder::finish(int output) const {
         const int slots[] = {in.a, in.b, in.c};
         for (int k = 0; k < operand_count(in.op); ++k) live[slots[k]] = true;
     }
+    // The sine and the cosine of one slot, both live, are written side by side as a SinCos pair: an evaluator
+    // computes them together (one range reduction, and a derivative needs both anyway).
+    std::map<std::pair<Op, int>, int> trig;  // (Sin or Cos, operand) -> instruction
+    for (int i = 0; i <= output; ++i)
+        if (live[i] && (tape_.code[i].op == Op::Sin || tape_.code[i].op == Op::Cos))
+            trig[{tape_.code[i].op, tape_.code[i].a}] = i;
     ExpressionTape tape;
     tape.noises = tape_.noises;
     tape.fields = tape_.fields;
-    std::vector<int> renumbered(tape_.code.size(), 0);
-    for (int i = 0; i <= output; ++i) {
-        if (!live[i]) continue;
+    std::vector<int> renumbered(tape_.code.size(), -1);
+    const auto append = [&](int i, Op op) {
         Instruction in = tape_.code[i];
-        in.a = renumbered[in.a];
-        in.b = renumbered[in.b];
-        in.c = renumbered[in.c];
+        in.op = op;
+        int* operands[] = {&in.a, &in.b, &in.c};
+        for (int k = 0; k < operand_count(in.op); ++k) *operands[k] = renumbered[*operands[k]];
         renumbered[i] = static_cast<int>(tape.code.size());
         tape.code.push_back(in);
+    };
+    for (int i = 0; i <= output; ++i) {
+        if (!live[i] || renumbered[i] >= 0) continue;
+        const Instruction& in = tape_.code[i];
+        if (in.op == Op::Sin || in.op == Op::Cos) {
+            const auto sine = trig.find({Op::Sin, in.a}), cosine = trig.find({Op::Cos, in.a});
+            if (sine != trig.end() && cosine != trig.end()) {
+                append(sine->second, Op::SinCos);
+                append(cosine->second, Op::Cos);
+                continue;
+            }
+        }
+        append(i, in.op);
     }
     return tape;
 }
