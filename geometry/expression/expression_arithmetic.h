@@ -43,7 +43,10 @@ inline double min(double a, double b) { return std::min(a, b); }
 inline double max(double a, double b) { return std::max(a, b); }
 // Overflow stops at the largest double and NaN (which the rules leave no way to) reads 0, so nothing non-finite
 // travels on through the tape.
-inline double settle(double a) { return a >= -kLargest ? std::min(a, kLargest) : (a < 0 ? -kLargest : 0.0); }
+inline double settle(double a) {
+    if (std::abs(a) <= kLargest) [[likely]] return a;
+    return a > 0 ? kLargest : (a < 0 ? -kLargest : 0.0);
+}
 
 // ---- Intervals: the same rules over a range (the operations without rules are those of interval.h).
 inline Interval sqrt(Interval a) { return sqrt_of_non_negative(a); }
@@ -70,6 +73,7 @@ inline Interval sign(Interval a) { return sign_range(a); }
 // An end that came out NaN (∞ − ∞ of unbounded operands) bounds nothing: it becomes infinite. A lower end of +∞
 // (or upper of −∞) comes down to the largest double, where the point values' overflow stops.
 inline Interval settle(Interval a) {
+    if (a.lo <= kLargest && a.hi >= -kLargest) [[likely]] return a;  // false for NaN ends too
     constexpr double inf = std::numeric_limits<double>::infinity();
     return {std::isnan(a.lo) ? -inf : std::min(a.lo, kLargest), std::isnan(a.hi) ? inf : std::max(a.hi, -kLargest)};
 }

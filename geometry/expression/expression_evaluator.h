@@ -97,7 +97,8 @@ N run(const ExpressionTape& tape, const N& x, const N& y, const N& z) {
     };
     Slot slots[kMaxExpressionTape];
     const std::size_t count = tape.code.size();
-    for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t i = 0; i < tape.constants; ++i) slots[i].value = constant<N>(tape.code[i].constant);
+    for (std::size_t i = tape.constants; i < count; ++i) {
         const Instruction& in = tape.code[i];
         if (in.op == Op::SinCos) {
             const auto both = sin_cos(slots[in.a].value);

@@ -31,6 +31,7 @@ struct Instruction {
 
 struct ExpressionTape {
     std::vector<Instruction> code;  // the last instruction's slot is the value
+    std::size_t constants = 0;      // the first instructions, all constants (written without dispatch)
     std::vector<NoiseTerm> noises;
     std::vector<std::shared_ptr<const ImplicitField>> fields;
 };

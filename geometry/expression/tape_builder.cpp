@@ -75,6 +75,16 @@ int TapeBuilder::emit(const Instruction& given, std::size_t offset) {
         return constant(expression_math::settle(value));
     }
 
+    // x + 0, x − 0, x·1 and x/1 are x (vector arithmetic makes many: p - vec(0, 0.35, 0)).
+    if (operands == 2) {
+        const double* left = constant_value(in.a);
+        const double* right = constant_value(in.b);
+        const auto is = [](const double* c, double v) { return c != nullptr && *c == v; };
+        if (((in.op == Op::Add || in.op == Op::Sub) && is(right, 0)) || ((in.op == Op::Mul || in.op == Op::Div) && is(right, 1)))
+            return in.a;
+        if ((in.op == Op::Add && is(left, 0)) || (in.op == Op::Mul && is(left, 1))) return in.b;
+    }
+
     const Key key{in.op, in.a, in.b, in.c, in.index, in.constant};
     if (const auto found = slots_.find(key); found != slots_.end()) return found->second;
     const int slot = static_cast<int>(tape_.code.size());
@@ -129,6 +139,10 @@ ExpressionTape TapeBuilder::finish(int output) const {
         renumbered[i] = static_cast<int>(tape.code.size());
         tape.code.push_back(in);
     };
+    // Constants first, so that an evaluator writes them in one tight loop.
+    for (int i = 0; i <= output; ++i)
+        if (live[i] && tape_.code[i].op == Op::Constant) append(i, Op::Constant);
+    tape.constants = tape.code.size();
     for (int i = 0; i <= output; ++i) {
         if (!live[i] || renumbered[i] >= 0) continue;
         const Instruction& in = tape_.code[i];
