@@ -4,7 +4,7 @@
 // cells that may hold the surface, one Embree user primitive each. A ray's segment through a cell is searched with
 // the guaranteed crossing search (geometry/field/crossing_search.h): the field's interval over the segment's box
 // drops stretches without a root, the interval of its slope along the ray proves a bracket holds one root, and
-// regula falsi refines it to a few ulps. Tangent contacts follow the search's rule: two crossings closer than
+// Newton steps along the ray (safeguarded by the bracket) refine it to a few ulps. Tangent contacts follow the search's rule: two crossings closer than
 // `resolution` (or none) are not reported. The solid is {f < 0} ∩ container, so the container's boundary is
 // surface where f < 0 there, and the shape is a closed Solid for CSG.
 //
