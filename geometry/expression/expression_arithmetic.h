@@ -3,6 +3,7 @@
 //   double          the value;
 //   Interval        an interval holding every value over a box;
 //   PointGradient   the value and its gradient (forward-mode derivatives along x, y and z at once);
+//   PointSlope      the value and its derivative along one direction (for Newton steps along a ray);
 //   IntervalSlope   an interval of the value and one of its derivative along a direction, over a box.
 // The domain rules of docs/expressions.md are defined here once for doubles and once for intervals (whose
 // intervals hold every point value under the same rules); the derivative types apply the chain rule to them.
@@ -42,7 +43,10 @@ inline double min(double a, double b) { return std::min(a, b); }
 inline double max(double a, double b) { return std::max(a, b); }
 // Overflow stops at the largest double and NaN (which the rules leave no way to) reads 0, so nothing non-finite
 // travels on through the tape.
-inline double settle(double a) { return a >= -kLargest ? std::min(a, kLargest) : (a < 0 ? -kLargest : 0.0); }
+inline double settle(double a) {
+    if (std::abs(a) <= kLargest) [[likely]] return a;
+    return a > 0 ? kLargest : (a < 0 ? -kLargest : 0.0);
+}
 
 // ---- Intervals: the same rules over a range (the operations without rules are those of interval.h).
 inline Interval sqrt(Interval a) { return sqrt_of_non_negative(a); }
@@ -62,8 +66,6 @@ inline Interval inverse(Interval b) {
     return reciprocal(b);  // all the reals when b holds 0, which holds the rule's 0 as well
 }
 inline Interval divide(Interval a, Interval b) { return a * inverse(b); }
-inline Interval sin(Interval a) { return sin_range(a); }
-inline Interval cos(Interval a) { return cos_range(a); }
 inline Interval tan(Interval a) { return tan_range(a); }
 inline Interval atan2(Interval y, Interval x) { return atan2_range(y, x); }
 inline Interval abs(Interval a) { return a.magnitude(); }
@@ -71,6 +73,7 @@ inline Interval sign(Interval a) { return sign_range(a); }
 // An end that came out NaN (∞ − ∞ of unbounded operands) bounds nothing: it becomes infinite. A lower end of +∞
 // (or upper of −∞) comes down to the largest double, where the point values' overflow stops.
 inline Interval settle(Interval a) {
+    if (a.lo <= kLargest && a.hi >= -kLargest) [[likely]] return a;  // false for NaN ends too
     constexpr double inf = std::numeric_limits<double>::infinity();
     return {std::isnan(a.lo) ? -inf : std::min(a.lo, kLargest), std::isnan(a.hi) ? inf : std::max(a.hi, -kLargest)};
 }
@@ -83,6 +86,7 @@ struct Dual {
     D d;
 };
 using PointGradient = Dual<double, Vec3d>;
+using PointSlope = Dual<double, double>;
 using IntervalSlope = Dual<Interval, Interval>;
 
 template <class V, class D> Dual<V, D> operator+(const Dual<V, D>& a, const Dual<V, D>& b) { return {a.v + b.v, a.d + b.d}; }
@@ -115,15 +119,38 @@ inline SinCos sin_cos(double a) {
     ::sincos(a, &r.sin, &r.cos);
     return r;
 }
-inline SinCosRange sin_cos(Interval a) { return sin_cos_range(a); }
-template <class V, class D> Dual<V, D> sin(const Dual<V, D>& a) {
-    const auto both = sin_cos(a.v);
-    return {both.sin, a.d * both.cos};
+// Over a narrow interval [m − r, m + r], sin and cos from one sincos at the midpoint by Taylor's theorem:
+// sin(m + h) = sin m + h cos m − (h²/2) sin ξ with sin ξ within r of sin m (and the same for cos), which is
+// within r²/2 of the exact range; wider intervals take the values at both ends. The enclosure is widened by
+// kSinCosSlack for the rounding of the midpoint's sincos and of the arithmetic, so that it holds the computed
+// values at every point of the interval (the search compares bounds with them).
+constexpr double kNarrowSinCos = 0.25;
+constexpr double kSinCosSlack = 0x1p-50;
+inline Interval taylor_range(double f, double f_prime, double r, double q) {
+    const double lo = f - r * std::abs(f_prime) - q * std::max(std::min(f + r, 1.0), 0.0) - kSinCosSlack;
+    const double hi = f + r * std::abs(f_prime) - q * std::min(std::max(f - r, -1.0), 0.0) + kSinCosSlack;
+    return {std::max(lo, -1.0), std::min(hi, 1.0)};
 }
-template <class V, class D> Dual<V, D> cos(const Dual<V, D>& a) {
-    const auto both = sin_cos(a.v);
-    return {both.cos, a.d * -both.sin};
+inline SinCosRange sin_cos(Interval a) {
+    const double r = 0.5 * (a.hi - a.lo);
+    if (!(r <= kNarrowSinCos) || !(std::abs(a.lo) < 0x1p50)) return sin_cos_range(a);
+    const double m = a.lo + r;
+    const double radius = std::max(m - a.lo, a.hi - m);
+    const SinCos at_m = sin_cos(m);
+    const double q = 0.5 * radius * radius;
+    return {taylor_range(at_m.sin, at_m.cos, radius, q), taylor_range(at_m.cos, -at_m.sin, radius, q)};
 }
+inline Interval sin(Interval a) { return sin_cos(a).sin; }
+inline Interval cos(Interval a) { return sin_cos(a).cos; }
+template <class V, class D> struct DualSinCos {
+    Dual<V, D> sin, cos;
+};
+template <class V, class D> DualSinCos<V, D> sin_cos(const Dual<V, D>& a) {
+    const auto both = sin_cos(a.v);
+    return {{both.sin, a.d * both.cos}, {both.cos, a.d * -both.sin}};
+}
+template <class V, class D> Dual<V, D> sin(const Dual<V, D>& a) { return sin_cos(a).sin; }
+template <class V, class D> Dual<V, D> cos(const Dual<V, D>& a) { return sin_cos(a).cos; }
 // Across a pole tan jumps from +∞ to −∞: its slope is then unbounded both ways (1 + tan² alone would claim it
 // increases, hiding a root beyond the pole from a search that trusts monotonicity).
 template <class V, class D> Dual<V, D> tan(const Dual<V, D>& a) {
@@ -146,8 +173,8 @@ template <class V, class D> Dual<V, D> atan2(const Dual<V, D>& y, const Dual<V, 
 template <class V, class D> Dual<V, D> abs(const Dual<V, D>& a) { return {abs(a.v), a.d * sign(a.v)}; }
 
 // min and max take the derivative of the operand they select; over a box where either may be selected, both.
-inline PointGradient min(const PointGradient& a, const PointGradient& b) { return a.v <= b.v ? a : b; }
-inline PointGradient max(const PointGradient& a, const PointGradient& b) { return a.v >= b.v ? a : b; }
+template <class D> Dual<double, D> min(const Dual<double, D>& a, const Dual<double, D>& b) { return a.v <= b.v ? a : b; }
+template <class D> Dual<double, D> max(const Dual<double, D>& a, const Dual<double, D>& b) { return a.v >= b.v ? a : b; }
 inline IntervalSlope min(const IntervalSlope& a, const IntervalSlope& b) {
     if (a.v.hi <= b.v.lo) return a;
     if (b.v.hi <= a.v.lo) return b;

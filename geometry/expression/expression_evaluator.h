@@ -13,8 +13,8 @@ inline double noise(const NoiseTerm& term, double x, double y, double z) { retur
 inline Interval noise(const NoiseTerm& term, Interval x, Interval y, Interval z) {
     return noise_value_range(term, {x, y, z});
 }
-inline PointGradient noise(const NoiseTerm& term, const PointGradient& x, const PointGradient& y,
-                           const PointGradient& z) {
+template <class D>
+Dual<double, D> noise(const NoiseTerm& term, const Dual<double, D>& x, const Dual<double, D>& y, const Dual<double, D>& z) {
     const Vec3d q{x.v, y.v, z.v};
     const Vec3d g = noise_gradient(term, q);
     return {noise_value(term, q), x.d * g.x + y.d * g.y + z.d * g.z};
@@ -27,8 +27,8 @@ inline IntervalSlope noise(const NoiseTerm& term, const IntervalSlope& x, const 
 
 inline double field(const ImplicitField& f, double x, double y, double z) { return f.value({x, y, z}); }
 inline Interval field(const ImplicitField& f, Interval x, Interval y, Interval z) { return f.value_range({x, y, z}); }
-inline PointGradient field(const ImplicitField& f, const PointGradient& x, const PointGradient& y,
-                           const PointGradient& z) {
+template <class D>
+Dual<double, D> field(const ImplicitField& f, const Dual<double, D>& x, const Dual<double, D>& y, const Dual<double, D>& z) {
     const Vec3d q{x.v, y.v, z.v};
     const Vec3d g = f.gradient(q);
     return {f.value(q), x.d * g.x + y.d * g.y + z.d * g.z};
@@ -52,37 +52,40 @@ N constant(double c) {
     else return N{decltype(N::v)(constant<decltype(N::v)>(c)), decltype(N::d){}};
 }
 
-// One instruction, given the slots before it and the point (x, y, z). Always inlined into the loop of run():
-// a call per instruction cost a third of a small tape's time.
+// One instruction, given the slots before it and the point (x, y, z), settled (settle()). Always inlined into the
+// loop of run(): a call per instruction cost a third of a small tape's time. The operations that keep settled
+// operands settled (negation, |a|, min, max, sin, cos, atan: values and derivatives scaled by at most 1) skip
+// settle(), which ran after every instruction and was 10–20 % of the interpreter's time.
 template <class N>
 [[gnu::always_inline]] inline N apply(const ExpressionTape& tape, const Instruction& in, const N* slots, const N& x, const N& y, const N& z) {
     const N& a = slots[in.a];
     const N& b = slots[in.b];
     switch (in.op) {
-        case Op::Constant: return constant<N>(in.constant);
-        case Op::X: return x;
-        case Op::Y: return y;
-        case Op::Z: return z;
-        case Op::Add: return a + b;
-        case Op::Sub: return a - b;
-        case Op::Mul: return a * b;
-        case Op::Div: return divide(a, b);
+        case Op::Constant: return settle(constant<N>(in.constant));
+        case Op::X: return settle(x);
+        case Op::Y: return settle(y);
+        case Op::Z: return settle(z);
+        case Op::Add: return settle(a + b);
+        case Op::Sub: return settle(a - b);
+        case Op::Mul: return settle(a * b);
+        case Op::Div: return settle(divide(a, b));
         case Op::Neg: return -a;
-        case Op::Square: return square(a);
-        case Op::PowInt: return pow_int(a, in.index);
-        case Op::Sqrt: return sqrt(a);
-        case Op::Exp: return exp(a);
-        case Op::Log: return log(a);
-        case Op::Sin: return sin(a);
+        case Op::Square: return settle(square(a));
+        case Op::PowInt: return settle(pow_int(a, in.index));
+        case Op::Sqrt: return settle(sqrt(a));
+        case Op::Exp: return settle(exp(a));
+        case Op::Log: return settle(log(a));
+        case Op::Sin:
+        case Op::SinCos: return sin(a);  // run() writes the pair's cosine too
         case Op::Cos: return cos(a);
-        case Op::Tan: return tan(a);
+        case Op::Tan: return settle(tan(a));
         case Op::Atan: return atan(a);
-        case Op::Atan2: return atan2(a, b);
+        case Op::Atan2: return settle(atan2(a, b));
         case Op::Abs: return abs(a);
         case Op::Min: return min(a, b);
         case Op::Max: return max(a, b);
-        case Op::Noise: return noise(tape.noises[in.index], a, b, slots[in.c]);
-        case Op::Field: return field(*tape.fields[in.index], a, b, slots[in.c]);
+        case Op::Noise: return settle(noise(tape.noises[in.index], a, b, slots[in.c]));
+        case Op::Field: return settle(field(*tape.fields[in.index], a, b, slots[in.c]));
     }
     return a;
 }
@@ -96,8 +99,17 @@ N run(const ExpressionTape& tape, const N& x, const N& y, const N& z) {
     };
     Slot slots[kMaxExpressionTape];
     const std::size_t count = tape.code.size();
-    for (std::size_t i = 0; i < count; ++i)
-        slots[i].value = settle(apply(tape, tape.code[i], &slots[0].value, x, y, z));
+    for (std::size_t i = 0; i < tape.constants; ++i) slots[i].value = constant<N>(tape.code[i].constant);
+    for (std::size_t i = tape.constants; i < count; ++i) {
+        const Instruction& in = tape.code[i];
+        if (in.op == Op::SinCos) {
+            const auto both = sin_cos(slots[in.a].value);
+            slots[i].value = both.sin;
+            slots[++i].value = both.cos;
+            continue;
+        }
+        slots[i].value = apply(tape, in, &slots[0].value, x, y, z);
+    }
     return slots[count - 1].value;
 }
 

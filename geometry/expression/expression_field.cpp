@@ -11,6 +11,7 @@ namespace {
 
 using expression_math::IntervalSlope;
 using expression_math::PointGradient;
+using expression_math::PointSlope;
 
 // The column of the character at `offset` of a JSON string's decoded text, counting the escapes that wrote the
 // characters a JSON string cannot hold as they are (a quote, a backslash, control characters).
@@ -47,6 +48,12 @@ double ExpressionField::value_and_gradient(const Vec3d& p, Vec3d& gradient) cons
         *tape_, {p.x, {1, 0, 0}}, {p.y, {0, 1, 0}}, {p.z, {0, 0, 1}});
     gradient = result.d;
     return result.v;
+}
+
+FieldSlope ExpressionField::value_and_slope(const Vec3d& p, const Vec3d& direction) const {
+    const PointSlope result =
+        expression_math::run<PointSlope>(*tape_, {p.x, direction.x}, {p.y, direction.y}, {p.z, direction.z});
+    return {result.v, result.d};
 }
 
 Vec3d ExpressionField::gradient(const Vec3d& p) const {

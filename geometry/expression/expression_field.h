@@ -59,6 +59,8 @@ public:
     Vec3d gradient(const Vec3d& p) const override;
     // Both at once, for the cost of one gradient.
     double value_and_gradient(const Vec3d& p, Vec3d& gradient) const;
+    // By forward-mode derivatives along the direction alone (a third of a gradient's derivative work).
+    FieldSlope value_and_slope(const Vec3d& p, const Vec3d& direction) const override;
     // The container the caller gave (everything when none).
     FieldBox bounds() const override;
     // False when the value's interval over the cube of half-side `radius` around `centre` excludes 0.

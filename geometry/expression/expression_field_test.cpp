@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "geometry/expression/expression_compiler.h"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -106,6 +108,53 @@ TEST(ExpressionField, ParametersAreConstantsAndCommonSubexpressionsAreShared) {
     EXPECT_EQ(compiled("fbm(p, 3) + fbm(p, 4)")->tape_length(), compiled("fbm(p, 3)")->tape_length() + 2);
 }
 
+TEST(ExpressionField, AddingZeroAndMultiplyingByOneFoldAway) {
+    EXPECT_EQ(compiled("x + 0")->tape_length(), 1);
+    EXPECT_EQ(compiled("0 + x*1 - 0")->tape_length(), 1);
+    EXPECT_EQ(compiled("1*x/1")->tape_length(), 1);
+    EXPECT_EQ(compiled("length(p - vec(0, 0.35, 0))")->tape_length(), compiled("length(vec(x, y - 0.35, z))")->tape_length());
+    EXPECT_DOUBLE_EQ(compiled("0 - x")->value({2, 0, 0}), -2);  // not an identity
+}
+
+TEST(ExpressionField, SineAndCosineOfOneArgumentArePairedAndConstantsComeFirst) {
+    const ExpressionNames names;
+    const ExpressionTape tape = compile_expression_text("cos(2*x) + y*sin(2*x) - sin(z)", &names).tape;
+    ASSERT_EQ(tape.constants, 1u);
+    EXPECT_EQ(tape.code[0].op, Op::Constant);
+    int pairs = 0;
+    for (std::size_t i = 0; i + 1 < tape.code.size(); ++i) {
+        if (tape.code[i].op != Op::SinCos) continue;
+        ++pairs;
+        EXPECT_EQ(tape.code[i + 1].op, Op::Cos);
+        EXPECT_EQ(tape.code[i + 1].a, tape.code[i].a);
+    }
+    EXPECT_EQ(pairs, 1);  // sin(z) has no cosine beside it
+    // The pair's values are sin's and cos's own, bit for bit.
+    const auto field = compiled("cos(2*x) + y*sin(2*x) - sin(z)");
+    const Vec3d p{0.7, -1.3, 2.9};
+    EXPECT_EQ(field->value(p), std::cos(2 * p.x) + p.y * std::sin(2 * p.x) - std::sin(p.z));
+}
+
+TEST(ExpressionField, NarrowIntervalsOfSineAndCosineHoldEveryValueAndAreNearlyExact) {
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const auto sine = compiled("sin(x)"), cosine = compiled("cos(x)");
+    for (int trial = 0; trial < 2000; ++trial) {
+        const double lo = -60 + 120 * unit(random), width = (trial % 2 ? 0.5 : 1e-6) * unit(random);
+        const Interval angle{lo, lo + width};
+        const IntervalBox box{angle, {0, 0}, {0, 0}};
+        const Interval s = sine->value_range(box), c = cosine->value_range(box);
+        for (int sample = 0; sample <= 50; ++sample) {
+            const double t = sample == 50 ? angle.hi : angle.lo + width * sample / 50;
+            ASSERT_TRUE(s.contains(std::sin(t)) && c.contains(std::cos(t))) << "[" << angle.lo << ", " << angle.hi << "]";
+        }
+        // Within the Taylor remainder r²/2 (and the rounding slack) of the exact ranges at either end.
+        const double excess = 0.125 * width * width + 1e-14;
+        EXPECT_LE(s.width(), sin_range(angle).width() + 2 * excess);
+        EXPECT_LE(c.width(), cos_range(angle).width() + 2 * excess);
+    }
+}
+
 TEST(ExpressionField, FieldTermsAreCalledAtTheirArgumentAndTheirBoundsCarryOver) {
     const auto ball = compiled("length(p) - 1");
     ExpressionNames names;
@@ -131,7 +180,8 @@ const char* const kFunctionCases[] = {
     "smin(length(p) - 1, length(max(abs(p - vec(1, 0, 0)) - 0.5, 0)), 0.3)", "x*y*z - sqrt(abs(x*y)) / (1 + z^2)",
 };
 
-TEST(ExpressionField, GradientsMatchCentralDifferences) {
+// The gradient, and the value and slope along a direction from their own evaluator.
+TEST(ExpressionField, GradientsMatchCentralDifferencesAndSlopesTheGradient) {
     std::mt19937_64 random(1);
     std::uniform_real_distribution<double> coordinate(-2, 2);
     for (const char* text : kFunctionCases) {
@@ -139,6 +189,10 @@ TEST(ExpressionField, GradientsMatchCentralDifferences) {
         for (int sample = 0; sample < 200; ++sample) {
             const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
             const Vec3d g = field->gradient(p);
+            const Vec3d direction{coordinate(random), coordinate(random), coordinate(random)};
+            const FieldSlope at = field->value_and_slope(p, direction);
+            EXPECT_EQ(at.value, field->value(p)) << text;
+            EXPECT_NEAR(at.derivative, dot(g, direction), 1e-12 * (1 + std::abs(dot(g, direction)))) << text;
             for (int k = 0; k < 3; ++k) {
                 constexpr double h = 1e-6;
                 Vec3d ahead = p, behind = p;

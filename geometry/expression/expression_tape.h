@@ -19,6 +19,7 @@ enum class Op : std::uint8_t {
     Sqrt, Exp, Log, Sin, Cos, Tan, Atan, Atan2, Abs, Min, Max,
     Noise,     // noise `index` of slots a, b, c
     Field,     // field term `index` at the point (a, b, c)
+    SinCos,    // sin of slot a, and the next instruction is Cos of slot a: both from one evaluation
 };
 
 struct Instruction {
@@ -30,6 +31,7 @@ struct Instruction {
 
 struct ExpressionTape {
     std::vector<Instruction> code;  // the last instruction's slot is the value
+    std::size_t constants = 0;      // the first instructions, all constants (written without dispatch)
     std::vector<NoiseTerm> noises;
     std::vector<std::shared_ptr<const ImplicitField>> fields;
 };

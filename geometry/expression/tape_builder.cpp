@@ -65,14 +65,25 @@ int TapeBuilder::emit(const Instruction& given, std::size_t offset) {
         for (int k = 0; k < operands; ++k) values[k] = tape_.code[static_cast<std::size_t>(slots[k])].constant;
         Instruction local = in;
         local.a = 0, local.b = 1, local.c = 2;
+        // Settled: an overflow has stopped at the largest double.
         const double value = expression_math::apply(tape_, local, values, 0.0, 0.0, 0.0);
         if (check_constants_) {
             if (const char* problem = domain_problem(in.op, values[0], values[1]))
                 throw ExpressionError{offset, std::string("a constant part of the expression is not a number: ") + problem};
-            if (!std::isfinite(value))
+            if (std::abs(value) >= expression_math::kLargest)
                 throw ExpressionError{offset, "a constant part of the expression overflows"};
         }
-        return constant(expression_math::settle(value));
+        return constant(value);
+    }
+
+    // x + 0, x − 0, x·1 and x/1 are x (vector arithmetic makes many: p - vec(0, 0.35, 0)).
+    if (operands == 2) {
+        const double* left = constant_value(in.a);
+        const double* right = constant_value(in.b);
+        const auto is = [](const double* c, double v) { return c != nullptr && *c == v; };
+        if (((in.op == Op::Add || in.op == Op::Sub) && is(right, 0)) || ((in.op == Op::Mul || in.op == Op::Div) && is(right, 1)))
+            return in.a;
+        if ((in.op == Op::Add && is(left, 0)) || (in.op == Op::Mul && is(left, 1))) return in.b;
     }
 
     const Key key{in.op, in.a, in.b, in.c, in.index, in.constant};
@@ -111,18 +122,40 @@ ExpressionTape TapeBuilder::finish(int output) const {
         const int slots[] = {in.a, in.b, in.c};
         for (int k = 0; k < operand_count(in.op); ++k) live[slots[k]] = true;
     }
+    // The sine and the cosine of one slot, both live, are written side by side as a SinCos pair: an evaluator
+    // computes them together (one range reduction, and a derivative needs both anyway).
+    std::map<std::pair<Op, int>, int> trig;  // (Sin or Cos, operand) -> instruction
+    for (int i = 0; i <= output; ++i)
+        if (live[i] && (tape_.code[i].op == Op::Sin || tape_.code[i].op == Op::Cos))
+            trig[{tape_.code[i].op, tape_.code[i].a}] = i;
     ExpressionTape tape;
     tape.noises = tape_.noises;
     tape.fields = tape_.fields;
-    std::vector<int> renumbered(tape_.code.size(), 0);
-    for (int i = 0; i <= output; ++i) {
-        if (!live[i]) continue;
+    std::vector<int> renumbered(tape_.code.size(), -1);
+    const auto append = [&](int i, Op op) {
         Instruction in = tape_.code[i];
-        in.a = renumbered[in.a];
-        in.b = renumbered[in.b];
-        in.c = renumbered[in.c];
+        in.op = op;
+        int* operands[] = {&in.a, &in.b, &in.c};
+        for (int k = 0; k < operand_count(in.op); ++k) *operands[k] = renumbered[*operands[k]];
         renumbered[i] = static_cast<int>(tape.code.size());
         tape.code.push_back(in);
+    };
+    // Constants first, so that an evaluator writes them in one tight loop.
+    for (int i = 0; i <= output; ++i)
+        if (live[i] && tape_.code[i].op == Op::Constant) append(i, Op::Constant);
+    tape.constants = tape.code.size();
+    for (int i = 0; i <= output; ++i) {
+        if (!live[i] || renumbered[i] >= 0) continue;
+        const Instruction& in = tape_.code[i];
+        if (in.op == Op::Sin || in.op == Op::Cos) {
+            const auto sine = trig.find({Op::Sin, in.a}), cosine = trig.find({Op::Cos, in.a});
+            if (sine != trig.end() && cosine != trig.end()) {
+                append(sine->second, Op::SinCos);
+                append(cosine->second, Op::Cos);
+                continue;
+            }
+        }
+        append(i, in.op);
     }
     return tape;
 }

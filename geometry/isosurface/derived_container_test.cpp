@@ -37,7 +37,7 @@ TEST(DerivedContainer, HoldsASphereATorusAndANoisySphere) {
     const auto sphere = derived("length(p) - 1");
     ASSERT_TRUE(sphere);
     expect_holds(*sphere, [](double u, double v) { return on_sphere(1, u, v); });
-    EXPECT_EQ(sphere->bounds().x.hi, 2);  // the smallest power of two that proves it
+    EXPECT_LT(sphere->bounds().x.hi, 1.001);  // the faces moved in from the cube of half-size 2 that proves it
 
     const auto torus = derived("length(vec(length(vec(x, y, 0)) - 1, z, 0)) - 0.25");
     ASSERT_TRUE(torus);
@@ -60,7 +60,22 @@ TEST(DerivedContainer, ReachesAnOffsetBall) {
     const auto ball = derived("length(p - vec(100, 0, 0)) - 0.5");
     ASSERT_TRUE(ball);
     expect_holds(*ball, [](double u, double v) { return on_sphere(0.5, u, v) + Vec3d{100, 0, 0}; });
-    EXPECT_LE(ball->bounds().x.hi, 256);
+    EXPECT_LE(ball->bounds().x.hi, 100.501);
+    EXPECT_GE(ball->bounds().x.lo, 99.499);
+}
+
+// A cube off the origin gets a box about itself (within the bisection's steps), not the cube about the origin.
+TEST(DerivedContainer, FitsACubeOffTheOrigin) {
+    const auto cube = derived("max(abs(x - 3), abs(y + 1), abs(z)) - 0.5");
+    ASSERT_TRUE(cube);
+    const IntervalBox& box = cube->bounds();
+    const Interval expected[] = {{2.5, 3.5}, {-1.5, -0.5}, {-0.5, 0.5}};
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_LE(box[axis].lo, expected[axis].lo) << axis;
+        EXPECT_GT(box[axis].lo, expected[axis].lo - 1e-6) << axis;
+        EXPECT_GE(box[axis].hi, expected[axis].hi) << axis;
+        EXPECT_LT(box[axis].hi, expected[axis].hi + 1e-6) << axis;
+    }
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ void IsosurfaceShape::record_work(const IsosurfaceWork& work) const {
 
 template <CrossingPrecision precision, class Visit>
 void IsosurfaceShape::search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a,
-                             IsosurfaceWork& work, Visit&& visit) const {
+                             std::optional<Interval> range_a_b, IsosurfaceWork& work, Visit&& visit) const {
     const auto point = [&](double t) { return origin + direction * t; };
     const auto value = [&](double t) { return field_->value(point(t)); };
     const auto segment_box = [&](double lo, double hi) {
@@ -79,13 +79,20 @@ void IsosurfaceShape::search(const Vec3d& origin, const Vec3d& direction, double
     // Past the budget, every stretch without a sign change is dropped and every bracket held is refined as one
     // crossing: the search ends within a few steps per segment on its stack.
     const auto bound = [&](double lo, double hi) {
-        return spent() ? Interval::point(1) : field_->value_range(segment_box(lo, hi));
+        if (spent()) return Interval::point(1);
+        if (range_a_b && lo == a && hi == b) {  // the search's first question, answered (and counted) already
+            --work.search.interval_bounds;
+            return *range_a_b;
+        }
+        return field_->value_range(segment_box(lo, hi));
     };
     const auto slope = [&](double lo, double hi) {
         return spent() ? Interval::point(1) : field_->slope_range(segment_box(lo, hi), direction);
     };
-    search_crossings<precision>(a, b, g_a, value(b), resolution_ / length(direction), false, value, bound, slope, work.search,
-                     visit);
+    // Brackets are refined by Newton steps along the ray: fewer evaluations than regula falsi's.
+    const auto point_slope = [&](double t) { return field_->value_and_slope(point(t), direction); };
+    search_crossings<precision>(a, b, g_a, value(b), resolution_ / length(direction), false, value, bound, slope,
+                                work.search, visit, point_slope);
 }
 
 Vec3d IsosurfaceShape::surface_normal(const Vec3d& p, const Vec3d& direction) const {
@@ -140,7 +147,7 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::surface_in_cell(std::uint32
     // The ray enters the container where the function's solid meets its boundary.
     if (enters_container && g_a < 0) return Hit{a, container_.normal(p_a)};
     std::optional<Hit> hit;
-    search<precision>(origin, direction, a, b, g_a, work, [&](const Crossing& crossing) {
+    search<precision>(origin, direction, a, b, g_a, range, work, [&](const Crossing& crossing) {
         if constexpr (precision == CrossingPrecision::Bracketed) {
             undecided = !crossing.settles_occlusion(t_near, t_far);
             if (!undecided) hit = Hit{crossing.t, {}};
@@ -199,7 +206,7 @@ void IsosurfaceShape::inside_spans(const Vec3d& origin, const Vec3d& direction, 
     found.clear();
     IsosurfaceWork work;
     const double g_a = field_->value(origin + direction * inside->lo);
-    search(origin, direction, inside->lo, inside->hi, g_a, work, [&](const Crossing& crossing) {
+    search(origin, direction, inside->lo, inside->hi, g_a, std::nullopt, work, [&](const Crossing& crossing) {
         found.push_back(crossing);
         return true;
     });

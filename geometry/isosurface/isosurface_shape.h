@@ -4,7 +4,7 @@
 // cells that may hold the surface, one Embree user primitive each. A ray's segment through a cell is searched with
 // the guaranteed crossing search (geometry/field/crossing_search.h): the field's interval over the segment's box
 // drops stretches without a root, the interval of its slope along the ray proves a bracket holds one root, and
-// regula falsi refines it to a few ulps. Tangent contacts follow the search's rule: two crossings closer than
+// Newton steps along the ray (safeguarded by the bracket) refine it to a few ulps. Tangent contacts follow the search's rule: two crossings closer than
 // `resolution` (or none) are not reported. The solid is {f < 0} ∩ container, so the container's boundary is
 // surface where f < 0 there, and the shape is a closed Solid for CSG.
 //
@@ -79,16 +79,16 @@ public:
     const std::vector<IntervalBox>& cells() const { return cells_; }
 
 private:
-    // Visits the crossings of f along [a, b] (inside the container; g_a = f there), nearest first, within the work
-    // budget.
+    // Visits the crossings of f along [a, b] (inside the container; g_a = f there; range_a_b, when known, f's
+    // interval over the segment), nearest first, within the work budget.
     // first_hit, or with Bracketed a hit at a crossing whose bracket lies within (t_near, t_far) (t only within
     // the bracket, no normal); `undecided` is set when the first bracket reaches past either end of the range.
     template <CrossingPrecision precision>
     std::optional<Hit> surface_in_cell(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
                                        double t_far, IsosurfaceWork& work, bool& undecided) const;
     template <CrossingPrecision precision = CrossingPrecision::Refined, class Visit>
-    void search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a, IsosurfaceWork& work,
-                Visit&& visit) const;
+    void search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a,
+                std::optional<Interval> range_a_b, IsosurfaceWork& work, Visit&& visit) const;
     // The outward normal where f crosses zero: its normalised gradient (facing the ray where it has none).
     Vec3d surface_normal(const Vec3d& p, const Vec3d& direction) const;
     void record_work(const IsosurfaceWork& work) const;

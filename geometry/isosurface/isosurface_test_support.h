@@ -176,7 +176,7 @@ private:
 };
 
 // An isosurface of `field` in `container` with the default octree.
-inline std::unique_ptr<IsosurfaceShape> isosurface(std::unique_ptr<ImplicitField> field, const Container& container,
+inline std::unique_ptr<IsosurfaceShape> isosurface(std::shared_ptr<const ImplicitField> field, const Container& container,
                                                    IsosurfaceSettings settings = {}) {
     MemoryBudget memory;
     std::vector<IntervalBox> cells = surface_cells(*field, container, settings.octree, memory);

@@ -42,12 +42,21 @@ struct FieldBox {
     double distance(const Vec3d& p) const { return length(max(max(lower - p, p - upper), Vec3d{})); }
 };
 
+// The value of a field at a point and its derivative along a direction (a Newton step's two numbers).
+struct FieldSlope {
+    double value, derivative;
+};
+
 class ImplicitField {
 public:
     virtual ~ImplicitField() = default;
 
     virtual double value(const Vec3d& p) const = 0;
     virtual Vec3d gradient(const Vec3d& p) const = 0;
+    // value(p), bit for bit, and ∇f(p) · direction; a field may compute both for less than a gradient.
+    virtual FieldSlope value_and_slope(const Vec3d& p, const Vec3d& direction) const {
+        return {value(p), dot(gradient(p), direction)};
+    }
     // A box that contains the whole surface (and, for a bounded solid, the whole inside).
     virtual FieldBox bounds() const = 0;
     // Conservative: false only when no surface point lies within `radius` of `centre`. The polygonisers subdivide

@@ -980,6 +980,8 @@ case_bench_help() {
     --report --scaling --scaling-max --list; do
     expect_in "$work/stdout" "$option" "bench --help output"
   done
+  # The spacing is applied in each shape's own space, before its object's transform.
+  expect_in "$work/stdout" "own units" "bench --help output (--cell-size)"
 }
 
 case_bench_small_scene() {  # the whole pipeline in seconds

@@ -8,7 +8,8 @@
 namespace isotrace::cli {
 
 void TessellationOptions::add_to(CLI::App& command) {
-    command.add_option("--cell-size", cell_size, "Tessellation cell size in world units")->check(CLI::PositiveNumber);
+    command.add_option("--cell-size", cell_size,
+                       "Tessellation cell size in each shape's own units (an object's transform scales its cells)")->check(CLI::PositiveNumber);
     command
         .add_option("--cells-per-radius", cells_per_radius,
                     "Tessellation cells across the smallest element's radius (when --cell-size is not given)")

@@ -11,7 +11,7 @@
 namespace isotrace::cli {
 
 struct TessellationOptions {
-    std::optional<double> cell_size;  // lattice spacing in world units; default from cells_per_radius
+    std::optional<double> cell_size;  // lattice spacing in each shape's own units; default from cells_per_radius
     double cells_per_radius = 4;      // lattice cells across the smallest element's field radius
 
     // Adds --cell-size and --cells-per-radius to a command.
