@@ -21,12 +21,13 @@ namespace isotrace {
 inline bool is_traceable(float origin_x, float origin_y, float origin_z, float direction_x, float direction_y,
                          float direction_z, float t_near, float t_far) {
     constexpr float kLimit = 1.844E18f;  // Embree's FLT_LARGE
-    const bool origin_inside =
-        std::abs(origin_x) <= kLimit && std::abs(origin_y) <= kLimit && std::abs(origin_z) <= kLimit;
-    const bool direction_inside =
-        std::abs(direction_x) <= kLimit && std::abs(direction_y) <= kLimit && std::abs(direction_z) <= kLimit;
-    const bool direction_non_zero = direction_x != 0 || direction_y != 0 || direction_z != 0;
-    return origin_inside && direction_inside && direction_non_zero && t_near >= 0 && t_near <= t_far;
+    // Bitwise on ints, not && and ||: every traced ray passes, and without a branch after each test the check
+    // takes half the instructions (each ray of the path tracer is checked).
+    const auto within = [](float value) { return int(std::abs(value) <= kLimit); };
+    const int inside = within(origin_x) & within(origin_y) & within(origin_z) & within(direction_x) &
+                       within(direction_y) & within(direction_z);
+    const int direction_non_zero = int(direction_x != 0) | int(direction_y != 0) | int(direction_z != 0);
+    return (inside & direction_non_zero & int(t_near >= 0) & int(t_near <= t_far)) != 0;
 }
 
 inline bool is_traceable(const Ray& ray) {

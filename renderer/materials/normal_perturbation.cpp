@@ -11,11 +11,6 @@
 namespace isotrace {
 namespace {
 
-// A world-space vector in the hit object's own space.
-Vec3f to_object(const SurfaceHit& hit, const Vec3f& v) {
-    return Vec3f(hit.to_world.inverse_vector(Vec3d(v)));
-}
-
 // The uv step that moves the point by the world-space `offset` along the surface (least squares on dp/du, dp/dv;
 // zero where they are degenerate).
 std::array<float, 2> uv_step(const SurfaceHit& hit, const Vec3f& offset) {
@@ -26,10 +21,10 @@ std::array<float, 2> uv_step(const SurfaceHit& hit, const Vec3f& offset) {
     return {(c * pu - b * pv) / determinant, (a * pv - b * pu) / determinant};
 }
 
-// The texture context at the hit moved by `offset` (world space) along the surface.
-TextureContext moved(const TextureContext& at, const SurfaceHit& hit, const Vec3f& offset) {
+// The texture context at the hit moved by `offset` (world space) along the surface; `to_world` is the hit's.
+TextureContext moved(const TextureContext& at, const SurfaceHit& hit, const Transform& to_world, const Vec3f& offset) {
     TextureContext result = at;
-    const Vec3f object_offset = to_object(hit, offset);
+    const Vec3f object_offset = Vec3f(to_world.inverse_vector(Vec3d(offset)));
     result.position = at.position + offset;
     result.object_position = at.object_position + object_offset;
     result.shape_position = at.shape_position + Vec3d(hit.object && hit.object->instanced ? object_offset : offset);
@@ -61,9 +56,11 @@ Vec3f NormalPerturbation::bumped(const SurfaceHit& hit, const Vec3f& normal) con
     Vec3f tangent, bitangent;
     orthonormal_basis(normal, tangent, bitangent);
     const TextureContext here(hit);
+    std::optional<Transform> computed;
+    const Transform& to_world = hit.to_world(computed);
     const float height = bump_->evaluate(here);
-    const float along_tangent = bump_->evaluate(moved(here, hit, tangent * step)) - height;
-    const float along_bitangent = bump_->evaluate(moved(here, hit, bitangent * step)) - height;
+    const float along_tangent = bump_->evaluate(moved(here, hit, to_world, tangent * step)) - height;
+    const float along_bitangent = bump_->evaluate(moved(here, hit, to_world, bitangent * step)) - height;
     // The surface raised by h along its normal has the normal n − ∇h (curvature terms dropped).
     const Vec3f slope = (tangent * along_tangent + bitangent * along_bitangent) * (bump_height_ / step);
     return safe_normalize(normal - slope, normal);

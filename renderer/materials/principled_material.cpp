@@ -91,7 +91,8 @@ private:
         if (!(dot(direction, direction) > 0)) {
             const TextureContext at(hit);
             const Vec3f around_z = cross(Vec3f(0, 0, 1), at.object_normal);
-            direction = hit.to_world.vector(around_z);
+            std::optional<Transform> computed;
+            direction = hit.to_world(computed).vector(around_z);
         }
         Vec3f tangent = direction - n * dot(n, direction);
         if (!(dot(tangent, tangent) > 0)) return {};

@@ -1,9 +1,11 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "renderer/math/transform.h"
 #include "renderer/math/vec3.h"
+#include "renderer/plugin/placement_record.h"
 
 namespace isotrace {
 
@@ -35,8 +37,14 @@ struct SurfaceHit {
     Vec3f tangent;             // unit, perpendicular to shading_normal: the frame's x axis; zero lets the frame choose
     float footprint = 0;       // world-space width of the pixel's footprint at the hit (ray cone); 0: a point
     const SceneObject* object = nullptr;  // the object hit: its shape and materials (shared by the copies of a placement)
-    Transform to_world;  // the object's placement (a placed copy's own), for object-space textures and frames
+    // A placed copy's record (the object is the copies' shared one); null: the object is placed by its to_world.
+    const PlacementRecord* placement = nullptr;
     MaterialBlend blend;
+
+    // The object's placement, for object-space textures and frames: object->to_world, a placed copy's transform
+    // computed from its record into `computed`, or the identity without an object. A handle rather than a Transform
+    // in the hit: the 256 bytes were copied several times per hit, and most hits never read them.
+    const Transform& to_world(std::optional<Transform>& computed) const;
 
     // Origin for a ray leaving the surface in `direction`: pushed off along the geometric normal, to the
     // side the ray travels, by the position error bound, so the ray cannot re-hit the surface it left.

@@ -21,7 +21,8 @@ TextureContext::TextureContext(const SurfaceHit& hit)
     const SceneObject* object = hit.object;
     if (!object) return;
     shape = object->shape.get();
-    const Transform& to_world = hit.to_world;
+    std::optional<Transform> computed;
+    const Transform& to_world = hit.to_world(computed);
     const Vec3d p = to_world.inverse_point(Vec3d(hit.position));
     const Vec3d unit_n = safe_normalize(to_world.inverse_normal(Vec3d(hit.shading_normal)), Vec3d(hit.shading_normal));
     object_position = Vec3f(p);

@@ -37,7 +37,6 @@ TEST(TextureContext, ObjectSpaceUndoesThePlacement) {
     object.to_world = Transform::translate({0, 10, 0}) * Transform::scale({4, 2, 2});
     SurfaceHit hit = hit_at({4, 12, 0}, normalize(Vec3f(1, 1, 0)));
     hit.object = &object;
-    hit.to_world = object.to_world;
     object.instanced = true;
     const TextureContext instanced(hit);
     expect_near(instanced.object_position, {1, 1, 0});
@@ -51,6 +50,18 @@ TEST(TextureContext, ObjectSpaceUndoesThePlacement) {
     EXPECT_EQ(baked.shape_position, Vec3d(Vec3f(4, 12, 0)));  // baked into world space
     EXPECT_EQ(baked.shape_normal, Vec3d(hit.shading_normal));
     expect_near(baked.object_position, {1, 1, 0});
+}
+
+TEST(TextureContext, APlacedCopyIsPlacedByItsRecordNotByTheSharedObject) {
+    SceneObject shared;  // the copies' object: identity to_world
+    shared.instanced = true;
+    const PlacementRecord record = *placement_record(Transform::translate({0, 10, 0}) * Transform::scale({2, 2, 2}), 0);
+    SurfaceHit hit = hit_at({2, 12, 0}, {1, 0, 0});
+    hit.object = &shared;
+    hit.placement = &record;
+    const TextureContext context(hit);
+    expect_near(context.object_position, {1, 1, 0});
+    EXPECT_NEAR(context.object_footprint, 0.15f, 1e-6);
 }
 
 }  // namespace

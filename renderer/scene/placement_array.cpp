@@ -2,21 +2,12 @@
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 
 #include "renderer/embree/user_geometry.h"
 #include "renderer/math/box_corner.h"
 
 namespace isotrace {
 namespace {
-
-Transform::Matrix promoted(const std::array<float, 12>& rows) {
-    Transform::Matrix m{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 4; ++j) m[i][j] = double(rows[std::size_t(i * 4 + j)]);
-    m[3] = {0, 0, 0, 1};
-    return m;
-}
 
 // The ray of lane i carried into the placement's space: origin and direction by the record's matrix (in double,
 // rounded once), its interval, mask and flags as they are (the map is affine, so t keeps its meaning).
@@ -44,25 +35,6 @@ RTCRay carried(const PlacementRecord& record, RTCRayN* rays, unsigned n, unsigne
 }
 
 }  // namespace
-
-std::optional<PlacementRecord> placement_record(const Transform& to_world, std::uint32_t variant) {
-    PlacementRecord record;
-    const Transform::Matrix& inverse = to_world.inverse().matrix();
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 4; ++j) record.from_world[std::size_t(i * 4 + j)] = float(inverse[i][j]);
-    record.variant = variant;
-    try {
-        Transform::from_matrix(promoted(record.from_world));
-    } catch (const std::invalid_argument&) {
-        return std::nullopt;
-    }
-    return record;
-}
-
-Transform to_world_of_record(const PlacementRecord& record) {
-    // placement_record checked that this succeeds, and the same bits give the same answer.
-    return Transform::inverse_of_accepted(promoted(record.from_world));
-}
 
 std::string PlacementNames::default_name(std::uint32_t placement) const {
     return object + "[" + std::to_string(placement) + "]";

@@ -15,25 +15,10 @@
 #include <vector>
 
 #include "renderer/math/transform.h"
+#include "renderer/plugin/placement_record.h"
 #include "renderer/plugin/scene_object.h"
 
 namespace isotrace {
-
-struct PlacementRecord {
-    // World to the shape's space, row-major 3x4, in single precision as Embree's instances held it: what a ray is
-    // carried by. Its double-precision inverse is the placement's to_world for shading (to_world_of_record).
-    std::array<float, 12> from_world;
-    std::uint32_t variant = 0;  // which of the array's objects (the materials a copy shows)
-};
-
-// Why placement_record failed, for the message at the transform.
-inline constexpr const char* kSingularInSinglePrecision =
-    "the transform is singular once rounded to single precision (in which rays are carried into the shape's space)";
-
-// The record of a placement at `to_world`; nullopt when that transform, rounded to single precision, is singular.
-std::optional<PlacementRecord> placement_record(const Transform& to_world, std::uint32_t variant);
-// The record's placement, in double precision (deterministic: every hit on it gets the same bits).
-Transform to_world_of_record(const PlacementRecord& record);
 
 // The names of the copies an instancing object places: "<object>[<index>]", unless the scene file names a copy, then
 // "/<part>" for a part of a group.
@@ -61,6 +46,7 @@ public:
     std::uint32_t size() const { return std::uint32_t(records_.size()); }
     const std::vector<const SceneObject*>& variants() const { return variants_; }
     const SceneObject& variant_of(std::uint32_t placement) const { return *variants_[records_[placement].variant]; }
+    const PlacementRecord& record(std::uint32_t placement) const { return records_[placement]; }
     Transform to_world(std::uint32_t placement) const { return to_world_of_record(records_[placement]); }
     // Placement `placement` as an object of its own (for tools and tests: it copies its name and materials).
     SceneObject copy(std::uint32_t placement) const;

@@ -224,6 +224,9 @@ void RenderScene::commit() {
 
 std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) const {
     counters::count_ray(kind);
+    // Every return returns this one object, so that it is built where the caller receives it (a hit built apart
+    // was copied there: 176 bytes per hit).
+    std::optional<SurfaceHit> found;
     QueryContext context(scratch_pool_);
     RTCRayHit query;  // set_embree_ray writes the whole ray; Embree reads only geomID and instID of the hit
     // The path tracer stores a ray's fields one or two at a time just before asking, and Embree stores the hit's
@@ -235,13 +238,13 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
                      alone(ray.t_near), alone(ray.t_far)};
     if (!is_traceable(fields)) [[unlikely]] {
         count_untraceable_rays(1);
-        return std::nullopt;
+        return found;
     }
     set_embree_ray(query.ray, fields);
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context.embree, &query);
-    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return found;
 
     // A placement array's hit names the placement in instID[0] (PlacementArray::intersect).
     const TracedGeometry& traced = traced_[query.hit.geomID];
@@ -255,7 +258,9 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     const float t = query.ray.tfar;
     const Vec3f embree_ng =
         safe_normalize(Vec3f(alone(query.hit.Ng_x), alone(query.hit.Ng_y), alone(query.hit.Ng_z)), {0, 0, 1});
-    const Transform to_world = traced.placements ? traced.placements->to_world(placement) : object.to_world;
+    const PlacementRecord* record = traced.placements ? &traced.placements->record(placement) : nullptr;
+    std::optional<Transform> computed;  // a placed copy's, computed from its record
+    const Transform& to_world = record ? computed.emplace(to_world_of_record(*record)) : object.to_world;
     const auto shape_shading = [&] {
         // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
         const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
@@ -277,24 +282,25 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     if (dot(shading_normal, geometric_normal) < 0) shading_normal = -shading_normal;
     const Vec3f position = ray.at(t);
     const float position_error = kPositionErrorScale * (max_component(abs(position)) + t * length(ray.direction));
-    SurfaceHit hit{.t = t,
-                   .position = position,
-                   .geometric_normal = geometric_normal,
-                   .shading_normal = shading_normal,
-                   .uv = local.uv,
-                   .object_index = object_index,
-                   .primitive_id = query.hit.primID,
-                   .material = local.blend.count > 0 && object.blended_material ? object.blended_material
-                                                                                : object.material_of_part(local.part),
-                   .position_error = position_error,
-                   .dpdu = dpdu,
-                   .dpdv = dpdv,
-                   .footprint = ray.cone_width + ray.cone_spread * t * length(ray.direction),
-                   .object = &object,
-                   .to_world = to_world,
-                   .blend = local.blend};
+    SurfaceHit& hit = found.emplace();  // field by field: a hit built apart is copied in
+    hit.t = t;
+    hit.position = position;
+    hit.geometric_normal = geometric_normal;
+    hit.shading_normal = shading_normal;
+    hit.uv = local.uv;
+    hit.object_index = object_index;
+    hit.primitive_id = query.hit.primID;
+    hit.material = local.blend.count > 0 && object.blended_material ? object.blended_material
+                                                                    : object.material_of_part(local.part);
+    hit.position_error = position_error;
+    hit.dpdu = dpdu;
+    hit.dpdv = dpdv;
+    hit.footprint = ray.cone_width + ray.cone_spread * t * length(ray.direction);
+    hit.object = &object;
+    hit.placement = record;
+    hit.blend = local.blend;
     if (hit.material) hit.material->perturb_normal(hit);
-    return hit;
+    return found;
 }
 
 void RenderScene::count_untraceable_rays(std::uint64_t count) {

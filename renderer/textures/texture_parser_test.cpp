@@ -179,7 +179,6 @@ TEST(TextureParser, FieldReadsTheShapeInsideTheSurface) {
     hit.position = {4, 0, 0};
     hit.shading_normal = hit.geometric_normal = {1, 0, 0};
     hit.object = &object;
-    hit.to_world = object.to_world;
     const TextureContext context(hit);
     EXPECT_NEAR(scalar(scene, "v")->evaluate(context), 0.5, 1e-6);  // 0.5 inward from the surface at |p| = 2
     EXPECT_NEAR(scalar(scene, "g")->evaluate(context), 3, 1e-6);
