@@ -99,6 +99,21 @@ double BlobGroup::field(const Vec3d& point) const {
     });
 }
 
+void BlobGroup::fields(std::span<const std::uint32_t> listed, std::span<const Vec3d> points,
+                       std::span<double> sums) const {
+    std::fill(sums.begin(), sums.end(), 0.0);
+    with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) {
+        // A term is 0 outside the element's support, so adding only those inside it gives field()'s sums (whose
+        // list is the point's cell's: the same elements reach the point, in the same ascending order).
+        for (std::uint32_t j : listed) {
+            const BoundingSphere& sphere = spheres_[j];
+            const Metacube& element = elements_[j];
+            for (std::size_t i = 0; i < points.size(); ++i)
+                if (sphere.may_contain(points[i])) sums[i] += element.field(kernel, points[i]);
+        }
+    });
+}
+
 void BlobGroup::for_each_term(std::span<const std::uint32_t> listed, const Vec3d& point,
                               const std::function<void(std::uint32_t element, double term)>& visit) const {
     with_kernel(kernel_index_, *kernel_, [&](const auto& kernel) {

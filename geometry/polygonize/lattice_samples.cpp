@@ -9,23 +9,29 @@
 namespace isotrace {
 namespace {
 
-// Cells where the descent hands over to parallel tasks (8³ subtrees at most).
+// Levels below a brick: the descent stops at bricks of 8³ finest cells, whose 9³ corners are sampled in one batch
+// (ImplicitField::values). Testing each finest cell instead (a blob cloud's Lipschitz test keeps over ten times
+// the cells the surface cuts) cost more than sampling them all, and the corners shared by neighbouring cells are
+// then evaluated once per brick, not looked up in a lattice-wide table.
+constexpr int kBrickLevels = 3;
+// Bricks where the descent hands over to parallel tasks (8³ subtrees at most).
 constexpr int kTaskLevel = 3;
 
-void descend(const ImplicitField& field, const Lattice& lattice, int level, const LatticeIndex& cell,
+void descend(const ImplicitField& field, const Lattice& lattice, int level, int brick_level, const LatticeIndex& cell,
              std::vector<LatticeKey>& out) {
     if (!lattice.may_hold_surface(field, level, cell)) return;
-    if (level == lattice.depth()) {
+    if (level == brick_level) {
         out.push_back(lattice_key(cell));
         return;
     }
     for (int child = 0; child < 8; ++child)
-        descend(field, lattice, level + 1,
+        descend(field, lattice, level + 1, brick_level,
                 {2 * cell[0] + (child & 1), 2 * cell[1] + ((child >> 1) & 1), 2 * cell[2] + ((child >> 2) & 1)}, out);
 }
 
-std::vector<LatticeKey> candidate_cells(const ImplicitField& field, const Lattice& lattice) {
-    const int task_level = std::min(kTaskLevel, lattice.depth());
+// The bricks (octree nodes of `brick_level`) that may hold surface, sorted.
+std::vector<LatticeKey> surface_bricks(const ImplicitField& field, const Lattice& lattice, int brick_level) {
+    const int task_level = std::min(kTaskLevel, brick_level);
     std::vector<LatticeIndex> tasks;
     const int n = 1 << task_level;
     for (int k = 0; k < n; ++k)
@@ -35,12 +41,51 @@ std::vector<LatticeKey> candidate_cells(const ImplicitField& field, const Lattic
     parallel_for(std::size_t(0), tasks.size(), [&](std::size_t t) {
         // The ancestors were not tested: a task's first test covers them (a cell can only hold surface its
         // ancestors may hold).
-        descend(field, lattice, task_level, tasks[t], found[t]);
+        descend(field, lattice, task_level, brick_level, tasks[t], found[t]);
     });
-    std::vector<LatticeKey> cells;
-    for (const auto& part : found) cells.insert(cells.end(), part.begin(), part.end());
-    std::sort(cells.begin(), cells.end());
-    return cells;
+    std::vector<LatticeKey> bricks;
+    for (const auto& part : found) bricks.insert(bricks.end(), part.begin(), part.end());
+    std::sort(bricks.begin(), bricks.end());
+    return bricks;
+}
+
+// What one brick contributes: its cells with corners of both signs and the values at their corners.
+struct BrickSamples {
+    std::vector<std::pair<LatticeKey, std::uint8_t>> cells;  // key, inside pattern; ascending
+    std::vector<std::pair<LatticeKey, double>> corners;      // canonical key, value
+};
+
+BrickSamples sample_brick(const ImplicitField& field, const Lattice& lattice, const LatticeIndex& brick, int size) {
+    const int m = size + 1;  // corners along each axis
+    const auto at = [m](int x, int y, int z) { return std::size_t((z * m + y) * m + x); };
+    const LatticeIndex base = {brick[0] * size, brick[1] * size, brick[2] * size};
+    std::vector<LatticeKey> keys(std::size_t(m) * m * m);
+    std::vector<Vec3d> points(keys.size());
+    for (int z = 0; z < m; ++z)
+        for (int y = 0; y < m; ++y)
+            for (int x = 0; x < m; ++x) {
+                const LatticeIndex c = lattice.canonical_corner({base[0] + x, base[1] + y, base[2] + z});
+                keys[at(x, y, z)] = lattice_key(c);
+                points[at(x, y, z)] = lattice.position(Vec3d(c[0], c[1], c[2]));
+            }
+    std::vector<double> values(keys.size());
+    field.values(points, values);
+
+    BrickSamples result;
+    std::vector<std::uint8_t> used(keys.size());
+    for (int z = 0; z < size; ++z)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                std::uint8_t inside = 0;
+                for (int c = 0; c < 8; ++c)
+                    if (values[at(x + (c & 1), y + ((c >> 1) & 1), z + ((c >> 2) & 1))] < 0) inside |= std::uint8_t(1 << c);
+                if (inside == 0 || inside == 255) continue;
+                result.cells.emplace_back(lattice_key({base[0] + x, base[1] + y, base[2] + z}), inside);
+                for (int c = 0; c < 8; ++c) used[at(x + (c & 1), y + ((c >> 1) & 1), z + ((c >> 2) & 1))] = 1;
+            }
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        if (used[i]) result.corners.emplace_back(keys[i], values[i]);
+    return result;
 }
 
 LatticeIndex corner_of(const LatticeIndex& cell, int corner) {
@@ -102,39 +147,42 @@ Vec3d edge_crossing(const ImplicitField& field, const Lattice& lattice, const La
 
 LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice) {
     LatticeSamples samples;
-    const std::vector<LatticeKey> candidates = candidate_cells(field, lattice);
-    samples.candidate_cells = candidates.size();
-
-    std::vector<LatticeKey>& corners = samples.corners;
-    corners.reserve(candidates.size() * 8);
-    for (LatticeKey key : candidates)
-        for (int c = 0; c < 8; ++c) corners.push_back(lattice_key(lattice.canonical_corner(corner_of(lattice_index(key), c))));
-    std::sort(corners.begin(), corners.end());
-    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-    std::vector<double> values(corners.size());
-    samples.corner_inside.resize(corners.size());
-    parallel_for(std::size_t(0), corners.size(), [&](std::size_t i) {
-        const LatticeIndex c = lattice_index(corners[i]);
-        values[i] = field.value(lattice.position(Vec3d(c[0], c[1], c[2])));
-        samples.corner_inside[i] = values[i] < 0;
+    const int brick_level = std::max(0, lattice.depth() - kBrickLevels);
+    const int brick_size = 1 << (lattice.depth() - brick_level);
+    const std::vector<LatticeKey> bricks = surface_bricks(field, lattice, brick_level);
+    samples.candidate_cells = bricks.size() * std::size_t(brick_size) * brick_size * brick_size;
+    samples.corner_samples = bricks.size() * std::size_t(brick_size + 1) * (brick_size + 1) * (brick_size + 1);
+    std::vector<BrickSamples> parts(bricks.size());
+    parallel_for(std::size_t(0), bricks.size(), [&](std::size_t b) {
+        parts[b] = sample_brick(field, lattice, lattice_index(bricks[b]), brick_size);
     });
+
+    // Merged in key order, whatever order the bricks were done in. A corner on a face between bricks was sampled
+    // by each, to the same value (the same point).
+    std::vector<std::pair<LatticeKey, std::uint8_t>> cells;
+    std::vector<std::pair<LatticeKey, double>> corners;
+    for (BrickSamples& part : parts) {
+        cells.insert(cells.end(), part.cells.begin(), part.cells.end());
+        corners.insert(corners.end(), part.corners.begin(), part.corners.end());
+        part = {};
+    }
+    std::sort(cells.begin(), cells.end());
+    std::sort(corners.begin(), corners.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    corners.erase(std::unique(corners.begin(), corners.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+                  corners.end());
+    for (const auto& [key, inside] : cells) {
+        samples.cells.push_back(key);
+        samples.inside.push_back(inside);
+    }
+    std::vector<double> values;
+    for (const auto& [key, value] : corners) {
+        samples.corners.push_back(key);
+        samples.corner_inside.push_back(value < 0);
+        values.push_back(value);
+    }
     const auto value_at = [&](const LatticeIndex& corner) {
-        return values[position_of(corners, lattice_key(lattice.canonical_corner(corner)))];
+        return values[position_of(samples.corners, lattice_key(lattice.canonical_corner(corner)))];
     };
-
-    std::vector<std::uint8_t> patterns(candidates.size());
-    parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
-        const LatticeIndex cell = lattice_index(candidates[i]);
-        std::uint8_t inside = 0;
-        for (int c = 0; c < 8; ++c)
-            if (value_at(corner_of(cell, c)) < 0) inside |= std::uint8_t(1 << c);
-        patterns[i] = inside;
-    });
-    for (std::size_t i = 0; i < candidates.size(); ++i)
-        if (patterns[i] != 0 && patterns[i] != 255) {
-            samples.cells.push_back(candidates[i]);
-            samples.inside.push_back(patterns[i]);
-        }
 
     for (std::size_t i = 0; i < samples.cells.size(); ++i) {
         const LatticeIndex cell = lattice_index(samples.cells[i]);
