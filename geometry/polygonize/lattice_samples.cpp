@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "geometry/polygonize/cube_cycles.h"
 #include "renderer/core/parallel_for.h"
+#include "renderer/core/parallel_sort.h"
 
 namespace isotrace {
 namespace {
@@ -49,15 +51,103 @@ std::vector<LatticeKey> surface_bricks(const ImplicitField& field, const Lattice
     return bricks;
 }
 
-// What one brick contributes: its cells with corners of both signs and the values at their corners.
-struct BrickSamples {
-    std::vector<std::pair<LatticeKey, std::uint8_t>> cells;  // key, inside pattern; ascending
-    std::vector<std::pair<LatticeKey, double>> corners;      // canonical key, value
+LatticeIndex corner_of(const LatticeIndex& cell, int corner) {
+    return {cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1), cell[2] + ((corner >> 2) & 1)};
+}
+
+std::size_t position_of(const std::vector<LatticeKey>& keys, LatticeKey key) {
+    return std::size_t(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin());
+}
+
+// The point at parameter t ∈ [0, 1] of the lattice edge from `corner` along `axis` (on a spherical lattice an edge
+// in θ or φ is an arc).
+Vec3d point_on_edge(const Lattice& lattice, const LatticeIndex& corner, int axis, double t) {
+    Vec3d step;
+    step[axis] = 1;
+    return lattice.position(Vec3d(corner[0], corner[1], corner[2]) + step * t);
+}
+
+// The search of edge_crossing along one edge, a field value at a time, so that the edges of a brick can search
+// side by side with one batch of values per step: regula falsi (Illinois) in t, safeguarded by bisection.
+class EdgeRootSearch {
+public:
+    EdgeRootSearch(double lower_value, double upper_value) : fa_(lower_value), fb_(upper_value) {}
+
+    bool searching() const { return !exact_ && iterations_ < 64 && b_ - a_ > 1e-9; }
+    // Where the next value is wanted; once the search is over, the crossing.
+    double next() const {
+        if (exact_) return a_;
+        const double t = (a_ * fb_ - b_ * fa_) / (fb_ - fa_);
+        return t > a_ && t < b_ ? t : (a_ + b_) / 2;
+    }
+    void take(double t, double ft) {
+        ++iterations_;
+        if (ft == 0) {
+            exact_ = true;
+            a_ = t;
+        } else if ((ft < 0) == (fa_ < 0)) {
+            a_ = t;
+            fa_ = ft;
+            if (last_side_ < 0) fb_ /= 2;  // Illinois: the stale end's weight halves, so both ends move
+            last_side_ = -1;
+        } else {
+            b_ = t;
+            fb_ = ft;
+            if (last_side_ > 0) fa_ /= 2;
+            last_side_ = 1;
+        }
+    }
+
+private:
+    double a_ = 0, b_ = 1, fa_, fb_;
+    int last_side_ = 0, iterations_ = 0;
+    bool exact_ = false;
 };
+
+// What one brick contributes: its cells with corners of both signs, their corners and cut edges, and the Hermite
+// data of the cut edges it owns — those whose canonical lower corner lies in the brick's half-open range, so that
+// both ends are among its samples and no other brick owns them.
+struct BrickSamples {
+    std::vector<LatticeKey> cells;  // ascending
+    std::vector<std::uint8_t> inside;
+    std::vector<LatticeKey> corners;  // canonical key << 1 | inside, of the cells' corners
+    std::vector<LatticeKey> edges;    // every cut edge of the cells
+    std::vector<LatticeKey> owned;
+    std::vector<Vec3d> crossings, gradients;
+    std::vector<std::uint8_t> lower_inside;
+};
+
+struct OwnedEdge {
+    LatticeIndex corner;
+    int axis;
+    EdgeRootSearch search;
+};
+
+// The crossings of the owned edges, all searching at once.
+void find_crossings(const ImplicitField& field, const Lattice& lattice, std::vector<OwnedEdge>& edges) {
+    std::vector<std::size_t> active(edges.size());
+    for (std::size_t i = 0; i < edges.size(); ++i) active[i] = i;
+    std::vector<double> ts, values;
+    std::vector<Vec3d> points;
+    while (true) {
+        active.erase(std::remove_if(active.begin(), active.end(), [&](std::size_t i) { return !edges[i].search.searching(); }),
+                     active.end());
+        if (active.empty()) return;
+        ts.clear();
+        points.clear();
+        for (std::size_t i : active) {
+            ts.push_back(edges[i].search.next());
+            points.push_back(point_on_edge(lattice, edges[i].corner, edges[i].axis, ts.back()));
+        }
+        values.resize(points.size());
+        field.values(points, values);
+        for (std::size_t k = 0; k < active.size(); ++k) edges[active[k]].search.take(ts[k], values[k]);
+    }
+}
 
 BrickSamples sample_brick(const ImplicitField& field, const Lattice& lattice, const LatticeIndex& brick, int size) {
     const int m = size + 1;  // corners along each axis
-    const auto at = [m](int x, int y, int z) { return std::size_t((z * m + y) * m + x); };
+    const auto at = [m](const LatticeIndex& local) { return std::size_t((local[2] * m + local[1]) * m + local[0]); };
     const LatticeIndex base = {brick[0] * size, brick[1] * size, brick[2] * size};
     std::vector<LatticeKey> keys(std::size_t(m) * m * m);
     std::vector<Vec3d> points(keys.size());
@@ -65,35 +155,59 @@ BrickSamples sample_brick(const ImplicitField& field, const Lattice& lattice, co
         for (int y = 0; y < m; ++y)
             for (int x = 0; x < m; ++x) {
                 const LatticeIndex c = lattice.canonical_corner({base[0] + x, base[1] + y, base[2] + z});
-                keys[at(x, y, z)] = lattice_key(c);
-                points[at(x, y, z)] = lattice.position(Vec3d(c[0], c[1], c[2]));
+                keys[at({x, y, z})] = lattice_key(c);
+                points[at({x, y, z})] = lattice.position(Vec3d(c[0], c[1], c[2]));
             }
     std::vector<double> values(keys.size());
     field.values(points, values);
 
     BrickSamples result;
-    std::vector<std::uint8_t> used(keys.size());
+    std::vector<std::uint8_t> corner_used(keys.size()), edge_seen(keys.size() * 3);
+    std::vector<OwnedEdge> owned;
     for (int z = 0; z < size; ++z)
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) {
+                const LatticeIndex local = {x, y, z};
                 std::uint8_t inside = 0;
                 for (int c = 0; c < 8; ++c)
-                    if (values[at(x + (c & 1), y + ((c >> 1) & 1), z + ((c >> 2) & 1))] < 0) inside |= std::uint8_t(1 << c);
+                    if (values[at(corner_of(local, c))] < 0) inside |= std::uint8_t(1 << c);
                 if (inside == 0 || inside == 255) continue;
-                result.cells.emplace_back(lattice_key({base[0] + x, base[1] + y, base[2] + z}), inside);
-                for (int c = 0; c < 8; ++c) used[at(x + (c & 1), y + ((c >> 1) & 1), z + ((c >> 2) & 1))] = 1;
+                result.cells.push_back(lattice_key({base[0] + x, base[1] + y, base[2] + z}));
+                result.inside.push_back(inside);
+                for (int c = 0; c < 8; ++c) corner_used[at(corner_of(local, c))] = 1;
+                for (int e = 0; e < 12; ++e) {
+                    const auto ends = cube_edge_corners(e);
+                    if (((inside >> ends[0]) & 1) == ((inside >> ends[1]) & 1)) continue;
+                    const int axis = e / 4;
+                    const LatticeIndex lower = corner_of(local, ends[0]);
+                    if (std::exchange(edge_seen[at(lower) * 3 + std::size_t(axis)], 1)) continue;
+                    const LatticeIndex global = {base[0] + lower[0], base[1] + lower[1], base[2] + lower[2]};
+                    LatticeIndex corner = global;
+                    if (!lattice.canonical_edge(corner, axis)) continue;
+                    result.edges.push_back(edge_key(corner, axis));
+                    if (corner != global || lower[0] == size || lower[1] == size || lower[2] == size) continue;
+                    LatticeIndex upper = lower;
+                    ++upper[axis];
+                    owned.push_back({corner, axis, EdgeRootSearch(values[at(lower)], values[at(upper)])});
+                    result.owned.push_back(result.edges.back());
+                    result.lower_inside.push_back(values[at(lower)] < 0);
+                }
             }
     for (std::size_t i = 0; i < keys.size(); ++i)
-        if (used[i]) result.corners.emplace_back(keys[i], values[i]);
+        if (corner_used[i]) result.corners.push_back(keys[i] << 1 | LatticeKey(values[i] < 0));
+
+    find_crossings(field, lattice, owned);
+    for (const OwnedEdge& edge : owned) {
+        result.crossings.push_back(point_on_edge(lattice, edge.corner, edge.axis, edge.search.next()));
+        result.gradients.push_back(field.gradient(result.crossings.back()));
+    }
     return result;
 }
 
-LatticeIndex corner_of(const LatticeIndex& cell, int corner) {
-    return {cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1), cell[2] + ((corner >> 2) & 1)};
-}
-
-std::size_t position_of(const std::vector<LatticeKey>& keys, LatticeKey key) {
-    return std::size_t(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin());
+// Sorted and without repeats.
+void sort_unique(std::vector<LatticeKey>& keys) {
+    parallel_sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 }
 
 }  // namespace
@@ -118,31 +232,12 @@ std::optional<std::size_t> LatticeSamples::corner(LatticeKey key) const {
 
 Vec3d edge_crossing(const ImplicitField& field, const Lattice& lattice, const LatticeIndex& corner, int axis,
                     double lower_value, double upper_value) {
-    const Vec3d start(corner[0], corner[1], corner[2]);
-    Vec3d step;
-    step[axis] = 1;
-    const auto at = [&](double t) { return lattice.position(start + step * t); };
-    double a = 0, b = 1, fa = lower_value, fb = upper_value;
-    int last_side = 0;
-    for (int iteration = 0; iteration < 64 && b - a > 1e-9; ++iteration) {
-        double t = (a * fb - b * fa) / (fb - fa);
-        if (!(t > a && t < b)) t = (a + b) / 2;
-        const double ft = field.value(at(t));
-        if (ft == 0) return at(t);
-        if ((ft < 0) == (fa < 0)) {
-            a = t;
-            fa = ft;
-            if (last_side < 0) fb /= 2;  // Illinois: the stale end's weight halves, so both ends move
-            last_side = -1;
-        } else {
-            b = t;
-            fb = ft;
-            if (last_side > 0) fa /= 2;
-            last_side = 1;
-        }
+    EdgeRootSearch search(lower_value, upper_value);
+    while (search.searching()) {
+        const double t = search.next();
+        search.take(t, field.value(point_on_edge(lattice, corner, axis, t)));
     }
-    const double t = (a * fb - b * fa) / (fb - fa);
-    return at(t > a && t < b ? t : (a + b) / 2);
+    return point_on_edge(lattice, corner, axis, search.next());
 }
 
 LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice) {
@@ -157,58 +252,55 @@ LatticeSamples sample_lattice(const ImplicitField& field, const Lattice& lattice
         parts[b] = sample_brick(field, lattice, lattice_index(bricks[b]), brick_size);
     });
 
-    // Merged in key order, whatever order the bricks were done in. A corner on a face between bricks was sampled
-    // by each, to the same value (the same point).
-    std::vector<std::pair<LatticeKey, std::uint8_t>> cells;
-    std::vector<std::pair<LatticeKey, double>> corners;
-    for (BrickSamples& part : parts) {
-        cells.insert(cells.end(), part.cells.begin(), part.cells.end());
-        corners.insert(corners.end(), part.corners.begin(), part.corners.end());
-        part = {};
+    // Merged in key order, whatever order the bricks were done in. Corners and edges on a face between bricks
+    // come from each (a corner with the same value: the same point).
+    for (const BrickSamples& part : parts) {
+        samples.cells.insert(samples.cells.end(), part.cells.begin(), part.cells.end());
+        samples.corners.insert(samples.corners.end(), part.corners.begin(), part.corners.end());
+        samples.edges.insert(samples.edges.end(), part.edges.begin(), part.edges.end());
     }
-    std::sort(cells.begin(), cells.end());
-    std::sort(corners.begin(), corners.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    corners.erase(std::unique(corners.begin(), corners.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
-                  corners.end());
-    for (const auto& [key, inside] : cells) {
-        samples.cells.push_back(key);
-        samples.inside.push_back(inside);
+    sort_unique(samples.cells);
+    sort_unique(samples.corners);
+    sort_unique(samples.edges);
+    samples.corner_inside.resize(samples.corners.size());
+    for (std::size_t i = 0; i < samples.corners.size(); ++i) {
+        samples.corner_inside[i] = samples.corners[i] & 1;
+        samples.corners[i] >>= 1;
     }
-    std::vector<double> values;
-    for (const auto& [key, value] : corners) {
-        samples.corners.push_back(key);
-        samples.corner_inside.push_back(value < 0);
-        values.push_back(value);
-    }
-    const auto value_at = [&](const LatticeIndex& corner) {
-        return values[position_of(samples.corners, lattice_key(lattice.canonical_corner(corner)))];
-    };
-
-    for (std::size_t i = 0; i < samples.cells.size(); ++i) {
-        const LatticeIndex cell = lattice_index(samples.cells[i]);
-        for (int e = 0; e < 12; ++e) {
-            const auto ends = cube_edge_corners(e);
-            if (((samples.inside[i] >> ends[0]) & 1) == ((samples.inside[i] >> ends[1]) & 1)) continue;
-            LatticeIndex corner = corner_of(cell, ends[0]);
-            if (lattice.canonical_edge(corner, e / 4)) samples.edges.push_back(edge_key(corner, e / 4));
-        }
-    }
-    std::sort(samples.edges.begin(), samples.edges.end());
-    samples.edges.erase(std::unique(samples.edges.begin(), samples.edges.end()), samples.edges.end());
-
     const std::size_t count = samples.edges.size();
+    samples.inside.resize(samples.cells.size());
     samples.crossings.resize(count);
     samples.gradients.resize(count);
     samples.lower_inside.resize(count);
-    parallel_for(std::size_t(0), count, [&](std::size_t i) {
-        const int axis = int(samples.edges[i] & 3);
-        const LatticeIndex corner = lattice_index(samples.edges[i] >> 2);
+    std::vector<std::uint8_t> found(count);
+    parallel_for(std::size_t(0), parts.size(), [&](std::size_t b) {
+        BrickSamples& part = parts[b];
+        for (std::size_t i = 0; i < part.cells.size(); ++i) samples.inside[position_of(samples.cells, part.cells[i])] = part.inside[i];
+        for (std::size_t i = 0; i < part.owned.size(); ++i) {
+            const std::size_t e = position_of(samples.edges, part.owned[i]);
+            samples.crossings[e] = part.crossings[i];
+            samples.gradients[e] = part.gradients[i];
+            samples.lower_inside[e] = part.lower_inside[i];
+            found[e] = 1;
+        }
+        part = {};
+    });
+    // Cut edges no brick owns (a spherical lattice's south polar axis, whose lower corners are past the last θ
+    // index): sampled here, at the same points.
+    parallel_for(std::size_t(0), count, [&](std::size_t e) {
+        if (found[e]) return;
+        const int axis = int(samples.edges[e] & 3);
+        const LatticeIndex corner = lattice_index(samples.edges[e] >> 2);
         LatticeIndex upper = corner;
         ++upper[axis];
+        const auto value_at = [&](const LatticeIndex& c) {
+            const LatticeIndex canonical = lattice.canonical_corner(c);
+            return field.value(lattice.position(Vec3d(canonical[0], canonical[1], canonical[2])));
+        };
         const double lower_value = value_at(corner), upper_value = value_at(upper);
-        samples.crossings[i] = edge_crossing(field, lattice, corner, axis, lower_value, upper_value);
-        samples.gradients[i] = field.gradient(samples.crossings[i]);
-        samples.lower_inside[i] = lower_value < 0;
+        samples.crossings[e] = edge_crossing(field, lattice, corner, axis, lower_value, upper_value);
+        samples.gradients[e] = field.gradient(samples.crossings[e]);
+        samples.lower_inside[e] = lower_value < 0;
     });
     return samples;
 }
