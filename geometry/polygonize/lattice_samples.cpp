@@ -201,6 +201,10 @@ BrickSamples sample_brick(const ImplicitField& field, const Lattice& lattice, co
         result.crossings.push_back(point_on_edge(lattice, edge.corner, edge.axis, edge.search.next()));
         result.gradients.push_back(field.gradient(result.crossings.back()));
     }
+    // Held until the merge, for every brick at once: no room to spare.
+    for (auto* keys : {&result.cells, &result.corners, &result.edges, &result.owned}) keys->shrink_to_fit();
+    result.inside.shrink_to_fit();
+    result.lower_inside.shrink_to_fit();
     return result;
 }
 
