@@ -25,6 +25,7 @@ class SurfaceBoundedField final : public ImplicitField {
 public:
     explicit SurfaceBoundedField(const ImplicitField& inner) : inner_(inner), bounds_(surface_bounds(inner)) {}
     double value(const Vec3d& p) const override { return inner_.value(p); }
+    void values(std::span<const Vec3d> points, std::span<double> out) const override { inner_.values(points, out); }
     Vec3d gradient(const Vec3d& p) const override { return inner_.gradient(p); }
     FieldBox bounds() const override { return bounds_; }
     bool may_reach_surface(const Vec3d& centre, double radius) const override {

@@ -1,6 +1,7 @@
 #include "geometry/field/transformed_field.h"
 
 #include <cmath>
+#include <vector>
 
 #include "renderer/math/box_corner.h"
 
@@ -19,6 +20,11 @@ public:
     }
 
     double value(const Vec3d& p) const override { return inner_->value(to_inner_.point(p)); }
+    void values(std::span<const Vec3d> points, std::span<double> out) const override {
+        std::vector<Vec3d> inner(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) inner[i] = to_inner_.point(points[i]);
+        inner_->values(inner, out);
+    }
     // ∇(f∘A⁻¹) = A⁻ᵀ∇f, which is what Transform::normal applies.
     Vec3d gradient(const Vec3d& p) const override { return to_outer_.normal(inner_->gradient(to_inner_.point(p))); }
     FieldBox bounds() const override {

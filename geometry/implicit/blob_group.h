@@ -73,6 +73,10 @@ public:
 
     // F(P) + T (the summed field) and its gradient.
     double field(const Vec3d& point) const;
+    // field() at each of `points` into `sums` (as many slots), bit for bit, given `listed`: ascending, every element
+    // whose support may reach one of the points. Element by element, so each point sums its terms in field()'s
+    // order; for many points near each other (a block of lattice corners), which share one list.
+    void fields(std::span<const std::uint32_t> listed, std::span<const Vec3d> points, std::span<double> sums) const;
     Vec3d gradient(const Vec3d& point) const;
     // Calls visit(j, wⱼ·fⱼ(P)) for each of the `listed` elements (a cell's, or those near the point) whose support
     // may contain P, in list order: the terms of the field, for those who share it out.

@@ -43,6 +43,19 @@ public:
     }
 
     double value(const Vec3d& p) const override { return group_.threshold() - group_.field(p); }
+    // One list for the block: the elements whose support reaches the points' box, ascending.
+    void values(std::span<const Vec3d> points, std::span<double> out) const override {
+        FieldBox box = FieldBox::none();
+        for (const Vec3d& p : points) box.extend(p);
+        std::vector<std::uint32_t> listed;
+        supports_.for_each_near(box.centre(), 0.5 * length(box.extent()) + hair_, [&](std::uint32_t i) {
+            listed.push_back(i);
+            return true;
+        });
+        std::sort(listed.begin(), listed.end());
+        group_.fields(listed, points, out);
+        for (double& v : out.first(points.size())) v = group_.threshold() - v;
+    }
     Vec3d gradient(const Vec3d& p) const override {
         const Vec3d smooth = -group_.gradient(p);
         if (!has_hard_cubes_) return smooth;

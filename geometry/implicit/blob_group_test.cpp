@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -367,6 +368,42 @@ TEST(BlobGroup, BadElementsAndThresholdsAreReported) {
                   .find("did you mean \"kim\""),
               std::string::npos);
     EXPECT_NE(message_of(R"({"type": "blobs"})").find("needs"), std::string::npos);
+}
+
+// fields() sums a block of points element by element; each sum must be field()'s, bit for bit (the polygonisers
+// sample lattice corners a block at a time and must mesh exactly as one point at a time would), for metaballs,
+// rotated metacubes, hard cubes (a step) and carving elements, under every kernel, with points on a lattice
+// (faces of hard cubes and supports included) and scattered.
+TEST(BlobGroup, FieldsOfABlockOfPointsAreFieldBitForBit) {
+    std::mt19937_64 rng(5);
+    for (const std::string_view name : field_function_names()) {
+        std::vector<Metacube> elements;
+        for (int i = 0; i < 40; ++i) elements.push_back(random_metacube(rng));
+        elements.push_back(Metacube::metaball({0.25, 0, 0}, 0.5, 1));
+        OrientedBox cube;
+        cube.centre = {0.5, 0.5, -0.5};
+        cube.half_size = {0.5, 0.25, 0.5};
+        elements.emplace_back(cube, 0.0, 1.0);  // a hard cube whose faces lie on lattice points below
+        const BlobGroup group(std::move(elements), make_field_function(std::string(name), 4.0), 0.5);
+        std::vector<Vec3d> points;
+        for (int z = -8; z <= 8; ++z)
+            for (int y = -8; y <= 8; ++y)
+                for (int x = -8; x <= 8; ++x) points.push_back(Vec3d(x, y, z) * 0.25);
+        for (int i = 0; i < 500; ++i) points.push_back(random_vector(rng, -3, 3));
+        std::vector<std::uint32_t> listed(group.elements().size());
+        for (std::uint32_t j = 0; j < listed.size(); ++j) listed[j] = j;
+        std::vector<double> sums(points.size());
+        group.fields(listed, points, sums);
+        int nonzero = 0;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const double expected = group.field(points[i]);
+            nonzero += expected != 0;
+            ASSERT_EQ(std::memcmp(&sums[i], &expected, sizeof(double)), 0)
+                << name << " at (" << points[i].x << ", " << points[i].y << ", " << points[i].z << "): " << sums[i]
+                << " vs " << expected;
+        }
+        EXPECT_GT(nonzero, 1000) << name;
+    }
 }
 
 }  // namespace

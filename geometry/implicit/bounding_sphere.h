@@ -26,6 +26,12 @@ struct alignas(16) BoundingSphere {
         const Vec3d f = p - Vec3d(centre[0], centre[1], centre[2]);
         return dot(f, f) <= double(radius) * double(radius) * (1 + 1e-9);
     }
+    // False only when the box [lower, upper] holds no point that may_contain accepts.
+    bool may_meet(const Vec3d& lower, const Vec3d& upper) const {
+        const Vec3d c(centre[0], centre[1], centre[2]);
+        const Vec3d gap = max(max(lower - c, c - upper), Vec3d(0, 0, 0));
+        return dot(gap, gap) <= double(radius) * double(radius) * (1 + 1e-9);
+    }
 };
 
 static_assert(sizeof(BoundingSphere) == 16, "one vector load per sphere");

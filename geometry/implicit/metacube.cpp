@@ -75,11 +75,6 @@ Vec3d Metacube::offset_beyond_rotated_box(const Vec3d& world_point) const {
     return offset;
 }
 
-double Metacube::distance_squared(const Vec3d& point) const {
-    const Vec3d offset = offset_beyond_box(point);
-    return dot(offset, offset);
-}
-
 // The support is the box swept by a ball of radius R: per world axis j the box reaches Σₖ |axes[k]ⱼ|·dₖ from
 // the centre, and the ball adds R whatever the rotation.
 WorldBounds Metacube::support_bounds() const {

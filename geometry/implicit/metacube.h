@@ -61,7 +61,10 @@ public:
     double support_radius() const { return radius_ + half_diagonal(); }
 
     // Squared distance from a world point to the solid box.
-    double distance_squared(const Vec3d& point) const;
+    double distance_squared(const Vec3d& point) const {
+        const Vec3d offset = offset_beyond_box(point);
+        return dot(offset, offset);
+    }
     // w·f(dist²), or for a hard cube w on the closed box and 0 outside. Kernel is FieldFunction or, for direct
     // calls, one of its final classes.
     template <class Kernel>

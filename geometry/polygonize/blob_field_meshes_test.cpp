@@ -2,11 +2,14 @@
 // (origin correction had no gradient to follow), options that do not apply to a method, lattices that spanned the
 // kernels' supports instead of the surface, hard cubes (a step field) without gradients.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "geometry/implicit/blob_group_shape.h"
+#include "geometry/implicit/implicit_test_support.h"
 #include "geometry/polygonize/mesh_error.h"
 #include "geometry/polygonize/mesh_topology.h"
 #include "geometry/polygonize/polygonize_field.h"
@@ -178,6 +181,37 @@ TEST(BlobFieldMeshes, HardMetacubesKeepTheirCornersAndFaces) {
     EXPECT_LT(error.vertex_max, 1e-5);
     EXPECT_LT(error.hausdorff(), 0.02);
     EXPECT_GT(error.surface_samples, 100u);
+}
+
+// A blob field is sampled in batches (ImplicitField::values) split among threads: every method's mesh of a cloud
+// with metacubes and carving elements is the same, byte for byte, on one thread and on several.
+TEST(BlobFieldMeshes, MeshesOfABlobCloudAreTheSameForAnyThreadCount) {
+    const BlobGroupShape shape(random_blob_group(40, 9, "wyvill", 6));
+    const std::unique_ptr<ImplicitField> field = shape.implicit_field();
+    for (const PolygonizeMethod method :
+         {PolygonizeMethod::MarchingCubes, PolygonizeMethod::DualContouring, PolygonizeMethod::SphericalDualContouring}) {
+        PolygonizeOptions options;
+        options.method = method;
+        options.depth = 6;
+        Polygonization one, many;
+        {
+            tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+            one = polygonize_field(*field, options);
+        }
+        {
+            tbb::global_control several(tbb::global_control::max_allowed_parallelism, 4);
+            many = polygonize_field(*field, options);
+        }
+        ASSERT_GT(one.mesh.triangles.size(), 1000u) << int(method);
+        ASSERT_EQ(one.mesh.positions.size(), many.mesh.positions.size()) << int(method);
+        ASSERT_EQ(one.mesh.triangles.size(), many.mesh.triangles.size()) << int(method);
+        EXPECT_EQ(0, std::memcmp(one.mesh.positions.data(), many.mesh.positions.data(),
+                                 one.mesh.positions.size() * sizeof(Vec3f))) << int(method);
+        EXPECT_EQ(0, std::memcmp(one.mesh.normals.data(), many.mesh.normals.data(),
+                                 one.mesh.normals.size() * sizeof(Vec3f))) << int(method);
+        EXPECT_EQ(0, std::memcmp(one.mesh.triangles.data(), many.mesh.triangles.data(),
+                                 one.mesh.triangles.size() * sizeof(one.mesh.triangles[0]))) << int(method);
+    }
 }
 
 }  // namespace

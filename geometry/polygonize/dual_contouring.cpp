@@ -159,6 +159,7 @@ TriangleMeshData dual_contour(const LatticeSamples& samples, const Lattice& latt
     SplitVertices split(samples, lattice, vertices);
 
     TriangleMeshData mesh;
+    mesh.triangles.reserve(2 * samples.edges.size());  // a quad per cut edge, mostly: no regrowth at the peak
     std::vector<EdgeNeighbour> around;
     std::vector<std::size_t> cells;
     std::vector<std::uint32_t> polygon;

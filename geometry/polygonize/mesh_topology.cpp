@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/core/parallel_sort.h"
+
 namespace isotrace {
 
 bool is_closed_and_consistently_oriented(const TriangleMeshData& mesh) {
@@ -48,15 +50,16 @@ std::size_t connected_components(const TriangleMeshData& mesh) {
 
 namespace {
 
-std::vector<std::pair<std::uint32_t, std::uint32_t>> undirected_edges(const TriangleMeshData& mesh) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+// Each triangle side as (smaller vertex << 32 | larger vertex), sorted: integers, so that they sort in parallel.
+std::vector<std::uint64_t> undirected_edges(const TriangleMeshData& mesh) {
+    std::vector<std::uint64_t> edges;
     edges.reserve(3 * mesh.triangles.size());
     for (const auto& t : mesh.triangles)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
-            edges.emplace_back(std::min(a, b), std::max(a, b));
+            edges.push_back(std::uint64_t(std::min(a, b)) << 32 | std::max(a, b));
         }
-    std::sort(edges.begin(), edges.end());
+    parallel_sort(edges.begin(), edges.end());
     return edges;
 }
 

@@ -61,7 +61,7 @@ void check_spherical_settings(const PolygonizeOptions& options) {
 void report_samples(const LatticeSamples& samples, PolygonizeReport& report) {
     report.candidate_cells = samples.candidate_cells;
     report.surface_cells = samples.cells.size();
-    report.corner_samples = samples.corners.size();
+    report.corner_samples = samples.corner_samples;
     report.cut_edges = samples.edges.size();
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Polygonising an implicit field into a triangle mesh: marching cubes or dual contouring on the Cartesian
 // octree's finest level, or dual contouring on a spherical octree (Kim et al. 2011, and the seed paper's stable
-// construction). The octrees subdivide only cells that may hold surface (ImplicitField::may_reach_surface), so
-// every cell that does is kept at the finest level; empty space stays coarse and produces nothing. Cartesian dual
+// construction). The octrees subdivide only cells that may hold surface (ImplicitField::may_reach_surface), down
+// to bricks of 8³ finest cells that are sampled whole (lattice_samples.h), so every cell the surface cuts is found
+// at the finest level; empty space stays coarse and produces nothing. Cartesian dual
 // contouring may then simplify the octree by QEF error (octree_simplification.h). Both octrees span the box of
 // the surface (surface_bounds.h), not the field's bounds(): the depth is a cell size relative to the surface.
 #include <cstddef>
@@ -34,9 +35,9 @@ struct PolygonizeOptions {
 
 struct PolygonizeReport {
     FieldBox bounds;                  // the surface's, which the lattice spans (surface_bounds.h)
-    std::size_t candidate_cells = 0;  // finest cells the octree kept
+    std::size_t candidate_cells = 0;  // finest cells of the bricks the octree kept (lattice_samples.h)
     std::size_t surface_cells = 0;    // those with corners of both signs
-    std::size_t corner_samples = 0;
+    std::size_t corner_samples = 0;   // field values taken at their corners
     std::size_t cut_edges = 0;
     DualContouringStatistics dual;
     SimplificationStatistics simplification;

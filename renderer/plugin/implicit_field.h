@@ -6,8 +6,10 @@
 //
 // Shapes offer their field through Shape::implicit_field(); each primitive's field lives in the primitive's own
 // folder.
+#include <cstddef>
 #include <limits>
 #include <memory>
+#include <span>
 
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
@@ -56,6 +58,12 @@ public:
     // value(p), bit for bit, and ∇f(p) · direction; a field may compute both for less than a gradient.
     virtual FieldSlope value_and_slope(const Vec3d& p, const Vec3d& direction) const {
         return {value(p), dot(gradient(p), direction)};
+    }
+    // value() at each of `points` (out has as many slots), bit for bit: the polygonisers sample lattice corners a
+    // block at a time, and a field that can share work between nearby points (a blob group gathers the elements
+    // that reach them once) overrides this.
+    virtual void values(std::span<const Vec3d> points, std::span<double> out) const {
+        for (std::size_t i = 0; i < points.size(); ++i) out[i] = value(points[i]);
     }
     // A box that contains the whole surface (and, for a bounded solid, the whole inside).
     virtual FieldBox bounds() const = 0;

@@ -1412,6 +1412,25 @@ PY
   expect_no_partial_files "$work"
 }
 
+case_mesh_threads_every_method() {  # a generated blob cloud: each method writes the same PLY bytes on 1 and 2 threads
+  cat >"$work/cloud.json" <<'JSON'
+{
+  "isotrace": 1,
+  "film": { "resolution": [24, 16], "spp": 1 },
+  "camera": { "type": "perspective", "fov": 40, "look_at": { "eye": [0, 0, -6], "target": [0, 0, 0], "up": [0, 1, 0] } },
+  "materials": { "grey": { "type": "diffuse" } },
+  "objects": [ { "name": "cloud", "material": "grey", "shape": { "type": "blobs", "field": "kim", "threshold": 0.5,
+    "generate": { "count": 300, "seed": 4, "min": [-1, -1, -1], "max": [1, 1, 1], "radius": [0.15, 0.3], "weight": [0.8, 1.2] } } } ]
+}
+JSON
+  local method
+  for method in mc dc sdc; do
+    cli_expect 0 mesh "$work/cloud.json" --method "$method" --depth 6 --threads 1 -q -o "$work/one_$method.ply"
+    cli_expect 0 mesh "$work/cloud.json" --method "$method" --depth 6 --threads 2 -q -o "$work/two_$method.ply"
+    cmp -s "$work/one_$method.ply" "$work/two_$method.ply" || fail "$method: the mesh differs between 1 and 2 threads"
+  done
+}
+
 case_mesh_simplify() {  # octree simplification by QEF error: fewer vertices; bad tolerances and methods exit 2
   write_blob_scene "$work/blobs.json"
   cli_expect 0 mesh "$work/blobs.json" -o "$work/full.obj" --depth 5
