@@ -81,14 +81,14 @@ PatchSide parse_side(const SceneNode& node, const NamedCurves& named, const std:
         }
         return found->second;
     };
-    if (node.json().is_string()) return {lookup(node, node.json().string), false, "curve \"" + node.json().string + "\""};
+    if (node.json().is_string()) return {lookup(node, node.json().string), false, "curve \"" + node.json().string + "\"", nullptr};
     if (node.json().is_object() && node.has("curve")) {
         const std::string name = node.string("curve");
         const bool reversed = node.boolean_or("reversed", false);
         node.finish();
-        return {lookup(node, name), reversed, "curve \"" + name + "\"" + (reversed ? " (reversed)" : "")};
+        return {lookup(node, name), reversed, "curve \"" + name + "\"" + (reversed ? " (reversed)" : ""), nullptr};
     }
-    return {parse_curve(node), false, fallback_name};
+    return {parse_curve(node), false, fallback_name, nullptr};
 }
 
 std::shared_ptr<const PatchDomain> domain_for(const SceneNode& patch, int sides) {
