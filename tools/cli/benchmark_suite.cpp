@@ -25,7 +25,7 @@ const std::vector<BenchmarkWorkload>& benchmark_workloads() {
         {"csg_cup", "csg_cup.json", K::Render, "", 0, 45, "a CSG cup (unions, differences, intersections), path traced"},
         {"showcase", "showcase.json", K::Render, "", 0, 44,
          "the showcase still, small: every kind of shape, glass, depth of field, the full path tracer"},
-        {"dog_mesh", "metacube_dog.json", K::Polygonise, "dog", 7, 55,
+        {"dog_mesh", "metacube_dog.json", K::Polygonise, "dog", 7, 80,
          "the dog polygonised by dual contouring at octree depth 7: field sampling and the QEF solves"},
     };
     return workloads;
