@@ -146,7 +146,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         });
     };
     // Mixed exponents: the chords and tangents of φ's convex parts (difference_of_convex.h) bound far tighter
-    // than interval arithmetic; where they settle nothing, the interval bounds are asked. φ has g's sign but not
+    // than interval arithmetic; where they settle nothing, the stretch is halved. φ has g's sign but not
     // its slope: a bound of φ′ that excludes zero is handed to the search only as what the search takes from such
     // a bound of g′ — that g changes sign at most once on the stretch.
     const auto bound = [&](double a, double b) {
@@ -178,18 +178,16 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (convex && visit_convex_crossings(t0, t1, g_start, value(t1), value_and_slope, first_only, work.search, visit))
         return;
 
-    // Undeformed, F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is
-    // linear and the bound is exact.
+    // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and
+    // the bound is exact.
     double cuts[5] = {t0};
     int count = 1;
-    if (deformation_.empty()) {
-        for (int k = 0; k < 3; ++k) {
-            const double t = -o[k] / d[k];
-            if (!(t > t0 && t < t1)) continue;
-            int at = count++;  // insertion keeps the cuts in order
-            for (; at > 1 && cuts[at - 1] > t; --at) cuts[at] = cuts[at - 1];
-            cuts[at] = t;
-        }
+    for (int k = 0; k < 3; ++k) {
+        const double t = -o[k] / d[k];
+        if (!(t > t0 && t < t1)) continue;
+        int at = count++;  // insertion keeps the cuts in order
+        for (; at > 1 && cuts[at - 1] > t; --at) cuts[at] = cuts[at - 1];
+        cuts[at] = t;
     }
     cuts[count++] = t1;
     for (int i = 0; i + 1 < count; ++i) {
