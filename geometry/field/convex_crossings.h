@@ -66,21 +66,19 @@ MarchResult march(const PointSlope& at, double a, double g_a, double slope_a, do
 
 }  // namespace convex_crossings_detail
 
-// Visits the crossings of a convex g on [t0, t1] in increasing t (g0 = g(t0), g1 = g(t1); `at(t)` returns {value,
-// derivative}, the value bit for bit the caller's g): the first only, or all of them. Returns false when the march
-// could not settle the segment; then nothing was visited and the caller runs the general search.
-template <class PointSlope, class Visit>
-bool visit_convex_crossings(double t0, double t1, double g0, double g1, const PointSlope& at, bool first_only,
-                            CrossingSearchWork& work, Visit&& visit) {
+// Visits the crossings of a convex g on [t0, t1] in increasing t (`start` = at(t0), `end` = at(t1); `at(t)` returns
+// {value, derivative}, the value bit for bit the caller's g): the first only, or all of them. Returns false when the
+// march could not settle the segment; then nothing was visited and the caller runs the general search.
+template <class Sample, class PointSlope, class Visit>
+bool visit_convex_crossings(double t0, double t1, const Sample& start, const Sample& end, const PointSlope& at,
+                            bool first_only, CrossingSearchWork& work, Visit&& visit) {
     using convex_crossings_detail::March;
     using convex_crossings_detail::march;
-    const double length = t1 - t0;
+    const double length = t1 - t0, g0 = start.value, g1 = end.value;
     const bool outside_at_start = g0 >= 0, outside_at_end = g1 >= 0;
     if (!outside_at_start && !outside_at_end) return true;
     std::optional<double> entry;
     if (outside_at_start) {
-        const auto start = at(t0);
-        ++work.evaluations;
         const auto found = march(at, t0, g0, start.derivative, 1, length, work);
         if (found.outcome == March::Unknown) return false;
         if (found.outcome == March::None) return true;
@@ -91,8 +89,6 @@ bool visit_convex_crossings(double t0, double t1, double g0, double g1, const Po
             return true;
         }
     }
-    const auto end = at(t1);
-    ++work.evaluations;
     const auto exit = march(at, t1, g1, end.derivative, -1, length, work);
     if (exit.outcome != March::Root) return false;          // a crossing is known to lie before t1
     if (entry && !(exit.t > *entry)) return false;          // a tangent contact: the general search decides

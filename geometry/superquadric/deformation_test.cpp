@@ -20,7 +20,7 @@ const Vec3d kRadii(0.8, 0.5, 1.5);
 Vec3d random_point_of(std::mt19937& random, const Superellipsoid& shape) {
     std::uniform_real_distribution<double> unit(-1, 1);
     for (;;) {
-        const Vec3d p{shape.radii.x * unit(random), shape.radii.y * unit(random), shape.radii.z * unit(random)};
+        const Vec3d p{shape.radii().x * unit(random), shape.radii().y * unit(random), shape.radii().z * unit(random)};
         if (shape.gauge(p) <= 1) return p;
     }
 }

@@ -10,22 +10,24 @@ namespace {
 
 // r^p for r in [0, 1]: exponents that are small whole numbers (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) by
 // repeated squaring, which is several times cheaper than pow, the intersector's hottest call.
-double unit_power(double r, double p) {
-    if (p == std::floor(p) && p <= 64) {
+double unit_power(double r, const NormExponent& e) {
+    if (e.whole > 0) {
         double result = 1, base = r;
-        for (int n = int(p); n > 0; n >>= 1, base *= base)
+        for (int n = e.whole; n > 0; n >>= 1, base *= base)
             if (n & 1) result *= base;
         return result;
     }
-    return std::pow(r, p);
+    return std::pow(r, e.p);
 }
 
 // s^(1/p) for s in [1, 2], with the roots that have a cheap exact form.
-double root(double s, double p) {
-    if (p == 1) return s;
-    if (p == 2) return std::sqrt(s);
-    if (p == 4) return std::sqrt(std::sqrt(s));
-    return std::pow(s, 1 / p);
+double root(double s, const NormExponent& e) {
+    switch (e.whole) {
+        case 1: return s;
+        case 2: return std::sqrt(s);
+        case 4: return std::sqrt(std::sqrt(s));
+        default: return std::pow(s, e.inverse);
+    }
 }
 
 // (a^p + b^p)^(1/p) for a, b ≥ 0 as larger·(1 + (smaller/larger)^p)^(1/p), scaled by the larger so that neither
@@ -34,14 +36,14 @@ struct PNorm {
     double larger, smaller, sum, norm;
 };
 
-PNorm p_norm_parts(double a, double b, double p) {
+PNorm p_norm_parts(double a, double b, const NormExponent& p) {
     const double larger = std::max(a, b), smaller = std::min(a, b);
     if (larger == 0 || std::isinf(larger)) return {larger, smaller, 1, larger};
     const double sum = 1 + unit_power(smaller / larger, p);
     return {larger, smaller, sum, larger * root(sum, p)};
 }
 
-double p_norm(double a, double b, double p) { return p_norm_parts(a, b, p).norm; }
+double p_norm(double a, double b, const NormExponent& p) { return p_norm_parts(a, b, p).norm; }
 
 // ∂‖(a, b)‖_p/∂a and ∂/∂b: (a/N)^(p−1) = (a/N)^p·N/a, where (larger/N)^p = 1/sum and (smaller/N)^p = (sum − 1)/sum.
 // At a zero argument the limit: 0 for p > 1, 1 for p = 1, unbounded (NaN, so that no Newton step is taken) below.
@@ -56,9 +58,21 @@ double signed_power(double base, double exponent) { return std::copysign(std::po
 
 }  // namespace
 
+NormExponent NormExponent::of_epsilon(double epsilon) {
+    const double p = 2 / epsilon;
+    return {p, p == std::floor(p) && p <= 64 ? int(p) : 0, 1 / p};
+}
+
+Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double east_west)
+    : radii_(radii),
+      north_south_(north_south),
+      east_west_(east_west),
+      p1_(NormExponent::of_epsilon(north_south)),
+      p2_(NormExponent::of_epsilon(east_west)) {}
+
 double Superellipsoid::gauge(const Vec3d& p) const {
-    const double horizontal = p_norm(std::abs(p.x) / radii.x, std::abs(p.y) / radii.y, 2 / east_west);
-    return p_norm(horizontal, std::abs(p.z) / radii.z, 2 / north_south);
+    const double horizontal = p_norm(std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, p2_);
+    return p_norm(horizontal, std::abs(p.z) / radii_.z, p1_);
 }
 
 namespace {
@@ -71,13 +85,12 @@ double rate(double coordinate, double along, double radius) {
 }  // namespace
 
 ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const Vec3d& direction) const {
-    const double p1 = 2 / north_south, p2 = 2 / east_west;
-    const double u = std::abs(p.x) / radii.x, v = std::abs(p.y) / radii.y, w = std::abs(p.z) / radii.z;
-    const PNorm h = p_norm_parts(u, v, p2), g = p_norm_parts(h.norm, w, p1);
-    const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2);
-    const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1);
-    const double dh = dh_du * rate(p.x, direction.x, radii.x) + dh_dv * rate(p.y, direction.y, radii.y);
-    const double slope = dg_dh * dh + dg_dw * rate(p.z, direction.z, radii.z);
+    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, w = std::abs(p.z) / radii_.z;
+    const PNorm h = p_norm_parts(u, v, p2_), g = p_norm_parts(h.norm, w, p1_);
+    const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2_.p);
+    const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1_.p);
+    const double dh = dh_du * rate(p.x, direction.x, radii_.x) + dh_dv * rate(p.y, direction.y, radii_.y);
+    const double slope = dg_dh * dh + dg_dw * rate(p.z, direction.z, radii_.z);
     return {g.norm, std::isfinite(slope) ? slope : NAN};
 }
 
@@ -86,18 +99,18 @@ ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const Vec3d& dire
 // both concave, and φ = h − R is their difference (negated for the concave pair).
 DifferenceOfConvexSample Superellipsoid::inside_difference(const Vec3d& p, const Vec3d& direction) const {
     constexpr double inf = std::numeric_limits<double>::infinity();
-    const double p1 = 2 / north_south, p2 = 2 / east_west;
-    const double u = std::abs(p.x) / radii.x, v = std::abs(p.y) / radii.y, w = std::min(std::abs(p.z) / radii.z, 1.0);
-    const PNorm h = p_norm_parts(u, v, p2);
+    const double p1 = p1_.p, p2 = p2_.p;
+    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, w = std::min(std::abs(p.z) / radii_.z, 1.0);
+    const PNorm h = p_norm_parts(u, v, p2_);
     const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2);
-    const double h_slope = dh_du * rate(p.x, direction.x, radii.x) + dh_dv * rate(p.y, direction.y, radii.y);
-    const double w_power = unit_power(w, p1), rest = 1 - w_power;
-    const double edge = rest > 0 ? root(rest, p1) : 0;
+    const double h_slope = dh_du * rate(p.x, direction.x, radii_.x) + dh_dv * rate(p.y, direction.y, radii_.y);
+    const double w_power = unit_power(w, p1_), rest = 1 - w_power;
+    const double edge = rest > 0 ? root(rest, p1_) : 0;
     // dR/dw = −w^(p1−1)·R^(1−p1) = −(w^p1/w)·(R/(1 − w^p1)), with its limits at w = 0 and w = 1.
     const double dr_dw = w == 0      ? (p1 > 1 ? 0 : p1 == 1 ? -1 : -inf)
                          : rest <= 0 ? (p1 < 1 ? 0 : -inf)
                                      : -(w_power / w) * (edge / rest);
-    const double edge_slope = dr_dw * rate(p.z, direction.z, radii.z);
+    const double edge_slope = dr_dw * rate(p.z, direction.z, radii_.z);
     const ConvexSample horizontal{h.norm, std::isfinite(h_slope) ? h_slope : NAN}, vertical{edge, edge_slope};
     if (p2 >= 1) return {horizontal, vertical};
     return {{-vertical.value, -vertical.slope}, {-horizontal.value, -horizontal.slope}};
@@ -149,21 +162,20 @@ Interval signed_by(Interval x, Interval factor) {
 // ∂G/∂u = (h/G)^(p1−1)·(u/h)^(p2−1), ∂G/∂v likewise, ∂G/∂w = (w/G)^(p1−1), with h = ‖(u, v)‖_p2, p = 2/ε and
 // u = |x|/a1, ...; every factor is a power of a share in [0, 1], bounded from the ranges of u, v, w, h.
 IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
-    const double p1 = 2 / north_south, p2 = 2 / east_west;
-    const Interval u = box.x.magnitude() * (1 / radii.x), v = box.y.magnitude() * (1 / radii.y),
-                   w = box.z.magnitude() * (1 / radii.z);
-    const Interval h = {p_norm(u.lo, v.lo, p2), p_norm(u.hi, v.hi, p2)};
-    const auto [horizontal, d_dw] = share_powers(h, w, p1);
-    const auto [of_u, of_v] = share_powers(u, v, p2);
+    const Interval u = box.x.magnitude() * (1 / radii_.x), v = box.y.magnitude() * (1 / radii_.y),
+                   w = box.z.magnitude() * (1 / radii_.z);
+    const Interval h = {p_norm(u.lo, v.lo, p2_), p_norm(u.hi, v.hi, p2_)};
+    const auto [horizontal, d_dw] = share_powers(h, w, p1_.p);
+    const auto [of_u, of_v] = share_powers(u, v, p2_.p);
     const Interval d_du = non_negative_product(horizontal, of_u), d_dv = non_negative_product(horizontal, of_v);
-    return {signed_by(box.x, d_du * (1 / radii.x)), signed_by(box.y, d_dv * (1 / radii.y)),
-            signed_by(box.z, d_dw * (1 / radii.z))};
+    return {signed_by(box.x, d_du * (1 / radii_.x)), signed_by(box.y, d_dv * (1 / radii_.y)),
+            signed_by(box.z, d_dw * (1 / radii_.z))};
 }
 
 
 Vec3d Superellipsoid::normal(const Vec3d& p) const {
-    const double p1 = 2 / north_south, p2 = 2 / east_west;
-    const Vec3d scaled(std::abs(p.x) / radii.x, std::abs(p.y) / radii.y, std::abs(p.z) / radii.z);
+    const double p1 = p1_.p, p2 = p2_.p;
+    const Vec3d scaled(std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, std::abs(p.z) / radii_.z);
     const double size = max_component(scaled);
     if (size == 0) return {0, 0, 1};
     // ∂G/∂u = (h/G)^(p1−1)·(u/h)^(p2−1), ∂G/∂w = (w/G)^(p1−1), h = ‖(u, v)‖_p2. Magnitudes are floored at a tiny
@@ -171,11 +183,11 @@ Vec3d Superellipsoid::normal(const Vec3d& p) const {
     // into finite logarithms; the components are then compared in log space so none overflows.
     const double floor = size * 1e-200;
     const double u = std::max(scaled.x, floor), v = std::max(scaled.y, floor), w = std::max(scaled.z, floor);
-    const double h = p_norm(u, v, p2), g = p_norm(h, w, p1);
+    const double h = p_norm(u, v, p2_), g = p_norm(h, w, p1_);
     const double horizontal = (p1 - 1) * std::log(h / g);
-    const double log_x = horizontal + (p2 - 1) * std::log(u / h) - std::log(radii.x);
-    const double log_y = horizontal + (p2 - 1) * std::log(v / h) - std::log(radii.y);
-    const double log_z = (p1 - 1) * std::log(w / g) - std::log(radii.z);
+    const double log_x = horizontal + (p2 - 1) * std::log(u / h) - std::log(radii_.x);
+    const double log_y = horizontal + (p2 - 1) * std::log(v / h) - std::log(radii_.y);
+    const double log_z = (p1 - 1) * std::log(w / g) - std::log(radii_.z);
     const double largest = std::max({log_x, log_y, log_z});
     const auto sign = [](double c) { return c < 0 ? -1.0 : 1.0; };
     return normalize(Vec3d(sign(p.x) * std::exp(log_x - largest), sign(p.y) * std::exp(log_y - largest),
@@ -183,8 +195,8 @@ Vec3d Superellipsoid::normal(const Vec3d& p) const {
 }
 
 int Superellipsoid::polynomial_degree() const {
-    if (north_south != east_west) return 0;
-    const double n = 2 / north_south;
+    if (north_south_ != east_west_) return 0;
+    const double n = p1_.p;
     const double rounded = std::round(n);
     if (std::abs(n - rounded) > 1e-12 * n || int(rounded) % 2 != 0 || rounded > kMaxPolynomialDegree) return 0;
     return int(rounded);
@@ -194,7 +206,7 @@ Polynomial Superellipsoid::polynomial_along(const Vec3d& origin, const Vec3d& di
     const int n = polynomial_degree();
     Polynomial sum{-1};
     for (int k = 0; k < 3; ++k) {
-        const Polynomial coordinate{origin[k] / radii[k], direction[k] / radii[k]};
+        const Polynomial coordinate{origin[k] / radii_[k], direction[k] / radii_[k]};
         const Polynomial square = coordinate * coordinate;
         Polynomial power = square;
         for (int i = 2; i < n; i += 2) power = power * square;
@@ -205,7 +217,7 @@ Polynomial Superellipsoid::polynomial_along(const Vec3d& origin, const Vec3d& di
 
 std::vector<IntervalBox> Superellipsoid::surface_cells(int per_axis) const {
     std::vector<IntervalBox> cells;
-    const auto edge = [&](int k, int i) { return radii[k] * (2.0 * i / per_axis - 1); };
+    const auto edge = [&](int k, int i) { return radii_[k] * (2.0 * i / per_axis - 1); };
     for (int i = 0; i < per_axis; ++i)
         for (int j = 0; j < per_axis; ++j)
             for (int l = 0; l < per_axis; ++l) {
@@ -216,9 +228,10 @@ std::vector<IntervalBox> Superellipsoid::surface_cells(int per_axis) const {
 }
 
 Vec3d Superellipsoid::surface_point(double eta, double omega) const {
-    const double ce = signed_power(std::cos(eta), north_south);
-    return {radii.x * ce * signed_power(std::cos(omega), east_west),
-            radii.y * ce * signed_power(std::sin(omega), east_west), radii.z * signed_power(std::sin(eta), north_south)};
+    const double ce = signed_power(std::cos(eta), north_south_);
+    return {radii_.x * ce * signed_power(std::cos(omega), east_west_),
+            radii_.y * ce * signed_power(std::sin(omega), east_west_),
+            radii_.z * signed_power(std::sin(eta), north_south_)};
 }
 
 }  // namespace isotrace

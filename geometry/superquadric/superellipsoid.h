@@ -15,10 +15,24 @@
 
 namespace isotrace {
 
-struct Superellipsoid {
-    Vec3d radii{1, 1, 1};
-    double north_south = 1;  // ε1
-    double east_west = 1;    // ε2
+// A p-norm's exponent p = 2/ε with what its powers and roots need, worked out once: whether p is a small whole
+// number (powers by repeated squaring) and 1/p.
+struct NormExponent {
+    double p = 2;
+    int whole = 2;  // p when it is a whole number up to 64, else 0
+    double inverse = 0.5;
+
+    static NormExponent of_epsilon(double epsilon);
+};
+
+class Superellipsoid {
+public:
+    Superellipsoid() : Superellipsoid({1, 1, 1}, 1, 1) {}
+    Superellipsoid(const Vec3d& radii, double north_south, double east_west);
+
+    const Vec3d& radii() const { return radii_; }
+    double north_south() const { return north_south_; }  // ε1
+    double east_west() const { return east_west_; }      // ε2
 
     // The supported exponent range (thinner or more pinched shapes are outside the tested tolerance).
     static constexpr double kMinExponent = 0.02, kMaxExponent = 4;
@@ -28,10 +42,10 @@ struct Superellipsoid {
     // undefined, at coordinate planes for exponents above 2), for Newton steps along a ray.
     ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const;
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
-    bool is_convex() const { return north_south <= 2 && east_west <= 2; }
+    bool is_convex() const { return north_south_ <= 2 && east_west_ <= 2; }
     // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave
     // within each octant: along a ray, between the coordinate planes.
-    bool is_concave_in_octants() const { return north_south >= 2 && east_west >= 2; }
+    bool is_concave_in_octants() const { return north_south_ >= 2 && east_west_ >= 2; }
     // With one exponent below 2 and the other above (neither convex nor concave in octants): φ = c − s with c and s
     // convex along the ray between the coordinate planes, where φ < 0 exactly inside (for points within the
     // superellipsoid's box), at p with the slopes along `direction` (non-finite at cusps).
@@ -60,8 +74,13 @@ struct Superellipsoid {
     std::vector<IntervalBox> surface_cells(int per_axis) const;
 
     IntervalBox bounding_box() const {
-        return {{-radii.x, radii.x}, {-radii.y, radii.y}, {-radii.z, radii.z}};
+        return {{-radii_.x, radii_.x}, {-radii_.y, radii_.y}, {-radii_.z, radii_.z}};
     }
+
+private:
+    Vec3d radii_;
+    double north_south_, east_west_;
+    NormExponent p1_, p2_;  // of the outer norm (2/ε1) and the inner, horizontal one (2/ε2)
 };
 
 }  // namespace isotrace

@@ -11,13 +11,13 @@ namespace isotrace {
 namespace {
 
 double direct_inside_outside(const Superellipsoid& s, const Vec3d& p) {
-    const double a = std::pow(std::abs(p.x) / s.radii.x, 2 / s.east_west) +
-                     std::pow(std::abs(p.y) / s.radii.y, 2 / s.east_west);
-    return std::pow(a, s.east_west / s.north_south) + std::pow(std::abs(p.z) / s.radii.z, 2 / s.north_south);
+    const double a = std::pow(std::abs(p.x) / s.radii().x, 2 / s.east_west()) +
+                     std::pow(std::abs(p.y) / s.radii().y, 2 / s.east_west());
+    return std::pow(a, s.east_west() / s.north_south()) + std::pow(std::abs(p.z) / s.radii().z, 2 / s.north_south());
 }
 
 // The paper's F from the gauge: F = G^(2/ε1).
-double paper_inside_outside(const Superellipsoid& s, const Vec3d& p) { return std::pow(s.gauge(p), 2 / s.north_south); }
+double paper_inside_outside(const Superellipsoid& s, const Vec3d& p) { return std::pow(s.gauge(p), 2 / s.north_south()); }
 
 TEST(SuperquadricSuperellipsoid, GaugeIsTheInsideOutsideFunctionToThePowerEpsilonOverTwo) {
     std::mt19937 random(1);
@@ -90,7 +90,7 @@ TEST(SuperquadricSuperellipsoid, NormalsFollowTheGradient) {
         const Vec3d expected = normalize(finite_difference_gradient(s, p, 1e-7));
         const Vec3d n = s.normal(p);
         EXPECT_NEAR(length(n), 1.0, 1e-12);
-        EXPECT_GT(dot(n, expected), 1 - 1e-6) << i << " e " << s.north_south << " " << s.east_west;
+        EXPECT_GT(dot(n, expected), 1 - 1e-6) << i << " e " << s.north_south() << " " << s.east_west();
         ++checked;
     }
     EXPECT_GT(checked, 500);

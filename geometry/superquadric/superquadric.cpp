@@ -108,7 +108,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         // ε1 = ε2 = 1: an ellipsoid, the unit sphere once lengths are divided by the radii; its closed form (a
         // cancellation-free quadratic) is exact and much cheaper than the general polynomial solver.
         ++work.polynomial_solves;
-        const Vec3d& r = shape_.radii;
+        const Vec3d& r = shape_.radii();
         const Vec3d start = o + d * t0;  // in u = t − t0, for precision
         const std::optional<SphereRoots> roots = intersect_sphere({start.x / r.x, start.y / r.y, start.z / r.z},
                                                                   {d.x / r.x, d.y / r.y, d.z / r.z}, {0, 0, 0}, 1);
@@ -174,9 +174,13 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         });
         return;
     }
+    if (convex) {
+        // Both ends with their slopes: the march starts from them, and the general search from their values.
+        const ValueAndDerivative start = value_and_slope(t0), end = value_and_slope(t1);
+        work.search.evaluations += 2;
+        if (visit_convex_crossings(t0, t1, start, end, value_and_slope, first_only, work.search, visit)) return;
+    }
     double g_start = value(t0);
-    if (convex && visit_convex_crossings(t0, t1, g_start, value(t1), value_and_slope, first_only, work.search, visit))
-        return;
 
     // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and
     // the bound is exact.

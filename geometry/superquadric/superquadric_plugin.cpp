@@ -59,23 +59,22 @@ Deformation parse_deformation(const SceneNode& entry, double half_height, const 
 }
 
 Superquadric parse_superquadric(const SceneNode& node) {
-    Superellipsoid shape;
+    Vec3d radii{1, 1, 1};
     if (node.has("radii")) {
         const std::vector<double> r = node.numbers("radii", 3, NumberRange::positive());
-        shape.radii = {r[0], r[1], r[2]};
+        radii = {r[0], r[1], r[2]};
     }
-    if (node.has("exponents")) {
-        const std::vector<double> e = node.numbers(
-            "exponents", 2, NumberRange::between(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent));
-        shape.north_south = e[0];
-        shape.east_west = e[1];
-    }
+    std::vector<double> exponents{1, 1};
+    if (node.has("exponents"))
+        exponents = node.numbers("exponents", 2,
+                                 NumberRange::between(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent));
+    const Superellipsoid shape(radii, exponents[0], exponents[1]);
     Transform placement = Transform::translate(node.vec3_or("center", {0, 0, 0}));
     if (const auto rotate = node.optional_value("rotate")) placement = placement * parse_rotation(*rotate);
 
     DeformationChain chain(shape);
     for (const SceneNode& entry : node.object_array("deform")) {
-        const Deformation stage = parse_deformation(entry, shape.radii.z, chain.deformed_box());
+        const Deformation stage = parse_deformation(entry, shape.radii().z, chain.deformed_box());
         entry.finish();
         try {
             chain.append(stage);

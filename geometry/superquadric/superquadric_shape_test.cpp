@@ -274,7 +274,7 @@ TEST(SuperquadricScene, ReadsSingleAndListFormsWithDeformations) {
            "deform": [{"taper": [-0.5, 0.2]}, {"twist": 90}, {"bend": {"curvature": -0.4, "direction": 30}}]}]})");
     const auto& superquadrics = dynamic_cast<const SuperquadricShape&>(*shape).superquadrics();
     ASSERT_EQ(superquadrics.size(), 2u);
-    EXPECT_EQ(superquadrics[0].shape().north_south, 0.2);
+    EXPECT_EQ(superquadrics[0].shape().north_south(), 0.2);
     EXPECT_EQ(superquadrics[1].deformation().size(), 3u);
     auto scene = std::make_unique<RenderScene>();
     SceneObject object;
@@ -291,7 +291,7 @@ TEST(SuperquadricScene, ReadsSingleAndListFormsWithDeformations) {
     ASSERT_TRUE(side);
     EXPECT_EQ(side->primitive_id, 1u);
     const std::unique_ptr<Shape> single = create_shape(R"({"type": "superquadric", "radii": [1, 2, 3]})");
-    EXPECT_EQ(dynamic_cast<const SuperquadricShape&>(*single).superquadrics()[0].shape().radii, Vec3d(1, 2, 3));
+    EXPECT_EQ(dynamic_cast<const SuperquadricShape&>(*single).superquadrics()[0].shape().radii(), Vec3d(1, 2, 3));
 }
 
 void expect_error(const std::string& shape, const std::vector<std::string>& parts) {

@@ -148,7 +148,7 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
             }
             if (!problem.empty()) {
                 ++failures;
-                ADD_FAILURE() << problem << " (ε1 " << s.shape().north_south << ", ε2 " << s.shape().east_west
+                ADD_FAILURE() << problem << " (ε1 " << s.shape().north_south() << ", ε2 " << s.shape().east_west()
                               << ", " << s.deformation().size() << " deformations, ray " << done << ")";
             }
         }
@@ -222,7 +222,7 @@ TEST(SuperquadricStress, UndeformedStarsGiveEveryCrossingTheOracleSees) {
             }
             if (!problem.empty()) {
                 ++failures;
-                ADD_FAILURE() << problem << " (ε1 " << shape.north_south << ", ε2 " << shape.east_west << ", ray "
+                ADD_FAILURE() << problem << " (ε1 " << shape.north_south() << ", ε2 " << shape.east_west() << ", ray "
                               << done << ")";
             }
         }
