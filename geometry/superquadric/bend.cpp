@@ -5,6 +5,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "renderer/math/sin_cos.h"
+
 namespace isotrace {
 
 Bend::Bend(double curvature, double direction, double centre, Interval region)
@@ -27,7 +29,8 @@ Vec3d Bend::forward(const Vec3d& p) const {
     const double s = dot(p, u_), w = dot(p, v_);
     const double theta = region_angle(p.z);
     const double beyond = p.z - std::clamp(p.z, region_.lo, region_.hi);
-    const double c = std::cos(theta), sn = std::sin(theta), half = std::sin(0.5 * theta);
+    const auto [sn, c] = sin_cos(theta);
+    const double half = std::sin(0.5 * theta);
     return from_frame(2 * half * half / curvature_ + s * c + beyond * sn, w,
                       centre_ + sn / curvature_ - s * sn + beyond * c);
 }
@@ -39,13 +42,14 @@ Vec3d Bend::inverse(const Vec3d& q) const {
     const double cm = cos_middle_, sm = sin_middle_;
     const double relative = std::atan2(b * cm + a * sm, -a * cm + b * sm);
     const double theta = std::clamp(angle_middle_ + relative, angle_lo_, angle_hi_);
-    const double c = std::cos(theta), sn = std::sin(theta), half = std::sin(0.5 * theta);
+    const auto [sn, c] = sin_cos(theta);
+    const double half = std::sin(0.5 * theta);
     return from_frame(2 * half * half / curvature_ + s_in * c - z_in * sn, dot(q, v_),
                       centre_ + (theta - sn) / curvature_ + s_in * sn + z_in * c);
 }
 
 Jacobian Bend::jacobian(const Vec3d& p) const {
-    const double theta = region_angle(p.z), c = std::cos(theta), sn = std::sin(theta);
+    const auto [sn, c] = sin_cos(region_angle(p.z));
     const bool in_region = region_.contains(p.z);
     // Columns in the frame: ∂/∂s, ∂/∂w, ∂/∂z of (S, W, Z).
     const double along = in_region ? 1 - dot(p, u_) * curvature_ : 1;  // (R − s)·k
@@ -72,7 +76,7 @@ IntervalBox Bend::forward_box(const IntervalBox& box) const {
     const Interval theta = {region_angle(f.z.lo), region_angle(f.z.hi)};
     const auto beyond_at = [&](double z) { return z - std::clamp(z, region_.lo, region_.hi); };
     const Interval beyond = {beyond_at(f.z.lo), beyond_at(f.z.hi)};  // non-decreasing in z
-    const Interval c = cos_range(theta), sn = sin_range(theta);
+    const auto [sn, c] = sin_cos_range(theta);
     return from_frame({versine_over_curvature(theta) + f.s * c + beyond * sn, f.w,
                        sn * (1 / curvature_) - f.s * sn + beyond * c + centre_});
 }
@@ -94,7 +98,7 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
         relative = {-std::numbers::pi, std::numbers::pi};
     const Interval theta = {std::clamp(angle_middle_ + relative.lo, angle_lo_, angle_hi_),
                             std::clamp(angle_middle_ + relative.hi, angle_lo_, angle_hi_)};
-    const Interval c = cos_range(theta), sn = sin_range(theta);
+    const auto [sn, c] = sin_cos_range(theta);
     // θ − sin θ is non-decreasing.
     const Interval arc_excess = Interval{theta.lo - std::sin(theta.lo), theta.hi - std::sin(theta.hi)} * (1 / curvature_);
     return from_frame({versine_over_curvature(theta) + f.s * c - z_in * sn, f.w,
@@ -106,7 +110,7 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
 IntervalBox Bend::inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const {
     const FrameBox p = to_frame(preimage), v = to_frame(tangent);
     const Interval theta = {region_angle(p.z.lo), region_angle(p.z.hi)};
-    const Interval c = cos_range(theta), sn = sin_range(theta);
+    const auto [sn, c] = sin_cos_range(theta);
     Interval along{1, 1};
     if (p.z.hi >= region_.lo && p.z.lo <= region_.hi) {
         const Interval bent = Interval{1, 1} - p.s * curvature_;

@@ -73,8 +73,9 @@ public:
         };
         double enter = t0, run_start = 0;
         bool in_run = false;
+        // Only the axis whose plane was crossed moves on: the others keep their next plane.
+        double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
-            const double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
             const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
             const double leave = std::min(across[axis], t1);
             const bool surface = holds_surface({cell_of[0], cell_of[1], cell_of[2]}, range);
@@ -85,6 +86,7 @@ public:
             }
             cell_of[axis] += direction[axis] > 0 ? 1 : -1;
             if (!(leave < t1) || cell_of[axis] < 0 || cell_of[axis] >= kCellsPerAxis) break;
+            across[axis] = next_plane(axis);
             enter = std::max(enter, leave);
         }
         if (in_run && !add_run(run_start, t1)) return false;

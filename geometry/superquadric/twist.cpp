@@ -2,15 +2,18 @@
 
 #include <cmath>
 
+#include "renderer/math/sin_cos.h"
+
 namespace isotrace {
 
 Vec3d Twist::rotate(const Vec3d& p, double theta) {
-    const double c = std::cos(theta), s = std::sin(theta);
+    const auto [s, c] = sin_cos(theta);
     return {p.x * c - p.y * s, p.x * s + p.y * c, p.z};
 }
 
 Jacobian Twist::jacobian(const Vec3d& p) const {
-    const double theta = angle(p.z), c = std::cos(theta), s = std::sin(theta);
+    const double theta = angle(p.z);
+    const auto [s, c] = sin_cos(theta);
     const Vec3d q = rotate(p, theta);
     return {{{c, s, 0}, {-s, c, 0}, {-rate_ * q.y, rate_ * q.x, 1}}};
 }
@@ -19,7 +22,7 @@ Jacobian Twist::jacobian(const Vec3d& p) const {
 // rotation rate·dz·(y, −x) (x, y the inverse point).
 IntervalBox Twist::inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const {
     const Interval phi = Interval::spanning(-angle(preimage.z.lo), -angle(preimage.z.hi));
-    const Interval c = cos_range(phi), s = sin_range(phi);
+    const auto [s, c] = sin_cos_range(phi);
     const Interval turn = tangent.z * rate_;
     return {tangent.x * c - tangent.y * s + turn * preimage.y, tangent.x * s + tangent.y * c - turn * preimage.x,
             tangent.z};
@@ -27,7 +30,7 @@ IntervalBox Twist::inverse_tangent(const IntervalBox& preimage, const IntervalBo
 
 IntervalBox Twist::rotate_box(const IntervalBox& box, double sign) const {
     const Interval theta = Interval::spanning(sign * angle(box.z.lo), sign * angle(box.z.hi));
-    const Interval c = cos_range(theta), s = sin_range(theta);
+    const auto [s, c] = sin_cos_range(theta);
     const double reach = std::hypot(std::max(-box.x.lo, box.x.hi), std::max(-box.y.lo, box.y.hi));
     const auto within_reach = [reach](Interval v) {
         return Interval{std::max(v.lo, -reach), std::min(v.hi, reach)};
