@@ -13,9 +13,12 @@
 #include <type_traits>
 
 #include "renderer/math/interval.h"
+#include "renderer/math/sin_cos.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace::expression_math {
+
+using isotrace::sin_cos;  // of a double; the overloads below take intervals and duals
 
 // log(a) for a below this is log of this (about −708): finite, and far below any value a surface is made of.
 constexpr double kLogFloor = std::numeric_limits<double>::min();
@@ -110,15 +113,6 @@ template <class V, class D> Dual<V, D> exp(const Dual<V, D>& a) {
     return {e, a.d * e};
 }
 template <class V, class D> Dual<V, D> log(const Dual<V, D>& a) { return {log(a.v), a.d * log_slope(a.v)}; }
-// sin and cos of one value from one call: a derivative needs both (sincos returns sin's and cos's own values).
-struct SinCos {
-    double sin, cos;
-};
-inline SinCos sin_cos(double a) {
-    SinCos r;
-    ::sincos(a, &r.sin, &r.cos);
-    return r;
-}
 // Over a narrow interval [m − r, m + r], sin and cos from one sincos at the midpoint by Taylor's theorem:
 // sin(m + h) = sin m + h cos m − (h²/2) sin ξ with sin ξ within r of sin m (and the same for cos), which is
 // within r²/2 of the exact range; wider intervals take the values at both ends. The enclosure is widened by
