@@ -66,4 +66,16 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "box", "box (a closed solid); center, half_size [hx, hy, hz]", create)
 
+// The point's distance to the box, in the box frame, scaled back to the object's (a box placed by a map that is not
+// a similarity is left undecided).
+bool BoxShape::certainly_outside(const Vec3d& point, double distance) const {
+    const double scale = to_object_.similarity_scale();
+    if (!(scale > 0)) return false;
+    const Vec3d local = from_object_.point(point);
+    const Vec3d gap(std::max(std::abs(local.x) - half_size_.x, 0.0), std::max(std::abs(local.y) - half_size_.y, 0.0),
+                    std::max(std::abs(local.z) - half_size_.z, 0.0));
+    constexpr double kRounding = 1e-12;  // of the map and the gap, relative to the box's size
+    return length(gap) * scale > distance + kRounding * scale * max_component(half_size_);
+}
+
 }  // namespace isotrace

@@ -25,6 +25,7 @@ public:
 
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    bool certainly_outside(const Vec3d& point, double distance) const override;
 
     // The box is half_size() around the origin of its frame, which to_object() places.
     const Vec3d& half_size() const { return half_size_; }

@@ -134,5 +134,17 @@ TEST(BoxShapeScene, LoadsAndRejectsBadHalfSizes) {
     }
 }
 
+TEST(BoxShape, CertainlyOutsideOnlyBeyondTheGivenDistance) {
+    BoxShape box({1, 0, 0}, {1, 2, 3});  // x in [0, 2]
+    EXPECT_TRUE(box.certainly_outside({3, 3, 0}, 1.41));  // √2 from the edge (2, 2, z)
+    EXPECT_FALSE(box.certainly_outside({3, 3, 0}, 1.42));
+    EXPECT_FALSE(box.certainly_outside({1, 0, 0}, 0));  // inside
+    box.bake(Transform::scale({2, 2, 2}));               // x in [0, 4], y in [−4, 4]
+    EXPECT_TRUE(box.certainly_outside({5, 0, 0}, 0.99));
+    EXPECT_FALSE(box.certainly_outside({5, 0, 0}, 1.01));
+    box.bake(Transform::scale({1, 3, 1}));  // no longer a similarity: undecided
+    EXPECT_FALSE(box.certainly_outside({50, 0, 0}, 0.1));
+}
+
 }  // namespace
 }  // namespace isotrace

@@ -28,12 +28,6 @@ void map_normals(std::vector<InsideSpan>& spans, const Transform& to_csg) {
             if (end->on_surface()) end->normal = normalize(to_csg.normal(end->normal));
 }
 
-// A CSG call's buffers, held while its children (nested trees among them) fill theirs.
-struct OperandBuffers {
-    std::vector<InsideSpan> operand_spans;
-    std::vector<SpanEvent> events;
-};
-
 }  // namespace
 
 CsgShape::CsgShape(CsgOperation operation, std::vector<CsgChild> children) : operation_(operation) {
@@ -45,6 +39,7 @@ CsgShape::CsgShape(CsgOperation operation, std::vector<CsgChild> children) : ope
         operand.part_count = std::uint32_t(std::max<std::size_t>(1, child.shape->part_materials().size()));
         operand.first_part = part_count_;
         part_count_ += operand.part_count;
+        exact_boundaries_ = exact_boundaries_ && operand.solid->exact_boundaries();
         operand.material = std::move(child.material);
         operand.shape = std::move(child.shape);
         place(operand, child.to_csg);
@@ -126,34 +121,47 @@ std::vector<MaterialReference> CsgShape::part_materials() const {
     return parts;
 }
 
+void CsgShape::operand_spans(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
+                             double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+    spans.clear();
+    if (operand.from_csg) {
+        operand.solid->inside_spans(operand.from_csg->point(origin), operand.from_csg->vector(direction), t_min, t_max,
+                                    spans, scratch);
+        map_normals(spans, *operand.to_csg);
+    } else {
+        operand.solid->inside_spans(origin, direction, t_min, t_max, spans, scratch);
+    }
+}
+
 void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                             std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
     const QueryScratch::Level level(scratch);
-    auto& [operand_spans, events] = level.get<OperandBuffers>();
+    Buffers& buffers = level.get<Buffers>();
+    operand_spans(operands_.front(), origin, direction, t_min, t_max, buffers.operand_spans, scratch);
+    combine_with_first(origin, direction, t_min, t_max, buffers.operand_spans, buffers.events, spans, scratch);
+}
+
+void CsgShape::combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                  std::vector<InsideSpan>& first, std::vector<SpanEvent>& events,
+                                  std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
     events.clear();
     const bool narrows = operation_ != CsgOperation::Union;  // the result lies within the first child's spans
+    std::vector<InsideSpan>& buffer = first;
     for (std::uint32_t i = 0; i < operands_.size(); ++i) {
         const Operand& operand = operands_[i];
-        operand_spans.clear();
-        if (operand.from_csg) {
-            operand.solid->inside_spans(operand.from_csg->point(origin), operand.from_csg->vector(direction), t_min,
-                                        t_max, operand_spans, scratch);
-            map_normals(operand_spans, *operand.to_csg);
-        } else {
-            operand.solid->inside_spans(origin, direction, t_min, t_max, operand_spans, scratch);
-        }
+        if (i > 0) operand_spans(operand, origin, direction, t_min, t_max, buffer, scratch);
         const bool bounds_result = operation_ == CsgOperation::Intersection || i == 0;
         if (narrows && bounds_result) {
-            if (operand_spans.empty()) return;
+            if (buffer.empty()) return;
             // Later children only matter where this one is inside, give or take the tolerance within which span
             // ends are simultaneous: a later child's surface that coincides with this one's end must be seen as
             // a surface there, not as a query that starts or ends exactly on it (where the side it is on is a
             // matter of rounding).
-            const BoundaryPoint &enter = operand_spans.front().enter, &exit = operand_spans.back().exit;
+            const BoundaryPoint &enter = buffer.front().enter, &exit = buffer.back().exit;
             t_min = std::max(t_min, enter.t - coincidence_tolerance(enter));
             t_max = std::min(t_max, exit.t + coincidence_tolerance(exit));
         }
-        append_span_events(i, operand.first_part, operand_spans, events);
+        append_span_events(i, operand.first_part, buffer, events);
     }
     counters::add_to_named(span_slots_, std::array<std::uint64_t, 2>{1, events.size()});
     combine_span_events(operation_, std::uint32_t(operands_.size()), events, spans);

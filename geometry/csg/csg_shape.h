@@ -47,6 +47,12 @@ public:
     void prepare_span_queries(RTCDevice device) override;
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    // A difference whose first operand's entry lies certainly outside every subtracted operand takes that entry
+    // without asking the others for their spans (csg_first_surface_point.cpp).
+    std::optional<BoundaryPoint> first_surface_point(const Vec3d& origin, const Vec3d& direction, double t_near,
+                                                     double t_far, QueryScratch& scratch) const override;
+    bool certainly_outside(const Vec3d& point, double distance) const override;
+    bool exact_boundaries() const override { return exact_boundaries_; }
 
     CsgOperation operation() const { return operation_; }
     std::size_t operand_count() const { return operands_.size(); }
@@ -65,12 +71,27 @@ private:
         std::uint32_t part_count = 1;
     };
 
+    // A call's buffers, held while its children (nested trees among them) fill theirs.
+    struct Buffers {
+        std::vector<InsideSpan> operand_spans;
+        std::vector<SpanEvent> events;
+        std::vector<InsideSpan> result;  // first_surface_point's spans of the whole
+    };
+
     void place(Operand& operand, const Transform& to_csg);
     Bounds3f operand_bounds(const Operand& operand) const;
+    // The operand's inside spans along a ray given in the CSG's space, with normals and parts in the CSG's terms.
+    void operand_spans(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
+                       double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
+    // inside_spans, once the first operand's spans (`first`, which is reused as a buffer) are known.
+    void combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                            std::vector<InsideSpan>& first, std::vector<SpanEvent>& events,
+                            std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
 
     CsgOperation operation_;
     std::vector<Operand> operands_;
     std::uint32_t part_count_ = 0;
+    bool exact_boundaries_ = true;
     SolidUserGeometry geometry_;
     std::array<int, 2> span_slots_{};  // span combinations, span events
 };

@@ -8,13 +8,4 @@ void append_clipped_span(InsideSpan span, double t_min, double t_max, std::vecto
     if (span.enter.t < span.exit.t) spans.push_back(span);
 }
 
-std::optional<BoundaryPoint> first_surface_crossing(std::span<const InsideSpan> spans, double t_near, double t_far) {
-    for (const InsideSpan& span : spans)
-        for (const BoundaryPoint* end : {&span.enter, &span.exit}) {
-            if (end->t >= t_far) return std::nullopt;
-            if (end->on_surface() && end->t > t_near) return *end;
-        }
-    return std::nullopt;
-}
-
 }  // namespace isotrace

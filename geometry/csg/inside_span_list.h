@@ -1,6 +1,6 @@
 #pragma once
 // Small operations on inside-span lists (see renderer/plugin/solid.h) that every solid needs: clipping a span to
-// the query range, and finding the surface point a ray meets first.
+// the query range, and pairing crossings into spans.
 #include <optional>
 #include <span>
 #include <vector>
@@ -33,8 +33,5 @@ void append_spans_from_crossings(std::span<const Crossing> crossings, bool insid
     }
     if (open && t_max > open->t) spans.push_back({*open, cut(t_max)});
 }
-
-// The first end of `spans` (in increasing t) that lies on the surface strictly inside (t_near, t_far).
-std::optional<BoundaryPoint> first_surface_crossing(std::span<const InsideSpan> spans, double t_near, double t_far);
 
 }  // namespace isotrace

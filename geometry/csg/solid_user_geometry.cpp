@@ -1,28 +1,10 @@
 #include "geometry/csg/solid_user_geometry.h"
 
-#include <limits>
-#include <vector>
-
-#include "geometry/csg/inside_span_list.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/query_context.h"
 #include "renderer/embree/user_geometry.h"
 
 namespace isotrace {
-namespace {
-
-// The first surface point of `solid` on the segment (t_near, t_far) of the ray o + t·d.
-std::optional<BoundaryPoint> first_crossing(const Solid& solid, const Vec3d& origin, const Vec3d& direction,
-                                            double t_near, double t_far, QueryScratch& scratch) {
-    if (!(t_near < t_far)) return std::nullopt;
-    const QueryScratch::Level level(scratch);
-    auto& spans = level.get<std::vector<InsideSpan>>();
-    spans.clear();
-    solid.inside_spans(origin, direction, t_near, t_far, spans, scratch);
-    return first_surface_crossing(spans, t_near, t_far);
-}
-
-}  // namespace
 
 RTCGeometry SolidUserGeometry::create(RTCDevice device, const Solid& solid, int counter_slot, const Bounds3f& bounds) {
     solid_ = &solid;
@@ -44,7 +26,7 @@ void SolidUserGeometry::intersect_callback(const RTCIntersectFunctionNArguments*
     user_geometry::intersect_rays(
         args, self->counter_slot_,
         [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) -> std::optional<double> {
-            found = first_crossing(*self->solid_, origin, direction, t_near, t_far, scratch);
+            found = self->solid_->first_surface_point(origin, direction, t_near, t_far, scratch);
             if (!found) return std::nullopt;
             return found->t;
         },
@@ -59,7 +41,7 @@ void SolidUserGeometry::occluded_callback(const RTCOccludedFunctionNArguments* a
     QueryScratch& scratch = query_scratch(args->context);
     user_geometry::occlude_rays(args, self->counter_slot_,
                                 [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
-                                    return first_crossing(*self->solid_, origin, direction, t_near, t_far, scratch)
+                                    return self->solid_->first_surface_point(origin, direction, t_near, t_far, scratch)
                                         .has_value();
                                 });
 }

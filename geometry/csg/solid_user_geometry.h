@@ -1,6 +1,6 @@
 #pragma once
-// An Embree user geometry of one primitive whose surface is the boundary of a Solid: a ray's hit is the first
-// surface end of the solid's inside spans in (t_near, t_far). Rays that start inside hit the exit. The box and
+// An Embree user geometry of one primitive whose surface is the boundary of a Solid: a ray's hit is the solid's
+// first surface point in (t_near, t_far). Rays that start inside hit the exit. The box and
 // the CSG shape are traced this way; the hit's primID carries the part (leaf surface) the point lies on. The spans
 // are asked with the query's scratch (QueryContext, renderer/embree/query_context.h).
 #include <embree3/rtcore.h>

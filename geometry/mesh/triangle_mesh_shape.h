@@ -45,6 +45,7 @@ public:
     void prepare_span_queries(RTCDevice device) override;
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    bool exact_boundaries() const override { return false; }  // Embree finds the crossings in float
 
     const TriangleMeshData& data() const { return mesh_; }
 

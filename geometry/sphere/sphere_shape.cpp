@@ -181,4 +181,11 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "sphere", "analytic sphere(s); center, radius or spheres: [{center, radius}]",
                          create)
 
+bool SphereShape::certainly_outside(const Vec3d& point, double distance) const {
+    constexpr double kRounding = 1e-12;  // of the distance to the centre, relative to the radius
+    return std::all_of(spheres_.begin(), spheres_.end(), [&](const Sphere& s) {
+        return length(point - s.centre) - s.radius > distance + kRounding * s.radius;
+    });
+}
+
 }  // namespace isotrace

@@ -44,6 +44,7 @@ public:
     // Closed form per sphere; overlapping spheres of one set merge (their union is the solid).
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    bool certainly_outside(const Vec3d& point, double distance) const override;
 
 private:
     void build_area_distribution();

@@ -481,5 +481,14 @@ TEST(SphereShapeScene, UnknownKeysInsideTheListAreRejected) {
     EXPECT_NE(message.find("centre"), std::string::npos) << message;
 }
 
+TEST(SphereShape, CertainlyOutsideOnlyBeyondTheGivenDistance) {
+    const SphereShape spheres({{{0, 0, 0}, 1}, {{3, 0, 0}, 0.5}});
+    EXPECT_TRUE(spheres.certainly_outside({0, 1.5, 0}, 0.49));   // 0.5 from the first, 1.58 from the second
+    EXPECT_FALSE(spheres.certainly_outside({0, 1.5, 0}, 0.51));
+    EXPECT_FALSE(spheres.certainly_outside({3, 0.9, 0}, 0.41));  // the second is 0.4 away
+    EXPECT_FALSE(spheres.certainly_outside({0.2, 0, 0}, 0));     // inside
+    EXPECT_FALSE(spheres.certainly_outside({1, 0, 0}, 0));       // on the surface
+}
+
 }  // namespace
 }  // namespace isotrace

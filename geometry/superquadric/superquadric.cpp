@@ -84,6 +84,18 @@ double Superquadric::continued_field(const Vec3d& point) const {
     return local_field(clamped) + length(local - clamped);
 }
 
+// For ε1, ε2 ≤ 2 the gauge G is a norm of the radii-scaled coordinates, at most their 1-norm, so a step v changes
+// it by at most ‖v/radii‖₁ ≤ √3·|v|/(smallest radius): G − 1 above that for the whole distance keeps the point out.
+bool Superquadric::certainly_outside(const Vec3d& point, double distance) const {
+    if (!deformation_.empty() || !shape_.is_convex()) return false;
+    const double scale = placement_.similarity_scale();
+    if (!(scale > 0)) return false;
+    const Vec3d& r = shape_.radii();
+    const double reach = std::sqrt(3.0) * distance / (scale * std::min({r.x, r.y, r.z}));
+    constexpr double kRounding = 1e-12;  // of the gauge and the placement, relative to the gauge's unit
+    return shape_.gauge(placement_.inverse_point(point)) - 1 > reach + kRounding;
+}
+
 Vec3d Superquadric::normal(const Vec3d& point) const {
     const DeformationChain::Path path = deformation_.inverse_path(placement_.inverse_point(point));
     const Vec3d local = deformation_.deform_normal(path, shape_.normal(path[0]));

@@ -55,6 +55,9 @@ public:
     // field() continued beyond the deformed box by the distance to it, in the local deformed frame (field() is a
     // constant 1 out there, the ray tracer needing only its sign): negative inside, continuous and rising outward.
     double continued_field(const Vec3d& point) const;
+    // True only when no point within `distance` of `point` (both in the shape's space) is inside or on the
+    // surface; decided for undeformed convex shapes (whose gauge is a norm), false otherwise.
+    bool certainly_outside(const Vec3d& point, double distance) const;
     // Outward unit normal at a surface point of the shape's space: J⁻ᵀ·∇F carried through the chain, then the
     // placement's inverse transpose.
     Vec3d normal(const Vec3d& point) const;

@@ -175,4 +175,9 @@ void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction
     combine_span_events(CsgOperation::Union, std::uint32_t(superquadrics_.size()), events, spans);
 }
 
+bool SuperquadricShape::certainly_outside(const Vec3d& point, double distance) const {
+    return std::all_of(superquadrics_.begin(), superquadrics_.end(),
+                       [&](const Superquadric& s) { return s.certainly_outside(point, distance); });
+}
+
 }  // namespace isotrace

@@ -29,6 +29,7 @@ public:
 
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    bool certainly_outside(const Vec3d& point, double distance) const override;
 
     // The field of the union, positive inside: max over the set of 1 − G(D⁻¹(P)), G the superellipsoid's gauge
     // (superellipsoid.h: homogeneous of degree one, so 1 − G is about the depth below the surface in units of the

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "geometry/csg/csg_shape.h"
 #include "geometry/mesh/mesh_test_support.h"
 #include "geometry/superquadric/superquadric_test_support.h"
 #include "renderer/core/render_counters.h"
@@ -320,6 +321,37 @@ TEST(SuperquadricScene, BadParametersAreInputErrorsNamingTheField) {
     expect_error(R"({"type": "superquadric", "superquadrics": []})", {"shape.superquadrics", "empty"});
     expect_error(R"({"type": "superquadric", "superquadrics": [{"radius": 1}]})", {"superquadrics[0]", "radius"});
     expect_error(R"({"type": "superquadric", "center": [2e18, 0, 0]})", {"1e18"});
+}
+
+// The cup of the CSG scene (a cylinder with a bent handle, minus a smaller cylinder raised a little): the first
+// surface point a CSG settles from its first operand's entry alone is the full combination's, bit for bit.
+TEST(SuperquadricScene, CsgFirstSurfacePointsAreTheFullCombinationsOnTheCup) {
+    const auto single = [](Superquadric s) {
+        return CsgChild{std::make_unique<SuperquadricShape>(std::vector<Superquadric>{std::move(s)}), {}, {}};
+    };
+    const Transform upright = Transform::rotate({1, 0, 0}, -90);
+    std::vector<CsgChild> body;
+    body.push_back(single(make_superquadric({0.7, 0.7, 0.8}, 0.1, 1, {}, upright)));
+    std::mt19937 random(3);
+    body.push_back(single(make_superquadric({0.08, 0.08, 0.62}, 0.3, 1, random_deformations(random, {0.08, 0.08, 0.62}),
+                                            Transform::translate({1, 0.05, 0}) * upright)));
+    std::vector<CsgChild> cup;
+    cup.push_back({std::make_unique<CsgShape>(CsgOperation::Union, std::move(body)), {}, {}});
+    cup.push_back(single(make_superquadric({0.6, 0.6, 0.8}, 0.1, 1, {}, Transform::translate({0, 0.1, 0}) * upright)));
+    const CsgShape tree(CsgOperation::Difference, std::move(cup));
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3d origin = Vec3d(unit(random), unit(random), unit(random)) * 2.5;
+        const Vec3d target = Vec3d(unit(random), unit(random), unit(random)) * 0.8;
+        QueryScratch scratch;
+        const auto actual = tree.first_surface_point(origin, target - origin, 0, 1e30, scratch);
+        const auto expected = tree.Solid::first_surface_point(origin, target - origin, 0, 1e30, scratch);
+        ASSERT_EQ(actual.has_value(), expected.has_value()) << i;
+        if (!actual) continue;
+        EXPECT_EQ(actual->t, expected->t) << i;
+        EXPECT_EQ(actual->normal, expected->normal) << i;
+        EXPECT_EQ(actual->part, expected->part) << i;
+    }
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ namespace isotrace {
 namespace {
 
 using superquadric_test::make_superquadric;
+using superquadric_test::random_deformations;
 using superquadric_test::random_ray;
 using superquadric_test::RandomRay;
 using superquadric_test::random_deformed_superquadric;
@@ -378,6 +379,44 @@ TEST(SuperquadricIntersection, FarAwayRaysAndRaysAlongThePlanesStayFinite) {
         EXPECT_NEAR(*along_plane, 4, 1e-12);
         EXPECT_TRUE(is_finite(s.normal({1, 0, 0})));
     }
+}
+
+TEST(Superquadric, CertainlyOutsideHoldsOnlyForPointsTheSolidCannotReach) {
+    // An ellipsoid of radius 1, then scaled by 2: its gauge at (1.5, 0, 0) is 1.5, and a step v moves it by at
+    // most √3·|v| (divided by the placement's scale).
+    const Superquadric ball = make_superquadric({1, 1, 1}, 1, 1);
+    EXPECT_TRUE(ball.certainly_outside({1.5, 0, 0}, 0.28));
+    EXPECT_FALSE(ball.certainly_outside({1.5, 0, 0}, 0.3));
+    const Superquadric scaled = make_superquadric({1, 1, 1}, 1, 1, {}, Transform::scale({2, 2, 2}));
+    EXPECT_TRUE(scaled.certainly_outside({3, 0, 0}, 0.57));
+    EXPECT_FALSE(scaled.certainly_outside({3, 0, 0}, 0.58));
+    // Undecided where the gauge is no norm: exponents above 2, or a deformation.
+    EXPECT_FALSE(make_superquadric({1, 1, 1}, 3, 1).certainly_outside({5, 0, 0}, 0.1));
+    std::mt19937 random(5);
+    EXPECT_FALSE(make_superquadric({1, 1, 1}, 1, 1, random_deformations(random, {1, 1, 1})).certainly_outside({5, 0, 0}, 0.1));
+
+    // Random convex shapes and placements: no point within the distance of a point it calls outside is inside.
+    std::uniform_real_distribution<double> exponent(0.02, 2), size(0.3, 2), unit(-1, 1), fraction(0, 1);
+    int decided = 0;
+    for (int shape = 0; shape < 200; ++shape) {
+        const Vec3d radii(size(random), size(random), size(random));
+        const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
+                                    Transform::rotate({unit(random), unit(random), 1}, 180 * unit(random)) *
+                                    Transform::scale(Vec3d(1, 1, 1) * size(random));
+        const Superquadric s = make_superquadric(radii, exponent(random), exponent(random), {}, placement);
+        for (int point = 0; point < 50; ++point) {
+            const Vec3d p = placement.point(Vec3d(unit(random), unit(random), unit(random)) * 2.5 * max_component(radii));
+            const double distance = fraction(random) * max_component(radii);
+            if (!s.certainly_outside(p, distance)) continue;
+            ++decided;
+            for (int step = 0; step < 200; ++step) {
+                const Vec3d v = normalize(Vec3d(unit(random), unit(random), unit(random))) * distance *
+                                std::cbrt(step % 4 == 0 ? 1 : fraction(random));
+                ASSERT_GT(s.field(p + v), 0) << "shape " << shape << " point " << point;
+            }
+        }
+    }
+    EXPECT_GT(decided, 1000);
 }
 
 }  // namespace

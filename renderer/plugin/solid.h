@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,23 @@ public:
     // query's (nothing else is written), so concurrent queries with scratches of their own are safe.
     virtual void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                               std::vector<InsideSpan>& spans, QueryScratch& scratch) const = 0;
+
+    // The first point in (t_near, t_far) where the ray crosses the surface: by default the first surface end of
+    // inside_spans over that range. Solids that can settle it with less work override it.
+    virtual std::optional<BoundaryPoint> first_surface_point(const Vec3d& origin, const Vec3d& direction,
+                                                             double t_near, double t_far, QueryScratch& scratch) const;
+    // True only when no point within `distance` of `point` lies inside or on the solid (false when unsure): lets a
+    // CSG accept a surface point of one operand without listing the spans of the others.
+    virtual bool certainly_outside(const Vec3d& point, double distance) const {
+        (void)point, (void)distance;
+        return false;
+    }
+    // Whether every span end is computed in double with no tolerance of its own (BoundaryPoint::t_tolerance 0);
+    // a float mesh's are not.
+    virtual bool exact_boundaries() const { return true; }
 };
+
+// The first end of `spans` (in increasing t) that lies on the surface strictly inside (t_near, t_far).
+std::optional<BoundaryPoint> first_surface_crossing(std::span<const InsideSpan> spans, double t_near, double t_far);
 
 }  // namespace isotrace
