@@ -76,14 +76,37 @@ public:
         // Only the axis whose plane was crossed moves on: the others keep their next plane.
         double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
-            const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
-            const double leave = std::min(across[axis], t1);
-            const bool surface = holds_surface({cell_of[0], cell_of[1], cell_of[2]}, range);
+            const std::uint64_t block = block_cells({cell_of[0], cell_of[1], cell_of[2]}, range);
+            const bool surface = (block >> bit({cell_of[0] % kBlock, cell_of[1] % kBlock, cell_of[2] % kBlock})) & 1;
             if (surface && !in_run) in_run = true, run_start = enter;
             if (!surface && in_run) {
                 in_run = false;
                 if (!add_run(run_start, enter)) return false;
             }
+            int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
+            if (block == 0) {
+                // No cell of this block holds the surface: step straight to where the line leaves the block, the
+                // cells and planes on the way taken as the cell by cell walk takes them (the same plane formula,
+                // ties to the lower axis), so that the runs after it are the same to the bit.
+                double block_exit = std::numeric_limits<double>::infinity();
+                int last_in_block[3];
+                for (int k = 0; k < 3; ++k) {
+                    last_in_block[k] = cell_of[k] / kBlock * kBlock + (direction[k] > 0 ? kBlock - 1 : 0);
+                    if (direction[k] == 0) continue;
+                    const int plane = last_in_block[k] + (direction[k] > 0 ? 1 : 0);
+                    const double t = (box_[k].lo + plane * cell_size_[k] - origin[k]) / direction[k];
+                    if (t < block_exit) block_exit = t, axis = k;
+                }
+                for (int k = 0; k < 3; ++k)
+                    while (k != axis && cell_of[k] != last_in_block[k] &&
+                           (across[k] < block_exit || (across[k] == block_exit && k < axis))) {
+                        cell_of[k] += direction[k] > 0 ? 1 : -1;
+                        across[k] = next_plane(k);
+                    }
+                cell_of[axis] = last_in_block[axis];
+                across[axis] = block_exit;
+            }
+            const double leave = std::min(across[axis], t1);
             cell_of[axis] += direction[axis] > 0 ? 1 : -1;
             if (!(leave < t1) || cell_of[axis] < 0 || cell_of[axis] >= kCellsPerAxis) break;
             across[axis] = next_plane(axis);
@@ -101,18 +124,15 @@ private:
     };
     static int bit(CellIndex in_block) { return (in_block.i * kBlock + in_block.j) * kBlock + in_block.l; }
 
+    // The surface bits of the block that holds cell c.
     template <class Range>
-    bool holds_surface(CellIndex c, const Range& range) const {
+    std::uint64_t block_cells(CellIndex c, const Range& range) const {
         const int block = ((c.i / kBlock) * kBlocksPerAxis + c.j / kBlock) * kBlocksPerAxis + c.l / kBlock;
-        std::uint64_t cells;
-        if (known_[block].load(std::memory_order_acquire)) {
-            cells = cells_[block].load(std::memory_order_relaxed);
-        } else {
-            cells = find_block({c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock}, range);
-            cells_[block].store(cells, std::memory_order_relaxed);
-            known_[block].store(true, std::memory_order_release);
-        }
-        return (cells >> bit({c.i % kBlock, c.j % kBlock, c.l % kBlock})) & 1;
+        if (known_[block].load(std::memory_order_acquire)) return cells_[block].load(std::memory_order_relaxed);
+        const std::uint64_t cells = find_block({c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock}, range);
+        cells_[block].store(cells, std::memory_order_relaxed);
+        known_[block].store(true, std::memory_order_release);
+        return cells;
     }
 
     template <class Range>

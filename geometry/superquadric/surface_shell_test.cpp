@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -68,6 +71,75 @@ TEST(SurfaceShell, EveryCrossingLiesInARun) {
         }
     }
     EXPECT_GT(crossings, 1000);
+}
+
+// The runs of a cell-by-cell walk that looks at every cell (the shell steps over blocks without surface cells at
+// once): the same runs to the bit, also for lines through grid vertices and along grid planes, where the walk's
+// ties between axes decide the order of the cells.
+std::vector<ShellRun> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
+    std::vector<ShellRun> runs;
+    const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
+    if (!clip) return runs;
+    const double t0 = clip->t_enter, t1 = clip->t_exit, pad = 1e-9 * (t1 - t0);
+    constexpr int n = SurfaceShell::kCellsPerAxis;
+    const double size = 2.0 / n;
+    const auto cell_range = [&](int i, int j, int l) {
+        const auto side = [&](int at) { return Interval{-1 + at * size, at + 1 == n ? 1 : -1 + (at + 1) * size}; };
+        return ball_range({side(i), side(j), side(l)});
+    };
+    const Vec3d start = o + d * t0;
+    int cell[3];
+    for (int k = 0; k < 3; ++k) cell[k] = std::clamp(int(std::floor((start[k] + 1) / size)), 0, n - 1);
+    const auto next_plane = [&](int k) {
+        if (d[k] == 0) return std::numeric_limits<double>::infinity();
+        return (-1 + (cell[k] + (d[k] > 0 ? 1 : 0)) * size - o[k]) / d[k];
+    };
+    double enter = t0, run_start = 0;
+    bool in_run = false;
+    const auto add = [&](double a, double b) {
+        a = std::max(t0, a - pad), b = std::min(t1, b + pad);
+        if (!runs.empty() && a <= runs.back().hi) runs.back().hi = b;
+        else runs.push_back({a, b});
+    };
+    while (true) {
+        const double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
+        const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
+        const Interval g = cell_range(cell[0], cell[1], cell[2]);
+        const bool surface = !(g.lo > 0 || g.hi < 0);
+        if (surface && !in_run) in_run = true, run_start = enter;
+        if (!surface && in_run) in_run = false, add(run_start, enter);
+        const double leave = std::min(across[axis], t1);
+        cell[axis] += d[axis] > 0 ? 1 : -1;
+        if (!(leave < t1) || cell[axis] < 0 || cell[axis] >= n) break;
+        enter = std::max(enter, leave);
+    }
+    if (in_run) add(run_start, t1);
+    return runs;
+}
+
+TEST(SurfaceShell, RunsAreThoseOfTheCellByCellWalkToTheBit) {
+    const SurfaceShell shell(kBox);
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> vertex(0, SurfaceShell::kCellsPerAxis);
+    const auto grid = [&] { return -1 + vertex(random) * (2.0 / SurfaceShell::kCellsPerAxis); };
+    for (int i = 0; i < 3000; ++i) {
+        Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 3.0;
+        Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.8 - o;
+        if (i % 3 == 1) {  // through two grid vertices
+            const Vec3d a{grid(), grid(), grid()}, b{grid(), grid(), grid()};
+            if (a == b) continue;
+            o = a - (b - a) * 2.0, d = b - a;
+        } else if (i % 3 == 2) {  // along a grid plane
+            o.z = grid(), d.z = 0;
+        }
+        const std::vector<ShellRun> expected = runs_cell_by_cell(o, d), actual = runs_of(shell, o, d);
+        ASSERT_EQ(actual.size(), expected.size()) << "line " << i;
+        for (std::size_t k = 0; k < actual.size(); ++k) {
+            EXPECT_EQ(actual[k].lo, expected[k].lo) << "line " << i;
+            EXPECT_EQ(actual[k].hi, expected[k].hi) << "line " << i;
+        }
+    }
 }
 
 TEST(SurfaceShell, LinesThroughEmptyCornersHaveNoRuns) {
