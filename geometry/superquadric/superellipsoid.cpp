@@ -11,6 +11,7 @@ namespace {
 // r^p for r in [0, 1]: exponents that are small whole numbers (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) by
 // repeated squaring, which is several times cheaper than pow, the intersector's hottest call.
 double unit_power(double r, const NormExponent& e) {
+    if (e.whole == 2) return r * r;  // the squaring below, without its loop: round cross-sections are the rule
     if (e.whole > 0) {
         double result = 1, base = r;
         for (int n = e.whole; n > 0; n >>= 1, base *= base)
