@@ -186,4 +186,16 @@ Frustum frustum_from_end_points(const SceneNode& node, const std::string& top_ke
     return f;
 }
 
+// The distance to the frustum's enclosing cylinder (a lower bound of the distance to the frustum): enough to clear
+// the points CSG asks about, which are rarely near the side.
+bool FrustumShape::certainly_outside(const Vec3d& point, double distance) const {
+    if (!frustum_.caps) return false;
+    const Vec3d q = frustum_.local_point(point);
+    const double half = 0.5 * frustum_.height, widest = std::max(frustum_.base_radius, frustum_.top_radius);
+    const double along = std::max(std::abs(q.z - half) - half, 0.0);
+    const double radial = std::max(std::hypot(q.x, q.y) - widest, 0.0);
+    constexpr double kRounding = 1e-12;  // of the frame and the distances, relative to the frustum's size
+    return std::hypot(along, radial) > distance + kRounding * std::max(frustum_.height, widest);
+}
+
 }  // namespace isotrace

@@ -41,6 +41,7 @@ public:
     std::string solid_problem() const override;
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    bool certainly_outside(const Vec3d& point, double distance) const override;
 
     const Frustum& frustum() const { return frustum_; }
 

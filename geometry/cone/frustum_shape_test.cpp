@@ -512,5 +512,42 @@ TEST(ConeScene, AnOpenConeIsRejectedAsACsgChild) {
     EXPECT_NE(message.find("children[1]"), std::string::npos) << message;
 }
 
+TEST(Frustum, CertainlyOutsideBeyondTheEnclosingCylinder) {
+    // An upright cone, radius 1 at y = 0 narrowing to 0.5 at y = 2.
+    const FrustumShape cone("cone", make_frustum({0, 0, 0}, {0, 2, 0}, 1, 0.5));
+    EXPECT_TRUE(cone.certainly_outside({0, 3, 0}, 0.99));  // 1 above the top
+    EXPECT_FALSE(cone.certainly_outside({0, 3, 0}, 1.01));
+    EXPECT_TRUE(cone.certainly_outside({4, 1, 0}, 2.9));   // 3 beyond the widest radius
+    EXPECT_FALSE(cone.certainly_outside({4, 1, 0}, 3.1));
+    EXPECT_FALSE(cone.certainly_outside({0.9, 1.9, 0}, 0.01));  // outside the cone, inside its cylinder: undecided
+    EXPECT_FALSE(cone.certainly_outside({0, 1, 0}, 0));
+    const FrustumShape open("cylinder", make_frustum({0, 0, 0}, {0, 2, 0}, 1, 1, false));
+    EXPECT_FALSE(open.certainly_outside({0, 9, 0}, 0.1));  // no solid
+}
+
+// A block drilled by a cylinder and a cone: the CSG's first surface points, many settled from the block's entry
+// alone, are the full combination's, bit for bit.
+TEST(Frustum, DrilledBlockFirstSurfacePointsAreTheFullCombinations) {
+    const auto drill = [](const Vec3d& base, const Vec3d& top, double r0, double r1) {
+        return csg_test::child(std::make_unique<FrustumShape>("cone", make_frustum(base, top, r0, r1)));
+    };
+    const auto block = csg_test::csg(CsgOperation::Difference, csg_test::child(csg_test::box({0, 0, 0}, {1, 0.5, 1})),
+                                     drill({0, -1, 0}, {0, 1, 0}, 0.3, 0.3), drill({0.6, -1, 0.6}, {0.6, 1, 0.6}, 0.3, 0.05));
+    std::mt19937 random(4);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (int i = 0; i < 4000; ++i) {
+        const Vec3d origin = Vec3d(unit(random), unit(random), unit(random)) * 3.0;
+        const Vec3d direction = Vec3d(unit(random), unit(random) * 0.5, unit(random)) - origin;
+        QueryScratch scratch;
+        const auto actual = block->first_surface_point(origin, direction, 0, 1e30, scratch);
+        const auto expected = block->Solid::first_surface_point(origin, direction, 0, 1e30, scratch);
+        ASSERT_EQ(actual.has_value(), expected.has_value()) << i;
+        if (!actual) continue;
+        EXPECT_EQ(actual->t, expected->t) << i;
+        EXPECT_EQ(actual->normal, expected->normal) << i;
+        EXPECT_EQ(actual->part, expected->part) << i;
+    }
+}
+
 }  // namespace
 }  // namespace isotrace

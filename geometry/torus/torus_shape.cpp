@@ -158,4 +158,9 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
 
 ISOTRACE_REGISTER_PLUGIN(shape_registry, "torus", "ring torus; center, axis, major_radius, minor_radius", create)
 
+bool TorusShape::certainly_outside(const Vec3d& point, double distance) const {
+    constexpr double kRounding = 1e-12;  // of the distance, relative to the torus's size
+    return torus_distance(torus_, point) > distance + kRounding * torus_.major_radius;
+}
+
 }  // namespace isotrace

@@ -33,6 +33,7 @@ public:
 
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    bool certainly_outside(const Vec3d& point, double distance) const override;
 
     const Torus& torus() const { return torus_; }
 

@@ -363,5 +363,13 @@ TEST(TorusScene, BadInputIsAnInputErrorAtTheKey) {
     round_test::expect_input_errors(cases);
 }
 
+TEST(Torus, CertainlyOutsideBeyondItsDistance) {
+    const TorusShape torus(make_torus({0, 0, 0}, {0, 1, 0}, 1, 0.25));
+    EXPECT_TRUE(torus.certainly_outside({0, 0, 0}, 0.74));  // the hole's centre: 0.75 from the tube
+    EXPECT_FALSE(torus.certainly_outside({0, 0, 0}, 0.76));
+    EXPECT_TRUE(torus.certainly_outside({1, 1, 0}, 0.74));  // above the tube's centre line
+    EXPECT_FALSE(torus.certainly_outside({1, 0.2, 0}, 0));   // inside the tube
+}
+
 }  // namespace
 }  // namespace isotrace
