@@ -116,6 +116,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     if (cells.empty())
         node.fail_at("contained_by", "the function has no surface inside the container (interval evaluation "
                                      "proves it positive throughout)");
+    node.context().memory->charge(cells.size() * sizeof(LinearCellBound), "isosurface cell bounds", node.location());
     return std::make_unique<IsosurfaceShape>(std::move(field), container, std::move(cells), settings, std::move(shapes));
 }
 

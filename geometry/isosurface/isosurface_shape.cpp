@@ -4,6 +4,7 @@
 #include <span>
 
 #include "geometry/csg/inside_span_list.h"
+#include "renderer/core/parallel_for.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/user_geometry.h"
 #include "renderer/math/line_box_clip.h"
@@ -20,7 +21,11 @@ IsosurfaceShape::IsosurfaceShape(std::shared_ptr<const ImplicitField> field, con
       resolution_(settings.resolution > 0
                       ? settings.resolution
                       : 1e-6 * length(container.bounds().upper() - container.bounds().lower())),
-      max_work_(settings.max_work) {}
+      max_work_(settings.max_work) {
+    cell_bounds_.resize(cells_.size());
+    parallel_for(std::size_t(0), cells_.size(),
+                 [&](std::size_t i) { cell_bounds_[i] = LinearCellBound::of(*field_, cells_[i]); });
+}
 
 Bounds3f IsosurfaceShape::bounds() const {
     Bounds3f b;
@@ -132,11 +137,15 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::surface_in_cell(std::uint32
     }
     const Vec3d p_a = origin + direction * a, p_b = origin + direction * b;
     const bool enters_container = a == inside->lo && a > t_near, leaves_container = b == inside->hi && b < t_far;
-    // Most segments through a cell miss the surface: one bound settles them before any point is evaluated.
-    IntervalBox segment = IntervalBox::point(p_a);
-    segment.extend(p_b);
-    const Interval range = field_->value_range(segment);
-    ++work.search.interval_bounds;
+    // Most segments through a cell miss the surface: the cell's linear model, or else one bound, settles them
+    // before any point is evaluated.
+    Interval range = index < cells_.size() ? cell_bounds_[index].over_segment(p_a, p_b) : Interval::unbounded();
+    if (!range.excludes_zero()) {
+        IntervalBox segment = IntervalBox::point(p_a);
+        segment.extend(p_b);
+        range = field_->value_range(segment);
+        ++work.search.interval_bounds;
+    }
     if (range.lo >= 0) return std::nullopt;  // outside throughout, as the search would find
     if (range.hi < 0) {                      // inside throughout: only the container's boundary is surface here
         if (enters_container) return Hit{a, container_.normal(p_a)};

@@ -18,6 +18,7 @@
 #include "geometry/field/crossing_search.h"
 #include "geometry/isosurface/container.h"
 #include "geometry/isosurface/interval_octree.h"
+#include "geometry/isosurface/linear_cell_bound.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/plugin/solid.h"
 
@@ -43,7 +44,9 @@ public:
 
     std::string type_name() const override { return "isosurface"; }
     std::size_t primitive_count() const override { return cells_.size(); }
-    std::size_t memory_bytes() const override { return cells_.capacity() * sizeof(IntervalBox); }
+    std::size_t memory_bytes() const override {
+        return cells_.capacity() * sizeof(IntervalBox) + cell_bounds_.capacity() * sizeof(LinearCellBound);
+    }
     Bounds3f bounds() const override;
     bool counts_intersection_tests() const override { return true; }
     // The field is the user's function of the object's own coordinates: any placement is an instance.
@@ -101,6 +104,7 @@ private:
     std::shared_ptr<const ImplicitField> field_;
     Container container_;
     std::vector<IntervalBox> cells_;
+    std::vector<LinearCellBound> cell_bounds_;  // one per cell
     double resolution_;
     std::uint64_t max_work_;
     int counter_slot_ = 0;
