@@ -12,8 +12,8 @@ LinearCellBound LinearCellBound::of(const ImplicitField& field, const IntervalBo
     for (int i = 0; i < 3; ++i) {
         Vec3d axis{0, 0, 0};
         axis[i] = 1;
-        model.remainder[i] = field.slope_range(cell, axis) + -model.gradient[i];
-        scale += (std::abs(model.gradient[i]) + model.remainder[i].magnitude().hi) * half[i];
+        model.gradient_range[i] = field.slope_range(cell, axis);
+        scale += (std::abs(model.gradient[i]) + model.gradient_range[i].magnitude().hi) * half[i];
     }
     // The model is summed in round-to-nearest, and the search compares the field's computed values with it: the
     // slack covers the rounding of both (a few ulps of the terms), as interval.h's bounds are trusted to a few ulps.

@@ -17,7 +17,7 @@ struct LinearCellBound {
     Vec3d centre;
     Interval value;  // f at the centre, widened by the slack for rounding (below)
     Vec3d gradient;  // ∇f at the centre
-    Interval remainder[3];  // Gᵢ − ∂ᵢf(m): unbounded where f's slope over the cell is
+    Interval gradient_range[3];  // Gᵢ: unbounded where the field cannot bound its slope over the cell
 
     // The model of `field` over `cell` (four evaluations of the field).
     static LinearCellBound of(const ImplicitField& field, const IntervalBox& cell);
@@ -26,9 +26,15 @@ struct LinearCellBound {
     Interval over_segment(const Vec3d& a, const Vec3d& b) const {
         const Vec3d da = a - centre, db = b - centre;
         const double la = dot(gradient, da), lb = dot(gradient, db);
-        const Interval r = remainder[0] * Interval::spanning(da.x, db.x) + remainder[1] * Interval::spanning(da.y, db.y) +
-                           remainder[2] * Interval::spanning(da.z, db.z);
+        const Interval r = (gradient_range[0] + -gradient.x) * Interval::spanning(da.x, db.x) +
+                           (gradient_range[1] + -gradient.y) * Interval::spanning(da.y, db.y) +
+                           (gradient_range[2] + -gradient.z) * Interval::spanning(da.z, db.z);
         return {value.lo + std::min(la, lb) + r.lo, value.hi + std::max(la, lb) + r.hi};
+    }
+
+    // An interval holding ∇f · direction anywhere in the cell where f is differentiable.
+    Interval slope_along(const Vec3d& direction) const {
+        return gradient_range[0] * direction.x + gradient_range[1] * direction.y + gradient_range[2] * direction.z;
     }
 };
 
