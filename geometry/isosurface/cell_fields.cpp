@@ -20,7 +20,8 @@ CellFields pruned_cell_fields(const std::shared_ptr<const ExpressionField>& fiel
     });
     // Field 0 is the whole field: for cells where nothing is settled, and those past the limit.
     CellFields result{{field}, std::vector<std::uint32_t>(cells.size(), 0)};
-    std::map<std::vector<std::uint8_t>, std::uint32_t> made{{std::vector<std::uint8_t>(choices.empty() ? 0 : choices[0].size(), 0), 0}};
+    const std::size_t length = std::size_t(field->tape_length());
+    std::map<std::vector<std::uint8_t>, std::uint32_t> made{{std::vector<std::uint8_t>(length, 0), 0}};
     std::size_t instructions = 0;
     for (std::size_t i = 0; i < cells.size(); ++i) {
         if (const auto found = made.find(choices[i]); found != made.end()) {
@@ -29,9 +30,9 @@ CellFields pruned_cell_fields(const std::shared_ptr<const ExpressionField>& fiel
         }
         if (instructions >= kMaxPrunedInstructions) continue;
         const std::shared_ptr<const ExpressionField> pruned = field->pruned(choices[i]);
-        const auto length = std::size_t(pruned->tape_length());
-        memory.charge(length * sizeof(Instruction), "isosurface pruned tapes", where);
-        instructions += length;
+        const auto pruned_length = std::size_t(pruned->tape_length());
+        memory.charge(pruned_length * sizeof(Instruction), "isosurface pruned tapes", where);
+        instructions += pruned_length;
         result.of_cell[i] = made[choices[i]] = std::uint32_t(result.fields.size());
         result.fields.push_back(pruned);
     }

@@ -73,8 +73,9 @@ void IsosurfaceShape::record_work(const IsosurfaceWork& work) const {
 }
 
 template <CrossingPrecision precision, class Visit>
-void IsosurfaceShape::search(const ImplicitField& field, const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a, double g_b,
-                             std::optional<FieldRanges> ranges_a_b, IsosurfaceWork& work, Visit&& visit) const {
+void IsosurfaceShape::search(const ImplicitField& field, const Vec3d& origin, const Vec3d& direction, double a,
+                             double b, double g_a, double g_b, std::optional<FieldRanges> ranges_a_b,
+                             IsosurfaceWork& work, Visit&& visit) const {
     const auto point = [&](double t) { return origin + direction * t; };
     const auto value = [&](double t) { return field.value(point(t)); };
     const auto segment_box = [&](double lo, double hi) {
@@ -89,8 +90,8 @@ void IsosurfaceShape::search(const ImplicitField& field, const Vec3d& origin, co
         return true;
     };
     // Past the budget, every stretch without a sign change is dropped and every bracket held is refined as one
-    // crossing: the search ends within a few steps per segment on its stack.
-    // The whole segment's ranges, when given, answer the search's first questions (counted already).
+    // crossing: the search ends within a few steps per segment on its stack. The whole segment's ranges, when
+    // given, answer the search's first questions (counted already).
     const auto bound = [&](double lo, double hi) {
         if (spent()) return Interval::point(1);
         if (ranges_a_b && lo == a && hi == b) {
@@ -245,10 +246,11 @@ void IsosurfaceShape::inside_spans(const Vec3d& origin, const Vec3d& direction, 
     IsosurfaceWork work;
     const double g_a = field_->value(origin + direction * inside->lo);
     const double g_b = field_->value(origin + direction * inside->hi);
-    search(*field_, origin, direction, inside->lo, inside->hi, g_a, g_b, std::nullopt, work, [&](const Crossing& crossing) {
-        found.push_back(crossing);
-        return true;
-    });
+    search(*field_, origin, direction, inside->lo, inside->hi, g_a, g_b, std::nullopt, work,
+           [&](const Crossing& crossing) {
+               found.push_back(crossing);
+               return true;
+           });
     record_work(work);
     const std::size_t first = spans.size();
     append_spans_from_crossings(

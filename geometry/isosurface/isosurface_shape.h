@@ -92,8 +92,9 @@ private:
     std::optional<Hit> surface_in_cell(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
                                        double t_far, IsosurfaceWork& work, bool& undecided) const;
     template <CrossingPrecision precision = CrossingPrecision::Refined, class Visit>
-    void search(const ImplicitField& field, const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a, double g_b,
-                std::optional<FieldRanges> ranges_a_b, IsosurfaceWork& work, Visit&& visit) const;
+    void search(const ImplicitField& field, const Vec3d& origin, const Vec3d& direction, double a, double b,
+                double g_a, double g_b, std::optional<FieldRanges> ranges_a_b, IsosurfaceWork& work,
+                Visit&& visit) const;
     // The outward normal where f crosses zero: its normalised gradient (facing the ray where it has none).
     Vec3d surface_normal(const Vec3d& p, const Vec3d& direction) const;
     void record_work(const IsosurfaceWork& work) const;

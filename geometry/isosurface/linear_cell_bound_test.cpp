@@ -36,7 +36,7 @@ void expect_holds_the_field(const ImplicitField& field, std::uint64_t seed) {
         ++segments;
         const LinearCellBound model = LinearCellBound::of(field, cell);
         const auto inside = [&] {
-            return Vec3d{cell.x.lo + unit(rng) * 0.0625, cell.y.lo + unit(rng) * 0.0625, cell.z.lo + unit(rng) * 0.0625};
+            return lower + Vec3d{unit(rng), unit(rng), unit(rng)} * 0.0625;
         };
         const Vec3d a = inside(), b = inside();
         const Interval bound = model.over_segment(a, b);
@@ -54,9 +54,9 @@ TEST(LinearCellBound, HoldsTheFieldOnEverySegmentOfItsCell) {
     expect_holds_the_field(*expression("sin(7*x)*cos(7*y) + sin(7*y)*cos(7*z) + sin(7*z)*cos(7*x)"), 1);
     expect_holds_the_field(*expression("abs(sin(7*x)*cos(7*y) + sin(7*y)*cos(7*z) + sin(7*z)*cos(7*x)) - 0.35"), 2);
     // Creases where the gradient jumps (max, abs, min of distances).
-    expect_holds_the_field(
-        *expression("max(abs(sqrt((cos(1.8*y)*x - sin(1.8*y)*z)^2 + y^2) - 0.62), abs(sin(1.8*y)*x + cos(1.8*y)*z)) - 0.2"),
-        3);
+    expect_holds_the_field(*expression("max(abs(sqrt((cos(1.8*y)*x - sin(1.8*y)*z)^2 + y^2) - 0.62), "
+                                       "abs(sin(1.8*y)*x + cos(1.8*y)*z)) - 0.2"),
+                           3);
     expect_holds_the_field(*expression("smin(length(max(abs(p) - vec(0.4, 0.3, 0.4), 0)) - 0.05, "
                                        "length(p - vec(0, 0.6, 0)) - 0.38, 0.2)"),
                            4);
