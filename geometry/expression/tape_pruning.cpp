@@ -1,5 +1,6 @@
 #include "geometry/expression/tape_pruning.h"
 
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -14,13 +15,16 @@ enum Choice : std::uint8_t { kNone = 0, kFirst = 1, kSecond = 2, kNegated = 3 };
 }  // namespace
 
 std::vector<std::uint8_t> settled_choices(const ExpressionTape& tape, const IntervalBox& box) {
+    std::vector<std::uint8_t> choices(tape.code.size(), kNone);
+    // A tape without a choice to settle is not run (a noise's intervals are costly).
+    const auto has_choice = [](const Instruction& in) { return in.op == Op::Min || in.op == Op::Max || in.op == Op::Abs; };
+    if (std::none_of(tape.code.begin(), tape.code.end(), has_choice)) return choices;
     std::vector<Interval> slots(tape.code.size());
     expression_math::run_into<Interval>(tape, box.x, box.y, box.z, slots.data());
     // a − b, where the tape has it, settles min(a, b) and max(a, b) as well (a smooth blend's |a − b| ≥ r does).
     std::map<std::pair<int, int>, int> difference;
     for (std::size_t i = 0; i < tape.code.size(); ++i)
         if (tape.code[i].op == Op::Sub) difference[{tape.code[i].a, tape.code[i].b}] = int(i);
-    std::vector<std::uint8_t> choices(tape.code.size(), kNone);
     for (std::size_t i = 0; i < tape.code.size(); ++i) {
         const Instruction& in = tape.code[i];
         if (in.op == Op::Abs) {
