@@ -226,6 +226,12 @@ TEST(ExpressionField, IntervalsHoldEverySampledValueAndSlope) {
             const Vec3d direction = normalize(Vec3d{unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5});
             const Interval range = field->value_range(box);
             const Interval slope = field->slope_range(box, direction);
+            // One run for both gives the two bit for bit, as does the default of a field without its own.
+            for (const FieldRanges& both : {field->value_and_slope_range(box, direction),
+                                            field->ImplicitField::value_and_slope_range(box, direction)}) {
+                ASSERT_TRUE(both.value.lo == range.lo && both.value.hi == range.hi) << text;
+                ASSERT_TRUE(both.slope.lo == slope.lo && both.slope.hi == slope.hi) << text;
+            }
             ASSERT_FALSE(std::isnan(range.lo) || std::isnan(range.hi) || std::isnan(slope.lo) || std::isnan(slope.hi))
                 << text;
             for (int sample = 0; sample < 300; ++sample) {
@@ -241,34 +247,6 @@ TEST(ExpressionField, IntervalsHoldEverySampledValueAndSlope) {
                 EXPECT_TRUE(slope.lo - 1e-9 * (1 + std::abs(d)) <= d && d <= slope.hi + 1e-9 * (1 + std::abs(d)))
                     << text << ": slope " << d << " outside [" << slope.lo << ", " << slope.hi << "]";
             }
-        }
-    }
-}
-
-// One run for both ranges gives value_range's interval bit for bit and slope_range's; a field without its own
-// answers the two calls.
-TEST(ExpressionField, ValueAndSlopeRangesFromOneRunAreTheTwoRanges) {
-    std::mt19937_64 random(4);
-    std::uniform_real_distribution<double> unit(0, 1);
-    for (const char* text : kFunctionCases) {
-        const auto field = compiled(text);
-        for (int trial = 0; trial < 40; ++trial) {
-            IntervalBox box;
-            const double size = trial < 20 ? 0.05 : 2.0;
-            for (int k = 0; k < 3; ++k) {
-                const double lo = -2 + 4 * unit(random);
-                box[k] = {lo, lo + size * unit(random)};
-            }
-            const Vec3d direction{unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5};
-            const FieldRanges both = field->value_and_slope_range(box, direction);
-            const Interval range = field->value_range(box), slope = field->slope_range(box, direction);
-            ASSERT_EQ(both.value.lo, range.lo) << text;
-            ASSERT_EQ(both.value.hi, range.hi) << text;
-            ASSERT_EQ(both.slope.lo, slope.lo) << text;
-            ASSERT_EQ(both.slope.hi, slope.hi) << text;
-            const FieldRanges by_default = field->ImplicitField::value_and_slope_range(box, direction);
-            ASSERT_EQ(by_default.value.lo, range.lo);
-            ASSERT_EQ(by_default.slope.hi, slope.hi);
         }
     }
 }
