@@ -90,6 +90,23 @@ template <class N>
     return a;
 }
 
+// Every slot of the tape at the point (x, y, z), into slots[0 .. tape.code.size()).
+template <class N>
+[[gnu::always_inline]] inline void run_into(const ExpressionTape& tape, const N& x, const N& y, const N& z, N* slots) {
+    const std::size_t count = tape.code.size();
+    for (std::size_t i = 0; i < tape.constants; ++i) slots[i] = constant<N>(tape.code[i].constant);
+    for (std::size_t i = tape.constants; i < count; ++i) {
+        const Instruction& in = tape.code[i];
+        if (in.op == Op::SinCos) {
+            const auto both = sin_cos(slots[in.a]);
+            slots[i] = both.sin;
+            slots[++i] = both.cos;
+            continue;
+        }
+        slots[i] = apply(tape, in, slots, x, y, z);
+    }
+}
+
 // The tape's value at the point (x, y, z).
 template <class N>
 N run(const ExpressionTape& tape, const N& x, const N& y, const N& z) {
@@ -98,19 +115,9 @@ N run(const ExpressionTape& tape, const N& x, const N& y, const N& z) {
         Slot() {}  // left uninitialised: each instruction writes its slot before any later one reads it
     };
     Slot slots[kMaxExpressionTape];
-    const std::size_t count = tape.code.size();
-    for (std::size_t i = 0; i < tape.constants; ++i) slots[i].value = constant<N>(tape.code[i].constant);
-    for (std::size_t i = tape.constants; i < count; ++i) {
-        const Instruction& in = tape.code[i];
-        if (in.op == Op::SinCos) {
-            const auto both = sin_cos(slots[in.a].value);
-            slots[i].value = both.sin;
-            slots[++i].value = both.cos;
-            continue;
-        }
-        slots[i].value = apply(tape, in, &slots[0].value, x, y, z);
-    }
-    return slots[count - 1].value;
+    static_assert(sizeof(Slot) == sizeof(N));
+    run_into(tape, x, y, z, &slots[0].value);
+    return slots[tape.code.size() - 1].value;
 }
 
 }  // namespace isotrace::expression_math

@@ -4,6 +4,7 @@
 
 #include "geometry/expression/expression_compiler.h"
 #include "geometry/expression/expression_evaluator.h"
+#include "geometry/expression/tape_pruning.h"
 #include "renderer/params/scene_node.h"
 
 namespace isotrace {
@@ -80,13 +81,26 @@ Interval ExpressionField::value_range(const IntervalBox& box) const {
 }
 
 Interval ExpressionField::slope_range(const IntervalBox& box, const Vec3d& direction) const {
-    return expression_math::run<IntervalSlope>(*tape_, {box.x, Interval::point(direction.x)},
-                                               {box.y, Interval::point(direction.y)},
-                                               {box.z, Interval::point(direction.z)})
-        .d;
+    return value_and_slope_range(box, direction).slope;
+}
+
+FieldRanges ExpressionField::value_and_slope_range(const IntervalBox& box, const Vec3d& direction) const {
+    const IntervalSlope result = expression_math::run<IntervalSlope>(*tape_, {box.x, Interval::point(direction.x)},
+                                                                     {box.y, Interval::point(direction.y)},
+                                                                     {box.z, Interval::point(direction.z)});
+    return {result.v, result.d};
 }
 
 int ExpressionField::tape_length() const { return static_cast<int>(tape_->code.size()); }
+
+std::vector<std::uint8_t> ExpressionField::settled_choices(const IntervalBox& box) const {
+    return isotrace::settled_choices(*tape_, box);
+}
+
+std::shared_ptr<const ExpressionField> ExpressionField::pruned(const std::vector<std::uint8_t>& choices) const {
+    return std::make_shared<const ExpressionField>(std::make_shared<const ExpressionTape>(pruned_tape(*tape_, choices)),
+                                                   container_);
+}
 
 FieldBox everywhere_box() {
     constexpr double inf = std::numeric_limits<double>::infinity();

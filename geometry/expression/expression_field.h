@@ -18,6 +18,7 @@
 // keeps no per-thread state and may run concurrently. A field term calls its field's slope_range with the
 // direction its argument moves in, which for body(p) is the direction itself: fields used as terms should read
 // slope_range as ∇f · direction.
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -68,9 +69,16 @@ public:
     Interval value_range(const IntervalBox& box) const override;
     // The interval of ∇f · direction over the box (direction need not be a unit vector).
     Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override;
+    // Both from one run of the tape: value_range's interval (bit for bit) and slope_range's.
+    FieldRanges value_and_slope_range(const IntervalBox& box, const Vec3d& direction) const override;
 
     // The number of instructions of the compiled tape.
     int tape_length() const;
+
+    // The choices of min, max and |·| that interval arithmetic settles over `box` (tape_pruning.h), and the field
+    // whose tape has them made, valid within such a box: equal choices give equal fields.
+    std::vector<std::uint8_t> settled_choices(const IntervalBox& box) const;
+    std::shared_ptr<const ExpressionField> pruned(const std::vector<std::uint8_t>& choices) const;
 
 private:
     std::shared_ptr<const ExpressionTape> tape_;

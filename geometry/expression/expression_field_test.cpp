@@ -226,6 +226,12 @@ TEST(ExpressionField, IntervalsHoldEverySampledValueAndSlope) {
             const Vec3d direction = normalize(Vec3d{unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5});
             const Interval range = field->value_range(box);
             const Interval slope = field->slope_range(box, direction);
+            // One run for both gives the two bit for bit, as does the default of a field without its own.
+            for (const FieldRanges& both : {field->value_and_slope_range(box, direction),
+                                            field->ImplicitField::value_and_slope_range(box, direction)}) {
+                ASSERT_TRUE(both.value.lo == range.lo && both.value.hi == range.hi) << text;
+                ASSERT_TRUE(both.slope.lo == slope.lo && both.slope.hi == slope.hi) << text;
+            }
             ASSERT_FALSE(std::isnan(range.lo) || std::isnan(range.hi) || std::isnan(slope.lo) || std::isnan(slope.hi))
                 << text;
             for (int sample = 0; sample < 300; ++sample) {

@@ -31,7 +31,6 @@ std::vector<IntervalBox> surface_cells(const ImplicitField& field, const Contain
     std::vector<IntervalBox> cells;
     if (may_hold_surface(field, container, container.bounds())) cells.push_back(container.bounds());
     for (int depth = 0; depth < limits.max_depth && !cells.empty(); ++depth) {
-        if (cells.size() * 8 > limits.max_cells) break;  // the next level might not fit: keep this one
         // The next level's candidates and the cells kept of them, for as long as the level is built.
         const MemoryReservation level(memory, 2 * cells.size() * 8 * sizeof(IntervalBox), "isosurface octree cells",
                                       where);
@@ -39,6 +38,8 @@ std::vector<IntervalBox> surface_cells(const ImplicitField& field, const Contain
         for (const IntervalBox& cell : cells) split(cell, candidates);
         for (const IntervalBox& child : candidates)
             if (may_hold_surface(field, container, child)) children.push_back(child);
+        // Counted among the cells kept, not the candidates: a surface keeps a quarter to a half of them.
+        if (children.size() > limits.max_cells) break;
         cells.swap(children);
     }
     memory.charge(cells.size() * sizeof(IntervalBox), "isosurface octree cells", where);

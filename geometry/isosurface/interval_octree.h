@@ -16,7 +16,7 @@ namespace isotrace {
 
 struct OctreeLimits {
     int max_depth = 6;               // levels of halving below the container's box
-    std::size_t max_cells = 1 << 16;  // a level that would have more cells is not made
+    std::size_t max_cells = 1 << 16;  // a level that would keep more cells is not made
 };
 
 // The cells, at the deepest level within the limits. Each level's cells are charged to `memory` (as `what` at

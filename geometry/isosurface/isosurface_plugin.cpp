@@ -108,7 +108,7 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
         std::size_t(node.integer_or("max_cells", int(settings.octree.max_cells), NumberRange::between(1, 1 << 24)));
 
     const IntervalBox& box = container.bounds();
-    std::shared_ptr<const ImplicitField> field = compile_expression(source, names, {box.lower(), box.upper()});
+    std::shared_ptr<const ExpressionField> field = compile_expression(source, names, {box.lower(), box.upper()});
     std::vector<IntervalBox> cells =
         surface_cells(*field, container, settings.octree, *node.context().memory, node.location());
     if (cells.empty() && !given)
@@ -116,7 +116,10 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     if (cells.empty())
         node.fail_at("contained_by", "the function has no surface inside the container (interval evaluation "
                                      "proves it positive throughout)");
-    return std::make_unique<IsosurfaceShape>(std::move(field), container, std::move(cells), settings, std::move(shapes));
+    node.context().memory->charge(cells.size() * sizeof(LinearCellBound), "isosurface cell bounds", node.location());
+    CellFields cell_fields = pruned_cell_fields(field, cells, *node.context().memory, node.location());
+    return std::make_unique<IsosurfaceShape>(std::move(field), container, std::move(cells), settings,
+                                             std::move(cell_fields), std::move(shapes));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <span>
 
 #include "geometry/csg/inside_span_list.h"
+#include "renderer/core/parallel_for.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/user_geometry.h"
 #include "renderer/math/line_box_clip.h"
@@ -12,7 +13,7 @@ namespace isotrace {
 
 IsosurfaceShape::IsosurfaceShape(std::shared_ptr<const ImplicitField> field, const Container& container,
                                  std::vector<IntervalBox> cells, const IsosurfaceSettings& settings,
-                                 std::vector<std::unique_ptr<Shape>> keep_alive)
+                                 CellFields cell_fields, std::vector<std::unique_ptr<Shape>> keep_alive)
     : keep_alive_(std::move(keep_alive)),
       field_(std::move(field)),
       container_(container),
@@ -20,7 +21,18 @@ IsosurfaceShape::IsosurfaceShape(std::shared_ptr<const ImplicitField> field, con
       resolution_(settings.resolution > 0
                       ? settings.resolution
                       : 1e-6 * length(container.bounds().upper() - container.bounds().lower())),
-      max_work_(settings.max_work) {}
+      max_work_(settings.max_work),
+      cell_fields_(std::move(cell_fields)) {
+    // Within the container by more than rounding can move a clip's ends: its clip cannot cut the cell's.
+    const IntervalBox& box = container_.bounds();
+    const double margin = 1e-9 * length(box.upper() - box.lower());
+    within_container_.resize(cells_.size());
+    for (std::size_t i = 0; i < cells_.size(); ++i)
+        within_container_[i] = container_.distance_range(cells_[i]).hi < -margin;
+    cell_bounds_.resize(cells_.size());
+    parallel_for(std::size_t(0), cells_.size(),
+                 [&](std::size_t i) { cell_bounds_[i] = LinearCellBound::of(field_of(std::uint32_t(i)), cells_[i]); });
+}
 
 Bounds3f IsosurfaceShape::bounds() const {
     Bounds3f b;
@@ -61,10 +73,11 @@ void IsosurfaceShape::record_work(const IsosurfaceWork& work) const {
 }
 
 template <CrossingPrecision precision, class Visit>
-void IsosurfaceShape::search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a,
-                             std::optional<Interval> range_a_b, IsosurfaceWork& work, Visit&& visit) const {
+void IsosurfaceShape::search(const ImplicitField& field, const Vec3d& origin, const Vec3d& direction, double a,
+                             double b, double g_a, double g_b, std::optional<FieldRanges> ranges_a_b,
+                             IsosurfaceWork& work, Visit&& visit) const {
     const auto point = [&](double t) { return origin + direction * t; };
-    const auto value = [&](double t) { return field_->value(point(t)); };
+    const auto value = [&](double t) { return field.value(point(t)); };
     const auto segment_box = [&](double lo, double hi) {
         IntervalBox box = IntervalBox::point(point(lo));
         box.extend(point(hi));
@@ -77,21 +90,24 @@ void IsosurfaceShape::search(const Vec3d& origin, const Vec3d& direction, double
         return true;
     };
     // Past the budget, every stretch without a sign change is dropped and every bracket held is refined as one
-    // crossing: the search ends within a few steps per segment on its stack.
+    // crossing: the search ends within a few steps per segment on its stack. The whole segment's ranges, when
+    // given, answer the search's first questions (counted already).
     const auto bound = [&](double lo, double hi) {
         if (spent()) return Interval::point(1);
-        if (range_a_b && lo == a && hi == b) {  // the search's first question, answered (and counted) already
+        if (ranges_a_b && lo == a && hi == b) {
             --work.search.interval_bounds;
-            return *range_a_b;
+            return ranges_a_b->value;
         }
-        return field_->value_range(segment_box(lo, hi));
+        return field.value_range(segment_box(lo, hi));
     };
     const auto slope = [&](double lo, double hi) {
-        return spent() ? Interval::point(1) : field_->slope_range(segment_box(lo, hi), direction);
+        if (spent()) return Interval::point(1);
+        if (ranges_a_b && lo == a && hi == b) return ranges_a_b->slope;
+        return field.slope_range(segment_box(lo, hi), direction);
     };
     // Brackets are refined by Newton steps along the ray: fewer evaluations than regula falsi's.
-    const auto point_slope = [&](double t) { return field_->value_and_slope(point(t), direction); };
-    search_crossings<precision>(a, b, g_a, value(b), resolution_ / length(direction), false, value, bound, slope,
+    const auto point_slope = [&](double t) { return field.value_and_slope(point(t), direction); };
+    search_crossings<precision>(a, b, g_a, g_b, resolution_ / length(direction), false, value, bound, slope,
                                 work.search, visit, point_slope);
 }
 
@@ -120,9 +136,15 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::surface_in_cell(std::uint32
                                                                      const Vec3d& direction, double t_near,
                                                                      double t_far, IsosurfaceWork& work,
                                                                      bool& undecided) const {
-    const std::optional<Interval> inside = container_.clip(origin, direction, t_near, t_far);
-    if (!inside) return std::nullopt;
-    double a = inside->lo, b = inside->hi;
+    // The container's stretch of the ray, unless the cell lies within the container (most do).
+    std::optional<Interval> inside;
+    double a = t_near, b = t_far;
+    if (!(index < cells_.size() && within_container_[index])) {
+        inside = container_.clip(origin, direction, t_near, t_far);
+        if (!inside) return std::nullopt;
+        a = inside->lo;
+        b = inside->hi;
+    }
     if (index < cells_.size()) {
         const IntervalBox& cell = cells_[index];
         const auto clip = clip_line_to_box(cell.lower(), cell.upper(), origin, direction, a, b);
@@ -131,23 +153,40 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::surface_in_cell(std::uint32
         b = clip->t_exit;
     }
     const Vec3d p_a = origin + direction * a, p_b = origin + direction * b;
-    const bool enters_container = a == inside->lo && a > t_near, leaves_container = b == inside->hi && b < t_far;
-    // Most segments through a cell miss the surface: one bound settles them before any point is evaluated.
-    IntervalBox segment = IntervalBox::point(p_a);
-    segment.extend(p_b);
-    const Interval range = field_->value_range(segment);
-    ++work.search.interval_bounds;
-    if (range.lo >= 0) return std::nullopt;  // outside throughout, as the search would find
-    if (range.hi < 0) {                      // inside throughout: only the container's boundary is surface here
+    const bool enters_container = inside && a == inside->lo && a > t_near;
+    const bool leaves_container = inside && b == inside->hi && b < t_far;
+    // Where f keeps one sign along the segment only the container's boundary can be surface (where f < 0).
+    const auto without_crossing = [&](bool inside_throughout) -> std::optional<Hit> {
+        if (!inside_throughout) return std::nullopt;
         if (enters_container) return Hit{a, container_.normal(p_a)};
         if (leaves_container) return Hit{b, container_.normal(p_b)};
         return std::nullopt;
+    };
+    // Most segments through a cell miss the surface: the cell's linear model settles most of them without a run
+    // of the tape; of the rest, those that keep their sign are mostly settled by the model's slope over the cell
+    // and the values at the ends (the search's mean-value test, which these would come to after a failed bound).
+    const LinearCellBound* model = index < cells_.size() ? &cell_bounds_[index] : nullptr;
+    Interval range = model ? model->over_segment(p_a, p_b) : Interval::unbounded();
+    if (range.excludes_zero()) return without_crossing(range.hi < 0);
+    const ImplicitField& field = field_of(index);
+    const double g_a = field.value(p_a), g_b = field.value(p_b);
+    if (model && (g_a < 0) == (g_b < 0)) {
+        const Interval slope = model->slope_along(direction);
+        if (slope.excludes_zero() || crossing_search_detail::keeps_sign(b - a, g_a, g_b, slope))
+            return without_crossing(g_a < 0);
     }
-    const double g_a = field_->value(p_a);
+    // The search's first two questions (the bound over the whole segment, then the slope) from one run.
+    IntervalBox segment = IntervalBox::point(p_a);
+    segment.extend(p_b);
+    const FieldRanges ranges = field.value_and_slope_range(segment, direction);
+    range = ranges.value;
+    ++work.search.interval_bounds;
+    if (range.lo >= 0) return std::nullopt;  // outside throughout, as the search would find
+    if (range.hi < 0) return without_crossing(true);
     // The ray enters the container where the function's solid meets its boundary.
     if (enters_container && g_a < 0) return Hit{a, container_.normal(p_a)};
     std::optional<Hit> hit;
-    search<precision>(origin, direction, a, b, g_a, range, work, [&](const Crossing& crossing) {
+    search<precision>(field, origin, direction, a, b, g_a, g_b, ranges, work, [&](const Crossing& crossing) {
         if constexpr (precision == CrossingPrecision::Bracketed) {
             undecided = !crossing.settles_occlusion(t_near, t_far);
             if (!undecided) hit = Hit{crossing.t, {}};
@@ -160,7 +199,7 @@ std::optional<IsosurfaceShape::Hit> IsosurfaceShape::surface_in_cell(std::uint32
     });
     if (hit) return hit;
     // A ray from inside leaves through the container's boundary.
-    if (leaves_container && field_->value(p_b) < 0) return Hit{b, container_.normal(p_b)};
+    if (leaves_container && g_b < 0) return Hit{b, container_.normal(p_b)};
     return std::nullopt;
 }
 
@@ -206,10 +245,12 @@ void IsosurfaceShape::inside_spans(const Vec3d& origin, const Vec3d& direction, 
     found.clear();
     IsosurfaceWork work;
     const double g_a = field_->value(origin + direction * inside->lo);
-    search(origin, direction, inside->lo, inside->hi, g_a, std::nullopt, work, [&](const Crossing& crossing) {
-        found.push_back(crossing);
-        return true;
-    });
+    const double g_b = field_->value(origin + direction * inside->hi);
+    search(*field_, origin, direction, inside->lo, inside->hi, g_a, g_b, std::nullopt, work,
+           [&](const Crossing& crossing) {
+               found.push_back(crossing);
+               return true;
+           });
     record_work(work);
     const std::size_t first = spans.size();
     append_spans_from_crossings(

@@ -16,8 +16,10 @@
 #include <vector>
 
 #include "geometry/field/crossing_search.h"
+#include "geometry/isosurface/cell_fields.h"
 #include "geometry/isosurface/container.h"
 #include "geometry/isosurface/interval_octree.h"
+#include "geometry/isosurface/linear_cell_bound.h"
 #include "renderer/plugin/shape.h"
 #include "renderer/plugin/solid.h"
 
@@ -36,14 +38,17 @@ struct IsosurfaceWork {
 
 class IsosurfaceShape final : public Shape, public Solid {
 public:
-    // `cells` from surface_cells(*field, container, ...); `keep_alive` owns whatever the field refers to (the shapes
-    // of its field terms).
+    // `cells` from surface_cells(*field, container, ...), `cell_fields` (when given) the field each searches with;
+    // `keep_alive` owns whatever the field refers to (the shapes of its field terms).
     IsosurfaceShape(std::shared_ptr<const ImplicitField> field, const Container& container, std::vector<IntervalBox> cells,
-                    const IsosurfaceSettings& settings, std::vector<std::unique_ptr<Shape>> keep_alive = {});
+                    const IsosurfaceSettings& settings, CellFields cell_fields = {},
+                    std::vector<std::unique_ptr<Shape>> keep_alive = {});
 
     std::string type_name() const override { return "isosurface"; }
     std::size_t primitive_count() const override { return cells_.size(); }
-    std::size_t memory_bytes() const override { return cells_.capacity() * sizeof(IntervalBox); }
+    std::size_t memory_bytes() const override {
+        return cells_.capacity() * (sizeof(IntervalBox) + sizeof(LinearCellBound) + 1);
+    }
     Bounds3f bounds() const override;
     bool counts_intersection_tests() const override { return true; }
     // The field is the user's function of the object's own coordinates: any placement is an instance.
@@ -79,19 +84,24 @@ public:
     const std::vector<IntervalBox>& cells() const { return cells_; }
 
 private:
-    // Visits the crossings of f along [a, b] (inside the container; g_a = f there; range_a_b, when known, f's
-    // interval over the segment), nearest first, within the work budget.
+    // Visits the crossings of f along [a, b] (inside the container; g_a and g_b = f there; ranges_a_b, when known,
+    // f's intervals over the segment), nearest first, within the work budget.
     // first_hit, or with Bracketed a hit at a crossing whose bracket lies within (t_near, t_far) (t only within
     // the bracket, no normal); `undecided` is set when the first bracket reaches past either end of the range.
     template <CrossingPrecision precision>
     std::optional<Hit> surface_in_cell(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
                                        double t_far, IsosurfaceWork& work, bool& undecided) const;
     template <CrossingPrecision precision = CrossingPrecision::Refined, class Visit>
-    void search(const Vec3d& origin, const Vec3d& direction, double a, double b, double g_a,
-                std::optional<Interval> range_a_b, IsosurfaceWork& work, Visit&& visit) const;
+    void search(const ImplicitField& field, const Vec3d& origin, const Vec3d& direction, double a, double b,
+                double g_a, double g_b, std::optional<FieldRanges> ranges_a_b, IsosurfaceWork& work,
+                Visit&& visit) const;
     // The outward normal where f crosses zero: its normalised gradient (facing the ray where it has none).
     Vec3d surface_normal(const Vec3d& p, const Vec3d& direction) const;
     void record_work(const IsosurfaceWork& work) const;
+    // The field cell `index` searches with (the whole field for an index out of range).
+    const ImplicitField& field_of(std::uint32_t index) const {
+        return index < cell_fields_.of_cell.size() ? *cell_fields_.fields[cell_fields_.of_cell[index]] : *field_;
+    }
 
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);
@@ -101,6 +111,9 @@ private:
     std::shared_ptr<const ImplicitField> field_;
     Container container_;
     std::vector<IntervalBox> cells_;
+    std::vector<LinearCellBound> cell_bounds_;  // one per cell
+    std::vector<std::uint8_t> within_container_;  // per cell: 1 where it lies inside the container
+    CellFields cell_fields_;
     double resolution_;
     std::uint64_t max_work_;
     int counter_slot_ = 0;

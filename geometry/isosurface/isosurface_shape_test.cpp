@@ -420,8 +420,12 @@ TEST(Isosurface, TheOctreeKeepsOnlyCellsThatMayHoldTheSurface) {
     }
     // No surface in the container: no cell.
     EXPECT_TRUE(surface_cells(sphere, Container::box({3, 3, 3}, {4, 4, 4}), {5, 1 << 16}, memory).empty());
-    // The cell limit stops the subdivision at the last level within it.
+    // The cell limit stops the subdivision at the last level within it, counting the cells kept (a level with
+    // more candidates than the limit but fewer cells kept is made).
     EXPECT_LE(surface_cells(sphere, unit_box(2), {8, 1000}, memory).size(), 1000u);
+    const std::size_t level_5 = cells.size();
+    EXPECT_EQ(surface_cells(sphere, unit_box(2), {5, level_5}, memory).size(), level_5);
+    EXPECT_LT(surface_cells(sphere, unit_box(2), {5, level_5 - 1}, memory).size(), level_5);
     // A small budget is refused with an InputError.
     MemoryBudget tiny(1000);
     EXPECT_THROW(surface_cells(sphere, unit_box(2), {6, 1 << 16}, tiny), InputError);

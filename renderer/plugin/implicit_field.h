@@ -49,6 +49,11 @@ struct FieldSlope {
     double value, derivative;
 };
 
+// Intervals of a field's value and of its derivative along a direction over a box.
+struct FieldRanges {
+    Interval value, slope;
+};
+
 class ImplicitField {
 public:
     virtual ~ImplicitField() = default;
@@ -83,6 +88,10 @@ public:
         (void)box;
         (void)direction;
         return Interval::unbounded();
+    }
+    // Both, for a field that computes the value's interval on the way to the slope's (an expression does).
+    virtual FieldRanges value_and_slope_range(const IntervalBox& box, const Vec3d& direction) const {
+        return {value_range(box), slope_range(box, direction)};
     }
 };
 
