@@ -1,7 +1,7 @@
 """What the comparison tools share about image error: the isotrace they run, the RMS error of an image against a
 reference, references rendered once and cached by what they depend on, and the time at which a ladder of renders
 reaches a given error. Used by tools/compare-embree, tools/compare-tessellation and tools/convergence."""
-import hashlib, json, math, os, re, subprocess, sys
+import hashlib, math, os, re, subprocess, sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ISOTRACE = os.path.join(ROOT, os.environ.get("ISOTRACE_BUILD_DIR", "build"), "bin", "isotrace")
@@ -17,25 +17,17 @@ def rms_error(image, reference):
 
 
 def scene_files(scene_path):
-    """The scene file and every existing file its JSON names (meshes, textures, includes), relative to the scene's
-    folder or absolute, in a stable order: what a render of it depends on besides the build."""
+    """The scene file and every existing file it names (meshes, textures, includes), relative to the scene's folder
+    or absolute, in a stable order: what a render of it depends on besides the build. Every string literal of the
+    text is tried (scene files may hold comments, which the json module does not read)."""
     folder = os.path.dirname(os.path.abspath(scene_path))
-    found = []
-
-    def visit(value):
-        if isinstance(value, dict):
-            for item in value.values():
-                visit(item)
-        elif isinstance(value, list):
-            for item in value:
-                visit(item)
-        elif isinstance(value, str) and len(value) < 4096:
-            path = os.path.join(folder, value)
-            if os.path.isfile(path) and path not in found:
-                found.append(path)
-
     with open(scene_path) as f:
-        visit(json.load(f))
+        text = f.read()
+    found = set()
+    for literal in re.findall(r'"((?:[^"\\\n]|\\.){1,4096})"', text):
+        path = os.path.join(folder, literal)
+        if os.path.isfile(path):
+            found.add(os.path.abspath(path))
     return [os.path.abspath(scene_path)] + sorted(found)
 
 
