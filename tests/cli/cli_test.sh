@@ -1946,6 +1946,31 @@ case_diff_ztest() {  # an unbiased 64-spp render passes against a 1024-spp refer
   cli_expect 2 diff --ztest "$work/ref.exr" "$work/test.exr" --fail flip=0.1
 }
 
+# tools/convergence: a ladder per scene and build, its errors against a cached reference, the time to an error, the
+# log-log plot; bad arguments are exit 2.
+case_convergence_tool() {
+  python3 tools/convergence "$cornell" box+speck --builds "one=$cli,two=$cli" --res 16x16 --spp-ladder 1,2,4 \
+    --reference-spp 16 --threads 1 --cache "$work/cache" --plot "$work/plot.svg" --json "$work/c.json" \
+    >"$work/stdout" 2>"$work/stderr" || { cat "$work/stderr" >&2; fail "tools/convergence failed"; }
+  expect_in "$work/stdout" "scenes/cornell_box.json:" stdout
+  expect_in "$work/stdout" "box+speck:" stdout
+  expect_in "$work/stdout" "x one's" stdout
+  grep -q "<polyline" "$work/plot.svg" || fail "no lines in the plot"
+  (($(ls "$work/cache" | grep -c '\.exr$') == 2)) || fail "not one cached reference per scene"
+  python3 - "$work/c.json" <<'PY' || fail "JSON: not three rungs per build with errors falling from 1 to 4 spp"
+import json, sys
+results = json.load(open(sys.argv[1]))["results"]
+assert len(results) == 2
+for result in results:
+    for rows in result["builds"].values():
+        assert [r["spp"] for r in rows] == [1, 2, 4]
+        assert rows[0]["rms_error"] > rows[2]["rms_error"] > 0
+PY
+  local status=0
+  python3 tools/convergence "$cornell" --builds "$cli" --spp-ladder 4 --cache "$work/cache" >/dev/null 2>&1 || status=$?
+  ((status == 2)) || fail "a ladder of one rung is not refused with exit 2 (exit $status)"
+}
+
 # Reference mode: the stop at the target error is decided at pass boundaries, so the image is the same for any
 # thread count and tile size, and --spp with the samples it stopped at renders the same pixels again.
 case_reference_mode() {
