@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
+#include <array>
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -15,6 +15,7 @@
 
 #include "renderer/render/tile_renderer.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tests/support/samples_together.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {
@@ -53,55 +54,19 @@ std::string room(const std::string& integrator, const std::string& lights, const
 const std::string kOneLight = R"({"type": "point", "position": [0.5, 2.2, 0.5], "intensity": 3})";
 const std::string kTwoLights = kOneLight + R"(, {"type": "point", "position": [-1.2, 1.5, 1.5], "intensity": [1, 2, 0.5]})";
 
-std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
-
-// Per pixel, samples [0, count) traced one at a time by radiance() and in groups of eight (the last group
-// shorter) by `kernel`; returns how many samples carried light, and fails on any differing bit.
+// Every other pixel of every third row, samples [0, count) traced by `kernel` against radiance() one at a time.
 int expect_packets_match_single_paths(const LoadedScene& loaded, std::uint32_t count, FlatLambertianKernel kernel,
                                       const PathSettings& settings) {
     EXPECT_NE(loaded.scene->flat_lambertian(), nullptr);
-    int lit = 0;
-    for (int y = 0; y < 16; y += 3) {
-        for (int x = 0; x < 24; x += 2) {
-            const auto camera_ray = [&](SampleStream& stream) {
-                const FilterSample offset = loaded.filter->sample(stream.next_2d());
-                return loaded.camera->generate_ray(float(x) + 0.5f + offset.dx, float(y) + 0.5f + offset.dy,
-                                                   stream.next_2d());
-            };
-            for (std::uint32_t first = 0; first < count; first += 8) {
-                const std::size_t group = std::min<std::size_t>(8, count - first);
-                std::vector<SampleStream> streams(group);
-                std::vector<Ray> rays(group);
-                std::vector<PrimaryHitRecord> primary(group);
-                std::vector<Rgb> radiance(group);
-                for (std::size_t i = 0; i < group; ++i) {
-                    streams[i] = SampleStream(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
-                    rays[i] = camera_ray(streams[i]);
-                }
-                kernel(settings, rays, *loaded.scene, *loaded.scene->flat_lambertian(), streams, primary, radiance);
-                for (std::size_t i = 0; i < group; ++i) {
-                    SampleStream single(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
-                    const Ray ray = camera_ray(single);
-                    PrimaryHitRecord record;
-                    const Rgb expected = loaded.integrator->radiance(ray, *loaded.scene, single, record);
-                    SCOPED_TRACE("pixel " + std::to_string(x) + ", " + std::to_string(y) + ", sample " +
-                                 std::to_string(first + i));
-                    EXPECT_EQ(bits(radiance[i].r), bits(expected.r));
-                    EXPECT_EQ(bits(radiance[i].g), bits(expected.g));
-                    EXPECT_EQ(bits(radiance[i].b), bits(expected.b));
-                    EXPECT_EQ(primary[i].hit, record.hit);
-                    EXPECT_EQ(primary[i].albedo, record.albedo);
-                    EXPECT_EQ(primary[i].shading_normal, record.shading_normal);
-                    EXPECT_EQ(primary[i].position, record.position);
-                    EXPECT_EQ(primary[i].object_id, record.object_id);
-                    EXPECT_EQ(primary[i].primitive_id, record.primitive_id);
-                    EXPECT_EQ(streams[i].dimension(), single.dimension());  // the same blocks taken
-                    if (!expected.is_black()) ++lit;
-                }
-            }
-        }
-    }
-    return lit;
+    std::vector<std::array<int, 2>> pixels;
+    for (int y = 0; y < 16; y += 3)
+        for (int x = 0; x < 24; x += 2) pixels.push_back({x, y});
+    return testing::expect_groups_match_single_paths(
+        loaded, pixels, count,
+        [&](std::span<const Ray> rays, std::span<SampleStream> streams, std::span<PrimaryHitRecord> primary,
+            std::span<Rgb> radiance) {
+            kernel(settings, rays, *loaded.scene, *loaded.scene->flat_lambertian(), streams, primary, radiance);
+        });
 }
 
 std::string path_integrator(const PathSettings& settings) {
@@ -182,8 +147,8 @@ TEST(FlatLambertianPackets, DescribedForTheStatistics) {
     EXPECT_NE(flat->integrator->packet_description(*flat->scene).find(flat_lambertian_kernel_name()), std::string::npos);
     const SceneFile other_file(room(R"({"type": "path"})", kOneLight + R"(, {"type": "environment", "radiance": 0.1})"));
     const auto other = load_scene(other_file.path());
-    EXPECT_EQ(other->integrator->samples_traced_together(*other->scene), 1u);
-    EXPECT_EQ(other->integrator->packet_description(*other->scene), "");
+    EXPECT_EQ(other->integrator->samples_traced_together(*other->scene), std::size_t(kLanes));
+    EXPECT_NE(other->integrator->packet_description(*other->scene).find("in step"), std::string::npos);
 }
 
 // Anything the packets do not shade keeps the scene on the general loop.

@@ -1,5 +1,6 @@
 #include "integrators/path/path_integrator.h"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -47,153 +48,218 @@ private:
 
 }  // namespace
 
-Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
-                             PrimaryHitRecord& primary) const {
+// A path between its rays (which the caller keeps, so that a packet's rays lie side by side): what it has gathered,
+// what it carries, and whether its last bounce cast a shadow ray, with the light that ray brings unless blocked.
+struct PathIntegrator::Path {
     Rgb result;
-    Contributions contributions(result, settings_.clamp);
-    Rgb throughput(1.0f);
+    Rgb throughput{1.0f};
     float eta_scale = 1;  // undoes the radiance scaling of refraction for Russian roulette
-    Ray ray = camera_ray;
-    ray.direction = normalize(ray.direction);  // hit.t is then a distance (needed for light pdfs)
-    bool previous_was_delta = true;             // camera rays and delta bounces: no MIS on emitter hits
+    bool previous_was_delta = true;  // camera rays and delta bounces: no MIS on emitter hits
     float previous_pdf = 0;
-    Vec3f previous_point = ray.origin;
+    Vec3f previous_point;
     Sampler::Block pair_directions{}, pair_roulette{};  // of the current pair of bounces (below)
+    int depth = 0;
+    bool casts_shadow = false;
+    Rgb unblocked;  // the contribution the shadow ray brings if nothing blocks it
 
-    for (int depth = 0;; ++depth) {
-        const std::optional<SurfaceHit> found = scene.intersect(ray, depth == 0 ? RayKind::Camera : RayKind::Secondary);
-        if (!found) {
-            for (const Light* light : scene.infinite_lights()) {
-                const Rgb emitted = light->escaped_radiance(ray.direction);
-                if (emitted.is_black()) continue;
-                const float weight =
-                    previous_was_delta
-                        ? 1.0f
-                        : power_heuristic(previous_pdf, scene.light_probability(light) *
-                                                            light->pdf(previous_point, ray.direction,
-                                                                       std::numeric_limits<float>::infinity(), {}));
-                contributions.add(throughput * emitted * weight);
-            }
-            break;
+    // Starts the path along `camera_ray`, made its first ray.
+    explicit Path(Ray& camera_ray) : previous_point(camera_ray.origin) {
+        camera_ray.direction = normalize(camera_ray.direction);  // hit.t is then a distance (needed for light pdfs)
+    }
+};
+
+// Flattened: as a function of its own the bounce kept its small helpers (the shadow ray, the spawn point, the
+// shading frame) as calls, which the one-path loop had inlined; inlined again, it costs 2.7 % fewer instructions per
+// sample on the box with a speck and 2.0 % on the Cornell box.
+[[gnu::flatten]] bool PathIntegrator::bounce(Path& path, Ray& ray, Ray& shadow, const std::optional<SurfaceHit>& found,
+                            const RenderScene& scene, SampleStream& samples, PrimaryHitRecord& primary) const {
+    Contributions contributions(path.result, settings_.clamp);
+    const int depth = path.depth;
+    path.casts_shadow = false;
+    if (!found) {
+        for (const Light* light : scene.infinite_lights()) {
+            const Rgb emitted = light->escaped_radiance(ray.direction);
+            if (emitted.is_black()) continue;
+            const float weight =
+                path.previous_was_delta
+                    ? 1.0f
+                    : power_heuristic(path.previous_pdf,
+                                      scene.light_probability(light) *
+                                          light->pdf(path.previous_point, ray.direction,
+                                                     std::numeric_limits<float>::infinity(), {}));
+            contributions.add(path.throughput * emitted * weight);
         }
-        const SurfaceHit& hit = *found;
-        const Vec3f towards_viewer = -ray.direction;
-        if (depth == 0) primary.record(hit, hit.material->albedo(hit));
+        return false;
+    }
+    const SurfaceHit& hit = *found;
+    const Vec3f towards_viewer = -ray.direction;
+    if (depth == 0) primary.record(hit, hit.material->albedo(hit));
 
-        const Rgb emitted = hit.material->emission(hit, towards_viewer);
-        if (!emitted.is_black()) {
-            float weight = 1;
-            const Light* area_light = hit.object->area_light;
-            if (!previous_was_delta && area_light) {
-                const float light_pdf = scene.light_probability(area_light) *
-                                        area_light->pdf(previous_point, ray.direction, hit.t, hit.geometric_normal);
-                weight = power_heuristic(previous_pdf, light_pdf);
-            }
-            contributions.add(throughput * emitted * weight);
+    const Rgb emitted = hit.material->emission(hit, towards_viewer);
+    if (!emitted.is_black()) {
+        float weight = 1;
+        const Light* area_light = hit.object->area_light;
+        if (!path.previous_was_delta && area_light) {
+            const float light_pdf = scene.light_probability(area_light) *
+                                    area_light->pdf(path.previous_point, ray.direction, hit.t, hit.geometric_normal);
+            weight = power_heuristic(path.previous_pdf, light_pdf);
         }
-        if (depth >= settings_.max_depth) break;
-        const SurfaceBsdf bsdf = hit.material->bsdf(hit);
-        if (!bsdf.scatters()) break;
+        contributions.add(path.throughput * emitted * weight);
+    }
+    if (depth >= settings_.max_depth) return false;
+    const SurfaceBsdf bsdf = hit.material->bsdf(hit);
+    if (!bsdf.scatters()) return false;
 
-        const ShadingFrame frame(hit.shading_normal, hit.tangent);
-        const Vec3f wo = frame.to_local(towards_viewer);
+    const ShadingFrame frame(hit.shading_normal, hit.tangent);
+    const Vec3f wo = frame.to_local(towards_viewer);
 
-        // Two bounces own four Sobol' blocks, in this order, used or not: the first bounce's light block (a point
-        // on the light, the choice among lights, the BSDF's lobe choice), both bounces' directions as one 4-D
-        // point, both bounces' Russian roulette, the second bounce's light block. Consecutive directions are so
-        // stratified jointly, not only each on its own (docs/decisions.md). A block is computed only when
-        // something reads it (a delta light and a single-lobe BSDF read no light block; roulette may be off); its
-        // dimensions are skipped either way, so every value keeps its dimension.
-        const bool first_of_pair = depth % 2 == 0;
-        Sampler::Block light{};
-        if (!scene.light_sampling_is_deterministic() || bsdf.chooses_lobe())
-            light = samples.next_block();
+    // Two bounces own four Sobol' blocks, in this order, used or not: the first bounce's light block (a point
+    // on the light, the choice among lights, the BSDF's lobe choice), both bounces' directions as one 4-D
+    // point, both bounces' Russian roulette, the second bounce's light block. Consecutive directions are so
+    // stratified jointly, not only each on its own (docs/decisions.md). A block is computed only when
+    // something reads it (a delta light and a single-lobe BSDF read no light block; roulette may be off); its
+    // dimensions are skipped either way, so every value keeps its dimension.
+    const bool first_of_pair = depth % 2 == 0;
+    Sampler::Block light{};
+    if (!scene.light_sampling_is_deterministic() || bsdf.chooses_lobe())
+        light = samples.next_block();
+    else
+        samples.skip_block();
+    if (first_of_pair) {
+        path.pair_directions = samples.next_block();
+        path.pair_roulette = {};
+        if (depth + 2 >= settings_.russian_roulette_depth)
+            path.pair_roulette = samples.next_block();
         else
             samples.skip_block();
-        if (first_of_pair) {
-            pair_directions = samples.next_block();
-            pair_roulette = {};
-            if (depth + 2 >= settings_.russian_roulette_depth)
-                pair_roulette = samples.next_block();
-            else
-                samples.skip_block();
-        }
-        const std::array<float, 2> u_light_point = {light[0], light[1]};
-        const float u_light = light[2];
-        const float u_lobe = light[3];
-        const std::array<float, 2> u_direction =
-            first_of_pair ? std::array<float, 2>{pair_directions[0], pair_directions[1]}
-                          : std::array<float, 2>{pair_directions[2], pair_directions[3]};
-        const float u_roulette = pair_roulette[std::size_t(depth % 2)];
+    }
+    const std::array<float, 2> u_light_point = {light[0], light[1]};
+    const float u_light = light[2];
+    const float u_lobe = light[3];
+    const std::array<float, 2> u_direction =
+        first_of_pair ? std::array<float, 2>{path.pair_directions[0], path.pair_directions[1]}
+                      : std::array<float, 2>{path.pair_directions[2], path.pair_directions[3]};
+    const float u_roulette = path.pair_roulette[std::size_t(depth % 2)];
 
-        // Next-event estimation: one light, chosen in proportion to power.
-        if (!bsdf.is_fully_delta()) {
-            const LightChoice choice = scene.choose_light(u_light);
-            if (choice.light) {
-                const LightSample light = choice.light->sample(hit.position, u_light_point);
-                const Vec3f wi = frame.to_local(light.direction);
-                if (light.pdf > 0 && !light.radiance.is_black()) {
-                    // What the light would add is a multiple of the throughput times f: when that is black in
-                    // every channel (a red wall seen along a green path), the shadow ray cannot change the result.
-                    const Rgb throughput_f = throughput * (bsdf.eval(wo, wi) * std::abs(wi.z));
-                    if (!throughput_f.is_black() && sides_agree(light.direction, hit.geometric_normal, wi.z)) {
-                        if (!scene.occluded(shadow_ray(hit, light.direction, light.distance))) {
-                            const float light_pdf = choice.probability * light.pdf;
-                            const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, wi));
-                            contributions.add(throughput_f * light.radiance * (weight / light_pdf));
-                        }
-                    }
+    // Next-event estimation: one light, chosen in proportion to power. The shadow ray is traced by the caller,
+    // with those of the other paths traced together.
+    if (!bsdf.is_fully_delta()) {
+        const LightChoice choice = scene.choose_light(u_light);
+        if (choice.light) {
+            const LightSample light = choice.light->sample(hit.position, u_light_point);
+            const Vec3f wi = frame.to_local(light.direction);
+            if (light.pdf > 0 && !light.radiance.is_black()) {
+                // What the light would add is a multiple of the throughput times f: when that is black in
+                // every channel (a red wall seen along a green path), the shadow ray cannot change the result.
+                const Rgb throughput_f = path.throughput * (bsdf.eval(wo, wi) * std::abs(wi.z));
+                if (!throughput_f.is_black() && sides_agree(light.direction, hit.geometric_normal, wi.z)) {
+                    const float light_pdf = choice.probability * light.pdf;
+                    const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, wi));
+                    path.casts_shadow = true;
+                    shadow = shadow_ray(hit, light.direction, light.distance);
+                    path.unblocked = throughput_f * light.radiance * (weight / light_pdf);
                 }
             }
         }
-
-        // The next ray would only look for emission: with nothing a ray can hit emitting (delta lights only),
-        // the path ends here with the same result and without that ray.
-        if (depth + 1 >= settings_.max_depth && !scene.emission_can_be_hit()) break;
-
-        // Continue the path by sampling the BSDF.
-        const std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction);
-        if (!scattered || scattered->pdf <= 0 || scattered->weight.is_black()) break;
-        const Vec3f direction = normalize(frame.to_world(scattered->wi));
-        if (!sides_agree(direction, hit.geometric_normal, scattered->wi.z)) break;
-        throughput *= scattered->weight;
-        // Every later contribution is a multiple of the throughput: a black one ends the path with the same result
-        // (a green path after a red bounce), so its remaining rays are not traced.
-        if (throughput.is_black()) break;
-        if (scattered->is_transmission) eta_scale *= scattered->eta * scattered->eta;
-        previous_was_delta = scattered->is_delta;
-        previous_pdf = scattered->pdf;
-        previous_point = hit.position;
-        ray = Ray{hit.spawn_origin(direction), direction, 0, std::numeric_limits<float>::infinity(), hit.footprint,
-                  scattered_cone_spread(ray.cone_spread, *scattered)};
-
-        if (depth + 1 >= settings_.russian_roulette_depth) {
-            const float survival = std::min(1.0f, throughput.max() * eta_scale);
-            if (!(u_roulette < survival)) break;
-            throughput *= 1.0f / survival;
-        }
     }
-    return result;
+
+    // The next ray would only look for emission: with nothing a ray can hit emitting (delta lights only),
+    // the path ends here with the same result and without that ray.
+    if (depth + 1 >= settings_.max_depth && !scene.emission_can_be_hit()) return false;
+
+    // Continue the path by sampling the BSDF.
+    const std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction);
+    if (!scattered || scattered->pdf <= 0 || scattered->weight.is_black()) return false;
+    const Vec3f direction = normalize(frame.to_world(scattered->wi));
+    if (!sides_agree(direction, hit.geometric_normal, scattered->wi.z)) return false;
+    path.throughput *= scattered->weight;
+    // Every later contribution is a multiple of the throughput: a black one ends the path with the same result
+    // (a green path after a red bounce), so its remaining rays are not traced.
+    if (path.throughput.is_black()) return false;
+    if (scattered->is_transmission) path.eta_scale *= scattered->eta * scattered->eta;
+    path.previous_was_delta = scattered->is_delta;
+    path.previous_pdf = scattered->pdf;
+    path.previous_point = hit.position;
+    ray = Ray{hit.spawn_origin(direction), direction, 0, std::numeric_limits<float>::infinity(), hit.footprint,
+              scattered_cone_spread(ray.cone_spread, *scattered)};
+    path.depth = depth + 1;
+
+    if (depth + 1 >= settings_.russian_roulette_depth) {
+        const float survival = std::min(1.0f, path.throughput.max() * path.eta_scale);
+        if (!(u_roulette < survival)) return false;
+        path.throughput *= 1.0f / survival;
+    }
+    return true;
+}
+
+void PathIntegrator::add_unblocked(Path& path) const {
+    Contributions(path.result, settings_.clamp).add(path.unblocked);
+}
+
+Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
+                             PrimaryHitRecord& primary) const {
+    Ray ray = camera_ray, shadow;
+    Path path(ray);
+    for (bool continues = true; continues;) {
+        const RayKind kind = path.depth == 0 ? RayKind::Camera : RayKind::Secondary;
+        continues = bounce(path, ray, shadow, scene.intersect(ray, kind), scene, samples, primary);
+        if (path.casts_shadow && !scene.occluded(shadow)) add_unblocked(path);
+    }
+    return path.result;
 }
 
 std::size_t PathIntegrator::samples_traced_together(const RenderScene& scene) const {
     static_assert(kLanes <= kMaxSamplesTogether && kLanes <= SampleStream::kMaxStreamsTogether);
-    return scene.flat_lambertian() ? std::size_t(kLanes) : 1;
+    (void)scene;
+    return kLanes;
 }
 
 std::string PathIntegrator::packet_description(const RenderScene& scene) const {
-    if (!scene.flat_lambertian()) return "";
+    if (!scene.flat_lambertian())
+        return std::to_string(kLanes) + " samples of a pixel as paths in step, each ray kind one packet query";
     return std::to_string(kLanes) + " samples of a pixel in SIMD lanes (flat Lambertian scene), " +
            flat_lambertian_kernel_name() + " kernel";
 }
 
+// The paths of a pixel's samples advance in step, one bounce each per round (their depths stay equal), so that each
+// round's rays are one packet query and their shadow rays another: Embree traverses its tree once for the packet,
+// which costs less than once per ray when the rays are alike, as a pixel's are. Each path does what radiance() does,
+// in the same order, so its result does not depend on its companions.
 void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
                                          std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                          std::span<Rgb> radiance) const {
-    if (const FlatLambertianScene* flat = scene.flat_lambertian())
+    if (const FlatLambertianScene* flat = scene.flat_lambertian()) {
         flat_lambertian_kernel()(settings_, camera_rays, scene, *flat, samples, primary, radiance);
-    else
-        Integrator::radiance_of_samples(camera_rays, scene, samples, primary, radiance);
+        return;
+    }
+    const std::size_t count = camera_rays.size();
+    std::array<std::optional<Path>, kLanes> paths;
+    std::array<Ray, kLanes> rays, shadows;
+    std::array<std::optional<SurfaceHit>, kLanes> hits;
+    unsigned live = 0;
+    for (std::size_t lane = 0; lane < count; ++lane) {
+        rays[lane] = camera_rays[lane];
+        paths[lane].emplace(rays[lane]);
+        live |= 1u << lane;
+    }
+    for (int depth = 0; live; ++depth) {
+        scene.intersect(std::span(rays.data(), count), live, depth == 0 ? RayKind::Camera : RayKind::Secondary,
+                        std::span(hits));
+        unsigned casting = 0, continuing = 0;
+        for (unsigned lanes = live; lanes; lanes &= lanes - 1) {
+            const int lane = std::countr_zero(lanes);
+            Path& path = *paths[lane];
+            if (bounce(path, rays[lane], shadows[lane], hits[lane], scene, samples[lane], primary[lane]))
+                continuing |= 1u << lane;
+            if (path.casts_shadow) casting |= 1u << lane;
+        }
+        if (casting) {
+            const unsigned reached = casting & ~scene.occluded(std::span(shadows.data(), count), casting);
+            for (unsigned lanes = reached; lanes; lanes &= lanes - 1) add_unblocked(*paths[std::countr_zero(lanes)]);
+        }
+        live = continuing;
+    }
+    for (std::size_t lane = 0; lane < count; ++lane) radiance[lane] = paths[lane]->result;
 }
 
 std::map<std::string, std::string> PathIntegrator::settings() const {

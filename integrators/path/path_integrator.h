@@ -4,6 +4,7 @@
 // clamping of each contribution (off by default; recorded in the image metadata when on).
 // With max_depth = 1 it computes direct lighting only (registered as "direct").
 #include <map>
+#include <optional>
 #include <string>
 
 #include "renderer/plugin/integrator.h"
@@ -21,8 +22,9 @@ public:
     explicit PathIntegrator(const PathSettings& settings) : settings_(settings) {}
     Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                  PrimaryHitRecord& primary) const override;
-    // On flat Lambertian scenes (RenderScene::flat_lambertian()) eight samples are traced together, paths in SIMD
-    // lanes (flat_lambertian_packets.h), with radiance()'s results; elsewhere one at a time.
+    // Eight samples of a pixel are traced together, with radiance()'s results: on flat Lambertian scenes
+    // (RenderScene::flat_lambertian()) as paths in SIMD lanes (flat_lambertian_packets.h), elsewhere as paths in
+    // step whose rays are packet queries.
     std::size_t samples_traced_together(const RenderScene& scene) const override;
     std::string packet_description(const RenderScene& scene) const override;
     void radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene, std::span<SampleStream> samples,
@@ -30,7 +32,16 @@ public:
     std::map<std::string, std::string> settings() const override;
 
 private:
+    struct Path;
     PathSettings settings_;
+
+    // One bounce of `path` at what its ray `ray` found: gathers emission there (or escaped light), sets `shadow` to
+    // the shadow ray of next-event estimation (when Path::casts_shadow), and samples the next ray into `ray`; false
+    // when the path ends there.
+    bool bounce(Path& path, Ray& ray, Ray& shadow, const std::optional<SurfaceHit>& found, const RenderScene& scene,
+                SampleStream& samples, PrimaryHitRecord& primary) const;
+    // Adds what the bounce's shadow ray brings, once the caller found it unblocked.
+    void add_unblocked(Path& path) const;
 };
 
 }  // namespace isotrace

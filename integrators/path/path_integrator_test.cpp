@@ -1,9 +1,11 @@
 // Known answers for the path tracer: white furnaces, a glowing sphere seen from inside, direct lighting from a
-// small area light against the closed-form irradiance, and the 1/spp fall of the squared error.
+// small area light against the closed-form irradiance, and the 1/spp fall of the squared error; and a pixel's
+// samples traced in step giving each sample's own bits.
 #include "integrators/path/path_integrator.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -14,6 +16,7 @@
 #include "renderer/render/tile_renderer.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/scene/loaded_scene.h"
+#include "tests/support/samples_together.h"
 #include "tests/support/scene_files.h"
 
 namespace isotrace {
@@ -327,6 +330,39 @@ TEST(PathIntegrator, TracesNothingMoreOnceTheThroughputIsBlack) {
         EXPECT_EQ(image.rgb[p * 3 + 2], 0.0f);
     }
 }
+
+}  // namespace
+}  // namespace isotrace
+
+namespace isotrace {
+namespace {
+
+class SamplesInStep : public ::testing::TestWithParam<std::string> {};
+
+// Off the flat Lambertian class a pixel's samples are traced as paths in step whose rays are packet queries (user
+// geometries answering packets, placements, area and environment lights, delta and layered BSDFs): each sample must
+// keep radiance()'s bits, its AOV record and the sampler dimensions it took, whatever its companions, for groups of
+// eight and a shorter last one.
+TEST_P(SamplesInStep, GiveEachSampleRadiancesBits) {
+    const auto loaded = load_scene(std::string(ISOTRACE_SCENES_DIR) + "/" + GetParam() + ".json");
+    ASSERT_EQ(loaded->scene->flat_lambertian(), nullptr);
+    ASSERT_EQ(loaded->integrator->samples_traced_together(*loaded->scene), 8u);
+    const int width = loaded->film.raster.width, height = loaded->film.raster.height;
+    std::vector<std::array<int, 2>> pixels;
+    for (int y = height / 10; y < height; y += height / 5)
+        for (int x = width / 14; x < width; x += width / 7) pixels.push_back({x, y});
+    const int lit = testing::expect_groups_match_single_paths(
+        *loaded, pixels, 11,
+        [&](std::span<const Ray> rays, std::span<SampleStream> streams, std::span<PrimaryHitRecord> primary,
+            std::span<Rgb> radiance) {
+            loaded->integrator->radiance_of_samples(rays, *loaded->scene, streams, primary, radiance);
+        });
+    EXPECT_GT(lit, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, SamplesInStep,
+                         ::testing::Values("primitives", "materials", "csg_cup", "metacube_dog", "instances",
+                                           "lookdev", "showcase"));
 
 }  // namespace
 }  // namespace isotrace

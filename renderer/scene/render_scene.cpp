@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -222,6 +223,44 @@ void RenderScene::commit() {
     build_statistics_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+namespace {
+
+// Embree stores the hit's fields one by one: each is read alone (a volatile load is never merged with its
+// neighbours), since a wider load would span several of those stores and wait until they are written (a failed
+// store forwarding).
+float alone(const float& field) { return *static_cast<const volatile float*>(&field); }
+
+// Writes the rays of the `live` lanes that Embree can trace (is_traceable) into `query` and marks them valid;
+// counts the others and returns their lanes.
+unsigned set_packet(std::span<const Ray> rays, unsigned live, RTCRay8& query, std::array<std::int32_t, 8>& valid) {
+    unsigned untraceable = 0;
+    for (unsigned lanes = live; lanes; lanes &= lanes - 1) {
+        const int lane = std::countr_zero(lanes);
+        const Ray& ray = rays[std::size_t(lane)];
+        if (!is_traceable(ray)) [[unlikely]] {
+            untraceable |= 1u << lane;
+            continue;
+        }
+        valid[std::size_t(lane)] = -1;
+        query.org_x[lane] = ray.origin.x;
+        query.org_y[lane] = ray.origin.y;
+        query.org_z[lane] = ray.origin.z;
+        query.dir_x[lane] = ray.direction.x;
+        query.dir_y[lane] = ray.direction.y;
+        query.dir_z[lane] = ray.direction.z;
+        query.tnear[lane] = ray.t_near;
+        query.tfar[lane] = ray.t_far;
+        query.mask[lane] = 0xFFFFFFFFu;  // every geometry is seen (Debian's Embree has ray masks on)
+        query.time[lane] = 0;
+        query.id[lane] = 0;
+        query.flags[lane] = 0;
+    }
+    if (untraceable) [[unlikely]] RenderScene::count_untraceable_rays(std::uint64_t(std::popcount(untraceable)));
+    return untraceable;
+}
+
+}  // namespace
+
 std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) const {
     counters::count_ray(kind);
     // Every return returns this one object, so that it is built where the caller receives it (a hit built apart
@@ -229,10 +268,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     std::optional<SurfaceHit> found;
     QueryContext context(scratch_pool_);
     RTCRayHit query;  // set_embree_ray writes the whole ray; Embree reads only geomID and instID of the hit
-    // The path tracer stores a ray's fields one or two at a time just before asking, and Embree stores the hit's
-    // one by one: each is read alone (a volatile load is never merged with its neighbours), since a wider load would
-    // span several of those stores and wait until they are written (a failed store forwarding).
-    const auto alone = [](const float& field) { return *static_cast<const volatile float*>(&field); };
+    // The path tracer stores a ray's fields one or two at a time just before asking: each is read alone (above).
     const Ray fields{{alone(ray.origin.x), alone(ray.origin.y), alone(ray.origin.z)},
                      {alone(ray.direction.x), alone(ray.direction.y), alone(ray.direction.z)},
                      alone(ray.t_near), alone(ray.t_far)};
@@ -245,19 +281,73 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context.embree, &query);
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return found;
+    complete_hit(ray, query.hit, query.ray.tfar, found);
+    return found;
+}
 
+void RenderScene::intersect(std::span<const Ray> rays, unsigned live, RayKind kind,
+                            std::span<std::optional<SurfaceHit>> found) const {
+    if (std::has_single_bit(live)) {  // a packet of one costs more than the ray alone
+        for (std::size_t lane = 0; lane < rays.size(); ++lane) found[lane].reset();
+        const auto lane = std::size_t(std::countr_zero(live));
+        found[lane] = intersect(rays[lane], kind);
+        return;
+    }
+    counters::count_rays(kind, std::uint64_t(std::popcount(live)));
+    QueryContext context(scratch_pool_);
+    RTCRayHit8 query;  // Embree reads only the valid lanes
+    alignas(32) std::array<std::int32_t, 8> valid{};
+    set_packet(rays, live, query.ray, valid);  // an untraceable ray misses
+    for (std::size_t lane = 0; lane < rays.size(); ++lane) {
+        found[lane].reset();
+        query.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        query.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect8(valid.data(), scene_, &context.embree, &query);
+    for (std::size_t lane = 0; lane < rays.size(); ++lane) {
+        if (!valid[lane] || query.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
+        RTCHit hit;
+        hit.Ng_x = query.hit.Ng_x[lane];
+        hit.Ng_y = query.hit.Ng_y[lane];
+        hit.Ng_z = query.hit.Ng_z[lane];
+        hit.u = query.hit.u[lane];
+        hit.v = query.hit.v[lane];
+        hit.primID = query.hit.primID[lane];
+        hit.geomID = query.hit.geomID[lane];
+        hit.instID[0] = query.hit.instID[0][lane];
+        complete_hit(rays[lane], hit, query.ray.tfar[lane], found[lane]);
+    }
+}
+
+unsigned RenderScene::occluded(std::span<const Ray> rays, unsigned live) const {
+    if (std::has_single_bit(live)) {  // as for intersect
+        const int lane = std::countr_zero(live);
+        return occluded(rays[std::size_t(lane)]) ? live : 0u;
+    }
+    counters::count_rays(RayKind::Shadow, std::uint64_t(std::popcount(live)));
+    QueryContext context(scratch_pool_);
+    RTCRay8 query;  // Embree reads only the valid lanes
+    alignas(32) std::array<std::int32_t, 8> valid{};
+    unsigned blocked = set_packet(rays, live, query, valid);  // no light arrives along an untraceable ray
+    rtcOccluded8(valid.data(), scene_, &context.embree, &query);
+    for (std::size_t lane = 0; lane < rays.size(); ++lane)
+        if (valid[lane] && query.tfar[lane] == -std::numeric_limits<float>::infinity()) blocked |= 1u << lane;
+    return blocked;
+}
+
+void RenderScene::complete_hit(const Ray& ray, const RTCHit& embree_hit, float t,
+                               std::optional<SurfaceHit>& found) const {
     // A placement array's hit names the placement in instID[0] (PlacementArray::intersect).
-    const TracedGeometry& traced = traced_[query.hit.geomID];
-    const std::uint32_t placement = traced.placements ? query.hit.instID[0] : 0;
+    const TracedGeometry& traced = traced_[embree_hit.geomID];
+    const std::uint32_t placement = traced.placements ? embree_hit.instID[0] : 0;
     const SceneObject& object = traced.placements ? traced.placements->variant_of(placement) : *traced.object;
     const std::uint32_t object_index = traced.id + placement;
     counters::count_closest_hit(object.counter_slot);
 
     // The normal is read a float at a time, and the result is built once from registers rather than in pieces on
     // the stack.
-    const float t = query.ray.tfar;
     const Vec3f embree_ng =
-        safe_normalize(Vec3f(alone(query.hit.Ng_x), alone(query.hit.Ng_y), alone(query.hit.Ng_z)), {0, 0, 1});
+        safe_normalize(Vec3f(alone(embree_hit.Ng_x), alone(embree_hit.Ng_y), alone(embree_hit.Ng_z)), {0, 0, 1});
     const PlacementRecord* record = traced.placements ? &traced.placements->record(placement) : nullptr;
     std::optional<Transform> computed;  // a placed copy's, computed from its record
     const Transform& to_world = record ? computed.emplace(to_world_of_record(*record)) : object.to_world;
@@ -265,12 +355,12 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
         // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
         const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
         const Vec3d local_point = object.instanced ? to_world.inverse_point(world_point) : world_point;
-        return object.shape->shading(query.hit, embree_ng, local_point);
+        return object.shape->shading(embree_hit, embree_ng, local_point);
     };
     const LocalShading local =
         object.hit_shading == HitShading::Computed
             ? shape_shading()
-            : shading_of_embree_hit(query.hit, embree_ng, object.hit_shading == HitShading::EmbreeHitSwappedUv);
+            : shading_of_embree_hit(embree_hit, embree_ng, object.hit_shading == HitShading::EmbreeHitSwappedUv);
     Vec3f geometric_normal = local.geometric_normal, shading_normal = local.normal;
     Vec3f dpdu = local.dpdu, dpdv = local.dpdv;
     if (object.instanced) {  // the hit's Ng is in the shape's space
@@ -289,7 +379,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     hit.shading_normal = shading_normal;
     hit.uv = local.uv;
     hit.object_index = object_index;
-    hit.primitive_id = query.hit.primID;
+    hit.primitive_id = embree_hit.primID;
     hit.material = local.blend.count > 0 && object.blended_material ? object.blended_material
                                                                     : object.material_of_part(local.part);
     hit.position_error = position_error;
@@ -300,7 +390,6 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray, RayKind kind) c
     hit.placement = record;
     hit.blend = local.blend;
     if (hit.material) hit.material->perturb_normal(hit);
-    return found;
 }
 
 void RenderScene::count_untraceable_rays(std::uint64_t count) {

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -98,6 +99,13 @@ public:
     void commit();
 
     std::optional<SurfaceHit> intersect(const Ray& ray, RayKind kind) const;
+    // Up to eight rays (found.size() >= rays.size() <= 8) as one Embree packet query, for the lanes whose bit is set
+    // in `live`: found[lane] is what intersect(rays[lane], kind) gives, bit for bit; the other lanes' are reset. User
+    // geometries answer the packet lane by lane.
+    void intersect(std::span<const Ray> rays, unsigned live, RayKind kind,
+                   std::span<std::optional<SurfaceHit>> found) const;
+    // The lanes of `live` whose shadow rays occluded(rays[lane]) finds blocked, as one packet query.
+    unsigned occluded(std::span<const Ray> rays, unsigned live) const;
     // The hit's position error bound is this times (the largest |coordinate| of the hit + t |direction|).
     static constexpr float kPositionErrorScale = 64.0f * std::numeric_limits<float>::epsilon();
     // Inline: the path tracer builds a shadow ray just before asking, and through a call the ray went to memory
@@ -197,6 +205,8 @@ private:
     // The buffers of queries that reach solids (CSG, superquadrics, ...), lent to them through QueryContext.
     mutable QueryScratchPool scratch_pool_;
 
+    // The SurfaceHit of Embree's hit at distance t along `ray`.
+    void complete_hit(const Ray& ray, const RTCHit& embree_hit, float t, std::optional<SurfaceHit>& found) const;
     RTCScene new_shape_scene(RTCGeometry geometry);
     void attach(RTCGeometry geometry, const TracedGeometry& traced, const std::string& name);
     void build_lights();

@@ -5,9 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <random>
 
 #include "geometry/mesh/triangle_mesh_shape.h"
@@ -199,6 +203,54 @@ TEST(RenderScene, UntraceableLanesOfPacketsMissAndAreBlocked) {
             EXPECT_EQ(shadow.tfar[lane], -std::numeric_limits<float>::infinity()) << bad_lane << " " << lane;
         }
     }
+}
+
+// The path tracer's packet queries: every live lane gets what the query of its ray alone gives, bit for bit (user
+// geometries, an instanced one and a mesh, answering packets lane by lane; a lone live lane as a one-ray query);
+// lanes not live are left out (neither traced nor counted), untraceable ones miss and are blocked.
+TEST(RenderScene, PacketQueriesAnswerEachLaneAsItsOwnQueryDoes) {
+    const auto scene = mixed_scene();
+    const std::vector<Ray> bad = untraceable_rays();
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> coordinate(-6, 6);
+    int hits = 0;
+    for (int round = 0; round < 200; ++round) {
+        std::array<Ray, 8> rays;
+        const Vec3f origin{coordinate(random), 4, coordinate(random)};  // alike, as a pixel's rays are
+        for (std::size_t lane = 0; lane < 8; ++lane) {
+            rays[lane] = ray_between(origin, Vec3f{coordinate(random), -1, coordinate(random)} - origin);
+            rays[lane].t_far = round % 2 ? 1.0f : std::numeric_limits<float>::infinity();
+        }
+        if (round % 5 == 0) rays[std::size_t(round / 5 % 8)] = bad[std::size_t(round / 5 % 8)];
+        const unsigned live = round % 3 == 0 ? 0b10110101u : round % 3 == 1 ? 0xFFu : 1u << (round / 3 % 8);
+        std::array<std::optional<SurfaceHit>, 8> found;
+        const std::uint64_t rays_before = counters::totals().secondary_rays;
+        scene->intersect(rays, live, RayKind::Secondary, found);
+        EXPECT_EQ(counters::totals().secondary_rays - rays_before, std::uint64_t(std::popcount(live)));
+        const unsigned blocked = scene->occluded(rays, live);
+        for (std::size_t lane = 0; lane < 8; ++lane) {
+            SCOPED_TRACE("round " + std::to_string(round) + ", lane " + std::to_string(lane));
+            if (!(live >> lane & 1u)) {
+                EXPECT_FALSE(found[lane].has_value());
+                EXPECT_FALSE(blocked >> lane & 1u);
+                continue;
+            }
+            const std::optional<SurfaceHit> alone = scene->intersect(rays[lane], RayKind::Secondary);
+            ASSERT_EQ(found[lane].has_value(), alone.has_value());
+            EXPECT_EQ(bool(blocked >> lane & 1u), scene->occluded(rays[lane]));
+            if (!alone) continue;
+            ++hits;
+            EXPECT_EQ(std::bit_cast<std::uint32_t>(found[lane]->t), std::bit_cast<std::uint32_t>(alone->t));
+            EXPECT_EQ(found[lane]->position, alone->position);
+            EXPECT_EQ(found[lane]->geometric_normal, alone->geometric_normal);
+            EXPECT_EQ(found[lane]->shading_normal, alone->shading_normal);
+            EXPECT_EQ(found[lane]->uv, alone->uv);
+            EXPECT_EQ(found[lane]->object_index, alone->object_index);
+            EXPECT_EQ(found[lane]->primitive_id, alone->primitive_id);
+            EXPECT_EQ(found[lane]->position_error, alone->position_error);
+        }
+    }
+    EXPECT_GT(hits, 500);
 }
 
 // Packets of a scene that is not flat Lambertian read that scene's counter slot from an empty optional: garbage,

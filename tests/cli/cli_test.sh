@@ -1946,13 +1946,40 @@ case_diff_ztest() {  # an unbiased 64-spp render passes against a 1024-spp refer
   cli_expect 2 diff --ztest "$work/ref.exr" "$work/test.exr" --fail flip=0.1
 }
 
+# tools/convergence: a ladder per scene and build, its errors against a cached reference, the time to an error, the
+# log-log plot; bad arguments are exit 2.
+case_convergence_tool() {
+  python3 tools/convergence "$cornell" box+speck --builds "one=$cli,two=$cli" --res 16x16 --spp-ladder 1,2,4 \
+    --reference-spp 16 --threads 1 --cache "$work/cache" --plot "$work/plot.svg" --json "$work/c.json" \
+    >"$work/stdout" 2>"$work/stderr" || { cat "$work/stderr" >&2; fail "tools/convergence failed"; }
+  expect_in "$work/stdout" "scenes/cornell_box.json:" stdout
+  expect_in "$work/stdout" "box+speck:" stdout
+  expect_in "$work/stdout" "x one's" stdout
+  grep -q "<polyline" "$work/plot.svg" || fail "no lines in the plot"
+  (($(ls "$work/cache" | grep -c '\.exr$') == 2)) || fail "not one cached reference per scene"
+  python3 - "$work/c.json" <<'PY' || fail "JSON: not three rungs per build with errors falling from 1 to 4 spp"
+import json, sys
+results = json.load(open(sys.argv[1]))["results"]
+assert len(results) == 2
+for result in results:
+    for rows in result["builds"].values():
+        assert [r["spp"] for r in rows] == [1, 2, 4]
+        assert rows[0]["rms_error"] > rows[2]["rms_error"] > 0
+PY
+  local status=0
+  python3 tools/convergence "$cornell" --builds "$cli" --spp-ladder 4 --cache "$work/cache" >/dev/null 2>&1 || status=$?
+  ((status == 2)) || fail "a ladder of one rung is not refused with exit 2 (exit $status)"
+}
+
 # Reference mode: the stop at the target error is decided at pass boundaries, so the image is the same for any
 # thread count and tile size, and --spp with the samples it stopped at renders the same pixels again.
 case_reference_mode() {
   write_two_balls_scene "$work/scene.json" 0.5
   cli_expect 0 render "$work/scene.json" --reference --target-error 0.02 --seed 1 --threads 1 -o "$work/a.exr"
   sed 's/^/  stderr: /' "$work/stderr" >&2
-  expect_in "$work/stderr" "isotrace: 1 spp: estimated relative error inf (target 0.02, checked from 64 spp)"
+  # The path tracer traces a pixel's samples eight at a time, so its first pass ends at 8 spp.
+  expect_in "$work/stderr" "isotrace: 8 spp: estimated relative error "
+  expect_in "$work/stderr" "(target 0.02, checked from 64 spp)"
   expect_in "$work/stderr" "(target 0.02): reached"
   cli_expect 0 render "$work/scene.json" --reference --target-error 0.02 --seed 1 --threads 2 --tile-size 5 \
     --quiet -o "$work/b.exr"
