@@ -16,11 +16,13 @@ constexpr double kClearance = 16;
 
 }  // namespace
 
+// An operand placed by a transform it kept is left alone: distances change under it.
+bool CsgShape::operand_certainly_outside(const Operand& operand, const Vec3d& point, double distance) {
+    return !operand.from_csg && operand.solid->certainly_outside(point, distance);
+}
+
 bool CsgShape::certainly_outside(const Vec3d& point, double distance) const {
-    // An operand placed by a transform it kept is left alone: distances change under it.
-    const auto outside = [&](const Operand& operand) {
-        return !operand.from_csg && operand.solid->certainly_outside(point, distance);
-    };
+    const auto outside = [&](const Operand& operand) { return operand_certainly_outside(operand, point, distance); };
     switch (operation_) {
         case CsgOperation::Union: return std::all_of(operands_.begin(), operands_.end(), outside);
         case CsgOperation::Intersection: return std::any_of(operands_.begin(), operands_.end(), outside);
@@ -47,7 +49,7 @@ std::optional<BoundaryPoint> CsgShape::first_surface_point(const Vec3d& origin, 
             const double clearance =
                 kClearance * kCoincidentRelative * (std::abs(enter.t) * length(direction) + length(point));
             const auto clear = [&](const Operand& operand) {
-                return !operand.from_csg && operand.solid->certainly_outside(point, clearance);
+                return operand_certainly_outside(operand, point, clearance);
             };
             if (std::all_of(operands_.begin() + 1, operands_.end(), clear)) {
                 BoundaryPoint result = enter;

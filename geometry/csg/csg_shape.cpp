@@ -142,26 +142,25 @@ void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double 
 }
 
 void CsgShape::combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                                  std::vector<InsideSpan>& first, std::vector<SpanEvent>& events,
+                                  std::vector<InsideSpan>& operand_buffer, std::vector<SpanEvent>& events,
                                   std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
     events.clear();
     const bool narrows = operation_ != CsgOperation::Union;  // the result lies within the first child's spans
-    std::vector<InsideSpan>& buffer = first;
     for (std::uint32_t i = 0; i < operands_.size(); ++i) {
         const Operand& operand = operands_[i];
-        if (i > 0) operand_spans(operand, origin, direction, t_min, t_max, buffer, scratch);
+        if (i > 0) operand_spans(operand, origin, direction, t_min, t_max, operand_buffer, scratch);
         const bool bounds_result = operation_ == CsgOperation::Intersection || i == 0;
         if (narrows && bounds_result) {
-            if (buffer.empty()) return;
+            if (operand_buffer.empty()) return;
             // Later children only matter where this one is inside, give or take the tolerance within which span
             // ends are simultaneous: a later child's surface that coincides with this one's end must be seen as
             // a surface there, not as a query that starts or ends exactly on it (where the side it is on is a
             // matter of rounding).
-            const BoundaryPoint &enter = buffer.front().enter, &exit = buffer.back().exit;
+            const BoundaryPoint &enter = operand_buffer.front().enter, &exit = operand_buffer.back().exit;
             t_min = std::max(t_min, enter.t - coincidence_tolerance(enter));
             t_max = std::min(t_max, exit.t + coincidence_tolerance(exit));
         }
-        append_span_events(i, operand.first_part, buffer, events);
+        append_span_events(i, operand.first_part, operand_buffer, events);
     }
     counters::add_to_named(span_slots_, std::array<std::uint64_t, 2>{1, events.size()});
     combine_span_events(operation_, std::uint32_t(operands_.size()), events, spans);

@@ -83,10 +83,11 @@ private:
     // The operand's inside spans along a ray given in the CSG's space, with normals and parts in the CSG's terms.
     void operand_spans(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
                        double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
-    // inside_spans, once the first operand's spans (`first`, which is reused as a buffer) are known.
+    // inside_spans, once the first operand's spans are in `operand_buffer` (which then takes the others' in turn).
     void combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                            std::vector<InsideSpan>& first, std::vector<SpanEvent>& events,
+                            std::vector<InsideSpan>& operand_buffer, std::vector<SpanEvent>& events,
                             std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
+    static bool operand_certainly_outside(const Operand& operand, const Vec3d& point, double distance);
 
     CsgOperation operation_;
     std::vector<Operand> operands_;
