@@ -1,10 +1,12 @@
 #pragma once
-// The four number types an expression tape is evaluated in, and every operation of the tape on each:
+// The number types an expression tape is evaluated in, and every operation of the tape on each:
 //   double          the value;
 //   Interval        an interval holding every value over a box;
 //   PointGradient   the value and its gradient (forward-mode derivatives along x, y and z at once);
 //   PointSlope      the value and its derivative along one direction (for Newton steps along a ray);
-//   IntervalSlope   an interval of the value and one of its derivative along a direction, over a box.
+//   IntervalSlope   an interval of the value and one of its derivative along a direction, over a box;
+//   IntervalGradient an interval of the value and one of each partial derivative, over a box (three
+//                   IntervalSlope runs along the axes in one: each partial is computed as that run computes it).
 // The domain rules of docs/expressions.md are defined here once for doubles and once for intervals (whose
 // intervals hold every point value under the same rules); the derivative types apply the chain rule to them.
 #include <algorithm>
@@ -82,6 +84,25 @@ inline Interval settle(Interval a) {
 }
 inline Vec3d settle(const Vec3d& a) { return {settle(a.x), settle(a.y), settle(a.z)}; }
 
+// Three intervals, the partial derivatives' bounds of an IntervalGradient: each operation acts on each alone.
+struct IntervalVec3 {
+    Interval x, y, z;
+};
+inline IntervalVec3 operator+(const IntervalVec3& a, const IntervalVec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline IntervalVec3 operator-(const IntervalVec3& a, const IntervalVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline IntervalVec3 operator-(const IntervalVec3& a) { return {-a.x, -a.y, -a.z}; }
+inline IntervalVec3 operator*(const IntervalVec3& a, Interval b) { return {a.x * b, a.y * b, a.z * b}; }
+inline IntervalVec3 hull(const IntervalVec3& a, const IntervalVec3& b) {
+    return {hull(a.x, b.x), hull(a.y, b.y), hull(a.z, b.z)};
+}
+inline IntervalVec3 settle(const IntervalVec3& a) { return {settle(a.x), settle(a.y), settle(a.z)}; }
+
+// A derivative that no bound holds: every component unbounded.
+template <class D> D unbounded_derivative() {
+    if constexpr (std::is_same_v<D, IntervalVec3>) return {Interval::unbounded(), Interval::unbounded(), Interval::unbounded()};
+    else return Interval::unbounded();
+}
+
 // ---- Derivatives: a value and its derivative d (the gradient, or the slope along a direction).
 template <class V, class D>
 struct Dual {
@@ -91,6 +112,7 @@ struct Dual {
 using PointGradient = Dual<double, Vec3d>;
 using PointSlope = Dual<double, double>;
 using IntervalSlope = Dual<Interval, Interval>;
+using IntervalGradient = Dual<Interval, IntervalVec3>;
 
 template <class V, class D> Dual<V, D> operator+(const Dual<V, D>& a, const Dual<V, D>& b) { return {a.v + b.v, a.d + b.d}; }
 template <class V, class D> Dual<V, D> operator-(const Dual<V, D>& a, const Dual<V, D>& b) { return {a.v - b.v, a.d - b.d}; }
@@ -150,7 +172,7 @@ template <class V, class D> Dual<V, D> cos(const Dual<V, D>& a) { return sin_cos
 template <class V, class D> Dual<V, D> tan(const Dual<V, D>& a) {
     const V t = tan(a.v);
     if constexpr (std::is_same_v<V, Interval>)
-        if (!t.is_finite()) return {t, Interval::unbounded()};
+        if (!t.is_finite()) return {t, unbounded_derivative<D>()};
     return {t, a.d * (square(t) + 1.0)};
 }
 template <class V, class D> Dual<V, D> atan(const Dual<V, D>& a) {
@@ -161,7 +183,7 @@ template <class V, class D> Dual<V, D> atan(const Dual<V, D>& a) {
 // monotone across the jump.
 template <class V, class D> Dual<V, D> atan2(const Dual<V, D>& y, const Dual<V, D>& x) {
     if constexpr (std::is_same_v<V, Interval>)
-        if (meets_atan2_cut(y.v, x.v)) return {atan2(y.v, x.v), Interval::unbounded()};
+        if (meets_atan2_cut(y.v, x.v)) return {atan2(y.v, x.v), unbounded_derivative<D>()};
     return {atan2(y.v, x.v), (y.d * x.v - x.d * y.v) * inverse(square(x.v) + square(y.v))};
 }
 template <class V, class D> Dual<V, D> abs(const Dual<V, D>& a) { return {abs(a.v), a.d * sign(a.v)}; }
@@ -169,12 +191,12 @@ template <class V, class D> Dual<V, D> abs(const Dual<V, D>& a) { return {abs(a.
 // min and max take the derivative of the operand they select; over a box where either may be selected, both.
 template <class D> Dual<double, D> min(const Dual<double, D>& a, const Dual<double, D>& b) { return a.v <= b.v ? a : b; }
 template <class D> Dual<double, D> max(const Dual<double, D>& a, const Dual<double, D>& b) { return a.v >= b.v ? a : b; }
-inline IntervalSlope min(const IntervalSlope& a, const IntervalSlope& b) {
+template <class D> Dual<Interval, D> min(const Dual<Interval, D>& a, const Dual<Interval, D>& b) {
     if (a.v.hi <= b.v.lo) return a;
     if (b.v.hi <= a.v.lo) return b;
     return {min(a.v, b.v), hull(a.d, b.d)};
 }
-inline IntervalSlope max(const IntervalSlope& a, const IntervalSlope& b) {
+template <class D> Dual<Interval, D> max(const Dual<Interval, D>& a, const Dual<Interval, D>& b) {
     if (a.v.lo >= b.v.hi) return a;
     if (b.v.lo >= a.v.hi) return b;
     return {max(a.v, b.v), hull(a.d, b.d)};

@@ -21,8 +21,16 @@ Dual<double, D> noise(const NoiseTerm& term, const Dual<double, D>& x, const Dua
 }
 inline IntervalSlope noise(const NoiseTerm& term, const IntervalSlope& x, const IntervalSlope& y,
                            const IntervalSlope& z) {
-    const NoiseRanges ranges = noise_ranges(term, {x.v, y.v, z.v}, {x.d, y.d, z.d});
-    return {ranges.value, ranges.slope};
+    const NoiseBoxRanges ranges = noise_box_ranges(term, {x.v, y.v, z.v});
+    return {ranges.value, noise_slope_range(term, ranges, {x.d, y.d, z.d})};
+}
+// The box's bounds once, each partial's slope from them as an IntervalSlope run along that axis takes it.
+inline IntervalGradient noise(const NoiseTerm& term, const IntervalGradient& x, const IntervalGradient& y,
+                              const IntervalGradient& z) {
+    const NoiseBoxRanges ranges = noise_box_ranges(term, {x.v, y.v, z.v});
+    return {ranges.value,
+            {noise_slope_range(term, ranges, {x.d.x, y.d.x, z.d.x}), noise_slope_range(term, ranges, {x.d.y, y.d.y, z.d.y}),
+             noise_slope_range(term, ranges, {x.d.z, y.d.z, z.d.z})}};
 }
 
 inline double field(const ImplicitField& f, double x, double y, double z) { return f.value({x, y, z}); }
@@ -35,14 +43,21 @@ Dual<double, D> field(const ImplicitField& f, const Dual<double, D>& x, const Du
 }
 // The slope along the point's own direction of motion when that is one direction (the term's argument is p moved
 // rigidly, say); otherwise the partial derivatives' bounds times the motion's components.
+inline Interval field_slope(const ImplicitField& f, const IntervalBox& box, Interval dx, Interval dy, Interval dz) {
+    if (dx.width() == 0 && dy.width() == 0 && dz.width() == 0) return f.slope_range(box, {dx.lo, dy.lo, dz.lo});
+    return f.slope_range(box, {1, 0, 0}) * dx + f.slope_range(box, {0, 1, 0}) * dy + f.slope_range(box, {0, 0, 1}) * dz;
+}
 inline IntervalSlope field(const ImplicitField& f, const IntervalSlope& x, const IntervalSlope& y,
                            const IntervalSlope& z) {
     const IntervalBox box{x.v, y.v, z.v};
-    if (x.d.width() == 0 && y.d.width() == 0 && z.d.width() == 0)
-        return {f.value_range(box), f.slope_range(box, {x.d.lo, y.d.lo, z.d.lo})};
-    const Interval slope = f.slope_range(box, {1, 0, 0}) * x.d + f.slope_range(box, {0, 1, 0}) * y.d +
-                           f.slope_range(box, {0, 0, 1}) * z.d;
-    return {f.value_range(box), slope};
+    return {f.value_range(box), field_slope(f, box, x.d, y.d, z.d)};
+}
+inline IntervalGradient field(const ImplicitField& f, const IntervalGradient& x, const IntervalGradient& y,
+                              const IntervalGradient& z) {
+    const IntervalBox box{x.v, y.v, z.v};
+    return {f.value_range(box),
+            {field_slope(f, box, x.d.x, y.d.x, z.d.x), field_slope(f, box, x.d.y, y.d.y, z.d.y),
+             field_slope(f, box, x.d.z, y.d.z, z.d.z)}};
 }
 
 template <class N>

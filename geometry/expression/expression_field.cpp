@@ -91,6 +91,14 @@ FieldRanges ExpressionField::value_and_slope_range(const IntervalBox& box, const
     return {result.v, result.d};
 }
 
+IntervalBox ExpressionField::gradient_range(const IntervalBox& box) const {
+    using expression_math::IntervalGradient;
+    const Interval one = Interval::point(1), zero = Interval::point(0);
+    const IntervalGradient result = expression_math::run<IntervalGradient>(
+        *tape_, {box.x, {one, zero, zero}}, {box.y, {zero, one, zero}}, {box.z, {zero, zero, one}});
+    return {result.d.x, result.d.y, result.d.z};
+}
+
 int ExpressionField::tape_length() const { return static_cast<int>(tape_->code.size()); }
 
 std::vector<std::uint8_t> ExpressionField::settled_choices(const IntervalBox& box) const {

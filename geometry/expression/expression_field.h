@@ -48,7 +48,7 @@ struct ExpressionNames {
 };
 
 // The longest tape (scalar instructions after constant folding and common-subexpression elimination) an
-// expression may compile to: the evaluators keep every slot on the stack (at most 32 bytes a slot).
+// expression may compile to: the evaluators keep every slot on the stack (at most 64 bytes a slot).
 constexpr int kMaxExpressionTape = 1024;
 
 class ExpressionField final : public ImplicitField {
@@ -71,6 +71,8 @@ public:
     Interval slope_range(const IntervalBox& box, const Vec3d& direction) const override;
     // Both from one run of the tape: value_range's interval (bit for bit) and slope_range's.
     FieldRanges value_and_slope_range(const IntervalBox& box, const Vec3d& direction) const override;
+    // The three slope_range intervals along the axes (bit for bit) from one run of the tape.
+    IntervalBox gradient_range(const IntervalBox& box) const override;
 
     // The number of instructions of the compiled tape.
     int tape_length() const;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/expression/expression_compiler.h"
+#include "geometry/expression/random_box_test_support.h"
 
 #include <cmath>
 #include <numbers>
@@ -232,6 +233,9 @@ TEST(ExpressionField, IntervalsHoldEverySampledValueAndSlope) {
                 ASSERT_TRUE(both.value.lo == range.lo && both.value.hi == range.hi) << text;
                 ASSERT_TRUE(both.slope.lo == slope.lo && both.slope.hi == slope.hi) << text;
             }
+            // One run for the three partial derivatives gives the slopes along the axes bit for bit.
+            const IntervalBox partials = field->gradient_range(box), axes = field->ImplicitField::gradient_range(box);
+            for (int k = 0; k < 3; ++k) ASSERT_TRUE(partials[k].lo == axes[k].lo && partials[k].hi == axes[k].hi) << text;
             ASSERT_FALSE(std::isnan(range.lo) || std::isnan(range.hi) || std::isnan(slope.lo) || std::isnan(slope.hi))
                 << text;
             for (int sample = 0; sample < 300; ++sample) {
@@ -246,6 +250,37 @@ TEST(ExpressionField, IntervalsHoldEverySampledValueAndSlope) {
                 const double d = dot(g, direction);
                 EXPECT_TRUE(slope.lo - 1e-9 * (1 + std::abs(d)) <= d && d <= slope.hi + 1e-9 * (1 + std::abs(d)))
                     << text << ": slope " << d << " outside [" << slope.lo << ", " << slope.hi << "]";
+            }
+        }
+    }
+}
+
+// Noises and field terms in the run of the three partial derivatives: each partial as the slope along its axis,
+// bit for bit, and every sampled partial derivative inside its interval.
+TEST(ExpressionField, TheThreePartialsOfOneRunAreTheSlopesAlongTheAxes) {
+    ExpressionNames names;
+    names.fields["ball"] = compiled("length(p) - 1");
+    const char* const cases[] = {"length(p*vec(1, 1.3, 1)) - 0.62 + 0.15*fbm(2.5*p, 4)", "turbulence(3*p, 3) - 0.4",
+                                 "noise(4*vec(x*y, y, z)) + cellular(2*p)", "ball(vec(x, 2 * y, z)) + 0.5",
+                                 "ball(vec(x*y, y + z, sin(z))) - x"};
+    std::mt19937_64 random(5);
+    for (const char* text : cases) {
+        const auto field = compiled(text, names);
+        for (int trial = 0; trial < 40; ++trial) {
+            const IntervalBox box = random_box(random, 1.5, trial < 20 ? 0.03 : 0.6);
+            const IntervalBox partials = field->gradient_range(box), axes = field->ImplicitField::gradient_range(box);
+            for (int k = 0; k < 3; ++k) {
+                ASSERT_TRUE(partials[k].lo == axes[k].lo && partials[k].hi == axes[k].hi) << text << ", partial " << k;
+                ASSERT_FALSE(std::isnan(partials[k].lo) || std::isnan(partials[k].hi)) << text;
+            }
+            for (int sample = 0; sample < 50; ++sample) {
+                const Vec3d g = field->gradient(random_point(random, box));  // a noise's: central differences
+                for (int k = 0; k < 3; ++k) {
+                    const double tolerance = 1e-3 * (1 + std::abs(g[k]));
+                    EXPECT_TRUE(partials[k].lo - tolerance <= g[k] && g[k] <= partials[k].hi + tolerance)
+                        << text << ": partial " << k << " " << g[k] << " outside [" << partials[k].lo << ", "
+                        << partials[k].hi << "]";
+                }
             }
         }
     }

@@ -124,9 +124,9 @@ OctaveSumBounds octave_sum_bounds(const NoiseTerm& term, const IntervalBox& box)
             gradient = bounds->gradient;
         } else {
             // Too many cells: the centre's value ± L × the half-diagonal.
-            if (const auto at_centre = gradient_noise_bounds(IntervalBox::point(turned_centre), octave.seed)) {
+            if (const auto at_centre = gradient_noise_value_at(turned_centre, octave.seed)) {
                 const double reach = kGradientNoiseLipschitz * std::sqrt(half_diagonal_squared);
-                value = intersect({at_centre->value.lo - reach, at_centre->value.hi + reach}, value);
+                value = intersect({at_centre->lo - reach, at_centre->hi + reach}, value);
             }
             sum.reach += octave.weight * kGradientNoiseLipschitz * octave.frequency;
         }
@@ -244,24 +244,25 @@ bool is_finite(const IntervalBox& box) { return box.x.is_finite() && box.y.is_fi
 
 }  // namespace
 
-Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box) {
+NoiseBoxRanges noise_box_ranges(const NoiseTerm& term, const IntervalBox& box) {
     double size = 0;
     const Interval lipschitz_range = lipschitz_value_range(term, box, size);
-    if (term.octaves.empty() || !is_finite(box)) return lipschitz_range;
-    return value_within(term, octave_sum_bounds(term, box), size, lipschitz_range);
+    if (term.octaves.empty() || !is_finite(box)) return {lipschitz_range, std::nullopt};
+    const OctaveSumBounds bounds = octave_sum_bounds(term, box);
+    return {value_within(term, bounds, size, lipschitz_range), bounds.gradient, bounds.reach};
 }
 
-NoiseRanges noise_ranges(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion) {
-    double size = 0, speed_squared = 0;
-    const Interval lipschitz_range = lipschitz_value_range(term, box, size);
+Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box) { return noise_box_ranges(term, box).value; }
+
+Interval noise_slope_range(const NoiseTerm& term, const NoiseBoxRanges& ranges, const IntervalBox& motion) {
+    double speed_squared = 0;
     for (int k = 0; k < 3; ++k) speed_squared += motion[k].magnitude().hi * motion[k].magnitude().hi;
     const double speed = std::sqrt(speed_squared);
     const Interval lipschitz_slope{-term.lipschitz * speed, term.lipschitz * speed};
-    if (term.octaves.empty() || !std::isfinite(speed) || !is_finite(box)) return {lipschitz_range, lipschitz_slope};
-    const OctaveSumBounds bounds = octave_sum_bounds(term, box);
-    Interval slope{-bounds.reach * speed, bounds.reach * speed};
-    for (int k = 0; k < 3; ++k) slope = slope + bounds.gradient[k] * motion[k];
-    return {value_within(term, bounds, size, lipschitz_range), intersect(slope, lipschitz_slope)};
+    if (!ranges.gradient || !std::isfinite(speed)) return lipschitz_slope;
+    Interval slope{-ranges.reach * speed, ranges.reach * speed};
+    for (int k = 0; k < 3; ++k) slope = slope + (*ranges.gradient)[k] * motion[k];
+    return intersect(slope, lipschitz_slope);
 }
 
 }  // namespace isotrace

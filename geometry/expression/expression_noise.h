@@ -3,6 +3,7 @@
 // same noise agree exactly), each with the constants that make its interval bounds guaranteed: a Lipschitz
 // constant L (|∇n| ≤ L, derived from each noise's construction in docs/decisions.md) and the range of its values.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "renderer/math/interval.h"
@@ -41,16 +42,22 @@ double noise_value(const NoiseTerm& term, const Vec3d& q);
 // Its gradient by central differences (six float evaluations cost less than the formula's derivative through
 // the interval bounds' code).
 Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q);
-// An interval holding the noise over the box: the centre's value ± L × the box's half-diagonal, plus an allowance
-// for the float evaluation, within the noise's range; for the gradient-noise kinds intersected with the octaves'
-// formulas evaluated in interval arithmetic (gradient_noise_bounds) wherever an octave's box spans few cells.
-Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box);
-// noise_value_range, and an interval holding the noise's derivative d/dt n(q(t)) wherever q lies in the box and q′
-// in `motion`: ±L|q′|, intersected for the gradient-noise kinds with the formulas' gradient bounds (computed with
-// the values, in one pass over the octaves).
-struct NoiseRanges {
-    Interval value, slope;
+// What bounds the noise over a box, for its value and its derivative along any motion (computed once when
+// several motions are asked, as for the three partial derivatives): the value's interval, and for the
+// gradient-noise kinds the octaves' gradient bounds where an octave's box spans few cells.
+struct NoiseBoxRanges {
+    Interval value;
+    std::optional<IntervalBox> gradient;  // ∇n over the box, apart from a part of length at most `reach`
+    double reach = 0;
 };
-NoiseRanges noise_ranges(const NoiseTerm& term, const IntervalBox& box, const IntervalBox& motion);
+// The value's interval is the centre's value ± L × the box's half-diagonal, plus an allowance for the float
+// evaluation, within the noise's range; for the gradient-noise kinds intersected with the octaves' formulas
+// evaluated in interval arithmetic (gradient_noise_bounds).
+NoiseBoxRanges noise_box_ranges(const NoiseTerm& term, const IntervalBox& box);
+// noise_box_ranges' value alone.
+Interval noise_value_range(const NoiseTerm& term, const IntervalBox& box);
+// An interval holding the noise's derivative d/dt n(q(t)) wherever q lies in the box and q′ in `motion`: ±L|q′|,
+// intersected with the octaves' gradient bounds where there are some.
+Interval noise_slope_range(const NoiseTerm& term, const NoiseBoxRanges& ranges, const IntervalBox& motion);
 
 }  // namespace isotrace

@@ -81,7 +81,7 @@ TEST(ExpressionNoise, SlopeIntervalsHoldEverySampledSlope) {
         for (int trial = 0; trial < 300; ++trial) {
             const IntervalBox box = random_box(random, 2, trial % 2 == 0 ? 0.02 : 0.3);
             const Vec3d d = normalize(Vec3d{signed_unit(random), signed_unit(random), signed_unit(random)});
-            const Interval slope = noise_ranges(c.term, box, IntervalBox::point(d)).slope;
+            const Interval slope = noise_slope_range(c.term, noise_box_ranges(c.term, box), IntervalBox::point(d));
             ASSERT_LE(slope.magnitude().hi, c.term.lipschitz + 1e-12) << c.name;
             const double h = 1e-3;
             for (int sample = 0; sample < 100; ++sample) {
@@ -112,7 +112,7 @@ TEST(ExpressionNoise, GradientNoiseKindsAreBoundedFarInsideTheLipschitzBounds) {
             const Vec3d d = normalize(Vec3d{signed_unit(random), signed_unit(random), signed_unit(random)});
             value_width += noise_value_range(c.term, box).width();
             value_lipschitz += 2 * c.term.lipschitz * 0.005 * std::sqrt(3.0);
-            slope_width += noise_ranges(c.term, box, IntervalBox::point(d)).slope.width();
+            slope_width += noise_slope_range(c.term, noise_box_ranges(c.term, box), IntervalBox::point(d)).width();
             slope_lipschitz += 2 * c.term.lipschitz;
         }
         EXPECT_LT(value_width, 0.3 * value_lipschitz) << c.name;

@@ -45,19 +45,46 @@ struct CornerGradient {
     double g[3];
 };
 
-// The bounds over one cell's part of the box; `offsets` are the coordinates minus the cell's corner, in [0, 1].
-NoiseBoxBounds cell_bounds(const CornerGradient (&gradients)[8], const Interval offsets[3]) {
-    // Each corner's g · (offsets − corner): linear, each coordinate once, so exact.
-    const auto dot = [&](const double g[3], int corner) {
-        Interval sum = Interval::point(0);
-        for (int k = 0; k < 3; ++k) sum = sum + (offsets[k] + -static_cast<double>((corner >> k) & 1)) * g[k];
-        return sum;
-    };
+// One lattice cell's part of a box: the corners' gradients and the coordinates minus the cell's corner, in [0, 1].
+struct CellPart {
+    CornerGradient gradients[8];
+    Interval offsets[3];
+};
+
+CellPart cell_part(std::uint32_t root, const std::int32_t (&cell)[3], const IntervalBox& box) {
+    CellPart part;
+    for (int k = 0; k < 3; ++k) part.offsets[k] = {std::max(box[k].lo - cell[k], 0.0), std::min(box[k].hi - cell[k], 1.0)};
+    for (int corner = 0; corner < 8; ++corner) {
+        const std::uint32_t hash = lattice_hash(lattice_hash(lattice_hash(root, cell[0] + (corner & 1)), cell[1] + ((corner >> 1) & 1)),
+                                                cell[2] + ((corner >> 2) & 1));
+        // The texture's own choice of gradient, read off its dot product with the axes.
+        part.gradients[corner] = {{lattice_gradient_dot(hash, 1, 0, 0), lattice_gradient_dot(hash, 0, 1, 0),
+                                   lattice_gradient_dot(hash, 0, 0, 1)}};
+    }
+    return part;
+}
+
+// Each corner's g · (offsets − corner): linear, each coordinate once, so exact.
+Interval corner_dot(const double g[3], int corner, const Interval offsets[3]) {
+    Interval sum = Interval::point(0);
+    for (int k = 0; k < 3; ++k) sum = sum + (offsets[k] + -static_cast<double>((corner >> k) & 1)) * g[k];
+    return sum;
+}
+
+// The value's bound over a cell's part: the corners' dots blended by the fades.
+Interval cell_value(const CellPart& part, const Interval fades[3]) {
     Corners dots;
-    for (int corner = 0; corner < 8; ++corner) dots[corner] = dot(gradients[corner].g, corner);
+    for (int corner = 0; corner < 8; ++corner) dots[corner] = corner_dot(part.gradients[corner].g, corner, part.offsets);
+    return trilinear(fades, dots);
+}
+
+// The bounds over one cell's part of the box.
+NoiseBoxBounds cell_bounds(const CellPart& part) {
+    const Interval* offsets = part.offsets;
+    const auto& gradients = part.gradients;
     const Interval fades[3] = {fade_range(offsets[0]), fade_range(offsets[1]), fade_range(offsets[2])};
     NoiseBoxBounds bounds;
-    bounds.value = trilinear(fades, dots);
+    bounds.value = cell_value(part, fades);
     for (int k = 0; k < 3; ++k) {
         // ∂n/∂x_k = fade′(x_k) × (the blend of the differences across axis k) + the blend of the g_k.
         Corners across, partial;
@@ -66,7 +93,7 @@ NoiseBoxBounds cell_bounds(const CornerGradient (&gradients)[8], const Interval 
             double difference[3];
             for (int m = 0; m < 3; ++m) difference[m] = gradients[far].g[m] - gradients[near].g[m];
             // dot(far) − dot(near) with each coordinate once: (g_far − g_near) · (offsets − near) − g_far,k.
-            across[corner] = dot(difference, near) + -gradients[far].g[k];
+            across[corner] = corner_dot(difference, near, offsets) + -gradients[far].g[k];
             partial[corner] = Interval::point(gradients[corner].g[k]);
         }
         Interval flat[3] = {fades[0], fades[1], fades[2]};
@@ -76,12 +103,18 @@ NoiseBoxBounds cell_bounds(const CornerGradient (&gradients)[8], const Interval 
     return bounds;
 }
 
+bool within_limits(const IntervalBox& box) {
+    for (int k = 0; k < 3; ++k)
+        if (!(box[k].lo >= -kCoordinateLimit && box[k].hi <= kCoordinateLimit)) return false;
+    return true;
+}
+
 // The hull of the cells' bounds, unscaled; nothing beyond the limits.
 std::optional<NoiseBoxBounds> bounds_over_cells(const IntervalBox& box, std::uint32_t seed) {
+    if (!within_limits(box)) return std::nullopt;
     std::int32_t first[3], last[3];
     int cells = 1;
     for (int k = 0; k < 3; ++k) {
-        if (!(box[k].lo >= -kCoordinateLimit && box[k].hi <= kCoordinateLimit)) return std::nullopt;
         first[k] = static_cast<std::int32_t>(std::floor(box[k].lo));
         last[k] = static_cast<std::int32_t>(std::floor(box[k].hi));
         cells *= last[k] - first[k] + 1;
@@ -92,20 +125,7 @@ std::optional<NoiseBoxBounds> bounds_over_cells(const IntervalBox& box, std::uin
     for (std::int32_t i = first[0]; i <= last[0]; ++i)
         for (std::int32_t j = first[1]; j <= last[1]; ++j)
             for (std::int32_t l = first[2]; l <= last[2]; ++l) {
-                const std::int32_t cell[3] = {i, j, l};
-                Interval offsets[3];
-                for (int k = 0; k < 3; ++k)
-                    offsets[k] = {std::max(box[k].lo - cell[k], 0.0), std::min(box[k].hi - cell[k], 1.0)};
-                CornerGradient gradients[8];
-                for (int corner = 0; corner < 8; ++corner) {
-                    const std::uint32_t hash =
-                        lattice_hash(lattice_hash(lattice_hash(root, i + (corner & 1)), j + ((corner >> 1) & 1)),
-                                     l + ((corner >> 2) & 1));
-                    // The texture's own choice of gradient, read off its dot product with the axes.
-                    gradients[corner] = {{lattice_gradient_dot(hash, 1, 0, 0), lattice_gradient_dot(hash, 0, 1, 0),
-                                          lattice_gradient_dot(hash, 0, 0, 1)}};
-                }
-                NoiseBoxBounds b = cell_bounds(gradients, offsets);
+                NoiseBoxBounds b = cell_bounds(cell_part(root, {i, j, l}, box));
                 if (!hull_of_cells) {
                     hull_of_cells = b;
                     continue;
@@ -114,6 +134,17 @@ std::optional<NoiseBoxBounds> bounds_over_cells(const IntervalBox& box, std::uin
                 for (int k = 0; k < 3; ++k) hull_of_cells->gradient[k] = hull(hull_of_cells->gradient[k], b.gradient[k]);
             }
     return hull_of_cells;
+}
+
+// bounds_over_cells' value at a point (which meets one cell), without the gradient's bounds.
+std::optional<Interval> value_at_point(const Vec3d& q, std::uint32_t seed) {
+    const IntervalBox box = IntervalBox::point(q);
+    if (!within_limits(box)) return std::nullopt;
+    const std::int32_t cell[3] = {static_cast<std::int32_t>(std::floor(q.x)), static_cast<std::int32_t>(std::floor(q.y)),
+                                  static_cast<std::int32_t>(std::floor(q.z))};
+    const CellPart part = cell_part(lattice_seed(seed), cell, box);
+    const Interval fades[3] = {fade_range(part.offsets[0]), fade_range(part.offsets[1]), fade_range(part.offsets[2])};
+    return cell_value(part, fades);
 }
 
 }  // namespace
@@ -127,7 +158,7 @@ std::optional<NoiseBoxBounds> gradient_noise_bounds(const IntervalBox& box, std:
     if (!is_point) {
         Vec3d centre;
         for (int k = 0; k < 3; ++k) centre[k] = 0.5 * (box[k].lo + box[k].hi);
-        Interval mean_value = bounds_over_cells(IntervalBox::point(centre), seed)->value;
+        Interval mean_value = *value_at_point(centre, seed);
         for (int k = 0; k < 3; ++k) mean_value = mean_value + bounds->gradient[k] * (box[k] + -centre[k]);
         bounds->value = {std::max(bounds->value.lo, mean_value.lo), std::min(bounds->value.hi, mean_value.hi)};
     }
@@ -135,6 +166,12 @@ std::optional<NoiseBoxBounds> gradient_noise_bounds(const IntervalBox& box, std:
     bounds->value = bounds->value * scale;
     for (int k = 0; k < 3; ++k) bounds->gradient[k] = bounds->gradient[k] * scale;
     return bounds;
+}
+
+std::optional<Interval> gradient_noise_value_at(const Vec3d& q, std::uint32_t seed) {
+    const std::optional<Interval> value = value_at_point(q, seed);
+    if (!value) return std::nullopt;
+    return *value * (1 / kUnscaledExtreme);
 }
 
 }  // namespace isotrace

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "renderer/math/interval.h"
+#include "renderer/math/vec3.h"
 
 namespace isotrace {
 
@@ -23,5 +24,7 @@ constexpr int kMaxBoundedNoiseCells = 8;
 // kMaxBoundedNoiseCells cells or lies outside that range. Computed in double: the caller allows for the float
 // evaluation of the texture's noise.
 std::optional<NoiseBoxBounds> gradient_noise_bounds(const IntervalBox& box, std::uint32_t seed);
+// The value's bound at a point (gradient_noise_bounds of the point box, bit for bit), for less: no gradient.
+std::optional<Interval> gradient_noise_value_at(const Vec3d& q, std::uint32_t seed);
 
 }  // namespace isotrace

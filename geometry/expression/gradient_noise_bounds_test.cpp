@@ -85,5 +85,23 @@ TEST(GradientNoiseBounds, DeclineBoxesMeetingManyCells) {
     EXPECT_FALSE(gradient_noise_bounds({{0, 1}, {0, 1}, {0, 1e30}}, 0));
 }
 
+// The value alone at a point is the point box's value bit for bit, on and off the lattice's planes.
+TEST(GradientNoiseBounds, TheValueAtAPointIsThePointBoxsValue) {
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> unit(-40, 40);
+    for (int trial = 0; trial < 2000; ++trial) {
+        Vec3d p{unit(random), unit(random), unit(random)};
+        if (trial % 4 == 0) p.x = std::round(p.x);  // on a cell's face
+        if (trial % 8 == 0) p = {std::round(p.x), std::round(p.y), std::round(p.z)};  // a lattice point
+        const std::uint32_t seed = static_cast<std::uint32_t>(trial % 7);
+        const std::optional<Interval> value = gradient_noise_value_at(p, seed);
+        const std::optional<NoiseBoxBounds> bounds = gradient_noise_bounds(IntervalBox::point(p), seed);
+        ASSERT_TRUE(value && bounds);
+        ASSERT_TRUE(value->lo == bounds->value.lo && value->hi == bounds->value.hi) << trial;
+    }
+    EXPECT_FALSE(gradient_noise_value_at({0x1p23, 0, 0}, 1));  // beyond the limits, as the box form
+    EXPECT_FALSE(gradient_noise_bounds(IntervalBox::point({0x1p23, 0, 0}), 1));
+}
+
 }  // namespace
 }  // namespace isotrace

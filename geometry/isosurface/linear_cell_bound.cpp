@@ -9,10 +9,8 @@ LinearCellBound LinearCellBound::of(const ImplicitField& field, const IntervalBo
     model.gradient = field.gradient(model.centre);
     const Vec3d half = (cell.upper() - cell.lower()) * 0.5;
     double scale = std::abs(f);
+    model.gradient_range = field.gradient_range(cell);
     for (int i = 0; i < 3; ++i) {
-        Vec3d axis{0, 0, 0};
-        axis[i] = 1;
-        model.gradient_range[i] = field.slope_range(cell, axis);
         scale += (std::abs(model.gradient[i]) + model.gradient_range[i].magnitude().hi) * half[i];
     }
     // The model is summed in round-to-nearest, and the search compares the field's computed values with it: the

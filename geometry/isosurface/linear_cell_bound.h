@@ -17,7 +17,7 @@ struct LinearCellBound {
     Vec3d centre;
     Interval value;  // f at the centre, widened by the slack for rounding (below)
     Vec3d gradient;  // ∇f at the centre
-    Interval gradient_range[3];  // Gᵢ: unbounded where the field cannot bound its slope over the cell
+    IntervalBox gradient_range;  // Gᵢ: unbounded where the field cannot bound its slope over the cell
 
     // The model of `field` over `cell` (four evaluations of the field).
     static LinearCellBound of(const ImplicitField& field, const IntervalBox& cell);

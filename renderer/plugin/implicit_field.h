@@ -93,6 +93,11 @@ public:
     virtual FieldRanges value_and_slope_range(const IntervalBox& box, const Vec3d& direction) const {
         return {value_range(box), slope_range(box, direction)};
     }
+    // The slope_range along each axis (the partial derivatives' intervals), for a field that computes the three
+    // for less than three slopes (an expression does).
+    virtual IntervalBox gradient_range(const IntervalBox& box) const {
+        return {slope_range(box, {1, 0, 0}), slope_range(box, {0, 1, 0}), slope_range(box, {0, 0, 1})};
+    }
 };
 
 }  // namespace isotrace
