@@ -203,7 +203,35 @@ double noise_value(const NoiseTerm& term, const Vec3d& q) {
     return 0;
 }
 
+namespace {
+
+// The gradient of a sum of gradient-noise octaves: each octave's formula gradient carried back through its turn
+// (∇_q = weight × turnᵀ ∇), with the sign of the octave's value for turbulence's |n|.
+Vec3d octave_sum_gradient(const NoiseTerm& term, const Vec3d& q) {
+    const Vec3f point = to_float(q);
+    Vec3d sum{0, 0, 0};
+    for (std::size_t index = 0; index < term.octaves.size(); ++index) {
+        const NoiseOctave& octave = term.octaves[index];
+        const OctaveDomain domain =
+            fractal_octave_domain(point, static_cast<float>(octave.frequency), term.fractal.seed, static_cast<int>(index));
+        Vec3d g(gradient_noise_gradient(domain.point, domain.seed));
+        if (term.kind == NoiseKind::Turbulence && gradient_noise(domain.point, domain.seed) < 0) g = -g;
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j) sum[k] += octave.weight * octave.turn[j][k] * g[j];
+    }
+    return sum;
+}
+
+}  // namespace
+
 Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q) {
+    switch (term.kind) {
+        case NoiseKind::Gradient: return Vec3d(gradient_noise_gradient(to_float(q), term.fractal.seed));
+        case NoiseKind::Fbm:
+        case NoiseKind::Turbulence: return octave_sum_gradient(term, q);
+        case NoiseKind::Simplex:
+        case NoiseKind::Cellular: break;
+    }
     const double size = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
     const double h = std::max(term.step, size * 0x1p-17);  // dozens of float ulps of q at least
     Vec3d gradient;

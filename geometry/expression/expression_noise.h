@@ -39,8 +39,8 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
 
 // The noise at q, exactly as the textures compute it (in float, footprint 0: a point sample).
 double noise_value(const NoiseTerm& term, const Vec3d& q);
-// Its gradient by central differences (six float evaluations cost less than the formula's derivative through
-// the interval bounds' code).
+// Its gradient: for the gradient-noise kinds the formula's (each octave's, carried through its turn), for simplex
+// and cellular noise central differences of the float values.
 Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q);
 // What bounds the noise over a box, for its value and its derivative along any motion (computed once when
 // several motions are asked, as for the three partial derivatives): the value's interval, and for the

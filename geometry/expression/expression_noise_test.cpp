@@ -137,15 +137,20 @@ TEST(ExpressionNoise, TermsAreTheTexturesFunctions) {
 }
 
 TEST(ExpressionNoise, GradientsFollowTheNoise) {
-    const auto field = compile_expression({"fbm(2 * p)", {}, ""}, {});
-    const Vec3d p{0.31, 0.72, -0.15};
-    const Vec3d g = field->gradient(p);
-    const double h = 1e-4;
-    for (int k = 0; k < 3; ++k) {
-        Vec3d ahead = p, behind = p;
-        ahead[k] += h;
-        behind[k] -= h;
-        EXPECT_NEAR(g[k], (field->value(ahead) - field->value(behind)) / (2 * h), 0.02 * (1 + std::abs(g[k])));
+    for (const char* text : {"fbm(2 * p)", "fbm(3 * p, 6, 2.2, 0.6, 4)", "turbulence(2 * p, 4)", "noise(3 * p)",
+                             "simplex(2 * p)", "cellular(2 * p)"}) {
+        const auto field = compile_expression({text, {}, ""}, {});
+        for (const Vec3d p : {Vec3d{0.31, 0.72, -0.15}, Vec3d{-1.7, 0.05, 2.4}, Vec3d{4.1, -3.3, 0.6}}) {
+            const Vec3d g = field->gradient(p);
+            const double h = 1e-4;
+            for (int k = 0; k < 3; ++k) {
+                Vec3d ahead = p, behind = p;
+                ahead[k] += h;
+                behind[k] -= h;
+                EXPECT_NEAR(g[k], (field->value(ahead) - field->value(behind)) / (2 * h), 0.02 * (1 + std::abs(g[k])))
+                    << text << " axis " << k;
+            }
+        }
     }
 }
 

@@ -103,5 +103,23 @@ TEST(GradientNoiseBounds, TheValueAtAPointIsThePointBoxsValue) {
     EXPECT_FALSE(gradient_noise_bounds(IntervalBox::point({0x1p23, 0, 0}), 1));
 }
 
+// The texture's float gradient of the formula against the bounds' double evaluation of it at a point (an interval
+// of width zero up to rounding): equal to float precision.
+TEST(GradientNoiseBounds, AtAPointTheGradientIsTheTexturesFormulaGradient) {
+    std::mt19937_64 random(8);
+    std::uniform_real_distribution<double> unit(-30, 30);
+    for (int trial = 0; trial < 1000; ++trial) {
+        const Vec3f p{float(unit(random)), float(unit(random)), float(unit(random))};
+        const std::uint32_t seed = static_cast<std::uint32_t>(trial % 4);
+        const Vec3f g = gradient_noise_gradient(p, seed);
+        const std::optional<NoiseBoxBounds> bounds = gradient_noise_bounds(IntervalBox::point(Vec3d(p)), seed);
+        ASSERT_TRUE(bounds);
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_LE(bounds->gradient[k].width(), 1e-12);
+            ASSERT_NEAR(g[k], bounds->gradient[k].lo, 2e-5) << trial << " axis " << k;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace isotrace

@@ -18,6 +18,18 @@ float lerp(float t, float a, float b) {
     return a + t * (b - a);
 }
 
+// The fade's derivative 30 t²(t − 1)².
+float fade_slope(float t) {
+    const float s = t * (t - 1);
+    return 30.0f * s * s;
+}
+
+// Corner values blended by the three fades; corner (a, b, c) at index a + 2b + 4c.
+float trilinear(const float (&fades)[3], const float (&v)[8]) {
+    const auto along_x = [&](int bc) { return lerp(fades[0], v[2 * bc], v[2 * bc + 1]); };
+    return lerp(fades[2], lerp(fades[1], along_x(0), along_x(1)), lerp(fades[1], along_x(2), along_x(3)));
+}
+
 }  // namespace
 
 float gradient_noise(const Vec3f& p, std::uint32_t seed) {
@@ -36,6 +48,32 @@ float gradient_noise(const Vec3f& p, std::uint32_t seed) {
     const float far_z = lerp(v, lerp(u, corner(h00, 1, x, y), corner(h10, 1, x - 1, y)),
                              lerp(u, corner(h01, 1, x, y - 1), corner(h11, 1, x - 1, y - 1)));
     return lerp(w, near_z, far_z) / kUnscaledExtreme;
+}
+
+Vec3f gradient_noise_gradient(const Vec3f& p, std::uint32_t seed) {
+    const LatticeCoordinate c[3] = {lattice_coordinate(p.x), lattice_coordinate(p.y), lattice_coordinate(p.z)};
+    const std::uint32_t root = lattice_seed(seed);
+    float g[8][3], dots[8];
+    for (int corner = 0; corner < 8; ++corner) {
+        const int a = corner & 1, b = (corner >> 1) & 1, d = corner >> 2;
+        const std::uint32_t hash = lattice_hash(lattice_hash(lattice_hash(root, c[0].cell + a), c[1].cell + b), c[2].cell + d);
+        for (int k = 0; k < 3; ++k) g[corner][k] = lattice_gradient_dot(hash, k == 0, k == 1, k == 2);
+        dots[corner] = g[corner][0] * (c[0].offset - a) + g[corner][1] * (c[1].offset - b) + g[corner][2] * (c[2].offset - d);
+    }
+    const float fades[3] = {fade(c[0].offset), fade(c[1].offset), fade(c[2].offset)};
+    Vec3f gradient;
+    for (int k = 0; k < 3; ++k) {
+        // ∂n/∂x_k = fade′(x_k) × (the blend of the dots' differences across axis k) + the blend of the g_k.
+        float across[8], partial[8];
+        for (int corner = 0; corner < 8; ++corner) {
+            across[corner] = dots[corner | (1 << k)] - dots[corner & ~(1 << k)];
+            partial[corner] = g[corner][k];
+        }
+        float flat[3] = {fades[0], fades[1], fades[2]};
+        flat[k] = 0;  // the differences do not depend on the corner's k bit: blend the k = 0 ones
+        gradient[k] = (fade_slope(c[k].offset) * trilinear(flat, across) + trilinear(fades, partial)) / kUnscaledExtreme;
+    }
+    return gradient;
 }
 
 }  // namespace isotrace

@@ -10,6 +10,8 @@ namespace isotrace {
 // In [-1, 1] (scaled so that the bound is the field's true extreme), 0 at integer lattice points, C2-continuous.
 // The seed selects an independent field. Not band-limited: its detail is about one lattice cell wide.
 float gradient_noise(const Vec3f& p, std::uint32_t seed);
+// Its gradient, from the formula's derivative (not from differences of the float values).
+Vec3f gradient_noise_gradient(const Vec3f& p, std::uint32_t seed);
 
 // The dot product of (x, y, z) with the gradient that a lattice hash selects: one of Perlin's twelve cube-edge
 // directions (1, 1, 0), … (four of them twice, so that four hash bits pick one without a division). Inline: simplex
