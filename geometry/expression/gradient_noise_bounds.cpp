@@ -45,15 +45,20 @@ struct CornerGradient {
     double g[3];
 };
 
-// One lattice cell's part of a box: the corners' gradients and the coordinates minus the cell's corner, in [0, 1].
+// One lattice cell's part of a box: the corners' gradients, the coordinates minus the cell's corner (in [0, 1])
+// and their fades.
 struct CellPart {
     CornerGradient gradients[8];
     Interval offsets[3];
+    Interval fades[3];
 };
 
 CellPart cell_part(std::uint32_t root, const std::int32_t (&cell)[3], const IntervalBox& box) {
     CellPart part;
-    for (int k = 0; k < 3; ++k) part.offsets[k] = {std::max(box[k].lo - cell[k], 0.0), std::min(box[k].hi - cell[k], 1.0)};
+    for (int k = 0; k < 3; ++k) {
+        part.offsets[k] = {std::max(box[k].lo - cell[k], 0.0), std::min(box[k].hi - cell[k], 1.0)};
+        part.fades[k] = fade_range(part.offsets[k]);
+    }
     for (int corner = 0; corner < 8; ++corner) {
         const std::uint32_t hash = lattice_hash(lattice_hash(lattice_hash(root, cell[0] + (corner & 1)), cell[1] + ((corner >> 1) & 1)),
                                                 cell[2] + ((corner >> 2) & 1));
@@ -72,19 +77,19 @@ Interval corner_dot(const double g[3], int corner, const Interval offsets[3]) {
 }
 
 // The value's bound over a cell's part: the corners' dots blended by the fades.
-Interval cell_value(const CellPart& part, const Interval fades[3]) {
+Interval cell_value(const CellPart& part) {
     Corners dots;
     for (int corner = 0; corner < 8; ++corner) dots[corner] = corner_dot(part.gradients[corner].g, corner, part.offsets);
-    return trilinear(fades, dots);
+    return trilinear(part.fades, dots);
 }
 
 // The bounds over one cell's part of the box.
 NoiseBoxBounds cell_bounds(const CellPart& part) {
     const Interval* offsets = part.offsets;
+    const Interval* fades = part.fades;
     const auto& gradients = part.gradients;
-    const Interval fades[3] = {fade_range(offsets[0]), fade_range(offsets[1]), fade_range(offsets[2])};
     NoiseBoxBounds bounds;
-    bounds.value = cell_value(part, fades);
+    bounds.value = cell_value(part);
     for (int k = 0; k < 3; ++k) {
         // ∂n/∂x_k = fade′(x_k) × (the blend of the differences across axis k) + the blend of the g_k.
         Corners across, partial;
@@ -142,9 +147,7 @@ std::optional<Interval> value_at_point(const Vec3d& q, std::uint32_t seed) {
     if (!within_limits(box)) return std::nullopt;
     const std::int32_t cell[3] = {static_cast<std::int32_t>(std::floor(q.x)), static_cast<std::int32_t>(std::floor(q.y)),
                                   static_cast<std::int32_t>(std::floor(q.z))};
-    const CellPart part = cell_part(lattice_seed(seed), cell, box);
-    const Interval fades[3] = {fade_range(part.offsets[0]), fade_range(part.offsets[1]), fade_range(part.offsets[2])};
-    return cell_value(part, fades);
+    return cell_value(cell_part(lattice_seed(seed), cell, box));
 }
 
 }  // namespace
