@@ -66,7 +66,10 @@ std::string isa_from_cpu_flags(const std::string& flags) {
     return "unknown";
 }
 
-std::string embree_isa() { return isa_from_cpu_flags(cpuinfo_value("flags")); }
+std::string embree_isa() {
+    const std::string best = isa_from_cpu_flags(cpuinfo_value("flags"));
+    return best == "AVX512SKX" ? "AVX2" : best;  // embree_device() caps Embree at AVX2
+}
 
 nlohmann::json machine_description() {
     const BuildDescription build = build_description();
