@@ -90,19 +90,27 @@ void IsosurfaceShape::search(const ImplicitField& field, const Vec3d& origin, co
         return true;
     };
     // Past the budget, every stretch without a sign change is dropped and every bracket held is refined as one
-    // crossing: the search ends within a few steps per segment on its stack. The whole segment's ranges, when
-    // given, answer the search's first questions (counted already).
+    // crossing: the search ends within a few steps per segment on its stack. A stretch's value and slope come
+    // from one run (the search asks for the slope of a stretch right after a value range that holds 0); the
+    // whole segment's ranges, when given, are the first such pair (counted already).
+    struct StretchRanges {
+        double lo, hi;
+        FieldRanges ranges;
+    };
+    std::optional<StretchRanges> last;
+    if (ranges_a_b) last = StretchRanges{a, b, *ranges_a_b};
     const auto bound = [&](double lo, double hi) {
         if (spent()) return Interval::point(1);
-        if (ranges_a_b && lo == a && hi == b) {
+        if (last && lo == a && hi == b && last->lo == a && last->hi == b) {
             --work.search.interval_bounds;
-            return ranges_a_b->value;
+            return last->ranges.value;
         }
-        return field.value_range(segment_box(lo, hi));
+        last = StretchRanges{lo, hi, field.value_and_slope_range(segment_box(lo, hi), direction)};
+        return last->ranges.value;
     };
     const auto slope = [&](double lo, double hi) {
         if (spent()) return Interval::point(1);
-        if (ranges_a_b && lo == a && hi == b) return ranges_a_b->slope;
+        if (last && last->lo == lo && last->hi == hi) return last->ranges.slope;
         return field.slope_range(segment_box(lo, hi), direction);
     };
     // Brackets are refined by Newton steps along the ray: fewer evaluations than regula falsi's.
