@@ -153,7 +153,7 @@ void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin
     s.crossings(origin, direction, t_min, t_max, found, work);
     record_work(work);
     append_spans_from_crossings(
-        std::span<const Crossing>(found), s.field(origin + direction * t_min) < 0, t_min, t_max,
+        std::span<const Crossing>(found), s.contains(origin + direction * t_min), t_min, t_max,
         [&](const Crossing& c) { return BoundaryPoint{.t = c.t, .primitive = index}; }, spans);
 }
 
