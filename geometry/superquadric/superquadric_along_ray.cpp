@@ -25,11 +25,12 @@ IntervalBox SuperquadricAlongRay::stretch(double a, double b) const {
 }
 
 const DeformationChain::InverseBoxes* SuperquadricAlongRay::walked(double a, double b) const {
-    if (a != walked_a_ || b != walked_b_) {
+    if (!walked_ || a != walked_a_ || b != walked_b_) {
+        if (!walked_) walked_.emplace();
         walked_a_ = a, walked_b_ = b;
-        walked_inside_ = superquadric_.deformation().inverse_boxes(stretch(a, b), walked_);
+        walked_inside_ = superquadric_.deformation().inverse_boxes(stretch(a, b), *walked_);
     }
-    return walked_inside_ ? &walked_ : nullptr;
+    return walked_inside_ ? &*walked_ : nullptr;
 }
 
 Interval SuperquadricAlongRay::bound(double a, double b) const {

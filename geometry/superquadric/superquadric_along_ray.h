@@ -5,6 +5,7 @@
 // monotonicity in |x|, |y|, |z|, and an interval bound of g′, from the gauge's gradient range and the chain's
 // interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]).
 #include <limits>
+#include <optional>
 
 #include "renderer/math/interval.h"
 #include "geometry/superquadric/superquadric.h"
@@ -39,7 +40,7 @@ private:
     Vec3d origin_, direction_;
     mutable double walked_a_ = std::numeric_limits<double>::quiet_NaN(), walked_b_ = walked_a_;
     mutable bool walked_inside_ = false;
-    mutable DeformationChain::InverseBoxes walked_;
+    mutable std::optional<DeformationChain::InverseBoxes> walked_;  // made when first asked: most rays ask none
 };
 
 }  // namespace isotrace
