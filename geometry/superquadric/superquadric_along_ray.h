@@ -12,6 +12,7 @@
 
 namespace isotrace {
 
+// One per query: it keeps the walk of the last stretch it bounded (not to be shared between threads).
 class SuperquadricAlongRay {
 public:
     // `origin` and `direction` in the superquadric's shape space.
