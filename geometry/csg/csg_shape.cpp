@@ -21,11 +21,12 @@ Bounds3f intersect_bounds(const Bounds3f& a, const Bounds3f& b) {
     return result;
 }
 
-// Normals of surface ends from a child's space to the CSG's (cut ends carry none).
-void map_normals(std::vector<InsideSpan>& spans, const Transform& to_csg) {
+// Normals of surface ends from a child's space to the CSG's (cut ends carry none, nor do ends whose normal the
+// child defers: boundary_normal maps those).
+void map_normals(std::vector<InsideSpan>& spans, const Solid& child, const Transform& to_csg) {
     for (InsideSpan& span : spans)
         for (BoundaryPoint* end : {&span.enter, &span.exit})
-            if (end->on_surface()) end->normal = normalize(to_csg.normal(end->normal));
+            if (end->on_surface() && !child.defers_normals(end->part)) end->normal = normalize(to_csg.normal(end->normal));
 }
 
 }  // namespace
@@ -127,10 +128,36 @@ void CsgShape::operand_spans(const Operand& operand, const Vec3d& origin, const 
     if (operand.from_csg) {
         operand.solid->inside_spans(operand.from_csg->point(origin), operand.from_csg->vector(direction), t_min, t_max,
                                     spans, scratch);
-        map_normals(spans, *operand.to_csg);
+        map_normals(spans, *operand.solid, *operand.to_csg);
     } else {
         operand.solid->inside_spans(origin, direction, t_min, t_max, spans, scratch);
     }
+}
+
+std::size_t CsgShape::operand_of(std::uint32_t part) const {
+    std::size_t i = 0;
+    while (i + 1 < operands_.size() && part >= operands_[i + 1].first_part) ++i;
+    return i;
+}
+
+bool CsgShape::defers_normals(std::uint32_t part) const {
+    const Operand& operand = operands_[operand_of(part)];
+    return operand.solid->defers_normals(part - operand.first_part);
+}
+
+// The child's normal, then what operand_spans and the combination do to a normal they carry: map it to the CSG's
+// space, and flip it where the child is subtracted (the same operations in the same order, so the same bits).
+Vec3d CsgShape::boundary_normal(const Vec3d& origin, const Vec3d& direction, const BoundaryPoint& end) const {
+    const std::size_t index = operand_of(end.part);
+    const Operand& operand = operands_[index];
+    BoundaryPoint own = end;
+    own.part -= operand.first_part;
+    if (!operand.solid->defers_normals(own.part)) return end.normal;
+    Vec3d normal = operand.from_csg ? operand.solid->boundary_normal(operand.from_csg->point(origin),
+                                                                    operand.from_csg->vector(direction), own)
+                                    : operand.solid->boundary_normal(origin, direction, own);
+    if (operand.to_csg) normal = normalize(operand.to_csg->normal(normal));
+    return operation_ == CsgOperation::Difference && index > 0 ? -normal : normal;
 }
 
 void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,

@@ -53,6 +53,9 @@ public:
                                                      double t_far, QueryScratch& scratch) const override;
     bool certainly_outside(const Vec3d& point, double distance) const override;
     bool exact_boundaries() const override { return exact_boundaries_; }
+    // A part's ends defer their normal when its leaf does; boundary_normal asks the leaf and carries the answer up.
+    bool defers_normals(std::uint32_t part) const override;
+    Vec3d boundary_normal(const Vec3d& origin, const Vec3d& direction, const BoundaryPoint& end) const override;
 
     CsgOperation operation() const { return operation_; }
     std::size_t operand_count() const { return operands_.size(); }
@@ -79,6 +82,8 @@ private:
     };
 
     void place(Operand& operand, const Transform& to_csg);
+    // The index of the operand that holds part `part` (of the tree's parts).
+    std::size_t operand_of(std::uint32_t part) const;
     Bounds3f operand_bounds(const Operand& operand) const;
     // The operand's inside spans along a ray given in the CSG's space, with normals and parts in the CSG's terms.
     void operand_spans(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,

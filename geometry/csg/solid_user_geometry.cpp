@@ -30,8 +30,8 @@ void SolidUserGeometry::intersect_callback(const RTCIntersectFunctionNArguments*
             if (!found) return std::nullopt;
             return found->t;
         },
-        [&](unsigned i, const Vec3d&, const Vec3d&, double t) {
-            user_geometry::store_hit(args, i, float(t), found->normal);
+        [&](unsigned i, const Vec3d& origin, const Vec3d& direction, double t) {
+            user_geometry::store_hit(args, i, float(t), self->solid_->boundary_normal(origin, direction, *found));
             RTCHitN_primID(RTCRayHitN_HitN(args->rayhit, args->N), args->N, i) = found->part;
         });
 }

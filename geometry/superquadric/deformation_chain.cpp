@@ -83,23 +83,36 @@ DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
     return path;
 }
 
-std::optional<IntervalBox> DeformationChain::inverse_box(IntervalBox box, bool& clipped, IntervalBox* tangent) const {
-    clipped = false;
+bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes) const {
+    boxes.clipped = false;
     const auto clip_to_stage = [&](IntervalBox& b, std::size_t stage) {
         const IntervalBox before = b;
         if (!clip_box(b, boxes_[stage])) return false;
-        clipped = clipped || before.lower() != b.lower() || before.upper() != b.upper();
+        boxes.clipped = boxes.clipped || before.lower() != b.lower() || before.upper() != b.upper();
         return true;
     };
-    if (!clip_to_stage(box, stages_.size())) return std::nullopt;
+    if (!clip_to_stage(box, stages_.size())) return false;
+    boxes.stage[stages_.size()] = box;
     for (std::size_t k = stages_.size(); k > 0; --k) {
-        IntervalBox preimage = std::visit([&](const auto& s) { return s.inverse_box(box); }, stages_[k - 1]);
-        if (!clip_to_stage(preimage, k - 1)) return std::nullopt;
-        if (tangent)
-            *tangent = std::visit([&](const auto& s) { return s.inverse_tangent(preimage, *tangent); }, stages_[k - 1]);
-        box = preimage;
+        IntervalBox preimage = std::visit([&](const auto& s) { return s.inverse_box(boxes.stage[k]); }, stages_[k - 1]);
+        if (!clip_to_stage(preimage, k - 1)) return false;
+        boxes.stage[k - 1] = preimage;
     }
-    return box;
+    return true;
+}
+
+IntervalBox DeformationChain::inverse_tangent(const InverseBoxes& boxes, IntervalBox tangent) const {
+    for (std::size_t k = stages_.size(); k > 0; --k)
+        tangent = std::visit([&](const auto& s) { return s.inverse_tangent(boxes.stage[k - 1], tangent); }, stages_[k - 1]);
+    return tangent;
+}
+
+std::optional<IntervalBox> DeformationChain::inverse_box(const IntervalBox& box, bool& clipped) const {
+    InverseBoxes boxes;
+    const bool inside = inverse_boxes(box, boxes);
+    clipped = boxes.clipped;
+    if (!inside) return std::nullopt;
+    return boxes.stage[0];
 }
 
 Vec3d DeformationChain::deform_normal(const Path& path, const Vec3d& undeformed_normal) const {

@@ -48,11 +48,20 @@ public:
     std::optional<Vec3d> inverse_along(const Vec3d& q, Vec3d& velocity) const;
     // The point at every stage of the inverse of q, without the stage-box checks (for normals at surface points).
     Path inverse_path(const Vec3d& q) const;
-    // A box bounding the undeformed points of the part of `box` that lies inside every stage box, or nothing when
-    // no part does. `clipped` tells whether some of `box` was cut away (those points are outside the object).
-    // With `tangent` (a bound of q'(t) for a curve q(t) in `box`), it is replaced by a bound of the derivative of
-    // the curve's undeformed points, valid where nothing was clipped.
-    std::optional<IntervalBox> inverse_box(IntervalBox box, bool& clipped, IntervalBox* tangent = nullptr) const;
+    // The boxes of an inverse walk of a box: stage[k] bounds the points of its part inside every stage box after k
+    // stages (stage[0] undeformed); `clipped` tells whether some of the box was cut away (those points are outside
+    // the object).
+    struct InverseBoxes {
+        std::array<IntervalBox, kMaxStages + 1> stage;
+        bool clipped = false;
+    };
+    // Walks `box` back through the stages into `boxes`; false when no part of it lies inside every stage box.
+    bool inverse_boxes(IntervalBox box, InverseBoxes& boxes) const;
+    // For a curve q(t) in the walked box with q'(t) in `tangent`: a bound of the derivative of its undeformed
+    // points, valid where nothing was clipped.
+    IntervalBox inverse_tangent(const InverseBoxes& boxes, IntervalBox tangent) const;
+    // inverse_boxes' undeformed box (stage[0]), or nothing; `clipped` as there.
+    std::optional<IntervalBox> inverse_box(const IntervalBox& box, bool& clipped) const;
     // The outward normal at path[size()] from the undeformed normal at path[0] (unit length).
     Vec3d deform_normal(const Path& path, const Vec3d& undeformed_normal) const;
 

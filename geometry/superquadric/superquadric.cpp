@@ -67,14 +67,23 @@ double Superquadric::local_field(const Vec3d& local) const {
 }
 
 Interval Superquadric::local_field_range(const IntervalBox& local) const {
-    bool clipped = false;
-    const std::optional<IntervalBox> undeformed = deformation_.inverse_box(local, clipped);
-    if (!undeformed) return Interval{1, 1};
-    const Interval gauge = shape_.gauge_range({undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
-    return Interval{gauge.lo - 1, clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
+    DeformationChain::InverseBoxes walked;
+    if (!deformation_.inverse_boxes(local, walked)) return Interval{1, 1};
+    return field_range(walked);
+}
+
+Interval Superquadric::field_range(const DeformationChain::InverseBoxes& walked) const {
+    const IntervalBox& undeformed = walked.stage[0];
+    const Interval gauge = shape_.gauge_range({undeformed.x.magnitude(), undeformed.y.magnitude(), undeformed.z.magnitude()});
+    return Interval{gauge.lo - 1, walked.clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
 }
 
 double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse_point(point)); }
+
+bool Superquadric::contains(const Vec3d& point) const {
+    const Vec3d local = placement_.inverse_point(point);
+    return deformation_.deformed_box().contains(local) && local_field(local) < 0;
+}
 
 double Superquadric::continued_field(const Vec3d& point) const {
     const Vec3d local = placement_.inverse_point(point);

@@ -47,11 +47,16 @@ public:
     IntervalBox bounds() const;
     // G(D⁻¹(p)) − 1 at a point of the shape's space: negative inside, 0 on the surface.
     double field(const Vec3d& point) const;
+    // field(point) < 0, without the gauge where the point lies outside the deformed box (the surface lies strictly
+    // inside that box, so the field is positive there).
+    bool contains(const Vec3d& point) const;
     // The field at a point of the local deformed frame (before the placement).
     double local_field(const Vec3d& local) const;
     // Contains local_field over a box of the local deformed frame (interval inverse of the chain, then the gauge's
     // range; points outside a stage box count as outside, 1).
     Interval local_field_range(const IntervalBox& local) const;
+    // The same over a box whose inverse walk through the chain found some of it inside every stage box.
+    Interval field_range(const DeformationChain::InverseBoxes& walked) const;
     // field() continued beyond the deformed box by the distance to it, in the local deformed frame (field() is a
     // constant 1 out there, the ray tracer needing only its sign): negative inside, continuous and rising outward.
     double continued_field(const Vec3d& point) const;

@@ -24,15 +24,25 @@ IntervalBox SuperquadricAlongRay::stretch(double a, double b) const {
     return box;
 }
 
-Interval SuperquadricAlongRay::bound(double a, double b) const { return superquadric_.local_field_range(stretch(a, b)); }
+const DeformationChain::InverseBoxes* SuperquadricAlongRay::walked(double a, double b) const {
+    if (!walked_ || a != walked_a_ || b != walked_b_) {
+        if (!walked_) walked_.emplace();
+        walked_a_ = a, walked_b_ = b;
+        walked_inside_ = superquadric_.deformation().inverse_boxes(stretch(a, b), *walked_);
+    }
+    return walked_inside_ ? &*walked_ : nullptr;
+}
+
+Interval SuperquadricAlongRay::bound(double a, double b) const {
+    const DeformationChain::InverseBoxes* boxes = walked(a, b);
+    return boxes ? superquadric_.field_range(*boxes) : Interval{1, 1};
+}
 
 Interval SuperquadricAlongRay::slope_bound(double a, double b) const {
-    bool clipped = false;
-    IntervalBox tangent = IntervalBox::point(direction_);
-    const std::optional<IntervalBox> undeformed =
-        superquadric_.deformation().inverse_box(stretch(a, b), clipped, &tangent);
-    if (!undeformed || clipped) return Interval::unbounded();
-    const IntervalBox gradient = superquadric_.shape().gradient_range(*undeformed);
+    const DeformationChain::InverseBoxes* boxes = walked(a, b);
+    if (!boxes || boxes->clipped) return Interval::unbounded();
+    const IntervalBox tangent = superquadric_.deformation().inverse_tangent(*boxes, IntervalBox::point(direction_));
+    const IntervalBox gradient = superquadric_.shape().gradient_range(boxes->stage[0]);
     Interval slope{0, 0};
     for (int k = 0; k < 3; ++k) {
         if (!gradient[k].is_finite()) return Interval::unbounded();

@@ -4,11 +4,15 @@
 // [a, b] of the ray — an interval bound of g, from the deformation chain's interval inverse and the gauge's
 // monotonicity in |x|, |y|, |z|, and an interval bound of g′, from the gauge's gradient range and the chain's
 // interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]).
+#include <limits>
+#include <optional>
+
 #include "renderer/math/interval.h"
 #include "geometry/superquadric/superquadric.h"
 
 namespace isotrace {
 
+// One per query: it keeps the walk of the last stretch it bounded (not to be shared between threads).
 class SuperquadricAlongRay {
 public:
     // `origin` and `direction` in the superquadric's shape space.
@@ -28,9 +32,16 @@ public:
 
 private:
     IntervalBox stretch(double a, double b) const;
+    // The inverse walk of stretch(a, b) (nullptr when no part of it lies inside every stage box), kept for the last
+    // stretch asked about: the search asks for the bound of g and then of g′ over the same stretch, and the walk
+    // (atan2s and sines through a bend) is most of either.
+    const DeformationChain::InverseBoxes* walked(double a, double b) const;
 
     const Superquadric& superquadric_;
     Vec3d origin_, direction_;
+    mutable double walked_a_ = std::numeric_limits<double>::quiet_NaN(), walked_b_ = walked_a_;
+    mutable bool walked_inside_ = false;
+    mutable std::optional<DeformationChain::InverseBoxes> walked_;  // made when first asked: most rays ask none
 };
 
 }  // namespace isotrace

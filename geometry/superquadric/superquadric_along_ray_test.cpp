@@ -82,6 +82,38 @@ TEST(SuperquadricAlongRay, TheSlopeBoundContainsTheDerivative) {
     EXPECT_GT(checked, 5000);
 }
 
+// The walk kept for the last stretch gives the bounds a fresh walk gives, whichever stretch was asked before.
+TEST(SuperquadricAlongRay, BoundsDoNotDependOnTheStretchAskedBefore) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    const auto same = [](Interval x, Interval y) { return x.lo == y.lo && x.hi == y.hi; };
+    int checked = 0;
+    for (int i = 0; i < 200; ++i) {
+        const RandomCase c = random_case(random);
+        const SuperquadricAlongRay ray(c.superquadric, c.origin, c.direction);
+        const auto stretch = box_stretch(c.superquadric, ray);
+        if (!stretch) continue;
+        const double length = stretch->t_exit - stretch->t_enter;
+        double previous_a = stretch->t_enter, previous_b = stretch->t_exit;
+        for (int j = 0; j < 20; ++j) {
+            const double width = length * std::pow(10.0, -3 * uniform(random));
+            const double a = stretch->t_enter + (length - width) * uniform(random), b = a + width;
+            const SuperquadricAlongRay fresh(c.superquadric, c.origin, c.direction);
+            const Interval value = fresh.bound(a, b);
+            const SuperquadricAlongRay fresh_for_slope(c.superquadric, c.origin, c.direction);
+            const Interval slope = fresh_for_slope.slope_bound(a, b);
+            EXPECT_TRUE(same(ray.slope_bound(a, b), slope));
+            EXPECT_TRUE(same(ray.bound(a, b), value));
+            EXPECT_TRUE(same(ray.slope_bound(a, b), slope));
+            ray.bound(previous_a, previous_b);
+            EXPECT_TRUE(same(ray.slope_bound(a, b), slope));
+            previous_a = a, previous_b = b;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 1000);
+}
+
 TEST(SuperquadricAlongRay, AStretchProvenMonotoneHoldsOneCrossingOrNone) {
     int proven_with_crossing = 0, proven_without = 0;
     for_random_stretches(92, 300, [&](const SuperquadricAlongRay& ray, double a, double b) {

@@ -153,8 +153,8 @@ void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin
     s.crossings(origin, direction, t_min, t_max, found, work);
     record_work(work);
     append_spans_from_crossings(
-        std::span<const Crossing>(found), s.field(origin + direction * t_min) < 0, t_min, t_max,
-        [&](const Crossing& c) { return BoundaryPoint{c.t, s.normal(origin + direction * c.t), index, 0}; }, spans);
+        std::span<const Crossing>(found), s.contains(origin + direction * t_min), t_min, t_max,
+        [&](const Crossing& c) { return BoundaryPoint{.t = c.t, .primitive = index}; }, spans);
 }
 
 void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
@@ -173,6 +173,10 @@ void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction
         append_span_events(i, 0, own, events);
     }
     combine_span_events(CsgOperation::Union, std::uint32_t(superquadrics_.size()), events, spans);
+}
+
+Vec3d SuperquadricShape::boundary_normal(const Vec3d& origin, const Vec3d& direction, const BoundaryPoint& end) const {
+    return superquadrics_[end.primitive].normal(origin + direction * end.t);
 }
 
 bool SuperquadricShape::certainly_outside(const Vec3d& point, double distance) const {

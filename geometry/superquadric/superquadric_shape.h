@@ -29,6 +29,10 @@ public:
 
     void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                       std::vector<InsideSpan>& spans, QueryScratch& scratch) const override;
+    // Span ends carry no normal: a normal (logarithms and powers, the deformation's Jacobians) costs about as much
+    // as finding the end, and a CSG shows one of the ends it asks for.
+    bool defers_normals(std::uint32_t) const override { return true; }
+    Vec3d boundary_normal(const Vec3d& origin, const Vec3d& direction, const BoundaryPoint& end) const override;
     bool certainly_outside(const Vec3d& point, double distance) const override;
 
     // The field of the union, positive inside: max over the set of 1 − G(D⁻¹(P)), G the superellipsoid's gauge

@@ -419,5 +419,31 @@ TEST(Superquadric, CertainlyOutsideHoldsOnlyForPointsTheSolidCannotReach) {
     EXPECT_GT(decided, 1000);
 }
 
+// contains() skips the gauge outside the deformed box and agrees with the field's sign everywhere: random shapes,
+// deformed or not, in every exponent range, at points inside, near and beyond their boxes (and on the boxes' faces).
+TEST(Superquadric, ContainsIsTheFieldsSign) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> exponent(0.02, 4), size(0.3, 2), unit(-1, 1);
+    int inside = 0, outside_box = 0;
+    for (int shape = 0; shape < 200; ++shape) {
+        const Vec3d radii(size(random), size(random), size(random));
+        const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
+                                    Transform::rotate({unit(random), unit(random), 1}, 180 * unit(random));
+        const Superquadric s = shape % 2 ? random_deformed_superquadric(random, radii, exponent, placement)
+                                         : make_superquadric(radii, exponent(random), exponent(random), {}, placement);
+        const IntervalBox& box = s.deformation().deformed_box();
+        for (int point = 0; point < 200; ++point) {
+            Vec3d local = Vec3d(unit(random), unit(random), unit(random)) * 1.5 * max_component(radii);
+            if (point % 10 == 0) local.x = unit(random) < 0 ? box.x.lo : box.x.hi;
+            const Vec3d p = placement.point(local);
+            ASSERT_EQ(s.contains(p), s.field(p) < 0) << "shape " << shape << " point " << point;
+            inside += s.contains(p);
+            outside_box += !box.contains(placement.inverse_point(p));
+        }
+    }
+    EXPECT_GT(inside, 500);
+    EXPECT_GT(outside_box, 10000);
+}
+
 }  // namespace
 }  // namespace isotrace

@@ -21,7 +21,8 @@ struct BoundaryPoint {
     static constexpr std::uint32_t kCut = std::numeric_limits<std::uint32_t>::max();
 
     double t = 0;
-    Vec3d normal{0, 0, 1};        // outward unit normal in the shape's space (meaningless for a cut end)
+    Vec3d normal{0, 0, 1};        // outward unit normal in the shape's space (meaningless for a cut end, and where
+                                  // the solid defers it: Solid::boundary_normal)
     std::uint32_t primitive = 0;  // the shape's primitive (element, triangle, ...) the point lies on; kCut when
                                   // the span was cut at the query range instead of ending on the surface
     std::uint32_t part = 0;       // for composite solids (CSG): which leaf surface the point lies on
@@ -61,6 +62,18 @@ public:
     // inside_spans over that range. Solids that can settle it with less work override it.
     virtual std::optional<BoundaryPoint> first_surface_point(const Vec3d& origin, const Vec3d& direction,
                                                              double t_near, double t_far, QueryScratch& scratch) const;
+    // Whether the span ends on part `part` leave their normal to boundary_normal: a solid whose normals cost more
+    // than its span ends (a CSG asks for many ends and shows one) computes them only for the end it is asked about.
+    virtual bool defers_normals(std::uint32_t part) const {
+        (void)part;
+        return false;
+    }
+    // The outward unit normal at `end`, a surface end of this solid's inside_spans or first_surface_point along the
+    // same ray: end.normal unless the solid defers it, and then bit for bit what it would have stored there.
+    virtual Vec3d boundary_normal(const Vec3d& origin, const Vec3d& direction, const BoundaryPoint& end) const {
+        (void)origin, (void)direction;
+        return end.normal;
+    }
     // True only when no point within `distance` of `point` lies inside or on the solid (false when unsure): lets a
     // CSG accept a surface point of one operand without listing the spans of the others.
     virtual bool certainly_outside(const Vec3d& point, double distance) const {
