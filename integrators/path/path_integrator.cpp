@@ -95,7 +95,8 @@ struct PathIntegrator::Path {
     const Vec3f towards_viewer = -ray.direction;
     if (depth == 0) primary.record(hit, hit.material->albedo(hit));
 
-    const Rgb emitted = hit.material->emission(hit, towards_viewer);
+    // Where nothing a ray can hit emits (delta lights only), the material's emission could only be black.
+    const Rgb emitted = scene.emission_can_be_hit() ? hit.material->emission(hit, towards_viewer) : Rgb();
     if (!emitted.is_black()) {
         float weight = 1;
         const Light* area_light = hit.object->area_light;
