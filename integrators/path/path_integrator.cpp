@@ -95,8 +95,7 @@ struct PathIntegrator::Path {
     const Vec3f towards_viewer = -ray.direction;
     if (depth == 0) primary.record(hit, hit.material->albedo(hit));
 
-    // Where nothing a ray can hit emits (delta lights only), the material's emission could only be black.
-    const Rgb emitted = scene.emission_can_be_hit() ? hit.material->emission(hit, towards_viewer) : Rgb();
+    const Rgb emitted = hit.material->emission(hit, towards_viewer);
     if (!emitted.is_black()) {
         float weight = 1;
         const Light* area_light = hit.object->area_light;
