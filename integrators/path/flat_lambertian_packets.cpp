@@ -93,14 +93,6 @@ void set_rays(Rays& rays, const Vec3Lanes& origin, const Vec3Lanes& direction, F
     store_lanes(reinterpret_cast<std::int32_t*>(rays.flags), splat(0));
 }
 
-// FloatLanes{value(0), value(1), ...}: built in registers from values read lane by lane.
-template <class Value>
-FloatLanes lanes_of(Value value) {
-    return [&]<std::size_t... lane>(std::index_sequence<lane...>) {
-        return FloatLanes{value(lane)...};
-    }(std::make_index_sequence<kLanes>{});
-}
-
 // Values written one lane at a time (where a lane may be skipped) go to an array and are loaded as a vector once: a
 // lane inserted into a vector in place is a store into it followed by a load of all of it, which waits for the
 // store (failed store forwarding) once per lane instead of once per vector. Where every lane is read, lanes_of is

@@ -14,6 +14,11 @@ struct ShadingFrame {
     Vec3f tangent, bitangent, normal;
 
     ShadingFrame(const Vec3f& n, const Vec3f& t) : normal(n) {
+        // Most hits have no tangent: its projection would be zero, and orthonormal_basis is what it would lead to.
+        if (t.x == 0 && t.y == 0 && t.z == 0) {
+            orthonormal_basis(n, tangent, bitangent);
+            return;
+        }
         const Vec3f along = t - n * dot(n, t);
         const float length2 = dot(along, along);
         if (length2 > 1e-12f) {

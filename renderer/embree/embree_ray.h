@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "renderer/core/ray.h"
+#include "renderer/math/lanes.h"
 #include "renderer/math/lanes4.h"
 
 namespace isotrace {
@@ -18,16 +19,23 @@ namespace isotrace {
 // are held within kWorldLimit (renderer/core/ray.h), below FLT_LARGE, where they are read, so a ray fails this only
 // when arithmetic on valid values went wrong; RenderScene then answers without Embree (a miss, or blocked for a
 // shadow ray) and counts it under "rays.untraceable". Every comparison is false for NaN.
+// Written once for one ray (float: a bool) and for a packet's lanes (FloatLanes: a mask per lane).
+template <class Float>
+auto traceable(Float origin_x, Float origin_y, Float origin_z, Float direction_x, Float direction_y, Float direction_z,
+               Float t_near, Float t_far) {
+    constexpr float kLimit = 1.844E18f;  // Embree's FLT_LARGE
+    // Bitwise on ints or masks (a unary + makes a bool an int), not && and ||: every traced ray passes, and without a
+    // branch after each test the check takes half the instructions (each ray of the path tracer is checked).
+    const auto within = [](Float value) { return +(abs(value) <= kLimit); };
+    const auto inside = within(origin_x) & within(origin_y) & within(origin_z) & within(direction_x) &
+                        within(direction_y) & within(direction_z);
+    const auto direction_non_zero = +(direction_x != 0.0f) | +(direction_y != 0.0f) | +(direction_z != 0.0f);
+    return inside & direction_non_zero & +(t_near >= 0.0f) & +(t_near <= t_far);
+}
+
 inline bool is_traceable(float origin_x, float origin_y, float origin_z, float direction_x, float direction_y,
                          float direction_z, float t_near, float t_far) {
-    constexpr float kLimit = 1.844E18f;  // Embree's FLT_LARGE
-    // Bitwise on ints, not && and ||: every traced ray passes, and without a branch after each test the check
-    // takes half the instructions (each ray of the path tracer is checked).
-    const auto within = [](float value) { return int(std::abs(value) <= kLimit); };
-    const int inside = within(origin_x) & within(origin_y) & within(origin_z) & within(direction_x) &
-                       within(direction_y) & within(direction_z);
-    const int direction_non_zero = int(direction_x != 0) | int(direction_y != 0) | int(direction_z != 0);
-    return (inside & direction_non_zero & int(t_near >= 0) & int(t_near <= t_far)) != 0;
+    return traceable(origin_x, origin_y, origin_z, direction_x, direction_y, direction_z, t_near, t_far) != 0;
 }
 
 inline bool is_traceable(const Ray& ray) {

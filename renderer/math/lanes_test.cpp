@@ -74,6 +74,15 @@ TEST(SinCosQuarterPi, WithinAboutAnUlp) {
     EXPECT_GT(checked, 200000);
 }
 
+// A lane mask from bits and back.
+TEST(Lanes, MaskOfBitsIsTheirLanes) {
+    for (unsigned bits = 0; bits < 256; ++bits) {
+        const IntLanes mask = lanes_of_bits(bits);
+        for (int lane = 0; lane < kLanes; ++lane) EXPECT_EQ(mask[lane], (bits >> lane & 1u) ? -1 : 0) << bits;
+        EXPECT_EQ(lane_bits(mask), bits);
+    }
+}
+
 // The concentric map on lanes gives the scalar map's bits, centre and diagonals included.
 TEST(ConcentricDiskPoint, LanesGiveTheScalarBits) {
     std::mt19937 random(5);

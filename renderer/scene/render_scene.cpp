@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -13,6 +14,8 @@
 #include "renderer/embree/embree_ray.h"
 #include "renderer/lights/area_light.h"
 #include "renderer/math/box_corner.h"
+#include "renderer/math/lanes.h"
+#include "renderer/math/lanes4.h"
 
 namespace isotrace {
 RenderScene::RenderScene() : scene_(rtcNewScene(embree_device())) { check_embree("creating the scene"); }
@@ -230,31 +233,60 @@ namespace {
 // store forwarding).
 float alone(const float& field) { return *static_cast<const volatile float*>(&field); }
 
+// Four rows of four floats turned into their four columns.
+void transpose(Float4& a, Float4& b, Float4& c, Float4& d) {
+    const Float4 ab_low = __builtin_shufflevector(a, b, 0, 4, 1, 5), ab_high = __builtin_shufflevector(a, b, 2, 6, 3, 7);
+    const Float4 cd_low = __builtin_shufflevector(c, d, 0, 4, 1, 5), cd_high = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+    a = __builtin_shufflevector(ab_low, cd_low, 0, 1, 4, 5);
+    b = __builtin_shufflevector(ab_low, cd_low, 2, 3, 6, 7);
+    c = __builtin_shufflevector(ab_high, cd_high, 0, 1, 4, 5);
+    d = __builtin_shufflevector(ab_high, cd_high, 2, 3, 6, 7);
+}
+
 // Writes the rays of the `live` lanes that Embree can trace (is_traceable) into `query` and marks them valid;
-// counts the others and returns their lanes.
+// counts the others and returns their lanes. The eight rays' first eight floats (origin, direction, t_near, t_far)
+// are loaded as rows and transposed into Embree's columns, and the test runs on the columns, without a branch per
+// lane: lane by lane it took about 65 instructions a ray. Every lane is written (Embree reads only the valid ones).
 unsigned set_packet(std::span<const Ray> rays, unsigned live, RTCRay8& query, std::array<std::int32_t, 8>& valid) {
-    unsigned untraceable = 0;
-    for (unsigned lanes = live; lanes; lanes &= lanes - 1) {
-        const int lane = std::countr_zero(lanes);
-        const Ray& ray = rays[std::size_t(lane)];
-        if (!is_traceable(ray)) [[unlikely]] {
-            untraceable |= 1u << lane;
-            continue;
-        }
-        valid[std::size_t(lane)] = -1;
-        query.org_x[lane] = ray.origin.x;
-        query.org_y[lane] = ray.origin.y;
-        query.org_z[lane] = ray.origin.z;
-        query.dir_x[lane] = ray.direction.x;
-        query.dir_y[lane] = ray.direction.y;
-        query.dir_z[lane] = ray.direction.z;
-        query.tnear[lane] = ray.t_near;
-        query.tfar[lane] = ray.t_far;
-        query.mask[lane] = 0xFFFFFFFFu;  // every geometry is seen (Debian's Embree has ray masks on)
-        query.time[lane] = 0;
-        query.id[lane] = 0;
-        query.flags[lane] = 0;
+    static_assert(kLanes == 8 && offsetof(Ray, direction) == 12 && offsetof(Ray, t_near) == 24 &&
+                  offsetof(Ray, t_far) == 28);
+    if (rays.size() < std::size_t(kLanes)) [[unlikely]] {  // read from a copy of eight
+        std::array<Ray, kLanes> padded;
+        std::copy(rays.begin(), rays.end(), padded.begin());
+        return set_packet(padded, live, query, valid);
     }
+    // columns[c] holds float c of the rays 0-3, columns[8 + c] of the rays 4-7.
+    std::array<Float4, 16> columns;
+    for (std::size_t half = 0; half < 2; ++half)
+        for (std::size_t row = 0; row < 4; ++row) {
+            const auto* first = reinterpret_cast<const char*>(&rays[4 * half + row]);
+            std::memcpy(&columns[8 * half + row], first, sizeof(Float4));
+            std::memcpy(&columns[8 * half + 4 + row], first + sizeof(Float4), sizeof(Float4));
+        }
+    for (std::size_t quarter = 0; quarter < 4; ++quarter) {
+        Float4* rows = &columns[4 * quarter];
+        transpose(rows[0], rows[1], rows[2], rows[3]);
+    }
+    const auto column = [&](std::size_t c) { return __builtin_shufflevector(columns[c], columns[8 + c], 0, 1, 2, 3, 4, 5, 6, 7); };
+    const FloatLanes origin_x = column(0), origin_y = column(1), origin_z = column(2), direction_x = column(3);
+    const FloatLanes direction_y = column(4), direction_z = column(5), t_near = column(6), t_far = column(7);
+    const IntLanes live_lanes = lanes_of_bits(live);
+    const IntLanes ok = traceable(origin_x, origin_y, origin_z, direction_x, direction_y, direction_z, t_near, t_far);
+    store_lanes(valid.data(), live_lanes & ok);
+    store_lanes(query.org_x, origin_x);
+    store_lanes(query.org_y, origin_y);
+    store_lanes(query.org_z, origin_z);
+    store_lanes(query.dir_x, direction_x);
+    store_lanes(query.dir_y, direction_y);
+    store_lanes(query.dir_z, direction_z);
+    store_lanes(query.tnear, t_near);
+    store_lanes(query.tfar, t_far);
+    // Every geometry is seen (mask all ones: Debian's Embree has ray masks on); time, id and flags 0.
+    store_lanes(reinterpret_cast<std::int32_t*>(query.mask), splat(-1));
+    store_lanes(query.time, splat(0.0f));
+    store_lanes(reinterpret_cast<std::int32_t*>(query.id), splat(0));
+    store_lanes(reinterpret_cast<std::int32_t*>(query.flags), splat(0));
+    const unsigned untraceable = lane_bits(live_lanes & ~ok);
     if (untraceable) [[unlikely]] RenderScene::count_untraceable_rays(std::uint64_t(std::popcount(untraceable)));
     return untraceable;
 }
@@ -296,16 +328,19 @@ void RenderScene::intersect(std::span<const Ray> rays, unsigned live, RayKind ki
     counters::count_rays(kind, std::uint64_t(std::popcount(live)));
     QueryContext context(scratch_pool_);
     RTCRayHit8 query;  // Embree reads only the valid lanes
-    alignas(32) std::array<std::int32_t, 8> valid{};
+    alignas(32) std::array<std::int32_t, 8> valid;
     set_packet(rays, live, query.ray, valid);  // an untraceable ray misses
-    for (std::size_t lane = 0; lane < rays.size(); ++lane) {
-        found[lane].reset();
-        query.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-        query.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-    }
+    store_lanes(reinterpret_cast<std::int32_t*>(query.hit.geomID), splat(std::int32_t(RTC_INVALID_GEOMETRY_ID)));
+    store_lanes(reinterpret_cast<std::int32_t*>(query.hit.instID[0]), splat(std::int32_t(RTC_INVALID_GEOMETRY_ID)));
     rtcIntersect8(valid.data(), scene_, &context.embree, &query);
+    const unsigned hits = lane_bits(load_lanes(valid.data()) &
+                                    (load_lanes(reinterpret_cast<const std::int32_t*>(query.hit.geomID)) !=
+                                     std::int32_t(RTC_INVALID_GEOMETRY_ID)));
     for (std::size_t lane = 0; lane < rays.size(); ++lane) {
-        if (!valid[lane] || query.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
+        if (!(hits >> lane & 1u)) {
+            found[lane].reset();
+            continue;
+        }
         RTCHit hit;
         hit.Ng_x = query.hit.Ng_x[lane];
         hit.Ng_y = query.hit.Ng_y[lane];
@@ -327,12 +362,11 @@ unsigned RenderScene::occluded(std::span<const Ray> rays, unsigned live) const {
     counters::count_rays(RayKind::Shadow, std::uint64_t(std::popcount(live)));
     QueryContext context(scratch_pool_);
     RTCRay8 query;  // Embree reads only the valid lanes
-    alignas(32) std::array<std::int32_t, 8> valid{};
-    unsigned blocked = set_packet(rays, live, query, valid);  // no light arrives along an untraceable ray
+    alignas(32) std::array<std::int32_t, 8> valid;
+    const unsigned untraceable = set_packet(rays, live, query, valid);  // no light arrives along an untraceable ray
     rtcOccluded8(valid.data(), scene_, &context.embree, &query);
-    for (std::size_t lane = 0; lane < rays.size(); ++lane)
-        if (valid[lane] && query.tfar[lane] == -std::numeric_limits<float>::infinity()) blocked |= 1u << lane;
-    return blocked;
+    return untraceable | lane_bits(load_lanes(valid.data()) &
+                                   (load_lanes(query.tfar) == -std::numeric_limits<float>::infinity()));
 }
 
 void RenderScene::complete_hit(const Ray& ray, const RTCHit& embree_hit, float t,

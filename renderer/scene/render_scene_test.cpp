@@ -16,6 +16,8 @@
 
 #include "geometry/mesh/triangle_mesh_shape.h"
 #include "geometry/sphere/sphere_shape.h"
+#include "renderer/embree/embree_ray.h"
+#include "renderer/math/lanes.h"
 
 namespace isotrace {
 namespace {
@@ -169,6 +171,28 @@ TEST(RenderScene, UntraceableRaysMissAndTheirShadowRaysAreBlocked) {
         EXPECT_TRUE(scene->occluded(rays[i])) << i;
     }
     EXPECT_EQ(untraceable_count() - before, 2 * rays.size());
+}
+
+// The packets' test in lanes says of each lane what the one-ray test says of its ray.
+TEST(RenderScene, TraceableLanesAreTheRaysOwnTest) {
+    std::vector<Ray> rays = untraceable_rays();
+    rays.push_back(ray_between({0, 4, 0}, {0, -1, 0}));
+    for (std::size_t traceable_lane = 0; traceable_lane < 8; ++traceable_lane) {
+        std::vector<Ray> packet(rays.begin(), rays.begin() + 8);
+        packet[traceable_lane] = rays.back();
+        const auto field = [&](auto read) { return lanes_of([&](std::size_t lane) { return read(packet[lane]); }); };
+        const IntLanes ok = traceable(field([](const Ray& r) { return r.origin.x; }),
+                                      field([](const Ray& r) { return r.origin.y; }),
+                                      field([](const Ray& r) { return r.origin.z; }),
+                                      field([](const Ray& r) { return r.direction.x; }),
+                                      field([](const Ray& r) { return r.direction.y; }),
+                                      field([](const Ray& r) { return r.direction.z; }),
+                                      field([](const Ray& r) { return r.t_near; }),
+                                      field([](const Ray& r) { return r.t_far; }));
+        for (std::size_t lane = 0; lane < 8; ++lane)
+            EXPECT_EQ(ok[lane], is_traceable(packet[lane]) ? -1 : 0) << traceable_lane << " " << lane;
+        EXPECT_EQ(lane_bits(ok), 1u << traceable_lane);
+    }
 }
 
 TEST(RenderScene, UntraceableLanesOfPacketsMissAndAreBlocked) {
