@@ -5,7 +5,7 @@ install(TARGETS isotrace EXPORT isotraceTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace)
 # The modules go beside the library, where it looks for them.
-install(TARGETS isotrace_oiio isotrace_exr isotrace_paths_avx2 isotrace_blobs_avx2 LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS isotrace_oiio isotrace_exr isotrace_blobs_avx2 LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(folder renderer geometry integrators)
   install(DIRECTORY ${folder} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isotrace
           FILES_MATCHING PATTERN "*.h" PATTERN "*_test*" EXCLUDE)

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "integrators/path/flat_lambertian_packets.h"
 #include "renderer/bsdf/shading_frame.h"
 #include "renderer/bsdf/surface_bsdf.h"
+#include "renderer/math/lanes.h"
 #include "renderer/plugin/material.h"
 #include "renderer/plugin/shadow_ray.h"
 #include "renderer/sampling/sampler.h"
@@ -208,17 +208,13 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
     return path.result;
 }
 
-std::size_t PathIntegrator::samples_traced_together(const RenderScene& scene) const {
+std::size_t PathIntegrator::samples_traced_together(const RenderScene&) const {
     static_assert(kLanes <= kMaxSamplesTogether && kLanes <= SampleStream::kMaxStreamsTogether);
-    (void)scene;
     return kLanes;
 }
 
-std::string PathIntegrator::packet_description(const RenderScene& scene) const {
-    if (!scene.flat_lambertian())
-        return std::to_string(kLanes) + " samples of a pixel as paths in step, each ray kind one packet query";
-    return std::to_string(kLanes) + " samples of a pixel in SIMD lanes (flat Lambertian scene), " +
-           flat_lambertian_kernel_name() + " kernel";
+std::string PathIntegrator::packet_description(const RenderScene&) const {
+    return std::to_string(kLanes) + " samples of a pixel as paths in step, each ray kind one packet query";
 }
 
 // The paths of a pixel's samples advance in step, one bounce each per round (their depths stay equal), so that each
@@ -228,10 +224,6 @@ std::string PathIntegrator::packet_description(const RenderScene& scene) const {
 void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
                                          std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                          std::span<Rgb> radiance) const {
-    if (const FlatLambertianScene* flat = scene.flat_lambertian()) {
-        flat_lambertian_kernel()(settings_, camera_rays, scene, *flat, samples, primary, radiance);
-        return;
-    }
     const std::size_t count = camera_rays.size();
     std::array<std::optional<Path>, kLanes> paths;
     std::array<Ray, kLanes> rays, shadows;

@@ -339,13 +339,12 @@ namespace {
 
 class SamplesInStep : public ::testing::TestWithParam<std::string> {};
 
-// Off the flat Lambertian class a pixel's samples are traced as paths in step whose rays are packet queries (user
-// geometries answering packets, placements, area and environment lights, delta and layered BSDFs): each sample must
+// A pixel's samples are traced as paths in step whose rays are packet queries (triangle meshes, user geometries
+// answering packets, placements, point, area and environment lights, delta and layered BSDFs): each sample must
 // keep radiance()'s bits, its AOV record and the sampler dimensions it took, whatever its companions, for groups of
 // eight and a shorter last one.
 TEST_P(SamplesInStep, GiveEachSampleRadiancesBits) {
     const auto loaded = load_scene(std::string(ISOTRACE_SCENES_DIR) + "/" + GetParam() + ".json");
-    ASSERT_EQ(loaded->scene->flat_lambertian(), nullptr);
     ASSERT_EQ(loaded->integrator->samples_traced_together(*loaded->scene), 8u);
     const int width = loaded->film.raster.width, height = loaded->film.raster.height;
     std::vector<std::array<int, 2>> pixels;
@@ -361,7 +360,7 @@ TEST_P(SamplesInStep, GiveEachSampleRadiancesBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SamplesInStep,
-                         ::testing::Values("primitives", "materials", "csg_cup", "metacube_dog", "instances",
+                         ::testing::Values("embree_cornell_box", "primitives", "materials", "csg_cup", "metacube_dog", "instances",
                                            "lookdev", "showcase"));
 
 }  // namespace

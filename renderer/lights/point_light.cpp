@@ -13,7 +13,6 @@ public:
     PointLight(const Vec3f& position, const Rgb& intensity) : position_(position), intensity_(intensity) {}
 
     bool is_delta() const override { return true; }
-    std::optional<IsotropicPoint> isotropic_point() const override { return IsotropicPoint{position_, intensity_}; }
     LightSample sample(const Vec3f& point, std::array<float, 2>) const override {
         const Vec3f offset = position_ - point;
         const float distance_squared = dot(offset, offset);

@@ -31,10 +31,6 @@ public:
         return lambertian;
     }
     TextureNeeds texture_needs() const override { return reflectance_->needs(); }
-    std::optional<Rgb> constant_lambertian_reflectance() const override {
-        if (emission_.emits()) return std::nullopt;
-        return reflectance_->constant();
-    }
 
 private:
     ColourTexturePtr reflectance_;

@@ -1,6 +1,6 @@
 #pragma once
-// kLanes 32-bit lanes (GCC/clang vector extensions), for code that runs a packet of paths side by side: two or
-// four SSE2 registers on baseline x86-64, one or two AVX registers in an AVX2 build. Arithmetic and comparisons
+// kLanes 32-bit lanes (GCC/clang vector extensions), for code that fills and reads Embree's packets of eight rays
+// or tests eight candidates at once: two SSE2 registers on baseline x86-64, one AVX register in an AVX2 build. Arithmetic and comparisons
 // act per lane and round as the scalar operations do (IEEE, no fused multiply-add on these targets), so code
 // written lane by lane gives the scalar code's bits. A comparison gives a mask: all bits set (-1) where true.
 #include <cmath>
@@ -25,15 +25,13 @@ using IntLanes = std::int32_t __attribute__((vector_size(4 * kLanes)));
 inline FloatLanes splat(float v) { return FloatLanes{} + v; }
 inline IntLanes splat(std::int32_t v) { return IntLanes{} + v; }
 
-// mask ? a : b, per lane; the scalar form too, so that code written once for float and FloatLanes reads the same.
-inline float select(bool mask, float a, float b) { return mask ? a : b; }
+// mask ? a : b, per lane.
 inline FloatLanes select(IntLanes mask, FloatLanes a, FloatLanes b) {
     return (FloatLanes)((mask & (IntLanes)a) | (~mask & (IntLanes)b));
 }
 inline IntLanes select(IntLanes mask, IntLanes a, IntLanes b) { return (mask & a) | (~mask & b); }
 
-// The lanes in parts the instruction set has registers for (8 with AVX, else 4), `op` applied to each part;
-// the compilers keep the parts in registers.
+// The lanes in parts the instruction set has registers for (8 with AVX, else 4).
 #ifdef __AVX__
 using FloatPart = float __attribute__((vector_size(32)));
 #else
@@ -41,18 +39,6 @@ using FloatPart = float __attribute__((vector_size(16)));
 #endif
 inline constexpr int kPartLanes = int(sizeof(FloatPart) / sizeof(float));
 static_assert(kLanes % kPartLanes == 0, "the lanes must fill whole parts");
-
-template <class Op>
-inline FloatLanes by_parts(FloatLanes v, Op op) {
-    FloatLanes result;
-    for (int first = 0; first < kLanes; first += kPartLanes) {
-        FloatPart part;
-        std::memcpy(&part, reinterpret_cast<const float*>(&v) + first, sizeof part);
-        part = op(part);
-        std::memcpy(reinterpret_cast<float*>(&result) + first, &part, sizeof part);
-    }
-    return result;
-}
 
 // One bit per lane of a mask, lane 0 lowest (movmskps on each part: the same in GCC and clang).
 inline unsigned lane_bits(IntLanes mask) {
@@ -68,25 +54,12 @@ inline unsigned lane_bits(IntLanes mask) {
     }
     return bits;
 }
-inline bool any(IntLanes mask) { return lane_bits(mask) != 0; }
 
-// The correctly rounded square root per lane, as std::sqrt gives it.
-inline FloatLanes sqrt(FloatLanes v) {
-#ifdef __AVX__
-    return by_parts(v, [](FloatPart part) { return __builtin_ia32_sqrtps256(part); });
-#else
-    return by_parts(v, [](FloatPart part) { return __builtin_ia32_sqrtps(part); });
-#endif
-}
 inline float abs(float v) { return std::abs(v); }
 inline FloatLanes abs(FloatLanes v) { return (FloatLanes)((IntLanes)v & splat(0x7fffffff)); }
 // std::max(a, b) and std::min(a, b) per lane, NaN included: (a < b) ? b : a and (b < a) ? b : a.
 inline FloatLanes max(FloatLanes a, FloatLanes b) { return select(a < b, b, a); }
 inline FloatLanes min(FloatLanes a, FloatLanes b) { return select(b < a, b, a); }
-// std::copysign(1, v) per lane.
-inline FloatLanes sign_of(FloatLanes v) {
-    return (FloatLanes)(((IntLanes)v & splat(std::int32_t(0x80000000u))) | (IntLanes)splat(1.0f));
-}
 
 // Lanes to and from arrays (Embree's SoA packets).
 inline FloatLanes load_lanes(const float* p) {

@@ -24,13 +24,6 @@ struct LightSample {
     bool is_delta = false;
 };
 
-// An isotropic point light as sample() uses it: the path tracer's packets sample such lights eight shading points
-// at a time (integrators/path/flat_lambertian_packets.h).
-struct IsotropicPoint {
-    Vec3f position;
-    Rgb intensity;
-};
-
 class Light {
 public:
     virtual ~Light() = default;
@@ -53,8 +46,6 @@ public:
     virtual bool is_infinite() const { return false; }
     // A point or a direction (point, spot, directional): sample() returns the same for every u.
     virtual bool is_delta() const { return false; }
-    // Set for isotropic point lights only, whose sample() is that of IsotropicPoint (renderer/lights/point_light.cpp).
-    virtual std::optional<IsotropicPoint> isotropic_point() const { return std::nullopt; }
 
     // Emitted power (max over channels), for choosing lights in proportion to it. Lights at infinity need the
     // scene's extent, given to preprocess() after the scene is built.

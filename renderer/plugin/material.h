@@ -32,10 +32,6 @@ public:
         (void)hit;
         return {};
     }
-    // R when, at every hit, bsdf() is LambertBsdf(R), albedo() is R and nothing is emitted: the path tracer can then
-    // shade such surfaces eight paths at a time. nullopt for every other material.
-    virtual std::optional<Rgb> constant_lambertian_reflectance() const { return std::nullopt; }
-
     // Materials that can blend with others where a surface's parts meet (blob elements with materials of their
     // own) describe themselves at a hit as principled parameters; the blend mixes those.
     virtual bool can_blend() const { return false; }

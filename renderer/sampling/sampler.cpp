@@ -1,7 +1,5 @@
 #include "renderer/sampling/sampler.h"
 
-#include <cassert>
-
 #include "renderer/sampling/hash.h"
 #include "renderer/sampling/owen_scramble.h"
 
@@ -17,25 +15,6 @@ PixelSampleContext Sampler::context(const PixelSampleKey& key) const {
 
 SampleStream::SampleStream(const Sampler& sampler, PixelSampleKey key)
     : sampler_(&sampler), context_(sampler.context(key)) {}
-
-void SampleStream::next_blocks(std::span<SampleStream> streams, unsigned live, std::span<Sampler::Block> values) {
-    std::array<PixelSampleContext, kMaxStreamsTogether> contexts;
-    std::array<Sampler::Block, kMaxStreamsTogether> computed;
-    std::size_t count = 0;
-    uint32_t block = 0;
-    for (std::size_t i = 0; i < streams.size(); ++i) {
-        if (!(live >> i & 1u)) continue;
-        const uint32_t taken = streams[i].take_block();
-        assert(count == 0 || taken == block);  // the streams stand in one block
-        block = taken;
-        contexts[count++] = streams[i].context_;
-    }
-    if (count == 0) return;
-    streams[0].sampler_->sample_blocks(std::span(contexts.data(), count), block, std::span(computed.data(), count));
-    count = 0;
-    for (std::size_t i = 0; i < streams.size(); ++i)
-        if (live >> i & 1u) values[i] = computed[count++];
-}
 
 void SampleStream::fill_caches(std::span<SampleStream> streams) {
     std::array<PixelSampleContext, kMaxStreamsTogether> contexts;

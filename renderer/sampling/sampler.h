@@ -79,11 +79,9 @@ public:
     uint32_t dimension() const { return dimension_; }
 
     // Several streams of one pixel and sampler (at most kMaxStreamsTogether) whose counters stand in the same
-    // block, computed together with Sampler::sample_blocks; only the streams whose bit in `live` is set take part.
-    // next_blocks gives each what next_block() would; fill_caches computes the block each stream's next values
-    // come from, so that its next_1d() and next_2d() calls read them without computing.
+    // block: fill_caches computes that block for all of them together (Sampler::sample_blocks), so that their next
+    // next_1d() and next_2d() calls read it without computing.
     static constexpr std::size_t kMaxStreamsTogether = 8;
-    static void next_blocks(std::span<SampleStream> streams, unsigned live, std::span<Sampler::Block> values);
     static void fill_caches(std::span<SampleStream> streams);
 
 private:

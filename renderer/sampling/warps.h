@@ -6,7 +6,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/math/lanes.h"
 #include "renderer/math/sin_cos_quarter_pi.h"
 #include "renderer/math/vec3.h"
 
@@ -14,19 +13,17 @@ namespace isotrace {
 
 // Shirley-Chiu concentric map: area-preserving and low distortion, so square strata stay compact on the disk.
 // Uniform on the unit disk (density 1/pi). (a, b) = 2u - 1 in [-1, 1)^2; the point is at radius r = the larger of
-// |a|, |b| (signed), pi/4 * (smaller / larger) from that axis. One template for a float and for eight lanes
-// (the path tracer's packets), branch-free, so both give the same bits.
-template <class T>
-inline void concentric_disk_point(T a, T b, T& x, T& y) {
+// |a|, |b| (signed), pi/4 * (smaller / larger) from that axis.
+inline void concentric_disk_point(float a, float b, float& x, float& y) {
     constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.0f;
-    const auto a_major = abs(a) > abs(b);
-    const T r = select(a_major, a, b);
+    const bool a_major = std::abs(a) > std::abs(b);
+    const float r = a_major ? a : b;
     // r = 0 only at the centre, where the point is (0, 0) whatever the angle.
-    const T angle = kQuarterPi * select(r != 0.0f, select(a_major, b, a) / r, T{});
-    T sine, cosine;
+    const float angle = kQuarterPi * (r != 0.0f ? (a_major ? b : a) / r : 0.0f);
+    float sine, cosine;
     sin_cos_quarter_pi(angle, sine, cosine);
-    x = r * select(a_major, cosine, sine);
-    y = r * select(a_major, sine, cosine);
+    x = r * (a_major ? cosine : sine);
+    y = r * (a_major ? sine : cosine);
 }
 
 // Inline, as are the cosine-weighted warps below: every diffuse bounce and every thin-lens camera ray takes one.

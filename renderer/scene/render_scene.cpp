@@ -220,7 +220,6 @@ void RenderScene::commit() {
     rtcCommitScene(scene_);
     check_embree("building the scene BVH");
     build_lights();
-    describe_flat_lambertian();
     build_statistics_.objects = next_id_;
     build_statistics_.embree_bytes = embree_bytes_in_use() - bytes_before;
     build_statistics_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -431,82 +430,6 @@ void RenderScene::count_untraceable_rays(std::uint64_t count) {
     counters::add_to_named<1>({slot}, {count});
 }
 
-namespace {
-
-// The lanes of `valid` whose rays Embree can trace; the others are counted.
-template <class Rays>
-std::array<std::int32_t, 8> traceable_lanes(const std::int32_t* valid, const Rays& rays) {
-    alignas(32) std::array<std::int32_t, 8> traceable;
-    int untraceable = 0;
-    for (int lane = 0; lane < 8; ++lane) {
-        const bool ok = is_traceable(rays.org_x[lane], rays.org_y[lane], rays.org_z[lane], rays.dir_x[lane],
-                                     rays.dir_y[lane], rays.dir_z[lane], rays.tnear[lane], rays.tfar[lane]);
-        traceable[std::size_t(lane)] = valid[lane] != 0 && ok ? -1 : 0;
-        untraceable += valid[lane] != 0 && !ok;
-    }
-    if (untraceable) [[unlikely]] RenderScene::count_untraceable_rays(std::uint64_t(untraceable));
-    return traceable;
-}
-
-}  // namespace
-
-void RenderScene::intersect_packet(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const {
-    QueryContext context(scratch_pool_);
-    alignas(32) const std::array<std::int32_t, 8> traceable = traceable_lanes(valid, query.ray);  // others miss
-    rtcIntersect8(traceable.data(), scene_, &context.embree, &query);
-    // Counted per packet, without branches where every object counts in one slot (counting lane by lane chains
-    // stores and loads of the same counter, and the branches on the lanes mispredict).
-    int rays = 0, hits = 0;
-    for (int lane = 0; lane < 8; ++lane) {
-        const bool live = valid[lane] != 0;
-        rays += live;
-        hits += live && query.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
-    }
-    counters::count_rays(kind, std::uint64_t(rays));
-    if (flat_lambertian_ && flat_lambertian_->counter_slot >= 0) {
-        counters::count_closest_hits(flat_lambertian_->counter_slot, std::uint64_t(hits));
-        return;
-    }
-    for (int lane = 0; lane < 8; ++lane)
-        if (valid[lane] && query.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID)
-            counters::count_closest_hit(traced_[query.hit.geomID[lane]].object->counter_slot);
-}
-
-void RenderScene::occluded_packet(const std::int32_t* valid, RTCRay8& query) const {
-    QueryContext context(scratch_pool_);
-    alignas(32) const std::array<std::int32_t, 8> traceable = traceable_lanes(valid, query);
-    for (int lane = 0; lane < 8; ++lane)  // an untraceable shadow ray is blocked
-        if (valid[lane] && !traceable[std::size_t(lane)]) query.tfar[lane] = -std::numeric_limits<float>::infinity();
-    rtcOccluded8(traceable.data(), scene_, &context.embree, &query);
-    int rays = 0;
-    for (int lane = 0; lane < 8; ++lane) rays += valid[lane] != 0;
-    counters::count_rays(RayKind::Shadow, std::uint64_t(rays));
-}
-
-void RenderScene::describe_flat_lambertian() {
-    FlatLambertianScene flat;
-    for (const Light* light : all_lights_) {
-        const std::optional<IsotropicPoint> point = light->isotropic_point();
-        if (!point) return;
-        flat.lights.push_back(*point);
-    }
-    flat.reflectance_of_geometry.resize(traced_.size());
-    flat.counter_slot = objects_.empty() ? -1 : objects_[0].counter_slot;
-    for (std::size_t id = 0; id < traced_.size(); ++id) {
-        if (!traced_[id].object) return;  // placements
-        const SceneObject& object = *traced_[id].object;
-        // Embree-hit shading has no parts: its material is that of part 0.
-        const Material* material = object.material_of_part(0);
-        if (object.hit_shading == HitShading::Computed || !material) return;
-        const std::optional<Rgb> reflectance = material->constant_lambertian_reflectance();
-        if (!reflectance) return;
-        flat.reflectance_of_geometry[id] = *reflectance;
-        if (object.counter_slot != flat.counter_slot) flat.counter_slot = -1;
-    }
-    if (emission_can_be_hit_) return;
-    flat_lambertian_ = std::move(flat);
-}
-
 void RenderScene::build_lights() {
     // Emission found by rays: every emissive material, also per-part ones and those of unsampled emitters.
     const auto note_emission = [&](const SceneObject& object) {
@@ -563,7 +486,7 @@ void RenderScene::build_lights() {
 LightChoice RenderScene::choose_light(float u) const {
     if (!light_distribution_) return {};
     const Distribution1D::DiscreteSample pick = light_distribution_->sample_discrete(u);
-    return {all_lights_[pick.index], pick.probability, std::uint32_t(pick.index)};
+    return {all_lights_[pick.index], pick.probability};
 }
 
 float RenderScene::light_probability(const Light* light) const {

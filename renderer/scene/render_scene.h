@@ -60,16 +60,6 @@ struct Placements {
 struct LightChoice {
     const Light* light = nullptr;
     float probability = 0;
-    std::uint32_t index = 0;  // in all_lights()
-};
-
-// A scene whose every object is a flat triangle mesh in world space (Embree's own hit is its shading) with a
-// constant, non-emissive Lambertian material, and whose every light is an isotropic point light: what the path
-// tracer needs to shade eight paths at a time with Embree's packet queries (integrators/path/flat_lambertian_packets.h).
-struct FlatLambertianScene {
-    std::vector<Rgb> reflectance_of_geometry;         // by Embree geometry id
-    std::vector<IsotropicPoint> lights;               // as all_lights() orders them
-    int counter_slot = -1;                            // the objects' counter slot if they all share one, else -1
 };
 
 class RenderScene {
@@ -136,12 +126,6 @@ public:
     // True when choosing and sampling a light reads no random number: at most one light, and that a delta light.
     bool light_sampling_is_deterministic() const { return light_sampling_is_deterministic_; }
 
-    // Set by commit for scenes of that kind (see FlatLambertianScene), null otherwise.
-    const FlatLambertianScene* flat_lambertian() const { return flat_lambertian_ ? &*flat_lambertian_ : nullptr; }
-    // Embree's packet queries, counted as intersect() and occluded() count, for the lanes `valid` marks (-1): only
-    // for flat Lambertian scenes (no user geometry, no instances). The caller sets the rays.
-    void intersect_packet(const std::int32_t* valid, RTCRayHit8& query, RayKind kind) const;
-    void occluded_packet(const std::int32_t* valid, RTCRay8& query) const;
 
     // The objects written with a shape of their own (add_object), in the order added; placements are not among them.
     const std::vector<SceneObject>& objects() const { return objects_; }
@@ -200,7 +184,6 @@ private:
     std::unordered_map<const Light*, float> light_probabilities_;
     bool emission_can_be_hit_ = false;
     bool light_sampling_is_deterministic_ = true;
-    std::optional<FlatLambertianScene> flat_lambertian_;
     BuildStatistics build_statistics_;
     // The buffers of queries that reach solids (CSG, superquadrics, ...), lent to them through QueryContext.
     mutable QueryScratchPool scratch_pool_;
@@ -210,7 +193,6 @@ private:
     RTCScene new_shape_scene(RTCGeometry geometry);
     void attach(RTCGeometry geometry, const TracedGeometry& traced, const std::string& name);
     void build_lights();
-    void describe_flat_lambertian();
 };
 
 }  // namespace isotrace

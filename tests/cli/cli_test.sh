@@ -1949,11 +1949,11 @@ case_diff_ztest() {  # an unbiased 64-spp render passes against a 1024-spp refer
 # tools/convergence: a ladder per scene and build, its errors against a cached reference, the time to an error, the
 # log-log plot; bad arguments are exit 2.
 case_convergence_tool() {
-  python3 tools/convergence "$cornell" box+speck --builds "one=$cli,two=$cli" --res 16x16 --spp-ladder 1,2,4 \
+  python3 tools/convergence "$cornell" scenes/embree_cornell_box.json --builds "one=$cli,two=$cli" --res 16x16 --spp-ladder 1,2,4 \
     --reference-spp 16 --threads 1 --cache "$work/cache" --plot "$work/plot.svg" --json "$work/c.json" \
     >"$work/stdout" 2>"$work/stderr" || { cat "$work/stderr" >&2; fail "tools/convergence failed"; }
   expect_in "$work/stdout" "scenes/cornell_box.json:" stdout
-  expect_in "$work/stdout" "box+speck:" stdout
+  expect_in "$work/stdout" "scenes/embree_cornell_box.json:" stdout
   expect_in "$work/stdout" "x one's" stdout
   grep -q "<polyline" "$work/plot.svg" || fail "no lines in the plot"
   (($(ls "$work/cache" | grep -c '\.exr$') == 2)) || fail "not one cached reference per scene"
