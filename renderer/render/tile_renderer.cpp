@@ -236,7 +236,7 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
         // Passes end at the powers of two (1, 2, 4, 8, ...): sizes double so early passes give a quick preview,
         // and a film left at another count (a pass shrunk by a time budget, then resumed) is brought back onto
         // the same boundaries that stop_at_pass_end is asked at. The first pass is as large as the group of
-        // samples the integrator traces together (8 in SIMD lanes: passes of 1, 1, 2 and 4 would run packets
+        // samples the integrator traces together (8 as one packet: passes of 1, 1, 2 and 4 would run packets
         // with 1, 1, 2 and 4 of their 8 lanes live; docs/decisions.md, "Passes that fill the lanes"). Under a time
         // budget the next pass is shrunk to what the measured speed says still fits, so that most budgets end on a
         // whole pass. (The budget is hard either way: a pass that overruns is stopped within a group.)

@@ -40,7 +40,7 @@ struct RenderOptions {
     std::function<void(const Film&)> on_checkpoint;
     // Called on the rendering thread at every pass boundary where all pixels have the same power-of-two sample
     // count (passes end at 1, 2, 4, 8, ... samples; the first at the number of samples the integrator traces
-    // together, 8 for SIMD lanes), at most once per count; returning true ends the render.
+    // together, 8 for the path tracer), at most once per count; returning true ends the render.
     // What it sees depends only on the image at those counts, never on timing or threads, so a stop it decides
     // is reproducible (isotrace render --target-error).
     std::function<bool(const Film&)> stop_at_pass_end;
