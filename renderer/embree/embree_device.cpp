@@ -3,6 +3,7 @@
 #include <pmmintrin.h>
 #include <xmmintrin.h>
 
+#include <cctype>
 #include <mutex>
 #include <stdexcept>
 
@@ -29,9 +30,9 @@ bool track_memory(void*, ssize_t bytes, bool) {
 RTCDevice embree_device() {
     // Created once and deliberately kept for the life of the process: Embree objects may outlive any owner.
     static const RTCDevice device = [] {
-        // At most AVX2: Embree's AVX-512 kernels round hit distances differently from its AVX2 ones, so images,
-        // the CPU benchmark's output hashes and MPI jobs over mixed machines would differ from machine to machine.
-        RTCDevice created = rtcNewDevice("verbose=0,max_isa=avx2");
+        std::string config = "verbose=0,max_isa=";
+        for (const char c : kEmbreeIsaCap) config += char(std::tolower(static_cast<unsigned char>(c)));
+        RTCDevice created = rtcNewDevice(config.c_str());
         if (!created) throw std::runtime_error("cannot create the Embree device");
         rtcSetDeviceErrorFunction(created, record_error, nullptr);
         rtcSetDeviceMemoryMonitorFunction(created, track_memory, nullptr);

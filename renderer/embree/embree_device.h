@@ -6,10 +6,16 @@
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace isotrace {
 
-// Its instruction set is Embree's best for the CPU up to AVX2 (AVX-512 machines run the AVX2 kernels).
+// The widest instruction set Embree may use (its name as Embree's verbose output gives it). Embree's AVX-512
+// kernels round hit distances differently from its AVX2 ones, so images, the CPU benchmark's output hashes and MPI
+// jobs over mixed machines would differ from machine to machine.
+inline constexpr std::string_view kEmbreeIsaCap = "AVX2";
+
+// Its instruction set is Embree's best for the CPU up to kEmbreeIsaCap.
 RTCDevice embree_device();
 
 // Throws std::runtime_error naming `what` if Embree recorded an error since the last check.

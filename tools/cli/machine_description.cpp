@@ -2,6 +2,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
+#include <array>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -49,6 +51,13 @@ std::string cpu_model() {
     return model.empty() ? "unknown" : model;
 }
 
+namespace {
+
+// Embree's instruction sets, narrowest first.
+constexpr std::array<std::string_view, 5> kEmbreeIsas = {"SSE2", "SSE4.2", "AVX", "AVX2", "AVX512SKX"};
+
+}  // namespace
+
 std::string isa_from_cpu_flags(const std::string& flags) {
     std::set<std::string> present;
     std::istringstream words(flags);
@@ -68,7 +77,8 @@ std::string isa_from_cpu_flags(const std::string& flags) {
 
 std::string embree_isa() {
     const std::string best = isa_from_cpu_flags(cpuinfo_value("flags"));
-    return best == "AVX512SKX" ? "AVX2" : best;  // embree_device() caps Embree at AVX2
+    const auto rank = [](std::string_view isa) { return std::find(kEmbreeIsas.begin(), kEmbreeIsas.end(), isa); };
+    return rank(best) != kEmbreeIsas.end() && rank(best) > rank(kEmbreeIsaCap) ? std::string(kEmbreeIsaCap) : best;
 }
 
 nlohmann::json machine_description() {
