@@ -326,6 +326,8 @@ void RenderScene::intersect(std::span<const Ray> rays, unsigned live, RayKind ki
     }
     counters::count_rays(kind, std::uint64_t(std::popcount(live)));
     QueryContext context(scratch_pool_);
+    // A pixel's camera rays are alike, and Embree traverses such a packet as one; later rays have scattered.
+    if (kind == RayKind::Camera) context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     RTCRayHit8 query;  // Embree reads only the valid lanes
     alignas(32) std::array<std::int32_t, 8> valid;
     set_packet(rays, live, query.ray, valid);  // an untraceable ray misses
