@@ -1,8 +1,9 @@
 #pragma once
 // kLanes 32-bit lanes (GCC/clang vector extensions), for code that fills and reads Embree's packets of eight rays
-// or tests eight candidates at once: two SSE2 registers on baseline x86-64, one AVX register in an AVX2 build. Arithmetic and comparisons
-// act per lane and round as the scalar operations do (IEEE, no fused multiply-add on these targets), so code
-// written lane by lane gives the scalar code's bits. A comparison gives a mask: all bits set (-1) where true.
+// or tests eight candidates at once: two SSE2 registers on baseline x86-64, one AVX register in an AVX2 build.
+// Arithmetic and comparisons act per lane and round as the scalar operations do (IEEE, no fused multiply-add on
+// these targets), so code written lane by lane gives the scalar code's bits. A comparison gives a mask: all bits
+// set (-1) where true.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
