@@ -1,8 +1,8 @@
 #pragma once
 // 2^y and log2(x) by short series, for the superellipsoid's powers of fractional exponents, x^p = 2^(p·log2 x): a
-// general pow works in extra precision to round correctly (about a hundred instructions, a third of a twisted
-// shape's ray), where the gauge needs a few ulps. log2 x to within an ulp or two of its size, 2^y to within two ulps
-// plus e·|y|·2⁻⁵³ from y's own rounding (tested through NormExponent's powers and roots).
+// general pow works in extra precision to round correctly, where the gauge needs a few ulps. log2 x to within an
+// ulp or two of its size, 2^y to within two ulps plus ln 2·|y|·2⁻⁵³ from y's own rounding (tested through
+// NormExponent's powers and roots).
 #include <bit>
 #include <cmath>
 #include <cstdint>

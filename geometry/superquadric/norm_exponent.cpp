@@ -1,9 +1,9 @@
 #include "geometry/superquadric/norm_exponent.h"
 
-#include "geometry/superquadric/exp2_log2.h"
-
 #include <numbers>
 #include <utility>
+
+#include "geometry/superquadric/exp2_log2.h"
 
 namespace isotrace {
 namespace {

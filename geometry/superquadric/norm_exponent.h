@@ -1,9 +1,10 @@
 #pragma once
 // A p-norm's exponent p = 2/ε and the powers and roots the superellipsoid's gauge takes with it: r^p of a share
 // r ∈ [0, 1], and the root s^(1/p) of 1 + r^p ∈ [1, 2]. Those are the gauge's hottest calls, and a general pow
-// costs about a hundred instructions, so small whole exponents (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) take
-// powers by repeated squaring, unrolled for each exponent, and roots by one Halley step on x^p = s from a polynomial
-// first guess; fractional ones both as 2^(p·log2 x) by short series (exp2_log2.h), to within a few ulps.
+// (which works in extra precision to round correctly) costs several times what they need, so small whole
+// exponents (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) take powers by repeated squaring, unrolled for each
+// exponent, and roots by one Halley step on x^p = s from a polynomial first guess; fractional ones take both as
+// 2^(p·log2 x) by short series (exp2_log2.h), to within a few ulps.
 #include <array>
 #include <cmath>
 
@@ -20,7 +21,7 @@ struct NormExponent {
 
     static NormExponent of_epsilon(double epsilon);
 
-    // r^p for r in [0, 1] (pow below 2⁻¹⁰⁰⁰, where log2_of needs a normal number).
+    // r^p for r in [0, 1].
     double unit_power(double r) const {
         if (whole == 2) return r * r;  // without the call: round cross-sections are the rule
         return whole > 0 ? whole_power(r) : fractional_power(r);
