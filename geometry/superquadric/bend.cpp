@@ -85,17 +85,29 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
     const FrameBox f = to_frame(box);
     const Interval z_in = f.z + (-centre_);
     const Interval a = f.s * curvature_ + (-1.0), b = z_in * curvature_;
-    // The angles about the centre that the box covers, relative to the region's middle angle: from its corners,
-    // unless it contains the centre or straddles the opposite direction (then every angle).
+    // The angles about the centre that the box covers, relative to the region's middle angle: those of its two
+    // extreme corners, unless it contains the centre or straddles the opposite direction (then every angle). A
+    // corner's direction from the centre is u = (−a, b) in the bend frame; a box that does not hold the centre lies
+    // within half a turn of it, and the signs of its sides tell which corners turn least and most (atan2 is most
+    // of the walk: two calls instead of one per corner).
+    struct Direction {
+        double x, y;
+    };
+    const double x0 = -a.hi, x1 = -a.lo, y0 = b.lo, y1 = b.hi;
+    Direction first{}, last{};  // the most clockwise and the most counter-clockwise corner
+    bool holds_centre = false;
+    if (x0 > 0) first = {y0 >= 0 ? x1 : x0, y0}, last = {y1 >= 0 ? x0 : x1, y1};
+    else if (x1 < 0) first = {y1 <= 0 ? x0 : x1, y1}, last = {y0 <= 0 ? x1 : x0, y0};
+    else if (y0 > 0) first = {x1, x1 <= 0 ? y1 : y0}, last = {x0, x0 <= 0 ? y0 : y1};
+    else if (y1 < 0) first = {x0, x0 >= 0 ? y0 : y1}, last = {x1, x1 >= 0 ? y1 : y0};
+    else holds_centre = true;
     const double cm = cos_middle_, sm = sin_middle_;
-    Interval relative{std::numbers::pi, -std::numbers::pi};
-    for (const double ca : {a.lo, a.hi})
-        for (const double cb : {b.lo, b.hi}) {
-            const double angle = std::atan2(cb * cm + ca * sm, -ca * cm + cb * sm);
-            relative = {std::min(relative.lo, angle), std::max(relative.hi, angle)};
-        }
-    if ((a.contains(0) && b.contains(0)) || relative.width() >= std::numbers::pi)
-        relative = {-std::numbers::pi, std::numbers::pi};
+    const auto relative_angle = [&](Direction u) { return std::atan2(u.y * cm - u.x * sm, u.x * cm + u.y * sm); };
+    Interval relative{-std::numbers::pi, std::numbers::pi};
+    if (!holds_centre) {
+        const Interval spanned{relative_angle(first), relative_angle(last)};
+        if (spanned.lo <= spanned.hi && spanned.width() < std::numbers::pi) relative = spanned;
+    }
     const Interval theta = {std::clamp(angle_middle_ + relative.lo, angle_lo_, angle_hi_),
                             std::clamp(angle_middle_ + relative.hi, angle_lo_, angle_hi_)};
     const auto [sn, c] = sin_cos_range(theta);

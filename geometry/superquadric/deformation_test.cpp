@@ -147,6 +147,32 @@ TEST(SuperquadricDeformation, BoxesMapConservativelyBothWays) {
     }
 }
 
+// The bend's inverse box takes the angles about the bend's centre from the box's two extreme corners: boxes anywhere
+// around the centre (on it, beside it, across the direction opposite the region's middle, thin and wide) bound the
+// inverses of their points.
+TEST(SuperquadricDeformation, TheBendsInverseBoxHoldsItsPointsAllAroundTheCentre) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> unit(0, 1), signed_unit(-1, 1);
+    for (int i = 0; i < 2000; ++i) {
+        const double curvature = 0.3 + 1.5 * unit(random), centre = signed_unit(random);
+        const double low = centre - 2 * unit(random), high = low + std::min(0.1 + 2 * unit(random), 3.1 / curvature);
+        const Bend bend(curvature, 6.3 * unit(random), centre, {low, high});
+        // A box within three radii of the bend's centre, which lies at distance 1/k along the bend direction.
+        const double reach = 3 / curvature;
+        const Vec3d corner{reach * signed_unit(random), reach * signed_unit(random), centre + reach * signed_unit(random)};
+        const Vec3d size = Vec3d(unit(random), unit(random), unit(random)) * (i % 3 == 0 ? 0.01 : reach);
+        const IntervalBox box{{corner.x, corner.x + size.x}, {corner.y, corner.y + size.y}, {corner.z, corner.z + size.z}};
+        const IntervalBox preimage = bend.inverse_box(box);
+        for (int k = 0; k < 40; ++k) {
+            const Vec3d p = bend.inverse(random_point_in(random, box));
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_GE(p[a], preimage[a].lo - 1e-12) << i;
+                EXPECT_LE(p[a], preimage[a].hi + 1e-12) << i;
+            }
+        }
+    }
+}
+
 // Regression: sin_range took the cosine of θ − π/2, which rounds to the ulp of π/2 and so keeps only ~10⁻⁴ of a
 // 10⁻¹² sine's relative precision; the bend's forward box divides that sine by the curvature, and an identity bend
 // (k = 10⁻¹²) cut 5·10⁻⁵ off its object's bottom face (the stage box then said "outside" there, and rays missed a

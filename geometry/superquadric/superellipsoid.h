@@ -10,20 +10,11 @@
 
 #include "geometry/field/difference_of_convex.h"
 #include "geometry/polynomial/polynomial.h"
+#include "geometry/superquadric/norm_exponent.h"
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
-
-// A p-norm's exponent p = 2/ε with what its powers and roots need, worked out once: whether p is a small whole
-// number (powers by repeated squaring) and 1/p.
-struct NormExponent {
-    double p = 2;
-    int whole = 2;  // p when it is a whole number up to 64, else 0
-    double inverse = 0.5;
-
-    static NormExponent of_epsilon(double epsilon);
-};
 
 class Superellipsoid {
 public:
@@ -50,7 +41,8 @@ public:
     // convex along the ray between the coordinate planes, where φ < 0 exactly inside (for points within the
     // superellipsoid's box), at p with the slopes along `direction` (non-finite at cusps).
     DifferenceOfConvexSample inside_difference(const Vec3d& p, const Vec3d& direction) const;
-    // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative).
+    // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative): the values
+    // at the two extreme corners, widened outward by the gauge's rounding error.
     Interval gauge_range(const IntervalBox& magnitudes) const;
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents
     // above 2 near the coordinate planes).

@@ -66,6 +66,39 @@ TEST(SuperquadricSuperellipsoid, ParametricSurfacePointsHaveUnitGaugeAndTheGauge
     }
 }
 
+// The gauge in long double: the nested p-norm ‖(‖(u, v)‖_{2/ε2}, w)‖_{2/ε1} as written.
+long double exact_gauge(const Superellipsoid& s, const Vec3d& p) {
+    const long double p1 = 2.0L / s.north_south(), p2 = 2.0L / s.east_west();
+    const long double u = std::abs(p.x) / (long double)s.radii().x, v = std::abs(p.y) / (long double)s.radii().y,
+                      w = std::abs(p.z) / (long double)s.radii().z;
+    const long double h = std::pow(std::pow(u, p2) + std::pow(v, p2), 1 / p2);
+    return std::pow(std::pow(h, p1) + std::pow(w, p1), 1 / p1);
+}
+
+// The range over a box of magnitudes holds the exact gauge and the computed one at every point of the box, for
+// whole exponents (repeated squaring and Halley roots) and fractional ones (pow) alike.
+TEST(SuperquadricSuperellipsoid, TheGaugeRangeHoldsTheExactAndTheComputedGauge) {
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(0, 1), exponent(0.02, 4);
+    const double whole[] = {2.0 / 3, 0.5, 0.4, 0.2, 0.1, 2.0 / 7, 0.02};
+    for (int i = 0; i < 4000; ++i) {
+        const double e1 = i % 2 ? exponent(random) : whole[i / 2 % 7], e2 = i % 3 ? exponent(random) : whole[i / 3 % 7];
+        const Superellipsoid s{{0.5 + unit(random), 0.5 + unit(random), 0.5 + unit(random)}, e1, e2};
+        const Vec3d corner{1.2 * unit(random), 1.2 * unit(random), 1.2 * unit(random)};
+        const Vec3d size = Vec3d(unit(random), unit(random), unit(random)) * (i % 4 ? 1e-9 : 0.1);
+        const IntervalBox box{{corner.x, corner.x + size.x}, {corner.y, corner.y + size.y}, {corner.z, corner.z + size.z}};
+        const Interval range = s.gauge_range(box);
+        for (int k = 0; k < 8; ++k) {
+            const Vec3d p = k == 0 ? box.lower() : k == 1 ? box.upper()
+                                   : corner + Vec3d(size.x * unit(random), size.y * unit(random), size.z * unit(random));
+            const long double exact = exact_gauge(s, p);
+            EXPECT_LE(range.lo, exact) << i << " e " << e1 << " " << e2;
+            EXPECT_GE(range.hi, exact) << i << " e " << e1 << " " << e2;
+            EXPECT_TRUE(range.contains(s.gauge(p))) << i << " e " << e1 << " " << e2;
+        }
+    }
+}
+
 Vec3d finite_difference_gradient(const Superellipsoid& s, const Vec3d& p, double h) {
     Vec3d g;
     for (int k = 0; k < 3; ++k) {

@@ -1,0 +1,71 @@
+#include "geometry/superquadric/norm_exponent.h"
+
+#include <numbers>
+#include <utility>
+
+#include "geometry/superquadric/exp2_log2.h"
+
+namespace isotrace {
+namespace {
+
+// The coefficients, in powers of t ∈ [−1, 1], of the polynomial that interpolates f at the Chebyshev nodes: the
+// Chebyshev coefficients from the nodes' values, then T_j expanded by T_j = 2t·T_(j−1) − T_(j−2).
+template <std::size_t n, class F>
+std::array<double, n> chebyshev_interpolant(const F& f) {
+    std::array<double, n> values{}, chebyshev{}, monomial{};
+    for (std::size_t k = 0; k < n; ++k) values[k] = f(std::cos(std::numbers::pi * (k + 0.5) / n));
+    for (std::size_t j = 0; j < n; ++j) {
+        for (std::size_t k = 0; k < n; ++k) chebyshev[j] += values[k] * std::cos(std::numbers::pi * j * (k + 0.5) / n);
+        chebyshev[j] *= (j == 0 ? 1.0 : 2.0) / n;
+    }
+    std::array<double, n> before{}, current{}, next{};  // T_(j−1), T_j, T_(j+1) in powers of t
+    current[0] = 1;
+    for (std::size_t j = 0; j < n; ++j) {
+        for (std::size_t i = 0; i < n; ++i) monomial[i] += chebyshev[j] * current[i];
+        for (std::size_t i = 0; i < n; ++i)
+            next[i] = (j == 0 ? 1.0 : 2.0) * (i > 0 ? current[i - 1] : 0.0) - (j == 0 ? 0.0 : before[i]);
+        before = current;
+        current = next;
+    }
+    return monomial;
+}
+
+// x^n by repeated squaring, its multiplications unrolled at compile time (a loop over n's bits costs several
+// times the multiplications).
+template <int n>
+double power_of(double x) {
+    if constexpr (n == 1) return x;
+    else if constexpr (n % 2 == 1) return x * power_of<n - 1>(x);
+    else {
+        const double half = power_of<n / 2>(x);
+        return half * half;
+    }
+}
+
+constexpr int kMaxWhole = 64;
+
+template <int... n>
+constexpr std::array<double (*)(double), sizeof...(n)> powers_of(std::integer_sequence<int, n...>) {
+    return {&power_of<n + 1>...};
+}
+
+constexpr auto kWholePowers = powers_of(std::make_integer_sequence<int, kMaxWhole>());  // x^1 to x^64
+
+}  // namespace
+
+NormExponent NormExponent::of_epsilon(double epsilon) {
+    const double p = 2 / epsilon;
+    NormExponent e{p, p == std::floor(p) && p <= kMaxWhole ? int(p) : 0, 1 / p};
+    if (e.whole > 0) e.whole_power = kWholePowers[e.whole - 1];
+    if (e.whole >= 3)
+        e.root_guess = chebyshev_interpolant<std::tuple_size_v<decltype(root_guess)>>(
+            [&](double t) { return std::pow(1.5 + 0.5 * t, e.inverse); });
+    return e;
+}
+
+// log2_of needs a normal number: below 2⁻¹⁰⁰⁰ (the power of a share far smaller than 1) pow takes over.
+double NormExponent::fractional_power(double r) const { return r < 0x1p-1000 ? std::pow(r, p) : exp2_of(p * log2_of(r)); }
+
+double NormExponent::fractional_root(double s) const { return exp2_of(log2_of(s) * inverse); }
+
+}  // namespace isotrace

@@ -1,0 +1,58 @@
+#pragma once
+// A p-norm's exponent p = 2/ε and the powers and roots the superellipsoid's gauge takes with it: r^p of a share
+// r ∈ [0, 1], and the root s^(1/p) of 1 + r^p ∈ [1, 2]. Those are the gauge's hottest calls, and a general pow
+// (which works in extra precision to round correctly) costs several times what they need, so small whole
+// exponents (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) take powers by repeated squaring, unrolled for each
+// exponent, and roots by one Halley step on x^p = s from a polynomial first guess; fractional ones take both as
+// 2^(p·log2 x) by short series (exp2_log2.h), to within a few ulps.
+#include <array>
+#include <cmath>
+
+namespace isotrace {
+
+struct NormExponent {
+    double p = 2;
+    int whole = 2;  // p when it is a whole number up to 64, else 0
+    double inverse = 0.5;
+    double (*whole_power)(double) = nullptr;  // x^p by repeated squaring, for whole p
+    // For whole p without a closed-form root: s^(1/p) over s ∈ [1, 2] as a polynomial in 2s − 3 (interpolation at
+    // Chebyshev nodes, within 2·10⁻⁶ for every whole p ≥ 3), the first guess of root().
+    std::array<double, 6> root_guess{};
+
+    static NormExponent of_epsilon(double epsilon);
+
+    // r^p for r in [0, 1].
+    double unit_power(double r) const {
+        if (whole == 2) return r * r;  // without the call: round cross-sections are the rule
+        return whole > 0 ? whole_power(r) : fractional_power(r);
+    }
+    // s^(1/p) for s in [1, 2]: within an ulp for whole p, a few for fractional p (tested against long double pow).
+    double root(double s) const {
+        if (whole == 0) return fractional_root(s);
+        if (whole < 3 || whole == 4) return any_root(s);
+        // Halley's step on f(x) = x^p − s, x − 2f·f′/(2f′² − f·f″), written as a correction of x: cubic convergence
+        // takes the guess's error below the rounding, and the correction carries the power's rounding only
+        // divided by p.
+        const double t = 2 * s - 3;
+        double x = root_guess.back();
+        for (int k = int(root_guess.size()) - 2; k >= 0; --k) x = x * t + root_guess[k];
+        const double power = whole_power(x);
+        return x + x * (2 * (s - power) / ((p + 1) * power + (p - 1) * s));
+    }
+    // s^(1/p) for any s ≥ 0, in closed form where there is one.
+    double any_root(double s) const {
+        switch (whole) {
+            case 1: return s;
+            case 2: return std::sqrt(s);
+            case 4: return std::sqrt(std::sqrt(s));
+            default: return std::pow(s, inverse);
+        }
+    }
+
+private:
+    // unit_power and root for fractional p: calls, so that the whole exponents' paths stay short enough to inline.
+    double fractional_power(double r) const;
+    double fractional_root(double s) const;
+};
+
+}  // namespace isotrace

@@ -1,0 +1,82 @@
+// The powers and roots of the gauge's p-norms against long double pow: within an ulp for the roots of every whole
+// exponent up to 64 (Halley's step from the polynomial guess), within three for sampled fractional ones (2^y and
+// log2 by series).
+#include "geometry/superquadric/norm_exponent.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace isotrace {
+namespace {
+
+// The error of `computed` against `exact` in ulps of `exact`.
+double ulps(double computed, long double exact) {
+    const long double ulp = std::ldexp(1.0L, std::ilogb(double(exact)) - 52);
+    return double(std::abs(computed - exact) / ulp);
+}
+
+// s over [1, 2]: a fine even grid with its ends, and the doubles just inside them.
+std::vector<double> roots_arguments() {
+    std::vector<double> s;
+    for (int i = 0; i <= 20000; ++i) s.push_back(1 + i / 20000.0);
+    s.push_back(std::nextafter(1.0, 2.0));
+    s.push_back(std::nextafter(2.0, 1.0));
+    return s;
+}
+
+TEST(SuperquadricNormExponent, RootsOfWholeExponentsAreWithinAnUlp) {
+    const std::vector<double> arguments = roots_arguments();
+    int tested = 0;
+    for (int p = 1; p <= 64; ++p) {
+        const NormExponent e = NormExponent::of_epsilon(2.0 / p);
+        if (2 / (2.0 / p) != p) continue;  // ε = 2/p rounds to an ε whose 2/ε is not whole (49 is one)
+        ASSERT_EQ(e.whole, p);
+        ++tested;
+        double worst = 0;
+        for (double s : arguments) worst = std::max(worst, ulps(e.root(s), std::pow((long double)s, 1.0L / p)));
+        EXPECT_LE(worst, 1.0) << "p = " << p;
+    }
+    EXPECT_GE(tested, 60);
+}
+
+TEST(SuperquadricNormExponent, RootsOfFractionalExponentsAreWithinThreeUlps) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> epsilon(0.02, 4);
+    const std::vector<double> arguments = roots_arguments();
+    for (int i = 0; i < 200; ++i) {
+        const NormExponent e = NormExponent::of_epsilon(epsilon(random));
+        ASSERT_EQ(e.whole, 0);
+        double worst = 0;
+        for (std::size_t k = i % 7; k < arguments.size(); k += 7)
+            worst = std::max(worst, ulps(e.root(arguments[k]), std::pow((long double)arguments[k], 1.0L / e.p)));
+        EXPECT_LE(worst, 3.0) << "p = " << e.p;
+    }
+}
+
+// Powers of shares by repeated squaring: a squaring doubles the relative error and adds a rounding, so r^p is within
+// p − 1 roundings (which the root of 1 + r^p divides by p again); as 2^y with y = p·log2 r, within a few ulps plus
+// y's rounding (|y| ulps at most, large only where r^p is tiny next to the 1 it is added to) plus p times log2 r's
+// (again divided by p in the root); roots of any argument (the edge of a
+// p-ball, 1 − w^p ∈ [0, 1]) in closed form or by pow of the rounded 1/p.
+TEST(SuperquadricNormExponent, PowersAndRootsOfAnyArgumentAreWithinAFewUlps) {
+    std::mt19937 random(8);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (const double epsilon : {2.0, 1.0, 0.5, 2.0 / 3, 0.3, 0.1, 0.02, 0.0213, 0.77, 2.5, 3.3, 4.0}) {
+        const NormExponent e = NormExponent::of_epsilon(epsilon);
+        for (int i = 0; i < 4000; ++i) {
+            const double r = i % 4 ? unit(random) : std::pow(unit(random), 40);
+            const long double power = std::pow((long double)r, (long double)e.p);
+            const double tolerance = e.whole > 0 ? e.p - 1 : 3 + std::abs(e.p * std::log2(r)) + 2 * e.p;
+            if (power > 1e-300L) EXPECT_LE(ulps(e.unit_power(r), power), tolerance) << e.p << " " << r;
+            EXPECT_LE(ulps(e.any_root(r), std::pow((long double)r, (long double)e.inverse)), 1.0) << e.p << " " << r;
+        }
+        EXPECT_EQ(e.unit_power(0), 0);
+        EXPECT_EQ(e.unit_power(1), 1);
+        EXPECT_EQ(e.any_root(0), 0);
+    }
+}
+
+}  // namespace
+}  // namespace isotrace
