@@ -3,8 +3,6 @@
 #include <numbers>
 #include <utility>
 
-#include "geometry/superquadric/exp2_log2.h"
-
 namespace isotrace {
 namespace {
 
@@ -62,10 +60,5 @@ NormExponent NormExponent::of_epsilon(double epsilon) {
             [&](double t) { return std::pow(1.5 + 0.5 * t, e.inverse); });
     return e;
 }
-
-// log2_of needs a normal number: below 2⁻¹⁰⁰⁰ (the power of a share far smaller than 1) pow takes over.
-double NormExponent::fractional_power(double r) const { return r < 0x1p-1000 ? std::pow(r, p) : exp2_of(p * log2_of(r)); }
-
-double NormExponent::fractional_root(double s) const { return exp2_of(log2_of(s) * inverse); }
 
 }  // namespace isotrace

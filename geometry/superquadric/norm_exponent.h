@@ -3,8 +3,8 @@
 // r ∈ [0, 1], and the root s^(1/p) of 1 + r^p ∈ [1, 2]. Those are the gauge's hottest calls, and a general pow
 // (which works in extra precision to round correctly) costs several times what they need, so small whole
 // exponents (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) take powers by repeated squaring, unrolled for each
-// exponent, and roots by one Halley step on x^p = s from a polynomial first guess; fractional ones take both as
-// 2^(p·log2 x) by short series (exp2_log2.h), to within a few ulps.
+// exponent, and roots by one Halley step on x^p = s from a polynomial first guess; fractional ones keep pow, whose
+// short latency a series of the same accuracy did not match (docs/decisions.md).
 #include <array>
 #include <cmath>
 
@@ -24,11 +24,10 @@ struct NormExponent {
     // r^p for r in [0, 1].
     double unit_power(double r) const {
         if (whole == 2) return r * r;  // without the call: round cross-sections are the rule
-        return whole > 0 ? whole_power(r) : fractional_power(r);
+        return whole > 0 ? whole_power(r) : std::pow(r, p);
     }
-    // s^(1/p) for s in [1, 2]: within an ulp for whole p, a few for fractional p (tested against long double pow).
+    // s^(1/p) for s in [1, 2], within an ulp (the error against a long double pow is tested for every whole p).
     double root(double s) const {
-        if (whole == 0) return fractional_root(s);
         if (whole < 3 || whole == 4) return any_root(s);
         // Halley's step on f(x) = x^p − s, x − 2f·f′/(2f′² − f·f″), written as a correction of x: cubic convergence
         // takes the guess's error below the rounding, and the correction carries the power's rounding only
@@ -48,11 +47,6 @@ struct NormExponent {
             default: return std::pow(s, inverse);
         }
     }
-
-private:
-    // unit_power and root for fractional p: calls, so that the whole exponents' paths stay short enough to inline.
-    double fractional_power(double r) const;
-    double fractional_root(double s) const;
 };
 
 }  // namespace isotrace
