@@ -360,8 +360,8 @@ TEST_P(SamplesInStep, GiveEachSampleRadiancesBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SamplesInStep,
-                         ::testing::Values("embree_cornell_box", "primitives", "materials", "csg_cup", "metacube_dog", "instances",
-                                           "lookdev", "showcase"));
+                         ::testing::Values("embree_cornell_box", "primitives", "materials", "csg_cup", "metacube_dog",
+                                           "instances", "lookdev", "showcase"));
 
 }  // namespace
 }  // namespace isotrace

@@ -78,6 +78,13 @@ TEST(Warps, ConcentricDiskMatchesPdf) {
     EXPECT_GT(test_support::chi_square_test_2d(grid, kSamples, point, density).p_value, kSignificance);
 }
 
+// The map's one division is by the larger coordinate: at the centre, where both are 0, the point is the centre.
+TEST(Warps, ConcentricDiskMapsTheCentreToTheCentre) {
+    const auto [x, y] = square_to_uniform_disk_concentric({0.5f, 0.5f});
+    EXPECT_EQ(x, 0.0f);
+    EXPECT_EQ(y, 0.0f);
+}
+
 TEST(Warps, TriangleMatchesPdf) {
     const Grid2D grid{0, 1, 0, 1, 24, 24};
     const auto point = [](std::size_t i) {
