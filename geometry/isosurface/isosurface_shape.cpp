@@ -21,8 +21,8 @@ IsosurfaceShape::IsosurfaceShape(std::shared_ptr<const ImplicitField> field, con
       resolution_(settings.resolution > 0
                       ? settings.resolution
                       : 1e-6 * length(container.bounds().upper() - container.bounds().lower())),
-      max_work_(settings.max_work),
-      cell_fields_(std::move(cell_fields)) {
+      cell_fields_(std::move(cell_fields)),
+      max_work_(settings.max_work) {
     // Within the container by more than rounding can move a clip's ends: its clip cannot cut the cell's.
     const IntervalBox& box = container_.bounds();
     const double margin = 1e-9 * length(box.upper() - box.lower());
