@@ -18,10 +18,10 @@ IsosurfaceShape::IsosurfaceShape(std::shared_ptr<const ImplicitField> field, con
       field_(std::move(field)),
       container_(container),
       cells_(std::move(cells)),
+      cell_fields_(std::move(cell_fields)),
       resolution_(settings.resolution > 0
                       ? settings.resolution
                       : 1e-6 * length(container.bounds().upper() - container.bounds().lower())),
-      cell_fields_(std::move(cell_fields)),
       max_work_(settings.max_work) {
     // Within the container by more than rounding can move a clip's ends: its clip cannot cut the cell's.
     const IntervalBox& box = container_.bounds();
