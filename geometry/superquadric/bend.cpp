@@ -110,9 +110,10 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
     }
     const Interval theta = {std::clamp(angle_middle_ + relative.lo, angle_lo_, angle_hi_),
                             std::clamp(angle_middle_ + relative.hi, angle_lo_, angle_hi_)};
-    const auto [sn, c] = sin_cos_range(theta);
+    const SinCos at_lo = sin_cos(theta.lo), at_hi = sin_cos(theta.hi);
+    const auto [sn, c] = sin_cos_range(theta, at_lo, at_hi);
     // θ − sin θ is non-decreasing.
-    const Interval arc_excess = Interval{theta.lo - std::sin(theta.lo), theta.hi - std::sin(theta.hi)} * (1 / curvature_);
+    const Interval arc_excess = Interval{theta.lo - at_lo.sin, theta.hi - at_hi.sin} * (1 / curvature_);
     return from_frame({versine_over_curvature(theta) + f.s * c - z_in * sn, f.w,
                        arc_excess + f.s * sn + z_in * c + centre_});
 }
