@@ -123,7 +123,7 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
 IntervalBox Bend::inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const {
     const FrameBox p = to_frame(preimage), v = to_frame(tangent);
     const Interval theta = {region_angle(p.z.lo), region_angle(p.z.hi)};
-    const auto [sn, c] = sin_cos_range(theta);
+    const auto [sn, c] = centred_sin_cos_range(theta);
     Interval along{1, 1};
     if (p.z.hi >= region_.lo && p.z.lo <= region_.hi) {
         const Interval bent = Interval{1, 1} - p.s * curvature_;
