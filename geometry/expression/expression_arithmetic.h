@@ -135,27 +135,7 @@ template <class V, class D> Dual<V, D> exp(const Dual<V, D>& a) {
     return {e, a.d * e};
 }
 template <class V, class D> Dual<V, D> log(const Dual<V, D>& a) { return {log(a.v), a.d * log_slope(a.v)}; }
-// Over a narrow interval [m − r, m + r], sin and cos from one sincos at the midpoint by Taylor's theorem:
-// sin(m + h) = sin m + h cos m − (h²/2) sin ξ with sin ξ within r of sin m (and the same for cos), which is
-// within r²/2 of the exact range; wider intervals take the values at both ends. The enclosure is widened by
-// kSinCosSlack for the rounding of the midpoint's sincos and of the arithmetic, so that it holds the computed
-// values at every point of the interval (the search compares bounds with them).
-constexpr double kNarrowSinCos = 0.25;
-constexpr double kSinCosSlack = 0x1p-50;
-inline Interval taylor_range(double f, double f_prime, double r, double q) {
-    const double lo = f - r * std::abs(f_prime) - q * std::max(std::min(f + r, 1.0), 0.0) - kSinCosSlack;
-    const double hi = f + r * std::abs(f_prime) - q * std::min(std::max(f - r, -1.0), 0.0) + kSinCosSlack;
-    return {std::max(lo, -1.0), std::min(hi, 1.0)};
-}
-inline SinCosRange sin_cos(Interval a) {
-    const double r = 0.5 * (a.hi - a.lo);
-    if (!(r <= kNarrowSinCos) || !(std::abs(a.lo) < 0x1p50)) return sin_cos_range(a);
-    const double m = a.lo + r;
-    const double radius = std::max(m - a.lo, a.hi - m);
-    const SinCos at_m = sin_cos(m);
-    const double q = 0.5 * radius * radius;
-    return {taylor_range(at_m.sin, at_m.cos, radius, q), taylor_range(at_m.cos, -at_m.sin, radius, q)};
-}
+inline SinCosRange sin_cos(Interval a) { return centred_sin_cos_range(a); }
 inline Interval sin(Interval a) { return sin_cos(a).sin; }
 inline Interval cos(Interval a) { return sin_cos(a).cos; }
 template <class V, class D> struct DualSinCos {

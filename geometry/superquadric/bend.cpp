@@ -23,16 +23,19 @@ Bend::Bend(double curvature, double direction, double centre, Interval region)
 
 double Bend::region_angle(double z) const { return curvature_ * (std::clamp(z, region_.lo, region_.hi) - centre_); }
 
+// 1 − cos θ without cancellation: sin²θ/(1 + cos θ) where cos θ ≥ 0 (then 1 + cos θ ≥ 1), 1 − cos θ itself below
+// (then it is at least 1).
+double Bend::versine(SinCos at) { return at.cos >= 0 ? at.sin * at.sin / (1 + at.cos) : 1 - at.cos; }
+
 // The formulas are arranged so that nothing of size R = 1/k is formed: R − (R − s)·cos θ becomes
-// s·cos θ + 2·sin²(θ/2)/k, and R·sin θ is sin θ/k (≈ z − z0), so a slight bend stays as exact as no bend.
+// s·cos θ + (1 − cos θ)/k, and R·sin θ is sin θ/k (≈ z − z0), so a slight bend stays as exact as no bend.
 Vec3d Bend::forward(const Vec3d& p) const {
     const double s = dot(p, u_), w = dot(p, v_);
     const double theta = region_angle(p.z);
     const double beyond = p.z - std::clamp(p.z, region_.lo, region_.hi);
-    const auto [sn, c] = sin_cos(theta);
-    const double half = std::sin(0.5 * theta);
-    return from_frame(2 * half * half / curvature_ + s * c + beyond * sn, w,
-                      centre_ + sn / curvature_ - s * sn + beyond * c);
+    const SinCos at = sin_cos(theta);
+    return from_frame(versine(at) / curvature_ + s * at.cos + beyond * at.sin, w,
+                      centre_ + at.sin / curvature_ - s * at.sin + beyond * at.cos);
 }
 
 Vec3d Bend::inverse(const Vec3d& q) const {
@@ -42,10 +45,9 @@ Vec3d Bend::inverse(const Vec3d& q) const {
     const double cm = cos_middle_, sm = sin_middle_;
     const double relative = std::atan2(b * cm + a * sm, -a * cm + b * sm);
     const double theta = std::clamp(angle_middle_ + relative, angle_lo_, angle_hi_);
-    const auto [sn, c] = sin_cos(theta);
-    const double half = std::sin(0.5 * theta);
-    return from_frame(2 * half * half / curvature_ + s_in * c - z_in * sn, dot(q, v_),
-                      centre_ + (theta - sn) / curvature_ + s_in * sn + z_in * c);
+    const SinCos at = sin_cos(theta);
+    return from_frame(versine(at) / curvature_ + s_in * at.cos - z_in * at.sin, dot(q, v_),
+                      centre_ + (theta - at.sin) / curvature_ + s_in * at.sin + z_in * at.cos);
 }
 
 Jacobian Bend::jacobian(const Vec3d& p) const {
@@ -66,9 +68,11 @@ IntervalBox Bend::from_frame(const FrameBox& box) const {
     return {box.s * u_.x + box.w * v_.x, box.s * u_.y + box.w * v_.y, box.z};
 }
 
-Interval Bend::versine_over_curvature(Interval theta) const {
-    const Interval half = sin_range(theta * 0.5).magnitude();
-    return Interval{half.lo * half.lo, half.hi * half.hi} * (2 / curvature_);
+// The versines at the ends, 0 where a multiple of 2π lies inside (cos reaches 1) and 2 where an odd multiple of π
+// does (cos reaches −1).
+Interval Bend::versine_over_curvature(SinCos at_lo, SinCos at_hi, Interval cos) const {
+    const double v_lo = versine(at_lo), v_hi = versine(at_hi);
+    return Interval{cos.hi == 1 ? 0 : std::min(v_lo, v_hi), cos.lo == -1 ? 2 : std::max(v_lo, v_hi)} * (1 / curvature_);
 }
 
 IntervalBox Bend::forward_box(const IntervalBox& box) const {
@@ -76,8 +80,9 @@ IntervalBox Bend::forward_box(const IntervalBox& box) const {
     const Interval theta = {region_angle(f.z.lo), region_angle(f.z.hi)};
     const auto beyond_at = [&](double z) { return z - std::clamp(z, region_.lo, region_.hi); };
     const Interval beyond = {beyond_at(f.z.lo), beyond_at(f.z.hi)};  // non-decreasing in z
-    const auto [sn, c] = sin_cos_range(theta);
-    return from_frame({versine_over_curvature(theta) + f.s * c + beyond * sn, f.w,
+    const SinCos at_lo = sin_cos(theta.lo), at_hi = sin_cos(theta.hi);
+    const auto [sn, c] = sin_cos_range(theta, at_lo, at_hi);
+    return from_frame({versine_over_curvature(at_lo, at_hi, c) + f.s * c + beyond * sn, f.w,
                        sn * (1 / curvature_) - f.s * sn + beyond * c + centre_});
 }
 
@@ -110,10 +115,11 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
     }
     const Interval theta = {std::clamp(angle_middle_ + relative.lo, angle_lo_, angle_hi_),
                             std::clamp(angle_middle_ + relative.hi, angle_lo_, angle_hi_)};
-    const auto [sn, c] = sin_cos_range(theta);
+    const SinCos at_lo = sin_cos(theta.lo), at_hi = sin_cos(theta.hi);
+    const auto [sn, c] = sin_cos_range(theta, at_lo, at_hi);
     // θ − sin θ is non-decreasing.
-    const Interval arc_excess = Interval{theta.lo - std::sin(theta.lo), theta.hi - std::sin(theta.hi)} * (1 / curvature_);
-    return from_frame({versine_over_curvature(theta) + f.s * c - z_in * sn, f.w,
+    const Interval arc_excess = Interval{theta.lo - at_lo.sin, theta.hi - at_hi.sin} * (1 / curvature_);
+    return from_frame({versine_over_curvature(at_lo, at_hi, c) + f.s * c - z_in * sn, f.w,
                        arc_excess + f.s * sn + z_in * c + centre_});
 }
 
@@ -122,7 +128,7 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
 IntervalBox Bend::inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const {
     const FrameBox p = to_frame(preimage), v = to_frame(tangent);
     const Interval theta = {region_angle(p.z.lo), region_angle(p.z.hi)};
-    const auto [sn, c] = sin_cos_range(theta);
+    const auto [sn, c] = centred_sin_cos_range(theta);
     Interval along{1, 1};
     if (p.z.hi >= region_.lo && p.z.lo <= region_.hi) {
         const Interval bent = Interval{1, 1} - p.s * curvature_;

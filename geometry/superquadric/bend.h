@@ -43,8 +43,9 @@ private:
     IntervalBox from_frame(const FrameBox& box) const;
     Vec3d from_frame(double s, double w, double z) const { return u_ * s + v_ * w + Vec3d(0, 0, z); }
     double region_angle(double z) const;
-    // (1 − cos θ)/k = 2·sin²(θ/2)/k over an interval of angles, without cancellation.
-    Interval versine_over_curvature(Interval theta) const;
+    static double versine(SinCos at);
+    // (1 − cos θ)/k over an interval of angles, from sin and cos at its ends and the range of cos over it.
+    Interval versine_over_curvature(SinCos at_lo, SinCos at_hi, Interval cos) const;
 
     double curvature_, centre_;
     Interval region_;

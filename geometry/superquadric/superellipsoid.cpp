@@ -9,17 +9,17 @@ namespace isotrace {
 namespace {
 
 // (a^p + b^p)^(1/p) for a, b ≥ 0 as larger·(1 + (smaller/larger)^p)^(1/p), scaled by the larger so that neither
-// overflows nor underflows matter; `sum` keeps 1 + (smaller/larger)^p for the partial derivatives.
+// overflows nor underflows matter; `power` = (smaller/larger)^p and `sum` = 1 + power for the partial derivatives.
 struct PNorm {
-    double larger, smaller, sum, norm;
+    double larger, smaller, power, sum, norm;
 };
 
 // Inlined into its callers: a call costs as much as the rest of a round p-norm.
 [[gnu::always_inline]] inline PNorm p_norm_parts(double a, double b, const NormExponent& p) {
     const double larger = std::max(a, b), smaller = std::min(a, b);
-    if (larger == 0 || std::isinf(larger)) return {larger, smaller, 1, larger};
-    const double sum = 1 + p.unit_power(smaller / larger);
-    return {larger, smaller, sum, larger * p.root(sum)};
+    if (larger == 0 || std::isinf(larger)) return {larger, smaller, 0, 1, larger};
+    const double power = p.unit_power(smaller / larger), sum = 1 + power;
+    return {larger, smaller, power, sum, larger * p.root(sum)};
 }
 
 double p_norm(double a, double b, const NormExponent& p) { return p_norm_parts(a, b, p).norm; }
@@ -101,26 +101,40 @@ Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {
 
 namespace {
 
-// The range of (a/‖(a, b)‖_p)^(p−1) for a, b ≥ 0 in the given ranges, together with that of the same power of
-// b's share: with t = (b/a)^p the two are (1 + t)^(1/p − 1) and (1 + 1/t)^(1/p − 1), monotone in t, so four pows
-// bound both (against ten for the shares' norms and powers taken one by one). Where a = b = 0 is possible a share
-// is undefined and every value in [0, 1] is allowed, which t ∈ [0, ∞] gives.
+// The powers p − 1 of a's and b's shares of ‖(a, b)‖_p.
 struct SharePowers {
+    double first, second;
+};
+
+// The ranges of (a/‖(a, b)‖_p)^(p−1) and of the same power of b's share for a, b ≥ 0 in the given ranges: both are
+// monotone in t = (b/a)^p, as (1 + t)^(1/p − 1) and (1 + 1/t)^(1/p − 1), so their values at t's two extreme pairs
+// bound them once widened outward by more than their rounding: r^p of a fractional p is within ln 2·|p·log2 r|·2⁻⁵³
+// plus a few ulps, below 2⁻⁴⁰ while it is a normal number, and a whole one within p − 1 roundings. Where a = b = 0
+// is possible a share is undefined and every value in [0, 1] is allowed, which t ∈ [0, ∞] gives: the ends take the
+// limits.
+struct ShareRanges {
     Interval first, second;
 };
 
-SharePowers share_powers(Interval a, Interval b, double p) {
-    if (p == 1) return {{1, 1}, {1, 1}};
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    const double t_lo = b.lo == 0 ? 0 : std::pow(b.lo / a.hi, p);  // a ≡ 0 gives ∞: b's share is 1
-    const double t_hi = a.lo == 0 ? inf : std::pow(b.hi / a.lo, p);
-    const double e = 1 / p - 1;
-    // (1 + t)^e and (1 + 1/t)^e, their limits taken at t = 0 and ∞ so that no inf/inf or 0·∞ appears.
-    const auto first = [&](double t) { return t == inf ? (e < 0 ? 0 : inf) : std::pow(1 + t, e); };
-    const auto second = [&](double t) { return t == 0 ? (e < 0 ? 0 : inf) : t == inf ? 1 : std::pow(1 + 1 / t, e); };
-    // p > 1 (e < 0): the first falls and the second rises with t; p < 1 the other way round.
-    if (e < 0) return {{first(t_hi), first(t_lo)}, {second(t_lo), second(t_hi)}};
-    return {{first(t_lo), first(t_hi)}, {second(t_hi), second(t_lo)}};
+ShareRanges share_powers(Interval a, Interval b, const NormExponent& p) {
+    if (p.p == 1) return {{1, 1}, {1, 1}};
+    constexpr double inf = std::numeric_limits<double>::infinity(), kRelativeError = 0x1p-36;
+    const double vanishing = p.p > 1 ? 0 : inf;  // a power p − 1 of a share that is 0
+    // At one pair, not both 0, from its p-norm's parts: the larger's is s^(1/p)/s with s = 1 + r^p and r the smaller
+    // over the larger, the smaller's r^(p−1) times that — from r^p itself, where p_norm_partials (for Newton steps)
+    // takes s − 1, which keeps only the digits of r^p above 1's rounding.
+    const auto at = [&](double a_end, double b_end) {
+        const PNorm n = p_norm_parts(a_end, b_end, p);
+        const double of_larger = n.norm / (n.larger * n.sum);
+        const double of_smaller = n.smaller > 0 ? n.power / n.sum * (n.norm / n.smaller) : vanishing;
+        return a_end >= b_end ? SharePowers{of_larger, of_smaller} : SharePowers{of_smaller, of_larger};
+    };
+    const SharePowers at_lo = b.lo == 0 ? SharePowers{1, vanishing} : at(a.hi, b.lo);  // t least
+    const SharePowers at_hi = a.lo == 0 ? SharePowers{vanishing, 1} : at(a.lo, b.hi);  // t most
+    const auto widened = [](double lo, double hi) { return Interval{lo * (1 - kRelativeError), hi * (1 + kRelativeError)}; };
+    // p > 1: the first falls and the second rises with t; p < 1 the other way round.
+    if (p.p > 1) return {widened(at_hi.first, at_lo.first), widened(at_lo.second, at_hi.second)};
+    return {widened(at_lo.first, at_hi.first), widened(at_hi.second, at_lo.second)};
 }
 
 // The product of two ranges of non-negative values, where 0·∞ bounds stay 0 below and ∞ above.
@@ -144,8 +158,8 @@ IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
     const Interval u = box.x.magnitude() * (1 / radii_.x), v = box.y.magnitude() * (1 / radii_.y),
                    w = box.z.magnitude() * (1 / radii_.z);
     const Interval h = {p_norm(u.lo, v.lo, p2_), p_norm(u.hi, v.hi, p2_)};
-    const auto [horizontal, d_dw] = share_powers(h, w, p1_.p);
-    const auto [of_u, of_v] = share_powers(u, v, p2_.p);
+    const auto [horizontal, d_dw] = share_powers(h, w, p1_);
+    const auto [of_u, of_v] = share_powers(u, v, p2_);
     const Interval d_du = non_negative_product(horizontal, of_u), d_dv = non_negative_product(horizontal, of_v);
     return {signed_by(box.x, d_du * (1 / radii_.x)), signed_by(box.y, d_dv * (1 / radii_.y)),
             signed_by(box.z, d_dw * (1 / radii_.z))};

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "renderer/math/sin_cos.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
@@ -133,13 +134,40 @@ inline Interval sin_range(Interval angle) {
 struct SinCosRange {
     Interval sin, cos;
 };
+// The same from the ends' sines and cosines, for callers that need those values too.
+inline SinCosRange sin_cos_range(Interval angle, SinCos at_lo, SinCos at_hi) {
+    if (interval_detail::covers_a_period(angle)) return {{-1, 1}, {-1, 1}};
+    return {interval_detail::periodic_range(angle, at_lo.sin, at_hi.sin, std::numbers::pi / 2),
+            interval_detail::periodic_range(angle, at_lo.cos, at_hi.cos, 0)};
+}
 inline SinCosRange sin_cos_range(Interval angle) {
     if (interval_detail::covers_a_period(angle)) return {{-1, 1}, {-1, 1}};
-    double sin_lo, cos_lo, sin_hi, cos_hi;
-    ::sincos(angle.lo, &sin_lo, &cos_lo);
-    ::sincos(angle.hi, &sin_hi, &cos_hi);
-    return {interval_detail::periodic_range(angle, sin_lo, sin_hi, std::numbers::pi / 2),
-            interval_detail::periodic_range(angle, cos_lo, cos_hi, 0)};
+    return sin_cos_range(angle, sin_cos(angle.lo), sin_cos(angle.hi));
+}
+
+// sin and cos over an angle interval, holding their computed values at every point of it: over a narrow one
+// [m − r, m + r] from one sincos at the midpoint by Taylor's theorem, sin(m + h) = sin m + h cos m − (h²/2) sin ξ
+// with sin ξ within r of sin m (and the same for cos), which is within r²/2 of the exact range; wider ones take
+// the values at both ends (sin_cos_range). The narrow enclosure is widened by kSinCosSlack for the rounding of the
+// midpoint's sincos and of the arithmetic.
+namespace interval_detail {
+constexpr double kNarrowSinCos = 0.25;
+constexpr double kSinCosSlack = 0x1p-50;
+inline Interval taylor_range(double f, double f_prime, double r, double q) {
+    const double lo = f - r * std::abs(f_prime) - q * std::max(std::min(f + r, 1.0), 0.0) - kSinCosSlack;
+    const double hi = f + r * std::abs(f_prime) - q * std::min(std::max(f - r, -1.0), 0.0) + kSinCosSlack;
+    return {std::max(lo, -1.0), std::min(hi, 1.0)};
+}
+}  // namespace interval_detail
+inline SinCosRange centred_sin_cos_range(Interval a) {
+    const double r = 0.5 * (a.hi - a.lo);
+    if (!(r <= interval_detail::kNarrowSinCos) || !(std::abs(a.lo) < 0x1p50)) return sin_cos_range(a);
+    const double m = a.lo + r;
+    const double radius = std::max(m - a.lo, a.hi - m);
+    const SinCos at_m = sin_cos(m);
+    const double q = 0.5 * radius * radius;
+    return {interval_detail::taylor_range(at_m.sin, at_m.cos, radius, q),
+            interval_detail::taylor_range(at_m.cos, -at_m.sin, radius, q)};
 }
 
 struct IntervalBox {
