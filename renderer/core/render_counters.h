@@ -78,10 +78,7 @@ inline void count_rays(RayKind kind, std::uint64_t count) { detail::bump(detail:
 inline void count_ray(RayKind kind) { count_rays(kind, 1); }
 inline void count_test(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][0], 1); }
 inline void count_candidate_hit(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][1], 1); }
-inline void count_closest_hits(int slot, std::uint64_t count) {
-    detail::bump(detail::local_block().geometry[std::size_t(slot)][2], count);
-}
-inline void count_closest_hit(int slot) { count_closest_hits(slot, 1); }
+inline void count_closest_hit(int slot) { detail::bump(detail::local_block().geometry[std::size_t(slot)][2], 1); }
 inline void count_nan_sample() { detail::bump(detail::local_block().nan_samples, 1); }
 
 // Plugin-specific counters: register a name once, then add to its slot from any thread. Names beyond the table's

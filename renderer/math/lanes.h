@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <utility>
 
 // Passing a vector wider than 16 bytes to a function differs with and without AVX: the compilers warn at every
 // call of the helpers below (-Wpsabi) though all of it is inlined and each build is for one target. Silenced for
@@ -76,13 +75,6 @@ inline IntLanes load_lanes(const std::int32_t* p) {
 inline void store_lanes(float* p, FloatLanes v) { std::memcpy(p, &v, sizeof v); }
 inline void store_lanes(std::int32_t* p, IntLanes v) { std::memcpy(p, &v, sizeof v); }
 
-// FloatLanes{value(0), value(1), ...}: built in registers from values read lane by lane.
-template <class Value>
-FloatLanes lanes_of(Value value) {
-    return [&]<std::size_t... lane>(std::index_sequence<lane...>) {
-        return FloatLanes{value(lane)...};
-    }(std::make_index_sequence<kLanes>{});
-}
 // The lanes whose bit is set in `bits` (lane 0 the lowest bit) as a mask.
 inline IntLanes lanes_of_bits(unsigned bits) {
     return (splat(std::int32_t(bits)) & IntLanes{1, 2, 4, 8, 16, 32, 64, 128}) != 0;

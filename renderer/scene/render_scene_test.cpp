@@ -180,7 +180,11 @@ TEST(RenderScene, TraceableLanesAreTheRaysOwnTest) {
     for (std::size_t traceable_lane = 0; traceable_lane < 8; ++traceable_lane) {
         std::vector<Ray> packet(rays.begin(), rays.begin() + 8);
         packet[traceable_lane] = rays.back();
-        const auto field = [&](auto read) { return lanes_of([&](std::size_t lane) { return read(packet[lane]); }); };
+        const auto field = [&](auto read) {
+            FloatLanes lanes;
+            for (std::size_t lane = 0; lane < std::size_t(kLanes); ++lane) lanes[lane] = read(packet[lane]);
+            return lanes;
+        };
         const IntLanes ok = traceable(field([](const Ray& r) { return r.origin.x; }),
                                       field([](const Ray& r) { return r.origin.y; }),
                                       field([](const Ray& r) { return r.origin.z; }),
