@@ -77,16 +77,16 @@ struct PathIntegrator::Path {
     const int depth = path.depth;
     path.casts_shadow = false;
     if (!found) {
-        for (const Light* light : scene.infinite_lights()) {
-            const Rgb emitted = light->escaped_radiance(ray.direction);
+        for (const LightChoice& light : scene.infinite_lights()) {
+            const Rgb emitted = light.light->escaped_radiance(ray.direction);
             if (emitted.is_black()) continue;
             const float weight =
                 path.previous_was_delta
                     ? 1.0f
                     : power_heuristic(path.previous_pdf,
-                                      scene.light_probability(light) *
-                                          light->pdf(path.previous_point, ray.direction,
-                                                     std::numeric_limits<float>::infinity(), {}));
+                                      light.probability *
+                                          light.light->pdf(path.previous_point, ray.direction,
+                                                           std::numeric_limits<float>::infinity(), {}));
             contributions.add(path.throughput * emitted * weight);
         }
         return false;
@@ -98,10 +98,11 @@ struct PathIntegrator::Path {
     const Rgb emitted = hit.material->emission(hit, towards_viewer);
     if (!emitted.is_black()) {
         float weight = 1;
-        const Light* area_light = hit.object->area_light;
-        if (!path.previous_was_delta && area_light) {
-            const float light_pdf = scene.light_probability(area_light) *
-                                    area_light->pdf(path.previous_point, ray.direction, hit.t, hit.geometric_normal);
+        const LightChoice& area_light = hit.object->area_light;
+        if (!path.previous_was_delta && area_light.light) {
+            const float light_pdf =
+                area_light.probability *
+                area_light.light->pdf(path.previous_point, ray.direction, hit.t, hit.geometric_normal);
             weight = power_heuristic(path.previous_pdf, light_pdf);
         }
         contributions.add(path.throughput * emitted * weight);

@@ -71,8 +71,8 @@ std::vector<std::string> PreviewIntegrator::light_left_out(const RenderScene& sc
     std::size_t unlit_by = 0, area_lights = 0;
     for (std::uint32_t id = 0; id < scene.object_count(); ++id) {
         const SceneObject object = scene.object(id);
-        if (emits(object) && !object.area_light) ++unlit_by;
-        if (object.area_light) ++area_lights;
+        if (emits(object) && !object.area_light.light) ++unlit_by;
+        if (object.area_light.light) ++area_lights;
     }
     // Their direct light is kept; what a user misses is what makes area lights worth using.
     if (area_lights > 0)

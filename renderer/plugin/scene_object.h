@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "renderer/math/transform.h"
+#include "renderer/plugin/light_choice.h"
 #include "renderer/plugin/shape.h"
 
 namespace isotrace {
 
-class Light;
 class Material;
 
 struct SceneObject {
@@ -24,7 +24,7 @@ struct SceneObject {
     bool instanced = false;  // true: the shape stays in object space, traced as a placement (PlacementArray)
     HitShading hit_shading = HitShading::Computed;  // the shape's, after any bake (set by commit)
     int counter_slot = 0;
-    const Light* area_light = nullptr;  // set when the object emits and its surface can be sampled
+    LightChoice area_light;  // set when the object emits and its surface can be sampled
 
     const Material* material_of_part(std::uint32_t part) const {
         return part < part_materials.size() && part_materials[part] ? part_materials[part] : material;

@@ -365,9 +365,9 @@ TEST_F(Instances, EmissivePlacementsAreSampledAsLights) {
     EXPECT_EQ(build.area_lights, 2u);
     EXPECT_TRUE(scene.emission_can_be_hit());
     for (std::uint32_t id = 0; id < 2; ++id) {
-        const Light* light = scene.object(id).area_light;
+        const Light* light = scene.object(id).area_light.light;
         ASSERT_NE(light, nullptr);
-        EXPECT_GT(scene.light_probability(light), 0);
+        EXPECT_FLOAT_EQ(scene.object(id).area_light.probability, 0.5f);  // two equal lamps
         const Vec3f from(0.25f + 2.0f * float(id), 0.25f, 3);
         const LightSample sample = light->sample(from, {0.3f, 0.4f});
         ASSERT_GT(sample.pdf, 0);
@@ -377,7 +377,35 @@ TEST_F(Instances, EmissivePlacementsAreSampledAsLights) {
         EXPECT_LE(on.x, 2.0f * float(id) + 1 + 1e-5f);
         const std::optional<SurfaceHit> hit = scene.intersect({from, {0, 0, -1}, 0, 10}, RayKind::Camera);
         ASSERT_TRUE(hit);
-        EXPECT_EQ(hit->object->area_light, light);
+        EXPECT_EQ(hit->object->area_light.light, light);
+    }
+}
+
+// Emitters found by rays carry the probability with which next-event estimation chooses their light (for the MIS
+// weight of a hit on them): the one choose_light reports, in proportion to the lights' powers.
+TEST_F(Instances, EmittersCarryTheProbabilityOfChoosingTheirLight) {
+    const auto loaded = load(scene_with(R"("lights": [{"type": "environment", "radiance": 0.5}],
+  "objects": [
+    {"material": {"type": "emissive", "radiance": 1},
+     "shape": {"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}},
+    {"material": {"type": "emissive", "radiance": 3},
+     "shape": {"type": "mesh", "positions": [[2, 0, 0], [3, 0, 0], [2, 1, 0]], "triangles": [[0, 1, 2]]}}]
+)"));
+    const RenderScene& scene = *loaded->scene;
+    ASSERT_EQ(scene.infinite_lights().size(), 1u);
+    const LightChoice dim = scene.object(0).area_light, bright = scene.object(1).area_light;
+    const LightChoice environment = scene.infinite_lights()[0];
+    ASSERT_TRUE(dim.light && bright.light && environment.light);
+    EXPECT_NEAR(bright.probability, 3 * dim.probability, 1e-6f);
+    EXPECT_GT(environment.probability, 0);
+    EXPECT_NEAR(dim.probability + bright.probability + environment.probability, 1, 1e-6f);
+    for (float u = 0.0005f; u < 1; u += 0.001f) {
+        const LightChoice chosen = scene.choose_light(u);
+        const LightChoice& carried = chosen.light == dim.light      ? dim
+                                     : chosen.light == bright.light ? bright
+                                                                    : environment;
+        ASSERT_EQ(chosen.light, carried.light) << u;
+        EXPECT_EQ(chosen.probability, carried.probability) << u;
     }
 }
 

@@ -441,9 +441,12 @@ void RenderScene::build_lights() {
         return object.material && object.material->is_emissive();
     };
     // An object's light, in world space or placed as its hits are (to_world_of_record), in the order of the ids.
+    // Each owner learns the light's probability once every light's power is known (below).
+    std::vector<std::pair<SceneObject*, std::size_t>> area_light_owners;  // with the light's index in lights_
     const auto add_area_light = [&](SceneObject& object, std::optional<Transform> placed) {
         lights_.push_back(std::make_unique<AreaLight>(*object.shape, *object.material, std::move(placed)));
-        object.area_light = lights_.back().get();
+        object.area_light.light = lights_.back().get();
+        area_light_owners.emplace_back(&object, lights_.size() - 1);
         ++build_statistics_.area_lights;
     };
     auto emissive_placement = emissive_placements_.begin();
@@ -454,7 +457,7 @@ void RenderScene::build_lights() {
                  ++emissive_placement)
                 add_area_light(*emissive_placement->object, array.to_world(emissive_placement->placement));
             for (std::uint32_t placement = 0; placement < array.size(); ++placement)
-                if (note_emission(array.variant_of(placement)) && !array.variant_of(placement).area_light)
+                if (note_emission(array.variant_of(placement)) && !array.variant_of(placement).area_light.light)
                     ++build_statistics_.unsampled_emitters;
             continue;
         }
@@ -472,28 +475,24 @@ void RenderScene::build_lights() {
     for (const auto& light : lights_) {
         light->preprocess(scene_bounds);
         all_lights_.push_back(light.get());
-        if (light->is_infinite()) {
-            infinite_lights_.push_back(light.get());
-            emission_can_be_hit_ = true;
-        }
         powers.push_back(std::max(0.0f, light->power()));
     }
     light_sampling_is_deterministic_ = all_lights_.size() <= 1 && (all_lights_.empty() || all_lights_[0]->is_delta());
     if (powers.empty()) return;
     light_distribution_ = std::make_unique<Distribution1D>(powers);
     for (std::size_t i = 0; i < all_lights_.size(); ++i)
-        light_probabilities_[all_lights_[i]] = light_distribution_->probability(i);
+        if (all_lights_[i]->is_infinite()) {
+            infinite_lights_.push_back({all_lights_[i], light_distribution_->probability(i)});
+            emission_can_be_hit_ = true;
+        }
+    for (const auto& [object, index] : area_light_owners)
+        object->area_light.probability = light_distribution_->probability(index);
 }
 
 LightChoice RenderScene::choose_light(float u) const {
     if (!light_distribution_) return {};
     const Distribution1D::DiscreteSample pick = light_distribution_->sample_discrete(u);
     return {all_lights_[pick.index], pick.probability};
-}
-
-float RenderScene::light_probability(const Light* light) const {
-    const auto found = light_probabilities_.find(light);
-    return found == light_probabilities_.end() ? 0.0f : found->second;
 }
 
 Bounds3f RenderScene::bounds() const {

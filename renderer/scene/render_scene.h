@@ -56,12 +56,6 @@ struct Placements {
     PlacementNames names;
 };
 
-// One light chosen for next-event estimation, with the probability of choosing it.
-struct LightChoice {
-    const Light* light = nullptr;
-    float probability = 0;
-};
-
 class RenderScene {
 public:
     // From this many placements on, their BVH is built for memory rather than speed (RTC_BUILD_QUALITY_LOW: about 24
@@ -117,8 +111,7 @@ public:
 
     // Lights in proportion to their power (all lights: scene-file lights and area lights).
     LightChoice choose_light(float u) const;
-    float light_probability(const Light* light) const;
-    const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
+    const std::vector<LightChoice>& infinite_lights() const { return infinite_lights_; }
     const std::vector<const Light*>& all_lights() const { return all_lights_; }
     // False when no ray can gather emission by hitting something (only delta lights: no emissive surface, no
     // environment): a path's last ray, which would only look for emission, need not be traced.
@@ -179,9 +172,8 @@ private:
     std::map<std::string, std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Light>> lights_;  // scene-file lights, then area lights
     std::vector<const Light*> all_lights_;
-    std::vector<const Light*> infinite_lights_;
+    std::vector<LightChoice> infinite_lights_;
     std::unique_ptr<Distribution1D> light_distribution_;
-    std::unordered_map<const Light*, float> light_probabilities_;
     bool emission_can_be_hit_ = false;
     bool light_sampling_is_deterministic_ = true;
     BuildStatistics build_statistics_;

@@ -353,7 +353,7 @@ TEST_F(LoadScene, ShippedCornellBox) {
     EXPECT_EQ(loaded->scene->objects()[3].material, loaded->scene->find_material("green"));
     // The only light is the ceiling lamp, an area light made from the emissive quad.
     EXPECT_EQ(loaded->scene->lights().size(), 1u);
-    EXPECT_EQ(loaded->scene->objects()[7].area_light, loaded->scene->lights()[0].get());
+    EXPECT_EQ(loaded->scene->objects()[7].area_light.light, loaded->scene->lights()[0].get());
     EXPECT_EQ(loaded->scene->build_statistics().area_lights, 1u);
     // Committed, and the millimetre measurements were scaled to metres.
     const BuildStatistics& statistics = loaded->scene->build_statistics();
