@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstring>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 #include "renderer/embree/embree_device.h"
