@@ -50,7 +50,8 @@ Vec3d DeformationChain::forward(const Vec3d& p) const {
 }
 
 template <class AtStage>
-std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, AtStage&& at_stage) const {
+std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, BeyondUndeformedBox beyond,
+                                                    AtStage&& at_stage) const {
     Vec3d point = q;
     for (std::size_t k = stages_.size(); k > 0; --k) {
         if (check_boxes && !boxes_[k].contains(point)) return std::nullopt;
@@ -59,17 +60,18 @@ std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_b
     }
     // Undeformed, no box is needed: the gauge exceeds 1 everywhere outside the superellipsoid's box, and a box
     // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton).
-    if (check_boxes && !stages_.empty() && !boxes_[0].contains(point)) return std::nullopt;
+    if (check_boxes && beyond == BeyondUndeformedBox::Outside && !stages_.empty() && !boxes_[0].contains(point))
+        return std::nullopt;
     return point;
 }
 
-std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q) const {
-    return walk_inverse(q, true, [](std::size_t, const Vec3d&) {});
+std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q, BeyondUndeformedBox beyond) const {
+    return walk_inverse(q, true, beyond, [](std::size_t, const Vec3d&) {});
 }
 
 std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velocity) const {
     Vec3d along = velocity;
-    const std::optional<Vec3d> point = walk_inverse(q, true, [&](std::size_t stage, const Vec3d& preimage) {
+    const std::optional<Vec3d> point = walk_inverse(q, true, BeyondUndeformedBox::Gauge, [&](std::size_t stage, const Vec3d& preimage) {
         along = std::visit([&](const auto& s) { return s.jacobian(preimage); }, stages_[stage]).solve(along);
     });
     if (point) velocity = along;
@@ -79,11 +81,12 @@ std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velo
 DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
     Path path;
     path[stages_.size()] = q;
-    walk_inverse(q, false, [&](std::size_t stage, const Vec3d& preimage) { path[stage] = preimage; });
+    walk_inverse(q, false, BeyondUndeformedBox::Outside,
+                 [&](std::size_t stage, const Vec3d& preimage) { path[stage] = preimage; });
     return path;
 }
 
-bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes) const {
+bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes, BeyondUndeformedBox beyond) const {
     boxes.clipped = false;
     const auto clip_to_stage = [&](IntervalBox& b, std::size_t stage) {
         const IntervalBox before = b;
@@ -95,7 +98,7 @@ bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes) const
     boxes.stage[stages_.size()] = box;
     for (std::size_t k = stages_.size(); k > 0; --k) {
         IntervalBox preimage = std::visit([&](const auto& s) { return s.inverse_box(boxes.stage[k]); }, stages_[k - 1]);
-        if (!clip_to_stage(preimage, k - 1)) return false;
+        if ((k > 1 || beyond == BeyondUndeformedBox::Outside) && !clip_to_stage(preimage, k - 1)) return false;
         boxes.stage[k - 1] = preimage;
     }
     return true;
@@ -105,6 +108,21 @@ IntervalBox DeformationChain::inverse_tangent(const InverseBoxes& boxes, Interva
     for (std::size_t k = stages_.size(); k > 0; --k)
         tangent = std::visit([&](const auto& s) { return s.inverse_tangent(boxes.stage[k - 1], tangent); }, stages_[k - 1]);
     return tangent;
+}
+
+DeformationChain::CurveBounds DeformationChain::inverse_line_derivatives(const InverseBoxes& boxes,
+                                                                         const Vec3d& direction) const {
+    CurveBounds curve{IntervalBox::point(direction), IntervalBox::point({0, 0, 0})};
+    for (std::size_t k = stages_.size(); k > 0; --k) {
+        const IntervalBox& preimage = boxes.stage[k - 1];
+        curve = std::visit(
+            [&](const auto& s) {
+                const IntervalBox tangent = s.inverse_tangent(preimage, curve.tangent);
+                return CurveBounds{tangent, s.inverse_curvature(preimage, curve.tangent, curve.curvature, tangent)};
+            },
+            stages_[k - 1]);
+    }
+    return curve;
 }
 
 std::optional<IntervalBox> DeformationChain::inverse_box(const IntervalBox& box, bool& clipped) const {

@@ -1,7 +1,8 @@
 // The bounds of g and g′ along a ray through random deformed superquadrics: the slope bound contains the
 // derivative (finite differences), a stretch it proves monotone holds exactly one crossing when its ends differ
 // in sign and none otherwise (dense sampling), and the search that uses it finds the same crossings as the
-// search without it.
+// search without it; the centred forms contain sampled values and slopes and are never wider than the bounds over
+// the stretch's walked box alone.
 #include "geometry/superquadric/superquadric_along_ray.h"
 
 #include <gtest/gtest.h>
@@ -40,7 +41,7 @@ std::optional<LineBoxClip> box_stretch(const Superquadric& s, const Superquadric
     return clip_line_to_box(box.lower(), box.upper(), ray.local_origin(), ray.local_direction(), 0, 1e30);
 }
 
-// Calls visit(ray, a, b) for stretches [a, b] of rays through random deformed superquadrics: per ray, 20 at
+// Calls visit(superquadric, ray, a, b) for stretches [a, b] of rays through random deformed superquadrics: per ray, 20 at
 // random places of its stretch in the deformed box (widths 1 to 10⁻⁴ of it) and 4 starting just before each
 // crossing the search finds.
 template <class Visit>
@@ -60,26 +61,121 @@ void for_random_stretches(unsigned seed, int cases, Visit&& visit) {
             const double width = length * std::pow(10.0, -4 * uniform(random));
             const double a = j < 20 ? stretch->t_enter + (length - width) * uniform(random)
                                     : found[(j - 20) / 4].t - width * uniform(random);
-            visit(ray, a, a + width);
+            visit(c.superquadric, ray, a, a + width);
         }
     }
 }
 
 TEST(SuperquadricAlongRay, TheSlopeBoundContainsTheDerivative) {
     int checked = 0;
-    for_random_stretches(91, 300, [&](const SuperquadricAlongRay& ray, double a, double b) {
+    for_random_stretches(91, 300, [&](const Superquadric&, const SuperquadricAlongRay& ray, double a, double b) {
         const Interval slope = ray.slope_bound(a, b);
         if (!slope.is_finite()) return;
         for (int k = 1; k < 8; ++k) {
             const double t = a + (b - a) * k / 8, h = 1e-6 * (b - a);
             const double derivative = (ray.value(t + h) - ray.value(t - h)) / (2 * h);
-            const double tolerance = 1e-5 * (std::abs(slope.lo) + std::abs(slope.hi)) + 1e-9;
+            // The differences' truncation, and the rounding of g (a few ulps of values near 0 to 1) over 2h.
+            const double tolerance = 1e-5 * (std::abs(slope.lo) + std::abs(slope.hi)) + 1e-9 + 1e-15 / h;
             EXPECT_GE(derivative, slope.lo - tolerance) << "[" << a << ", " << b << "] t " << t;
             EXPECT_LE(derivative, slope.hi + tolerance) << "[" << a << ", " << b << "] t " << t;
             ++checked;
         }
     });
     EXPECT_GT(checked, 5000);
+}
+
+// The bounds over a stretch's walked box alone, without the centred forms (the walk continued beyond the
+// undeformed box, as the search's).
+struct BoxBounds {
+    Interval value, slope;
+};
+
+BoxBounds box_bounds(const Superquadric& s, const SuperquadricAlongRay& ray, double a, double b) {
+    IntervalBox box = IntervalBox::point(ray.local_origin() + ray.local_direction() * a);
+    box.extend(ray.local_origin() + ray.local_direction() * b);
+    DeformationChain::InverseBoxes walked;
+    if (!s.deformation().inverse_boxes(box, walked, DeformationChain::BeyondUndeformedBox::Gauge))
+        return {{1, 1}, Interval::unbounded()};
+    const Interval value = s.field_range(walked);
+    if (walked.clipped) return {value, Interval::unbounded()};
+    const IntervalBox tangent = s.deformation().inverse_line_derivatives(walked, ray.local_direction()).tangent;
+    const IntervalBox gradient = s.shape().gradient_range(walked.stage[0]);
+    Interval slope{0, 0};
+    for (int k = 0; k < 3; ++k) {
+        if (!gradient[k].is_finite()) return {value, Interval::unbounded()};
+        slope = slope + gradient[k] * tangent[k];
+    }
+    return {value, slope};
+}
+
+// Where the bound of g′ is finite (the stretch lies inside every stage box, where g is continuous): g at 200 points
+// of [a, b] (its ends included) within the bound of g, and g′ there (the point derivative through the chain's
+// Jacobians, checked against differences by InverseAlongCarriesVelocitiesBack) within the bound of g′; returns the
+// number of points checked.
+int check_bounds_hold_samples(const SuperquadricAlongRay& ray, double a, double b) {
+    const Interval value = ray.bound(a, b), slope = ray.slope_bound(a, b);
+    if (!slope.is_finite()) return 0;
+    int checked = 0;
+    for (int k = 0; k <= 200; ++k) {
+        const double t = k == 200 ? b : a + (b - a) * k / 200;
+        const double g = ray.value(t);
+        EXPECT_TRUE(value.contains(g)) << "[" << a << ", " << b << "] t " << t << " g " << g << " not in [" << value.lo
+                                       << ", " << value.hi << "]";
+        const double derivative = ray.value_and_slope(t).derivative;
+        if (std::isnan(derivative)) continue;
+        EXPECT_TRUE(slope.contains(derivative)) << "[" << a << ", " << b << "] t " << t << " g′ " << derivative
+                                                << " not in [" << slope.lo << ", " << slope.hi << "]";
+        ++checked;
+    }
+    return checked;
+}
+
+TEST(SuperquadricAlongRay, TheCentredFormsHoldSampledValuesAndAreNoWiderThanTheBoxBounds) {
+    int checked = 0, tighter_values = 0, tighter_slopes = 0;
+    for_random_stretches(94, 300, [&](const Superquadric& s, const SuperquadricAlongRay& ray, double a, double b) {
+        const BoxBounds box = box_bounds(s, ray, a, b);
+        const Interval value = ray.bound(a, b), slope = ray.slope_bound(a, b);
+        EXPECT_TRUE(value.lo >= box.value.lo && value.hi <= box.value.hi) << "[" << a << ", " << b << "]";
+        EXPECT_TRUE(slope.lo >= box.slope.lo && slope.hi <= box.slope.hi) << "[" << a << ", " << b << "]";
+        tighter_values += value.width() < box.value.width();
+        tighter_slopes += slope.width() < box.slope.width();
+        checked += check_bounds_hold_samples(ray, a, b);
+    });
+    EXPECT_GT(checked, 100000);
+    // The centred forms are taken only where the bound of g′ over the box holds zero.
+    EXPECT_GT(tighter_values, 30);
+    EXPECT_GT(tighter_slopes, 30);
+}
+
+// Around the least value of g along a ray through a twisted rounded box g′ changes sign, so the bound over the walked
+// box holds zero and the centred forms are taken: the slopes at the stretch's ends differ from the midpoint's by far
+// more than the margins, and the bound of g′ holds both only with its remainder.
+TEST(SuperquadricAlongRay, TheCentredSlopeBoundHoldsTheSlopesAtTheStretchsEnds) {
+    const Superquadric s = make_superquadric({0.5, 0.5, 1}, 0.5, 0.5, {Twist(1.2, 1)});
+    const Vec3d origin{-2, 0.1, -0.8}, direction{1, 0.05, 0.6};
+    const SuperquadricAlongRay ray(s, origin, direction);
+    std::vector<Crossing> found;
+    SuperquadricWork work;
+    s.crossings(origin, direction, 0, 1e30, found, work);
+    ASSERT_EQ(found.size(), 2u);
+    double least = found[0].t;
+    for (int k = 0; k <= 1000; ++k) {
+        const double t = found[0].t + (found[1].t - found[0].t) * k / 1000;
+        if (ray.value(t) < ray.value(least)) least = t;
+    }
+    int narrowed = 0;
+    for (const double width : {0.01, 0.004}) {
+        const double a = least - 0.4 * width, b = least + 0.6 * width;
+        const ValueAndDerivative at_a = ray.value_and_slope(a), at_b = ray.value_and_slope(b);
+        ASSERT_LT(at_a.derivative, 0);
+        ASSERT_GT(at_b.derivative, 0);
+        const Interval slope = ray.slope_bound(a, b);
+        EXPECT_TRUE(slope.contains(at_a.derivative)) << width << ": " << at_a.derivative << " [" << slope.lo << ", " << slope.hi << "]";
+        EXPECT_TRUE(slope.contains(at_b.derivative)) << width << ": " << at_b.derivative << " [" << slope.lo << ", " << slope.hi << "]";
+        narrowed += slope.width() < box_bounds(s, ray, a, b).slope.width();
+        check_bounds_hold_samples(ray, a, b);
+    }
+    EXPECT_EQ(narrowed, 2);
 }
 
 // The walk kept for the last stretch gives the bounds a fresh walk gives, whichever stretch was asked before.
@@ -116,7 +212,7 @@ TEST(SuperquadricAlongRay, BoundsDoNotDependOnTheStretchAskedBefore) {
 
 TEST(SuperquadricAlongRay, AStretchProvenMonotoneHoldsOneCrossingOrNone) {
     int proven_with_crossing = 0, proven_without = 0;
-    for_random_stretches(92, 300, [&](const SuperquadricAlongRay& ray, double a, double b) {
+    for_random_stretches(92, 300, [&](const Superquadric&, const SuperquadricAlongRay& ray, double a, double b) {
         const Interval slope = ray.slope_bound(a, b);
         if (!slope.excludes_zero()) return;
         const double direction = slope.lo > 0 ? 1 : -1;
