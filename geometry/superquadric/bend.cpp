@@ -139,24 +139,6 @@ IntervalBox Bend::inverse_tangent(const IntervalBox& preimage, const IntervalBox
     return from_frame({c * v.s - sn * v.z, v.w, divide_by_positive(sn * v.s + c * v.z, along)});
 }
 
-// In the frame, x′ = D⁻¹·Rᵀ·q′ with D = diag(1, 1, along); differentiating, with dR/dθ = R·G (G(s, z) = (z, −s)),
-// θ′ = k·x′z and along′ = −k·x′s inside the region: x″ = D⁻¹·(Rᵀ·q″ − θ′·G·Rᵀ·q′ − D′·x′), that is
-// x″s = (Rᵀq″)s − k·x′z·(Rᵀq′)z and x″z = ((Rᵀq″)z + 2k·x′s·x′z)/along; beyond the region x″ = Rᵀ·q″.
-IntervalBox Bend::inverse_curvature(const IntervalBox& preimage, const IntervalBox& tangent,
-                                    const IntervalBox& curvature, const IntervalBox& inverse_tangent) const {
-    const FrameBox p = to_frame(preimage), v = to_frame(tangent), q = to_frame(curvature), x = to_frame(inverse_tangent);
-    const bool in_region = p.z.lo >= region_.lo && p.z.hi <= region_.hi;
-    if (!in_region && p.z.hi >= region_.lo && p.z.lo <= region_.hi) return {Interval::unbounded(), Interval::unbounded(), Interval::unbounded()};
-    const Interval theta = {region_angle(p.z.lo), region_angle(p.z.hi)};
-    const auto [sn, c] = centred_sin_cos_range(theta);
-    const Interval turned_s = c * q.s - sn * q.z, turned_z = sn * q.s + c * q.z;  // Rᵀ·q″
-    if (!in_region) return from_frame({turned_s, q.w, turned_z});
-    const Interval along = Interval{1, 1} - p.s * curvature_;
-    const Interval tangent_z = sn * v.s + c * v.z;  // (Rᵀq′)z
-    return from_frame({turned_s - x.z * tangent_z * curvature_, q.w,
-                       divide_by_positive(turned_z + x.s * x.z * (2 * curvature_), along)});
-}
-
 std::string Bend::problem(const IntervalBox& input) const {
     std::ostringstream message;
     const double reach = to_frame(input).s.hi * curvature_;

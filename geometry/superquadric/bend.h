@@ -33,11 +33,6 @@ public:
     // Bounds d/dt of inverse(q(t)) for q' ∈ `tangent`, where `preimage` bounds the inverse points (inside the
     // chain's stage box, where k·s < 1).
     IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
-    // Bounds d²/dt² of inverse(q(t)) for q' ∈ `tangent`, q'' ∈ `curvature`, where `preimage` bounds the inverse points
-    // and `inverse_tangent` their derivatives (inverse_tangent's bound); unbounded where the preimage reaches both
-    // sides of a region's end (there the Jacobian jumps).
-    IntervalBox inverse_curvature(const IntervalBox& preimage, const IntervalBox& tangent, const IntervalBox& curvature,
-                                  const IntervalBox& inverse_tangent) const;
     std::string problem(const IntervalBox& input) const;
 
 private:

@@ -59,7 +59,8 @@ std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_b
         at_stage(k - 1, point);
     }
     // Undeformed, no box is needed: the gauge exceeds 1 everywhere outside the superellipsoid's box, and a box
-    // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton).
+    // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton). A
+    // deformed object's undeformed box counts as a stage box unless the walk goes on beyond it.
     if (check_boxes && beyond == BeyondUndeformedBox::Outside && !stages_.empty() && !boxes_[0].contains(point))
         return std::nullopt;
     return point;
@@ -71,9 +72,10 @@ std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q, BeyondUndeformedB
 
 std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velocity) const {
     Vec3d along = velocity;
-    const std::optional<Vec3d> point = walk_inverse(q, true, BeyondUndeformedBox::Gauge, [&](std::size_t stage, const Vec3d& preimage) {
+    const auto carry_back = [&](std::size_t stage, const Vec3d& preimage) {
         along = std::visit([&](const auto& s) { return s.jacobian(preimage); }, stages_[stage]).solve(along);
-    });
+    };
+    const std::optional<Vec3d> point = walk_inverse(q, true, BeyondUndeformedBox::Gauge, carry_back);
     if (point) velocity = along;
     return point;
 }
@@ -108,21 +110,6 @@ IntervalBox DeformationChain::inverse_tangent(const InverseBoxes& boxes, Interva
     for (std::size_t k = stages_.size(); k > 0; --k)
         tangent = std::visit([&](const auto& s) { return s.inverse_tangent(boxes.stage[k - 1], tangent); }, stages_[k - 1]);
     return tangent;
-}
-
-DeformationChain::CurveBounds DeformationChain::inverse_line_derivatives(const InverseBoxes& boxes,
-                                                                         const Vec3d& direction) const {
-    CurveBounds curve{IntervalBox::point(direction), IntervalBox::point({0, 0, 0})};
-    for (std::size_t k = stages_.size(); k > 0; --k) {
-        const IntervalBox& preimage = boxes.stage[k - 1];
-        curve = std::visit(
-            [&](const auto& s) {
-                const IntervalBox tangent = s.inverse_tangent(preimage, curve.tangent);
-                return CurveBounds{tangent, s.inverse_curvature(preimage, curve.tangent, curve.curvature, tangent)};
-            },
-            stages_[k - 1]);
-    }
-    return curve;
 }
 
 std::optional<IntervalBox> DeformationChain::inverse_box(const IntervalBox& box, bool& clipped) const {

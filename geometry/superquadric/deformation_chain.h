@@ -67,13 +67,6 @@ public:
     // For a curve q(t) in the walked box with q'(t) in `tangent`: a bound of the derivative of its undeformed
     // points, valid where nothing was clipped.
     IntervalBox inverse_tangent(const InverseBoxes& boxes, IntervalBox tangent) const;
-    // For a line q(t) = o + t·direction through the walked box: bounds of the first (as inverse_tangent's) and second
-    // derivatives of its undeformed points, valid where nothing was clipped (the second unbounded where a stage is not
-    // twice differentiable over its box).
-    struct CurveBounds {
-        IntervalBox tangent, curvature;
-    };
-    CurveBounds inverse_line_derivatives(const InverseBoxes& boxes, const Vec3d& direction) const;
     // inverse_boxes' undeformed box (stage[0]), or nothing; `clipped` as there.
     std::optional<IntervalBox> inverse_box(const IntervalBox& box, bool& clipped) const;
     // The outward normal at path[size()] from the undeformed normal at path[0] (unit length).

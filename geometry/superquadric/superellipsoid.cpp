@@ -149,88 +149,21 @@ Interval signed_by(Interval x, Interval factor) {
     return {-factor.hi, factor.hi};
 }
 
-// ∂|x|/∂x·∂|y|/∂y times a factor of either sign over x's and y's ranges.
-Interval signed_by_both(Interval x, Interval y, Interval factor) {
-    const Interval negated{-factor.hi, -factor.lo};
-    const bool x_positive = x.lo >= 0, x_negative = x.hi <= 0, y_positive = y.lo >= 0, y_negative = y.hi <= 0;
-    if ((x_positive && y_positive) || (x_negative && y_negative)) return factor;
-    if ((x_positive && y_negative) || (x_negative && y_positive)) return negated;
-    return hull(factor, negated);
-}
-
-// The second partial derivatives of N = ‖(a, b)‖_p over a, b ≥ 0 in the given ranges, N's range `norm` and the
-// shares' powers `shares` (share_powers): with the shares sa = a/N, sb = b/N,
-//   ∂²N/∂a∂b = −(p − 1)·(sa·sb)^(p−1)/N,  ∂²N/∂a² = (p − 1)·sa^(p−2)·sb^p/N = −∂²N/∂a∂b·b/a,  ∂²N/∂b² likewise.
-// Where a reaches 0, sa^(p−2)·sb^p ≤ 1 for p ≥ 2, and ∂²N/∂a² is unbounded below 2 (as all are where N reaches 0).
-struct NormHessian {
-    Interval aa, ab, bb;
-};
-
-NormHessian norm_hessian(Interval a, Interval b, Interval norm, ShareRanges shares, double p) {
-    if (p == 1) return {{0, 0}, {0, 0}, {0, 0}};  // N = a + b
-    const Interval inverse_norm = reciprocal(norm);
-    const Interval cross = shares.first * shares.second * inverse_norm * (p - 1);
-    const auto along = [&](Interval own, Interval other) {
-        if (own.lo > 0) return cross * other * reciprocal(own);
-        return p >= 2 ? inverse_norm * Interval{0, 1} * (p - 1) : Interval::unbounded();
-    };
-    return {along(a, b), -cross, along(b, a)};
-}
-
-// The gauge's parts over a box that its derivatives are built from: u = |x|/a1, v, w, h = ‖(u, v)‖_p2, and the
-// powers p − 1 of the shares of both p-norms (every factor of the gradient is one, see gradient_range).
-struct GaugeParts {
-    Interval u, v, w, h;
-    ShareRanges outer, inner;  // of (h, w) in ‖(h, w)‖_p1 and of (u, v) in h
-};
-
-GaugeParts gauge_parts(const IntervalBox& box, const Vec3d& radii, const NormExponent& p1, const NormExponent& p2) {
-    const Interval u = box.x.magnitude() * (1 / radii.x), v = box.y.magnitude() * (1 / radii.y),
-                   w = box.z.magnitude() * (1 / radii.z);
-    const Interval h = {p_norm(u.lo, v.lo, p2), p_norm(u.hi, v.hi, p2)};
-    return {u, v, w, h, share_powers(h, w, p1), share_powers(u, v, p2)};
-}
-
-IntervalBox gradient_from(const GaugeParts& parts, const IntervalBox& box, const Vec3d& radii) {
-    const Interval d_du = non_negative_product(parts.outer.first, parts.inner.first),
-                   d_dv = non_negative_product(parts.outer.first, parts.inner.second);
-    return {signed_by(box.x, d_du * (1 / radii.x)), signed_by(box.y, d_dv * (1 / radii.y)),
-            signed_by(box.z, parts.outer.second * (1 / radii.z))};
-}
-
 }  // namespace
 
 // ∂G/∂u = (h/G)^(p1−1)·(u/h)^(p2−1), ∂G/∂v likewise, ∂G/∂w = (w/G)^(p1−1), with h = ‖(u, v)‖_p2, p = 2/ε and
 // u = |x|/a1, ...; every factor is a power of a share in [0, 1], bounded from the ranges of u, v, w, h.
 IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
-    return gradient_from(gauge_parts(box, radii_, p1_, p2_), box, radii_);
+    const Interval u = box.x.magnitude() * (1 / radii_.x), v = box.y.magnitude() * (1 / radii_.y),
+                   w = box.z.magnitude() * (1 / radii_.z);
+    const Interval h = {p_norm(u.lo, v.lo, p2_), p_norm(u.hi, v.hi, p2_)};
+    const auto [horizontal, d_dw] = share_powers(h, w, p1_);
+    const auto [of_u, of_v] = share_powers(u, v, p2_);
+    const Interval d_du = non_negative_product(horizontal, of_u), d_dv = non_negative_product(horizontal, of_v);
+    return {signed_by(box.x, d_du * (1 / radii_.x)), signed_by(box.y, d_dv * (1 / radii_.y)),
+            signed_by(box.z, d_dw * (1 / radii_.z))};
 }
 
-// G = N1(h, w) with h = N2(u, v): G_uu = N1_hh·h_u² + N1_h·h_uu, G_uv = N1_hh·h_u·h_v + N1_h·h_uv, G_uw = N1_hw·h_u,
-// G_ww = N1_ww (and v like u); then ∂²G/∂x∂y = sign(x)·sign(y)·G_uv/(a1·a2), the signs squared on the diagonal
-// (across a coordinate plane G is twice differentiable only for p ≥ 2: below, |x|'s kink is not smoothed away).
-Superellipsoid::DerivativeRanges Superellipsoid::derivative_ranges(const IntervalBox& box) const {
-    const GaugeParts parts = gauge_parts(box, radii_, p1_, p2_);
-    const auto reaches_plane = [](Interval c) { return c.lo <= 0 && c.hi >= 0; };
-    if ((p2_.p < 2 && (reaches_plane(box.x) || reaches_plane(box.y))) || (p1_.p < 2 && reaches_plane(box.z))) {
-        const Interval unknown = Interval::unbounded();
-        return {gradient_from(parts, box, radii_), unknown, unknown, unknown, unknown, unknown, unknown};
-    }
-    const Interval gauge = {p_norm(parts.h.lo, parts.w.lo, p1_), p_norm(parts.h.hi, parts.w.hi, p1_)};
-    const NormHessian inner = norm_hessian(parts.u, parts.v, parts.h, parts.inner, p2_.p);
-    const NormHessian outer = norm_hessian(parts.h, parts.w, gauge, parts.outer, p1_.p);
-    const Interval h_u = parts.inner.first, h_v = parts.inner.second, g_h = parts.outer.first;
-    const Interval uu = outer.aa * square(h_u) + g_h * inner.aa, vv = outer.aa * square(h_v) + g_h * inner.bb;
-    const Interval uv = outer.aa * h_u * h_v + g_h * inner.ab, uw = outer.ab * h_u, vw = outer.ab * h_v;
-    const Vec3d& r = radii_;
-    return {gradient_from(parts, box, r),
-            uu * (1 / (r.x * r.x)),
-            vv * (1 / (r.y * r.y)),
-            outer.bb * (1 / (r.z * r.z)),
-            signed_by_both(box.x, box.y, uv * (1 / (r.x * r.y))),
-            signed_by_both(box.x, box.z, uw * (1 / (r.x * r.z))),
-            signed_by_both(box.y, box.z, vw * (1 / (r.y * r.z)))};
-}
 
 Vec3d Superellipsoid::normal(const Vec3d& p) const {
     const double p1 = p1_.p, p2 = p2_.p;

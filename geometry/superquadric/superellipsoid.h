@@ -47,14 +47,6 @@ public:
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents
     // above 2 near the coordinate planes).
     IntervalBox gradient_range(const IntervalBox& box) const;
-    // The gauge's gradient and second partial derivatives over the (signed) points of `box`, for a second-order
-    // bound along a curve; entries may be infinite (the centre, and the coordinate planes of an exponent above 1,
-    // where the gauge is not twice differentiable).
-    struct DerivativeRanges {
-        IntervalBox gradient;
-        Interval xx, yy, zz, xy, xz, yz;
-    };
-    DerivativeRanges derivative_ranges(const IntervalBox& box) const;
 
     // Outward unit normal (direction of ∇F). On the coordinate planes, where F has creases or cusps for
     // exponents ≥ 2, it is the limit from the positive side; at the poles of a pinched shape it is ±z.

@@ -3,12 +3,9 @@
 // g(t) = G(D⁻¹(o + t·d)) − 1 and what the crossing search (crossing_search.h) needs to know of it over a stretch
 // [a, b] of the ray — an interval bound of g, from the deformation chain's interval inverse and the gauge's
 // monotonicity in |x|, |y|, |z|, and an interval bound of g′, from the gauge's gradient range and the chain's
-// interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]).
-// A deformed shape's bounds are those over the stretch's walked box intersected with centred forms about the
-// stretch's midpoint m, g(t) ∈ g(m) + g′(m)·(t − m) + ½·[g″]·(t − m)² and g′(t) ∈ g′(m) + [g″]·(t − m), with g(m)
-// and g′(m) evaluated at the point (widened by more than their rounding) and [g″] bounded over the walked box from
-// the gauge's second derivatives and the chain's: the box of a stretch through a twist or bend wraps a curved
-// piece of the ray, which a first-order bound pays for in full, the centred forms only through the remainder.
+// interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]). g is continued
+// beyond the undeformed box by the gauge (DeformationChain::BeyondUndeformedBox::Gauge), not cut to 1 there: a
+// stretch that reaches past a face of that box, as those near a boxy shape's surface do, keeps its bound of g′.
 #include <limits>
 #include <optional>
 
@@ -26,7 +23,6 @@ public:
     const Vec3d& local_origin() const { return origin_; }
     const Vec3d& local_direction() const { return direction_; }
 
-    // g(t), continued beyond the undeformed box by the gauge (DeformationChain::BeyondUndeformedBox).
     double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t, kBeyond); }
     // g(t) (bit for bit value(t)) and g′(t) (NaN where unknown: outside a stage box, on a crease).
     ValueAndDerivative value_and_slope(double t) const;
@@ -39,32 +35,17 @@ public:
 private:
     static constexpr DeformationChain::BeyondUndeformedBox kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
 
-    // What the bounds of the walked stretch share: the bound of g′ over its walked box, and for a deformed shape, made
-    // only where that bound holds zero, the centred forms' parts about the stretch's midpoint (`centred` false where
-    // g is not known to be twice differentiable on the stretch: the gauge's singular points, a bend region's end).
-    struct StretchDerivatives {
-        Interval slope = Interval::unbounded();
-        bool centred_tried = false, centred = false;
-        double mid = 0, value = 0, slope_at_mid = 0, value_margin = 0, slope_margin = 0;
-        Interval curvature = Interval::unbounded();  // of g″ over the stretch
-    };
-
     IntervalBox stretch(double a, double b) const;
     // The inverse walk of stretch(a, b) (nullptr when no part of it lies inside every stage box), kept for the last
     // stretch asked about: the search asks for the bound of g and then of g′ over the same stretch, and the walk
     // (atan2s and sines through a bend) is most of either.
     const DeformationChain::InverseBoxes* walked(double a, double b) const;
-    // The bound of g′ over the last stretch walked, and whether the centred forms apply there (their parts made when
-    // first asked).
-    const StretchDerivatives& derivatives(double a, double b) const;
-    bool centred(double a, double b) const;
 
     const Superquadric& superquadric_;
     Vec3d origin_, direction_;
     mutable double walked_a_ = std::numeric_limits<double>::quiet_NaN(), walked_b_ = walked_a_;
-    mutable bool walked_inside_ = false, derived_ = false;
+    mutable bool walked_inside_ = false;
     mutable std::optional<DeformationChain::InverseBoxes> walked_;  // made when first asked: most rays ask none
-    mutable StretchDerivatives derivatives_;
 };
 
 }  // namespace isotrace

@@ -35,18 +35,6 @@ IntervalBox Taper::inverse_tangent(const IntervalBox& preimage, const IntervalBo
             tangent.z};
 }
 
-// x·f = X with f linear in z = Z: x″·f + 2x′·f′ + x·f″ = X″, f′ = f_z·Z′ and f″ = f_z·Z″.
-IntervalBox Taper::inverse_curvature(const IntervalBox& preimage, const IntervalBox& tangent,
-                                     const IntervalBox& curvature, const IntervalBox& inverse_tangent) const {
-    const double dz_slope = 1 / (2 * half_height_);
-    const auto along = [&](Interval second, Interval first, Interval point, double rate) {
-        const double f_z = rate * dz_slope;
-        return divide_by_positive(second - first * tangent.z * (2 * f_z) - point * curvature.z * f_z, scale(rate, preimage.z));
-    };
-    return {along(curvature.x, inverse_tangent.x, preimage.x, x_rate_),
-            along(curvature.y, inverse_tangent.y, preimage.y, y_rate_), curvature.z};
-}
-
 std::string Taper::problem(const IntervalBox& input) const {
     for (const double rate : {x_rate_, y_rate_}) {
         const Interval s = scale(rate, input.z);

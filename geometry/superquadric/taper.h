@@ -25,10 +25,6 @@ public:
     // Bounds d/dt of inverse(q(t)) for a curve q(t) with q ∈ inverse of `preimage` and q' ∈ `tangent`, where
     // `preimage` bounds the inverse points (the chain's stage box keeps the scale positive there).
     IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
-    // Bounds d²/dt² of inverse(q(t)) for q' ∈ `tangent`, q'' ∈ `curvature`, where `preimage` bounds the inverse points
-    // and `inverse_tangent` their derivatives (inverse_tangent's bound).
-    IntervalBox inverse_curvature(const IntervalBox& preimage, const IntervalBox& tangent, const IntervalBox& curvature,
-                                  const IntervalBox& inverse_tangent) const;
     // Why the taper cannot be applied to points of `input` (empty when it can).
     std::string problem(const IntervalBox& input) const;
 

@@ -28,23 +28,6 @@ IntervalBox Twist::inverse_tangent(const IntervalBox& preimage, const IntervalBo
             tangent.z};
 }
 
-// x = R(φ)·q in the xy plane with φ′ = −rate·q′z: x′ = R·q′ + φ′·J·x (J turns by 90°), and since R and J commute,
-// x″ = R·q″ + 2φ′·J·x′ + φ′²·x + φ″·J·x.
-IntervalBox Twist::inverse_curvature(const IntervalBox& preimage, const IntervalBox& tangent,
-                                     const IntervalBox& curvature, const IntervalBox& inverse_tangent) const {
-    const Interval turn = tangent.z * -rate_, turn_rate = curvature.z * -rate_, twice = turn * 2.0, turn_squared = square(turn);
-    Interval x = twice * -inverse_tangent.y + turn_squared * preimage.x + turn_rate * -preimage.y;
-    Interval y = twice * inverse_tangent.x + turn_squared * preimage.y + turn_rate * preimage.x;
-    const bool straight = curvature.x.lo == 0 && curvature.x.hi == 0 && curvature.y.lo == 0 && curvature.y.hi == 0;
-    if (!straight) {  // the ray itself (the last stage's q″ = 0) needs no turn
-        const Interval phi = Interval::spanning(-angle(preimage.z.lo), -angle(preimage.z.hi));
-        const auto [s, c] = centred_sin_cos_range(phi);
-        x = x + (curvature.x * c - curvature.y * s);
-        y = y + (curvature.x * s + curvature.y * c);
-    }
-    return {x, y, curvature.z};
-}
-
 IntervalBox Twist::rotate_box(const IntervalBox& box, double sign) const {
     const Interval theta = Interval::spanning(sign * angle(box.z.lo), sign * angle(box.z.hi));
     const auto [s, c] = centred_sin_cos_range(theta);

@@ -19,10 +19,6 @@ public:
     IntervalBox inverse_box(const IntervalBox& box) const { return rotate_box(box, -1); }
     // Bounds d/dt of inverse(q(t)) for q' ∈ `tangent`, where `preimage` bounds the inverse points.
     IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
-    // Bounds d²/dt² of inverse(q(t)) for q' ∈ `tangent`, q'' ∈ `curvature`, where `preimage` bounds the inverse points
-    // and `inverse_tangent` their derivatives (inverse_tangent's bound).
-    IntervalBox inverse_curvature(const IntervalBox& preimage, const IntervalBox& tangent, const IntervalBox& curvature,
-                                  const IntervalBox& inverse_tangent) const;
     // A twist is a rotation per height: every twist is valid.
     std::string problem(const IntervalBox&) const { return {}; }
 
