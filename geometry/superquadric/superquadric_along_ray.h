@@ -26,7 +26,7 @@ public:
     double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t, kBeyond); }
     // g(t) (bit for bit value(t)) and g′(t) (NaN where unknown: outside a stage box, on a crease).
     ValueAndDerivative value_and_slope(double t) const;
-    // Contains g over [a, b] (points outside a stage box count as outside, g = 1).
+    // Contains g over [a, b] (points outside a deformed stage box count as outside, g = 1).
     Interval bound(double a, double b) const;
     // Contains g′ over [a, b] wherever g is differentiable; unbounded when some of the stretch lies outside a
     // stage box (g is not continuous there) or the gradient is unbounded.
