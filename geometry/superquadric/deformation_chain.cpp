@@ -50,7 +50,8 @@ Vec3d DeformationChain::forward(const Vec3d& p) const {
 }
 
 template <class AtStage>
-std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, AtStage&& at_stage) const {
+std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, BeyondUndeformedBox beyond,
+                                                    AtStage&& at_stage) const {
     Vec3d point = q;
     for (std::size_t k = stages_.size(); k > 0; --k) {
         if (check_boxes && !boxes_[k].contains(point)) return std::nullopt;
@@ -58,20 +59,23 @@ std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_b
         at_stage(k - 1, point);
     }
     // Undeformed, no box is needed: the gauge exceeds 1 everywhere outside the superellipsoid's box, and a box
-    // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton).
-    if (check_boxes && !stages_.empty() && !boxes_[0].contains(point)) return std::nullopt;
+    // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton). A
+    // deformed object's undeformed box counts as a stage box unless the walk goes on beyond it.
+    if (check_boxes && beyond == BeyondUndeformedBox::Outside && !stages_.empty() && !boxes_[0].contains(point))
+        return std::nullopt;
     return point;
 }
 
-std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q) const {
-    return walk_inverse(q, true, [](std::size_t, const Vec3d&) {});
+std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q, BeyondUndeformedBox beyond) const {
+    return walk_inverse(q, true, beyond, [](std::size_t, const Vec3d&) {});
 }
 
 std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velocity) const {
     Vec3d along = velocity;
-    const std::optional<Vec3d> point = walk_inverse(q, true, [&](std::size_t stage, const Vec3d& preimage) {
+    const auto carry_back = [&](std::size_t stage, const Vec3d& preimage) {
         along = std::visit([&](const auto& s) { return s.jacobian(preimage); }, stages_[stage]).solve(along);
-    });
+    };
+    const std::optional<Vec3d> point = walk_inverse(q, true, BeyondUndeformedBox::Gauge, carry_back);
     if (point) velocity = along;
     return point;
 }
@@ -79,11 +83,12 @@ std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velo
 DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
     Path path;
     path[stages_.size()] = q;
-    walk_inverse(q, false, [&](std::size_t stage, const Vec3d& preimage) { path[stage] = preimage; });
+    walk_inverse(q, false, BeyondUndeformedBox::Outside,
+                 [&](std::size_t stage, const Vec3d& preimage) { path[stage] = preimage; });
     return path;
 }
 
-bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes) const {
+bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes, BeyondUndeformedBox beyond) const {
     boxes.clipped = false;
     const auto clip_to_stage = [&](IntervalBox& b, std::size_t stage) {
         const IntervalBox before = b;
@@ -95,7 +100,7 @@ bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes) const
     boxes.stage[stages_.size()] = box;
     for (std::size_t k = stages_.size(); k > 0; --k) {
         IntervalBox preimage = std::visit([&](const auto& s) { return s.inverse_box(boxes.stage[k]); }, stages_[k - 1]);
-        if (!clip_to_stage(preimage, k - 1)) return false;
+        if ((k > 1 || beyond == BeyondUndeformedBox::Outside) && !clip_to_stage(preimage, k - 1)) return false;
         boxes.stage[k - 1] = preimage;
     }
     return true;

@@ -40,11 +40,17 @@ public:
     const IntervalBox& undeformed_box() const { return boxes_.front(); }
     const IntervalBox& deformed_box() const { return boxes_.back(); }
 
+    // What a walk back does beyond the undeformed box (stage 0), which no inverse needs: `Outside` counts those
+    // points as outside the object, as beyond every other stage box; `Gauge` walks on (the gauge is defined
+    // everywhere, above 1 there), so that the field along a ray stays continuous across that box's faces, which the
+    // crossing search's bound of g′ needs (a stretch cut by a face has none).
+    enum class BeyondUndeformedBox { Outside, Gauge };
+
     Vec3d forward(const Vec3d& p) const;
     // The undeformed point of q, or nothing when q lies outside a stage box (then it is outside the object; an
     // undeformed object has no box to leave).
-    std::optional<Vec3d> inverse(const Vec3d& q) const;
-    // inverse(q), and `velocity` (of a curve through q) carried back to the undeformed point's velocity.
+    std::optional<Vec3d> inverse(const Vec3d& q, BeyondUndeformedBox beyond = BeyondUndeformedBox::Outside) const;
+    // inverse(q, Gauge), and `velocity` (of a curve through q) carried back to the undeformed point's velocity.
     std::optional<Vec3d> inverse_along(const Vec3d& q, Vec3d& velocity) const;
     // The point at every stage of the inverse of q, without the stage-box checks (for normals at surface points).
     Path inverse_path(const Vec3d& q) const;
@@ -56,7 +62,8 @@ public:
         bool clipped = false;
     };
     // Walks `box` back through the stages into `boxes`; false when no part of it lies inside every stage box.
-    bool inverse_boxes(IntervalBox box, InverseBoxes& boxes) const;
+    bool inverse_boxes(IntervalBox box, InverseBoxes& boxes,
+                       BeyondUndeformedBox beyond = BeyondUndeformedBox::Outside) const;
     // For a curve q(t) in the walked box with q'(t) in `tangent`: a bound of the derivative of its undeformed
     // points, valid where nothing was clipped.
     IntervalBox inverse_tangent(const InverseBoxes& boxes, IntervalBox tangent) const;
@@ -68,9 +75,11 @@ public:
 private:
     // The shared inverse walk, last stage first: hands each stage's preimage to at_stage(stage, preimage) and
     // returns the undeformed point; nullopt at the first stage box that does not contain the point when
-    // `check_boxes`. Keeps only the current point (the search's point evaluations fill no path).
+    // `check_boxes` (the undeformed one as `beyond` says). Keeps only the current point (the search's point
+    // evaluations fill no path).
     template <class AtStage>
-    std::optional<Vec3d> walk_inverse(const Vec3d& q, bool check_boxes, AtStage&& at_stage) const;
+    std::optional<Vec3d> walk_inverse(const Vec3d& q, bool check_boxes, BeyondUndeformedBox beyond,
+                                      AtStage&& at_stage) const;
 
     // Recomputes boxes_ for the current stages (at construction only, so the cells need not be kept).
     void compute_stage_boxes();

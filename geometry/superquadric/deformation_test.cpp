@@ -102,9 +102,10 @@ TEST(SuperquadricDeformation, InverseAlongCarriesVelocitiesBack) {
             Vec3d velocity = d;
             const auto undeformed = chain.inverse_along(q, velocity);
             ASSERT_TRUE(undeformed);
-            EXPECT_EQ(*undeformed, *chain.inverse(q));
+            constexpr auto kGauge = DeformationChain::BeyondUndeformedBox::Gauge;
+            EXPECT_EQ(*undeformed, *chain.inverse(q, kGauge));
             const double h = 1e-6;
-            const auto ahead = chain.inverse(q + d * h), behind = chain.inverse(q - d * h);
+            const auto ahead = chain.inverse(q + d * h, kGauge), behind = chain.inverse(q - d * h, kGauge);
             if (!ahead || !behind) continue;
             EXPECT_NEAR(length(velocity - (*ahead - *behind) / (2 * h)), 0, 1e-5 * (1 + length(velocity))) << c << " " << i;
         }

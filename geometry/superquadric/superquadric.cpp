@@ -61,8 +61,8 @@ IntervalBox Superquadric::bounds() const {
     return box;
 }
 
-double Superquadric::local_field(const Vec3d& local) const {
-    const std::optional<Vec3d> undeformed = deformation_.inverse(local);
+double Superquadric::local_field(const Vec3d& local, DeformationChain::BeyondUndeformedBox beyond) const {
+    const std::optional<Vec3d> undeformed = deformation_.inverse(local, beyond);
     return undeformed ? shape_.gauge(*undeformed) - 1 : 1;  // outside a stage box is outside the object
 }
 

@@ -50,8 +50,10 @@ public:
     // field(point) < 0, without the gauge where the point lies outside the deformed box (the surface lies strictly
     // inside that box, so the field is positive there).
     bool contains(const Vec3d& point) const;
-    // The field at a point of the local deformed frame (before the placement).
-    double local_field(const Vec3d& local) const;
+    // The field at a point of the local deformed frame (before the placement); with `Gauge`, continued beyond the
+    // undeformed box by the gauge (the crossing search's field) instead of 1.
+    double local_field(const Vec3d& local, DeformationChain::BeyondUndeformedBox beyond =
+                                               DeformationChain::BeyondUndeformedBox::Outside) const;
     // Contains local_field over a box of the local deformed frame (interval inverse of the chain, then the gauge's
     // range; points outside a stage box count as outside, 1).
     Interval local_field_range(const IntervalBox& local) const;

@@ -28,7 +28,7 @@ const DeformationChain::InverseBoxes* SuperquadricAlongRay::walked(double a, dou
     if (!walked_ || a != walked_a_ || b != walked_b_) {
         if (!walked_) walked_.emplace();
         walked_a_ = a, walked_b_ = b;
-        walked_inside_ = superquadric_.deformation().inverse_boxes(stretch(a, b), *walked_);
+        walked_inside_ = superquadric_.deformation().inverse_boxes(stretch(a, b), *walked_, kBeyond);
     }
     return walked_inside_ ? &*walked_ : nullptr;
 }

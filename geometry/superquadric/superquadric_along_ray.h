@@ -3,7 +3,9 @@
 // g(t) = G(D⁻¹(o + t·d)) − 1 and what the crossing search (crossing_search.h) needs to know of it over a stretch
 // [a, b] of the ray — an interval bound of g, from the deformation chain's interval inverse and the gauge's
 // monotonicity in |x|, |y|, |z|, and an interval bound of g′, from the gauge's gradient range and the chain's
-// interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]).
+// interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]). g is continued
+// beyond the undeformed box by the gauge (DeformationChain::BeyondUndeformedBox::Gauge), not cut to 1 there: a
+// stretch that reaches past a face of that box, as those near a boxy shape's surface do, keeps its bound of g′.
 #include <limits>
 #include <optional>
 
@@ -21,16 +23,18 @@ public:
     const Vec3d& local_origin() const { return origin_; }
     const Vec3d& local_direction() const { return direction_; }
 
-    double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t); }
+    double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t, kBeyond); }
     // g(t) (bit for bit value(t)) and g′(t) (NaN where unknown: outside a stage box, on a crease).
     ValueAndDerivative value_and_slope(double t) const;
-    // Contains g over [a, b] (points outside a stage box count as outside, g = 1).
+    // Contains g over [a, b] (points outside a deformed stage box count as outside, g = 1).
     Interval bound(double a, double b) const;
     // Contains g′ over [a, b] wherever g is differentiable; unbounded when some of the stretch lies outside a
     // stage box (g is not continuous there) or the gradient is unbounded.
     Interval slope_bound(double a, double b) const;
 
 private:
+    static constexpr DeformationChain::BeyondUndeformedBox kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
+
     IntervalBox stretch(double a, double b) const;
     // The inverse walk of stretch(a, b) (nullptr when no part of it lies inside every stage box), kept for the last
     // stretch asked about: the search asks for the bound of g and then of g′ over the same stretch, and the walk
