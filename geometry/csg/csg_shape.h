@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "geometry/csg/solid_user_geometry.h"
@@ -51,6 +52,10 @@ public:
     // without asking the others for their spans (csg_first_surface_point.cpp).
     std::optional<BoundaryPoint> first_surface_point(const Vec3d& origin, const Vec3d& direction, double t_near,
                                                      double t_far, QueryScratch& scratch) const override;
+    // A union's first span from its operands in the order the ray reaches their bounds, stopping at the first
+    // operand whose bounds begin clear of the span found (csg_leading_span.cpp).
+    LeadingSpan leading_span(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                             QueryScratch& scratch) const override;
     bool certainly_outside(const Vec3d& point, double distance) const override;
     bool exact_boundaries() const override { return exact_boundaries_; }
     // A part's ends defer their normal when its leaf does; boundary_normal asks the leaf and carries the answer up.
@@ -72,6 +77,9 @@ private:
         MaterialReference material;
         std::uint32_t first_part = 0;
         std::uint32_t part_count = 1;
+        // Its bounds in the CSG's space, widened beyond their float rounding (set by place): the ray meets none of
+        // its spans before it enters them. Empty bounds: lower above upper.
+        Vec3d reach_lower, reach_upper;
     };
 
     // A call's buffers, held while its children (nested trees among them) fill theirs.
@@ -79,6 +87,7 @@ private:
         std::vector<InsideSpan> operand_spans;
         std::vector<SpanEvent> events;
         std::vector<InsideSpan> result;  // first_surface_point's spans of the whole
+        std::vector<std::pair<double, std::uint32_t>> reached;  // leading_span's operands by where the ray reaches them
     };
 
     void place(Operand& operand, const Transform& to_csg);
@@ -88,6 +97,9 @@ private:
     // The operand's inside spans along a ray given in the CSG's space, with normals and parts in the CSG's terms.
     void operand_spans(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
                        double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
+    // The operand's leading_span, in the CSG's terms as operand_spans gives its spans.
+    LeadingSpan operand_leading_span(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
+                                     double t_max, QueryScratch& scratch) const;
     // inside_spans, once the first operand's spans are in `operand_buffer` (which then takes the others' in turn).
     void combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                             std::vector<InsideSpan>& operand_buffer, std::vector<SpanEvent>& events,
