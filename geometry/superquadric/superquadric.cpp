@@ -18,12 +18,12 @@ double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
 }
 
-// The last few points of a search whose difference-of-convex parts were taken: a halved stretch shares its ends with
-// its parent and its sibling.
+// The last few points of a search whose gauge and difference-of-convex parts were taken: a halved stretch shares its
+// ends with its parent and its sibling, and the search asks for a point's value before its parts.
 class MixedSamples {
 public:
     template <class Take>
-    DifferenceOfConvexSample at(double t, const Take& take) {
+    const Superellipsoid::GaugeAndDifference& at(double t, const Take& take) {
         for (int k = 0; k < filled_; ++k)
             if (entries_[k].t == t) return entries_[k].sample;
         Entry& slot = entries_[next_];
@@ -37,7 +37,7 @@ private:
     static constexpr int kSize = 4;
     struct Entry {
         double t;
-        DifferenceOfConvexSample sample;
+        Superellipsoid::GaugeAndDifference sample;
     };
     Entry entries_[kSize];
     int filled_ = 0, next_ = 0;
@@ -150,8 +150,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return;
     }
 
-    const auto value = [&](double t) { return ray.value(t); };
-    const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const bool convex = deformation_.empty() && shape_.is_convex();
     const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
     const bool mixed = deformation_.empty() && !convex && !concave;
@@ -159,12 +157,16 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     double piece_lo = t0, piece_hi = t1;
     bool cusp_lo = false, cusp_hi = false;
     MixedSamples samples;
+    const auto mixed_at = [&](double t) -> const Superellipsoid::GaugeAndDifference& {
+        return samples.at(t, [&] { return shape_.gauge_and_difference(o + d * t, d); });
+    };
+    // Undeformed, the field is the gauge less 1 (local_field): mixed shapes take it with their parts.
+    const auto value = [&](double t) { return mixed ? mixed_at(t).gauge - 1 : ray.value(t); };
+    const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const auto sample_at = [&](double t) {
-        return samples.at(t, [&] {
-            DifferenceOfConvexSample sample = shape_.inside_difference(o + d * t, d);
-            if ((t == piece_lo && cusp_lo) || (t == piece_hi && cusp_hi)) sample.convex.slope = sample.subtracted.slope = NAN;
-            return sample;
-        });
+        DifferenceOfConvexSample sample = mixed_at(t).difference;
+        if ((t == piece_lo && cusp_lo) || (t == piece_hi && cusp_hi)) sample.convex.slope = sample.subtracted.slope = NAN;
+        return sample;
     };
     // Mixed exponents: the chords and tangents of φ's convex parts (difference_of_convex.h) bound far tighter
     // than interval arithmetic; where they settle nothing, the stretch is halved. φ has g's sign but not
@@ -195,12 +197,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         });
         return;
     }
-    if (convex) {
-        // Both ends with their slopes: the march starts from them, and the general search from their values.
-        const ValueAndDerivative start = value_and_slope(t0), end = value_and_slope(t1);
-        work.search.evaluations += 2;
-        if (visit_convex_crossings(t0, t1, start, end, value_and_slope, first_only, work.search, visit)) return;
-    }
+    if (convex && visit_convex_crossings(t0, t1, value_and_slope, first_only, work.search, visit)) return;
     double g_start = value(t0);
 
     // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and
