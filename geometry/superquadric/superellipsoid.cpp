@@ -96,10 +96,13 @@ Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Ve
 // within an ulp or a few roundings, and a p-norm passes its arguments' relative errors on without amplifying them
 // (an error of r^p in the sum 1 + r^p is divided by p in the root). Widened by far more than that, the corners' values
 // bound the exact gauge over the box, and the computed one too (which need not be monotone in its last bits).
+constexpr double kGaugeRelativeError = 0x1p-46;
+
 Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {
-    constexpr double kRelativeError = 0x1p-46;
-    return {gauge(magnitudes.lower()) * (1 - kRelativeError), gauge(magnitudes.upper()) * (1 + kRelativeError)};
+    return {least_gauge(magnitudes.lower()), gauge(magnitudes.upper()) * (1 + kGaugeRelativeError)};
 }
+
+double Superellipsoid::least_gauge(const Vec3d& magnitudes) const { return gauge(magnitudes) * (1 - kGaugeRelativeError); }
 
 namespace {
 

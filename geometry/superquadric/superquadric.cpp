@@ -198,7 +198,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return;
     }
     if (convex && visit_convex_crossings(t0, t1, value_and_slope, first_only, work.search, visit)) return;
-    double g_start = value(t0);
 
     // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and
     // the bound is exact.
@@ -212,7 +211,24 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         cuts[at] = t;
     }
     cuts[count++] = t1;
+    // A piece whose stretch lies where the gauge exceeds 1 throughout holds no crossing, and every value the search
+    // would take there is positive: it is passed over without its ends' values (a ray missing a star's arms, a
+    // shadow ray leaving the surface it starts at).
+    double g_start = 0;  // g at the piece's start, taken when a piece needs it
+    bool known_start = false;
+    const auto outside_throughout = [&](double a, double b) {
+        const Vec3d pa = o + d * a, pb = o + d * b;  // as value() takes the points: the stretch holds all of them
+        Vec3d least;
+        for (int k = 0; k < 3; ++k) least[k] = Interval{std::min(pa[k], pb[k]), std::max(pa[k], pb[k])}.magnitude().lo;
+        return shape_.least_gauge(least) > 1;
+    };
     for (int i = 0; i + 1 < count; ++i) {
+        if (outside_throughout(cuts[i], cuts[i + 1])) {
+            known_start = false;
+            continue;
+        }
+        if (!known_start) g_start = value(cuts[i]);
+        known_start = true;
         const double g_end = value(cuts[i + 1]);
         piece_lo = cuts[i], piece_hi = cuts[i + 1], cusp_lo = i > 0, cusp_hi = i + 2 < count;
         if (concave) {
