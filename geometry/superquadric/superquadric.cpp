@@ -102,7 +102,10 @@ bool Superquadric::certainly_outside(const Vec3d& point, double distance) const 
     const Vec3d& r = shape_.radii();
     const double reach = std::sqrt(3.0) * distance / (scale * std::min({r.x, r.y, r.z}));
     constexpr double kRounding = 1e-12;  // of the gauge and the placement, relative to the gauge's unit
-    return shape_.gauge(placement_.inverse_point(point)) - 1 > reach + kRounding;
+    const Vec3d local = placement_.inverse_point(point);
+    // The gauge is at least the largest of |x|/a1, |y|/a2, |z|/a3: beside the box that settles it without the gauge.
+    const double least = std::max({std::abs(local.x) / r.x, std::abs(local.y) / r.y, std::abs(local.z) / r.z});
+    return least - 1 > reach + kRounding || shape_.gauge(local) - 1 > reach + kRounding;
 }
 
 Vec3d Superquadric::normal(const Vec3d& point) const {
