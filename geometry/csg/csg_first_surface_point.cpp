@@ -35,14 +35,18 @@ bool CsgShape::certainly_outside(const Vec3d& point, double distance) const {
 std::optional<BoundaryPoint> CsgShape::first_surface_point(const Vec3d& origin, const Vec3d& direction, double t_near,
                                                            double t_far, QueryScratch& scratch) const {
     if (!(t_near < t_far)) return std::nullopt;
+    const QueryScratch::Level level(scratch);
+    Buffers& buffers = level.get<Buffers>();
     if (operation_ == CsgOperation::Union) {
-        // The union's first span opens with its first surface point, when that lies inside the range.
+        // The union's first span opens with its first surface point, when that lies inside the range; otherwise its
+        // spans, at the level below as the leading span took them (which keeps the spans it asked for).
         const LeadingSpan lead = leading_span(origin, direction, t_near, t_far, scratch);
         if (lead.outcome == LeadingSpan::Outcome::None) return std::nullopt;
         if (lead.found() && lead.span.enter.t > t_near && lead.span.enter.t < t_far) return lead.span.enter;
+        buffers.result.clear();
+        inside_spans(origin, direction, t_near, t_far, buffers.result, scratch);
+        return first_surface_crossing(buffers.result, t_near, t_far);
     }
-    const QueryScratch::Level level(scratch);
-    Buffers& buffers = level.get<Buffers>();
     // A difference's answer when the first operand's first span (or one that ends no later) begins with an entry
     // from outside that no subtracted operand comes near.
     const bool by_entry = operation_ == CsgOperation::Difference && exact_boundaries_;
@@ -69,11 +73,12 @@ std::optional<BoundaryPoint> CsgShape::first_surface_point(const Vec3d& origin, 
             return entry;
     }
     operand_spans(operands_.front(), origin, direction, t_near, t_far, buffers.operand_spans, scratch);
-    if (buffers.operand_spans.empty() && operation_ != CsgOperation::Union) return std::nullopt;
+    if (buffers.operand_spans.empty()) return std::nullopt;
     if (by_entry)
         if (const std::optional<BoundaryPoint> entry = settled_entry(buffers.operand_spans.front())) return entry;
     buffers.result.clear();
-    combine_with_first(origin, direction, t_near, t_far, buffers.operand_spans, buffers.events, buffers.result, scratch);
+    combine_with_first(origin, direction, t_near, t_far, buffers.operand_spans, buffers.events, buffers.result,
+                       nullptr, scratch);
     return first_surface_crossing(buffers.result, t_near, t_far);
 }
 

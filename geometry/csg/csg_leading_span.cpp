@@ -17,6 +17,10 @@ LeadingSpan CsgShape::leading_span(const Vec3d& origin, const Vec3d& direction, 
     const QueryScratch::Level level(scratch);
     Buffers& buffers = level.get<Buffers>();
     buffers.reached.clear();
+    Asked& asked = buffers.asked;
+    asked = {this, origin, direction, t_min, t_max, std::move(asked.kept), std::move(asked.spans)};
+    asked.kept.assign(operands_.size(), false);
+    asked.spans.resize(operands_.size());
     for (std::uint32_t i = 0; i < operands_.size(); ++i) {
         const Operand& operand = operands_[i];
         if (operand.reach_lower.x > operand.reach_upper.x) continue;
@@ -31,6 +35,8 @@ LeadingSpan CsgShape::leading_span(const Vec3d& origin, const Vec3d& direction, 
         if (front && clear_of_front(t_reached)) break;  // this operand and the later ones begin beyond the front's entry
         const Operand& operand = operands_[index];
         operand_spans(operand, origin, direction, t_min, t_max, buffers.operand_spans, scratch);
+        asked.spans[index] = buffers.operand_spans;
+        asked.kept[index] = true;
         if (buffers.operand_spans.empty()) continue;
         InsideSpan span = buffers.operand_spans.front();
         span.enter.part += operand.first_part;

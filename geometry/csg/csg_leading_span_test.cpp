@@ -66,5 +66,20 @@ TEST(CsgLeadingSpan, LeavesOperandsUnaskedThatBeginBeyondTheEntry) {
     EXPECT_EQ(counting.queries, 1);
 }
 
+// A leading span that settles nothing (the subtracted ball does not claim to stay clear of the entry) is followed by
+// the union's full spans, which take the spans the leading span asked for instead of asking again.
+TEST(CsgLeadingSpan, TheFullSpansAfterItDoNotAskAgain) {
+    auto near_ball = std::make_unique<CountingBall>(Vec3d(0, 0, 0), 1);
+    const CountingBall& counting = *near_ball;
+    const auto tree = csg(CsgOperation::Difference,
+                          child(csg(CsgOperation::Union, child(std::move(near_ball)), child(sphere({3, 0, 0}, 0.5)))),
+                          child(std::make_unique<CountingBall>(Vec3d(0, 0, 5), 0.5)));
+    QueryScratch scratch;
+    const auto hit = tree->first_surface_point({-3, 0, 0}, {1, 0, 0}, 0, 1e30, scratch);
+    ASSERT_TRUE(hit);
+    EXPECT_DOUBLE_EQ(hit->t, 2);
+    EXPECT_EQ(counting.queries, 1);
+}
+
 }  // namespace
 }  // namespace isotrace::csg_test

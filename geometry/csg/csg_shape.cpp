@@ -179,22 +179,32 @@ Vec3d CsgShape::boundary_normal(const Vec3d& origin, const Vec3d& direction, con
     return operation_ == CsgOperation::Difference && index > 0 ? -normal : normal;
 }
 
+void CsgShape::operand_spans(std::uint32_t index, const Asked* asked, const Vec3d& origin, const Vec3d& direction,
+                             double t_min, double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+    if (asked && asked->along(this, origin, direction, t_min, t_max) && asked->kept[index]) {
+        spans = asked->spans[index];
+        return;
+    }
+    operand_spans(operands_[index], origin, direction, t_min, t_max, spans, scratch);
+}
+
 void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                             std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
     const QueryScratch::Level level(scratch);
     Buffers& buffers = level.get<Buffers>();
-    operand_spans(operands_.front(), origin, direction, t_min, t_max, buffers.operand_spans, scratch);
-    combine_with_first(origin, direction, t_min, t_max, buffers.operand_spans, buffers.events, spans, scratch);
+    operand_spans(0, &buffers.asked, origin, direction, t_min, t_max, buffers.operand_spans, scratch);
+    combine_with_first(origin, direction, t_min, t_max, buffers.operand_spans, buffers.events, spans, &buffers.asked,
+                       scratch);
 }
 
 void CsgShape::combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                                   std::vector<InsideSpan>& operand_buffer, std::vector<SpanEvent>& events,
-                                  std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+                                  std::vector<InsideSpan>& spans, const Asked* asked, QueryScratch& scratch) const {
     events.clear();
     const bool narrows = operation_ != CsgOperation::Union;  // the result lies within the first child's spans
     for (std::uint32_t i = 0; i < operands_.size(); ++i) {
         const Operand& operand = operands_[i];
-        if (i > 0) operand_spans(operand, origin, direction, t_min, t_max, operand_buffer, scratch);
+        if (i > 0) operand_spans(i, asked, origin, direction, t_min, t_max, operand_buffer, scratch);
         const bool bounds_result = operation_ == CsgOperation::Intersection || i == 0;
         if (narrows && bounds_result) {
             if (operand_buffer.empty()) return;

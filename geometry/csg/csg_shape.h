@@ -82,12 +82,28 @@ private:
         Vec3d reach_lower, reach_upper;
     };
 
+    // The spans leading_span asked operands for, kept for the span listing of the same tree along the same ray and
+    // range at the same depth that may follow it (a leading span that settles nothing is followed by the full
+    // spans). The spans are the operands' answers to that ray and range, so a listing kept longer stays right.
+    struct Asked {
+        const CsgShape* tree = nullptr;  // none kept
+        Vec3d origin, direction;
+        double t_min = 0, t_max = 0;
+        std::vector<bool> kept;  // by operand
+        std::vector<std::vector<InsideSpan>> spans;
+
+        bool along(const CsgShape* shape, const Vec3d& o, const Vec3d& d, double t0, double t1) const {
+            return tree == shape && origin == o && direction == d && t_min == t0 && t_max == t1;
+        }
+    };
+
     // A call's buffers, held while its children (nested trees among them) fill theirs.
     struct Buffers {
         std::vector<InsideSpan> operand_spans;
         std::vector<SpanEvent> events;
         std::vector<InsideSpan> result;  // first_surface_point's spans of the whole
         std::vector<std::pair<double, std::uint32_t>> reached;  // leading_span's operands by where the ray reaches them
+        Asked asked;
     };
 
     void place(Operand& operand, const Transform& to_csg);
@@ -100,10 +116,15 @@ private:
     // The operand's leading_span, in the CSG's terms as operand_spans gives its spans.
     LeadingSpan operand_leading_span(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
                                      double t_max, QueryScratch& scratch) const;
-    // inside_spans, once the first operand's spans are in `operand_buffer` (which then takes the others' in turn).
+    // Operand `index`'s spans as operand_spans gives them: those `asked` kept (when it holds them for this ray and
+    // range), else asked now.
+    void operand_spans(std::uint32_t index, const Asked* asked, const Vec3d& origin, const Vec3d& direction,
+                       double t_min, double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
+    // inside_spans, once the first operand's spans are in `operand_buffer` (which then takes the others' in turn);
+    // `asked` as for operand_spans.
     void combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                             std::vector<InsideSpan>& operand_buffer, std::vector<SpanEvent>& events,
-                            std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
+                            std::vector<InsideSpan>& spans, const Asked* asked, QueryScratch& scratch) const;
     static bool operand_certainly_outside(const Operand& operand, const Vec3d& point, double distance);
 
     CsgOperation operation_;
