@@ -23,33 +23,6 @@ void expect_same(const std::optional<BoundaryPoint>& actual, const std::optional
     EXPECT_EQ(actual->part, expected->part) << what;
 }
 
-// Solid spans of a ball, counting the span queries, with a certainly_outside answer set by the test.
-class CountingBall final : public Shape, public Solid {
-public:
-    CountingBall(const Vec3d& centre, double radius, bool claims_outside)
-        : ball_(sphere(centre, radius)), claims_outside_(claims_outside) {}
-
-    std::string type_name() const override { return "counting ball"; }
-    std::size_t primitive_count() const override { return 1; }
-    Bounds3f bounds() const override { return ball_->bounds(); }
-    bool can_bake(const Transform&) const override { return true; }
-    void bake(const Transform&) override {}  // placed by the identity only
-    RTCGeometry create_geometry(RTCDevice) override { return nullptr; }
-
-    void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
-                      std::vector<InsideSpan>& spans, QueryScratch& scratch) const override {
-        ++queries;
-        dynamic_cast<const Solid&>(*ball_).inside_spans(origin, direction, t_min, t_max, spans, scratch);
-    }
-    bool certainly_outside(const Vec3d&, double) const override { return claims_outside_; }
-
-    mutable int queries = 0;
-
-private:
-    std::unique_ptr<Shape> ball_;
-    bool claims_outside_;
-};
-
 TEST(CsgFirstSurfacePoint, IsTheFullCombinationsFirstSurfaceEndBitForBit) {
     std::vector<std::unique_ptr<CsgShape>> trees;
     trees.push_back(csg(CsgOperation::Difference, child(sphere({0, 0, 0}, 1)), child(sphere({0.6, 0, 0}, 0.7))));

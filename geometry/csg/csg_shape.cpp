@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -23,7 +24,7 @@ Bounds3f intersect_bounds(const Bounds3f& a, const Bounds3f& b) {
 
 // Normals of surface ends from a child's space to the CSG's (cut ends carry none, nor do ends whose normal the
 // child defers: boundary_normal maps those).
-void map_normals(std::vector<InsideSpan>& spans, const Solid& child, const Transform& to_csg) {
+void map_normals(std::span<InsideSpan> spans, const Solid& child, const Transform& to_csg) {
     for (InsideSpan& span : spans)
         for (BoundaryPoint* end : {&span.enter, &span.exit})
             if (end->on_surface() && !child.defers_normals(end->part)) end->normal = normalize(to_csg.normal(end->normal));
@@ -61,6 +62,15 @@ void CsgShape::place(Operand& operand, const Transform& to_csg) {
         operand.to_csg = placement;
         operand.from_csg = placement.inverse();
     }
+    operand.reach_lower = {1, 1, 1};
+    operand.reach_upper = {-1, -1, -1};
+    const Bounds3f bounds = operand_bounds(operand);
+    if (bounds.empty()) return;
+    // A float's rounding is within 2⁻²⁴ of the coordinate's magnitude.
+    const Vec3d lower(bounds.lower), upper(bounds.upper);
+    const Vec3d margin = (abs(lower) + abs(upper)) * 1e-6;
+    operand.reach_lower = lower - margin;
+    operand.reach_upper = upper + margin;
 }
 
 void CsgShape::bake(const Transform& to_world) {
@@ -134,6 +144,15 @@ void CsgShape::operand_spans(const Operand& operand, const Vec3d& origin, const 
     }
 }
 
+LeadingSpan CsgShape::operand_leading_span(const Operand& operand, const Vec3d& origin, const Vec3d& direction,
+                                           double t_min, double t_max, QueryScratch& scratch) const {
+    if (!operand.from_csg) return operand.solid->leading_span(origin, direction, t_min, t_max, scratch);
+    LeadingSpan lead = operand.solid->leading_span(operand.from_csg->point(origin), operand.from_csg->vector(direction),
+                                                   t_min, t_max, scratch);
+    if (lead.found()) map_normals(std::span<InsideSpan>(&lead.span, 1), *operand.solid, *operand.to_csg);
+    return lead;
+}
+
 std::size_t CsgShape::operand_of(std::uint32_t part) const {
     std::size_t i = 0;
     while (i + 1 < operands_.size() && part >= operands_[i + 1].first_part) ++i;
@@ -160,22 +179,32 @@ Vec3d CsgShape::boundary_normal(const Vec3d& origin, const Vec3d& direction, con
     return operation_ == CsgOperation::Difference && index > 0 ? -normal : normal;
 }
 
+void CsgShape::operand_spans(std::uint32_t index, const Asked* asked, const Vec3d& origin, const Vec3d& direction,
+                             double t_min, double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+    if (asked && asked->along(this, origin, direction, t_min, t_max) && asked->kept[index]) {
+        spans = asked->spans[index];
+        return;
+    }
+    operand_spans(operands_[index], origin, direction, t_min, t_max, spans, scratch);
+}
+
 void CsgShape::inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                             std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
     const QueryScratch::Level level(scratch);
     Buffers& buffers = level.get<Buffers>();
-    operand_spans(operands_.front(), origin, direction, t_min, t_max, buffers.operand_spans, scratch);
-    combine_with_first(origin, direction, t_min, t_max, buffers.operand_spans, buffers.events, spans, scratch);
+    operand_spans(0, &buffers.asked, origin, direction, t_min, t_max, buffers.operand_spans, scratch);
+    combine_with_first(origin, direction, t_min, t_max, buffers.operand_spans, buffers.events, spans, &buffers.asked,
+                       scratch);
 }
 
 void CsgShape::combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                                   std::vector<InsideSpan>& operand_buffer, std::vector<SpanEvent>& events,
-                                  std::vector<InsideSpan>& spans, QueryScratch& scratch) const {
+                                  std::vector<InsideSpan>& spans, const Asked* asked, QueryScratch& scratch) const {
     events.clear();
     const bool narrows = operation_ != CsgOperation::Union;  // the result lies within the first child's spans
     for (std::uint32_t i = 0; i < operands_.size(); ++i) {
         const Operand& operand = operands_[i];
-        if (i > 0) operand_spans(operand, origin, direction, t_min, t_max, operand_buffer, scratch);
+        if (i > 0) operand_spans(i, asked, origin, direction, t_min, t_max, operand_buffer, scratch);
         const bool bounds_result = operation_ == CsgOperation::Intersection || i == 0;
         if (narrows && bounds_result) {
             if (operand_buffer.empty()) return;

@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "geometry/csg/solid_user_geometry.h"
@@ -51,6 +52,10 @@ public:
     // without asking the others for their spans (csg_first_surface_point.cpp).
     std::optional<BoundaryPoint> first_surface_point(const Vec3d& origin, const Vec3d& direction, double t_near,
                                                      double t_far, QueryScratch& scratch) const override;
+    // A union's first span from its operands in the order the ray reaches their bounds, stopping at the first
+    // operand whose bounds begin clear of the span found (csg_leading_span.cpp).
+    LeadingSpan leading_span(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                             QueryScratch& scratch) const override;
     bool certainly_outside(const Vec3d& point, double distance) const override;
     bool exact_boundaries() const override { return exact_boundaries_; }
     // A part's ends defer their normal when its leaf does; boundary_normal asks the leaf and carries the answer up.
@@ -72,6 +77,24 @@ private:
         MaterialReference material;
         std::uint32_t first_part = 0;
         std::uint32_t part_count = 1;
+        // Its bounds in the CSG's space, widened beyond their float rounding (set by place): the ray meets none of
+        // its spans before it enters them. Empty bounds: lower above upper.
+        Vec3d reach_lower, reach_upper;
+    };
+
+    // The spans leading_span asked operands for, kept for the span listing of the same tree along the same ray and
+    // range at the same depth that may follow it (a leading span that settles nothing is followed by the full
+    // spans). The spans are the operands' answers to that ray and range, so a listing kept longer stays right.
+    struct Asked {
+        const CsgShape* tree = nullptr;  // none kept
+        Vec3d origin, direction;
+        double t_min = 0, t_max = 0;
+        std::vector<bool> kept;  // by operand
+        std::vector<std::vector<InsideSpan>> spans;
+
+        bool along(const CsgShape* shape, const Vec3d& o, const Vec3d& d, double t0, double t1) const {
+            return tree == shape && origin == o && direction == d && t_min == t0 && t_max == t1;
+        }
     };
 
     // A call's buffers, held while its children (nested trees among them) fill theirs.
@@ -79,6 +102,8 @@ private:
         std::vector<InsideSpan> operand_spans;
         std::vector<SpanEvent> events;
         std::vector<InsideSpan> result;  // first_surface_point's spans of the whole
+        std::vector<std::pair<double, std::uint32_t>> reached;  // leading_span's operands by where the ray reaches them
+        Asked asked;
     };
 
     void place(Operand& operand, const Transform& to_csg);
@@ -88,10 +113,18 @@ private:
     // The operand's inside spans along a ray given in the CSG's space, with normals and parts in the CSG's terms.
     void operand_spans(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
                        double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
-    // inside_spans, once the first operand's spans are in `operand_buffer` (which then takes the others' in turn).
+    // The operand's leading_span, in the CSG's terms as operand_spans gives its spans.
+    LeadingSpan operand_leading_span(const Operand& operand, const Vec3d& origin, const Vec3d& direction, double t_min,
+                                     double t_max, QueryScratch& scratch) const;
+    // Operand `index`'s spans as operand_spans gives them: those `asked` kept (when it holds them for this ray and
+    // range), else asked now.
+    void operand_spans(std::uint32_t index, const Asked* asked, const Vec3d& origin, const Vec3d& direction,
+                       double t_min, double t_max, std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
+    // inside_spans, once the first operand's spans are in `operand_buffer` (which then takes the others' in turn);
+    // `asked` as for operand_spans.
     void combine_with_first(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                             std::vector<InsideSpan>& operand_buffer, std::vector<SpanEvent>& events,
-                            std::vector<InsideSpan>& spans, QueryScratch& scratch) const;
+                            std::vector<InsideSpan>& spans, const Asked* asked, QueryScratch& scratch) const;
     static bool operand_certainly_outside(const Operand& operand, const Vec3d& point, double distance);
 
     CsgOperation operation_;

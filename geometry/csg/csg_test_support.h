@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "geometry/box/box_shape.h"
@@ -35,6 +36,33 @@ std::unique_ptr<CsgShape> csg(CsgOperation operation, Children&&... children) {
     (list.push_back(std::forward<Children>(children)), ...);
     return std::make_unique<CsgShape>(operation, std::move(list));
 }
+
+// Solid spans of a ball, counting the span queries, with a certainly_outside answer set by the test.
+class CountingBall final : public Shape, public Solid {
+public:
+    CountingBall(const Vec3d& centre, double radius, bool claims_outside = false)
+        : ball_(sphere(centre, radius)), claims_outside_(claims_outside) {}
+
+    std::string type_name() const override { return "counting ball"; }
+    std::size_t primitive_count() const override { return 1; }
+    Bounds3f bounds() const override { return ball_->bounds(); }
+    bool can_bake(const Transform&) const override { return true; }
+    void bake(const Transform&) override {}  // placed by the identity only
+    RTCGeometry create_geometry(RTCDevice) override { return nullptr; }
+
+    void inside_spans(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                      std::vector<InsideSpan>& spans, QueryScratch& scratch) const override {
+        ++queries;
+        dynamic_cast<const Solid&>(*ball_).inside_spans(origin, direction, t_min, t_max, spans, scratch);
+    }
+    bool certainly_outside(const Vec3d&, double) const override { return claims_outside_; }
+
+    mutable int queries = 0;
+
+private:
+    std::unique_ptr<Shape> ball_;
+    bool claims_outside_;
+};
 
 inline std::unique_ptr<RenderScene> scene_of(std::unique_ptr<Shape> shape, const Transform& to_world = {}) {
     auto scene = std::make_unique<RenderScene>();

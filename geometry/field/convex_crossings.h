@@ -66,30 +66,36 @@ MarchResult march(const PointSlope& at, double a, double g_a, double slope_a, do
 
 }  // namespace convex_crossings_detail
 
-// Visits the crossings of a convex g on [t0, t1] in increasing t (`start` = at(t0), `end` = at(t1); `at(t)` returns
-// {value, derivative}, the value bit for bit the caller's g): the first only, or all of them. Returns false when the
-// march could not settle the segment; then nothing was visited and the caller runs the general search.
-template <class Sample, class PointSlope, class Visit>
-bool visit_convex_crossings(double t0, double t1, const Sample& start, const Sample& end, const PointSlope& at,
-                            bool first_only, CrossingSearchWork& work, Visit&& visit) {
+// Visits the crossings of a convex g on [t0, t1] in increasing t (`at(t)` returns {value, derivative}, the value bit
+// for bit the caller's g): the first only, or all of them. g is taken at t1 only when the answer depends on it: not
+// when the ray enters from outside and the first crossing is all that is asked, nor when it never enters. Returns
+// false when the march could not settle the segment; then nothing was visited and the caller runs the general search.
+template <class PointSlope, class Visit>
+bool visit_convex_crossings(double t0, double t1, const PointSlope& at, bool first_only, CrossingSearchWork& work,
+                            Visit&& visit) {
     using convex_crossings_detail::March;
     using convex_crossings_detail::march;
-    const double length = t1 - t0, g0 = start.value, g1 = end.value;
-    const bool outside_at_start = g0 >= 0, outside_at_end = g1 >= 0;
-    if (!outside_at_start && !outside_at_end) return true;
+    const double length = t1 - t0;
+    const auto start = at(t0);
+    ++work.evaluations;
     std::optional<double> entry;
-    if (outside_at_start) {
-        const auto found = march(at, t0, g0, start.derivative, 1, length, work);
+    if (start.value >= 0) {
+        const auto found = march(at, t0, start.value, start.derivative, 1, length, work);
         if (found.outcome == March::Unknown) return false;
         if (found.outcome == March::None) return true;
         entry = found.t;
-        if (first_only || !outside_at_end) {
-            ++work.crossings;
-            visit(Crossing{*entry, true});
-            return true;
-        }
     }
-    const auto exit = march(at, t1, g1, end.derivative, -1, length, work);
+    const auto only_the_entry = [&] {
+        if (!entry) return true;  // inside at both ends: no crossing
+        ++work.crossings;
+        visit(Crossing{*entry, true});
+        return true;
+    };
+    if (entry && first_only) return only_the_entry();
+    const auto end = at(t1);
+    ++work.evaluations;
+    if (!(end.value >= 0)) return only_the_entry();
+    const auto exit = march(at, t1, end.value, end.derivative, -1, length, work);
     if (exit.outcome != March::Root) return false;          // a crossing is known to lie before t1
     if (entry && !(exit.t > *entry)) return false;          // a tangent contact: the general search decides
     work.crossings += entry ? 2 : 1;

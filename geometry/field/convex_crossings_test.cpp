@@ -24,11 +24,10 @@ struct Answer {
 template <class F>
 Answer crossings_of(const F& at, double t0, double t1, bool first_only = false) {
     Answer answer;
-    answer.settled = visit_convex_crossings(t0, t1, at(t0), at(t1), at, first_only, answer.work,
-                                            [&](const Crossing& c) {
-                                                answer.crossings.push_back(c);
-                                                return true;
-                                            });
+    answer.settled = visit_convex_crossings(t0, t1, at, first_only, answer.work, [&](const Crossing& c) {
+        answer.crossings.push_back(c);
+        return true;
+    });
     return answer;
 }
 
@@ -66,7 +65,19 @@ TEST(ConvexCrossings, MissesAreProvedWithoutCrossings) {
     expect_crossings(crossings_of(Parabola{7, 9}, 0, 5), {});       // roots beyond the end
     const Answer rising = crossings_of(Parabola{-3, -1}, 0, 5);     // rising from the start
     expect_crossings(rising, {});
-    EXPECT_EQ(rising.work.evaluations, 0u);  // the ends' samples settle it
+    EXPECT_EQ(rising.work.evaluations, 1u);  // the start's sample settles it; the end is not taken
+}
+
+TEST(ConvexCrossings, TheFirstCrossingFromOutsideDoesNotTakeTheEnd) {
+    int end_samples = 0;
+    const auto at = [&](double t) {
+        if (t == 5) ++end_samples;
+        return Parabola{1, 3}(t);
+    };
+    expect_crossings(crossings_of(at, 0, 5, true), {{1, true}});
+    EXPECT_EQ(end_samples, 0);
+    expect_crossings(crossings_of(at, 0, 5), {{1, true}, {3, false}});
+    EXPECT_EQ(end_samples, 1);
 }
 
 TEST(ConvexCrossings, KinkedFunctionsAreSolvedExactly) {

@@ -24,7 +24,8 @@ struct NormExponent {
     // r^p for r in [0, 1].
     double unit_power(double r) const {
         if (whole == 2) return r * r;  // without the call: round cross-sections are the rule
-        return whole > 0 ? whole_power(r) : std::pow(r, p);
+        if (whole > 0) return whole_power(r);
+        return r == 0 ? 0 : std::pow(r, p);  // on coordinate planes: pow's exact answer without the call
     }
     // s^(1/p) for s in [1, 2], within an ulp (the error against a long double pow is tested for every whole p).
     double root(double s) const {
@@ -44,7 +45,8 @@ struct NormExponent {
             case 1: return s;
             case 2: return std::sqrt(s);
             case 4: return std::sqrt(std::sqrt(s));
-            default: return std::pow(s, inverse);
+            // 1 + r^p rounds to 1 on coordinate planes and wherever r^p < 2⁻⁵³: pow's exact answer without the call.
+            default: return s == 1 ? 1 : std::pow(s, inverse);
         }
     }
 };

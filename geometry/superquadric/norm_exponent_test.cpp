@@ -57,6 +57,17 @@ TEST(SuperquadricNormExponent, RootsOfFractionalExponentsAreWithinAnUlp) {
 // Powers of shares by repeated squaring: a squaring doubles the relative error and adds a rounding, so r^p is within
 // p − 1 roundings (which the root of 1 + r^p divides by p again); roots of any argument (the edge of a
 // p-ball, 1 − w^p ∈ [0, 1]) in closed form or by pow of the rounded 1/p.
+// On coordinate planes a power is of 0 and a root of 1: pow's exact answers, which fractional exponents take
+// without the call.
+TEST(SuperquadricNormExponent, PowersOfZeroAndRootsOfOneAreExact) {
+    for (const double epsilon : {0.3, 0.7, 2.5, 3.5}) {
+        const NormExponent e = NormExponent::of_epsilon(epsilon);
+        EXPECT_EQ(e.unit_power(0), std::pow(0.0, e.p)) << epsilon;
+        EXPECT_EQ(e.root(1), std::pow(1.0, e.inverse)) << epsilon;
+        EXPECT_EQ(e.unit_power(0x1p-60), std::pow(0x1p-60, e.p)) << epsilon;
+    }
+}
+
 TEST(SuperquadricNormExponent, PowersAndRootsOfAnyArgumentAreWithinAFewUlps) {
     std::mt19937 random(8);
     std::uniform_real_distribution<double> unit(0, 1);

@@ -71,11 +71,13 @@ ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const Vec3d& dire
 // h = ‖(u, v)‖_p2 is convex along a piece for p2 ≥ 1 and concave for p2 ≤ 1; R(w) = (1 − w^p1)^(1/p1), the edge of
 // the p1-ball, is concave for p1 ≥ 1 and convex for p1 ≤ 1. With one exponent on each side of 2 both are convex or
 // both concave, and φ = h − R is their difference (negated for the concave pair).
-DifferenceOfConvexSample Superellipsoid::inside_difference(const Vec3d& p, const Vec3d& direction) const {
+Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Vec3d& p, const Vec3d& direction) const {
     constexpr double inf = std::numeric_limits<double>::infinity();
     const double p1 = p1_.p, p2 = p2_.p;
-    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, w = std::min(std::abs(p.z) / radii_.z, 1.0);
+    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, z = std::abs(p.z) / radii_.z;
+    const double w = std::min(z, 1.0);
     const PNorm h = p_norm_parts(u, v, p2_);
+    const double gauge = p_norm(h.norm, z, p1_);  // as gauge(p) takes it
     const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2);
     const double h_slope = dh_du * rate(p.x, direction.x, radii_.x) + dh_dv * rate(p.y, direction.y, radii_.y);
     const double w_power = p1_.unit_power(w), rest = 1 - w_power;
@@ -86,18 +88,21 @@ DifferenceOfConvexSample Superellipsoid::inside_difference(const Vec3d& p, const
                                      : -(w_power / w) * (edge / rest);
     const double edge_slope = dr_dw * rate(p.z, direction.z, radii_.z);
     const ConvexSample horizontal{h.norm, std::isfinite(h_slope) ? h_slope : NAN}, vertical{edge, edge_slope};
-    if (p2 >= 1) return {horizontal, vertical};
-    return {{-vertical.value, -vertical.slope}, {-horizontal.value, -horizontal.slope}};
+    if (p2 >= 1) return {gauge, {horizontal, vertical}};
+    return {gauge, {{-vertical.value, -vertical.slope}, {-horizontal.value, -horizontal.slope}}};
 }
 
 // The computed gauge is within a few ulps of the exact one: each operation rounds once, the powers and roots are
 // within an ulp or a few roundings, and a p-norm passes its arguments' relative errors on without amplifying them
 // (an error of r^p in the sum 1 + r^p is divided by p in the root). Widened by far more than that, the corners' values
 // bound the exact gauge over the box, and the computed one too (which need not be monotone in its last bits).
+constexpr double kGaugeRelativeError = 0x1p-46;
+
 Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {
-    constexpr double kRelativeError = 0x1p-46;
-    return {gauge(magnitudes.lower()) * (1 - kRelativeError), gauge(magnitudes.upper()) * (1 + kRelativeError)};
+    return {least_gauge(magnitudes.lower()), gauge(magnitudes.upper()) * (1 + kGaugeRelativeError)};
 }
+
+double Superellipsoid::least_gauge(const Vec3d& magnitudes) const { return gauge(magnitudes) * (1 - kGaugeRelativeError); }
 
 namespace {
 

@@ -39,11 +39,18 @@ public:
     bool is_concave_in_octants() const { return north_south_ >= 2 && east_west_ >= 2; }
     // With one exponent below 2 and the other above (neither convex nor concave in octants): φ = c − s with c and s
     // convex along the ray between the coordinate planes, where φ < 0 exactly inside (for points within the
-    // superellipsoid's box), at p with the slopes along `direction` (non-finite at cusps).
-    DifferenceOfConvexSample inside_difference(const Vec3d& p, const Vec3d& direction) const;
+    // superellipsoid's box), at p with the slopes along `direction` (non-finite at cusps); and the gauge at p, bit
+    // for bit gauge(p), which shares its horizontal norm.
+    struct GaugeAndDifference {
+        double gauge;
+        DifferenceOfConvexSample difference;
+    };
+    GaugeAndDifference gauge_and_difference(const Vec3d& p, const Vec3d& direction) const;
     // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative): the values
     // at the two extreme corners, widened outward by the gauge's rounding error.
     Interval gauge_range(const IntervalBox& magnitudes) const;
+    // gauge_range's lower end alone, for the box whose lower corner is `magnitudes`.
+    double least_gauge(const Vec3d& magnitudes) const;
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents
     // above 2 near the coordinate planes).
     IntervalBox gradient_range(const IntervalBox& box) const;

@@ -177,6 +177,19 @@ std::array<long double, 3> long_double_gradient(const Superellipsoid& s, const V
 // The gradient bound over a box holds every partial derivative inside the box (boxes that straddle coordinate
 // planes included), and over a box shrunk to a point it is the gradient there; for fractional exponents and for
 // the whole p = 2/ε whose powers and roots take other paths (NormExponent).
+TEST(SuperquadricSuperellipsoid, TheGaugeTakenWithTheDifferenceIsTheGaugeBitForBit) {
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const std::array<std::array<double, 2>, 4> exponents{{{0.3, 2.5}, {3.5, 0.05}, {1, 3.5}, {2.5, 0.3}}};
+    for (const auto& [north_south, east_west] : exponents) {
+        const Superellipsoid s{{0.7, 1.1, 0.9}, north_south, east_west};
+        for (int i = 0; i < 500; ++i) {
+            const Vec3d p{1.2 * unit(random), 1.2 * unit(random), i % 5 == 0 ? 0.0 : 1.2 * unit(random)};
+            EXPECT_EQ(s.gauge_and_difference(p, {unit(random), unit(random), unit(random)}).gauge, s.gauge(p));
+        }
+    }
+}
+
 TEST(SuperquadricSuperellipsoid, TheGradientRangeHoldsThePartialDerivativesAndIsExactAtAPoint) {
     std::mt19937 random(43);
     std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1), exponent(0.05, 4);

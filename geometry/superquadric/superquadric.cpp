@@ -18,12 +18,12 @@ double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
 }
 
-// The last few points of a search whose difference-of-convex parts were taken: a halved stretch shares its ends with
-// its parent and its sibling.
+// The last few points of a search whose gauge and difference-of-convex parts were taken: a halved stretch shares its
+// ends with its parent and its sibling, and the search asks for a point's value before its parts.
 class MixedSamples {
 public:
     template <class Take>
-    DifferenceOfConvexSample at(double t, const Take& take) {
+    const Superellipsoid::GaugeAndDifference& at(double t, const Take& take) {
         for (int k = 0; k < filled_; ++k)
             if (entries_[k].t == t) return entries_[k].sample;
         Entry& slot = entries_[next_];
@@ -37,7 +37,7 @@ private:
     static constexpr int kSize = 4;
     struct Entry {
         double t;
-        DifferenceOfConvexSample sample;
+        Superellipsoid::GaugeAndDifference sample;
     };
     Entry entries_[kSize];
     int filled_ = 0, next_ = 0;
@@ -102,7 +102,10 @@ bool Superquadric::certainly_outside(const Vec3d& point, double distance) const 
     const Vec3d& r = shape_.radii();
     const double reach = std::sqrt(3.0) * distance / (scale * std::min({r.x, r.y, r.z}));
     constexpr double kRounding = 1e-12;  // of the gauge and the placement, relative to the gauge's unit
-    return shape_.gauge(placement_.inverse_point(point)) - 1 > reach + kRounding;
+    const Vec3d local = placement_.inverse_point(point);
+    // The gauge is at least the largest of |x|/a1, |y|/a2, |z|/a3: beside the box that settles it without the gauge.
+    const double least = std::max({std::abs(local.x) / r.x, std::abs(local.y) / r.y, std::abs(local.z) / r.z});
+    return least - 1 > reach + kRounding || shape_.gauge(local) - 1 > reach + kRounding;
 }
 
 Vec3d Superquadric::normal(const Vec3d& point) const {
@@ -150,8 +153,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return;
     }
 
-    const auto value = [&](double t) { return ray.value(t); };
-    const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const bool convex = deformation_.empty() && shape_.is_convex();
     const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
     const bool mixed = deformation_.empty() && !convex && !concave;
@@ -159,12 +160,16 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     double piece_lo = t0, piece_hi = t1;
     bool cusp_lo = false, cusp_hi = false;
     MixedSamples samples;
+    const auto mixed_at = [&](double t) -> const Superellipsoid::GaugeAndDifference& {
+        return samples.at(t, [&] { return shape_.gauge_and_difference(o + d * t, d); });
+    };
+    // Undeformed, the field is the gauge less 1 (local_field): mixed shapes take it with their parts.
+    const auto value = [&](double t) { return mixed ? mixed_at(t).gauge - 1 : ray.value(t); };
+    const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const auto sample_at = [&](double t) {
-        return samples.at(t, [&] {
-            DifferenceOfConvexSample sample = shape_.inside_difference(o + d * t, d);
-            if ((t == piece_lo && cusp_lo) || (t == piece_hi && cusp_hi)) sample.convex.slope = sample.subtracted.slope = NAN;
-            return sample;
-        });
+        DifferenceOfConvexSample sample = mixed_at(t).difference;
+        if ((t == piece_lo && cusp_lo) || (t == piece_hi && cusp_hi)) sample.convex.slope = sample.subtracted.slope = NAN;
+        return sample;
     };
     // Mixed exponents: the chords and tangents of φ's convex parts (difference_of_convex.h) bound far tighter
     // than interval arithmetic; where they settle nothing, the stretch is halved. φ has g's sign but not
@@ -195,13 +200,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         });
         return;
     }
-    if (convex) {
-        // Both ends with their slopes: the march starts from them, and the general search from their values.
-        const ValueAndDerivative start = value_and_slope(t0), end = value_and_slope(t1);
-        work.search.evaluations += 2;
-        if (visit_convex_crossings(t0, t1, start, end, value_and_slope, first_only, work.search, visit)) return;
-    }
-    double g_start = value(t0);
+    if (convex && visit_convex_crossings(t0, t1, value_and_slope, first_only, work.search, visit)) return;
 
     // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and
     // the bound is exact.
@@ -215,7 +214,24 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         cuts[at] = t;
     }
     cuts[count++] = t1;
+    // A piece whose stretch lies where the gauge exceeds 1 throughout holds no crossing, and every value the search
+    // would take there is positive: it is passed over without its ends' values (a ray missing a star's arms, a
+    // shadow ray leaving the surface it starts at).
+    double g_start = 0;  // g at the piece's start, taken when a piece needs it
+    bool known_start = false;
+    const auto outside_throughout = [&](double a, double b) {
+        const Vec3d pa = o + d * a, pb = o + d * b;  // as value() takes the points: the stretch holds all of them
+        Vec3d least;
+        for (int k = 0; k < 3; ++k) least[k] = Interval{std::min(pa[k], pb[k]), std::max(pa[k], pb[k])}.magnitude().lo;
+        return shape_.least_gauge(least) > 1;
+    };
     for (int i = 0; i + 1 < count; ++i) {
+        if (outside_throughout(cuts[i], cuts[i + 1])) {
+            known_start = false;
+            continue;
+        }
+        if (!known_start) g_start = value(cuts[i]);
+        known_start = true;
         const double g_end = value(cuts[i + 1]);
         piece_lo = cuts[i], piece_hi = cuts[i + 1], cusp_lo = i > 0, cusp_hi = i + 2 < count;
         if (concave) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <utility>
 
 #include "geometry/superquadric/superquadric_test_support.h"
 
@@ -221,6 +222,22 @@ TEST(SuperquadricIntersection, RaysCostAFewNewtonSteps) {
         const double per_hit = double(work.search.evaluations - work.search.halvings) / double(work.search.crossings);
         std::printf("deformed: %.2f refinement evaluations per hit\n", per_hit);
         EXPECT_LT(per_hit, 6.0);
+    }
+}
+
+// A ray through the empty corner of a star's box (both exponents above 2) or of a mixed shape's is passed over
+// without a point evaluation: the gauge's least value over the stretch exceeds 1.
+TEST(SuperquadricIntersection, StretchesOutsideTheGaugesUnitBallAreNotSearched) {
+    for (const auto& [north_south, east_west] : {std::pair{3.5, 3.5}, std::pair{0.3, 3.5}, std::pair{3.5, 0.3}}) {
+        const Superquadric s = make_superquadric({1, 1, 1}, north_south, east_west);
+        SuperquadricWork work;
+        // Along the box's edge x = y = 0.95, outside the surface, through the plane z = 0.
+        EXPECT_FALSE(s.first_crossing({0.95, 0.95, -2}, {0, 0, 1}, 0, 10, work));
+        EXPECT_FALSE(s.blocks({0.95, 0.95, -2}, {0, 0, 1}, 0, 10, work));
+        EXPECT_EQ(work.search.evaluations, 0u);
+        // Through the middle it is searched, and hits.
+        EXPECT_TRUE(s.first_crossing({0.01, 0.02, -2}, {0, 0, 1}, 0, 10, work));
+        EXPECT_GT(work.search.evaluations, 0u);
     }
 }
 

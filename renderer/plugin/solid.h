@@ -39,6 +39,15 @@ struct InsideSpan {
     BoundaryPoint enter, exit;
 };
 
+// What Solid::leading_span could tell about the first inside span along a ray.
+struct LeadingSpan {
+    enum class Outcome { Unsure, None, Found };
+    Outcome outcome = Outcome::Unsure;
+    InsideSpan span;  // when Found
+
+    bool found() const { return outcome == Outcome::Found; }
+};
+
 class Solid {
 public:
     virtual ~Solid() = default;
@@ -62,6 +71,14 @@ public:
     // inside_spans over that range. Solids that can settle it with less work override it.
     virtual std::optional<BoundaryPoint> first_surface_point(const Vec3d& origin, const Vec3d& direction,
                                                              double t_near, double t_far, QueryScratch& scratch) const;
+    // The first span of inside_spans over [t_min, t_max] when the solid can tell it without listing the others (its
+    // enter bit for bit that span's, its exit no later than that span's: the ray is inside at least up to there), or
+    // that there is none. Unsure by default: the caller then asks inside_spans.
+    virtual LeadingSpan leading_span(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                     QueryScratch& scratch) const {
+        (void)origin, (void)direction, (void)t_min, (void)t_max, (void)scratch;
+        return {};
+    }
     // Whether the span ends on part `part` leave their normal to boundary_normal: a solid whose normals cost more
     // than its span ends (a CSG asks for many ends and shows one) computes them only for the end it is asked about.
     virtual bool defers_normals(std::uint32_t part) const {
