@@ -48,7 +48,7 @@ LeadingSpan CsgShape::leading_span(const Vec3d& origin, const Vec3d& direction, 
         if (front) others_begin = std::min(others_begin, front->enter.t);
         front = span;
     }
-    if (!front) return {LeadingSpan::Outcome::None};  // every operand the ray reaches was asked
+    if (!front) return {LeadingSpan::Outcome::None, {}};  // every operand the ray reaches was asked
     if (!front->enter.on_surface() || !clear_of_front(front->exit.t) || !clear_of_front(others_begin)) return {};
     return {LeadingSpan::Outcome::Found, *front};
 }
