@@ -11,23 +11,19 @@ namespace isotrace {
 // that point must not count as blocking it.
 inline constexpr float kShadowRayMargin = 1e-4f;
 
-template <class Vec, class Float>
 struct ShadowSegment {
-    Vec direction;  // unit
-    Float t_far;
+    Vec3f direction;  // unit
+    float t_far;
 };
 
 // The shadow ray from `origin` (`position` pushed off its surface, SurfaceHit::spawn_origin) to the point at the
 // finite `distance` along the unit `direction` from `position`. It aims at that point from `origin` itself: the
 // push shortens the way to a light's plane by push / cos, more than the margin where the ray meets that plane at a
 // grazing angle, so a ray that kept `direction` would reach the emitter's own surface (docs/decisions.md).
-// Written once for one ray (Vec3f, float) and for the path tracer's packets (their lanes): `length` is found by
-// argument-dependent lookup.
-template <class Vec, class Float>
-ShadowSegment<Vec, Float> shadow_segment(const Vec& position, const Vec& origin, const Vec& direction, Float distance) {
+inline ShadowSegment shadow_segment(const Vec3f& position, const Vec3f& origin, const Vec3f& direction, float distance) {
     // The point less the origin, without going through the point's coordinates (they would round to their ulp).
-    const Vec to_point = direction * distance - (origin - position);
-    const Float length_to_point = length(to_point);
+    const Vec3f to_point = direction * distance - (origin - position);
+    const float length_to_point = length(to_point);
     return {to_point * (1.0f / length_to_point), length_to_point * (1 - kShadowRayMargin)};
 }
 
@@ -36,7 +32,7 @@ ShadowSegment<Vec, Float> shadow_segment(const Vec& position, const Vec& origin,
 inline Ray shadow_ray(const SurfaceHit& hit, const Vec3f& direction, float distance) {
     const Vec3f origin = hit.spawn_origin(direction);
     if (std::isinf(distance)) return {origin, direction, 0, distance};
-    const ShadowSegment<Vec3f, float> segment = shadow_segment(hit.position, origin, direction, distance);
+    const ShadowSegment segment = shadow_segment(hit.position, origin, direction, distance);
     return {origin, segment.direction, 0, segment.t_far};
 }
 
