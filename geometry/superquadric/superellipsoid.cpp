@@ -98,11 +98,13 @@ Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Ve
 // bound the exact gauge over the box, and the computed one too (which need not be monotone in its last bits).
 constexpr double kGaugeRelativeError = 0x1p-46;
 
-Interval Superellipsoid::gauge_range(const IntervalBox& magnitudes) const {
-    return {least_gauge(magnitudes.lower()), gauge(magnitudes.upper()) * (1 + kGaugeRelativeError)};
+Interval Superellipsoid::gauge_range(const IntervalBox& box) const {
+    return {least_gauge(box), gauge(box.magnitude().upper()) * (1 + kGaugeRelativeError)};
 }
 
-double Superellipsoid::least_gauge(const Vec3d& magnitudes) const { return gauge(magnitudes) * (1 - kGaugeRelativeError); }
+double Superellipsoid::least_gauge(const IntervalBox& box) const {
+    return gauge(box.magnitude().lower()) * (1 - kGaugeRelativeError);
+}
 
 namespace {
 
@@ -219,7 +221,7 @@ std::vector<IntervalBox> Superellipsoid::surface_cells(int per_axis) const {
         for (int j = 0; j < per_axis; ++j)
             for (int l = 0; l < per_axis; ++l) {
                 const IntervalBox cell{{edge(0, i), edge(0, i + 1)}, {edge(1, j), edge(1, j + 1)}, {edge(2, l), edge(2, l + 1)}};
-                if (gauge_range({cell.x.magnitude(), cell.y.magnitude(), cell.z.magnitude()}).contains(1)) cells.push_back(cell);
+                if (gauge_range(cell).contains(1)) cells.push_back(cell);
             }
     return cells;
 }

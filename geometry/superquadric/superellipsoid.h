@@ -46,11 +46,11 @@ public:
         DifferenceOfConvexSample difference;
     };
     GaugeAndDifference gauge_and_difference(const Vec3d& p, const Vec3d& direction) const;
-    // The range of the gauge over the points whose |x|, |y|, |z| lie in `magnitudes` (all non-negative): the values
-    // at the two extreme corners, widened outward by the gauge's rounding error.
-    Interval gauge_range(const IntervalBox& magnitudes) const;
-    // gauge_range's lower end alone, for the box whose lower corner is `magnitudes`.
-    double least_gauge(const Vec3d& magnitudes) const;
+    // The range of the gauge over the (signed) points of `box`: the values at the two extreme corners of its box of
+    // magnitudes, widened outward by the gauge's rounding error.
+    Interval gauge_range(const IntervalBox& box) const;
+    // gauge_range's lower end alone.
+    double least_gauge(const IntervalBox& box) const;
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents
     // above 2 near the coordinate planes).
     IntervalBox gradient_range(const IntervalBox& box) const;

@@ -74,7 +74,7 @@ Interval Superquadric::local_field_range(const IntervalBox& local) const {
 
 Interval Superquadric::field_range(const DeformationChain::InverseBoxes& walked) const {
     const IntervalBox& undeformed = walked.stage[0];
-    const Interval gauge = shape_.gauge_range({undeformed.x.magnitude(), undeformed.y.magnitude(), undeformed.z.magnitude()});
+    const Interval gauge = shape_.gauge_range(undeformed);
     return Interval{gauge.lo - 1, walked.clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
 }
 
@@ -220,10 +220,9 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     double g_start = 0;  // g at the piece's start, taken when a piece needs it
     bool known_start = false;
     const auto outside_throughout = [&](double a, double b) {
-        const Vec3d pa = o + d * a, pb = o + d * b;  // as value() takes the points: the stretch holds all of them
-        Vec3d least;
-        for (int k = 0; k < 3; ++k) least[k] = Interval{std::min(pa[k], pb[k]), std::max(pa[k], pb[k])}.magnitude().lo;
-        return shape_.least_gauge(least) > 1;
+        IntervalBox stretch = IntervalBox::point(o + d * a);  // as value() takes the points: it holds all of them
+        stretch.extend(o + d * b);
+        return shape_.least_gauge(stretch) > 1;
     };
     for (int i = 0; i + 1 < count; ++i) {
         if (outside_throughout(cuts[i], cuts[i + 1])) {

@@ -63,8 +63,7 @@ private:
         const std::optional<IntervalBox> undeformed = s.deformation().inverse_box(clamped, clipped);
         Interval field{1, 1};  // outside a stage box the field is 1
         if (undeformed) {
-            const Interval gauge = s.shape().gauge_range(
-                {undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
+            const Interval gauge = s.shape().gauge_range(*undeformed);
             field = {gauge.lo - 1, clipped ? std::max(gauge.hi - 1, 1.0) : gauge.hi - 1};
         }
         return field + Interval{std::sqrt(near2), std::sqrt(far2)};
@@ -79,8 +78,7 @@ private:
         bool clipped = false;
         const std::optional<IntervalBox> undeformed = s.deformation().inverse_box(local, clipped);
         if (!undeformed) return false;  // wholly outside the object
-        const Interval gauge = s.shape().gauge_range(
-            {undeformed->x.magnitude(), undeformed->y.magnitude(), undeformed->z.magnitude()});
+        const Interval gauge = s.shape().gauge_range(*undeformed);
         // A clipped part lies outside the object (gauge above 1 there), as in Superquadric's crossing search.
         return gauge.lo <= 1 && (clipped || gauge.hi >= 1);
     }
