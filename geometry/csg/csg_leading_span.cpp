@@ -1,8 +1,9 @@
-// A union's first span without listing every operand's spans. The operands are asked in the order the ray enters
-// their bounds; once the front span found so far begins from outside, is longer than the coincidence tolerance, and
-// every other operand (asked, or not reached yet) begins beyond that tolerance after its entry, the sweep of
-// span_combination.cpp would meet that entry alone and open the union's first span with it, bit for bit. That span
-// lasts at least as long as the operand's own, whose exit is the lower bound leading_span promises.
+// A union's first span without listing every operand's spans. The operands are asked (for their own leading span
+// where they can tell one, else for their spans) in the order the ray enters their bounds; once the front span found
+// so far begins from outside, is longer than the coincidence tolerance, and every other operand (asked, or not
+// reached yet) begins beyond that tolerance after its entry, the sweep of span_combination.cpp would meet that entry
+// alone and open the union's first span with it, bit for bit. That span lasts at least as long as the operand's own,
+// whose exit is the lower bound leading_span promises.
 #include <algorithm>
 #include <limits>
 
@@ -34,11 +35,22 @@ LeadingSpan CsgShape::leading_span(const Vec3d& origin, const Vec3d& direction, 
     for (const auto& [t_reached, index] : buffers.reached) {
         if (front && clear_of_front(t_reached)) break;  // this operand and the later ones begin beyond the front's entry
         const Operand& operand = operands_[index];
-        operand_spans(operand, origin, direction, t_min, t_max, buffers.operand_spans, scratch);
-        asked.spans[index] = buffers.operand_spans;
-        asked.kept[index] = true;
-        if (buffers.operand_spans.empty()) continue;
-        InsideSpan span = buffers.operand_spans.front();
+        // The operand's own leading span where it can tell one (its exit may fall short of the span's: only the
+        // entry and a lower bound of the exit are used here), else its spans, kept for a listing that follows.
+        const LeadingSpan lead = operand_leading_span(operand, origin, direction, t_min, t_max, scratch);
+        if (lead.outcome == LeadingSpan::Outcome::None) {
+            asked.spans[index].clear();
+            asked.kept[index] = true;
+            continue;
+        }
+        InsideSpan span = lead.span;
+        if (!lead.found()) {
+            operand_spans(operand, origin, direction, t_min, t_max, buffers.operand_spans, scratch);
+            asked.spans[index] = buffers.operand_spans;
+            asked.kept[index] = true;
+            if (buffers.operand_spans.empty()) continue;
+            span = buffers.operand_spans.front();
+        }
         span.enter.part += operand.first_part;
         span.exit.part += operand.first_part;
         if (front && front->enter.t <= span.enter.t) {

@@ -250,14 +250,20 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     }
 }
 
-std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
-                                                   double t_max, SuperquadricWork& work) const {
-    std::optional<double> first;
+std::optional<Crossing> Superquadric::first_of_crossings(const Vec3d& origin, const Vec3d& direction, double t_min,
+                                                         double t_max, SuperquadricWork& work) const {
+    std::optional<Crossing> first;
     search<CrossingPrecision::Refined>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
-        first = c.t;
+        first = c;
         return false;
     });
     return first;
+}
+
+std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min,
+                                                   double t_max, SuperquadricWork& work) const {
+    const std::optional<Crossing> first = first_of_crossings(origin, direction, t_min, t_max, work);
+    return first ? std::optional<double>(first->t) : std::nullopt;
 }
 
 bool Superquadric::blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max,

@@ -74,6 +74,9 @@ public:
     // The first crossing of origin + t·direction with the surface for t in [t_min, t_max].
     std::optional<double> first_crossing(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                                          SuperquadricWork& work) const;
+    // The same crossing, with whether the ray enters there.
+    std::optional<Crossing> first_of_crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                                               SuperquadricWork& work) const;
     // Whether a crossing lies in (t_min, t_max) with float(t) < float(t_max) — first_crossing's answer — settled by
     // the first bracket that lies inside the range, without refining it (an occlusion query).
     bool blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max, SuperquadricWork& work) const;

@@ -34,6 +34,10 @@ public:
     bool defers_normals(std::uint32_t) const override { return true; }
     Vec3d boundary_normal(const Vec3d& origin, const Vec3d& direction, const BoundaryPoint& end) const override;
     bool certainly_outside(const Vec3d& point, double distance) const override;
+    // One undeformed convex superquadric: its entry, and one point past it found inside (convexity then keeps the
+    // ray inside between them), without marching to its exit.
+    LeadingSpan leading_span(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
+                             QueryScratch& scratch) const override;
 
     // The field of the union, positive inside: max over the set of 1 − G(D⁻¹(P)), G the superellipsoid's gauge
     // (superellipsoid.h: homogeneous of degree one, so 1 − G is about the depth below the surface in units of the

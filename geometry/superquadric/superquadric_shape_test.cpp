@@ -323,6 +323,55 @@ TEST(SuperquadricScene, BadParametersAreInputErrorsNamingTheField) {
     expect_error(R"({"type": "superquadric", "center": [2e18, 0, 0]})", {"1e18"});
 }
 
+// An undeformed convex superquadric tells its first span from the entry and one point past it: the entry bit for bit
+// the listing's first span's, the exit no later; a ray that starts inside, and shapes that are deformed or not convex,
+// are left to the listing.
+TEST(SuperquadricSpans, TheLeadingSpanOpensWithTheFirstSpanAndEndsNoLater) {
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> exponent(0.05, 2), size(0.3, 1.5), unit(-1, 1), near(0, 3);
+    int found = 0, none = 0;
+    for (int k = 0; k < 40; ++k) {
+        const Vec3d radii(size(random), size(random), size(random));
+        const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
+                                    Transform::rotate(normalize(Vec3d(unit(random), unit(random), 1)), 90 * unit(random));
+        const SuperquadricShape shape({make_superquadric(radii, exponent(random), exponent(random), {}, placement)});
+        for (int i = 0; i < 400; ++i) {
+            const superquadric_test::RandomRay local = superquadric_test::random_ray(random, radii, i % 7 == 0);
+            const Vec3d origin = placement.point(local.origin), direction = placement.vector(local.direction);
+            const double t_min = i % 3 == 0 ? near(random) : 0;
+            const auto spans = spans_of(shape, origin, direction, t_min, 1e30);
+            QueryScratch scratch;
+            const LeadingSpan lead = shape.leading_span(origin, direction, t_min, 1e30, scratch);
+            const std::string what = "shape " + std::to_string(k) + " ray " + std::to_string(i);
+            if (lead.outcome == LeadingSpan::Outcome::None) {
+                EXPECT_TRUE(spans.empty()) << what;
+                ++none;
+            }
+            if (!lead.found()) continue;
+            ++found;
+            ASSERT_FALSE(spans.empty()) << what;
+            EXPECT_EQ(lead.span.enter.t, spans.front().enter.t) << what;
+            EXPECT_EQ(lead.span.enter.primitive, spans.front().enter.primitive) << what;
+            EXPECT_TRUE(lead.span.enter.on_surface()) << what;
+            EXPECT_GT(lead.span.exit.t, lead.span.enter.t) << what;
+            EXPECT_LE(lead.span.exit.t, spans.front().exit.t) << what;
+        }
+    }
+    EXPECT_GT(found, 6000);
+    EXPECT_GT(none, 1000);
+
+    QueryScratch scratch;
+    const Vec3d from(-3, 0.1, 0.05), along(1, 0, 0);
+    const auto lead_of = [&](const Superquadric& s, const Vec3d& origin) {
+        return SuperquadricShape({s}).leading_span(origin, along, 0, 1e30, scratch).outcome;
+    };
+    const Superquadric convex = make_superquadric({1, 1, 1}, 0.5, 0.5);
+    EXPECT_EQ(lead_of(convex, from), LeadingSpan::Outcome::Found);
+    EXPECT_EQ(lead_of(convex, {0, 0, 0}), LeadingSpan::Outcome::Unsure);
+    EXPECT_EQ(lead_of(make_superquadric({1, 1, 1}, 0.5, 0.5, {Twist(1, 1)}), from), LeadingSpan::Outcome::Unsure);
+    EXPECT_EQ(lead_of(make_superquadric({1, 1, 1}, 2.5, 1), from), LeadingSpan::Outcome::Unsure);
+}
+
 // Span ends carry no normal; boundary_normal gives the superquadric's at the end, bit for bit, and a CSG carries it
 // through a placement the leaf kept (not a similarity) and flips it where the leaf is subtracted.
 TEST(SuperquadricSpans, NormalsAreComputedForTheEndAskedAbout) {
