@@ -42,7 +42,8 @@ Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double ea
       north_south_(north_south),
       east_west_(east_west),
       p1_(NormExponent::of_epsilon(north_south)),
-      p2_(NormExponent::of_epsilon(east_west)) {}
+      p2_(NormExponent::of_epsilon(east_west)),
+      log_radii_(std::log(radii.x), std::log(radii.y), std::log(radii.z)) {}
 
 double Superellipsoid::gauge(const Vec3d& p) const {
     const double horizontal = p_norm(std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, p2_);
@@ -184,13 +185,15 @@ Vec3d Superellipsoid::normal(const Vec3d& p) const {
     const double u = std::max(scaled.x, floor), v = std::max(scaled.y, floor), w = std::max(scaled.z, floor);
     const double h = p_norm(u, v, p2_), g = p_norm(h, w, p1_);
     const double horizontal = (p1 - 1) * std::log(h / g);
-    const double log_x = horizontal + (p2 - 1) * std::log(u / h) - std::log(radii_.x);
-    const double log_y = horizontal + (p2 - 1) * std::log(v / h) - std::log(radii_.y);
-    const double log_z = (p1 - 1) * std::log(w / g) - std::log(radii_.z);
+    const double log_x = horizontal + (p2 - 1) * std::log(u / h) - log_radii_.x;
+    const double log_y = horizontal + (p2 - 1) * std::log(v / h) - log_radii_.y;
+    const double log_z = (p1 - 1) * std::log(w / g) - log_radii_.z;
     const double largest = std::max({log_x, log_y, log_z});
-    const auto sign = [](double c) { return c < 0 ? -1.0 : 1.0; };
-    return normalize(Vec3d(sign(p.x) * std::exp(log_x - largest), sign(p.y) * std::exp(log_y - largest),
-                           sign(p.z) * std::exp(log_z - largest)));
+    // exp(0) is exactly 1: the largest component needs no call.
+    const auto component = [&](double c, double log_c) {
+        return (c < 0 ? -1.0 : 1.0) * (log_c == largest ? 1.0 : std::exp(log_c - largest));
+    };
+    return normalize(Vec3d(component(p.x, log_x), component(p.y, log_y), component(p.z, log_z)));
 }
 
 int Superellipsoid::polynomial_degree() const {

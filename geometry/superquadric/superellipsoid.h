@@ -80,6 +80,7 @@ private:
     Vec3d radii_;
     double north_south_, east_west_;
     NormExponent p1_, p2_;  // of the outer norm (2/ε1) and the inner, horizontal one (2/ε2)
+    Vec3d log_radii_;       // the normal's logarithms of the radii, taken once
 };
 
 }  // namespace isotrace
