@@ -279,6 +279,14 @@ bool Superquadric::blocks(const Vec3d& origin, const Vec3d& direction, double t_
     return t && *t > t_min && float(*t) < t_max;
 }
 
+bool Superquadric::inside_after_entry(const Vec3d& origin, const Vec3d& direction, double t, double past) const {
+    // How far below zero g must be at past: far beyond its rounding, so that the surface really lies beyond.
+    constexpr double kDepth = 1e-12;
+    const SuperquadricAlongRay ray(*this, origin, direction);
+    if (!(ray.value(past) < -kDepth)) return false;
+    return (deformation_.empty() && shape_.is_convex()) || ray.slope_bound(t, past).hi < 0;
+}
+
 void Superquadric::crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                              std::vector<Crossing>& out, SuperquadricWork& work) const {
     search<CrossingPrecision::Refined>(origin, direction, t_min, t_max, false, work, [&](const Crossing& c) {

@@ -80,6 +80,9 @@ public:
     // Whether a crossing lies in (t_min, t_max) with float(t) < float(t_max) — first_crossing's answer — settled by
     // the first bracket that lies inside the range, without refining it (an occlusion query).
     bool blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max, SuperquadricWork& work) const;
+    // Whether the ray lies inside throughout (t, past] after entering at t: g deep below zero at past, and between
+    // them convexity (undeformed exponents ≤ 2) or a bound of g′ below zero.
+    bool inside_after_entry(const Vec3d& origin, const Vec3d& direction, double t, double past) const;
     // All crossings in [t_min, t_max], in increasing t, appended to `out`.
     void crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                    std::vector<Crossing>& out, SuperquadricWork& work) const;

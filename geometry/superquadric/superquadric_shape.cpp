@@ -177,22 +177,19 @@ void SuperquadricShape::inside_spans(const Vec3d& origin, const Vec3d& direction
 
 LeadingSpan SuperquadricShape::leading_span(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                                             QueryScratch&) const {
-    // How far past the entry the point is taken, relative to the entry's t: a hundred times the relative tolerance
-    // within which CSG takes surfaces to coincide, more than any combination asks of a leading span's length.
+    // How far past the entry the span is shown to reach, relative to the entry's t: a hundred times the relative
+    // tolerance within which CSG takes surfaces to coincide, more than any combination asks of a leading span.
     constexpr double kReach = 1e-7;
-    // How far inside the point must be, in the gauge's units: far beyond the gauge's rounding, so that the surface
-    // really lies beyond it and the listing's exit too.
-    constexpr double kDepth = 1e-12;
     if (superquadrics_.size() != 1 || !(t_min < t_max)) return {};
     const Superquadric& s = superquadrics_[0];
-    if (!s.deformation().empty() || !s.shape().is_convex()) return {};
     if (s.contains(origin + direction * t_min)) return {};  // a span cut at t_min: the listing's
     SuperquadricWork work;
     const std::optional<Crossing> first = s.first_of_crossings(origin, direction, t_min, t_max, work);
     record_work(work);
     if (!first) return {LeadingSpan::Outcome::None, {}};
     const double past = first->t + kReach * std::abs(first->t);
-    if (!first->entering || !(past > first->t && past < t_max) || !(s.field(origin + direction * past) < -kDepth))
+    if (!first->entering || !(past > first->t && past < t_max) ||
+        !s.inside_after_entry(origin, direction, first->t, past))
         return {};
     const BoundaryPoint enter{.t = first->t, .primitive = 0}, reached{.t = past, .primitive = BoundaryPoint::kCut};
     return {LeadingSpan::Outcome::Found, {enter, reached}};

@@ -34,8 +34,8 @@ public:
     bool defers_normals(std::uint32_t) const override { return true; }
     Vec3d boundary_normal(const Vec3d& origin, const Vec3d& direction, const BoundaryPoint& end) const override;
     bool certainly_outside(const Vec3d& point, double distance) const override;
-    // One undeformed convex superquadric: its entry, and one point past it found inside (convexity then keeps the
-    // ray inside between them), without marching to its exit.
+    // One superquadric: its first crossing when the ray enters there, and a point past it that the ray is shown to
+    // reach inside (Superquadric::inside_after_entry), without searching on to its exit.
     LeadingSpan leading_span(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                              QueryScratch& scratch) const override;
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -323,19 +324,25 @@ TEST(SuperquadricScene, BadParametersAreInputErrorsNamingTheField) {
     expect_error(R"({"type": "superquadric", "center": [2e18, 0, 0]})", {"1e18"});
 }
 
-// An undeformed convex superquadric tells its first span from the entry and one point past it: the entry bit for bit
-// the listing's first span's, the exit no later; a ray that starts inside, and shapes that are deformed or not convex,
-// are left to the listing.
+// A superquadric tells its first span from its entry and a point past it that the ray reaches inside: the entry bit
+// for bit the listing's first span's, the exit no later; undeformed convex ones, pinched ones and deformed ones alike.
+// A ray that starts inside is left to the listing.
 TEST(SuperquadricSpans, TheLeadingSpanOpensWithTheFirstSpanAndEndsNoLater) {
     std::mt19937 random(31);
-    std::uniform_real_distribution<double> exponent(0.05, 2), size(0.3, 1.5), unit(-1, 1), near(0, 3);
-    int found = 0, none = 0;
-    for (int k = 0; k < 40; ++k) {
+    std::uniform_real_distribution<double> convex(0.05, 2), any(0.05, 4), size(0.3, 1.5), unit(-1, 1), near(0, 3);
+    std::array<int, 3> found{}, asked{};
+    int none = 0;
+    for (int k = 0; k < 60; ++k) {
+        const int kind = k % 3;  // undeformed convex, undeformed of any exponents, deformed
         const Vec3d radii(size(random), size(random), size(random));
         const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
                                     Transform::rotate(normalize(Vec3d(unit(random), unit(random), 1)), 90 * unit(random));
-        const SuperquadricShape shape({make_superquadric(radii, exponent(random), exponent(random), {}, placement)});
-        for (int i = 0; i < 400; ++i) {
+        std::uniform_real_distribution<double>& exponent = kind == 0 ? convex : any;
+        const double north_south = exponent(random), east_west = exponent(random);
+        const SuperquadricShape shape({make_superquadric(
+            radii, north_south, east_west, kind == 2 ? random_deformations(random, radii) : std::vector<Deformation>{},
+            placement)});
+        for (int i = 0; i < 300; ++i) {
             const superquadric_test::RandomRay local = superquadric_test::random_ray(random, radii, i % 7 == 0);
             const Vec3d origin = placement.point(local.origin), direction = placement.vector(local.direction);
             const double t_min = i % 3 == 0 ? near(random) : 0;
@@ -347,8 +354,9 @@ TEST(SuperquadricSpans, TheLeadingSpanOpensWithTheFirstSpanAndEndsNoLater) {
                 EXPECT_TRUE(spans.empty()) << what;
                 ++none;
             }
+            if (!spans.empty() && spans.front().enter.on_surface()) ++asked[std::size_t(kind)];
             if (!lead.found()) continue;
-            ++found;
+            ++found[std::size_t(kind)];
             ASSERT_FALSE(spans.empty()) << what;
             EXPECT_EQ(lead.span.enter.t, spans.front().enter.t) << what;
             EXPECT_EQ(lead.span.enter.primitive, spans.front().enter.primitive) << what;
@@ -357,19 +365,13 @@ TEST(SuperquadricSpans, TheLeadingSpanOpensWithTheFirstSpanAndEndsNoLater) {
             EXPECT_LE(lead.span.exit.t, spans.front().exit.t) << what;
         }
     }
-    EXPECT_GT(found, 6000);
+    // Nearly every first span entered from outside is told.
+    for (std::size_t kind = 0; kind < 3; ++kind) EXPECT_GT(found[kind], asked[kind] * 9 / 10) << kind;
     EXPECT_GT(none, 1000);
 
     QueryScratch scratch;
-    const Vec3d from(-3, 0.1, 0.05), along(1, 0, 0);
-    const auto lead_of = [&](const Superquadric& s, const Vec3d& origin) {
-        return SuperquadricShape({s}).leading_span(origin, along, 0, 1e30, scratch).outcome;
-    };
-    const Superquadric convex = make_superquadric({1, 1, 1}, 0.5, 0.5);
-    EXPECT_EQ(lead_of(convex, from), LeadingSpan::Outcome::Found);
-    EXPECT_EQ(lead_of(convex, {0, 0, 0}), LeadingSpan::Outcome::Unsure);
-    EXPECT_EQ(lead_of(make_superquadric({1, 1, 1}, 0.5, 0.5, {Twist(1, 1)}), from), LeadingSpan::Outcome::Unsure);
-    EXPECT_EQ(lead_of(make_superquadric({1, 1, 1}, 2.5, 1), from), LeadingSpan::Outcome::Unsure);
+    const SuperquadricShape inside({make_superquadric({1, 1, 1}, 0.5, 0.5, {Twist(1, 1)})});
+    EXPECT_EQ(inside.leading_span({0, 0, 0}, {1, 0, 0}, 0, 1e30, scratch).outcome, LeadingSpan::Outcome::Unsure);
 }
 
 // Span ends carry no normal; boundary_normal gives the superquadric's at the end, bit for bit, and a CSG carries it
