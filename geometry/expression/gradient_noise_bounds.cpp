@@ -10,9 +10,7 @@
 namespace isotrace {
 namespace {
 
-// gradient_noise divides its unscaled sum by this (gradient_noise.cpp's kUnscaledExtreme; the test
-// BoundsHoldTheTexturesValues fails if the two part).
-constexpr double kUnscaledExtreme = static_cast<double>(1.03636f);
+constexpr double kUnscaledExtreme = kGradientNoiseUnscaledExtreme;  // gradient_noise divides its sum by it
 constexpr double kCoordinateLimit = 0x1p22;
 
 // The fade 6t⁵ − 15t⁴ + 10t³ is increasing on [0, 1]: its range is that of its ends.
@@ -59,13 +57,9 @@ CellPart cell_part(std::uint32_t root, const std::int32_t (&cell)[3], const Inte
         part.offsets[k] = {std::max(box[k].lo - cell[k], 0.0), std::min(box[k].hi - cell[k], 1.0)};
         part.fades[k] = fade_range(part.offsets[k]);
     }
-    for (int corner = 0; corner < 8; ++corner) {
-        const std::uint32_t hash = lattice_hash(lattice_hash(lattice_hash(root, cell[0] + (corner & 1)), cell[1] + ((corner >> 1) & 1)),
-                                                cell[2] + ((corner >> 2) & 1));
-        // The texture's own choice of gradient, read off its dot product with the axes.
-        part.gradients[corner] = {{lattice_gradient_dot(hash, 1, 0, 0), lattice_gradient_dot(hash, 0, 1, 0),
-                                   lattice_gradient_dot(hash, 0, 0, 1)}};
-    }
+    const CellGradients gradients = cell_gradients(root, cell);  // the texture's own
+    for (int corner = 0; corner < 8; ++corner)
+        for (int k = 0; k < 3; ++k) part.gradients[corner].g[k] = gradients.g[corner][k];
     return part;
 }
 

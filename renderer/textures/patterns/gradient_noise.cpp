@@ -5,10 +5,6 @@
 namespace isotrace {
 namespace {
 
-// The largest |value| the unscaled sum reaches (every corner's gradient chosen to point at the point, maximised
-// over the cell: noise_basis_test checks that the scaled field reaches neither beyond ±1 nor far short of it).
-constexpr float kUnscaledExtreme = 1.03636f;  // 1.0363539, rounded up
-
 // Perlin's quintic fade 6t^5 − 15t^4 + 10t^3: zero first and second derivatives at 0 and 1.
 float fade(float t) {
     return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
@@ -47,17 +43,16 @@ float gradient_noise(const Vec3f& p, std::uint32_t seed) {
                               lerp(u, corner(h01, 0, x, y - 1), corner(h11, 0, x - 1, y - 1)));
     const float far_z = lerp(v, lerp(u, corner(h00, 1, x, y), corner(h10, 1, x - 1, y)),
                              lerp(u, corner(h01, 1, x, y - 1), corner(h11, 1, x - 1, y - 1)));
-    return lerp(w, near_z, far_z) / kUnscaledExtreme;
+    return lerp(w, near_z, far_z) / kGradientNoiseUnscaledExtreme;
 }
 
 Vec3f gradient_noise_gradient(const Vec3f& p, std::uint32_t seed) {
     const LatticeCoordinate c[3] = {lattice_coordinate(p.x), lattice_coordinate(p.y), lattice_coordinate(p.z)};
-    const std::uint32_t root = lattice_seed(seed);
-    float g[8][3], dots[8];
+    const CellGradients gradients = cell_gradients(lattice_seed(seed), {c[0].cell, c[1].cell, c[2].cell});
+    const auto& g = gradients.g;
+    float dots[8];
     for (int corner = 0; corner < 8; ++corner) {
         const int a = corner & 1, b = (corner >> 1) & 1, d = corner >> 2;
-        const std::uint32_t hash = lattice_hash(lattice_hash(lattice_hash(root, c[0].cell + a), c[1].cell + b), c[2].cell + d);
-        for (int k = 0; k < 3; ++k) g[corner][k] = lattice_gradient_dot(hash, k == 0, k == 1, k == 2);
         dots[corner] = g[corner][0] * (c[0].offset - a) + g[corner][1] * (c[1].offset - b) + g[corner][2] * (c[2].offset - d);
     }
     const float fades[3] = {fade(c[0].offset), fade(c[1].offset), fade(c[2].offset)};
@@ -71,9 +66,21 @@ Vec3f gradient_noise_gradient(const Vec3f& p, std::uint32_t seed) {
         }
         float flat[3] = {fades[0], fades[1], fades[2]};
         flat[k] = 0;  // the differences do not depend on the corner's k bit: blend the k = 0 ones
-        gradient[k] = (fade_slope(c[k].offset) * trilinear(flat, across) + trilinear(fades, partial)) / kUnscaledExtreme;
+        gradient[k] = (fade_slope(c[k].offset) * trilinear(flat, across) + trilinear(fades, partial)) / kGradientNoiseUnscaledExtreme;
     }
     return gradient;
+}
+
+CellGradients cell_gradients(std::uint32_t root, const std::int32_t (&cell)[3]) {
+    CellGradients gradients;
+    for (int corner = 0; corner < 8; ++corner) {
+        const std::uint32_t hash =
+            lattice_hash(lattice_hash(lattice_hash(root, cell[0] + (corner & 1)), cell[1] + ((corner >> 1) & 1)),
+                         cell[2] + (corner >> 2));
+        // The corner's gradient read off its dot product with the axes.
+        for (int k = 0; k < 3; ++k) gradients.g[corner][k] = lattice_gradient_dot(hash, k == 0, k == 1, k == 2);
+    }
+    return gradients;
 }
 
 }  // namespace isotrace
