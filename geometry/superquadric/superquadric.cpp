@@ -195,6 +195,13 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (!deformation_.empty()) {
         const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
         shell_.visit_runs(o, d, t0, t1, range, [&](double a, double b) {
+            // A run whose bound excludes zero holds no crossing (the search's first question, which the bound kept
+            // with the walk answers again): settled without its end values.
+            const Interval run = ray.bound(a, b);
+            if (run.lo >= 0 || run.hi < 0) {
+                ++work.search.interval_bounds;
+                return true;
+            }
             return search_crossings<precision>(a, b, value(a), value(b), resolution, false, value, bound, slope,
                                                work.search, visit, value_and_slope);
         });
