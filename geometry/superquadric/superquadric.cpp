@@ -270,7 +270,7 @@ std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Ve
 bool Superquadric::blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max,
                           SuperquadricWork& work) const {
     bool blocked = false, undecided = false;
-    search<CrossingPrecision::Bracketed>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
+    search<CrossingPrecision::SignChange>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
         undecided = !c.settles_occlusion(t_min, t_max);
         blocked = !undecided;
         return false;
