@@ -270,11 +270,15 @@ std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Ve
 bool Superquadric::blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max,
                           SuperquadricWork& work) const {
     bool blocked = false, undecided = false;
-    search<CrossingPrecision::SignChange>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
+    const auto settle = [&](const Crossing& c) {
         undecided = !c.settles_occlusion(t_min, t_max);
         blocked = !undecided;
         return false;
-    });
+    };
+    search<CrossingPrecision::SignChange>(origin, direction, t_min, t_max, true, work, settle);
+    // A stretch from t_min itself (a ray that meets the object it leaves again) settles nothing as it is: its
+    // crossing is isolated first, and refined only if that does not settle it either.
+    if (undecided) search<CrossingPrecision::Bracketed>(origin, direction, t_min, t_max, true, work, settle);
     if (!undecided) return blocked;
     const std::optional<double> t = first_crossing(origin, direction, t_min, t_max, work);
     return t && *t > t_min && float(*t) < t_max;
