@@ -35,9 +35,11 @@ struct Crossing {
     bool settles_occlusion(double t_near, float t_far) const { return lo > t_near && float(hi) < t_far; }
 };
 
-// Whether the search locates each crossing to a few ulps or only reports the bracket that holds it (enough for a
-// query that asks whether there is a crossing in a range, such as an occlusion test).
-enum class CrossingPrecision { Refined, Bracketed };
+// Whether the search locates each crossing to a few ulps, only reports the bracket that holds it, or reports the
+// first sub-segment whose ends differ in sign as it is (`SignChange`: the sub-segments before it hold no crossing, so
+// it holds the first one, with an even number of others perhaps; enough for a query that asks whether there is a
+// crossing in a range, such as an occlusion test, and no bound of g′ is taken to isolate it).
+enum class CrossingPrecision { Refined, Bracketed, SignChange };
 
 struct CrossingSearchWork {
     std::uint64_t interval_bounds = 0;
@@ -119,7 +121,8 @@ struct RefinementTolerance {
 struct NoPointSlope {};
 
 // Visits the crossings of g in [t0, t1] in increasing t; g0 = g(t0), g1 = g(t1). With CrossingPrecision::Bracketed
-// every crossing is reported with the bracket that holds exactly it (or a pair closer than the resolution).
+// every crossing is reported with the bracket that holds exactly it (or a pair closer than the resolution); with
+// SignChange, with the first sub-segment found to hold it.
 // `bound(a, b)` returns an Interval containing g over [a, b], `slope(a, b)` one containing g′ wherever g is
 // differentiable on [a, b] (g continuous there, differentiable but at finitely many points; an unbounded interval
 // when nothing is known); `visit(Crossing)` returns false to stop. Returns false when stopped. With
@@ -153,7 +156,8 @@ bool search_crossings(double t0, double t1, double g0, double g1, double resolut
         const double mid = 0.5 * (s.lo + s.hi);
         const bool narrow =
             s.hi - s.lo <= resolution || top >= kMaxDepth - 1 || !(mid > s.lo && mid < s.hi);  // or no double between
-        if (sign_change && (narrow || convex || settled_by_slope(s, true))) {
+        if (sign_change &&
+            (narrow || convex || precision == CrossingPrecision::SignChange || settled_by_slope(s, true))) {
             double t = 0.5 * (s.lo + s.hi);
             if constexpr (precision == CrossingPrecision::Refined) {
                 ++work.crossings;

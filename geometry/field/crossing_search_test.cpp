@@ -1,13 +1,15 @@
 // The guaranteed crossing search on functions with known roots: a pair of close crossings hidden inside a
 // sign-change bracket is still found first, every crossing is visited in order with its direction, a convex
 // caller's bracket and a bracket proven monotone by the derivative bound are refined at once (with the same
-// crossings as without the derivative bound), a root the secant approaches from one side is closed in at once,
-// and visiting stops when asked.
+// crossings as without the derivative bound), a root the secant approaches from one side is closed in at once, an
+// occlusion query's search reports the first stretch whose ends differ in sign as it is, and visiting stops when
+// asked.
 #include "geometry/field/crossing_search.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace isotrace {
@@ -141,6 +143,34 @@ TEST(SuperquadricCrossingSearch, PairsCloserThanTheResolutionMayBeTakenForAGrazi
     EXPECT_TRUE(all_crossings(g, 0, 1, 1e-6).empty());
     // With a finer resolution it is found.
     EXPECT_EQ(all_crossings(g, 0, 1, 1e-12).size(), 2u);
+}
+
+// Three crossings in a stretch whose ends differ in sign: with SignChange the stretch is reported as it is, without a
+// bound of g′ or a halving; Bracketed isolates the first crossing.
+TEST(SuperquadricCrossingSearch, SignChangeReportsTheFirstStretchWhoseEndsDifferInSign) {
+    const Cubic g{0.3, 0.5, 0.7};
+    const auto first = [&](auto precision, CrossingSearchWork& work) {
+        Crossing found{-1, false};
+        search_crossings<decltype(precision)::value>(
+            0, 1, g(0), g(1), 1e-8, false, g, [&](double a, double b) { return g.bound(a, b); },
+            [&](double a, double b) { return g.slope(a, b); }, work, [&](const Crossing& c) {
+                found = c;
+                return false;
+            });
+        return found;
+    };
+    CrossingSearchWork any_work, bracketed_work;
+    const Crossing any = first(std::integral_constant<CrossingPrecision, CrossingPrecision::SignChange>{}, any_work);
+    EXPECT_EQ(any.lo, 0);
+    EXPECT_EQ(any.hi, 1);
+    EXPECT_TRUE(any.entering);
+    EXPECT_EQ(any_work.slope_bounds, 0u);
+    EXPECT_EQ(any_work.halvings, 0u);
+    const Crossing bracketed = first(std::integral_constant<CrossingPrecision, CrossingPrecision::Bracketed>{}, bracketed_work);
+    EXPECT_LE(bracketed.lo, 0.3);
+    EXPECT_GE(bracketed.hi, 0.3);
+    EXPECT_LT(bracketed.hi, 0.5);
+    EXPECT_GT(bracketed_work.halvings, 0u);
 }
 
 TEST(SuperquadricCrossingSearch, VisitingStopsWhenAsked) {

@@ -195,6 +195,13 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (!deformation_.empty()) {
         const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
         shell_.visit_runs(o, d, t0, t1, range, [&](double a, double b) {
+            // A run whose bound excludes zero holds no crossing (the search's first question, which the bound kept
+            // with the walk answers again): settled without its end values.
+            const Interval run = ray.bound(a, b);
+            if (run.lo >= 0 || run.hi < 0) {
+                ++work.search.interval_bounds;
+                return true;
+            }
             return search_crossings<precision>(a, b, value(a), value(b), resolution, false, value, bound, slope,
                                                work.search, visit, value_and_slope);
         });
@@ -269,11 +276,15 @@ std::optional<double> Superquadric::first_crossing(const Vec3d& origin, const Ve
 bool Superquadric::blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max,
                           SuperquadricWork& work) const {
     bool blocked = false, undecided = false;
-    search<CrossingPrecision::Bracketed>(origin, direction, t_min, t_max, true, work, [&](const Crossing& c) {
+    const auto settle = [&](const Crossing& c) {
         undecided = !c.settles_occlusion(t_min, t_max);
         blocked = !undecided;
         return false;
-    });
+    };
+    search<CrossingPrecision::SignChange>(origin, direction, t_min, t_max, true, work, settle);
+    // A stretch from t_min itself (a ray that meets the object it leaves again) settles nothing as it is: its
+    // crossing is isolated first, and refined only if that does not settle it either.
+    if (undecided) search<CrossingPrecision::Bracketed>(origin, direction, t_min, t_max, true, work, settle);
     if (!undecided) return blocked;
     const std::optional<double> t = first_crossing(origin, direction, t_min, t_max, work);
     return t && *t > t_min && float(*t) < t_max;

@@ -78,7 +78,8 @@ public:
     std::optional<Crossing> first_of_crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                                                SuperquadricWork& work) const;
     // Whether a crossing lies in (t_min, t_max) with float(t) < float(t_max) — first_crossing's answer — settled by
-    // the first bracket that lies inside the range, without refining it (an occlusion query).
+    // the first stretch whose ends differ in sign when it lies inside the range, without isolating or refining its
+    // crossing (an occlusion query).
     bool blocks(const Vec3d& origin, const Vec3d& direction, double t_min, float t_max, SuperquadricWork& work) const;
     // Whether the ray lies inside throughout (t, past] after entering at t: g deep below zero at past, and between
     // them convexity (undeformed exponents ≤ 2) or a bound of g′ below zero.
@@ -89,8 +90,8 @@ public:
 
 private:
     // Visits the crossings in [t_min, t_max] in order until visit(Crossing) returns false (after the first when
-    // `first_only`); Bracketed: the general search reports brackets unrefined (the closed forms and marches are
-    // exact anyway).
+    // `first_only`); Bracketed or SignChange: the general search reports brackets unrefined (the closed forms and
+    // marches are exact anyway), with SignChange the first stretch whose ends differ in sign as it is.
     template <CrossingPrecision precision, class Visit>
     void search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, bool first_only,
                 SuperquadricWork& work, Visit&& visit) const;

@@ -29,13 +29,15 @@ const DeformationChain::InverseBoxes* SuperquadricAlongRay::walked(double a, dou
         if (!walked_) walked_.emplace();
         walked_a_ = a, walked_b_ = b;
         walked_inside_ = superquadric_.deformation().inverse_boxes(stretch(a, b), *walked_, kBeyond);
+        walked_bound_.reset();
     }
     return walked_inside_ ? &*walked_ : nullptr;
 }
 
 Interval SuperquadricAlongRay::bound(double a, double b) const {
     const DeformationChain::InverseBoxes* boxes = walked(a, b);
-    return boxes ? superquadric_.field_range(*boxes) : Interval{1, 1};
+    if (!walked_bound_) walked_bound_ = boxes ? superquadric_.field_range(*boxes) : Interval{1, 1};
+    return *walked_bound_;
 }
 
 Interval SuperquadricAlongRay::slope_bound(double a, double b) const {

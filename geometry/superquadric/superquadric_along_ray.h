@@ -46,6 +46,8 @@ private:
     mutable double walked_a_ = std::numeric_limits<double>::quiet_NaN(), walked_b_ = walked_a_;
     mutable bool walked_inside_ = false;
     mutable std::optional<DeformationChain::InverseBoxes> walked_;  // made when first asked: most rays ask none
+    // The bound of g over the walked stretch, once asked: a run is bounded before its search, which asks again.
+    mutable std::optional<Interval> walked_bound_;
 };
 
 }  // namespace isotrace

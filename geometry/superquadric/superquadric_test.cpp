@@ -267,6 +267,34 @@ TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {
                 (unsigned long long)by_crossing.search.evaluations);
 }
 
+// Rays that start just off the surface and leave it, as shadow rays do, many of them nearly along it (those meet the
+// shape again soon, within the stretch the search starts with): occlusion gives first_crossing's answer.
+TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingOnRaysLeavingTheSurface) {
+    std::mt19937 random(27);
+    std::uniform_real_distribution<double> exponent(0.1, 4), size(0.4, 1.5), unit(-1, 1), angle(-3.1, 3.1);
+    SuperquadricWork work;
+    int blocked = 0;
+    for (int shape = 0; shape < 30; ++shape) {
+        const Vec3d radii{size(random), size(random), size(random)};
+        const Superquadric s = random_deformed_superquadric(random, radii, exponent);
+        for (int i = 0; i < 60; ++i) {
+            const Vec3d p = s.surface_point(0.5 * angle(random), angle(random));
+            const Vec3d n = s.normal(p);
+            if (!is_finite(n)) continue;
+            const Vec3d across = normalize(cross(n, Vec3d{unit(random), unit(random), unit(random)}));
+            const double lift = i % 2 ? 0.02 : 0.5 + 0.5 * unit(random);  // nearly along the surface, or not
+            const Vec3d direction = normalize(across + n * lift);
+            const Vec3d origin = p + n * (1e-4 * std::min({radii.x, radii.y, radii.z}));
+            const float t_max = float(4 * std::max({radii.x, radii.y, radii.z}));
+            const std::optional<double> t = s.first_crossing(origin, direction, 0, t_max, work);
+            const bool expected = t && *t > 0 && float(*t) < t_max;
+            EXPECT_EQ(s.blocks(origin, direction, 0, t_max, work), expected) << shape << " " << i;
+            blocked += expected;
+        }
+    }
+    EXPECT_GT(blocked, 50);
+}
+
 TEST(SuperquadricIntersection, PlacementIsAppliedAndTIsPreserved) {
     const Transform placement = Transform::translate({1, -2, 0.5}) * Transform::rotate({1, 2, 3}, 40) *
                                 Transform::scale({1.5, 1.5, 1.5});

@@ -61,23 +61,30 @@ public:
             pending = true, pending_lo = a, pending_hi = b;
             return true;
         };
+        // Per axis in arrays: Vec3's component access by index is a chain of branches in this loop.
         const Vec3d start = origin + direction * t0;
+        const double from[3] = {origin.x, origin.y, origin.z}, along[3] = {direction.x, direction.y, direction.z},
+                     lower[3] = {box_.x.lo, box_.y.lo, box_.z.lo}, first[3] = {start.x, start.y, start.z};
         int cell_of[3];
         for (int k = 0; k < 3; ++k)
-            cell_of[k] = std::clamp(int(std::floor((start[k] - box_[k].lo) / cell_size_[k])), 0, kCellsPerAxis - 1);
+            cell_of[k] = std::clamp(int(std::floor((first[k] - lower[k]) / cell_size_[k])), 0, kCellsPerAxis - 1);
         // Where the line leaves the current cell across each axis' next plane.
         const auto next_plane = [&](int k) {
-            if (direction[k] == 0) return std::numeric_limits<double>::infinity();
-            const int plane = cell_of[k] + (direction[k] > 0 ? 1 : 0);
-            return (box_[k].lo + plane * cell_size_[k] - origin[k]) / direction[k];
+            if (along[k] == 0) return std::numeric_limits<double>::infinity();
+            const int plane = cell_of[k] + (along[k] > 0 ? 1 : 0);
+            return (lower[k] + plane * cell_size_[k] - from[k]) / along[k];
         };
         double enter = t0, run_start = 0;
         bool in_run = false;
         // Only the axis whose plane was crossed moves on: the others keep their next plane.
         double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
+        // The surface bits of the block the walk is in, looked up again only when it enters another.
+        int block_index = -1;
+        std::uint64_t block = 0;
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
-            const std::uint64_t block = block_cells({cell_of[0], cell_of[1], cell_of[2]}, range);
-            const bool surface = (block >> bit({cell_of[0] % kBlock, cell_of[1] % kBlock, cell_of[2] % kBlock})) & 1;
+            const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
+            if (const int index = block_of(cell); index != block_index) block_index = index, block = block_cells(cell, range);
+            const bool surface = (block >> bit(cell)) & 1;
             if (surface && !in_run) in_run = true, run_start = enter;
             if (!surface && in_run) {
                 in_run = false;
@@ -91,23 +98,23 @@ public:
                 double block_exit = std::numeric_limits<double>::infinity();
                 int last_in_block[3];
                 for (int k = 0; k < 3; ++k) {
-                    last_in_block[k] = cell_of[k] / kBlock * kBlock + (direction[k] > 0 ? kBlock - 1 : 0);
-                    if (direction[k] == 0) continue;
-                    const int plane = last_in_block[k] + (direction[k] > 0 ? 1 : 0);
-                    const double t = (box_[k].lo + plane * cell_size_[k] - origin[k]) / direction[k];
+                    last_in_block[k] = cell_of[k] / kBlock * kBlock + (along[k] > 0 ? kBlock - 1 : 0);
+                    if (along[k] == 0) continue;
+                    const int plane = last_in_block[k] + (along[k] > 0 ? 1 : 0);
+                    const double t = (lower[k] + plane * cell_size_[k] - from[k]) / along[k];
                     if (t < block_exit) block_exit = t, axis = k;
                 }
                 for (int k = 0; k < 3; ++k)
                     while (k != axis && cell_of[k] != last_in_block[k] &&
                            (across[k] < block_exit || (across[k] == block_exit && k < axis))) {
-                        cell_of[k] += direction[k] > 0 ? 1 : -1;
+                        cell_of[k] += along[k] > 0 ? 1 : -1;
                         across[k] = next_plane(k);
                     }
                 cell_of[axis] = last_in_block[axis];
                 across[axis] = block_exit;
             }
             const double leave = std::min(across[axis], t1);
-            cell_of[axis] += direction[axis] > 0 ? 1 : -1;
+            cell_of[axis] += along[axis] > 0 ? 1 : -1;
             if (!(leave < t1) || cell_of[axis] < 0 || cell_of[axis] >= kCellsPerAxis) break;
             across[axis] = next_plane(axis);
             enter = std::max(enter, leave);
@@ -122,12 +129,21 @@ private:
     struct CellIndex {
         int i, j, l;
     };
-    static int bit(CellIndex in_block) { return (in_block.i * kBlock + in_block.j) * kBlock + in_block.l; }
+    // The cell's bit in its block's word, and its block's index. Cell indices lie in [0, kCellsPerAxis): unsigned,
+    // the divisions and remainders are shifts and masks.
+    static int bit(CellIndex c) {
+        const unsigned i = c.i, j = c.j, l = c.l;
+        return int(((i % kBlock) * kBlock + j % kBlock) * kBlock + l % kBlock);
+    }
+    static int block_of(CellIndex c) {
+        const unsigned i = c.i, j = c.j, l = c.l;
+        return int(((i / kBlock) * kBlocksPerAxis + j / kBlock) * kBlocksPerAxis + l / kBlock);
+    }
 
     // The surface bits of the block that holds cell c.
     template <class Range>
     std::uint64_t block_cells(CellIndex c, const Range& range) const {
-        const int block = ((c.i / kBlock) * kBlocksPerAxis + c.j / kBlock) * kBlocksPerAxis + c.l / kBlock;
+        const int block = block_of(c);
         if (known_[block].load(std::memory_order_acquire)) return cells_[block].load(std::memory_order_relaxed);
         const std::uint64_t cells = find_block({c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock}, range);
         cells_[block].store(cells, std::memory_order_relaxed);
