@@ -8,6 +8,7 @@
 #include "geometry/field/convex_crossings.h"
 #include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/sphere/sphere_intersection.h"
+#include "geometry/superquadric/recent_samples.h"
 #include "geometry/superquadric/superquadric_along_ray.h"
 #include "renderer/math/line_box_clip.h"
 
@@ -17,31 +18,6 @@ namespace {
 double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
 }
-
-// The last few points of a search whose gauge and difference-of-convex parts were taken: a halved stretch shares its
-// ends with its parent and its sibling, and the search asks for a point's value before its parts.
-class MixedSamples {
-public:
-    template <class Take>
-    const Superellipsoid::GaugeAndDifference& at(double t, const Take& take) {
-        for (int k = 0; k < filled_; ++k)
-            if (entries_[k].t == t) return entries_[k].sample;
-        Entry& slot = entries_[next_];
-        slot = {t, take()};
-        next_ = (next_ + 1) % kSize;
-        filled_ = std::min(filled_ + 1, kSize);
-        return slot.sample;
-    }
-
-private:
-    static constexpr int kSize = 4;
-    struct Entry {
-        double t;
-        Superellipsoid::GaugeAndDifference sample;
-    };
-    Entry entries_[kSize];
-    int filled_ = 0, next_ = 0;
-};
 
 }  // namespace
 
@@ -76,6 +52,24 @@ Interval Superquadric::field_range(const DeformationChain::InverseBoxes& walked)
     const IntervalBox& undeformed = walked.stage[0];
     const Interval gauge = shape_.gauge_range(undeformed);
     return Interval{gauge.lo - 1, walked.clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
+}
+
+ShellCellBounds Superquadric::cell_bounds(const IntervalBox& cell, const Vec3d& centre) const {
+    ShellCellBounds bounds;
+    constexpr DeformationChain::BeyondUndeformedBox kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
+    DeformationChain::InverseBoxes walked;
+    if (!deformation_.inverse_boxes(cell, walked, kBeyond) || walked.clipped) return bounds;
+    const IntervalBox gradient = shape_.gradient_range(walked.stage[0]);
+    for (int k = 0; k < 3; ++k) {
+        const Vec3d axis(k == 0, k == 1, k == 2);
+        const IntervalBox tangent = deformation_.inverse_tangent(walked, IntervalBox::point(axis));
+        bounds.gradient[k] = gradient.x * tangent.x + gradient.y * tangent.y + gradient.z * tangent.z;
+        if (!bounds.gradient[k].is_finite()) return bounds;
+    }
+    bounds.centre = centre;
+    bounds.value = local_field(centre, kBeyond);
+    bounds.known = true;
+    return bounds;
 }
 
 double Superquadric::field(const Vec3d& point) const { return local_field(placement_.inverse_point(point)); }
@@ -159,7 +153,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // The piece being searched, and whether its ends lie on coordinate planes (cusps: no tangents there).
     double piece_lo = t0, piece_hi = t1;
     bool cusp_lo = false, cusp_hi = false;
-    MixedSamples samples;
+    RecentSamples<Superellipsoid::GaugeAndDifference> samples;
     const auto mixed_at = [&](double t) -> const Superellipsoid::GaugeAndDifference& {
         return samples.at(t, [&] { return shape_.gauge_and_difference(o + d * t, d); });
     };
@@ -193,18 +187,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
     if (!deformation_.empty()) {
-        const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
-        shell_.visit_runs(o, d, t0, t1, range, [&](double a, double b) {
-            // A run whose bound excludes zero holds no crossing (the search's first question, which the bound kept
-            // with the walk answers again): settled without its end values.
-            const Interval run = ray.bound(a, b);
-            if (run.lo >= 0 || run.hi < 0) {
-                ++work.search.interval_bounds;
-                return true;
-            }
-            return search_crossings<precision>(a, b, value(a), value(b), resolution, false, value, bound, slope,
-                                               work.search, visit, value_and_slope);
-        });
+        search_shell<precision>(ray, t0, t1, resolution, work, visit);
         return;
     }
     if (convex && visit_convex_crossings(t0, t1, value_and_slope, first_only, work.search, visit)) return;
@@ -255,6 +238,65 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
             return;
         g_start = g_end;
     }
+}
+
+template <CrossingPrecision precision, class Visit>
+void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, double t1, double resolution,
+                                SuperquadricWork& work, Visit&& visit) const {
+    const Vec3d &o = ray.local_origin(), &d = ray.local_direction();
+    RecentSamples<double> values;
+    const auto value = [&](double t) { return values.at(t, [&] { return ray.value(t); }); };
+    const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
+    const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
+    const auto bounds_of = [&](const IntervalBox& cell, const Vec3d& centre) { return cell_bounds(cell, centre); };
+    // g's sign at the end of the last cell's stretch, and its value when it was taken: the next stretch starts
+    // there when the run goes on.
+    double known_t = std::numeric_limits<double>::quiet_NaN();
+    bool known_inside = false;
+    shell_.visit_cells(o, d, t0, t1, range, bounds_of, [&](double a, double b, const ShellCellBounds& cell) {
+        const auto no_crossing = [&](bool inside) {
+            known_t = b, known_inside = inside;
+            return true;
+        };
+        const Interval cell_slope = cell.known ? cell.slope(d) : Interval::unbounded();
+        // Bounds over a part [u, v] of the cell's stretch: the cell's first (a few products), the walk through
+        // the deformations only where they settle nothing. Where both ends' values are known, the cell's bound of
+        // g′ with them (a mean-value test) often settles what its bound of g does not.
+        const auto bound = [&](double u, double v) {
+            if (cell.known) {
+                const Interval g = cell.range(o + d * u, o + d * v);
+                if (g.lo >= 0 || g.hi < 0) return g;
+                const double *g_u = values.find(u), *g_v = values.find(v);
+                if (g_u && g_v && (*g_u < 0) == (*g_v < 0) &&
+                    crossing_search_detail::keeps_sign(v - u, *g_u, *g_v, cell_slope))
+                    return *g_u < 0 ? Interval{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::denorm_min()}
+                                    : Interval{0, std::numeric_limits<double>::infinity()};
+            }
+            return ray.bound(u, v);
+        };
+        const auto slope = [&](double u, double v) {
+            if (cell_slope.excludes_zero()) return cell_slope;
+            const Interval walked = ray.slope_bound(u, v);
+            const Interval both{std::max(walked.lo, cell_slope.lo), std::min(walked.hi, cell_slope.hi)};
+            return both.lo <= both.hi ? both : walked;
+        };
+        // A stretch whose bound excludes zero holds no crossing: settled without its end values.
+        ++work.search.interval_bounds;
+        const Interval whole = cell.known ? cell.range(o + d * a, o + d * b) : ray.bound(a, b);
+        if (whole.lo >= 0 || whole.hi < 0) return no_crossing(whole.hi < 0);
+        // Where the run goes on, the last stretch told a's sign, perhaps without its value.
+        const bool inside_a = a == known_t ? known_inside : value(a) < 0;
+        // g monotone over the cell and moving away from zero from a: no crossing, and b keeps a's sign.
+        if ((cell_slope.lo > 0 && !inside_a) || (cell_slope.hi < 0 && inside_a)) {
+            ++work.search.slope_proofs;
+            return no_crossing(inside_a);
+        }
+        const double g_a = value(a), g_b = value(b);
+        known_t = b, known_inside = g_b < 0;
+        if (cell_slope.excludes_zero() && (g_a < 0) == (g_b < 0)) return true;  // monotone without a sign change
+        return search_crossings<precision>(a, b, g_a, g_b, resolution, false, value, bound, slope, work.search, visit,
+                                           value_and_slope);
+    });
 }
 
 std::optional<Crossing> Superquadric::first_of_crossings(const Vec3d& origin, const Vec3d& direction, double t_min,

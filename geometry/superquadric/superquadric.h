@@ -8,6 +8,8 @@
 // - otherwise: the ray is cut at the local coordinate planes when undeformed (where F changes form), then each
 //   piece is searched by interval subdivision (crossing_search.h) with the bounds of g and g′ along the ray
 //   (superquadric_along_ray.h);
+// - deformed: only the ray's stretches through the cells of the surface shell (surface_shell.h) are searched, cell
+//   by cell, with the bounds each cell keeps (shell_cell_bounds.h) asked before those along the ray;
 // - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches from the ends find its
 //   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts;
 // - undeformed with ε1, ε2 ≥ 2: g is concave on each piece between the coordinate planes, and tangent cutting
@@ -24,6 +26,8 @@
 #include "renderer/math/transform.h"
 
 namespace isotrace {
+
+class SuperquadricAlongRay;
 
 struct SuperquadricWork {
     CrossingSearchWork search;
@@ -59,6 +63,12 @@ public:
     Interval local_field_range(const IntervalBox& local) const;
     // The same over a box whose inverse walk through the chain found some of it inside every stage box.
     Interval field_range(const DeformationChain::InverseBoxes& walked) const;
+    // The field of the search (continued beyond the undeformed box by the gauge) at `centre` and bounds of its
+    // gradient over `cell`, a box of the local deformed frame: what the surface shell keeps of each of its cells.
+    ShellCellBounds cell_bounds(const IntervalBox& cell, const Vec3d& centre) const;
+    // g at the centre of a box of the local deformed frame (continued beyond the undeformed box by the gauge) and
+    // bounds of its gradient there, for the surface shell's cells; not `known` where a bound is not finite.
+    ShellCellBounds cell_bounds(const IntervalBox& cell) const;
     // field() continued beyond the deformed box by the distance to it, in the local deformed frame (field() is a
     // constant 1 out there, the ray tracer needing only its sign): negative inside, continuous and rising outward.
     double continued_field(const Vec3d& point) const;
@@ -95,6 +105,12 @@ private:
     template <CrossingPrecision precision, class Visit>
     void search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, bool first_only,
                 SuperquadricWork& work, Visit&& visit) const;
+
+    // The deformed shapes' search: cell by cell along the ray's runs through the surface shell, each cell's stretch
+    // settled by the cell's bounds where they suffice, by the general search (with the cell's bounds first) elsewhere.
+    template <CrossingPrecision precision, class Visit>
+    void search_shell(const SuperquadricAlongRay& ray, double t0, double t1, double resolution, SuperquadricWork& work,
+                      Visit&& visit) const;
 
     Superellipsoid shape_;
     DeformationChain deformation_;

@@ -412,6 +412,48 @@ TEST(SuperquadricBounds, ContainSampledSurfacePointsOfRandomDeformations) {
     }
 }
 
+// The shell's cell bounds of random deformed shapes over small random boxes: every point's field lies in the range
+// they give over the point itself (value at the centre plus the gradient's bounds times the offset), and the
+// difference quotient of the field along a random line through the box lies in their slope along it.
+TEST(SuperquadricBounds, CellBoundsHoldTheFieldAndItsSlopesOverTheCell) {
+    std::mt19937 random(30);
+    std::uniform_real_distribution<double> exponent(0.02, 4), unit(-1, 1), fraction(0, 1), side(0.005, 0.1);
+    constexpr auto kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
+    int known = 0;
+    for (int shape = 0; shape < 60; ++shape) {
+        const Vec3d radii{0.5 + fraction(random), 0.5 + fraction(random), 0.5 + fraction(random)};
+        const Superquadric s = random_deformed_superquadric(random, radii, exponent);
+        const IntervalBox box = s.deformation().deformed_box();
+        for (int cell = 0; cell < 200; ++cell) {
+            const Vec3d centre{box.x.lo + box.x.width() * fraction(random), box.y.lo + box.y.width() * fraction(random),
+                               box.z.lo + box.z.width() * fraction(random)};
+            const Vec3d half = Vec3d{side(random), side(random), side(random)} * 0.5;
+            const IntervalBox around{{centre.x - half.x, centre.x + half.x}, {centre.y - half.y, centre.y + half.y},
+                                     {centre.z - half.z, centre.z + half.z}};
+            const ShellCellBounds bounds = s.cell_bounds(around, centre);
+            if (!bounds.known) continue;
+            ++known;
+            EXPECT_EQ(bounds.value, s.local_field(centre, kBeyond));
+            for (int i = 0; i < 20; ++i) {
+                const Vec3d p = centre + Vec3d{half.x * unit(random), half.y * unit(random), half.z * unit(random)};
+                EXPECT_TRUE(bounds.range(p, p).contains(s.local_field(p, kBeyond))) << shape << " " << cell;
+                // A line through p within the box: its difference quotient is g′ somewhere between (mean value).
+                const Vec3d d = normalize(Vec3d{unit(random), unit(random), unit(random)});
+                double reach = 1e300;
+                for (int k = 0; k < 3; ++k)
+                    if (d[k] != 0) reach = std::min(reach, (half[k] - std::abs(p[k] - centre[k])) / std::abs(d[k]));
+                const double h = 0.5 * reach;
+                if (!(h > 1e-6)) continue;
+                const double quotient = (s.local_field(p + d * h, kBeyond) - s.local_field(p, kBeyond)) / h;
+                const Interval slope = bounds.slope(d);
+                EXPECT_GE(quotient, slope.lo - 1e-9) << shape << " " << cell;
+                EXPECT_LE(quotient, slope.hi + 1e-9) << shape << " " << cell;
+            }
+        }
+    }
+    EXPECT_GT(known, 3000);
+}
+
 TEST(SuperquadricIntersection, FarAwayRaysAndRaysAlongThePlanesStayFinite) {
     for (double e : {0.02, 1.0, 2.0, 4.0}) {
         const Superquadric s = make_superquadric({1, 1, 1}, e, e);

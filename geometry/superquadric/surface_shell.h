@@ -2,13 +2,14 @@
 // The cells of a uniform grid over a deformed superquadric's box that can hold its surface: those where the interval
 // range of g contains zero. Elsewhere g keeps one sign throughout a cell, and (g being continuous) throughout any
 // chain of such cells, so a ray needs searching only along its runs of shell cells: rays that pass the object
-// through its box's empty corners cost a walk through the grid, and the interval bounds over a run are tighter
-// than over the whole box, since they wrap a shorter piece of the ray's inverse-deformed curve.
+// through its box's empty corners cost a walk through the grid. Each shell cell also keeps g at its centre and bounds
+// of g's gradient over it (ShellCellBounds), which settle most of a ray's stretch through the cell without walking it
+// back through the deformations.
 //
 // The grid is found as rays need it, a block of 4³ cells at a time (the block first, its cells only when the block
 // can hold the surface): a scene of many deformed superquadrics, each seen by a few pixels, does not pay for
-// grids no ray walks. Threads that meet an unknown block at once both find it, with the same answer; the block's
-// word is published by a release store.
+// grids no ray walks. Threads that meet an unknown block at once both find it, with the same answer; the first to
+// publish it (compare-and-swap) wins, the others free theirs. Blocks without surface cells share one empty block.
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -16,14 +17,53 @@
 #include <cstdint>
 #include <limits>
 
+#include "geometry/superquadric/shell_cell_bounds.h"
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace {
 
 class SurfaceShell {
+    static constexpr int kBlock = 4;
+    // What a block keeps of a shell cell's ShellCellBounds (the centre follows from the cell): the gradient's
+    // bounds as floats rounded outward, an unknown gradient as a NaN value.
+    struct CellEntry {
+        double value = std::numeric_limits<double>::quiet_NaN();
+        float gradient_lo[3] = {0, 0, 0}, gradient_hi[3] = {0, 0, 0};
+
+        static CellEntry of(const ShellCellBounds& bounds) {
+            CellEntry entry;
+            if (!bounds.known) return entry;
+            entry.value = bounds.value;
+            for (int k = 0; k < 3; ++k) {
+                entry.gradient_lo[k] = rounded_down(bounds.gradient[k].lo);
+                entry.gradient_hi[k] = -rounded_down(-bounds.gradient[k].hi);
+            }
+            return entry;
+        }
+        ShellCellBounds bounds(const Vec3d& centre) const {
+            ShellCellBounds bounds;
+            if (std::isnan(value)) return bounds;
+            bounds.known = true, bounds.centre = centre, bounds.value = value;
+            for (int k = 0; k < 3; ++k) bounds.gradient[k] = {gradient_lo[k], gradient_hi[k]};
+            return bounds;
+        }
+        static float rounded_down(double v) {
+            const float f = float(v);
+            return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+        }
+    };
+    // A block's 64 cells: which can hold the surface (the bits of one word), and what is known of g over those.
+    struct Block {
+        std::uint64_t cells = 0;
+        std::array<CellEntry, kBlock * kBlock * kBlock> entries{};
+    };
+
 public:
     static constexpr int kCellsPerAxis = 32;
+    // The most a shell takes on the heap, once rays have found every block.
+    static constexpr std::size_t kMostHeapBytes = std::size_t(kCellsPerAxis / kBlock) * (kCellsPerAxis / kBlock) *
+                                                  (kCellsPerAxis / kBlock) * sizeof(Block);
 
     SurfaceShell() = default;
     explicit SurfaceShell(const IntervalBox& box) : box_(box) {
@@ -31,34 +71,49 @@ public:
     }
     SurfaceShell(const SurfaceShell& other) { *this = other; }
     SurfaceShell& operator=(const SurfaceShell& other) {
+        if (this == &other) return *this;
+        release();
         box_ = other.box_;
         std::copy(std::begin(other.cell_size_), std::end(other.cell_size_), std::begin(cell_size_));
         for (int b = 0; b < kBlocks; ++b) {
-            const bool known = other.known_[b].load(std::memory_order_acquire);
-            cells_[b].store(known ? other.cells_[b].load(std::memory_order_relaxed) : 0, std::memory_order_relaxed);
-            known_[b].store(known, std::memory_order_release);
+            const Block* block = other.blocks_[b].load(std::memory_order_acquire);
+            blocks_[b].store(block && block != empty_block() ? new Block(*block) : block, std::memory_order_relaxed);
         }
         return *this;
     }
+    ~SurfaceShell() { release(); }
 
-    // Calls visit(a, b) for the runs [a, b] of shell cells along origin + t·direction within [t0, t1] (the part of
-    // the line inside the box), in increasing t, until it returns false (then returns false). `range(cell)`
-    // contains g over a box inside the grid's. Each run is widened by 10⁻⁹ of [t0, t1] so that the rounding of the
-    // cell boundaries cannot cut a crossing off; runs that then touch are joined.
-    template <class Range, class Visit>
-    bool visit_runs(const Vec3d& origin, const Vec3d& direction, double t0, double t1, const Range& range,
-                    Visit&& visit) const {
+    // Calls visit(a, b, bounds) for the stretches [a, b] of origin + t·direction within [t0, t1] (the part of the
+    // line inside the box) through shell cells, in increasing t, until it returns false (then returns false), with
+    // what is known of g over each cell (ShellCellBounds). `range(box)` contains g over a box inside the grid's;
+    // `cell_bounds(box, centre)` tells g at a cell's centre and bounds its gradient over the cell (enlarged a little).
+    // The stretches through a run of consecutive shell cells meet end to end; each run is widened by 10⁻⁹ of
+    // [t0, t1] at both ends (its first and last cells' stretches) so that the rounding of the cell boundaries cannot
+    // cut a crossing off, and runs that then touch are joined.
+    template <class Range, class CellBounds, class Visit>
+    bool visit_cells(const Vec3d& origin, const Vec3d& direction, double t0, double t1, const Range& range,
+                     const CellBounds& cell_bounds, Visit&& visit) const {
         const double pad = 1e-9 * (t1 - t0);
+        // The last cell's stretch waits until the next one shows whether the run goes on.
         bool pending = false;
         double pending_lo = 0, pending_hi = 0;
-        const auto add_run = [&](double a, double b) {
-            a = std::max(t0, a - pad), b = std::min(t1, b + pad);
-            if (pending && a <= pending_hi) {
-                pending_hi = b;
-                return true;
+        ShellCellBounds pending_bounds;
+        const auto flush = [&](double end) {
+            pending = false;
+            return visit(pending_lo, end, pending_bounds);
+        };
+        const auto add_cell = [&](double a, double b, const ShellCellBounds& bounds, bool opens_run) {
+            if (opens_run) {
+                a = std::max(t0, a - pad);
+                if (pending) {  // the last run ends here, padded, unless the two touch once padded
+                    const double padded = std::min(t1, pending_hi + pad);
+                    if (a <= padded) a = pending_hi;
+                    if (!flush(a <= padded ? pending_hi : padded)) return false;
+                }
+            } else if (pending && !flush(pending_hi)) {
+                return false;
             }
-            if (pending && !visit(pending_lo, pending_hi)) return false;
-            pending = true, pending_lo = a, pending_hi = b;
+            pending = true, pending_lo = a, pending_hi = b, pending_bounds = bounds;
             return true;
         };
         // Per axis in arrays: Vec3's component access by index is a chain of branches in this loop.
@@ -74,24 +129,20 @@ public:
             const int plane = cell_of[k] + (along[k] > 0 ? 1 : 0);
             return (lower[k] + plane * cell_size_[k] - from[k]) / along[k];
         };
-        double enter = t0, run_start = 0;
+        double enter = t0;
         bool in_run = false;
         // Only the axis whose plane was crossed moves on: the others keep their next plane.
         double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
-        // The surface bits of the block the walk is in, looked up again only when it enters another.
+        // The surface bits and cell bounds of the block the walk is in, looked up again only when it enters another.
         int block_index = -1;
-        std::uint64_t block = 0;
+        const Block* block = nullptr;
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
             const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
-            if (const int index = block_of(cell); index != block_index) block_index = index, block = block_cells(cell, range);
-            const bool surface = (block >> bit(cell)) & 1;
-            if (surface && !in_run) in_run = true, run_start = enter;
-            if (!surface && in_run) {
-                in_run = false;
-                if (!add_run(run_start, enter)) return false;
-            }
+            if (const int index = block_of(cell); index != block_index)
+                block_index = index, block = &find_block(cell, range, cell_bounds);
+            const bool surface = (block->cells >> bit(cell)) & 1;
             int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
-            if (block == 0) {
+            if (block->cells == 0) {
                 // No cell of this block holds the surface: step straight to where the line leaves the block, the
                 // cells and planes on the way taken as the cell by cell walk takes them (the same plane formula,
                 // ties to the lower axis), so that the runs after it are the same to the bit.
@@ -114,21 +165,28 @@ public:
                 across[axis] = block_exit;
             }
             const double leave = std::min(across[axis], t1);
+            if (surface && !add_cell(enter, std::max(enter, leave), block->entries[bit(cell)].bounds(centre(cell)), !in_run))
+                return false;
+            in_run = surface;
             cell_of[axis] += along[axis] > 0 ? 1 : -1;
             if (!(leave < t1) || cell_of[axis] < 0 || cell_of[axis] >= kCellsPerAxis) break;
             across[axis] = next_plane(axis);
             enter = std::max(enter, leave);
         }
-        if (in_run && !add_run(run_start, t1)) return false;
-        return !pending || visit(pending_lo, pending_hi);
+        return !pending || flush(in_run ? t1 : std::min(t1, pending_hi + pad));
     }
 
 private:
-    static constexpr int kBlock = 4, kBlocksPerAxis = kCellsPerAxis / kBlock,
-                         kBlocks = kBlocksPerAxis * kBlocksPerAxis * kBlocksPerAxis;
+    static constexpr int kBlocksPerAxis = kCellsPerAxis / kBlock, kBlocks = kBlocksPerAxis * kBlocksPerAxis * kBlocksPerAxis;
     struct CellIndex {
         int i, j, l;
     };
+    // Shared by every block without surface cells, which need no bounds.
+    static const Block* empty_block() {
+        static const Block block;
+        return &block;
+    }
+
     // The cell's bit in its block's word, and its block's index. Cell indices lie in [0, kCellsPerAxis): unsigned,
     // the divisions and remainders are shifts and masks.
     static int bit(CellIndex c) {
@@ -140,31 +198,37 @@ private:
         return int(((i / kBlock) * kBlocksPerAxis + j / kBlock) * kBlocksPerAxis + l / kBlock);
     }
 
-    // The surface bits of the block that holds cell c.
-    template <class Range>
-    std::uint64_t block_cells(CellIndex c, const Range& range) const {
-        const int block = block_of(c);
-        if (known_[block].load(std::memory_order_acquire)) return cells_[block].load(std::memory_order_relaxed);
-        const std::uint64_t cells = find_block({c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock}, range);
-        cells_[block].store(cells, std::memory_order_relaxed);
-        known_[block].store(true, std::memory_order_release);
-        return cells;
-    }
-
-    template <class Range>
-    std::uint64_t find_block(CellIndex first, const Range& range) const {
+    // The block that holds cell c, found when first asked for.
+    template <class Range, class CellBounds>
+    const Block& find_block(CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
+        std::atomic<const Block*>& slot = blocks_[block_of(c)];
+        if (const Block* known = slot.load(std::memory_order_acquire)) return *known;
+        const CellIndex first{c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock};
         const auto can_hold_surface = [&](CellIndex from, int cells) {
             const IntervalBox lower = cell(from), upper = cell({from.i + cells - 1, from.j + cells - 1, from.l + cells - 1});
             const Interval g = range(IntervalBox{{lower.x.lo, upper.x.hi}, {lower.y.lo, upper.y.hi}, {lower.z.lo, upper.z.hi}});
             return !(g.lo > 0 || g.hi < 0);
         };
-        std::uint64_t cells = 0;
-        if (!can_hold_surface(first, kBlock)) return cells;
-        for (int i = 0; i < kBlock; ++i)
-            for (int j = 0; j < kBlock; ++j)
-                for (int l = 0; l < kBlock; ++l)
-                    if (can_hold_surface({first.i + i, first.j + j, first.l + l}, 1)) cells |= std::uint64_t(1) << bit({i, j, l});
-        return cells;
+        const Block* found = empty_block();
+        if (can_hold_surface(first, kBlock)) {
+            Block* block = new Block;
+            for (int i = 0; i < kBlock; ++i)
+                for (int j = 0; j < kBlock; ++j)
+                    for (int l = 0; l < kBlock; ++l) {
+                        const CellIndex at{first.i + i, first.j + j, first.l + l};
+                        if (!can_hold_surface(at, 1)) continue;
+                        block->cells |= std::uint64_t(1) << bit(at);
+                        IntervalBox around = cell(at);  // enlarged by far more than a run's padding
+                        for (int k = 0; k < 3; ++k) around[k] = {around[k].lo - 1e-6 * cell_size_[k], around[k].hi + 1e-6 * cell_size_[k]};
+                        block->entries[bit(at)] = CellEntry::of(cell_bounds(around, centre(at)));
+                    }
+            if (block->cells != 0) found = block;
+            else delete block;
+        }
+        const Block* expected = nullptr;
+        if (slot.compare_exchange_strong(expected, found, std::memory_order_acq_rel)) return *found;
+        if (found != empty_block()) delete found;
+        return *expected;
     }
 
     IntervalBox cell(CellIndex c) const {
@@ -174,11 +238,21 @@ private:
         return {side(0, c.i), side(1, c.j), side(2, c.l)};
     }
 
+    Vec3d centre(CellIndex c) const {
+        const IntervalBox box = cell(c);
+        return (box.lower() + box.upper()) * 0.5;
+    }
+
+    void release() {
+        for (std::atomic<const Block*>& slot : blocks_) {
+            const Block* block = slot.exchange(nullptr, std::memory_order_acq_rel);
+            if (block != empty_block()) delete block;
+        }
+    }
+
     IntervalBox box_;
     double cell_size_[3] = {0, 0, 0};
-    // A block's 64 cells are the bits of one word, valid once its flag is set.
-    mutable std::array<std::atomic<std::uint64_t>, kBlocks> cells_{};
-    mutable std::array<std::atomic<bool>, kBlocks> known_{};
+    mutable std::array<std::atomic<const Block*>, kBlocks> blocks_{};
 };
 
 }  // namespace isotrace

@@ -1,7 +1,8 @@
 // The shell grid against a ball of radius 0.5 in the box [−1, 1]³, whose field range over a box is known exactly
 // (distance to the nearest and farthest point, minus the radius): every crossing of a random line lies in a run,
-// the runs are ordered, disjoint and inside the line's stretch, lines through the box's empty corners have none,
-// a visit that returns false stops the walk, and a copy keeps what was found.
+// the runs are ordered, disjoint and inside the line's stretch, a run's cells meet end to end and their bounds hold
+// the field and its slope along the line, lines through the box's empty corners have none, a visit that returns
+// false stops the walk, and a copy keeps what was found.
 #include "geometry/superquadric/surface_shell.h"
 
 #include <gtest/gtest.h>
@@ -31,22 +32,36 @@ Interval ball_range(const IntervalBox& box) {
     return {std::sqrt(near) - kRadius, std::sqrt(far) - kRadius};
 }
 
+// The ball's field |x| − r at a centre and its gradient x/|x| over a box, by interval arithmetic.
+ShellCellBounds ball_bounds(const IntervalBox& box, const Vec3d& centre) {
+    ShellCellBounds bounds;
+    const Interval distance = ball_range(box) + kRadius;
+    if (!(distance.lo > 0)) return bounds;  // the gradient is unbounded at the centre
+    const Interval inverse{1 / distance.hi, 1 / distance.lo};
+    for (int k = 0; k < 3; ++k) bounds.gradient[k] = box[k] * inverse;
+    bounds.centre = centre, bounds.value = length(centre) - kRadius, bounds.known = true;
+    return bounds;
+}
+
 struct ShellRun {
     double lo, hi;
 };
 
+// The runs of a line: its cells' stretches joined where they meet.
 std::vector<ShellRun> runs_of(const SurfaceShell& shell, const Vec3d& o, const Vec3d& d, int* ranges = nullptr) {
     std::vector<ShellRun> runs;
     const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
     if (!clip) return runs;
     int calls = 0;
-    shell.visit_runs(o, d, clip->t_enter, clip->t_exit, [&](const IntervalBox& b) { ++calls; return ball_range(b); },
-                     [&](double a, double b) {
-                         runs.push_back({a, b});
-                         EXPECT_GE(a, clip->t_enter);
-                         EXPECT_LE(b, clip->t_exit);
-                         return true;
-                     });
+    shell.visit_cells(o, d, clip->t_enter, clip->t_exit, [&](const IntervalBox& b) { ++calls; return ball_range(b); },
+                      ball_bounds, [&](double a, double b, const ShellCellBounds&) {
+                          EXPECT_GE(a, clip->t_enter);
+                          EXPECT_LE(b, clip->t_exit);
+                          EXPECT_LE(a, b);
+                          if (!runs.empty() && runs.back().hi == a) runs.back().hi = b;
+                          else runs.push_back({a, b});
+                          return true;
+                      });
     if (ranges) *ranges = calls;
     return runs;
 }
@@ -142,6 +157,32 @@ TEST(SurfaceShell, RunsAreThoseOfTheCellByCellWalkToTheBit) {
     }
 }
 
+TEST(SurfaceShell, EachCellsBoundsHoldTheFieldAndItsSlopeAlongTheLine) {
+    const SurfaceShell shell(kBox);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1);
+    int known = 0;
+    for (int i = 0; i < 500; ++i) {
+        const Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 3.0;
+        const Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.6 - o;
+        const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
+        if (!clip) continue;
+        shell.visit_cells(o, d, clip->t_enter, clip->t_exit, ball_range, ball_bounds,
+                          [&](double a, double b, const ShellCellBounds& cell) {
+                              if (!cell.known) return true;
+                              ++known;
+                              const Interval range = cell.range(o + d * a, o + d * b), slope = cell.slope(d);
+                              for (int k = 0; k <= 8; ++k) {
+                                  const Vec3d p = o + d * (a + (b - a) * (k < 8 ? fraction(random) : 1.0));
+                                  EXPECT_TRUE(range.contains(length(p) - kRadius)) << "line " << i;
+                                  EXPECT_TRUE(slope.contains(dot(p, d) / length(p))) << "line " << i;
+                              }
+                              return true;
+                          });
+    }
+    EXPECT_GT(known, 1000);
+}
+
 TEST(SurfaceShell, LinesThroughEmptyCornersHaveNoRuns) {
     const SurfaceShell shell(kBox);
     EXPECT_TRUE(runs_of(shell, {-2, 0.9, 0.9}, {1, 0, 0}).empty());  // along an edge, 1.27 from the centre
@@ -151,10 +192,11 @@ TEST(SurfaceShell, LinesThroughEmptyCornersHaveNoRuns) {
 TEST(SurfaceShell, AVisitThatReturnsFalseStopsTheWalk) {
     const SurfaceShell shell(kBox);
     int visits = 0;
-    const bool finished = shell.visit_runs({-2, 0, 0}, {1, 0, 0}, 1, 3, ball_range, [&](double, double) {
-        ++visits;
-        return false;
-    });
+    const bool finished =
+        shell.visit_cells({-2, 0, 0}, {1, 0, 0}, 1, 3, ball_range, ball_bounds, [&](double, double, const ShellCellBounds&) {
+            ++visits;
+            return false;
+        });
     EXPECT_FALSE(finished);
     EXPECT_EQ(visits, 1);
 }
