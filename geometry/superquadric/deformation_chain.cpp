@@ -106,10 +106,12 @@ bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes, Beyon
     return true;
 }
 
-IntervalBox DeformationChain::inverse_tangent(const InverseBoxes& boxes, IntervalBox tangent) const {
+Interval DeformationChain::gauge_slope(const InverseBoxes& boxes, IntervalBox tangent) const {
+    const IntervalBox gradient = shape_.gradient_range(boxes.stage[0]);
+    if (!gradient.x.is_finite() || !gradient.y.is_finite() || !gradient.z.is_finite()) return Interval::unbounded();
     for (std::size_t k = stages_.size(); k > 0; --k)
         tangent = std::visit([&](const auto& s) { return s.inverse_tangent(boxes.stage[k - 1], tangent); }, stages_[k - 1]);
-    return tangent;
+    return gradient.x * tangent.x + gradient.y * tangent.y + gradient.z * tangent.z;
 }
 
 std::optional<IntervalBox> DeformationChain::inverse_box(const IntervalBox& box, bool& clipped) const {

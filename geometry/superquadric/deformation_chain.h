@@ -64,9 +64,9 @@ public:
     // Walks `box` back through the stages into `boxes`; false when no part of it lies inside every stage box.
     bool inverse_boxes(IntervalBox box, InverseBoxes& boxes,
                        BeyondUndeformedBox beyond = BeyondUndeformedBox::Outside) const;
-    // For a curve q(t) in the walked box with q'(t) in `tangent`: a bound of the derivative of its undeformed
-    // points, valid where nothing was clipped.
-    IntervalBox inverse_tangent(const InverseBoxes& boxes, IntervalBox tangent) const;
+    // For a curve q(t) in the walked box with q'(t) in `tangent`: a bound of d/dt G(D⁻¹(q(t))), G the superellipsoid's
+    // gauge, valid where nothing was clipped; unbounded where the gauge's gradient is.
+    Interval gauge_slope(const InverseBoxes& boxes, IntervalBox tangent) const;
     // inverse_boxes' undeformed box (stage[0]), or nothing; `clipped` as there.
     std::optional<IntervalBox> inverse_box(const IntervalBox& box, bool& clipped) const;
     // The outward normal at path[size()] from the undeformed normal at path[0] (unit length).

@@ -59,11 +59,8 @@ ShellCellBounds Superquadric::cell_bounds(const IntervalBox& cell, const Vec3d& 
     constexpr DeformationChain::BeyondUndeformedBox kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
     DeformationChain::InverseBoxes walked;
     if (!deformation_.inverse_boxes(cell, walked, kBeyond) || walked.clipped) return bounds;
-    const IntervalBox gradient = shape_.gradient_range(walked.stage[0]);
     for (int k = 0; k < 3; ++k) {
-        const Vec3d axis(k == 0, k == 1, k == 2);
-        const IntervalBox tangent = deformation_.inverse_tangent(walked, IntervalBox::point(axis));
-        bounds.gradient[k] = gradient.x * tangent.x + gradient.y * tangent.y + gradient.z * tangent.z;
+        bounds.gradient[k] = deformation_.gauge_slope(walked, IntervalBox::point(Vec3d(k == 0, k == 1, k == 2)));
         if (!bounds.gradient[k].is_finite()) return bounds;
     }
     bounds.centre = centre;

@@ -43,14 +43,7 @@ Interval SuperquadricAlongRay::bound(double a, double b) const {
 Interval SuperquadricAlongRay::slope_bound(double a, double b) const {
     const DeformationChain::InverseBoxes* boxes = walked(a, b);
     if (!boxes || boxes->clipped) return Interval::unbounded();
-    const IntervalBox tangent = superquadric_.deformation().inverse_tangent(*boxes, IntervalBox::point(direction_));
-    const IntervalBox gradient = superquadric_.shape().gradient_range(boxes->stage[0]);
-    Interval slope{0, 0};
-    for (int k = 0; k < 3; ++k) {
-        if (!gradient[k].is_finite()) return Interval::unbounded();
-        slope = slope + gradient[k] * tangent[k];
-    }
-    return slope;
+    return superquadric_.deformation().gauge_slope(*boxes, IntervalBox::point(direction_));
 }
 
 }  // namespace isotrace
