@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geometry/superquadric/superquadric_shape.h"
+#include "renderer/core/input_error.h"
 #include "renderer/core/memory_budget.h"
 #include "renderer/core/ray.h"
 #include "renderer/params/transform_parser.h"
@@ -84,9 +85,12 @@ Superquadric parse_superquadric(const SceneNode& node) {
         }
     }
     // A deformed shape's surface shell grows as rays find its blocks: charged at its largest before any is found.
-    if (!chain.empty())
-        node.context().memory->charge(SurfaceShell::kMostHeapBytes, "the surface shell of a deformed superquadric",
-                                      node.location());
+    try {
+        if (!chain.empty())
+            node.context().memory->charge(SurfaceShell::kMostHeapBytes, "the surface shell of a deformed superquadric");
+    } catch (const InputError& error) {
+        node.fail_at("deform", error.problem());
+    }
     Superquadric result(shape, std::move(chain), placement);
     const IntervalBox b = result.bounds();
     if (std::max(max_component(abs(b.lower())), max_component(abs(b.upper()))) > kWorldLimit)

@@ -13,6 +13,7 @@
 #include "geometry/csg/csg_shape.h"
 #include "geometry/mesh/mesh_test_support.h"
 #include "geometry/superquadric/superquadric_test_support.h"
+#include "renderer/core/memory_budget.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/params/json_document.h"
 #include "renderer/params/scene_node.h"
@@ -322,6 +323,28 @@ TEST(SuperquadricScene, BadParametersAreInputErrorsNamingTheField) {
     expect_error(R"({"type": "superquadric", "superquadrics": []})", {"shape.superquadrics", "empty"});
     expect_error(R"({"type": "superquadric", "superquadrics": [{"radius": 1}]})", {"superquadrics[0]", "radius"});
     expect_error(R"({"type": "superquadric", "center": [2e18, 0, 0]})", {"1e18"});
+}
+
+// A deformed superquadric's surface shell grows while rays are traced: the loader charges its largest size before
+// any work, so a scene of many deformed shapes that could outgrow the budget is refused at its file and field.
+TEST(SuperquadricScene, DeformedShapesChargeTheirLargestShellToTheMemoryBudget) {
+    const auto load = [](const std::string& json, std::uint64_t limit) {
+        const JsonValue value = parse_json(json, "shape.json");
+        auto context = std::make_shared<SceneFileContext>();
+        context->file = "shape.json";
+        context->memory = std::make_shared<MemoryBudget>(limit);
+        shape_registry().create(SceneNode(value, "shape", context));
+        return context->memory;
+    };
+    const std::string undeformed = R"({"type": "superquadric", "superquadrics": [{}, {}, {}]})";
+    const std::string twisted = R"({"type": "superquadric", "superquadrics": [{"deform": [{"twist": 90}]},
+        {"deform": [{"twist": 90}]}, {"deform": [{"twist": 90}]}]})";
+    EXPECT_EQ(load(undeformed, 1 << 20)->charged_bytes(), 0u);
+    EXPECT_EQ(load(twisted, 4 * SurfaceShell::kMostHeapBytes)->charged_bytes(), 3 * SurfaceShell::kMostHeapBytes);
+    const std::string message =
+        mesh_test::input_error_message([&] { load(twisted, 2 * SurfaceShell::kMostHeapBytes + 1); });
+    EXPECT_NE(message.find("shape.superquadrics[2].deform"), std::string::npos) << message;
+    EXPECT_NE(message.find("surface shell"), std::string::npos) << message;
 }
 
 // A superquadric tells its first span from its entry and a point past it that the ray reaches inside: the entry bit
