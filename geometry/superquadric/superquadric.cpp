@@ -246,8 +246,8 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
     const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
     const auto bounds_of = [&](const IntervalBox& cell, const Vec3d& centre) { return cell_bounds(cell, centre); };
-    // g's sign at the end of the last cell's stretch, and its value when it was taken: the next stretch starts
-    // there when the run goes on.
+    // g's sign at the end of the last cell's stretch (its value, when taken, is among the recent values): the next
+    // stretch starts there when the run goes on.
     double known_t = std::numeric_limits<double>::quiet_NaN();
     bool known_inside = false;
     shell_.visit_cells(o, d, t0, t1, range, bounds_of, [&](double a, double b, const ShellCellBounds& cell) {
