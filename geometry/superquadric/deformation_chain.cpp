@@ -107,7 +107,17 @@ bool DeformationChain::inverse_boxes(IntervalBox box, InverseBoxes& boxes, Beyon
 }
 
 Interval DeformationChain::gauge_slope(const InverseBoxes& boxes, IntervalBox tangent) const {
+    return slope_with(boxes, shape_.gradient_range(boxes.stage[0]), tangent);
+}
+
+IntervalBox DeformationChain::gauge_gradient(const InverseBoxes& boxes) const {
     const IntervalBox gradient = shape_.gradient_range(boxes.stage[0]);
+    IntervalBox along_axes;
+    for (int k = 0; k < 3; ++k) along_axes[k] = slope_with(boxes, gradient, IntervalBox::point(Vec3d(k == 0, k == 1, k == 2)));
+    return along_axes;
+}
+
+Interval DeformationChain::slope_with(const InverseBoxes& boxes, const IntervalBox& gradient, IntervalBox tangent) const {
     if (!gradient.x.is_finite() || !gradient.y.is_finite() || !gradient.z.is_finite()) return Interval::unbounded();
     for (std::size_t k = stages_.size(); k > 0; --k)
         tangent = std::visit([&](const auto& s) { return s.inverse_tangent(boxes.stage[k - 1], tangent); }, stages_[k - 1]);

@@ -67,6 +67,8 @@ public:
     // For a curve q(t) in the walked box with q'(t) in `tangent`: a bound of d/dt G(D⁻¹(q(t))), G the superellipsoid's
     // gauge, valid where nothing was clipped; unbounded where the gauge's gradient is.
     Interval gauge_slope(const InverseBoxes& boxes, IntervalBox tangent) const;
+    // gauge_slope along the three coordinate axes: a bound of the gradient of G∘D⁻¹ over the walked box.
+    IntervalBox gauge_gradient(const InverseBoxes& boxes) const;
     // inverse_boxes' undeformed box (stage[0]), or nothing; `clipped` as there.
     std::optional<IntervalBox> inverse_box(const IntervalBox& box, bool& clipped) const;
     // The outward normal at path[size()] from the undeformed normal at path[0] (unit length).
@@ -80,6 +82,9 @@ private:
     template <class AtStage>
     std::optional<Vec3d> walk_inverse(const Vec3d& q, bool check_boxes, BeyondUndeformedBox beyond,
                                       AtStage&& at_stage) const;
+
+    // gauge_slope with the gauge's gradient range over the undeformed box already taken.
+    Interval slope_with(const InverseBoxes& boxes, const IntervalBox& gradient, IntervalBox tangent) const;
 
     // Recomputes boxes_ for the current stages (at construction only, so the cells need not be kept).
     void compute_stage_boxes();

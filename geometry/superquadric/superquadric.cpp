@@ -59,10 +59,8 @@ ShellCellBounds Superquadric::cell_bounds(const IntervalBox& cell, const Vec3d& 
     constexpr DeformationChain::BeyondUndeformedBox kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
     DeformationChain::InverseBoxes walked;
     if (!deformation_.inverse_boxes(cell, walked, kBeyond) || walked.clipped) return bounds;
-    for (int k = 0; k < 3; ++k) {
-        bounds.gradient[k] = deformation_.gauge_slope(walked, IntervalBox::point(Vec3d(k == 0, k == 1, k == 2)));
-        if (!bounds.gradient[k].is_finite()) return bounds;
-    }
+    bounds.gradient = deformation_.gauge_gradient(walked);
+    if (!bounds.gradient.x.is_finite() || !bounds.gradient.y.is_finite() || !bounds.gradient.z.is_finite()) return bounds;
     bounds.centre = centre;
     bounds.value = local_field(centre, kBeyond);
     bounds.known = true;
