@@ -24,7 +24,12 @@
 namespace isotrace {
 
 class SurfaceShell {
-    static constexpr int kBlock = 4;
+public:
+    static constexpr int kCellsPerAxis = 32;
+
+private:
+    static constexpr int kBlock = 4, kBlocksPerAxis = kCellsPerAxis / kBlock,
+                         kBlocks = kBlocksPerAxis * kBlocksPerAxis * kBlocksPerAxis;
     // What a block keeps of a shell cell's ShellCellBounds (the centre follows from the cell): the gradient's
     // bounds as floats rounded outward, an unknown gradient as a NaN value.
     struct CellEntry {
@@ -60,10 +65,8 @@ class SurfaceShell {
     };
 
 public:
-    static constexpr int kCellsPerAxis = 32;
     // The most a shell takes on the heap, once rays have found every block.
-    static constexpr std::size_t kMostHeapBytes = std::size_t(kCellsPerAxis / kBlock) * (kCellsPerAxis / kBlock) *
-                                                  (kCellsPerAxis / kBlock) * sizeof(Block);
+    static constexpr std::size_t kMostHeapBytes = std::size_t(kBlocks) * sizeof(Block);
 
     SurfaceShell() = default;
     explicit SurfaceShell(const IntervalBox& box) : box_(box) {
@@ -177,7 +180,6 @@ public:
     }
 
 private:
-    static constexpr int kBlocksPerAxis = kCellsPerAxis / kBlock, kBlocks = kBlocksPerAxis * kBlocksPerAxis * kBlocksPerAxis;
     struct CellIndex {
         int i, j, l;
     };
