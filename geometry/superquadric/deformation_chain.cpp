@@ -49,14 +49,13 @@ Vec3d DeformationChain::forward(const Vec3d& p) const {
     return q;
 }
 
-template <class AtStage>
+template <class Invert>
 std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_boxes, BeyondUndeformedBox beyond,
-                                                    AtStage&& at_stage) const {
+                                                    Invert&& invert) const {
     Vec3d point = q;
     for (std::size_t k = stages_.size(); k > 0; --k) {
         if (check_boxes && !boxes_[k].contains(point)) return std::nullopt;
-        point = std::visit([&](const auto& s) { return s.inverse(point); }, stages_[k - 1]);
-        at_stage(k - 1, point);
+        point = std::visit([&](const auto& s) { return invert(k - 1, s, point); }, stages_[k - 1]);
     }
     // Undeformed, no box is needed: the gauge exceeds 1 everywhere outside the superellipsoid's box, and a box
     // check would only turn the value at a ray's rounded entry point into the constant 1 (no slope for Newton). A
@@ -67,13 +66,22 @@ std::optional<Vec3d> DeformationChain::walk_inverse(const Vec3d& q, bool check_b
 }
 
 std::optional<Vec3d> DeformationChain::inverse(const Vec3d& q, BeyondUndeformedBox beyond) const {
-    return walk_inverse(q, true, beyond, [](std::size_t, const Vec3d&) {});
+    return walk_inverse(q, true, beyond, [](std::size_t, const auto& stage, const Vec3d& image) { return stage.inverse(image); });
 }
 
 std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velocity) const {
     Vec3d along = velocity;
-    const auto carry_back = [&](std::size_t stage, const Vec3d& preimage) {
-        along = std::visit([&](const auto& s) { return s.jacobian(preimage); }, stages_[stage]).solve(along);
+    // A stage that takes its inverse and Jacobian together shares their work (a twist's sine and cosine).
+    const auto carry_back = [&](std::size_t, const auto& stage, const Vec3d& image) {
+        if constexpr (requires { stage.inverse_and_jacobian(image); }) {
+            const auto [preimage, jacobian] = stage.inverse_and_jacobian(image);
+            along = jacobian.solve(along);
+            return preimage;
+        } else {
+            const Vec3d preimage = stage.inverse(image);
+            along = stage.jacobian(preimage).solve(along);
+            return preimage;
+        }
     };
     const std::optional<Vec3d> point = walk_inverse(q, true, BeyondUndeformedBox::Gauge, carry_back);
     if (point) velocity = along;
@@ -83,8 +91,9 @@ std::optional<Vec3d> DeformationChain::inverse_along(const Vec3d& q, Vec3d& velo
 DeformationChain::Path DeformationChain::inverse_path(const Vec3d& q) const {
     Path path;
     path[stages_.size()] = q;
-    walk_inverse(q, false, BeyondUndeformedBox::Outside,
-                 [&](std::size_t stage, const Vec3d& preimage) { path[stage] = preimage; });
+    walk_inverse(q, false, BeyondUndeformedBox::Outside, [&](std::size_t stage, const auto& s, const Vec3d& image) {
+        return path[stage] = s.inverse(image);
+    });
     return path;
 }
 

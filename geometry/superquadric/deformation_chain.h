@@ -75,13 +75,13 @@ public:
     Vec3d deform_normal(const Path& path, const Vec3d& undeformed_normal) const;
 
 private:
-    // The shared inverse walk, last stage first: hands each stage's preimage to at_stage(stage, preimage) and
-    // returns the undeformed point; nullopt at the first stage box that does not contain the point when
+    // The shared inverse walk, last stage first: each stage's preimage is invert(index, stage, image), and the
+    // walk returns the undeformed point; nullopt at the first stage box that does not contain the point when
     // `check_boxes` (the undeformed one as `beyond` says). Keeps only the current point (the search's point
     // evaluations fill no path).
-    template <class AtStage>
+    template <class Invert>
     std::optional<Vec3d> walk_inverse(const Vec3d& q, bool check_boxes, BeyondUndeformedBox beyond,
-                                      AtStage&& at_stage) const;
+                                      Invert&& invert) const;
 
     // gauge_slope with the gauge's gradient range over the undeformed box already taken.
     Interval slope_with(const InverseBoxes& boxes, const IntervalBox& gradient, IntervalBox tangent) const;

@@ -88,6 +88,24 @@ TEST(SuperquadricDeformation, JacobiansMatchFiniteDifferences) {
     }
 }
 
+// The twist's inverse and Jacobian from one sine and cosine are its separate ones bit for bit (they rely on sincos
+// being odd in the sine and even in the cosine), at rates of both signs turning by up to many whole turns.
+TEST(SuperquadricDeformation, TheTwistsInverseAndJacobianTogetherAreTheSeparateOnes) {
+    std::mt19937 random(15);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (const double rate : {1.2, -0.7, 40.0, -1e-9, 3e4}) {
+        const Twist twist(rate, kRadii.z);
+        for (int i = 0; i < 2000; ++i) {
+            const Vec3d q{kRadii.x * unit(random), kRadii.y * unit(random), kRadii.z * unit(random)};
+            const auto [preimage, jacobian] = twist.inverse_and_jacobian(q);
+            const Vec3d expected = twist.inverse(q);
+            const Jacobian separate = twist.jacobian(expected);
+            ASSERT_EQ(preimage, expected) << rate;
+            for (int k = 0; k < 3; ++k) ASSERT_EQ(jacobian.column[k], separate.column[k]) << rate << " column " << k;
+        }
+    }
+}
+
 // A curve's velocity carried back through random chains is the derivative of the inverse along it (Newton steps of
 // the ray search in the undeformed frame), and the point is the inverse's.
 TEST(SuperquadricDeformation, InverseAlongCarriesVelocitiesBack) {

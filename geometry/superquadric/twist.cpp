@@ -2,20 +2,12 @@
 
 #include <cmath>
 
-#include "renderer/math/sin_cos.h"
-
 namespace isotrace {
 
-Vec3d Twist::rotate(const Vec3d& p, double theta) {
-    const auto [s, c] = sin_cos(theta);
-    return {p.x * c - p.y * s, p.x * s + p.y * c, p.z};
-}
-
-Jacobian Twist::jacobian(const Vec3d& p) const {
-    const double theta = angle(p.z);
-    const auto [s, c] = sin_cos(theta);
-    const Vec3d q = rotate(p, theta);
-    return {{{c, s, 0}, {-s, c, 0}, {-rate_ * q.y, rate_ * q.x, 1}}};
+// `at` is θ(p.z)'s: the columns are the turn's, and the turn's rate per height moves q = forward(p) by rate·(−y, x).
+Jacobian Twist::jacobian_at(const Vec3d& p, SinCos at) const {
+    const Vec3d q = turned(p, at);
+    return {{{at.cos, at.sin, 0}, {-at.sin, at.cos, 0}, {-rate_ * q.y, rate_ * q.x, 1}}};
 }
 
 // The inverse turns q by φ = −θ(z), and φ changes with z at −rate: the turned tangent plus the point's own

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "renderer/math/interval.h"
+#include "renderer/math/sin_cos.h"
 #include "geometry/superquadric/jacobian.h"
 
 namespace isotrace {
@@ -12,9 +13,21 @@ class Twist {
 public:
     Twist(double rate, double half_height) : rate_(rate), half_height_(half_height) {}
 
-    Vec3d forward(const Vec3d& p) const { return rotate(p, angle(p.z)); }
-    Vec3d inverse(const Vec3d& q) const { return rotate(q, -angle(q.z)); }
-    Jacobian jacobian(const Vec3d& p) const;
+    Vec3d forward(const Vec3d& p) const { return turned(p, sin_cos(angle(p.z))); }
+    Vec3d inverse(const Vec3d& q) const { return turned(q, sin_cos(-angle(q.z))); }
+    Jacobian jacobian(const Vec3d& p) const { return jacobian_at(p, sin_cos(angle(p.z))); }
+    // inverse(q) and the Jacobian there, bit for bit, from one sine and cosine: θ is the same at both points (a
+    // twist keeps z), and sincos is odd in the sine and even in the cosine, so the inverse's turn by −θ takes
+    // them negated.
+    struct InverseAndJacobian {
+        Vec3d preimage;
+        Jacobian jacobian;
+    };
+    InverseAndJacobian inverse_and_jacobian(const Vec3d& q) const {
+        const SinCos at = sin_cos(angle(q.z));
+        const Vec3d p = turned(q, {-at.sin, at.cos});
+        return {p, jacobian_at(p, at)};
+    }
     IntervalBox forward_box(const IntervalBox& box) const { return rotate_box(box, 1); }
     IntervalBox inverse_box(const IntervalBox& box) const { return rotate_box(box, -1); }
     // Bounds d/dt of inverse(q(t)) for q' ∈ `tangent`, where `preimage` bounds the inverse points.
@@ -26,7 +39,11 @@ public:
 
 private:
     double angle(double z) const { return rate_ * (z + half_height_); }
-    static Vec3d rotate(const Vec3d& p, double theta);
+    // p turned about z by the angle of `at`.
+    static Vec3d turned(const Vec3d& p, SinCos at) {
+        return {p.x * at.cos - p.y * at.sin, p.x * at.sin + p.y * at.cos, p.z};
+    }
+    Jacobian jacobian_at(const Vec3d& p, SinCos at) const;
     // The box turned by `sign`·θ(z): interval rotation, cut down to the disc the box's corners reach.
     IntervalBox rotate_box(const IntervalBox& box, double sign) const;
 
