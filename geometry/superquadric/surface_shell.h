@@ -58,10 +58,20 @@ private:
             return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
         }
     };
-    // A block's 64 cells: which can hold the surface (the bits of one word), and what is known of g over those.
+    // What is known of g over a block's 64 cells, where they can hold the surface.
     struct Block {
-        std::uint64_t cells = 0;
         std::array<CellEntry, kBlock * kBlock * kBlock> entries{};
+    };
+    // A block, once found, and which of its cells can hold the surface (the bits of one word). The words lie side
+    // by side with the pointers, so that the walk reads them without touching the blocks, which lie apart on the
+    // heap: it reaches a block only for the entry of a surface cell.
+    struct Slot {
+        std::atomic<const Block*> block{nullptr};
+        std::atomic<std::uint64_t> cells{0};  // stored before `block` is published
+    };
+    struct FoundBlock {
+        const Block* block;
+        std::uint64_t cells;
     };
 
 public:
@@ -79,8 +89,9 @@ public:
         box_ = other.box_;
         std::copy(std::begin(other.cell_size_), std::end(other.cell_size_), std::begin(cell_size_));
         for (int b = 0; b < kBlocks; ++b) {
-            const Block* block = other.blocks_[b].load(std::memory_order_acquire);
-            blocks_[b].store(block && block != empty_block() ? new Block(*block) : block, std::memory_order_relaxed);
+            const Block* block = other.slots_[b].block.load(std::memory_order_acquire);
+            slots_[b].cells.store(other.slots_[b].cells.load(std::memory_order_relaxed), std::memory_order_relaxed);
+            slots_[b].block.store(block && block != empty_block() ? new Block(*block) : block, std::memory_order_relaxed);
         }
         return *this;
     }
@@ -138,14 +149,14 @@ public:
         double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
         // The surface bits and cell bounds of the block the walk is in, looked up again only when it enters another.
         int block_index = -1;
-        const Block* block = nullptr;
+        FoundBlock block{};
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
             const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
             if (const int index = block_of(cell); index != block_index)
-                block_index = index, block = &find_block(cell, range, cell_bounds);
-            const bool surface = (block->cells >> bit(cell)) & 1;
+                block_index = index, block = find_block(cell, range, cell_bounds);
+            const bool surface = (block.cells >> bit(cell)) & 1;
             int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
-            if (block->cells == 0) {
+            if (block.cells == 0) {
                 // No cell of this block holds the surface: step straight to where the line leaves the block, the
                 // cells and planes on the way taken as the cell by cell walk takes them (the same plane formula,
                 // ties to the lower axis), so that the runs after it are the same to the bit.
@@ -168,7 +179,7 @@ public:
                 across[axis] = block_exit;
             }
             const double leave = std::min(across[axis], t1);
-            if (surface && !add_cell(enter, std::max(enter, leave), block->entries[bit(cell)].bounds(centre(cell)), !in_run))
+            if (surface && !add_cell(enter, std::max(enter, leave), block.block->entries[bit(cell)].bounds(centre(cell)), !in_run))
                 return false;
             in_run = surface;
             cell_of[axis] += along[axis] > 0 ? 1 : -1;
@@ -202,9 +213,10 @@ private:
 
     // The block that holds cell c, found when first asked for.
     template <class Range, class CellBounds>
-    const Block& find_block(CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
-        std::atomic<const Block*>& slot = blocks_[block_of(c)];
-        if (const Block* known = slot.load(std::memory_order_acquire)) return *known;
+    FoundBlock find_block(CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
+        Slot& slot = slots_[block_of(c)];
+        if (const Block* known = slot.block.load(std::memory_order_acquire))
+            return {known, slot.cells.load(std::memory_order_relaxed)};
         const CellIndex first{c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock};
         const auto can_hold_surface = [&](CellIndex from, int cells) {
             const IntervalBox lower = cell(from), upper = cell({from.i + cells - 1, from.j + cells - 1, from.l + cells - 1});
@@ -212,6 +224,7 @@ private:
             return !(g.lo > 0 || g.hi < 0);
         };
         const Block* found = empty_block();
+        std::uint64_t cells = 0;
         if (can_hold_surface(first, kBlock)) {
             Block* block = new Block;
             for (int i = 0; i < kBlock; ++i)
@@ -219,18 +232,20 @@ private:
                     for (int l = 0; l < kBlock; ++l) {
                         const CellIndex at{first.i + i, first.j + j, first.l + l};
                         if (!can_hold_surface(at, 1)) continue;
-                        block->cells |= std::uint64_t(1) << bit(at);
+                        cells |= std::uint64_t(1) << bit(at);
                         IntervalBox around = cell(at);  // enlarged by far more than a run's padding
                         for (int k = 0; k < 3; ++k) around[k] = {around[k].lo - 1e-6 * cell_size_[k], around[k].hi + 1e-6 * cell_size_[k]};
                         block->entries[bit(at)] = CellEntry::of(cell_bounds(around, centre(at)));
                     }
-            if (block->cells != 0) found = block;
+            if (cells != 0) found = block;
             else delete block;
         }
+        // A thread that loses the race stores the same word.
+        slot.cells.store(cells, std::memory_order_relaxed);
         const Block* expected = nullptr;
-        if (slot.compare_exchange_strong(expected, found, std::memory_order_acq_rel)) return *found;
+        if (slot.block.compare_exchange_strong(expected, found, std::memory_order_acq_rel)) return {found, cells};
         if (found != empty_block()) delete found;
-        return *expected;
+        return {expected, cells};
     }
 
     IntervalBox cell(CellIndex c) const {
@@ -246,15 +261,15 @@ private:
     }
 
     void release() {
-        for (std::atomic<const Block*>& slot : blocks_) {
-            const Block* block = slot.exchange(nullptr, std::memory_order_acq_rel);
+        for (Slot& slot : slots_) {
+            const Block* block = slot.block.exchange(nullptr, std::memory_order_acq_rel);
             if (block != empty_block()) delete block;
         }
     }
 
     IntervalBox box_;
     double cell_size_[3] = {0, 0, 0};
-    mutable std::array<std::atomic<const Block*>, kBlocks> blocks_{};
+    mutable std::array<Slot, kBlocks> slots_{};
 };
 
 }  // namespace isotrace
