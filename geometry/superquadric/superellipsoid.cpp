@@ -99,12 +99,14 @@ Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Ve
 // bound the exact gauge over the box, and the computed one too (which need not be monotone in its last bits).
 constexpr double kGaugeRelativeError = 0x1p-46;
 
-Interval Superellipsoid::gauge_range(const IntervalBox& box) const {
-    return {least_gauge(box), gauge(box.magnitude().upper()) * (1 + kGaugeRelativeError)};
-}
+Interval Superellipsoid::gauge_range(const IntervalBox& box) const { return {least_gauge(box), most_gauge(box)}; }
 
 double Superellipsoid::least_gauge(const IntervalBox& box) const {
     return gauge(box.magnitude().lower()) * (1 - kGaugeRelativeError);
+}
+
+double Superellipsoid::most_gauge(const IntervalBox& box) const {
+    return gauge(box.magnitude().upper()) * (1 + kGaugeRelativeError);
 }
 
 namespace {

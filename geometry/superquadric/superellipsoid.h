@@ -49,8 +49,9 @@ public:
     // The range of the gauge over the (signed) points of `box`: the values at the two extreme corners of its box of
     // magnitudes, widened outward by the gauge's rounding error.
     Interval gauge_range(const IntervalBox& box) const;
-    // gauge_range's lower end alone.
+    // gauge_range's lower and upper ends alone.
     double least_gauge(const IntervalBox& box) const;
+    double most_gauge(const IntervalBox& box) const;
     // A bound of the gauge's gradient over the (signed) points of `box`; components may be infinite (exponents
     // above 2 near the coordinate planes).
     IntervalBox gradient_range(const IntervalBox& box) const;

@@ -50,8 +50,9 @@ Interval Superquadric::local_field_range(const IntervalBox& local) const {
 
 Interval Superquadric::field_range(const DeformationChain::InverseBoxes& walked) const {
     const IntervalBox& undeformed = walked.stage[0];
-    const Interval gauge = shape_.gauge_range(undeformed);
-    return Interval{gauge.lo - 1, walked.clipped ? std::numeric_limits<double>::infinity() : gauge.hi - 1};
+    const double lo = shape_.least_gauge(undeformed) - 1;
+    if (walked.clipped || lo >= 0) return {lo, std::numeric_limits<double>::infinity()};
+    return {lo, shape_.most_gauge(undeformed) - 1};
 }
 
 ShellCellBounds Superquadric::cell_bounds(const IntervalBox& cell, const Vec3d& centre) const {

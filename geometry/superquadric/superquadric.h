@@ -59,7 +59,9 @@ public:
     double local_field(const Vec3d& local, DeformationChain::BeyondUndeformedBox beyond =
                                                DeformationChain::BeyondUndeformedBox::Outside) const;
     // Contains local_field over a box of the local deformed frame (interval inverse of the chain, then the gauge's
-    // range; points outside a stage box count as outside, 1).
+    // range; points outside a stage box count as outside, 1). What its callers ask is whether zero is excluded: the
+    // upper end, which only tells a box inside the object, is left infinite where the lower one is already at least
+    // zero or part of the box was clipped (outside the object), without the gauge at the box's far corner.
     Interval local_field_range(const IntervalBox& local) const;
     // The same over a box whose inverse walk through the chain found some of it inside every stage box.
     Interval field_range(const DeformationChain::InverseBoxes& walked) const;
