@@ -29,6 +29,7 @@ struct BenchArguments {
     std::vector<std::string> scenes;  // of the blob comparison; default below
     std::vector<int> threads;         // default: all cores
     int repeats = 3;
+    double min_run_time = 0;
     std::string resolution = "320x180";
     std::string filter = ".";
     bool quick = false;
@@ -72,9 +73,13 @@ std::vector<std::string> names_of(const std::vector<Workload>& workloads) {
 }
 
 nlohmann::json settings_json(const BenchArguments& args, const SuiteSettings& suite) {
-    nlohmann::json settings = {{"threads", suite.threads},   {"repeats", suite.repeats},
-                               {"warm_up_runs", 1},          {"quick", args.quick},
-                               {"filter", args.filter},      {"path_spp", suite.path_spp},
+    nlohmann::json settings = {{"threads", suite.threads},
+                               {"repeats", suite.repeats},
+                               {"min_run_seconds", suite.min_run_seconds},
+                               {"warm_up_runs", 1},
+                               {"quick", args.quick},
+                               {"filter", args.filter},
+                               {"path_spp", suite.path_spp},
                                {"mesh_depth", suite.mesh_depth}};
     settings["resolution"] = suite.resolution
                                  ? nlohmann::json::array({suite.resolution->width, suite.resolution->height})
@@ -108,6 +113,7 @@ int run_bench(BenchArguments args) {
     std::sort(suite.threads.begin(), suite.threads.end());
     suite.threads.erase(std::unique(suite.threads.begin(), suite.threads.end()), suite.threads.end());
     suite.repeats = args.repeats;
+    suite.min_run_seconds = args.min_run_time;
     if (args.resolution != "scene") suite.resolution = parse_resolution(args.resolution, "--resolution");
     suite.path_spp = args.quick ? 1 : 4;
     suite.mesh_depth = args.quick ? 6 : 8;
@@ -127,6 +133,7 @@ int run_bench(BenchArguments args) {
                                  "\"" + scene + "\" does not exist (run from the source tree or name the scenes)");
         comparison.threads = suite.threads;
         comparison.repeats = suite.repeats;
+        comparison.min_run_seconds = suite.min_run_seconds;
         comparison.resolution = suite.resolution;
         comparison.tessellation = args.tessellation;
     }
@@ -160,7 +167,7 @@ int run_bench(BenchArguments args) {
         report["scaling"] = {{"threads", threads},
                              {"resolution", {resolution.width, resolution.height}},
                              {"points", scaling_json(run_scaling(scaling_counts(args.scaling_max), resolution, threads,
-                                                                 suite.repeats, log))}};
+                                                                 suite.repeats, suite.min_run_seconds, log))}};
     }
     if (run_comparison) report["blob_comparison"] = benchmark_json(comparison, run_blob_benchmark(comparison, log));
 
@@ -190,6 +197,14 @@ CommandRunner add_bench_options(CLI::App* command) {
     args->repeats_option = command->add_option("--repeats", args->repeats, "Timed runs per measurement, after one warm-up run")
                                ->capture_default_str()
                                ->check(CLI::Range(1, 1000));
+    command
+        ->add_option("--min-run-time", args->min_run_time,
+                     "Seconds a timed run lasts at least: a shorter one repeats its work and counts the time per pass "
+                     "(0: one pass). Repeating the same rays keeps their part of the scene in the caches, as a long "
+                     "render does; one pass of a few thousand rays after another scene's turn starts from cold caches")
+        ->type_name("SECONDS")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 60.0));
     args->resolution_option =
         command->add_option("--resolution", args->resolution, "WIDTHxHEIGHT of the ray grid and image, or \"scene\"")
             ->type_name("WIDTHxHEIGHT|scene")

@@ -15,6 +15,7 @@ nlohmann::json runs_json(const std::vector<RayCastTiming>& timings) {
         runs.push_back({{"threads", timing.threads},
                         {"median_seconds", timing.median_seconds()},
                         {"seconds", timing.seconds},
+                        {"passes", timing.passes},
                         {"mrays_per_second", timing.mrays_per_second()},
                         {"ns_per_ray", timing.nanoseconds_per_ray()}});
     return runs;

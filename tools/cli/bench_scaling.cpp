@@ -68,7 +68,8 @@ std::string scaling_scene(std::size_t elements, const RasterSize& resolution) {
 }
 
 std::vector<ScalingPoint> run_scaling(const std::vector<std::size_t>& counts, const RasterSize& resolution,
-                                      int threads, int repeats, const std::function<void(const std::string&)>& log) {
+                                      int threads, int repeats, double min_run_seconds,
+                                      const std::function<void(const std::string&)>& log) {
     std::vector<ScalingPoint> points;
     for (std::size_t count : counts) {
         log("scaling: " + std::to_string(count) + " elements");
@@ -76,7 +77,7 @@ std::vector<ScalingPoint> run_scaling(const std::vector<std::size_t>& counts, co
                                  ("isotrace-bench-" + std::to_string(getpid()) + "-" + std::to_string(count) + ".json")};
         write_text_output(file.path.string(), scaling_scene(count, resolution));
         const std::unique_ptr<LoadedScene> scene = load_scene(file.path.string());
-        RayCastTiming timing = time_primary_rays({scene.get()}, threads, 1 + repeats).front();
+        RayCastTiming timing = time_primary_rays({scene.get()}, threads, 1 + repeats, min_run_seconds).front();
         timing.seconds.erase(timing.seconds.begin());  // the warm-up
         const BuildStatistics& build = scene->scene->build_statistics();
         ScalingPoint point;

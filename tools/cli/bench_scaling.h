@@ -27,8 +27,10 @@ std::vector<std::size_t> scaling_counts(std::size_t max_elements);
 // The generated scene of `elements` blobs (JSON text in the scene format).
 std::string scaling_scene(std::size_t elements, const RasterSize& resolution);
 
-// Times primary rays on `threads` threads, warm-up plus `repeats` runs per count.
+// Times primary rays on `threads` threads, warm-up plus `repeats` runs per count, each run at least
+// `min_run_seconds` long (time_taking_turns).
 std::vector<ScalingPoint> run_scaling(const std::vector<std::size_t>& counts, const RasterSize& resolution,
-                                      int threads, int repeats, const std::function<void(const std::string&)>& log);
+                                      int threads, int repeats, double min_run_seconds,
+                                      const std::function<void(const std::string&)>& log);
 
 }  // namespace isotrace::cli

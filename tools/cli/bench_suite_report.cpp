@@ -29,6 +29,7 @@ nlohmann::json workload_json(const WorkloadResult& result) {
         const double gain = speedup(throughput.median, base_throughput);
         runs.push_back({{"threads", timing.threads},
                         {"seconds", timing.seconds},
+                        {"passes", timing.passes},
                         {"median_seconds", timing.median_seconds()},
                         {"throughput",
                          {{"median", throughput.median},

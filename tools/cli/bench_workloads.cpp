@@ -60,6 +60,7 @@ public:
         for (int threads : settings_.threads) {
             RayCastTiming timing = time(kind, threads);
             timing.seconds.erase(timing.seconds.begin(), timing.seconds.begin() + kWarmUpRuns);
+            timing.passes.erase(timing.passes.begin(), timing.passes.begin() + kWarmUpRuns);
             result.timings.push_back(std::move(timing));
         }
         result.work_per_run = double(result.timings.front().rays());
@@ -68,14 +69,17 @@ public:
 private:
     RayCastTiming time(WorkloadKind kind, int threads) {
         const int runs = kWarmUpRuns + settings_.repeats;
+        const double min_seconds = settings_.min_run_seconds;
         const std::vector<const LoadedScene*> scenes = {scene_.get()};
         switch (kind) {
-            case WorkloadKind::PrimaryRays: return time_primary_rays(scenes, threads, runs).front();
+            case WorkloadKind::PrimaryRays: return time_primary_rays(scenes, threads, runs, min_seconds).front();
             case WorkloadKind::ShadowRays:
-                return time_secondary_rays(scenes, secondary().shadow, SecondaryQuery::Occlusion, threads, runs)
+                return time_secondary_rays(scenes, secondary().shadow, SecondaryQuery::Occlusion, threads, runs,
+                                           min_seconds)
                     .front();
             case WorkloadKind::BounceRays:
-                return time_secondary_rays(scenes, secondary().bounce, SecondaryQuery::NearestHit, threads, runs)
+                return time_secondary_rays(scenes, secondary().bounce, SecondaryQuery::NearestHit, threads, runs,
+                                           min_seconds)
                     .front();
             case WorkloadKind::PathTracer:
                 return time_taking_turns(1, threads, runs, [&](RayCastTiming& timing, std::size_t) {
@@ -84,7 +88,7 @@ private:
                     const RenderResult render = render_scene(*scene_, options);
                     timing.ray_count = std::size_t(scene_->film.crop.width()) * std::size_t(scene_->film.crop.height()) *
                                        std::size_t(render.completed_spp);
-                }).front();
+                }, min_seconds).front();
             case WorkloadKind::MarchingCubes:
             case WorkloadKind::DualContouring:
             case WorkloadKind::SphericalDualContouring: {
@@ -95,7 +99,7 @@ private:
                 options.depth = settings_.mesh_depth;
                 return time_taking_turns(1, threads, runs, [&](RayCastTiming& timing, std::size_t) {
                     timing.ray_count = polygonize_field(*field, options).mesh.triangles.size();
-                }).front();
+                }, min_seconds).front();
             }
             case WorkloadKind::BlobComparison: break;
         }

@@ -49,6 +49,7 @@ struct SuiteSettings {
     std::optional<RasterSize> resolution;  // of the ray and path workloads; default: each scene's own
     int path_spp = 4;                      // samples per pixel of one path tracer run
     int mesh_depth = 8;                    // octree depth of the polygoniser workloads
+    double min_run_seconds = 0;            // a timed run repeats its work until it lasts this long (time_taking_turns)
 };
 
 struct WorkloadResult {

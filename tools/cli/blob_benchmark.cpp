@@ -128,10 +128,12 @@ void compare_answers(SecondaryBenchmark& kind) {
 }
 
 void time_secondary_kind(const std::vector<const LoadedScene*>& scenes, const std::vector<Ray>& rays,
-                         SecondaryQuery query, int threads, int repeats, SecondaryBenchmark& kind) {
+                         SecondaryQuery query, int threads, const BlobBenchmarkSettings& settings,
+                         SecondaryBenchmark& kind) {
     kind.rays = rays.size();
     if (rays.empty()) return;  // nothing to time: no runs
-    std::vector<RayCastTiming> timings = time_secondary_rays(scenes, rays, query, threads, repeats);
+    std::vector<RayCastTiming> timings =
+        time_secondary_rays(scenes, rays, query, threads, settings.repeats, settings.min_run_seconds);
     kind.direct.push_back(std::move(timings[0]));
     kind.tessellated.push_back(std::move(timings[1]));
 }
@@ -170,13 +172,12 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
         for (int threads : settings.threads) {
             log(path + ": " + std::to_string(settings.repeats) + " run(s) each on " + std::to_string(threads) +
                 " thread(s)");
-            std::vector<RayCastTiming> timings = time_primary_rays(scenes, threads, settings.repeats);
+            std::vector<RayCastTiming> timings =
+                time_primary_rays(scenes, threads, settings.repeats, settings.min_run_seconds);
             result.direct.timings.push_back(std::move(timings[0]));
             result.tessellated.timings.push_back(std::move(timings[1]));
-            time_secondary_kind(scenes, secondary.shadow, SecondaryQuery::Occlusion, threads, settings.repeats,
-                                result.shadow);
-            time_secondary_kind(scenes, secondary.bounce, SecondaryQuery::NearestHit, threads, settings.repeats,
-                                result.bounce);
+            time_secondary_kind(scenes, secondary.shadow, SecondaryQuery::Occlusion, threads, settings, result.shadow);
+            time_secondary_kind(scenes, secondary.bounce, SecondaryQuery::NearestHit, threads, settings, result.bounce);
         }
         compare_images(result.direct.timings.front().depth, result.tessellated.timings.front().depth, result);
         compare_answers(result.shadow);

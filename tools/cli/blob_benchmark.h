@@ -20,6 +20,7 @@ struct BlobBenchmarkSettings {
     std::vector<std::string> scenes;
     std::vector<int> threads;
     int repeats = 3;
+    double min_run_seconds = 0;  // a timed run repeats its rays until it lasts this long (time_taking_turns)
     std::optional<RasterSize> resolution;  // default: each scene's own
     TessellationOptions tessellation;
 };

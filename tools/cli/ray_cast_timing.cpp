@@ -12,32 +12,43 @@
 namespace isotrace::cli {
 
 std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, int repeats,
-                                             const std::function<void(RayCastTiming&, std::size_t)>& trace) {
+                                             const std::function<void(RayCastTiming&, std::size_t)>& trace,
+                                             double min_run_seconds) {
     std::vector<RayCastTiming> timings(scenes);
     for (RayCastTiming& timing : timings) timing.threads = threads;
     tbb::task_arena arena(threads);
     for (int run = 0; run < repeats; ++run)
         for (std::size_t i = 0; i < scenes; ++i) {
             const auto start = std::chrono::steady_clock::now();
-            arena.execute([&] { trace(timings[i], i); });
-            timings[i].seconds.push_back(
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            int passes = 0;
+            double seconds = 0;
+            do {
+                arena.execute([&] { trace(timings[i], i); });
+                ++passes;
+                seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            } while (seconds < min_run_seconds && passes < kMaxPasses);
+            timings[i].seconds.push_back(seconds / passes);
+            timings[i].passes.push_back(passes);
         }
     return timings;
 }
 
 double RayCastTiming::median_seconds() const { return median(seconds); }
 
-std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats) {
-    return time_taking_turns(scenes.size(), threads, repeats, [&](RayCastTiming& timing, std::size_t i) {
-        timing.depth = render_depth_map(*scenes[i]);
-        timing.ray_count = timing.depth.depth.size();
-    });
+std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats,
+                                             double min_run_seconds) {
+    return time_taking_turns(
+        scenes.size(), threads, repeats,
+        [&](RayCastTiming& timing, std::size_t i) {
+            timing.depth = render_depth_map(*scenes[i]);
+            timing.ray_count = timing.depth.depth.size();
+        },
+        min_run_seconds);
 }
 
 std::vector<RayCastTiming> time_secondary_rays(const std::vector<const LoadedScene*>& scenes,
                                                const std::vector<Ray>& rays, SecondaryQuery query, int threads,
-                                               int repeats) {
+                                               int repeats, double min_run_seconds) {
     constexpr std::size_t kRaysPerTask = 256;  // like a row of the depth map: enough work to amortise a task
     return time_taking_turns(scenes.size(), threads, repeats, [&](RayCastTiming& timing, std::size_t i) {
         const RenderScene& scene = *scenes[i]->scene;
@@ -51,7 +62,7 @@ std::vector<RayCastTiming> time_secondary_rays(const std::vector<const LoadedSce
                                     ? scene.occluded(rays[r])
                                     : scene.intersect(rays[r], RayKind::Secondary).has_value();
         });
-    });
+    }, min_run_seconds);
 }
 
 }  // namespace isotrace::cli

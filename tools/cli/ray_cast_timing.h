@@ -15,7 +15,8 @@ namespace isotrace::cli {
 struct RayCastTiming {
     int threads = 1;
     std::size_t ray_count = 0;
-    std::vector<double> seconds;  // one per run
+    std::vector<double> seconds;  // one per run: the time of one pass over the rays
+    std::vector<int> passes;      // one per run: how many passes the run took to last its minimum time
     DepthMap depth;               // primary rays, of the last run: which pixels hit, and where
     std::vector<std::uint8_t> hit;  // secondary rays, of the last run: 1 where the ray was occluded / hit
 
@@ -28,19 +29,24 @@ struct RayCastTiming {
 // Runs trace(timing, i) for every i < `scenes`, `repeats` times with the scenes taking turns, each call timed
 // inside a TBB arena of `threads` threads (the timing's seconds get one entry per run; trace sets ray_count and
 // its results). The other workloads of isotrace bench (path tracing, polygonising) time their runs with it too.
+// A run calls trace again until it has lasted `min_run_seconds` (at most kMaxPasses times) and counts the time
+// per pass: a run of a millisecond measures a thread pool's wake-up as much as the rays.
+constexpr int kMaxPasses = 10000;
 std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, int repeats,
-                                             const std::function<void(RayCastTiming&, std::size_t)>& trace);
+                                             const std::function<void(RayCastTiming&, std::size_t)>& trace,
+                                             double min_run_seconds = 0);
 
 // `repeats` runs of every scene inside a TBB arena of `threads` threads, one timing per scene. Within each repeat
 // the scenes take turns, so that a machine whose speed drifts (a shared VM) slows them alike and the ratios of
 // run i stay comparable.
-std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats);
+std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats,
+                                             double min_run_seconds);
 
 enum class SecondaryQuery { Occlusion, NearestHit };
 
 // The same `rays` traced in every scene with `query`, taking turns as above.
 std::vector<RayCastTiming> time_secondary_rays(const std::vector<const LoadedScene*>& scenes,
                                                const std::vector<Ray>& rays, SecondaryQuery query, int threads,
-                                               int repeats);
+                                               int repeats, double min_run_seconds);
 
 }  // namespace isotrace::cli
