@@ -996,6 +996,8 @@ import json, sys
 report = json.load(open(sys.argv[1]))["blob_comparison"]
 scene = report["scenes"][0]
 problems = []
+# Timed runs come after a warm-up, as in the suite (the first run builds what rays find lazily).
+if report["warm_up_runs"] != 1 or report["repeats"] != 1: problems.append("warm-up %r" % report["warm_up_runs"])
 if scene["elements"] != 3: problems.append("elements %r" % scene["elements"])
 if scene["rays"] != 24 * 16: problems.append("rays %r" % scene["rays"])
 if [r["threads"] for r in scene["direct"]["runs"]] != [1, 2]: problems.append("direct thread counts")

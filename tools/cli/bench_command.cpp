@@ -76,7 +76,7 @@ nlohmann::json settings_json(const BenchArguments& args, const SuiteSettings& su
     nlohmann::json settings = {{"threads", suite.threads},
                                {"repeats", suite.repeats},
                                {"min_run_seconds", suite.min_run_seconds},
-                               {"warm_up_runs", 1},
+                               {"warm_up_runs", kWarmUpRuns},
                                {"quick", args.quick},
                                {"filter", args.filter},
                                {"path_spp", suite.path_spp},

@@ -111,6 +111,8 @@ nlohmann::json benchmark_json(const BlobBenchmarkSettings& settings, const std::
                           {"bounce", secondary_json(r.bounce)}});
     }
     nlohmann::json report = {{"repeats", settings.repeats},
+                             {"warm_up_runs", kWarmUpRuns},
+                             {"min_run_seconds", settings.min_run_seconds},
                              {"threads", settings.threads},
                              {"cells_per_radius", settings.tessellation.cells_per_radius},
                              {"machine", {{"cores", std::thread::hardware_concurrency()}, {"cpu", cpu_model()}}},

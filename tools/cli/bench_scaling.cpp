@@ -77,8 +77,8 @@ std::vector<ScalingPoint> run_scaling(const std::vector<std::size_t>& counts, co
                                  ("isotrace-bench-" + std::to_string(getpid()) + "-" + std::to_string(count) + ".json")};
         write_text_output(file.path.string(), scaling_scene(count, resolution));
         const std::unique_ptr<LoadedScene> scene = load_scene(file.path.string());
-        RayCastTiming timing = time_primary_rays({scene.get()}, threads, 1 + repeats, min_run_seconds).front();
-        timing.seconds.erase(timing.seconds.begin());  // the warm-up
+        RayCastTiming timing = time_primary_rays({scene.get()}, threads, kWarmUpRuns + repeats, min_run_seconds).front();
+        drop_warm_up(timing);
         const BuildStatistics& build = scene->scene->build_statistics();
         ScalingPoint point;
         point.elements = count;

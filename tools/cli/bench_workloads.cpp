@@ -13,7 +13,6 @@
 namespace isotrace::cli {
 namespace {
 
-constexpr int kWarmUpRuns = 1;
 
 const char* unit_of(WorkloadKind kind) {
     switch (kind) {
@@ -59,8 +58,7 @@ public:
         result.scene_bytes = std::uint64_t(std::max<std::int64_t>(build.embree_bytes, 0)) + build.shape_bytes;
         for (int threads : settings_.threads) {
             RayCastTiming timing = time(kind, threads);
-            timing.seconds.erase(timing.seconds.begin(), timing.seconds.begin() + kWarmUpRuns);
-            timing.passes.erase(timing.passes.begin(), timing.passes.begin() + kWarmUpRuns);
+            drop_warm_up(timing);
             result.timings.push_back(std::move(timing));
         }
         result.work_per_run = double(result.timings.front().rays());

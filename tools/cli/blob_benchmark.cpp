@@ -133,7 +133,8 @@ void time_secondary_kind(const std::vector<const LoadedScene*>& scenes, const st
     kind.rays = rays.size();
     if (rays.empty()) return;  // nothing to time: no runs
     std::vector<RayCastTiming> timings =
-        time_secondary_rays(scenes, rays, query, threads, settings.repeats, settings.min_run_seconds);
+        time_secondary_rays(scenes, rays, query, threads, kWarmUpRuns + settings.repeats, settings.min_run_seconds);
+    for (RayCastTiming& timing : timings) drop_warm_up(timing);
     kind.direct.push_back(std::move(timings[0]));
     kind.tessellated.push_back(std::move(timings[1]));
 }
@@ -173,7 +174,8 @@ std::vector<SceneBenchmark> run_blob_benchmark(const BlobBenchmarkSettings& sett
             log(path + ": " + std::to_string(settings.repeats) + " run(s) each on " + std::to_string(threads) +
                 " thread(s)");
             std::vector<RayCastTiming> timings =
-                time_primary_rays(scenes, threads, settings.repeats, settings.min_run_seconds);
+                time_primary_rays(scenes, threads, kWarmUpRuns + settings.repeats, settings.min_run_seconds);
+            for (RayCastTiming& timing : timings) drop_warm_up(timing);
             result.direct.timings.push_back(std::move(timings[0]));
             result.tessellated.timings.push_back(std::move(timings[1]));
             time_secondary_kind(scenes, secondary.shadow, SecondaryQuery::Occlusion, threads, settings, result.shadow);

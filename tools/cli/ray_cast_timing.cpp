@@ -35,6 +35,11 @@ std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, in
 
 double RayCastTiming::median_seconds() const { return median(seconds); }
 
+void drop_warm_up(RayCastTiming& timing) {
+    timing.seconds.erase(timing.seconds.begin(), timing.seconds.begin() + kWarmUpRuns);
+    timing.passes.erase(timing.passes.begin(), timing.passes.begin() + kWarmUpRuns);
+}
+
 std::vector<RayCastTiming> time_primary_rays(const std::vector<const LoadedScene*>& scenes, int threads, int repeats,
                                              double min_run_seconds) {
     return time_taking_turns(

@@ -36,6 +36,12 @@ std::vector<RayCastTiming> time_taking_turns(std::size_t scenes, int threads, in
                                              const std::function<void(RayCastTiming&, std::size_t)>& trace,
                                              double min_run_seconds = 0);
 
+// Every timed measurement of isotrace bench starts with this many runs that are not counted: the first finds what
+// the rays build as they need it (a deformed superquadric's shell) and fills the caches.
+constexpr int kWarmUpRuns = 1;
+// Removes the warm-up runs from a timing taken with kWarmUpRuns + repeats runs.
+void drop_warm_up(RayCastTiming& timing);
+
 // `repeats` runs of every scene inside a TBB arena of `threads` threads, one timing per scene. Within each repeat
 // the scenes take turns, so that a machine whose speed drifts (a shared VM) slows them alike and the ratios of
 // run i stay comparable.

@@ -52,5 +52,19 @@ TEST(RayCastTiming, WithoutAMinimumTimeARunTakesOnePass) {
     EXPECT_EQ(timings.front().passes, std::vector<int>(4, 1));
 }
 
+// The runs that are not counted are the first ones, of the seconds and of the passes alike.
+TEST(RayCastTiming, TheWarmUpRunsAreTheFirstOnesDropped) {
+    int call = 0;
+    RayCastTiming timing = time_taking_turns(1, 1, kWarmUpRuns + 2, [&](RayCastTiming& t, std::size_t) {
+        t.ray_count = 1;
+        // The warm-up run is the slow one, as a first run that builds what the rays need.
+        if (call++ < kWarmUpRuns) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }).front();
+    drop_warm_up(timing);
+    ASSERT_EQ(timing.seconds.size(), 2u);
+    ASSERT_EQ(timing.passes.size(), 2u);
+    for (double seconds : timing.seconds) EXPECT_LT(seconds, 0.02);
+}
+
 }  // namespace
 }  // namespace isotrace::cli
