@@ -13,7 +13,6 @@
 namespace isotrace::cli {
 namespace {
 
-
 const char* unit_of(WorkloadKind kind) {
     switch (kind) {
         case WorkloadKind::PathTracer: return "Msamples/s";
