@@ -268,14 +268,12 @@ Interval value_within(const NoiseTerm& term, const OctaveSumBounds& bounds, doub
     return intersect(bounds.value + allowance, lipschitz_range);
 }
 
-bool is_finite(const IntervalBox& box) { return box.x.is_finite() && box.y.is_finite() && box.z.is_finite(); }
-
 }  // namespace
 
 NoiseBoxRanges noise_box_ranges(const NoiseTerm& term, const IntervalBox& box) {
     double size = 0;
     const Interval lipschitz_range = lipschitz_value_range(term, box, size);
-    if (term.octaves.empty() || !is_finite(box)) return {lipschitz_range, std::nullopt};
+    if (term.octaves.empty() || !box.is_finite()) return {lipschitz_range, std::nullopt};
     const OctaveSumBounds bounds = octave_sum_bounds(term, box);
     return {value_within(term, bounds, size, lipschitz_range), bounds.gradient, bounds.reach};
 }

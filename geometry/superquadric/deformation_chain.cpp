@@ -127,7 +127,7 @@ IntervalBox DeformationChain::gauge_gradient(const InverseBoxes& boxes) const {
 }
 
 Interval DeformationChain::slope_with(const InverseBoxes& boxes, const IntervalBox& gradient, IntervalBox tangent) const {
-    if (!gradient.x.is_finite() || !gradient.y.is_finite() || !gradient.z.is_finite()) return Interval::unbounded();
+    if (!gradient.is_finite()) return Interval::unbounded();
     for (std::size_t k = stages_.size(); k > 0; --k)
         tangent = std::visit([&](const auto& s) { return s.inverse_tangent(boxes.stage[k - 1], tangent); }, stages_[k - 1]);
     return gradient.x * tangent.x + gradient.y * tangent.y + gradient.z * tangent.z;

@@ -19,6 +19,13 @@ double largest_extent(const IntervalBox& box) {
     return std::max({box.x.width(), box.y.width(), box.z.width()});
 }
 
+// Every value of one sign (g < 0 inside): what a bound hands the search where another test proved that g keeps
+// that sign over a stretch.
+Interval of_sign(bool inside) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return inside ? Interval{-inf, -std::numeric_limits<double>::denorm_min()} : Interval{0, inf};
+}
+
 }  // namespace
 
 Superquadric::Superquadric(Superellipsoid shape, DeformationChain deformation, Transform placement)
@@ -61,7 +68,7 @@ ShellCellBounds Superquadric::cell_bounds(const IntervalBox& cell, const Vec3d& 
     DeformationChain::InverseBoxes walked;
     if (!deformation_.inverse_boxes(cell, walked, kBeyond) || walked.clipped) return bounds;
     bounds.gradient = deformation_.gauge_gradient(walked);
-    if (!bounds.gradient.x.is_finite() || !bounds.gradient.y.is_finite() || !bounds.gradient.z.is_finite()) return bounds;
+    if (!bounds.gradient.is_finite()) return bounds;
     bounds.centre = centre;
     bounds.value = local_field(centre, kBeyond);
     bounds.known = true;
@@ -168,8 +175,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     const auto bound = [&](double a, double b) {
         if (mixed) {
             const Interval phi = difference_of_convex_range(a, sample_at(a), b, sample_at(b));
-            if (phi.lo >= 0) return Interval{0, std::numeric_limits<double>::infinity()};
-            if (phi.hi < 0) return Interval{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::denorm_min()};
+            if (phi.lo >= 0 || phi.hi < 0) return of_sign(phi.hi < 0);
             return Interval::unbounded();
         }
         return ray.bound(a, b);
@@ -265,8 +271,7 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
                 const double *g_u = values.find(u), *g_v = values.find(v);
                 if (g_u && g_v && (*g_u < 0) == (*g_v < 0) &&
                     crossing_search_detail::keeps_sign(v - u, *g_u, *g_v, cell_slope))
-                    return *g_u < 0 ? Interval{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::denorm_min()}
-                                    : Interval{0, std::numeric_limits<double>::infinity()};
+                    return of_sign(*g_u < 0);
             }
             return ray.bound(u, v);
         };

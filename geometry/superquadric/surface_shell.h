@@ -137,12 +137,13 @@ public:
         int cell_of[3];
         for (int k = 0; k < 3; ++k)
             cell_of[k] = std::clamp(int(std::floor((first[k] - lower[k]) / cell_size_[k])), 0, kCellsPerAxis - 1);
-        // Where the line leaves the current cell across each axis' next plane.
-        const auto next_plane = [&](int k) {
+        // Where the line leaves cell `at` of axis k across that axis' next plane, and the current cell.
+        const auto plane_after = [&](int k, int at) {
             if (along[k] == 0) return std::numeric_limits<double>::infinity();
-            const int plane = cell_of[k] + (along[k] > 0 ? 1 : 0);
+            const int plane = at + (along[k] > 0 ? 1 : 0);
             return (lower[k] + plane * cell_size_[k] - from[k]) / along[k];
         };
+        const auto next_plane = [&](int k) { return plane_after(k, cell_of[k]); };
         double enter = t0;
         bool in_run = false;
         // Only the axis whose plane was crossed moves on: the others keep their next plane.
@@ -164,9 +165,7 @@ public:
                 int last_in_block[3];
                 for (int k = 0; k < 3; ++k) {
                     last_in_block[k] = cell_of[k] / kBlock * kBlock + (along[k] > 0 ? kBlock - 1 : 0);
-                    if (along[k] == 0) continue;
-                    const int plane = last_in_block[k] + (along[k] > 0 ? 1 : 0);
-                    const double t = (lower[k] + plane * cell_size_[k] - from[k]) / along[k];
+                    const double t = plane_after(k, last_in_block[k]);  // infinite along a still axis
                     if (t < block_exit) block_exit = t, axis = k;
                 }
                 for (int k = 0; k < 3; ++k)

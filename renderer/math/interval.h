@@ -178,6 +178,7 @@ struct IntervalBox {
     const Interval& operator[](int k) const { return k == 0 ? x : (k == 1 ? y : z); }
     Vec3d lower() const { return {x.lo, y.lo, z.lo}; }
     Vec3d upper() const { return {x.hi, y.hi, z.hi}; }
+    bool is_finite() const { return x.is_finite() && y.is_finite() && z.is_finite(); }
     // The box of |x|, |y|, |z| for the points of this one.
     IntervalBox magnitude() const { return {x.magnitude(), y.magnitude(), z.magnitude()}; }
     bool contains(const Vec3d& p) const { return x.contains(p.x) && y.contains(p.y) && z.contains(p.z); }
