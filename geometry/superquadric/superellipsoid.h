@@ -6,6 +6,7 @@
 // u = |x|/a1, v = |y|/a2, w = |z|/a3. G < 1 exactly where F < 1, but G is homogeneous of degree 1 (so it grows
 // like distance, never overflows, and stays well scaled for root refinement) and it is non-decreasing in each of
 // u, v, w, so its range over a box of magnitudes is given by the box's two extreme corners.
+#include <optional>
 #include <vector>
 
 #include "geometry/field/difference_of_convex.h"
@@ -32,6 +33,11 @@ public:
     // The gauge at p (bit for bit gauge(p)) and its derivative along `direction` (NaN where it is unbounded or
     // undefined, at coordinate planes for exponents above 2), for Newton steps along a ray.
     ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const;
+    // The part [lo, hi] of the segment start + τ·direction, τ ∈ [0, length], inside the elliptic cylinder around z
+    // and the ellipsoid that hold the solid G ≤ 1, enlarged by a margin far above the gauge's rounding (so that the
+    // gauge exceeds 1 where the part ends before `length` or begins after 0); nothing where the segment misses them.
+    // For segments within the bounding box, where both quadrics are a few units across.
+    std::optional<Interval> enclosing_stretch(const Vec3d& start, const Vec3d& direction, double length) const;
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south_ <= 2 && east_west_ <= 2; }
     // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave
@@ -82,6 +88,8 @@ private:
     double north_south_, east_west_;
     NormExponent p1_, p2_;  // of the outer norm (2/ε1) and the inner, horizontal one (2/ε2)
     Vec3d log_radii_;       // the normal's logarithms of the radii, taken once
+    // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = cylinder_scale_ (its z component 0) and for k = ellipsoid_scale_.
+    Vec3d cylinder_scale_, ellipsoid_scale_;
 };
 
 }  // namespace isotrace

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <random>
 
 namespace isotrace {
@@ -254,6 +255,57 @@ TEST(SuperquadricSuperellipsoid, NormalsOnTheCoordinatePlanesAreTheLimits) {
     EXPECT_NEAR((Superellipsoid{{1, 2, 3}, 1, 1}).normal(on_plane * (1 / std::sqrt(0.5))).x, 0.0, 1e-15);
     const Vec3d face = Superellipsoid{{1, 1, 1}, 2, 2}.normal({0, 0.5, 0.5});
     EXPECT_NEAR(dot(face, normalize(Vec3d(1, 1, 1))), 1.0, 1e-12);
+}
+
+TEST(SuperquadricSuperellipsoid, TheEnclosingStretchHoldsEveryPointOfTheSolidAlongTheSegment) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(-1, 1), exponent(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent);
+    int inside = 0, trimmed = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Superellipsoid s{{1 + unit(random) * 0.5, 1.5 + unit(random), 0.8 + 0.5 * unit(random)}, exponent(random),
+                               exponent(random)};
+        const Vec3d& r = s.radii();
+        const Vec3d start{r.x * unit(random), r.y * unit(random), r.z * unit(random)};
+        const Vec3d end{r.x * unit(random), r.y * unit(random), r.z * unit(random)};
+        const Vec3d direction = normalize(end - start);
+        const double length = ::isotrace::length(end - start);
+        const std::optional<Interval> stretch = s.enclosing_stretch(start, direction, length);
+        for (int k = 0; k <= 400; ++k) {
+            const double t = k == 400 ? length : length * k / 400;
+            if (s.gauge(start + direction * t) > 1) continue;
+            ++inside;
+            ASSERT_TRUE(stretch) << i;
+            EXPECT_TRUE(stretch->contains(t)) << i << " t " << t;
+        }
+        if (!stretch) continue;
+        // Where the stretch ends inside the segment, the gauge there exceeds 1 by more than its rounding.
+        for (const double end_t : {stretch->lo, stretch->hi}) {
+            if (end_t == 0 || end_t == length) continue;
+            ++trimmed;
+            EXPECT_GT(s.gauge(start + direction * end_t), 1 + 1e-12) << i;
+        }
+    }
+    EXPECT_GT(inside, 10000);
+    EXPECT_GT(trimmed, 1000);
+}
+
+TEST(SuperquadricSuperellipsoid, TheEnclosingStretchIsTheChordOfASphereAndOfARoundCylinder) {
+    const Superellipsoid sphere{{1, 1, 1}, 1, 1}, cylinder{{1, 1, 1}, Superellipsoid::kMinExponent, 1};
+    for (const Superellipsoid* s : {&sphere, &cylinder}) {
+        // Along x at height 0.6 the chord is x in [-0.8, 0.8].
+        const std::optional<Interval> chord = s->enclosing_stretch({-1, 0.6, 0}, {1, 0, 0}, 2);
+        ASSERT_TRUE(chord);
+        EXPECT_NEAR(chord->lo, 0.2, 1e-7);
+        EXPECT_NEAR(chord->hi, 1.8, 1e-7);
+        EXPECT_FALSE(s->enclosing_stretch({-1, 1.0001, 0}, {1, 0, 0}, 2));
+        EXPECT_TRUE(s->enclosing_stretch({-1, 0.9999, 0}, {1, 0, 0}, 2));
+    }
+    // Along the cylinder's axis, inside it: the whole segment; beside it, nothing.
+    const std::optional<Interval> axis = cylinder.enclosing_stretch({0.5, 0, -1}, {0, 0, 1}, 2);
+    ASSERT_TRUE(axis);
+    EXPECT_EQ(axis->lo, 0);
+    EXPECT_EQ(axis->hi, 2);
+    EXPECT_FALSE(cylinder.enclosing_stretch({0.8, 0.8, -1}, {0, 0, 1}, 2));
 }
 
 TEST(SuperquadricSuperellipsoid, PolynomialCasesAreExactlyTheEvenPowers) {

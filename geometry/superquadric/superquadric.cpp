@@ -192,7 +192,14 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         search_shell<precision>(ray, t0, t1, resolution, work, visit);
         return;
     }
-    if (convex && visit_convex_crossings(t0, t1, value_and_slope, first_only, work.search, visit)) return;
+    if (convex) {
+        // The marches start where the ray enters and leaves two quadrics around the solid, closer to its crossings
+        // than the box's faces: fewer Newton steps, and a ray that passes beside them is settled at once.
+        const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);
+        if (!around) return;
+        const double lo = around->lo > 0 ? t0 + around->lo : t0, hi = around->hi < t1 - t0 ? t0 + around->hi : t1;
+        if (visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
+    }
 
     // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and
     // the bound is exact.
