@@ -13,11 +13,11 @@ namespace isotrace {
 struct QueryContext {
     RTCIntersectContext embree;  // first: the callbacks' args->context points here
     QueryScratchPool* pool;
-    QueryScratch* scratch = nullptr;  // borrowed from `pool` by the first callback that asks for it
+    QueryScratchPool::Loan loan;  // from `pool`, by the first callback that asks for a scratch
 
     explicit QueryContext(QueryScratchPool& scratch_pool) : pool(&scratch_pool) { rtcInitIntersectContext(&embree); }
     ~QueryContext() {
-        if (scratch) pool->give_back(*scratch);
+        if (loan.scratch) pool->give_back(loan);
     }
     QueryContext(const QueryContext&) = delete;
     QueryContext& operator=(const QueryContext&) = delete;
@@ -28,8 +28,8 @@ static_assert(std::is_standard_layout_v<QueryContext>, "a pointer to QueryContex
 // RenderScene that can reach a user geometry passes one).
 inline QueryScratch& query_scratch(RTCIntersectContext* context) {
     QueryContext& query = *reinterpret_cast<QueryContext*>(context);
-    if (!query.scratch) query.scratch = &query.pool->borrow();
-    return *query.scratch;
+    if (!query.loan.scratch) query.loan = query.pool->borrow();
+    return *query.loan.scratch;
 }
 
 }  // namespace isotrace

@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
+#include <set>
+#include <thread>
 #include <vector>
 
 #include "renderer/embree/query_scratch_pool.h"
@@ -58,13 +62,53 @@ TEST(QueryScratch, ALevelTakenAgainHasTheBuffersTheLastCallLeft) {
 
 TEST(QueryScratchPool, LendsEachScratchToOneBorrowerAtATime) {
     QueryScratchPool pool;
-    QueryScratch& first = pool.borrow();
-    QueryScratch& second = pool.borrow();
-    EXPECT_NE(&first, &second);
+    const QueryScratchPool::Loan first = pool.borrow(), second = pool.borrow();
+    EXPECT_NE(first.scratch, second.scratch);
     pool.give_back(first);
-    EXPECT_EQ(&pool.borrow(), &first);  // kept, with its buffers, for the next query
-    pool.give_back(first);
+    const QueryScratchPool::Loan again = pool.borrow();
+    EXPECT_EQ(again.scratch, first.scratch);  // the thread's own slot: kept, with its buffers, for the next query
+    pool.give_back(again);
     pool.give_back(second);
+}
+
+TEST(QueryScratchPool, LendsScratchesOfTheirOwnWhenEverySlotIsLent) {
+    QueryScratchPool pool(3);
+    std::vector<QueryScratchPool::Loan> loans;
+    for (int i = 0; i < 5; ++i) loans.push_back(pool.borrow());
+    std::set<QueryScratch*> distinct;
+    for (const QueryScratchPool::Loan& loan : loans) distinct.insert(loan.scratch);
+    EXPECT_EQ(distinct.size(), loans.size());
+    EXPECT_EQ(std::count_if(loans.begin(), loans.end(),
+                            [](const QueryScratchPool::Loan& loan) { return loan.slot == QueryScratchPool::kNoSlot; }),
+              2);
+    for (const QueryScratchPool::Loan& loan : loans) pool.give_back(loan);  // the extra two are freed (sanitizers)
+}
+
+// Threads borrowing at once, more of them than slots: each writes its mark into its scratch's buffers and finds it
+// still there before giving the scratch back, which a scratch lent to two threads at once would not keep.
+TEST(QueryScratchPool, ThreadsBorrowingAtOnceNeverShareAScratch) {
+    struct Marks {
+        std::vector<int> values;
+    };
+    QueryScratchPool pool(4);
+    std::atomic<int> clashes{0};
+    std::vector<std::thread> threads;
+    for (int id = 0; id < 8; ++id)
+        threads.emplace_back([&, id] {
+            for (int round = 0; round < 2000; ++round) {
+                const QueryScratchPool::Loan loan = pool.borrow();
+                {
+                    const QueryScratch::Level level(*loan.scratch);
+                    std::vector<int>& marks = level.get<Marks>().values;
+                    marks.assign(16, id);
+                    std::this_thread::yield();
+                    if (std::count(marks.begin(), marks.end(), id) != 16) ++clashes;
+                }
+                pool.give_back(loan);
+            }
+        });
+    for (std::thread& thread : threads) thread.join();
+    EXPECT_EQ(clashes.load(), 0);
 }
 
 }  // namespace
