@@ -10,8 +10,9 @@
 //   (superquadric_along_ray.h);
 // - deformed: only the ray's stretches through the cells of the surface shell (surface_shell.h) are searched, cell
 //   by cell, with the bounds each cell keeps (shell_cell_bounds.h) asked before those along the ray;
-// - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches from the ends find its
-//   crossings without bounds (convex_crossings.h), the search above taking over only near tangent contacts;
+// - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches find its crossings without
+//   bounds (convex_crossings.h), from where the ray enters and leaves two quadrics around the solid
+//   (Superellipsoid::enclosing_stretch), the search above taking over only near tangent contacts;
 // - undeformed with ε1, ε2 ≥ 2: g is concave on each piece between the coordinate planes, and tangent cutting
 //   planes settle each piece without bounds (concave_crossings.h), again the search taking over near tangents;
 // - undeformed with one exponent on each side of 2: the search takes bounds of a difference of convex functions

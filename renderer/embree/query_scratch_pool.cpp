@@ -13,10 +13,6 @@ std::size_t QueryScratchPool::default_slots() {
 QueryScratchPool::QueryScratchPool(std::size_t slots)
     : slots_(std::make_unique<Slot[]>(std::max<std::size_t>(1, slots))), slot_count_(std::max<std::size_t>(1, slots)) {}
 
-QueryScratchPool::~QueryScratchPool() {
-    for (std::size_t i = 0; i < slot_count_; ++i) delete slots_[i].scratch;
-}
-
 QueryScratchPool::Loan QueryScratchPool::borrow() {
     const std::size_t home = std::hash<std::thread::id>{}(std::this_thread::get_id()) % slot_count_;
     for (std::size_t i = 0; i < slot_count_; ++i) {
@@ -24,8 +20,8 @@ QueryScratchPool::Loan QueryScratchPool::borrow() {
         Slot& slot = slots_[index];
         // Reading first: a slot another thread holds is passed over without writing to its cache line.
         if (slot.lent.load(std::memory_order_relaxed) || slot.lent.exchange(true, std::memory_order_acquire)) continue;
-        if (!slot.scratch) slot.scratch = new QueryScratch();
-        return {slot.scratch, index};
+        if (!slot.scratch) slot.scratch = std::make_unique<QueryScratch>();
+        return {slot.scratch.get(), index};
     }
     return {new QueryScratch(), kNoSlot};
 }

@@ -3,11 +3,10 @@
 // that ran at the same moment as others, so that buffers grow once per concurrent query rather than once per query.
 // Lending takes no lock: the scratches sit in slots, each with a flag that one atomic exchange takes, and a thread
 // looks first at a slot of its own (by a hash of its id), so that on many cores the queries of different threads
-// touch different cache lines rather than one shared lock (taken once per query of a solid, the lock was).
+// touch different cache lines rather than one shared lock.
 #include <atomic>
 #include <cstddef>
 #include <memory>
-#include <vector>
 
 #include "renderer/embree/query_scratch.h"
 
@@ -27,7 +26,6 @@ public:
     explicit QueryScratchPool(std::size_t slots = default_slots());
     QueryScratchPool(const QueryScratchPool&) = delete;
     QueryScratchPool& operator=(const QueryScratchPool&) = delete;
-    ~QueryScratchPool();
 
     // An idle scratch (the thread's own slot's when idle), made on first use; a scratch of its own when every slot
     // is lent (more concurrent queries than slots), dropped when given back.
@@ -41,7 +39,7 @@ private:
     // A cache line each: the flags of different threads' slots do not share one.
     struct alignas(64) Slot {
         std::atomic<bool> lent{false};
-        QueryScratch* scratch = nullptr;  // owned; touched only by the slot's borrower
+        std::unique_ptr<QueryScratch> scratch;  // touched only by the slot's borrower
     };
     std::unique_ptr<Slot[]> slots_;
     std::size_t slot_count_;
