@@ -33,8 +33,9 @@ std::pair<double, double> p_norm_partials(const PNorm& n, double a, double p) {
     return a >= n.smaller && a == n.larger ? std::pair{of_larger, of_smaller} : std::pair{of_smaller, of_larger};
 }
 
-// A 2-vector's p-norm is at least its Euclidean norm times this (equal for p ≤ 2; for p > 2, ‖·‖₂ ≤ 2^(1/2 − 1/p)·‖·‖_p).
+// A 2-vector's p-norm lies between its Euclidean norm times these: 2^(1/p − 1/2) and 1 in the order of p and 2.
 double euclidean_share(double p) { return std::min(1.0, std::exp2(1 / p - 0.5)); }
+double euclidean_multiple(double p) { return std::max(1.0, std::exp2(1 / p - 0.5)); }
 
 double signed_power(double base, double exponent) { return std::copysign(std::pow(std::abs(base), exponent), base); }
 
@@ -51,6 +52,9 @@ Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double ea
     const double c1 = euclidean_share(p1_.p), c2 = euclidean_share(p2_.p);
     cylinder_scale_ = {c2 / radii.x, c2 / radii.y, 0};
     ellipsoid_scale_ = {c1 * c2 / radii.x, c1 * c2 / radii.y, c1 / radii.z};
+    // And G ≤ C1·‖(C2·‖(u, v)‖₂, w)‖₂ the same way.
+    const double m1 = euclidean_multiple(p1_.p), m2 = euclidean_multiple(p2_.p);
+    inscribed_scale_ = {m1 * m2 / radii.x, m1 * m2 / radii.y, m1 / radii.z};
 }
 
 double Superellipsoid::gauge(const Vec3d& p) const {
@@ -97,16 +101,23 @@ std::optional<Interval> within_quadric(const Vec3d& k, const Vec3d& start, const
 
 }  // namespace
 
+// Within the box the squares are a few units, rounded to 10⁻¹⁵; the gauge is within 2⁻⁴⁶ of itself.
+constexpr double kQuadricMargin = 1e-8;
+
 std::optional<Interval> Superellipsoid::enclosing_stretch(const Vec3d& start, const Vec3d& direction,
                                                          double length) const {
-    // Within the box the squares are a few units, rounded to 10⁻¹⁵; the gauge is within 2⁻⁴⁶ of itself.
-    constexpr double kBound = 1 + 1e-8;
+    constexpr double kBound = 1 + kQuadricMargin;
     const std::optional<Interval> cylinder = within_quadric(cylinder_scale_, start, direction, length, kBound);
     if (!cylinder) return std::nullopt;
     const std::optional<Interval> ellipsoid = within_quadric(ellipsoid_scale_, start, direction, length, kBound);
     if (!ellipsoid) return std::nullopt;
     const Interval both{std::max(cylinder->lo, ellipsoid->lo), std::min(cylinder->hi, ellipsoid->hi)};
     return both.lo <= both.hi ? std::optional<Interval>(both) : std::nullopt;
+}
+
+std::optional<Interval> Superellipsoid::inscribed_stretch(const Vec3d& start, const Vec3d& direction,
+                                                         double length) const {
+    return within_quadric(inscribed_scale_, start, direction, length, 1 - kQuadricMargin);
 }
 
 // h = ‖(u, v)‖_p2 is convex along a piece for p2 ≥ 1 and concave for p2 ≤ 1; R(w) = (1 − w^p1)^(1/p1), the edge of

@@ -38,6 +38,9 @@ public:
     // gauge exceeds 1 where the part ends before `length` or begins after 0); nothing where the segment misses them.
     // For segments within the bounding box, where both quadrics are a few units across.
     std::optional<Interval> enclosing_stretch(const Vec3d& start, const Vec3d& direction, double length) const;
+    // The part of the same segment inside an ellipsoid within the solid, shrunk by the same margin (so that the
+    // gauge is below 1 throughout it); nothing where the segment misses it.
+    std::optional<Interval> inscribed_stretch(const Vec3d& start, const Vec3d& direction, double length) const;
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south_ <= 2 && east_west_ <= 2; }
     // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave
@@ -88,8 +91,9 @@ private:
     double north_south_, east_west_;
     NormExponent p1_, p2_;  // of the outer norm (2/ε1) and the inner, horizontal one (2/ε2)
     Vec3d log_radii_;       // the normal's logarithms of the radii, taken once
-    // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = cylinder_scale_ (its z component 0) and for k = ellipsoid_scale_.
-    Vec3d cylinder_scale_, ellipsoid_scale_;
+    // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = cylinder_scale_ (its z component 0) and for k = ellipsoid_scale_,
+    // and holds the points where it is below 1 for k = inscribed_scale_.
+    Vec3d cylinder_scale_, ellipsoid_scale_, inscribed_scale_;
 };
 
 }  // namespace isotrace

@@ -257,18 +257,28 @@ TEST(SuperquadricSuperellipsoid, NormalsOnTheCoordinatePlanesAreTheLimits) {
     EXPECT_NEAR(dot(face, normalize(Vec3d(1, 1, 1))), 1.0, 1e-12);
 }
 
+// A random superellipsoid over the whole exponent range and a segment between two random points of its box.
+struct RandomSegment {
+    Superellipsoid shape;
+    Vec3d start, direction;
+    double length;
+};
+
+RandomSegment random_segment(std::mt19937& random) {
+    std::uniform_real_distribution<double> unit(-1, 1), exponent(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent);
+    const Superellipsoid s{{1 + unit(random) * 0.5, 1.5 + unit(random), 0.8 + 0.5 * unit(random)}, exponent(random),
+                           exponent(random)};
+    const Vec3d& r = s.radii();
+    const Vec3d start{r.x * unit(random), r.y * unit(random), r.z * unit(random)};
+    const Vec3d end{r.x * unit(random), r.y * unit(random), r.z * unit(random)};
+    return {s, start, normalize(end - start), length(end - start)};
+}
+
 TEST(SuperquadricSuperellipsoid, TheEnclosingStretchHoldsEveryPointOfTheSolidAlongTheSegment) {
     std::mt19937 random(7);
-    std::uniform_real_distribution<double> unit(-1, 1), exponent(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent);
     int inside = 0, trimmed = 0;
     for (int i = 0; i < 3000; ++i) {
-        const Superellipsoid s{{1 + unit(random) * 0.5, 1.5 + unit(random), 0.8 + 0.5 * unit(random)}, exponent(random),
-                               exponent(random)};
-        const Vec3d& r = s.radii();
-        const Vec3d start{r.x * unit(random), r.y * unit(random), r.z * unit(random)};
-        const Vec3d end{r.x * unit(random), r.y * unit(random), r.z * unit(random)};
-        const Vec3d direction = normalize(end - start);
-        const double length = ::isotrace::length(end - start);
+        const auto [s, start, direction, length] = random_segment(random);
         const std::optional<Interval> stretch = s.enclosing_stretch(start, direction, length);
         for (int k = 0; k <= 400; ++k) {
             const double t = k == 400 ? length : length * k / 400;
@@ -287,6 +297,27 @@ TEST(SuperquadricSuperellipsoid, TheEnclosingStretchHoldsEveryPointOfTheSolidAlo
     }
     EXPECT_GT(inside, 10000);
     EXPECT_GT(trimmed, 1000);
+}
+
+TEST(SuperquadricSuperellipsoid, TheInscribedStretchLiesInsideTheSolid) {
+    std::mt19937 random(11);
+    int inside = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const auto [s, start, direction, length] = random_segment(random);
+        const std::optional<Interval> stretch = s.inscribed_stretch(start, direction, length);
+        if (!stretch) continue;
+        for (int k = 0; k <= 100; ++k) {
+            const double t = k == 100 ? stretch->hi : stretch->lo + (stretch->hi - stretch->lo) * k / 100;
+            ++inside;
+            EXPECT_LT(s.gauge(start + direction * t), 1 - 1e-12) << i << " t " << t;
+        }
+    }
+    EXPECT_GT(inside, 10000);
+    // A sphere's inscribed ellipsoid is the sphere itself.
+    const std::optional<Interval> chord = Superellipsoid({1, 1, 1}, 1, 1).inscribed_stretch({-1, 0.6, 0}, {1, 0, 0}, 2);
+    ASSERT_TRUE(chord);
+    EXPECT_NEAR(chord->lo, 0.2, 1e-7);
+    EXPECT_NEAR(chord->hi, 1.8, 1e-7);
 }
 
 TEST(SuperquadricSuperellipsoid, TheEnclosingStretchIsTheChordOfASphereAndOfARoundCylinder) {

@@ -198,6 +198,22 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);
         if (!around) return;
         const double lo = around->lo > 0 ? t0 + around->lo : t0, hi = around->hi < t1 - t0 ? t0 + around->hi : t1;
+        // An occlusion query: a ray that is outside at lo (beyond the quadrics' margin, or on the widened box's face,
+        // where the gauge is at least the largest |xᵢ|/aᵢ) and then reaches the inscribed ellipsoid (g < 0) crosses
+        // the surface in between, and nowhere before.
+        if constexpr (precision == CrossingPrecision::SignChange) {
+            const auto beyond_radii = [&](const Vec3d& p) {
+                const Vec3d& r = shape_.radii();
+                return std::max({std::abs(p.x) / r.x, std::abs(p.y) / r.y, std::abs(p.z) / r.z}) > 1 + 1e-12;
+            };
+            if (lo > t0 || beyond_radii(o + d * t0))
+                if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo);
+                    inside && inside->lo > 0) {
+                    const double reached = lo + inside->lo;
+                    visit(Crossing{0.5 * (lo + reached), true, lo, reached});
+                    return;
+                }
+        }
         if (visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
     }
 

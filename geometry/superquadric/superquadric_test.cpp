@@ -267,6 +267,18 @@ TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {
                 (unsigned long long)by_crossing.search.evaluations);
 }
 
+// A convex shape's occlusion query that enters the quadrics around it from outside and reaches the ellipsoid inside
+// it is settled by the two alone, without a point value; one that stops short of the surface is not blocked.
+TEST(SuperquadricIntersection, ARayThroughAConvexShapesInscribedEllipsoidIsBlockedWithoutAPointValue) {
+    for (const auto& [e1, e2] : {std::pair{0.1, 1.0}, {0.5, 0.3}, {1.0, 2.0}, {2.0, 2.0}, {0.02, 0.02}}) {
+        const Superquadric s = make_superquadric({0.5, 0.8, 1.2}, e1, e2);
+        SuperquadricWork work;
+        EXPECT_TRUE(s.blocks({-3, 0.05, 0.1}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
+        EXPECT_EQ(work.search.evaluations, 0u) << e1 << " " << e2;
+        EXPECT_FALSE(s.blocks({-3, 0.05, 0.1}, {1, 0, 0}, 0, 2.4f, work)) << e1 << " " << e2;
+    }
+}
+
 // Rays that start just off the surface and leave it, as shadow rays do, many of them nearly along it (those meet the
 // shape again soon, within the stretch the search starts with): occlusion gives first_crossing's answer.
 TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingOnRaysLeavingTheSurface) {
