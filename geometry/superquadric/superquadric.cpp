@@ -192,9 +192,11 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         search_shell<precision>(ray, t0, t1, resolution, work, visit);
         return;
     }
-    if (convex) {
-        // The marches start where the ray enters and leaves two quadrics around the solid, closer to its crossings
-        // than the box's faces: fewer Newton steps, and a ray that passes beside them is settled at once.
+    // Two quadrics hold the solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is settled at
+    // once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than the box's
+    // faces. Other shapes take them for occlusion queries only: their searches cut the ray at the coordinate planes,
+    // and the pieces' own tests already pass over most of the box.
+    if (convex || precision == CrossingPrecision::SignChange) {
         const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);
         if (!around) return;
         const double lo = around->lo > 0 ? t0 + around->lo : t0, hi = around->hi < t1 - t0 ? t0 + around->hi : t1;
@@ -214,7 +216,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
                     return;
                 }
         }
-        if (visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
+        if (convex && visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
     }
 
     // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and

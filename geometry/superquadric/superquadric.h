@@ -13,6 +13,8 @@
 // - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches find its crossings without
 //   bounds (convex_crossings.h), from where the ray enters and leaves two quadrics around the solid
 //   (Superellipsoid::enclosing_stretch), the search above taking over only near tangent contacts;
+// - undeformed occlusion queries, whatever the exponents: a ray that misses those quadrics is not blocked, and one
+//   that reaches an ellipsoid inscribed in the solid from outside is, without a point value;
 // - undeformed with ε1, ε2 ≥ 2: g is concave on each piece between the coordinate planes, and tangent cutting
 //   planes settle each piece without bounds (concave_crossings.h), again the search taking over near tangents;
 // - undeformed with one exponent on each side of 2: the search takes bounds of a difference of convex functions

@@ -267,10 +267,11 @@ TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {
                 (unsigned long long)by_crossing.search.evaluations);
 }
 
-// A convex shape's occlusion query that enters the quadrics around it from outside and reaches the ellipsoid inside
-// it is settled by the two alone, without a point value; one that stops short of the surface is not blocked.
-TEST(SuperquadricIntersection, ARayThroughAConvexShapesInscribedEllipsoidIsBlockedWithoutAPointValue) {
-    for (const auto& [e1, e2] : {std::pair{0.1, 1.0}, {0.5, 0.3}, {1.0, 2.0}, {2.0, 2.0}, {0.02, 0.02}}) {
+// An undeformed shape's occlusion query that enters the quadrics around it from outside and reaches the ellipsoid
+// inside it is settled by the two alone, without a point value; one that stops short of the surface is not blocked.
+TEST(SuperquadricIntersection, ARayThroughAShapesInscribedEllipsoidIsBlockedWithoutAPointValue) {
+    for (const auto& [e1, e2] :
+         {std::pair{0.1, 1.0}, {0.5, 0.3}, {1.0, 2.0}, {2.0, 2.0}, {0.02, 0.02}, {3.0, 3.0}, {0.5, 3.0}, {4.0, 1.0}}) {
         const Superquadric s = make_superquadric({0.5, 0.8, 1.2}, e1, e2);
         SuperquadricWork work;
         EXPECT_TRUE(s.blocks({-3, 0.05, 0.1}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
