@@ -138,6 +138,34 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         if (roots->t1 >= 0 && roots->t1 <= t1 - t0) visit(Crossing{t0 + roots->t1, false});
         return;
     }
+    // Two quadrics hold an undeformed solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is
+    // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
+    // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
+    // coordinate planes, and the pieces' own tests already pass over most of the box.
+    const bool convex = deformation_.empty() && shape_.is_convex();
+    double lo = t0, hi = t1;
+    if (deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) {
+        const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);
+        if (!around) return;
+        if (around->lo > 0) lo = t0 + around->lo;
+        if (around->hi < t1 - t0) hi = t0 + around->hi;
+        // An occlusion query: a ray that is outside at lo (beyond the quadrics' margin, or on the widened box's face,
+        // where the gauge is at least the largest |xᵢ|/aᵢ) and then reaches the inscribed ellipsoid (g < 0) crosses
+        // the surface in between, and nowhere before.
+        if constexpr (precision == CrossingPrecision::SignChange) {
+            const auto beyond_radii = [&](const Vec3d& p) {
+                const Vec3d& r = shape_.radii();
+                return std::max({std::abs(p.x) / r.x, std::abs(p.y) / r.y, std::abs(p.z) / r.z}) > 1 + 1e-12;
+            };
+            if (lo > t0 || beyond_radii(o + d * t0))
+                if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo);
+                    inside && inside->lo > 0) {
+                    const double reached = lo + inside->lo;
+                    visit(Crossing{0.5 * (lo + reached), true, lo, reached});
+                    return;
+                }
+        }
+    }
     if (deformation_.empty() && shape_.polynomial_degree() > 0) {
         ++work.polynomial_solves;
         const Polynomial p = shape_.polynomial_along(o + d * t0, d);  // in u = t − t0, for precision
@@ -150,7 +178,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return;
     }
 
-    const bool convex = deformation_.empty() && shape_.is_convex();
     const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
     const bool mixed = deformation_.empty() && !convex && !concave;
     // The piece being searched, and whether its ends lie on coordinate planes (cusps: no tangents there).
@@ -192,32 +219,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         search_shell<precision>(ray, t0, t1, resolution, work, visit);
         return;
     }
-    // Two quadrics hold the solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is settled at
-    // once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than the box's
-    // faces. Other shapes take them for occlusion queries only: their searches cut the ray at the coordinate planes,
-    // and the pieces' own tests already pass over most of the box.
-    if (convex || precision == CrossingPrecision::SignChange) {
-        const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);
-        if (!around) return;
-        const double lo = around->lo > 0 ? t0 + around->lo : t0, hi = around->hi < t1 - t0 ? t0 + around->hi : t1;
-        // An occlusion query: a ray that is outside at lo (beyond the quadrics' margin, or on the widened box's face,
-        // where the gauge is at least the largest |xᵢ|/aᵢ) and then reaches the inscribed ellipsoid (g < 0) crosses
-        // the surface in between, and nowhere before.
-        if constexpr (precision == CrossingPrecision::SignChange) {
-            const auto beyond_radii = [&](const Vec3d& p) {
-                const Vec3d& r = shape_.radii();
-                return std::max({std::abs(p.x) / r.x, std::abs(p.y) / r.y, std::abs(p.z) / r.z}) > 1 + 1e-12;
-            };
-            if (lo > t0 || beyond_radii(o + d * t0))
-                if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo);
-                    inside && inside->lo > 0) {
-                    const double reached = lo + inside->lo;
-                    visit(Crossing{0.5 * (lo + reached), true, lo, reached});
-                    return;
-                }
-        }
-        if (convex && visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
-    }
+    if (convex && visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
 
     // F changes form where a coordinate changes sign: cut there, so that on every piece each |xᵢ| is linear and
     // the bound is exact.
