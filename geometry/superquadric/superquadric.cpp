@@ -143,6 +143,13 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
     // coordinate planes, and the pieces' own tests already pass over most of the box.
     const bool convex = deformation_.empty() && shape_.is_convex();
+    // A ray that starts within a convex shape's box outside it and moving away (a ray leaving its surface, as a rule)
+    // has no crossing: one point value says so, before the quadrics and an even-exponent shape's polynomial solve.
+    if (convex && clip->enter_axis < 0) {
+        const ValueAndDerivative start = ray.value_and_slope(t0);
+        ++work.search.evaluations;
+        if (start.value > 0 && start.derivative >= 0) return;
+    }
     double lo = t0, hi = t1;
     if (deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) {
         const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);

@@ -280,6 +280,22 @@ TEST(SuperquadricIntersection, ARayThroughAShapesInscribedEllipsoidIsBlockedWith
     }
 }
 
+// A ray leaving a convex shape's surface is settled by one point value, an even-exponent shape's without its
+// polynomial solve.
+TEST(SuperquadricIntersection, ARayLeavingAConvexSurfaceTakesOnePointValue) {
+    for (const auto& [e1, e2] : {std::pair{0.5, 0.5}, {0.1, 1.0}, {1.0, 2.0}, {0.3, 0.7}}) {
+        const Superquadric s = make_superquadric({0.5, 0.8, 1.2}, e1, e2);
+        for (const auto& [eta, omega] : {std::pair{0.3, 0.4}, {-1.0, 2.5}, {0.0, -2.0}}) {
+            const Vec3d p = s.surface_point(eta, omega);
+            const Vec3d n = s.normal(p);
+            SuperquadricWork work;
+            EXPECT_FALSE(s.first_crossing(p + n * 1e-4, n, 0, 10, work)) << e1 << " " << e2 << " " << eta;
+            EXPECT_EQ(work.search.evaluations, 1u) << e1 << " " << e2 << " " << eta;
+            EXPECT_EQ(work.polynomial_solves, 0u) << e1 << " " << e2 << " " << eta;
+        }
+    }
+}
+
 // Rays that start just off the surface and leave it, as shadow rays do, many of them nearly along it (those meet the
 // shape again soon, within the stretch the search starts with): occlusion gives first_crossing's answer.
 TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingOnRaysLeavingTheSurface) {
