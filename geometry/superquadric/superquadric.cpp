@@ -138,10 +138,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         if (roots->t1 >= 0 && roots->t1 <= t1 - t0) visit(Crossing{t0 + roots->t1, false});
         return;
     }
-    // Two quadrics hold an undeformed solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is
-    // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
-    // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
-    // coordinate planes, and the pieces' own tests already pass over most of the box.
     const bool convex = deformation_.empty() && shape_.is_convex();
     // A ray that starts within a convex shape's box outside it and moving away (a ray leaving its surface, as a rule)
     // has no crossing: one point value says so, before the quadrics and an even-exponent shape's polynomial solve.
@@ -150,6 +146,10 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         ++work.search.evaluations;
         if (start.value > 0 && start.derivative >= 0) return;
     }
+    // Two quadrics hold an undeformed solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is
+    // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
+    // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
+    // coordinate planes, and the pieces' own tests already pass over most of the box.
     double lo = t0, hi = t1;
     if (deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) {
         const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);
