@@ -6,6 +6,8 @@
 // u = |x|/a1, v = |y|/a2, w = |z|/a3. G < 1 exactly where F < 1, but G is homogeneous of degree 1 (so it grows
 // like distance, never overflows, and stays well scaled for root refinement) and it is non-decreasing in each of
 // u, v, w, so its range over a box of magnitudes is given by the box's two extreme corners.
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -30,6 +32,11 @@ public:
     static constexpr double kMinExponent = 0.02, kMaxExponent = 4;
 
     double gauge(const Vec3d& p) const;
+    // The largest of |xᵢ|/aᵢ, the bounding box's gauge: at most the gauge (a p-norm is at least its largest
+    // component), without a power.
+    double box_gauge(const Vec3d& p) const {
+        return std::max({std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, std::abs(p.z) / radii_.z});
+    }
     // The gauge at p (bit for bit gauge(p)) and its derivative along `direction` (NaN where it is unbounded or
     // undefined, at coordinate planes for exponents above 2), for Newton steps along a ray.
     ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const;

@@ -100,9 +100,8 @@ bool Superquadric::certainly_outside(const Vec3d& point, double distance) const 
     const double reach = std::sqrt(3.0) * distance / (scale * std::min({r.x, r.y, r.z}));
     constexpr double kRounding = 1e-12;  // of the gauge and the placement, relative to the gauge's unit
     const Vec3d local = placement_.inverse_point(point);
-    // The gauge is at least the largest of |x|/a1, |y|/a2, |z|/a3: beside the box that settles it without the gauge.
-    const double least = std::max({std::abs(local.x) / r.x, std::abs(local.y) / r.y, std::abs(local.z) / r.z});
-    return least - 1 > reach + kRounding || shape_.gauge(local) - 1 > reach + kRounding;
+    // Beside the box, its gauge settles it without the shape's.
+    return shape_.box_gauge(local) - 1 > reach + kRounding || shape_.gauge(local) - 1 > reach + kRounding;
 }
 
 Vec3d Superquadric::normal(const Vec3d& point) const {
@@ -160,11 +159,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         // where the gauge is at least the largest |xᵢ|/aᵢ) and then reaches the inscribed ellipsoid (g < 0) crosses
         // the surface in between, and nowhere before.
         if constexpr (precision == CrossingPrecision::SignChange) {
-            const auto beyond_radii = [&](const Vec3d& p) {
-                const Vec3d& r = shape_.radii();
-                return std::max({std::abs(p.x) / r.x, std::abs(p.y) / r.y, std::abs(p.z) / r.z}) > 1 + 1e-12;
-            };
-            if (lo > t0 || beyond_radii(o + d * t0))
+            if (lo > t0 || shape_.box_gauge(o + d * t0) > 1 + 1e-12)
                 if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo);
                     inside && inside->lo > 0) {
                     const double reached = lo + inside->lo;
