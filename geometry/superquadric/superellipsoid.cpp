@@ -24,12 +24,13 @@ struct PNorm {
 
 double p_norm(double a, double b, const NormExponent& p) { return p_norm_parts(a, b, p).norm; }
 
-// ∂‖(a, b)‖_p/∂a and ∂/∂b: (a/N)^(p−1) = (a/N)^p·N/a, where (larger/N)^p = 1/sum and (smaller/N)^p = (sum − 1)/sum.
+// ∂‖(a, b)‖_p/∂a and ∂/∂b: (a/N)^(p−1) = (a/N)^p·N/a, where (larger/N)^p = 1/sum and (smaller/N)^p = power/sum
+// (power itself, not sum − 1, which would keep only its digits above 1's rounding: the normal needs them all).
 // At a zero argument the limit: 0 for p > 1, 1 for p = 1, unbounded (NaN, so that no Newton step is taken) below.
 std::pair<double, double> p_norm_partials(const PNorm& n, double a, double p) {
     if (n.larger == 0 || std::isinf(n.larger)) return {NAN, NAN};
     const double of_larger = n.norm / (n.larger * n.sum);
-    const double of_smaller = n.smaller > 0 ? (n.sum - 1) / n.sum * (n.norm / n.smaller) : p > 1 ? 0 : p == 1 ? 1 : NAN;
+    const double of_smaller = n.smaller > 0 ? n.power / n.sum * (n.norm / n.smaller) : p > 1 ? 0 : p == 1 ? 1 : NAN;
     return a >= n.smaller && a == n.larger ? std::pair{of_larger, of_smaller} : std::pair{of_smaller, of_larger};
 }
 
@@ -227,6 +228,24 @@ IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
 
 
 Vec3d Superellipsoid::normal(const Vec3d& p) const {
+    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, w = std::abs(p.z) / radii_.z;
+    // ∂G/∂u = ∂G/∂h·∂h/∂u and so on, from the p-norms' parts as the gauge takes them: without logarithms where the
+    // partials are finite (off the coordinate planes of exponents above 2), and scaled by the largest before the
+    // normalisation, so that neither their squares overflow nor their sizes matter.
+    const PNorm h = p_norm_parts(u, v, p2_), g = p_norm_parts(h.norm, w, p1_);
+    const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2_.p);
+    const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1_.p);
+    const Vec3d gradient(dg_dh * dh_du / radii_.x, dg_dh * dh_dv / radii_.y, dg_dw / radii_.z);
+    const double largest = max_component(gradient);
+    if (std::isfinite(largest) && largest > 0 && is_finite(gradient)) {
+        const double scale = 1 / largest;
+        return normalize(Vec3d(std::copysign(gradient.x * scale, p.x), std::copysign(gradient.y * scale, p.y),
+                               std::copysign(gradient.z * scale, p.z)));
+    }
+    return limit_normal(p);
+}
+
+Vec3d Superellipsoid::limit_normal(const Vec3d& p) const {
     const double p1 = p1_.p, p2 = p2_.p;
     const Vec3d scaled(std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, std::abs(p.z) / radii_.z);
     const double size = max_component(scaled);

@@ -94,6 +94,9 @@ public:
     }
 
 private:
+    // The normal from the partial derivatives' logarithms: also where they are unbounded or vanish together.
+    Vec3d limit_normal(const Vec3d& p) const;
+
     Vec3d radii_;
     double north_south_, east_west_;
     NormExponent p1_, p2_;  // of the outer norm (2/ε1) and the inner, horizontal one (2/ε2)

@@ -257,6 +257,46 @@ TEST(SuperquadricSuperellipsoid, NormalsOnTheCoordinatePlanesAreTheLimits) {
     EXPECT_NEAR(dot(face, normalize(Vec3d(1, 1, 1))), 1.0, 1e-12);
 }
 
+// The normal is the long-double gradient's direction to within a few ulps, also a hair off the coordinate planes
+// (where a share's power is far below 1's rounding) and on them (where the partials vanish or are unbounded, and
+// the normal is their limit), over the whole exponent range.
+TEST(SuperquadricSuperellipsoid, NormalsAreTheGradientsDirectionToAFewUlps) {
+    std::mt19937 random(47);
+    std::uniform_real_distribution<double> eta(-1.5, 1.5), omega(-3.1, 3.1), fraction(0, 1),
+        exponent(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent);
+    const double offsets[] = {0, 1e-300, 1e-150, 1e-30, 1e-9, 1e-3};
+    int checked = 0, limits = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Superellipsoid s{{0.5 + fraction(random), 0.5 + fraction(random), 0.5 + fraction(random)},
+                               exponent(random), exponent(random)};
+        Vec3d p = s.surface_point(eta(random), omega(random));
+        if (i % 2) p[i / 2 % 3] = offsets[i / 6 % std::size(offsets)];  // near or on a coordinate plane
+        if (max_component(abs(p)) == 0) continue;
+        const Vec3d n = s.normal(p);
+        ASSERT_TRUE(is_finite(n)) << i;
+        EXPECT_NEAR(length(n), 1.0, 1e-15) << i;
+        const std::array<long double, 3> gradient = long_double_gradient(s, p);
+        const long double size = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
+                                           gradient[2] * gradient[2]);
+        // An unbounded partial (NaN): the normal leans towards its axis when it is one. (The limit is the axis
+        // itself; for exponents a hair above 2 the normal's floored logarithms fall short of it.)
+        if (std::isnan(double(size))) {
+            int unbounded = 0, axis_of = 0;
+            for (int axis = 0; axis < 3; ++axis)
+                if (std::isnan(double(gradient[axis]))) ++unbounded, axis_of = axis;
+            if (unbounded == 1) EXPECT_EQ(std::abs(n[axis_of]), max_component(abs(n))) << i;
+            ++limits;
+            continue;
+        }
+        for (int axis = 0; axis < 3; ++axis)
+            EXPECT_NEAR(n[axis], double(gradient[axis] / size), 1e-14)
+                << i << " axis " << axis << " e " << s.north_south() << " " << s.east_west();
+        ++checked;
+    }
+    EXPECT_GT(checked, 3000);
+    EXPECT_GT(limits, 20);
+}
+
 // A random superellipsoid over the whole exponent range and a segment between two random points of its box.
 struct RandomSegment {
     Superellipsoid shape;
