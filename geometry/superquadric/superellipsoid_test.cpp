@@ -257,10 +257,11 @@ TEST(SuperquadricSuperellipsoid, NormalsOnTheCoordinatePlanesAreTheLimits) {
     EXPECT_NEAR(dot(face, normalize(Vec3d(1, 1, 1))), 1.0, 1e-12);
 }
 
-// The normal is the long-double gradient's direction to within a few ulps, also a hair off the coordinate planes
-// (where a share's power is far below 1's rounding) and on them (where the partials vanish or are unbounded, and
-// the normal is their limit), over the whole exponent range.
-TEST(SuperquadricSuperellipsoid, NormalsAreTheGradientsDirectionToAFewUlps) {
+// The normal is the long-double gradient's direction to 10⁻¹², also a hair off the coordinate planes (where a share's
+// power is far below 1's rounding) and on them (where the partials vanish or are unbounded, and the normal is their
+// limit), over the whole exponent range. Not to a few ulps: 10⁻³⁰⁰ off a plane a share's power can be subnormal, and
+// a thread that flushes subnormals to zero (as Embree's callers may) loses a component of 10⁻¹³.
+TEST(SuperquadricSuperellipsoid, NormalsAreTheGradientsDirection) {
     std::mt19937 random(47);
     std::uniform_real_distribution<double> eta(-1.5, 1.5), omega(-3.1, 3.1), fraction(0, 1),
         exponent(Superellipsoid::kMinExponent, Superellipsoid::kMaxExponent);
@@ -269,7 +270,8 @@ TEST(SuperquadricSuperellipsoid, NormalsAreTheGradientsDirectionToAFewUlps) {
     for (int i = 0; i < 4000; ++i) {
         const Superellipsoid s{{0.5 + fraction(random), 0.5 + fraction(random), 0.5 + fraction(random)},
                                exponent(random), exponent(random)};
-        Vec3d p = s.surface_point(eta(random), omega(random));
+        const double latitude = eta(random), longitude = omega(random);
+        Vec3d p = s.surface_point(latitude, longitude);
         if (i % 2) p[i / 2 % 3] = offsets[i / 6 % std::size(offsets)];  // near or on a coordinate plane
         if (max_component(abs(p)) == 0) continue;
         const Vec3d n = s.normal(p);
@@ -289,7 +291,7 @@ TEST(SuperquadricSuperellipsoid, NormalsAreTheGradientsDirectionToAFewUlps) {
             continue;
         }
         for (int axis = 0; axis < 3; ++axis)
-            EXPECT_NEAR(n[axis], double(gradient[axis] / size), 1e-14)
+            EXPECT_NEAR(n[axis], double(gradient[axis] / size), 1e-12)
                 << i << " axis " << axis << " e " << s.north_south() << " " << s.east_west();
         ++checked;
     }
