@@ -56,6 +56,7 @@ Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double ea
     // And G ≤ C1·‖(C2·‖(u, v)‖₂, w)‖₂ the same way.
     const double m1 = euclidean_multiple(p1_.p), m2 = euclidean_multiple(p2_.p);
     inscribed_scale_ = {m1 * m2 / radii.x, m1 * m2 / radii.y, m1 / radii.z};
+    polynomial_degree_ = degree_of_polynomial();
 }
 
 double Superellipsoid::gauge(const Vec3d& p) const {
@@ -268,7 +269,7 @@ Vec3d Superellipsoid::limit_normal(const Vec3d& p) const {
     return normalize(Vec3d(component(p.x, log_x), component(p.y, log_y), component(p.z, log_z)));
 }
 
-int Superellipsoid::polynomial_degree() const {
+int Superellipsoid::degree_of_polynomial() const {
     if (north_south_ != east_west_) return 0;
     const double n = p1_.p;
     const double rounded = std::round(n);

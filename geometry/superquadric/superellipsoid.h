@@ -78,7 +78,7 @@ public:
 
     // n when ε1 = ε2 = 2/n with n even (n ≤ kMaxPolynomialDegree): then F = Σ (xᵢ/aᵢ)ⁿ is a polynomial along a
     // ray and needs neither abs() nor splitting. 0 otherwise.
-    int polynomial_degree() const;
+    int polynomial_degree() const { return polynomial_degree_; }
     // F − 1 along origin + t·direction (requires polynomial_degree() > 0).
     Polynomial polynomial_along(const Vec3d& origin, const Vec3d& direction) const;
 
@@ -96,6 +96,8 @@ public:
 private:
     // The normal from the partial derivatives' logarithms: also where they are unbounded or vanish together.
     Vec3d limit_normal(const Vec3d& p) const;
+    // polynomial_degree(), found once: every search asks for it.
+    int degree_of_polynomial() const;
 
     Vec3d radii_;
     double north_south_, east_west_;
@@ -104,6 +106,7 @@ private:
     // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = cylinder_scale_ (its z component 0) and for k = ellipsoid_scale_,
     // and holds the points where it is below 1 for k = inscribed_scale_.
     Vec3d cylinder_scale_, ellipsoid_scale_, inscribed_scale_;
+    int polynomial_degree_;
 };
 
 }  // namespace isotrace
