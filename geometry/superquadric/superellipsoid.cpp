@@ -238,7 +238,7 @@ Vec3d Superellipsoid::normal(const Vec3d& p) const {
     const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1_.p);
     const Vec3d gradient(dg_dh * dh_du / radii_.x, dg_dh * dh_dv / radii_.y, dg_dw / radii_.z);
     const double largest = max_component(gradient);
-    if (std::isfinite(largest) && largest > 0 && is_finite(gradient)) {
+    if (is_finite(gradient) && largest > 0) {
         const double scale = 1 / largest;
         return normalize(Vec3d(std::copysign(gradient.x * scale, p.x), std::copysign(gradient.y * scale, p.y),
                                std::copysign(gradient.z * scale, p.z)));

@@ -106,7 +106,7 @@ private:
     // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = cylinder_scale_ (its z component 0) and for k = ellipsoid_scale_,
     // and holds the points where it is below 1 for k = inscribed_scale_.
     Vec3d cylinder_scale_, ellipsoid_scale_, inscribed_scale_;
-    int polynomial_degree_;
+    int polynomial_degree_ = 0;
 };
 
 }  // namespace isotrace
