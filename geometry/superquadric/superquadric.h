@@ -99,6 +99,13 @@ public:
     // Whether the ray lies inside throughout (t, past] after entering at t: g deep below zero at past, and between
     // them convexity (undeformed exponents ≤ 2) or a bound of g′ below zero.
     bool inside_after_entry(const Vec3d& origin, const Vec3d& direction, double t, double past) const;
+    // Whether a deformed shape's box holds the point: an occlusion query from there (a shadow ray leaving its
+    // surface) must prove the ray's way out through the shell, a costly search that is put off until nothing else
+    // blocks the ray (OcclusionPass). Undeformed shapes settle such rays by their quadrics or one point value.
+    bool starts_within_deformed_box(const Vec3d& origin, const Vec3d& direction, double t_near) const {
+        return !deformation_.empty() &&
+               deformation_.deformed_box().contains(placement_.inverse_point(origin + direction * t_near));
+    }
     // All crossings in [t_min, t_max], in increasing t, appended to `out`.
     void crossings(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max,
                    std::vector<Crossing>& out, SuperquadricWork& work) const;

@@ -136,14 +136,18 @@ void SuperquadricShape::intersect_callback(const RTCIntersectFunctionNArguments*
 
 void SuperquadricShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
-    user_geometry::occlude_rays(args, self->counter_slot_,
-                                [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
-                                    SuperquadricWork work;
-                                    const bool blocked =
-                                        self->superquadrics_[args->primID].blocks(origin, direction, t_near, t_far, work);
-                                    self->record_work(work);
-                                    return blocked;
-                                });
+    const Superquadric& s = self->superquadrics_[args->primID];
+    user_geometry::occlude_rays(
+        args, self->counter_slot_,
+        [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
+            SuperquadricWork work;
+            const bool blocked = s.blocks(origin, direction, t_near, t_far, work);
+            self->record_work(work);
+            return blocked;
+        },
+        [&](const Vec3d& origin, const Vec3d& direction, double t_near) {
+            return s.starts_within_deformed_box(origin, direction, t_near);
+        });
 }
 
 void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin, const Vec3d& direction,

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
@@ -230,6 +231,50 @@ TEST(SuperquadricShapeField, DeformedOnesAreZeroOnTheirSurfaceAndTheGradientIsTh
             ++checked;
         }
         EXPECT_GT(checked, 10) << object;
+    }
+}
+
+// A shadow ray that starts within a deformed shape's box (one leaving its surface) asks that shape only when nothing
+// else blocks it (OcclusionPass): a ray the shape above blocks costs that shape's test alone; the answers are those
+// of the nearest hit, for single rays and packets alike, also where only the shape the ray starts in blocks it.
+// (Which of two primitives Embree asks first is its own affair: UserGeometryOcclusion tests the passes directly.)
+TEST(SuperquadricShape, OcclusionQueriesFromWithinADeformedShapeAreAskedLast) {
+    const Superquadric twisted = make_superquadric({1, 1, 1}, 0.7, 1.4, {Twist(1, 1)});
+    auto scene = std::make_unique<RenderScene>();
+    SceneObject object;
+    object.shape = std::make_unique<SuperquadricShape>(
+        std::vector<Superquadric>{twisted, make_superquadric({1, 1, 1}, 1, 1, {}, Transform::translate({0, 0, 4}))});
+    scene->add_object(std::move(object));
+    scene->commit();
+    const auto tests = [] {
+        const CounterTotals totals = counters::totals();
+        const auto found = totals.geometry.find("superquadric");
+        return found == totals.geometry.end() ? std::uint64_t(0) : found->second.tests;
+    };
+    std::mt19937 random(8);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (int i = 0; i < 200; ++i) {
+        // Within the twisted shape's box, outside the shape, towards the centre of the one above.
+        const Vec3d origin = Vec3d(0.9, 0.9, 0.9) + Vec3d(unit(random), unit(random), unit(random)) * 0.05;
+        const Vec3d towards = Vec3d(0, 0, 4) + Vec3d(unit(random), unit(random), unit(random)) * 0.2 - origin;
+        ASSERT_TRUE(twisted.starts_within_deformed_box(origin, towards, 0) && !twisted.contains(origin)) << i;
+        const std::uint64_t before = tests();
+        EXPECT_TRUE(scene->occluded(make_ray(origin, towards))) << i;
+        EXPECT_EQ(tests() - before, 1u) << i;  // the shape above, alone
+    }
+    for (int i = 0; i < 200; ++i) {
+        std::array<Ray, 8> rays;
+        for (Ray& ray : rays) {
+            const Vec3d origin{0.5 * unit(random), 0.5 * unit(random), 0.5 * unit(random)};
+            ray = make_ray(origin, {unit(random), unit(random), unit(random)});  // out sideways, up, or through it
+            ray.t_far = i % 2 ? 0.5f : std::numeric_limits<float>::infinity();
+        }
+        const unsigned blocked = scene->occluded(rays, 0xFFu);
+        for (std::size_t lane = 0; lane < rays.size(); ++lane) {
+            const bool hit = scene->intersect(rays[lane], RayKind::Shadow).has_value();
+            EXPECT_EQ(scene->occluded(rays[lane]), hit) << i << " lane " << lane;
+            EXPECT_EQ(bool(blocked >> lane & 1u), hit) << i << " lane " << lane;
+        }
     }
 }
 

@@ -10,10 +10,22 @@
 
 namespace isotrace {
 
+// Which of a primitive's occlusion queries a pass answers (RenderScene::occluded). A primitive may put off a query
+// whose ray starts within it (a shadow ray leaving its surface), when proving that such a ray gets out costs far
+// more than a query from outside: the first pass asks every other query, and only a ray none of them blocks is
+// asked again for the ones put off. The answer is the same; a ray that something else blocks skips the costly one.
+enum class OcclusionPass {
+    All,           // a single pass
+    AwayFromStarts,  // every query but those put off, which are noted (QueryContext::put_off)
+    AtStarts,      // only the queries put off
+};
+
 struct QueryContext {
     RTCIntersectContext embree;  // first: the callbacks' args->context points here
     QueryScratchPool* pool;
     QueryScratchPool::Loan loan;  // from `pool`, by the first callback that asks for a scratch
+    OcclusionPass occlusion_pass = OcclusionPass::All;
+    bool put_off = false;  // a query of this one was put off by its first pass
 
     explicit QueryContext(QueryScratchPool& scratch_pool) : pool(&scratch_pool) { rtcInitIntersectContext(&embree); }
     ~QueryContext() {
@@ -24,10 +36,13 @@ struct QueryContext {
 };
 static_assert(std::is_standard_layout_v<QueryContext>, "a pointer to QueryContext::embree is one to the QueryContext");
 
-// The scratch of the query whose callback received `context`, which must be a QueryContext's (every query of a
-// RenderScene that can reach a user geometry passes one).
+// The QueryContext of the query whose callback received `context`, which must be a QueryContext's (every query of
+// a RenderScene that can reach a user geometry passes one).
+inline QueryContext& query_context(RTCIntersectContext* context) { return *reinterpret_cast<QueryContext*>(context); }
+
+// That query's scratch.
 inline QueryScratch& query_scratch(RTCIntersectContext* context) {
-    QueryContext& query = *reinterpret_cast<QueryContext*>(context);
+    QueryContext& query = query_context(context);
     if (!query.loan.scratch) query.loan = query.pool->borrow();
     return *query.loan.scratch;
 }

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "renderer/core/render_counters.h"
 #include "renderer/core/thread_sanitizer.h"
+#include "renderer/embree/query_context.h"
 #include "renderer/math/vec3.h"
 
 namespace isotrace::user_geometry {
@@ -92,20 +94,38 @@ void intersect_rays(const RTCIntersectFunctionNArguments* args, int counter_slot
     }
 }
 
-// The loop of an occluded callback, with first_hit as above: a hit occludes the ray (t_far = −∞).
-template <class FirstHit>
-void occlude_rays(const RTCOccludedFunctionNArguments* args, int counter_slot, FirstHit&& first_hit) {
+// The loop of an occluded callback, with first_hit as above: a hit occludes the ray (t_far = −∞). A query for
+// which puts_off(origin, direction, t_near) is true is put off to the second pass of a two-pass occlusion query
+// (OcclusionPass); the other queries are answered in the first pass or in a single one.
+template <class FirstHit, class PutsOff>
+void occlude_rays(const RTCOccludedFunctionNArguments* args, int counter_slot, FirstHit&& first_hit,
+                  PutsOff&& puts_off) {
+    QueryContext& query = query_context(args->context);
     RTCRayN* rays = args->ray;
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
+        const Vec3d origin = ray_origin(rays, args->N, i), direction = ray_direction(rays, args->N, i);
+        const double t_near = RTCRayN_tnear(rays, args->N, i);
+        if (query.occlusion_pass != OcclusionPass::All) {
+            const bool put_off = puts_off(origin, direction, t_near);
+            if (put_off != (query.occlusion_pass == OcclusionPass::AtStarts)) {
+                query.put_off = query.put_off || put_off;
+                continue;
+            }
+        }
         counters::count_test(counter_slot);
         float& t_far = RTCRayN_tfar(rays, args->N, i);
-        if (!first_hit(ray_origin(rays, args->N, i), ray_direction(rays, args->N, i),
-                       double(RTCRayN_tnear(rays, args->N, i)), t_far))
-            continue;
+        if (!first_hit(origin, direction, t_near, t_far)) continue;
         counters::count_candidate_hit(counter_slot);
         t_far = -std::numeric_limits<float>::infinity();
     }
+}
+
+// The same for a primitive that answers every query at once.
+template <class FirstHit>
+void occlude_rays(const RTCOccludedFunctionNArguments* args, int counter_slot, FirstHit&& first_hit) {
+    occlude_rays(args, counter_slot, std::forward<FirstHit>(first_hit),
+                 [](const Vec3d&, const Vec3d&, double) { return false; });
 }
 
 }  // namespace isotrace::user_geometry

@@ -362,13 +362,26 @@ unsigned RenderScene::occluded(std::span<const Ray> rays, unsigned live) const {
         return occluded(rays[std::size_t(lane)]) ? live : 0u;
     }
     counters::count_rays(RayKind::Shadow, std::uint64_t(std::popcount(live)));
-    QueryContext context(scratch_pool_);
+    QueryContext context(scratch_pool_);  // two passes, as occluded(const Ray&) takes them
+    context.occlusion_pass = OcclusionPass::AwayFromStarts;
     RTCRay8 query;  // Embree reads only the valid lanes
     alignas(32) std::array<std::int32_t, 8> valid;
     const unsigned untraceable = set_packet(rays, live, query, valid);  // no light arrives along an untraceable ray
     rtcOccluded8(valid.data(), scene_, &context.embree, &query);
-    return untraceable | lane_bits(load_lanes(valid.data()) &
-                                   (load_lanes(query.tfar) == -std::numeric_limits<float>::infinity()));
+    const auto blocked = [&] {
+        return lane_bits(load_lanes(valid.data()) & (load_lanes(query.tfar) == -std::numeric_limits<float>::infinity()));
+    };
+    unsigned found = blocked();
+    if (context.put_off) {
+        const IntLanes open = load_lanes(valid.data()) & ~lanes_of_bits(found);
+        if (lane_bits(open)) {
+            store_lanes(valid.data(), open);  // the rays nothing blocked, as they were
+            context.occlusion_pass = OcclusionPass::AtStarts;
+            rtcOccluded8(valid.data(), scene_, &context.embree, &query);
+            found |= blocked();
+        }
+    }
+    return untraceable | found;
 }
 
 void RenderScene::complete_hit(const Ray& ray, const RTCHit& embree_hit, float t,

@@ -101,11 +101,17 @@ public:
             count_untraceable_rays(1);
             return true;
         }
+        // Two passes (OcclusionPass): the queries a primitive puts off are asked only when nothing else blocks.
         QueryContext context(scratch_pool_);
+        context.occlusion_pass = OcclusionPass::AwayFromStarts;
         RTCRay query;
         set_embree_ray(query, ray);
         rtcOccluded1(scene_, &context.embree, &query);
-        return query.tfar == -std::numeric_limits<float>::infinity();
+        constexpr float kBlocked = -std::numeric_limits<float>::infinity();
+        if (query.tfar == kBlocked || !context.put_off) return query.tfar == kBlocked;
+        context.occlusion_pass = OcclusionPass::AtStarts;
+        rtcOccluded1(scene_, &context.embree, &query);  // a ray nothing blocked is as it was
+        return query.tfar == kBlocked;
     }
 
     // Lights in proportion to their power (all lights: scene-file lights and area lights).
