@@ -15,9 +15,9 @@ namespace isotrace {
 // more than a query from outside: the first pass asks every other query, and only a ray none of them blocks is
 // asked again for the ones put off. The answer is the same; a ray that something else blocks skips the costly one.
 enum class OcclusionPass {
-    All,           // a single pass
+    All,             // a single pass
     AwayFromStarts,  // every query but those put off, which are noted (QueryContext::put_off)
-    AtStarts,      // only the queries put off
+    AtStarts,        // only the queries put off
 };
 
 struct QueryContext {
