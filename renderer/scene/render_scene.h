@@ -108,7 +108,8 @@ public:
         set_embree_ray(query, ray);
         rtcOccluded1(scene_, &context.embree, &query);
         constexpr float kBlocked = -std::numeric_limits<float>::infinity();
-        if (query.tfar == kBlocked || !context.put_off) return query.tfar == kBlocked;
+        if (query.tfar == kBlocked) return true;
+        if (!context.put_off) return false;
         context.occlusion_pass = OcclusionPass::AtStarts;
         rtcOccluded1(scene_, &context.embree, &query);  // a ray nothing blocked is as it was
         return query.tfar == kBlocked;
