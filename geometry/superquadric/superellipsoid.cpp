@@ -66,20 +66,21 @@ double Superellipsoid::gauge(const Vec3d& p) const {
 
 namespace {
 
-// d(|x|/a)/dt: on each piece the search cuts at the coordinate planes, |x| is linear.
-double rate(double coordinate, double along, double radius) {
-    return (coordinate < 0 || (coordinate == 0 && along < 0) ? -along : along) / radius;
+// d(|x|/a)/dt from d(x/a)/dt: on each piece the search cuts at the coordinate planes, |x| is linear.
+double rate(double coordinate, double per_radius) {
+    return coordinate < 0 || (coordinate == 0 && per_radius < 0) ? -per_radius : per_radius;
 }
 
 }  // namespace
 
-ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const Vec3d& direction) const {
+ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const RadiusRates& direction) const {
+    const Vec3d& rates = direction.per_radius;
     const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, w = std::abs(p.z) / radii_.z;
     const PNorm h = p_norm_parts(u, v, p2_), g = p_norm_parts(h.norm, w, p1_);
     const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2_.p);
     const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1_.p);
-    const double dh = dh_du * rate(p.x, direction.x, radii_.x) + dh_dv * rate(p.y, direction.y, radii_.y);
-    const double slope = dg_dh * dh + dg_dw * rate(p.z, direction.z, radii_.z);
+    const double dh = dh_du * rate(p.x, rates.x) + dh_dv * rate(p.y, rates.y);
+    const double slope = dg_dh * dh + dg_dw * rate(p.z, rates.z);
     return {g.norm, std::isfinite(slope) ? slope : NAN};
 }
 
@@ -125,7 +126,9 @@ std::optional<Interval> Superellipsoid::inscribed_stretch(const Vec3d& start, co
 // h = ‖(u, v)‖_p2 is convex along a piece for p2 ≥ 1 and concave for p2 ≤ 1; R(w) = (1 − w^p1)^(1/p1), the edge of
 // the p1-ball, is concave for p1 ≥ 1 and convex for p1 ≤ 1. With one exponent on each side of 2 both are convex or
 // both concave, and φ = h − R is their difference (negated for the concave pair).
-Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Vec3d& p, const Vec3d& direction) const {
+Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Vec3d& p,
+                                                                        const RadiusRates& direction) const {
+    const Vec3d& rates = direction.per_radius;
     constexpr double inf = std::numeric_limits<double>::infinity();
     const double p1 = p1_.p, p2 = p2_.p;
     const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, z = std::abs(p.z) / radii_.z;
@@ -133,14 +136,14 @@ Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Ve
     const PNorm h = p_norm_parts(u, v, p2_);
     const double gauge = p_norm(h.norm, z, p1_);  // as gauge(p) takes it
     const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2);
-    const double h_slope = dh_du * rate(p.x, direction.x, radii_.x) + dh_dv * rate(p.y, direction.y, radii_.y);
+    const double h_slope = dh_du * rate(p.x, rates.x) + dh_dv * rate(p.y, rates.y);
     const double w_power = p1_.unit_power(w), rest = 1 - w_power;
     const double edge = rest > 0 ? p1_.any_root(rest) : 0;
     // dR/dw = −w^(p1−1)·R^(1−p1) = −(w^p1/w)·(R/(1 − w^p1)), with its limits at w = 0 and w = 1.
     const double dr_dw = w == 0      ? (p1 > 1 ? 0 : p1 == 1 ? -1 : -inf)
                          : rest <= 0 ? (p1 < 1 ? 0 : -inf)
                                      : -(w_power / w) * (edge / rest);
-    const double edge_slope = dr_dw * rate(p.z, direction.z, radii_.z);
+    const double edge_slope = dr_dw * rate(p.z, rates.z);
     const ConvexSample horizontal{h.norm, std::isfinite(h_slope) ? h_slope : NAN}, vertical{edge, edge_slope};
     if (p2 >= 1) return {gauge, {horizontal, vertical}};
     return {gauge, {{-vertical.value, -vertical.slope}, {-horizontal.value, -horizontal.slope}}};

@@ -37,9 +37,20 @@ public:
     double box_gauge(const Vec3d& p) const {
         return std::max({std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, std::abs(p.z) / radii_.z});
     }
+    // A direction with each component divided by its radius: the rates at which u, v and w change along it, up to
+    // their signs. Along a straight ray they are the same at every point, so a search takes them once.
+    struct RadiusRates {
+        Vec3d per_radius;
+    };
+    RadiusRates rates_along(const Vec3d& direction) const {
+        return {{direction.x / radii_.x, direction.y / radii_.y, direction.z / radii_.z}};
+    }
     // The gauge at p (bit for bit gauge(p)) and its derivative along `direction` (NaN where it is unbounded or
     // undefined, at coordinate planes for exponents above 2), for Newton steps along a ray.
-    ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const;
+    ValueAndDerivative gauge_along(const Vec3d& p, const RadiusRates& direction) const;
+    ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const {
+        return gauge_along(p, rates_along(direction));
+    }
     // The part [lo, hi] of the segment start + τ·direction, τ ∈ [0, length], inside the elliptic cylinder around z
     // and the ellipsoid that hold the solid G ≤ 1, enlarged by a margin far above the gauge's rounding (so that the
     // gauge exceeds 1 where the part ends before `length` or begins after 0); nothing where the segment misses them.
@@ -61,7 +72,7 @@ public:
         double gauge;
         DifferenceOfConvexSample difference;
     };
-    GaugeAndDifference gauge_and_difference(const Vec3d& p, const Vec3d& direction) const;
+    GaugeAndDifference gauge_and_difference(const Vec3d& p, const RadiusRates& direction) const;
     // The range of the gauge over the (signed) points of `box`: the values at the two extreme corners of its box of
     // magnitudes, widened outward by the gauge's rounding error.
     Interval gauge_range(const IntervalBox& box) const;

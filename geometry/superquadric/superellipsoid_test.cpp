@@ -186,7 +186,7 @@ TEST(SuperquadricSuperellipsoid, TheGaugeTakenWithTheDifferenceIsTheGaugeBitForB
         const Superellipsoid s{{0.7, 1.1, 0.9}, north_south, east_west};
         for (int i = 0; i < 500; ++i) {
             const Vec3d p{1.2 * unit(random), 1.2 * unit(random), i % 5 == 0 ? 0.0 : 1.2 * unit(random)};
-            EXPECT_EQ(s.gauge_and_difference(p, {unit(random), unit(random), unit(random)}).gauge, s.gauge(p));
+            EXPECT_EQ(s.gauge_and_difference(p, s.rates_along({unit(random), unit(random), unit(random)})).gauge, s.gauge(p));
         }
     }
 }

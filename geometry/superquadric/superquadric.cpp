@@ -187,7 +187,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     bool cusp_lo = false, cusp_hi = false;
     RecentSamples<Superellipsoid::GaugeAndDifference> samples;
     const auto mixed_at = [&](double t) -> const Superellipsoid::GaugeAndDifference& {
-        return samples.at(t, [&] { return shape_.gauge_and_difference(o + d * t, d); });
+        return samples.at(t, [&] { return shape_.gauge_and_difference(o + d * t, ray.undeformed_rates()); });
     };
     // Undeformed, the field is the gauge less 1 (local_field): mixed shapes take it with their parts.
     const auto value = [&](double t) { return mixed ? mixed_at(t).gauge - 1 : ray.value(t); };

@@ -8,11 +8,18 @@ SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, con
                                            const Vec3d& direction)
     : superquadric_(superquadric),
       origin_(superquadric.placement().inverse_point(origin)),
-      direction_(superquadric.placement().inverse_vector(direction)) {}
+      direction_(superquadric.placement().inverse_vector(direction)),
+      deformed_(!superquadric.deformation().empty()),
+      rates_(superquadric.shape().rates_along(direction_)) {}
 
 ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
+    const Vec3d point = origin_ + direction_ * t;
+    if (!deformed_) {
+        const ValueAndDerivative gauge = superquadric_.shape().gauge_along(point, rates_);
+        return {gauge.value - 1, gauge.derivative};
+    }
     Vec3d velocity = direction_;
-    const std::optional<Vec3d> undeformed = superquadric_.deformation().inverse_along(origin_ + direction_ * t, velocity);
+    const std::optional<Vec3d> undeformed = superquadric_.deformation().inverse_along(point, velocity);
     if (!undeformed) return {1, std::numeric_limits<double>::quiet_NaN()};  // outside a stage box: outside
     const ValueAndDerivative gauge = superquadric_.shape().gauge_along(*undeformed, velocity);
     return {gauge.value - 1, gauge.derivative};

@@ -22,6 +22,8 @@ public:
 
     const Vec3d& local_origin() const { return origin_; }
     const Vec3d& local_direction() const { return direction_; }
+    // The local direction in the undeformed shape's radii (Superellipsoid::rates_along), for an undeformed one.
+    const Superellipsoid::RadiusRates& undeformed_rates() const { return rates_; }
 
     double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t, kBeyond); }
     // g(t) (bit for bit value(t)) and g′(t) (NaN where unknown: outside a stage box, on a crease).
@@ -43,6 +45,8 @@ private:
 
     const Superquadric& superquadric_;
     Vec3d origin_, direction_;
+    bool deformed_;
+    Superellipsoid::RadiusRates rates_;  // taken once: the ray's direction is the same all along it undeformed
     mutable double walked_a_ = std::numeric_limits<double>::quiet_NaN(), walked_b_ = walked_a_;
     mutable bool walked_inside_ = false;
     mutable std::optional<DeformationChain::InverseBoxes> walked_;  // made when first asked: most rays ask none
