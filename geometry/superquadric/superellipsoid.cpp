@@ -44,6 +44,7 @@ double signed_power(double base, double exponent) { return std::copysign(std::po
 
 Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double east_west)
     : radii_(radii),
+      inverse_radii_(1 / radii.x, 1 / radii.y, 1 / radii.z),
       north_south_(north_south),
       east_west_(east_west),
       p1_(NormExponent::of_epsilon(north_south)),
@@ -60,8 +61,8 @@ Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double ea
 }
 
 double Superellipsoid::gauge(const Vec3d& p) const {
-    const double horizontal = p_norm(std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, p2_);
-    return p_norm(horizontal, std::abs(p.z) / radii_.z, p1_);
+    const Vec3d m = magnitudes(p);
+    return p_norm(p_norm(m.x, m.y, p2_), m.z, p1_);
 }
 
 namespace {
@@ -75,7 +76,7 @@ double rate(double coordinate, double per_radius) {
 
 ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const RadiusRates& direction) const {
     const Vec3d& rates = direction.per_radius;
-    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, w = std::abs(p.z) / radii_.z;
+    const auto [u, v, w] = magnitudes(p);
     const PNorm h = p_norm_parts(u, v, p2_), g = p_norm_parts(h.norm, w, p1_);
     const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2_.p);
     const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1_.p);
@@ -131,7 +132,7 @@ Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Ve
     const Vec3d& rates = direction.per_radius;
     constexpr double inf = std::numeric_limits<double>::infinity();
     const double p1 = p1_.p, p2 = p2_.p;
-    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, z = std::abs(p.z) / radii_.z;
+    const auto [u, v, z] = magnitudes(p);
     const double w = std::min(z, 1.0);
     const PNorm h = p_norm_parts(u, v, p2_);
     const double gauge = p_norm(h.norm, z, p1_);  // as gauge(p) takes it
@@ -220,26 +221,26 @@ Interval signed_by(Interval x, Interval factor) {
 // ∂G/∂u = (h/G)^(p1−1)·(u/h)^(p2−1), ∂G/∂v likewise, ∂G/∂w = (w/G)^(p1−1), with h = ‖(u, v)‖_p2, p = 2/ε and
 // u = |x|/a1, ...; every factor is a power of a share in [0, 1], bounded from the ranges of u, v, w, h.
 IntervalBox Superellipsoid::gradient_range(const IntervalBox& box) const {
-    const Interval u = box.x.magnitude() * (1 / radii_.x), v = box.y.magnitude() * (1 / radii_.y),
-                   w = box.z.magnitude() * (1 / radii_.z);
+    const Interval u = box.x.magnitude() * inverse_radii_.x, v = box.y.magnitude() * inverse_radii_.y,
+                   w = box.z.magnitude() * inverse_radii_.z;
     const Interval h = {p_norm(u.lo, v.lo, p2_), p_norm(u.hi, v.hi, p2_)};
     const auto [horizontal, d_dw] = share_powers(h, w, p1_);
     const auto [of_u, of_v] = share_powers(u, v, p2_);
     const Interval d_du = non_negative_product(horizontal, of_u), d_dv = non_negative_product(horizontal, of_v);
-    return {signed_by(box.x, d_du * (1 / radii_.x)), signed_by(box.y, d_dv * (1 / radii_.y)),
-            signed_by(box.z, d_dw * (1 / radii_.z))};
+    return {signed_by(box.x, d_du * inverse_radii_.x), signed_by(box.y, d_dv * inverse_radii_.y),
+            signed_by(box.z, d_dw * inverse_radii_.z)};
 }
 
 
 Vec3d Superellipsoid::normal(const Vec3d& p) const {
-    const double u = std::abs(p.x) / radii_.x, v = std::abs(p.y) / radii_.y, w = std::abs(p.z) / radii_.z;
+    const auto [u, v, w] = magnitudes(p);
     // ∂G/∂u = ∂G/∂h·∂h/∂u and so on, from the p-norms' parts as the gauge takes them: without logarithms where the
     // partials are finite (off the coordinate planes of exponents above 2), and scaled by the largest before the
     // normalisation, so that neither their squares overflow nor their sizes matter.
     const PNorm h = p_norm_parts(u, v, p2_), g = p_norm_parts(h.norm, w, p1_);
     const auto [dh_du, dh_dv] = p_norm_partials(h, u, p2_.p);
     const auto [dg_dh, dg_dw] = p_norm_partials(g, h.norm, p1_.p);
-    const Vec3d gradient(dg_dh * dh_du / radii_.x, dg_dh * dh_dv / radii_.y, dg_dw / radii_.z);
+    const Vec3d gradient(dg_dh * dh_du * inverse_radii_.x, dg_dh * dh_dv * inverse_radii_.y, dg_dw * inverse_radii_.z);
     const double largest = max_component(gradient);
     if (is_finite(gradient) && largest > 0) {
         const double scale = 1 / largest;
@@ -251,7 +252,7 @@ Vec3d Superellipsoid::normal(const Vec3d& p) const {
 
 Vec3d Superellipsoid::limit_normal(const Vec3d& p) const {
     const double p1 = p1_.p, p2 = p2_.p;
-    const Vec3d scaled(std::abs(p.x) / radii_.x, std::abs(p.y) / radii_.y, std::abs(p.z) / radii_.z);
+    const Vec3d scaled = magnitudes(p);
     const double size = max_component(scaled);
     if (size == 0) return {0, 0, 1};
     // ∂G/∂u = (h/G)^(p1−1)·(u/h)^(p2−1), ∂G/∂w = (w/G)^(p1−1), h = ‖(u, v)‖_p2. Magnitudes are floored at a tiny
