@@ -33,9 +33,11 @@ struct NormExponent {
         // Halley's step on f(x) = x^p − s, x − 2f·f′/(2f′² − f·f″), written as a correction of x: cubic convergence
         // takes the guess's error below the rounding, and the correction carries the power's rounding only
         // divided by p.
-        const double t = 2 * s - 3;
-        double x = root_guess.back();
-        for (int k = int(root_guess.size()) - 2; k >= 0; --k) x = x * t + root_guess[k];
+        // The guess in pairs of terms (Estrin's scheme): three short chains rather than one of five steps.
+        const double t = 2 * s - 3, t2 = t * t;
+        const auto& c = root_guess;
+        static_assert(std::tuple_size_v<decltype(root_guess)> == 6);
+        const double x = (c[0] + c[1] * t) + t2 * ((c[2] + c[3] * t) + t2 * (c[4] + c[5] * t));
         const double power = whole_power(x);
         return x + x * (2 * (s - power) / ((p + 1) * power + (p - 1) * s));
     }
