@@ -10,27 +10,41 @@ namespace {
 
 // (a^p + b^p)^(1/p) for a, b ≥ 0 as larger·(1 + (smaller/larger)^p)^(1/p), scaled by the larger so that neither
 // overflows nor underflows matter; `power` = (smaller/larger)^p and `sum` = 1 + power for the partial derivatives.
+// The Euclidean norm (p = 2, round cross-sections) is √(a² + b²) wherever the squares neither overflow nor lose
+// digits to underflow: without the division, one step shorter on the gauge's critical path.
 struct PNorm {
     double larger, smaller, power, sum, norm;
+    bool euclidean = false;  // then power and sum are not taken
 };
 
 // Inlined into its callers: a call costs as much as the rest of a round p-norm.
 [[gnu::always_inline]] inline PNorm p_norm_parts(double a, double b, const NormExponent& p) {
     const double larger = std::max(a, b), smaller = std::min(a, b);
     if (larger == 0 || std::isinf(larger)) return {larger, smaller, 0, 1, larger};
+    if (p.whole == 2 && larger > 0x1p-480 && larger < 0x1p480)
+        return {larger, smaller, 0, 0, std::sqrt(a * a + b * b), true};
     const double power = p.unit_power(smaller / larger), sum = 1 + power;
     return {larger, smaller, power, sum, larger * p.root(sum)};
 }
 
+// The p-norm's shares' powers p − 1 at a pair not both 0: (larger/N)^(p−1) = N/(larger·sum) and (smaller/N)^(p−1)
+// = power/sum·N/smaller, from power itself (not sum − 1, which keeps only its digits above 1's rounding: the normal
+// needs them all); for the Euclidean norm larger/N and smaller/N. `vanishing`: the smaller's at 0.
+std::pair<double, double> share_powers_at(const PNorm& n, double vanishing) {
+    if (n.euclidean) {
+        const double inverse = 1 / n.norm;
+        return {n.larger * inverse, n.smaller * inverse};
+    }
+    return {n.norm / (n.larger * n.sum), n.smaller > 0 ? n.power / n.sum * (n.norm / n.smaller) : vanishing};
+}
+
 double p_norm(double a, double b, const NormExponent& p) { return p_norm_parts(a, b, p).norm; }
 
-// ∂‖(a, b)‖_p/∂a and ∂/∂b: (a/N)^(p−1) = (a/N)^p·N/a, where (larger/N)^p = 1/sum and (smaller/N)^p = power/sum
-// (power itself, not sum − 1, which would keep only its digits above 1's rounding: the normal needs them all).
-// At a zero argument the limit: 0 for p > 1, 1 for p = 1, unbounded (NaN, so that no Newton step is taken) below.
+// ∂‖(a, b)‖_p/∂a and ∂/∂b: (a/N)^(p−1). At a zero argument the limit: 0 for p > 1, 1 for p = 1, unbounded (NaN,
+// so that no Newton step is taken) below.
 std::pair<double, double> p_norm_partials(const PNorm& n, double a, double p) {
     if (n.larger == 0 || std::isinf(n.larger)) return {NAN, NAN};
-    const double of_larger = n.norm / (n.larger * n.sum);
-    const double of_smaller = n.smaller > 0 ? n.power / n.sum * (n.norm / n.smaller) : p > 1 ? 0 : p == 1 ? 1 : NAN;
+    const auto [of_larger, of_smaller] = share_powers_at(n, p > 1 ? 0 : p == 1 ? 1 : NAN);
     return a >= n.smaller && a == n.larger ? std::pair{of_larger, of_smaller} : std::pair{of_smaller, of_larger};
 }
 
@@ -186,13 +200,9 @@ ShareRanges share_powers(Interval a, Interval b, const NormExponent& p) {
     if (p.p == 1) return {{1, 1}, {1, 1}};
     constexpr double inf = std::numeric_limits<double>::infinity(), kRelativeError = 0x1p-36;
     const double vanishing = p.p > 1 ? 0 : inf;  // a power p − 1 of a share that is 0
-    // At one pair, not both 0, from its p-norm's parts: the larger's is s^(1/p)/s with s = 1 + r^p and r the smaller
-    // over the larger, the smaller's r^(p−1) times that — from r^p itself, where p_norm_partials (for Newton steps)
-    // takes s − 1, which keeps only the digits of r^p above 1's rounding.
+    // At one pair, not both 0, from its p-norm's parts.
     const auto at = [&](double a_end, double b_end) {
-        const PNorm n = p_norm_parts(a_end, b_end, p);
-        const double of_larger = n.norm / (n.larger * n.sum);
-        const double of_smaller = n.smaller > 0 ? n.power / n.sum * (n.norm / n.smaller) : vanishing;
+        const auto [of_larger, of_smaller] = share_powers_at(p_norm_parts(a_end, b_end, p), vanishing);
         return a_end >= b_end ? SharePowers{of_larger, of_smaller} : SharePowers{of_smaller, of_larger};
     };
     const SharePowers at_lo = b.lo == 0 ? SharePowers{1, vanishing} : at(a.hi, b.lo);  // t least
