@@ -3,8 +3,9 @@
 // r ∈ [0, 1], and the root s^(1/p) of 1 + r^p ∈ [1, 2]. Those are the gauge's hottest calls, and a general pow
 // (which works in extra precision to round correctly) costs several times what they need, so small whole
 // exponents (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) take powers by repeated squaring, unrolled for each
-// exponent, and roots by one Halley step on x^p = s from a polynomial first guess; fractional ones keep pow, whose
-// short latency a series of the same accuracy did not match (docs/decisions.md).
+// exponent, and roots by a polynomial of degree 17 (a short chain of dependent operations, where a root is on the
+// gauge's critical path); fractional ones keep pow, whose short latency a series of the same accuracy did not match
+// (docs/decisions.md).
 #include <array>
 #include <cmath>
 
@@ -16,8 +17,8 @@ struct NormExponent {
     double inverse = 0.5;
     double (*whole_power)(double) = nullptr;  // x^p by repeated squaring, for whole p
     // For whole p without a closed-form root: s^(1/p) over s ∈ [1, 2] as a polynomial in 2s − 3 (interpolation at
-    // Chebyshev nodes, within 2·10⁻⁶ for every whole p ≥ 3), the first guess of root().
-    std::array<double, 6> root_guess{};
+    // Chebyshev nodes, within a few ulps for every whole p ≥ 3), root() itself.
+    std::array<double, 18> root_polynomial{};
 
     static NormExponent of_epsilon(double epsilon);
 
@@ -27,19 +28,20 @@ struct NormExponent {
         if (whole > 0) return whole_power(r);
         return r == 0 ? 0 : std::pow(r, p);  // on coordinate planes: pow's exact answer without the call
     }
-    // s^(1/p) for s in [1, 2], within an ulp (the error against a long double pow is tested for every whole p).
+    // s^(1/p) for s in [1, 2], within a few ulps (the error against a long double pow is tested for every whole p).
     double root(double s) const {
         if (whole < 3 || whole == 4) return any_root(s);
-        // Halley's step on f(x) = x^p − s, x − 2f·f′/(2f′² − f·f″), written as a correction of x: cubic convergence
-        // takes the guess's error below the rounding, and the correction carries the power's rounding only
-        // divided by p.
-        // The guess in pairs of terms (Estrin's scheme): three short chains rather than one of five steps.
-        const double t = 2 * s - 3, t2 = t * t;
-        const auto& c = root_guess;
-        static_assert(std::tuple_size_v<decltype(root_guess)> == 6);
-        const double x = (c[0] + c[1] * t) + t2 * ((c[2] + c[3] * t) + t2 * (c[4] + c[5] * t));
-        const double power = whole_power(x);
-        return x + x * (2 * (s - power) / ((p + 1) * power + (p - 1) * s));
+        // Estrin's scheme: pairs of terms, then pairs of pairs in t², ..., five short chains rather than one long one
+        // (a root is on the gauge's critical path).
+        const auto& c = root_polynomial;
+        static_assert(std::tuple_size_v<decltype(root_polynomial)> == 18);
+        const double t = 2 * s - 3, t2 = t * t, t4 = t2 * t2, t8 = t4 * t4, t16 = t8 * t8;
+        const double a0 = c[0] + c[1] * t, a1 = c[2] + c[3] * t, a2 = c[4] + c[5] * t, a3 = c[6] + c[7] * t,
+                     a4 = c[8] + c[9] * t, a5 = c[10] + c[11] * t, a6 = c[12] + c[13] * t, a7 = c[14] + c[15] * t,
+                     a8 = c[16] + c[17] * t;
+        const double b0 = a0 + a1 * t2, b1 = a2 + a3 * t2, b2 = a4 + a5 * t2, b3 = a6 + a7 * t2;
+        const double d0 = b0 + b1 * t4, d1 = b2 + b3 * t4;
+        return (d0 + d1 * t8) + a8 * t16;
     }
     // s^(1/p) for any s ≥ 0, in closed form where there is one.
     double any_root(double s) const {

@@ -1,5 +1,5 @@
-// The powers and roots of the gauge's p-norms against long double pow: within an ulp for the roots of every whole
-// exponent up to 64 (Halley's step from the polynomial guess) and of sampled fractional ones (pow).
+// The powers and roots of the gauge's p-norms against long double pow: within four ulps for the roots of every whole
+// exponent up to 64 (a polynomial, its terms rounded once each) and within an ulp for sampled fractional ones (pow).
 #include "geometry/superquadric/norm_exponent.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@ std::vector<double> roots_arguments() {
     return s;
 }
 
-TEST(SuperquadricNormExponent, RootsOfWholeExponentsAreWithinAnUlp) {
+TEST(SuperquadricNormExponent, RootsOfWholeExponentsAreWithinFourUlps) {
     const std::vector<double> arguments = roots_arguments();
     int tested = 0;
     for (int p = 1; p <= 64; ++p) {
@@ -35,7 +35,7 @@ TEST(SuperquadricNormExponent, RootsOfWholeExponentsAreWithinAnUlp) {
         ++tested;
         double worst = 0;
         for (double s : arguments) worst = std::max(worst, ulps(e.root(s), std::pow((long double)s, 1.0L / p)));
-        EXPECT_LE(worst, 1.0) << "p = " << p;
+        EXPECT_LE(worst, 4.0) << "p = " << p;
     }
     EXPECT_GE(tested, 60);
 }

@@ -165,7 +165,7 @@ Superellipsoid::GaugeAndDifference Superellipsoid::gauge_and_difference(const Ve
 }
 
 // The computed gauge is within a few ulps of the exact one: each operation rounds once, the powers and roots are
-// within an ulp or a few roundings, and a p-norm passes its arguments' relative errors on without amplifying them
+// within a few ulps or a few roundings, and a p-norm passes its arguments' relative errors on without amplifying them
 // (an error of r^p in the sum 1 + r^p is divided by p in the root). Widened by far more than that, the corners' values
 // bound the exact gauge over the box, and the computed one too (which need not be monotone in its last bits).
 constexpr double kGaugeRelativeError = 0x1p-46;

@@ -79,7 +79,7 @@ long double exact_gauge(const Superellipsoid& s, const Vec3d& p) {
 }
 
 // The range over a box of magnitudes holds the exact gauge and the computed one at every point of the box, for
-// whole exponents (repeated squaring and Halley roots) and fractional ones (pow) alike.
+// whole exponents (repeated squaring and polynomial roots) and fractional ones (pow) alike.
 TEST(SuperquadricSuperellipsoid, TheGaugeRangeHoldsTheExactAndTheComputedGauge) {
     std::mt19937 random(5);
     std::uniform_real_distribution<double> unit(0, 1), exponent(0.02, 4);
