@@ -8,34 +8,36 @@
 namespace isotrace {
 namespace {
 
-// (a^p + b^p)^(1/p) for a, b ≥ 0 as larger·(1 + (smaller/larger)^p)^(1/p), scaled by the larger so that neither
-// overflows nor underflows matter; `power` = (smaller/larger)^p and `sum` = 1 + power for the partial derivatives.
+// (a^p + b^p)^(1/p) for a, b ≥ 0 as larger·(1 + r^p)^(1/p) with r = smaller/larger, scaled by the larger so that
+// neither overflows nor underflows matter; r, r^p, the sum 1 + r^p and its root kept for the partial derivatives.
 // The Euclidean norm (p = 2, round cross-sections) is √(a² + b²) wherever the squares neither overflow nor lose
 // digits to underflow: without the division, one step shorter on the gauge's critical path.
 struct PNorm {
-    double larger, smaller, power, sum, norm;
-    bool euclidean = false;  // then power and sum are not taken
+    double larger, smaller, ratio, power, sum, root, norm;
+    bool euclidean = false;  // then ratio, power, sum and root are not taken
 };
 
 // Inlined into its callers: a call costs as much as the rest of a round p-norm.
 [[gnu::always_inline]] inline PNorm p_norm_parts(double a, double b, const NormExponent& p) {
     const double larger = std::max(a, b), smaller = std::min(a, b);
-    if (larger == 0 || std::isinf(larger)) return {larger, smaller, 0, 1, larger};
+    if (larger == 0 || std::isinf(larger)) return {larger, smaller, 0, 0, 1, 1, larger};
     if (p.whole == 2 && larger > 0x1p-480 && larger < 0x1p480)
-        return {larger, smaller, 0, 0, std::sqrt(a * a + b * b), true};
-    const double power = p.unit_power(smaller / larger), sum = 1 + power;
-    return {larger, smaller, power, sum, larger * p.root(sum)};
+        return {larger, smaller, 0, 0, 0, 0, std::sqrt(a * a + b * b), true};
+    const double ratio = smaller / larger, power = p.unit_power(ratio), sum = 1 + power, root = p.root(sum);
+    return {larger, smaller, ratio, power, sum, root, larger * root};
 }
 
-// The p-norm's shares' powers p − 1 at a pair not both 0: (larger/N)^(p−1) = N/(larger·sum) and (smaller/N)^(p−1)
-// = power/sum·N/smaller, from power itself (not sum − 1, which keeps only its digits above 1's rounding: the normal
-// needs them all); for the Euclidean norm larger/N and smaller/N. `vanishing`: the smaller's at 0.
+// The p-norm's shares' powers p − 1 at a pair not both 0: (larger/N)^(p−1) = root/sum and (smaller/N)^(p−1) =
+// r^(p−1)·root/sum, with r^(p−1) = r^p/r from r^p itself (not sum − 1, which keeps only its digits above 1's
+// rounding: the normal needs them all); for the Euclidean norm larger/N and smaller/N. `vanishing`: the smaller's
+// at r = 0. The divisions need no root: they run beside it, off the gauge's critical path.
 std::pair<double, double> share_powers_at(const PNorm& n, double vanishing) {
     if (n.euclidean) {
         const double inverse = 1 / n.norm;
         return {n.larger * inverse, n.smaller * inverse};
     }
-    return {n.norm / (n.larger * n.sum), n.smaller > 0 ? n.power / n.sum * (n.norm / n.smaller) : vanishing};
+    const double of_larger = n.root * (1 / n.sum);
+    return {of_larger, n.ratio > 0 ? n.power / n.ratio * of_larger : vanishing};
 }
 
 double p_norm(double a, double b, const NormExponent& p) { return p_norm_parts(a, b, p).norm; }
