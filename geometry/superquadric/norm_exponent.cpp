@@ -59,9 +59,9 @@ NormExponent NormExponent::of_epsilon(double epsilon) {
     const double p = 2 / epsilon;
     NormExponent e{p, p == std::floor(p) && p <= kMaxWhole ? int(p) : 0, 1 / p};
     if (e.whole > 0) e.whole_power = kWholePowers[e.whole - 1];
-    if (e.whole >= 3)
+    if (!e.has_closed_root())
         e.root_polynomial = chebyshev_interpolant<std::tuple_size_v<decltype(root_polynomial)>>(
-            [&](long double t) { return std::pow(1.5L + 0.5L * t, 1.0L / e.whole); });
+            [&](long double t) { return std::pow(1.5L + 0.5L * t, 1.0L / e.p); });
     return e;
 }
 

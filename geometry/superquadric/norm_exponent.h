@@ -3,9 +3,9 @@
 // r ∈ [0, 1], and the root s^(1/p) of 1 + r^p ∈ [1, 2]. Those are the gauge's hottest calls, and a general pow
 // (which works in extra precision to round correctly) costs several times what they need, so small whole
 // exponents (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) take powers by repeated squaring, unrolled for each
-// exponent, and roots by a polynomial of degree 17 (a short chain of dependent operations, where a root is on the
-// gauge's critical path); fractional ones keep pow, whose short latency a series of the same accuracy did not match
-// (docs/decisions.md).
+// exponent, and every exponent without a closed-form root takes its roots by a polynomial of degree 17 (a short
+// chain of dependent operations, where a root is on the gauge's critical path); fractional powers keep pow, whose
+// short latency a series of the same accuracy did not match (docs/decisions.md).
 #include <array>
 #include <cmath>
 
@@ -16,8 +16,9 @@ struct NormExponent {
     int whole = 2;  // p when it is a whole number up to 64, else 0
     double inverse = 0.5;
     double (*whole_power)(double) = nullptr;  // x^p by repeated squaring, for whole p
-    // For whole p without a closed-form root: s^(1/p) over s ∈ [1, 2] as a polynomial in 2s − 3 (interpolation at
-    // Chebyshev nodes, within a few ulps for every whole p ≥ 3), root() itself.
+    // For p without a closed-form root (all but 1, 2 and 4): s^(1/p) over s ∈ [1, 2] as a polynomial in 2s − 3
+    // (interpolation at Chebyshev nodes, within 4 ulps for every whole p up to 64 and fractional ones tested),
+    // root() itself.
     std::array<double, 18> root_polynomial{};
 
     static NormExponent of_epsilon(double epsilon);
@@ -28,9 +29,9 @@ struct NormExponent {
         if (whole > 0) return whole_power(r);
         return r == 0 ? 0 : std::pow(r, p);  // on coordinate planes: pow's exact answer without the call
     }
-    // s^(1/p) for s in [1, 2], within a few ulps (the error against a long double pow is tested for every whole p).
+    // s^(1/p) for s in [1, 2], within a few ulps (the error against a long double pow is tested).
     double root(double s) const {
-        if (whole < 3 || whole == 4) return any_root(s);
+        if (has_closed_root()) return any_root(s);
         // Estrin's scheme: pairs of terms, then pairs of pairs in t², ..., five short chains rather than one long one
         // (a root is on the gauge's critical path).
         const auto& c = root_polynomial;
@@ -43,6 +44,7 @@ struct NormExponent {
         const double d0 = b0 + b1 * t4, d1 = b2 + b3 * t4;
         return (d0 + d1 * t8) + a8 * t16;
     }
+    bool has_closed_root() const { return whole == 1 || whole == 2 || whole == 4; }
     // s^(1/p) for any s ≥ 0, in closed form where there is one.
     double any_root(double s) const {
         switch (whole) {

@@ -1,5 +1,5 @@
 // The powers and roots of the gauge's p-norms against long double pow: within four ulps for the roots of every whole
-// exponent up to 64 (a polynomial, its terms rounded once each) and within an ulp for sampled fractional ones (pow).
+// exponent up to 64 and of sampled fractional ones (a polynomial, its terms rounded once each).
 #include "geometry/superquadric/norm_exponent.h"
 
 #include <gtest/gtest.h>
@@ -40,7 +40,7 @@ TEST(SuperquadricNormExponent, RootsOfWholeExponentsAreWithinFourUlps) {
     EXPECT_GE(tested, 60);
 }
 
-TEST(SuperquadricNormExponent, RootsOfFractionalExponentsAreWithinAnUlp) {
+TEST(SuperquadricNormExponent, RootsOfFractionalExponentsAreWithinFourUlps) {
     std::mt19937 random(7);
     std::uniform_real_distribution<double> epsilon(0.02, 4);
     const std::vector<double> arguments = roots_arguments();
@@ -50,20 +50,20 @@ TEST(SuperquadricNormExponent, RootsOfFractionalExponentsAreWithinAnUlp) {
         double worst = 0;
         for (std::size_t k = 0; k < arguments.size(); k += 7)
             worst = std::max(worst, ulps(e.root(arguments[k]), std::pow((long double)arguments[k], 1.0L / e.p)));
-        EXPECT_LE(worst, 1.0) << "p = " << e.p;
+        EXPECT_LE(worst, 4.0) << "p = " << e.p;
     }
 }
 
 // Powers of shares by repeated squaring: a squaring doubles the relative error and adds a rounding, so r^p is within
 // p − 1 roundings (which the root of 1 + r^p divides by p again); roots of any argument (the edge of a
 // p-ball, 1 − w^p ∈ [0, 1]) in closed form or by pow of the rounded 1/p.
-// On coordinate planes a power is of 0 and a root of 1: pow's exact answers, which fractional exponents take
-// without the call.
-TEST(SuperquadricNormExponent, PowersOfZeroAndRootsOfOneAreExact) {
+// On coordinate planes a power is of 0 and the p-ball's edge a root of 1: pow's exact answers, which fractional
+// exponents take without the call. (The roots of 1 + r^p are the polynomial's, tested above.)
+TEST(SuperquadricNormExponent, PowersOfZeroAndEdgeRootsOfOneAreExact) {
     for (const double epsilon : {0.3, 0.7, 2.5, 3.5}) {
         const NormExponent e = NormExponent::of_epsilon(epsilon);
         EXPECT_EQ(e.unit_power(0), std::pow(0.0, e.p)) << epsilon;
-        EXPECT_EQ(e.root(1), std::pow(1.0, e.inverse)) << epsilon;
+        EXPECT_EQ(e.any_root(1), std::pow(1.0, e.inverse)) << epsilon;
         EXPECT_EQ(e.unit_power(0x1p-60), std::pow(0x1p-60, e.p)) << epsilon;
     }
 }
