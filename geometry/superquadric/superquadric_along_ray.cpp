@@ -9,12 +9,11 @@ SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, con
     : superquadric_(superquadric),
       origin_(superquadric.placement().inverse_point(origin)),
       direction_(superquadric.placement().inverse_vector(direction)),
-      deformed_(!superquadric.deformation().empty()),
       rates_(superquadric.shape().rates_along(direction_)) {}
 
 ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
     const Vec3d point = origin_ + direction_ * t;
-    if (!deformed_) {
+    if (superquadric_.deformation().empty()) {
         const ValueAndDerivative gauge = superquadric_.shape().gauge_along(point, rates_);
         return {gauge.value - 1, gauge.derivative};
     }

@@ -45,7 +45,6 @@ private:
 
     const Superquadric& superquadric_;
     Vec3d origin_, direction_;
-    bool deformed_;
     Superellipsoid::RadiusRates rates_;  // taken once: the ray's direction is the same all along it undeformed
     mutable double walked_a_ = std::numeric_limits<double>::quiet_NaN(), walked_b_ = walked_a_;
     mutable bool walked_inside_ = false;
