@@ -137,11 +137,13 @@ public:
         int cell_of[3];
         for (int k = 0; k < 3; ++k)
             cell_of[k] = std::clamp(int(std::floor((first[k] - lower[k]) / cell_size_[k])), 0, kCellsPerAxis - 1);
-        // Where the line leaves cell `at` of axis k across that axis' next plane, and the current cell.
+        // Where the line leaves cell `at` of axis k across that axis' next plane, and the current cell. A product with
+        // the reciprocal: a division would stand on the walk's chain of dependent steps.
+        const double inverse[3] = {1 / along[0], 1 / along[1], 1 / along[2]};
         const auto plane_after = [&](int k, int at) {
             if (along[k] == 0) return std::numeric_limits<double>::infinity();
             const int plane = at + (along[k] > 0 ? 1 : 0);
-            return (lower[k] + plane * cell_size_[k] - from[k]) / along[k];
+            return (lower[k] + plane * cell_size_[k] - from[k]) * inverse[k];
         };
         const auto next_plane = [&](int k) { return plane_after(k, cell_of[k]); };
         double enter = t0;

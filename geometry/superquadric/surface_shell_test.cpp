@@ -107,7 +107,7 @@ std::vector<ShellRun> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
     for (int k = 0; k < 3; ++k) cell[k] = std::clamp(int(std::floor((start[k] + 1) / size)), 0, n - 1);
     const auto next_plane = [&](int k) {
         if (d[k] == 0) return std::numeric_limits<double>::infinity();
-        return (-1 + (cell[k] + (d[k] > 0 ? 1 : 0)) * size - o[k]) / d[k];
+        return (-1 + (cell[k] + (d[k] > 0 ? 1 : 0)) * size - o[k]) * (1 / d[k]);  // the walk's formula
     };
     double enter = t0, run_start = 0;
     bool in_run = false;
