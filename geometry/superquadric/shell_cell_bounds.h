@@ -4,6 +4,8 @@
 // its faces stay inside). By the mean value theorem g over any segment of the cell lies within
 // value + Σₖ ∂ₖg·(xₖ − centreₖ), and g′ along a direction d within Σₖ ∂ₖg·dₖ: a few products per cell a ray
 // crosses, where bounding g over a stretch of the ray takes an interval walk through the deformations.
+#include <algorithm>
+
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
 
@@ -19,13 +21,20 @@ struct ShellCellBounds {
     Interval slope(const Vec3d& direction) const {
         return gradient.x * direction.x + gradient.y * direction.y + gradient.z * direction.z;
     }
-    // Contains g over the segment from a to b (both in the cell).
+    // Contains g over the segment from a to b (both in the cell). At each point x the gradient's bounds give
+    // g ≥ value + Σₖ min(∂ₖg·(xₖ − centreₖ)) over ∂ₖg in its bounds, a sum of minima of linear functions, concave
+    // along the segment: its least value lies at an end, and likewise the upper bound's greatest. So the range is
+    // that of the two ends, tighter than the interval product of the gradient's bounds with the segment's box,
+    // which lets each axis take its own worst end.
     Interval range(const Vec3d& a, const Vec3d& b) const {
-        Interval g = Interval::point(value);
-        for (int k = 0; k < 3; ++k) g = g + gradient[k] * (Interval::spanning(a[k], b[k]) + -centre[k]);
+        Interval g_a = Interval::point(value), g_b = g_a;
+        for (int k = 0; k < 3; ++k) {
+            g_a = g_a + gradient[k] * (a[k] - centre[k]);
+            g_b = g_b + gradient[k] * (b[k] - centre[k]);
+        }
         // The centre's value and the products are rounded: widen by far more than their errors.
         constexpr double kRounding = 1e-12;
-        return {g.lo - kRounding, g.hi + kRounding};
+        return {std::min(g_a.lo, g_b.lo) - kRounding, std::max(g_a.hi, g_b.hi) + kRounding};
     }
 };
 
