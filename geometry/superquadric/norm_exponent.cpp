@@ -6,11 +6,14 @@
 namespace isotrace {
 namespace {
 
-// The coefficients, in powers of t ∈ [−1, 1], of the polynomial that interpolates f at the Chebyshev nodes: the
-// Chebyshev coefficients from the nodes' values, then T_j expanded by T_j = 2t·T_(j−1) − T_(j−2). In long double, so
-// that the expansion's cancellations leave the coefficients right to the last bit of a double.
+// The polynomial that interpolates f over t ∈ [−1, 1] at the Chebyshev nodes, as coefficients in powers of t, or with
+// `Basis::Unit` of s = (t + 1)/2 ∈ [0, 1]: the Chebyshev coefficients from the nodes' values, then T_j expanded by
+// T_j = 2t·T_(j−1) − T_(j−2) with t = 2s − 1. In long double, so that the expansion's cancellations leave the
+// coefficients right to the last bit of a double.
+enum class Basis { Centred, Unit };
+
 template <std::size_t n, class F>
-std::array<double, n> chebyshev_interpolant(const F& f) {
+std::array<double, n> chebyshev_interpolant(const F& f, Basis basis = Basis::Centred) {
     constexpr long double pi = std::numbers::pi_v<long double>;
     std::array<long double, n> values{}, chebyshev{}, monomial{};
     for (std::size_t k = 0; k < n; ++k) values[k] = f(std::cos(pi * (k + 0.5L) / n));
@@ -18,12 +21,16 @@ std::array<double, n> chebyshev_interpolant(const F& f) {
         for (std::size_t k = 0; k < n; ++k) chebyshev[j] += values[k] * std::cos(pi * j * (k + 0.5L) / n);
         chebyshev[j] *= (j == 0 ? 1.0L : 2.0L) / n;
     }
-    std::array<long double, n> before{}, current{}, next{};  // T_(j−1), T_j, T_(j+1) in powers of t
+    // t = scale·v + offset in the basis' variable v.
+    const long double scale = basis == Basis::Unit ? 2 : 1, offset = basis == Basis::Unit ? -1 : 0;
+    std::array<long double, n> before{}, current{}, next{};  // T_(j−1), T_j, T_(j+1) in powers of v
     current[0] = 1;
     for (std::size_t j = 0; j < n; ++j) {
         for (std::size_t i = 0; i < n; ++i) monomial[i] += chebyshev[j] * current[i];
-        for (std::size_t i = 0; i < n; ++i)
-            next[i] = (j == 0 ? 1.0L : 2.0L) * (i > 0 ? current[i - 1] : 0.0L) - (j == 0 ? 0.0L : before[i]);
+        for (std::size_t i = 0; i < n; ++i) {
+            const long double times_t = scale * (i > 0 ? current[i - 1] : 0.0L) + offset * current[i];
+            next[i] = (j == 0 ? 1.0L : 2.0L) * times_t - (j == 0 ? 0.0L : before[i]);
+        }
         before = current;
         current = next;
     }
@@ -59,9 +66,18 @@ NormExponent NormExponent::of_epsilon(double epsilon) {
     const double p = 2 / epsilon;
     NormExponent e{p, p == std::floor(p) && p <= kMaxWhole ? int(p) : 0, 1 / p};
     if (e.whole > 0) e.whole_power = kWholePowers[e.whole - 1];
+    constexpr std::size_t kTerms = std::tuple_size_v<decltype(root_polynomial)>;
     if (!e.has_closed_root())
-        e.root_polynomial = chebyshev_interpolant<std::tuple_size_v<decltype(root_polynomial)>>(
-            [&](long double t) { return std::pow(1.5L + 0.5L * t, 1.0L / e.p); });
+        e.root_polynomial = chebyshev_interpolant<kTerms>([&](long double t) { return std::pow(1.5L + 0.5L * t, 1.0L / e.p); });
+    if (e.whole == 0 && p <= kMostTabulated) {
+        e.tabulated = true;
+        // In s = 2m − 2 over [1, 1.5] and 2m − 3 over [1.5, 2], both in [0, 1]: the terms of m^p's polynomial are
+        // then all but its last few of one sign, and their sum loses nothing to cancellation.
+        for (int half = 0; half < 2; ++half)
+            e.mantissa_power_polynomials[half] = chebyshev_interpolant<kTerms>(
+                [&](long double t) { return std::pow((t + 5 + 2 * half) / 4, (long double)e.p); }, Basis::Unit);
+        for (int k = 0; k < kOctaves; ++k) e.octave_powers[k] = double(std::pow(2.0L, -k * (long double)e.p));
+    }
     return e;
 }
 

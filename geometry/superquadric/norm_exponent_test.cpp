@@ -1,5 +1,6 @@
 // The powers and roots of the gauge's p-norms against long double pow: within four ulps for the roots of every whole
-// exponent up to 64 and of sampled fractional ones (a polynomial, its terms rounded once each).
+// exponent up to 64 and of sampled fractional ones (a polynomial, its terms rounded once each), within six for the
+// fractional powers up to p = 16 (a polynomial times a power of two's power) over every octave they take.
 #include "geometry/superquadric/norm_exponent.h"
 
 #include <gtest/gtest.h>
@@ -58,14 +59,38 @@ TEST(SuperquadricNormExponent, RootsOfFractionalExponentsAreWithinFourUlps) {
 // p − 1 roundings (which the root of 1 + r^p divides by p again); roots of any argument (the edge of a
 // p-ball, 1 − w^p ∈ [0, 1]) in closed form or by pow of the rounded 1/p.
 // On coordinate planes a power is of 0 and the p-ball's edge a root of 1: pow's exact answers, which fractional
-// exponents take without the call. (The roots of 1 + r^p are the polynomial's, tested above.)
-TEST(SuperquadricNormExponent, PowersOfZeroAndEdgeRootsOfOneAreExact) {
+// exponents take without the call; a share of 1 (the p-ball's pole) has the power 1 exactly, and shares below the
+// table's 64 octaves take pow. (The roots of 1 + r^p are the polynomial's, tested above.)
+TEST(SuperquadricNormExponent, PowersOfZeroAndOneAndEdgeRootsOfOneAreExact) {
     for (const double epsilon : {0.3, 0.7, 2.5, 3.5}) {
         const NormExponent e = NormExponent::of_epsilon(epsilon);
+        ASSERT_TRUE(e.tabulated) << epsilon;
         EXPECT_EQ(e.unit_power(0), std::pow(0.0, e.p)) << epsilon;
+        EXPECT_EQ(e.unit_power(1), 1) << epsilon;
         EXPECT_EQ(e.any_root(1), std::pow(1.0, e.inverse)) << epsilon;
-        EXPECT_EQ(e.unit_power(0x1p-60), std::pow(0x1p-60, e.p)) << epsilon;
+        EXPECT_EQ(e.unit_power(0x1p-64), std::pow(0x1p-64, e.p)) << epsilon;
     }
+}
+
+TEST(SuperquadricNormExponent, FractionalPowersAreWithinSixUlpsOverEveryOctave) {
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> epsilon(0.02, 4), octaves(0, 70);
+    int tabulated = 0;
+    for (int i = 0; i < 60; ++i) {
+        const NormExponent e = NormExponent::of_epsilon(epsilon(random));
+        ASSERT_EQ(e.whole, 0);
+        tabulated += e.tabulated;
+        EXPECT_EQ(e.tabulated, e.p <= NormExponent::kMostTabulated) << e.p;
+        double worst = 0;
+        for (int k = 0; k < 4000; ++k) {
+            // Shares just below each power of two, and spread over the octaves.
+            const double r = k < 140 ? std::nextafter(std::exp2(-0.5 * k), 0.0) : std::exp2(-octaves(random));
+            const long double power = std::pow((long double)r, (long double)e.p);
+            if (power > 1e-300L) worst = std::max(worst, ulps(e.unit_power(r), power));
+        }
+        EXPECT_LE(worst, e.tabulated ? 6.0 : 1.0) << "p = " << e.p;
+    }
+    EXPECT_GE(tabulated, 20);
 }
 
 TEST(SuperquadricNormExponent, PowersAndRootsOfAnyArgumentAreWithinAFewUlps) {
@@ -76,7 +101,8 @@ TEST(SuperquadricNormExponent, PowersAndRootsOfAnyArgumentAreWithinAFewUlps) {
         for (int i = 0; i < 2000; ++i) {
             const double r = unit(random);
             const long double power = std::pow((long double)r, (long double)e.p);
-            if (power > 1e-300L) EXPECT_LE(ulps(e.unit_power(r), power), e.whole > 0 ? e.p - 1 : 1.0) << e.p << " " << r;
+            const double allowed = e.whole > 0 ? e.p - 1 : e.tabulated ? 6.0 : 1.0;
+            if (power > 1e-300L) EXPECT_LE(ulps(e.unit_power(r), power), allowed) << e.p << " " << r;
             EXPECT_LE(ulps(e.any_root(r), std::pow((long double)r, (long double)e.inverse)), 1.0) << e.p << " " << r;
         }
         EXPECT_EQ(e.unit_power(0), 0);

@@ -191,7 +191,7 @@ struct SharePowers {
 
 // The ranges of (a/‖(a, b)‖_p)^(p−1) and of the same power of b's share for a, b ≥ 0 in the given ranges: both are
 // monotone in t = (b/a)^p, as (1 + t)^(1/p − 1) and (1 + 1/t)^(1/p − 1), so their values at t's two extreme pairs
-// bound them once widened outward by more than their rounding: r^p of a fractional p (pow) is within an ulp, of a
+// bound them once widened outward by more than their rounding: r^p of a fractional p is within six ulps, of a
 // whole one within p − 1 roundings. Where a = b = 0 is possible a share is undefined and every value in [0, 1] is
 // allowed, which t ∈ [0, ∞] gives: the ends take the limits.
 struct ShareRanges {
