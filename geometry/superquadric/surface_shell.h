@@ -130,22 +130,24 @@ public:
             pending = true, pending_lo = a, pending_hi = b, pending_bounds = bounds;
             return true;
         };
-        // Per axis in arrays: Vec3's component access by index is a chain of branches in this loop.
+        // Cell by cell. Per axis in arrays, indexed only by constants once the loops over the three axes are unrolled
+        // (the axis that moves is chosen by selects, not by an index), so that they stay in registers: an index
+        // stored and loaded again, and branches on which plane comes first, were most of the walk's time — more than
+        // stepping past blocks without surface cells at once saved, which the walk no longer does.
         const Vec3d start = origin + direction * t0;
         const double from[3] = {origin.x, origin.y, origin.z}, along[3] = {direction.x, direction.y, direction.z},
                      lower[3] = {box_.x.lo, box_.y.lo, box_.z.lo}, first[3] = {start.x, start.y, start.z};
         int cell_of[3];
         for (int k = 0; k < 3; ++k)
             cell_of[k] = std::clamp(int(std::floor((first[k] - lower[k]) / cell_size_[k])), 0, kCellsPerAxis - 1);
-        // Where the line leaves cell `at` of axis k across that axis' next plane, and the current cell. A product with
-        // the reciprocal: a division would stand on the walk's chain of dependent steps.
+        // Where the line leaves the current cell across axis k's next plane. A product with the reciprocal: a division
+        // would stand on the walk's chain of dependent steps.
         const double inverse[3] = {1 / along[0], 1 / along[1], 1 / along[2]};
-        const auto plane_after = [&](int k, int at) {
-            if (along[k] == 0) return std::numeric_limits<double>::infinity();
-            const int plane = at + (along[k] > 0 ? 1 : 0);
-            return (lower[k] + plane * cell_size_[k] - from[k]) * inverse[k];
+        const auto next_plane = [&](int k) {
+            const int plane = cell_of[k] + (along[k] > 0 ? 1 : 0);
+            const double t = (lower[k] + plane * cell_size_[k] - from[k]) * inverse[k];
+            return along[k] == 0 ? std::numeric_limits<double>::infinity() : t;
         };
-        const auto next_plane = [&](int k) { return plane_after(k, cell_of[k]); };
         double enter = t0;
         bool in_run = false;
         // Only the axis whose plane was crossed moves on: the others keep their next plane.
@@ -156,36 +158,22 @@ public:
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
             const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
             if (const int index = block_of(cell); index != block_index)
-                block_index = index, block = find_block(cell, range, cell_bounds);
+                block_index = index, block = find_block(index, cell, range, cell_bounds);
             const bool surface = (block.cells >> bit(cell)) & 1;
-            int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
-            if (block.cells == 0) {
-                // No cell of this block holds the surface: step straight to where the line leaves the block, the
-                // cells and planes on the way taken as the cell by cell walk takes them (the same plane formula,
-                // ties to the lower axis), so that the runs after it are the same to the bit.
-                double block_exit = std::numeric_limits<double>::infinity();
-                int last_in_block[3];
-                for (int k = 0; k < 3; ++k) {
-                    last_in_block[k] = cell_of[k] / kBlock * kBlock + (along[k] > 0 ? kBlock - 1 : 0);
-                    const double t = plane_after(k, last_in_block[k]);  // infinite along a still axis
-                    if (t < block_exit) block_exit = t, axis = k;
-                }
-                for (int k = 0; k < 3; ++k)
-                    while (k != axis && cell_of[k] != last_in_block[k] &&
-                           (across[k] < block_exit || (across[k] == block_exit && k < axis))) {
-                        cell_of[k] += along[k] > 0 ? 1 : -1;
-                        across[k] = next_plane(k);
-                    }
-                cell_of[axis] = last_in_block[axis];
-                across[axis] = block_exit;
-            }
-            const double leave = std::min(across[axis], t1);
+            const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
+            // across[axis], the least (whichever axis a tie went to).
+            const double leave = std::min({across[0], across[1], across[2], t1});
             if (surface && !add_cell(enter, std::max(enter, leave), block.block->entries[bit(cell)].bounds(centre(cell)), !in_run))
                 return false;
             in_run = surface;
-            cell_of[axis] += along[axis] > 0 ? 1 : -1;
-            if (!(leave < t1) || cell_of[axis] < 0 || cell_of[axis] >= kCellsPerAxis) break;
-            across[axis] = next_plane(axis);
+            bool off_grid = false;
+            for (int k = 0; k < 3; ++k) {
+                const bool moves = k == axis;
+                cell_of[k] += moves ? (along[k] > 0 ? 1 : -1) : 0;
+                off_grid |= unsigned(cell_of[k]) >= unsigned(kCellsPerAxis);
+                across[k] = moves ? next_plane(k) : across[k];
+            }
+            if (!(leave < t1) || off_grid) break;
             enter = std::max(enter, leave);
         }
         return !pending || flush(in_run ? t1 : std::min(t1, pending_hi + pad));
@@ -212,12 +200,18 @@ private:
         return int(((i / kBlock) * kBlocksPerAxis + j / kBlock) * kBlocksPerAxis + l / kBlock);
     }
 
-    // The block that holds cell c, found when first asked for.
+    // The block with index `index`, which holds cell c: once known, read inline; found out of line when first asked
+    // for (the walk asks at every block it enters, and nearly always the block is known).
     template <class Range, class CellBounds>
-    FoundBlock find_block(CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
-        Slot& slot = slots_[block_of(c)];
+    FoundBlock find_block(int index, CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
+        const Slot& slot = slots_[index];
         if (const Block* known = slot.block.load(std::memory_order_acquire))
             return {known, slot.cells.load(std::memory_order_relaxed)};
+        return make_block(c, range, cell_bounds);
+    }
+    template <class Range, class CellBounds>
+    [[gnu::noinline]] FoundBlock make_block(CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
+        Slot& slot = slots_[block_of(c)];
         const CellIndex first{c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock};
         const auto can_hold_surface = [&](CellIndex from, int cells) {
             const IntervalBox lower = cell(from), upper = cell({from.i + cells - 1, from.j + cells - 1, from.l + cells - 1});
