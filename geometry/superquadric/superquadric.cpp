@@ -218,7 +218,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
     if (!deformation_.empty()) {
-        search_shell<precision>(ray, t0, t1, resolution, work, visit);
+        search_shell<precision>(ray, t0, t1, clip->enter_axis >= 0, resolution, work, visit);
         return;
     }
     if (convex && visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
@@ -272,21 +272,22 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
 }
 
 template <CrossingPrecision precision, class Visit>
-void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, double t1, double resolution,
-                                SuperquadricWork& work, Visit&& visit) const {
+void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, double t1, bool enters_box,
+                                double resolution, SuperquadricWork& work, Visit&& visit) const {
     const Vec3d &o = ray.local_origin(), &d = ray.local_direction();
     RecentSamples<double> values;
     const auto value = [&](double t) { return values.at(t, [&] { return ray.value(t); }); };
     const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
     const auto bounds_of = [&](const IntervalBox& cell, const Vec3d& centre) { return cell_bounds(cell, centre); };
-    // g's sign at the end of the last cell's stretch (its value, when taken, is among the recent values): the next
-    // stretch starts there when the run goes on.
-    double known_t = std::numeric_limits<double>::quiet_NaN();
-    bool known_inside = false;
+    // g's sign at the end of the last cell's stretch (its value, when taken, is among the recent values). It is the
+    // sign where the next stretch starts, whether the run goes on or the line first crosses cells without surface,
+    // through which g keeps its sign; before the first stretch, the sign outside when the line enters the box
+    // through a face.
+    bool known_inside = false, sign_known = enters_box;
     shell_.visit_cells(o, d, t0, t1, range, bounds_of, [&](double a, double b, const ShellCellBounds& cell) {
         const auto no_crossing = [&](bool inside) {
-            known_t = b, known_inside = inside;
+            known_inside = inside, sign_known = true;
             return true;
         };
         const Interval cell_slope = cell.known ? cell.slope(d) : Interval::unbounded();
@@ -314,15 +315,20 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
         ++work.search.interval_bounds;
         const Interval whole = cell.known ? cell.range(o + d * a, o + d * b) : ray.bound(a, b);
         if (whole.lo >= 0 || whole.hi < 0) return no_crossing(whole.hi < 0);
-        // Where the run goes on, the last stretch told a's sign, perhaps without its value.
-        const bool inside_a = a == known_t ? known_inside : value(a) < 0;
+        // The stretches before told a's sign, perhaps without its value.
+        const bool inside_a = sign_known ? known_inside : value(a) < 0;
         // g monotone over the cell and moving away from zero from a: no crossing, and b keeps a's sign.
         if ((cell_slope.lo > 0 && !inside_a) || (cell_slope.hi < 0 && inside_a)) {
             ++work.search.slope_proofs;
             return no_crossing(inside_a);
         }
-        const double g_a = value(a), g_b = value(b);
-        known_t = b, known_inside = g_b < 0;
+        const double g_b = value(b);
+        known_inside = g_b < 0, sign_known = true;
+        // An occlusion query takes the first stretch whose ends differ in sign as it is (as the search would): its
+        // start's value is not needed.
+        if constexpr (precision == CrossingPrecision::SignChange)
+            if (inside_a != (g_b < 0)) return visit(Crossing{0.5 * (a + b), g_b < 0, a, b});
+        const double g_a = value(a);
         if (cell_slope.excludes_zero() && (g_a < 0) == (g_b < 0)) return true;  // monotone without a sign change
         return search_crossings<precision>(a, b, g_a, g_b, resolution, false, value, bound, slope, work.search, visit,
                                            value_and_slope);

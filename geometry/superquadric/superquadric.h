@@ -120,9 +120,10 @@ private:
 
     // The deformed shapes' search: cell by cell along the ray's runs through the surface shell, each cell's stretch
     // settled by the cell's bounds where they suffice, by the general search (with the cell's bounds first) elsewhere.
+    // `enters_box`: the line enters the deformed box through a face at t0, outside the object.
     template <CrossingPrecision precision, class Visit>
-    void search_shell(const SuperquadricAlongRay& ray, double t0, double t1, double resolution, SuperquadricWork& work,
-                      Visit&& visit) const;
+    void search_shell(const SuperquadricAlongRay& ray, double t0, double t1, bool enters_box, double resolution,
+                      SuperquadricWork& work, Visit&& visit) const;
 
     Superellipsoid shape_;
     DeformationChain deformation_;
