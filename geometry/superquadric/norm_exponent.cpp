@@ -6,34 +6,61 @@
 namespace isotrace {
 namespace {
 
-// The polynomial that interpolates f over t ∈ [−1, 1] at the Chebyshev nodes, as coefficients in powers of t, or with
-// `Basis::Unit` of s = (t + 1)/2 ∈ [0, 1]: the Chebyshev coefficients from the nodes' values, then T_j expanded by
-// T_j = 2t·T_(j−1) − T_(j−2) with t = 2s − 1. In long double, so that the expansion's cancellations leave the
-// coefficients right to the last bit of a double.
+// Whether an interpolant's coefficients are in powers of t ∈ [−1, 1] or of s = (t + 1)/2 ∈ [0, 1].
 enum class Basis { Centred, Unit };
 
+// What interpolation at n Chebyshev nodes takes whatever the function: the nodes, the cosines that turn the nodes'
+// values into Chebyshev coefficients, and each T_j expanded in powers of t and of s (by T_j = 2t·T_(j−1) − T_(j−2),
+// t = 2s − 1). Made once: the cosines are most of an interpolant's cost, and every fractional exponent takes three.
+template <std::size_t n>
+struct ChebyshevTables {
+    using Row = std::array<long double, n>;
+    Row nodes{};
+    std::array<Row, n> cosines{}, centred{}, unit{};
+
+    ChebyshevTables() {
+        constexpr long double pi = std::numbers::pi_v<long double>;
+        for (std::size_t k = 0; k < n; ++k) nodes[k] = std::cos(pi * (k + 0.5L) / n);
+        for (std::size_t j = 0; j < n; ++j)
+            for (std::size_t k = 0; k < n; ++k) cosines[j][k] = std::cos(pi * j * (k + 0.5L) / n);
+        expand(1, 0, centred);
+        expand(2, -1, unit);
+    }
+    // T_0 … T_(n−1) in powers of v, with t = scale·v + offset.
+    static void expand(long double scale, long double offset, std::array<Row, n>& out) {
+        Row before{}, current{}, next{};  // T_(j−1), T_j, T_(j+1)
+        current[0] = 1;
+        for (std::size_t j = 0; j < n; ++j) {
+            out[j] = current;
+            for (std::size_t i = 0; i < n; ++i) {
+                const long double times_t = scale * (i > 0 ? current[i - 1] : 0.0L) + offset * current[i];
+                next[i] = (j == 0 ? 1.0L : 2.0L) * times_t - (j == 0 ? 0.0L : before[i]);
+            }
+            before = current;
+            current = next;
+        }
+    }
+    static const ChebyshevTables& get() {
+        static const ChebyshevTables tables;
+        return tables;
+    }
+};
+
+// The polynomial that interpolates f over t ∈ [−1, 1] at the Chebyshev nodes, as coefficients in the basis' powers:
+// the Chebyshev coefficients from the nodes' values, then the T_j expanded. In long double, so that the expansion's
+// cancellations leave the coefficients right to the last bit of a double.
 template <std::size_t n, class F>
 std::array<double, n> chebyshev_interpolant(const F& f, Basis basis = Basis::Centred) {
-    constexpr long double pi = std::numbers::pi_v<long double>;
+    const ChebyshevTables<n>& tables = ChebyshevTables<n>::get();
+    const auto& expanded = basis == Basis::Unit ? tables.unit : tables.centred;
     std::array<long double, n> values{}, chebyshev{}, monomial{};
-    for (std::size_t k = 0; k < n; ++k) values[k] = f(std::cos(pi * (k + 0.5L) / n));
+    for (std::size_t k = 0; k < n; ++k) values[k] = f(tables.nodes[k]);
     for (std::size_t j = 0; j < n; ++j) {
-        for (std::size_t k = 0; k < n; ++k) chebyshev[j] += values[k] * std::cos(pi * j * (k + 0.5L) / n);
+        for (std::size_t k = 0; k < n; ++k) chebyshev[j] += values[k] * tables.cosines[j][k];
         chebyshev[j] *= (j == 0 ? 1.0L : 2.0L) / n;
     }
-    // t = scale·v + offset in the basis' variable v.
-    const long double scale = basis == Basis::Unit ? 2 : 1, offset = basis == Basis::Unit ? -1 : 0;
-    std::array<long double, n> before{}, current{}, next{};  // T_(j−1), T_j, T_(j+1) in powers of v
-    current[0] = 1;
-    for (std::size_t j = 0; j < n; ++j) {
-        for (std::size_t i = 0; i < n; ++i) monomial[i] += chebyshev[j] * current[i];
-        for (std::size_t i = 0; i < n; ++i) {
-            const long double times_t = scale * (i > 0 ? current[i - 1] : 0.0L) + offset * current[i];
-            next[i] = (j == 0 ? 1.0L : 2.0L) * times_t - (j == 0 ? 0.0L : before[i]);
-        }
-        before = current;
-        current = next;
-    }
+    for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t i = 0; i < n; ++i) monomial[i] += chebyshev[j] * expanded[j][i];
     std::array<double, n> rounded{};
     for (std::size_t i = 0; i < n; ++i) rounded[i] = double(monomial[i]);
     return rounded;
@@ -68,7 +95,8 @@ NormExponent NormExponent::of_epsilon(double epsilon) {
     if (e.whole > 0) e.whole_power = kWholePowers[e.whole - 1];
     constexpr std::size_t kTerms = std::tuple_size_v<decltype(root_polynomial)>;
     if (!e.has_closed_root())
-        e.root_polynomial = chebyshev_interpolant<kTerms>([&](long double t) { return std::pow(1.5L + 0.5L * t, 1.0L / e.p); });
+        e.root_polynomial =
+            chebyshev_interpolant<kTerms>([&](long double t) { return std::pow(1.5L + 0.5L * t, 1.0L / e.p); });
     if (e.whole == 0 && p <= kMostTabulated) {
         e.tabulated = true;
         // In s = 2m − 2 over [1, 1.5] and 2m − 3 over [1.5, 2], both in [0, 1]: the terms of m^p's polynomial are
@@ -76,7 +104,7 @@ NormExponent NormExponent::of_epsilon(double epsilon) {
         for (int half = 0; half < 2; ++half)
             e.mantissa_power_polynomials[half] = chebyshev_interpolant<kTerms>(
                 [&](long double t) { return std::pow((t + 5 + 2 * half) / 4, (long double)e.p); }, Basis::Unit);
-        for (int k = 0; k < kOctaves; ++k) e.octave_powers[k] = double(std::pow(2.0L, -k * (long double)e.p));
+        for (int k = 0; k < kOctaves; ++k) e.octave_powers[k] = double(std::exp2(-k * (long double)e.p));
     }
     return e;
 }
