@@ -207,11 +207,12 @@ private:
         const Slot& slot = slots_[index];
         if (const Block* known = slot.block.load(std::memory_order_acquire))
             return {known, slot.cells.load(std::memory_order_relaxed)};
-        return make_block(c, range, cell_bounds);
+        return make_block(index, c, range, cell_bounds);
     }
     template <class Range, class CellBounds>
-    [[gnu::noinline]] FoundBlock make_block(CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
-        Slot& slot = slots_[block_of(c)];
+    [[gnu::noinline]] FoundBlock make_block(int index, CellIndex c, const Range& range,
+                                            const CellBounds& cell_bounds) const {
+        Slot& slot = slots_[index];
         const CellIndex first{c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock};
         const auto can_hold_surface = [&](CellIndex from, int cells) {
             const IntervalBox lower = cell(from), upper = cell({from.i + cells - 1, from.j + cells - 1, from.l + cells - 1});
