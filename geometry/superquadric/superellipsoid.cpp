@@ -73,7 +73,6 @@ Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double ea
     // And G ≤ C1·‖(C2·‖(u, v)‖₂, w)‖₂ the same way.
     const double m1 = euclidean_multiple(p1_.p), m2 = euclidean_multiple(p2_.p);
     inscribed_scale_ = {m1 * m2 / radii.x, m1 * m2 / radii.y, m1 / radii.z};
-    polynomial_degree_ = degree_of_polynomial();
 }
 
 double Superellipsoid::gauge(const Vec3d& p) const {
@@ -283,27 +282,6 @@ Vec3d Superellipsoid::limit_normal(const Vec3d& p) const {
         return (c < 0 ? -1.0 : 1.0) * (log_c == largest ? 1.0 : std::exp(log_c - largest));
     };
     return normalize(Vec3d(component(p.x, log_x), component(p.y, log_y), component(p.z, log_z)));
-}
-
-int Superellipsoid::degree_of_polynomial() const {
-    if (north_south_ != east_west_) return 0;
-    const double n = p1_.p;
-    const double rounded = std::round(n);
-    if (std::abs(n - rounded) > 1e-12 * n || int(rounded) % 2 != 0 || rounded > kMaxPolynomialDegree) return 0;
-    return int(rounded);
-}
-
-Polynomial Superellipsoid::polynomial_along(const Vec3d& origin, const Vec3d& direction) const {
-    const int n = polynomial_degree();
-    Polynomial sum{-1};
-    for (int k = 0; k < 3; ++k) {
-        const Polynomial coordinate{origin[k] / radii_[k], direction[k] / radii_[k]};
-        const Polynomial square = coordinate * coordinate;
-        Polynomial power = square;
-        for (int i = 2; i < n; i += 2) power = power * square;
-        sum += power;
-    }
-    return sum;
 }
 
 std::vector<IntervalBox> Superellipsoid::surface_cells(int per_axis) const {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "geometry/field/difference_of_convex.h"
-#include "geometry/polynomial/polynomial.h"
+#include "geometry/polynomial/polynomial.h"  // ValueAndDerivative
 #include "geometry/superquadric/norm_exponent.h"
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
@@ -88,11 +88,8 @@ public:
     // exponents ≥ 2, it is the limit from the positive side; at the poles of a pinched shape it is ±z.
     Vec3d normal(const Vec3d& p) const;
 
-    // n when ε1 = ε2 = 2/n with n even (n ≤ kMaxPolynomialDegree): then F = Σ (xᵢ/aᵢ)ⁿ is a polynomial along a
-    // ray and needs neither abs() nor splitting. 0 otherwise.
-    int polynomial_degree() const { return polynomial_degree_; }
-    // F − 1 along origin + t·direction (requires polynomial_degree() > 0).
-    Polynomial polynomial_along(const Vec3d& origin, const Vec3d& direction) const;
+    // ε1 = ε2 = 1: an ellipsoid, whose crossings with a line a quadratic gives.
+    bool is_ellipsoid() const { return north_south_ == 1 && east_west_ == 1; }
 
     // The paper's parametric surface (eq. 1) with signed powers: η ∈ [−π/2, π/2] latitude, ω ∈ [−π, π].
     Vec3d surface_point(double eta, double omega) const;
@@ -112,8 +109,6 @@ private:
     }
     // The normal from the partial derivatives' logarithms: also where they are unbounded or vanish together.
     Vec3d limit_normal(const Vec3d& p) const;
-    // polynomial_degree(), found once: every search asks for it.
-    int degree_of_polynomial() const;
 
     Vec3d radii_;
     // 1/aᵢ: every point's u, v, w are |xᵢ|·(1/aᵢ), a product rather than a division (the gauge's first and
@@ -125,7 +120,6 @@ private:
     // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = cylinder_scale_ (its z component 0) and for k = ellipsoid_scale_,
     // and holds the points where it is below 1 for k = inscribed_scale_.
     Vec3d cylinder_scale_, ellipsoid_scale_, inscribed_scale_;
-    int polynomial_degree_ = 0;
 };
 
 }  // namespace isotrace

@@ -1,5 +1,5 @@
 // The superellipsoid alone: the gauge against the paper's inside-outside function, overflow safety, the
-// parametric surface, normals against finite differences and at the coordinate planes, the polynomial cases.
+// parametric surface, normals against finite differences and at the coordinate planes, which exponents make the ellipsoid.
 #include "geometry/superquadric/superellipsoid.h"
 
 #include <gtest/gtest.h>
@@ -381,19 +381,12 @@ TEST(SuperquadricSuperellipsoid, TheEnclosingStretchIsTheChordOfASphereAndOfARou
     EXPECT_FALSE(cylinder.enclosing_stretch({0.8, 0.8, -1}, {0, 0, 1}, 2));
 }
 
-TEST(SuperquadricSuperellipsoid, PolynomialCasesAreExactlyTheEvenPowers) {
-    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 1, 1}).polynomial_degree(), 2);
-    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.5, 0.5}).polynomial_degree(), 4);
-    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.25, 0.25}).polynomial_degree(), 8);
-    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.2, 0.2}).polynomial_degree(), 10);
-    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 2, 2}).polynomial_degree(), 0);    // |x| + |y| + |z|: not polynomial
-    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 1, 0.5}).polynomial_degree(), 0);  // mixed exponents
-    EXPECT_EQ((Superellipsoid{{1, 1, 1}, 0.1, 0.1}).polynomial_degree(), 0);  // degree 20 is too high
-    // The polynomial is F − 1 along the ray.
-    const Superellipsoid s{{1, 2, 0.5}, 0.5, 0.5};
-    const Vec3d o(0.3, -1, 0.2), d(0.1, 0.4, -0.3);
-    const Polynomial p = s.polynomial_along(o, d);
-    for (double t : {-1.0, 0.0, 0.7, 2.5}) EXPECT_NEAR(p.evaluate(t), direct_inside_outside(s, o + d * t) - 1, 1e-12);
+TEST(SuperquadricSuperellipsoid, OnlyBothExponentsOneMakeTheEllipsoid) {
+    EXPECT_TRUE((Superellipsoid{{1, 2, 0.5}, 1, 1}).is_ellipsoid());
+    EXPECT_FALSE((Superellipsoid{{1, 1, 1}, 0.5, 0.5}).is_ellipsoid());
+    EXPECT_FALSE((Superellipsoid{{1, 1, 1}, 1, 0.5}).is_ellipsoid());
+    EXPECT_FALSE((Superellipsoid{{1, 1, 1}, 2, 1}).is_ellipsoid());
+    EXPECT_FALSE((Superellipsoid{{1, 1, 1}, 1, std::nextafter(1.0, 2.0)}).is_ellipsoid());
 }
 
 }  // namespace

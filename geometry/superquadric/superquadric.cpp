@@ -6,7 +6,6 @@
 
 #include "geometry/field/concave_crossings.h"
 #include "geometry/field/convex_crossings.h"
-#include "geometry/polynomial/monotone_root_finder.h"
 #include "geometry/sphere/sphere_intersection.h"
 #include "geometry/superquadric/recent_samples.h"
 #include "geometry/superquadric/superquadric_along_ray.h"
@@ -124,10 +123,11 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (!clip) return;
     const double t0 = clip->t_enter, t1 = clip->t_exit;
 
-    if (deformation_.empty() && shape_.polynomial_degree() == 2) {
+    if (deformation_.empty() && shape_.is_ellipsoid()) {
         // ε1 = ε2 = 1: an ellipsoid, the unit sphere once lengths are divided by the radii; its closed form (a
-        // cancellation-free quadratic) is exact and much cheaper than the general polynomial solver.
-        ++work.polynomial_solves;
+        // cancellation-free quadratic) is exact and far cheaper than a march. Other even powers make F − 1 a
+        // polynomial along the ray too, but they are convex, and marching them is faster than solving it.
+        ++work.quadratic_solves;
         const Vec3d& r = shape_.radii();
         const Vec3d start = o + d * t0;  // in u = t − t0, for precision
         const std::optional<SphereRoots> roots = intersect_sphere({start.x / r.x, start.y / r.y, start.z / r.z},
@@ -139,7 +139,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     }
     const bool convex = deformation_.empty() && shape_.is_convex();
     // A ray that starts within a convex shape's box outside it and moving away (a ray leaving its surface, as a rule)
-    // has no crossing: one point value says so, before the quadrics and an even-exponent shape's polynomial solve.
+    // has no crossing: one point value says so, before the quadrics.
     if (convex && clip->enter_axis < 0) {
         const ValueAndDerivative start = ray.value_and_slope(t0);
         ++work.search.evaluations;
@@ -168,18 +168,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
                 }
         }
     }
-    if (deformation_.empty() && shape_.polynomial_degree() > 0) {
-        ++work.polynomial_solves;
-        const Polynomial p = shape_.polynomial_along(o + d * t0, d);  // in u = t − t0, for precision
-        const Polynomial slope = p.derivative();
-        for (const PolynomialRoot& root : all_roots(p, 0, t1 - t0)) {
-            const double s = slope.evaluate(root.t);
-            if (root.tangent || s == 0) continue;  // grazing contacts are misses (docs/decisions.md)
-            if (!visit(Crossing{t0 + root.t, s < 0})) return;
-        }
-        return;
-    }
-
     const bool concave = deformation_.empty() && shape_.is_concave_in_octants();
     const bool mixed = deformation_.empty() && !convex && !concave;
     // The piece being searched, and whether its ends lie on coordinate planes (cusps: no tangents there).

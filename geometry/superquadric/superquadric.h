@@ -4,7 +4,6 @@
 // keeps t unchanged, and the surface is found as the sign changes of g = G(D⁻¹(p(t))) − 1 along the ray
 // (G the superellipsoid's gauge, D the deformation chain):
 // - undeformed with ε1 = ε2 = 1: an ellipsoid, intersected in closed form (a quadratic);
-// - undeformed with ε1 = ε2 = 2/n, n even: F − 1 is a polynomial in t, solved by the monotone-interval finder;
 // - otherwise: the ray is cut at the local coordinate planes when undeformed (where F changes form), then each
 //   piece is searched by interval subdivision (crossing_search.h) with the bounds of g and g′ along the ray
 //   (superquadric_along_ray.h);
@@ -34,7 +33,7 @@ class SuperquadricAlongRay;
 
 struct SuperquadricWork {
     CrossingSearchWork search;
-    std::uint64_t polynomial_solves = 0;
+    std::uint64_t quadratic_solves = 0;  // an ellipsoid's closed form
 };
 
 class Superquadric {

@@ -30,7 +30,7 @@ SuperquadricShape::SuperquadricShape(std::vector<Superquadric> superquadrics)
                   counters::named_counter_slot("superquadric.evaluations"),
                   counters::named_counter_slot("superquadric.halvings"),
                   counters::named_counter_slot("superquadric.refined_crossings"),
-                  counters::named_counter_slot("superquadric.polynomial_solves")} {
+                  counters::named_counter_slot("superquadric.quadratic_solves")} {
     measure_field_step();
 }
 
@@ -100,7 +100,7 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {
     const std::array<std::uint64_t, 7> amounts{
         work.search.interval_bounds, work.search.slope_bounds, work.search.slope_proofs, work.search.evaluations,
-        work.search.halvings,        work.search.crossings,    work.polynomial_solves};
+        work.search.halvings,        work.search.crossings,    work.quadratic_solves};
     // Most queries of a scene of many shapes pass beside a shape's quadrics and count nothing.
     if (std::none_of(amounts.begin(), amounts.end(), [](std::uint64_t amount) { return amount != 0; })) return;
     counters::add_to_named(work_slots_, amounts);

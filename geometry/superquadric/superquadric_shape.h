@@ -71,7 +71,7 @@ private:
     std::vector<Superquadric> superquadrics_;
     double field_step_ = 0;  // field_gradient's step: a millionth of the largest extent of the set's bounding box
     int counter_slot_ = 0;
-    // interval bounds, slope bounds, slope proofs, evaluations, halvings, refined crossings, polynomial solves
+    // interval bounds, slope bounds, slope proofs, evaluations, halvings, refined crossings, quadratic solves
     std::array<int, 7> work_slots_{};
 };
 
