@@ -5,7 +5,7 @@
 // exponents (2/ε for the common ε = 1, 0.5, 0.2, 0.1, ...) take powers by repeated squaring, unrolled for each
 // exponent, and every exponent without a closed-form root takes its roots by a polynomial of degree 17 (a short
 // chain of dependent operations, where a root is on the gauge's critical path). Fractional powers up to p = 16 split
-// r = 2^k·m with m ∈ [1, 2): m^p by a polynomial of the same degree on each half of [1, 2), 2^(kp) from a table of
+// r = 2^−k·m with m ∈ [1, 2): m^p by a polynomial of the same degree on each half of [1, 2), 2^(−kp) from a table of
 // 64 octaves; smaller shares, whose powers hardly count, and larger exponents keep pow (docs/decisions.md).
 #include <array>
 #include <bit>
