@@ -151,11 +151,12 @@ OctaveSumBounds octave_sum_bounds(const NoiseTerm& term, const IntervalBox& box)
 NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float jitter) {
     NoiseTerm term;
     term.kind = kind;
-    term.fractal = fractal;
-    term.fractal.basis = NoiseBasis::Gradient;
-    term.fractal.octaves = std::clamp(fractal.octaves, 0, kMaxFractalOctaves);
-    term.fractal.lacunarity = std::clamp(fractal.lacunarity, 1.0f, 16.0f);
-    term.fractal.gain = std::clamp(fractal.gain, 0.0f, 4.0f);
+    FractalSettings clamped = fractal;
+    clamped.basis = NoiseBasis::Gradient;
+    clamped.octaves = std::clamp(fractal.octaves, 0, kMaxFractalOctaves);
+    clamped.lacunarity = std::clamp(fractal.lacunarity, 1.0f, 16.0f);
+    clamped.gain = std::clamp(fractal.gain, 0.0f, 4.0f);
+    term.fractal = FractalOctaves(clamped);
     term.jitter = std::clamp(jitter, 0.0f, 0.5f);
     double finest_frequency = 1;
     switch (kind) {
@@ -169,7 +170,7 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
             break;
         case NoiseKind::Fbm:
         case NoiseKind::Turbulence: {
-            const FractalScale scale = fractal_scale(term.fractal);
+            const FractalScale scale = fractal_scale(clamped);
             term.lipschitz = kGradientNoiseLipschitz * scale.lipschitz_factor;
             finest_frequency = scale.finest_frequency;
             term.range = kind == NoiseKind::Fbm ? Interval{-1, 1} : Interval{0, 1};
@@ -184,9 +185,9 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
     if (kind == NoiseKind::Gradient) {
         term.octaves.resize(1);
         for (int k = 0; k < 3; ++k) term.octaves[0].turn[k][k] = 1;
-        term.octaves[0].seed = term.fractal.seed;
+        term.octaves[0].seed = clamped.seed;
     } else if (kind == NoiseKind::Fbm || kind == NoiseKind::Turbulence) {
-        term.octaves = fractal_octaves(term.fractal);
+        term.octaves = fractal_octaves(clamped);
     }
     return term;
 }
@@ -194,11 +195,11 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
 double noise_value(const NoiseTerm& term, const Vec3d& q) {
     const Vec3f point = to_float(q);
     switch (term.kind) {
-        case NoiseKind::Gradient: return gradient_noise(point, term.fractal.seed);
-        case NoiseKind::Simplex: return simplex_noise(point, term.fractal.seed);
+        case NoiseKind::Gradient: return gradient_noise(point, term.fractal.settings().seed);
+        case NoiseKind::Simplex: return simplex_noise(point, term.fractal.settings().seed);
         case NoiseKind::Fbm: return fbm(point, term.fractal, 0);
         case NoiseKind::Turbulence: return turbulence(point, term.fractal, 0);
-        case NoiseKind::Cellular: return cellular(point, term.fractal.seed, term.jitter, CellularOutput::F1, 0);
+        case NoiseKind::Cellular: return cellular(point, term.fractal.settings().seed, term.jitter, CellularOutput::F1, 0);
     }
     return 0;
 }
@@ -213,7 +214,7 @@ Vec3d octave_sum_gradient(const NoiseTerm& term, const Vec3d& q) {
     for (std::size_t index = 0; index < term.octaves.size(); ++index) {
         const NoiseOctave& octave = term.octaves[index];
         const OctaveDomain domain =
-            fractal_octave_domain(point, static_cast<float>(octave.frequency), term.fractal.seed, static_cast<int>(index));
+            term.fractal.turn(static_cast<int>(index)).domain(point * static_cast<float>(octave.frequency));
         Vec3d g(gradient_noise_gradient(domain.point, domain.seed));
         if (term.kind == NoiseKind::Turbulence && gradient_noise(domain.point, domain.seed) < 0) g = -g;
         for (int k = 0; k < 3; ++k)
@@ -226,7 +227,7 @@ Vec3d octave_sum_gradient(const NoiseTerm& term, const Vec3d& q) {
 
 Vec3d noise_gradient(const NoiseTerm& term, const Vec3d& q) {
     switch (term.kind) {
-        case NoiseKind::Gradient: return Vec3d(gradient_noise_gradient(to_float(q), term.fractal.seed));
+        case NoiseKind::Gradient: return Vec3d(gradient_noise_gradient(to_float(q), term.fractal.settings().seed));
         case NoiseKind::Fbm:
         case NoiseKind::Turbulence: return octave_sum_gradient(term, q);
         case NoiseKind::Simplex:

@@ -26,7 +26,7 @@ struct NoiseOctave {
 
 struct NoiseTerm {
     NoiseKind kind = NoiseKind::Gradient;
-    FractalSettings fractal;  // Fbm, Turbulence (gradient-noise basis); its seed serves every kind
+    FractalOctaves fractal;  // Fbm, Turbulence (gradient-noise basis); its seed serves every kind
     float jitter = 0.5f;      // Cellular: at most ½, where the cellular search always finds the nearest point
     double lipschitz = 0;     // |∇n| ≤ lipschitz everywhere
     Interval range;           // every value of n

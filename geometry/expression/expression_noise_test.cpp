@@ -130,8 +130,8 @@ TEST(ExpressionNoise, TermsAreTheTexturesFunctions) {
     settings.lacunarity = 2.5f;
     settings.gain = 0.4f;
     settings.seed = 9;
-    EXPECT_EQ(compile_expression({"fbm(p, 4, 2.5, 0.4, 9)", {}, ""}, {})->value(p), fbm(pf, settings, 0));
-    EXPECT_EQ(compile_expression({"turbulence(p)", {}, ""}, {})->value(p), turbulence(pf, FractalSettings{}, 0));
+    EXPECT_EQ(compile_expression({"fbm(p, 4, 2.5, 0.4, 9)", {}, ""}, {})->value(p), fbm(pf, FractalOctaves(settings), 0));
+    EXPECT_EQ(compile_expression({"turbulence(p)", {}, ""}, {})->value(p), turbulence(pf, FractalOctaves(FractalSettings{}), 0));
     EXPECT_EQ(compile_expression({"cellular(p, 0.25, 3)", {}, ""}, {})->value(p),
               cellular(pf, 3, 0.25f, CellularOutput::F1, 0));
 }

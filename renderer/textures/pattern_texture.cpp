@@ -16,7 +16,7 @@ float evaluate_pattern(const PatternSettings& settings, const Vec3f& p, bool pla
             return planar ? grid_2d({p.x, p.y}, settings.line_width, footprint)
                           : grid(p, settings.line_width, footprint);
         case PatternKind::Noise:
-            return 0.5f + 0.5f * basis_noise(settings.fractal.basis, p, settings.fractal.seed);
+            return 0.5f + 0.5f * basis_noise(settings.fractal.settings().basis, p, settings.fractal.settings().seed);
         case PatternKind::Fbm:
             return 0.5f + 0.5f * fbm(p, settings.fractal, footprint);
         case PatternKind::Turbulence:
@@ -24,7 +24,7 @@ float evaluate_pattern(const PatternSettings& settings, const Vec3f& p, bool pla
         case PatternKind::Ridged:
             return ridged(p, settings.fractal, footprint);
         case PatternKind::Cellular:
-            return cellular(p, settings.fractal.seed, settings.jitter, settings.cellular_output, footprint);
+            return cellular(p, settings.fractal.settings().seed, settings.jitter, settings.cellular_output, footprint);
         case PatternKind::Ramp:
             return ramp(p, settings.ramp_shape);
     }
@@ -65,20 +65,22 @@ ScalarTexturePtr parse_pattern(const SceneNode& node, const std::string& type) {
     settings.kind = PatternKind(std::find(pattern_types().begin(), pattern_types().end(), type) - pattern_types().begin());
     const PatternKind kind = settings.kind;
     const bool fractal = kind == PatternKind::Fbm || kind == PatternKind::Turbulence || kind == PatternKind::Ridged;
+    FractalSettings noise;
     if (fractal || kind == PatternKind::Noise) {
-        settings.fractal.basis = choice<NoiseBasis>(node, "basis", {"gradient", "simplex"}, 0);
-        settings.fractal.seed = std::uint32_t(node.integer_or("seed", 0, NumberRange::between(0, 2147483647)));
+        noise.basis = choice<NoiseBasis>(node, "basis", {"gradient", "simplex"}, 0);
+        noise.seed = std::uint32_t(node.integer_or("seed", 0, NumberRange::between(0, 2147483647)));
     }
     if (fractal) {
-        settings.fractal.octaves = node.integer_or("octaves", 5, NumberRange::between(0, kMaxFractalOctaves));
-        settings.fractal.lacunarity = float(node.number_or("lacunarity", 2, NumberRange::between(1, 16)));
-        settings.fractal.gain = float(node.number_or("gain", 0.5, NumberRange::between(0, 4)));
+        noise.octaves = node.integer_or("octaves", 5, NumberRange::between(0, kMaxFractalOctaves));
+        noise.lacunarity = float(node.number_or("lacunarity", 2, NumberRange::between(1, 16)));
+        noise.gain = float(node.number_or("gain", 0.5, NumberRange::between(0, 4)));
     }
     if (kind == PatternKind::Cellular) {
-        settings.fractal.seed = std::uint32_t(node.integer_or("seed", 0, NumberRange::between(0, 2147483647)));
+        noise.seed = std::uint32_t(node.integer_or("seed", 0, NumberRange::between(0, 2147483647)));
         settings.jitter = float(node.number_or("jitter", 1, NumberRange::unit_interval()));
         settings.cellular_output = choice<CellularOutput>(node, "output", {"f1", "f2", "f2_minus_f1", "cell_value"}, 0);
     }
+    settings.fractal = FractalOctaves(noise);
     if (kind == PatternKind::Grid)
         settings.line_width = float(node.number_or("line_width", 0.1, NumberRange::unit_interval()));
     if (kind == PatternKind::Ramp)

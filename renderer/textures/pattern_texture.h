@@ -18,7 +18,7 @@ enum class PatternKind { Checker, Grid, Noise, Fbm, Turbulence, Ridged, Cellular
 
 struct PatternSettings {
     PatternKind kind = PatternKind::Checker;
-    FractalSettings fractal;  // noise reads its basis and seed
+    FractalOctaves fractal;  // noise and cellular read its seed, noise its basis
     float jitter = 1;
     CellularOutput cellular_output = CellularOutput::F1;
     float line_width = 0.1f;

@@ -53,23 +53,21 @@ float faded(float shaped, float fade, float mean) {
 // and the octave's fade (0 = gone: the noise was not evaluated, and `shaped_mean` stands in for it) into the
 // octave's term; the terms are weighted by the amplitudes and divided by their sum.
 template <class Shape, class Term>
-float fractal_sum(const Vec3f& p, const FractalSettings& settings, float footprint, float shaped_mean, Shape shape,
+float fractal_sum(const Vec3f& p, const FractalOctaves& octaves, float footprint, float shaped_mean, Shape shape,
                   Term term) {
-    const int octaves = std::clamp(settings.octaves, 0, kMaxFractalOctaves);
-    const float lacunarity = clamp_or_low(settings.lacunarity, 1, 16);
-    const float gain = clamp_or_low(settings.gain, 0, 4);
+    const NoiseBasis basis = octaves.settings().basis;
     float frequency = 1, amplitude = 1, sum = 0, total = 0;
-    for (int octave = 0; octave < octaves; ++octave) {
+    for (int octave = 0; octave < octaves.count(); ++octave) {
         const float fade = octave_fade(frequency, footprint);
         float shaped = shaped_mean;
         if (fade > 0) {
-            const OctaveDomain domain = fractal_octave_domain(p, frequency, settings.seed, octave);
-            shaped = shape(basis_noise(settings.basis, domain.point, domain.seed));
+            const OctaveDomain domain = octaves.turn(octave).domain(p * frequency);
+            shaped = shape(basis_noise(basis, domain.point, domain.seed));
         }
         sum += amplitude * term(shaped, fade);
         total += amplitude;
-        frequency *= lacunarity;
-        amplitude *= gain;
+        frequency *= octaves.lacunarity();
+        amplitude *= octaves.gain();
     }
     return total > 0 ? sum / total : shaped_mean;
 }
@@ -85,7 +83,7 @@ float basis_noise(NoiseBasis basis, const Vec3f& p, std::uint32_t seed) {
     return basis == NoiseBasis::Simplex ? simplex_noise(p, seed) : gradient_noise(p, seed);
 }
 
-OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_t seed, int octave) {
+OctaveTurn octave_turn(std::uint32_t seed, int octave) {
     // Eight independent 32-bit random numbers from one hash of (seed, octave).
     const std::uint32_t hash = lattice_hash(lattice_seed(seed), octave);
     std::uint32_t bits[8];
@@ -95,25 +93,37 @@ OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_
     const float w = random(0), x = random(1), y = random(2), z = random(3);
     const float norm_squared = w * w + x * x + y * y + z * z;
     const float s = norm_squared > 1e-6f ? 2 / norm_squared : 0;
-    const Vec3f q = p * frequency;
-    const Vec3f turned{(1 - s * (y * y + z * z)) * q.x + s * (x * y - w * z) * q.y + s * (x * z + w * y) * q.z,
-                       s * (x * y + w * z) * q.x + (1 - s * (x * x + z * z)) * q.y + s * (y * z - w * x) * q.z,
-                       s * (x * z - w * y) * q.x + s * (y * z + w * x) * q.y + (1 - s * (x * x + y * y)) * q.z};
-    return {turned + Vec3f(random(4), random(5), random(6)), bits[7]};
+    return {{{1 - s * (y * y + z * z), s * (x * y - w * z), s * (x * z + w * y)},
+             {s * (x * y + w * z), 1 - s * (x * x + z * z), s * (y * z - w * x)},
+             {s * (x * z - w * y), s * (y * z + w * x), 1 - s * (x * x + y * y)}},
+            Vec3f(random(4), random(5), random(6)),
+            bits[7]};
+}
+
+OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_t seed, int octave) {
+    return octave_turn(seed, octave).domain(p * frequency);
+}
+
+FractalOctaves::FractalOctaves(const FractalSettings& settings)
+    : settings_(settings),
+      count_(std::clamp(settings.octaves, 0, kMaxFractalOctaves)),
+      lacunarity_(clamp_or_low(settings.lacunarity, 1, 16)),
+      gain_(clamp_or_low(settings.gain, 0, 4)) {
+    for (int octave = 0; octave < count_; ++octave) turns_[std::size_t(octave)] = octave_turn(settings.seed, octave);
 }
 
 float octave_fade(float frequency, float footprint) {
     return 1 - smoothstep(0.25f, 0.5f, frequency * footprint_or_zero(footprint));
 }
 
-float fbm(const Vec3f& p, const FractalSettings& settings, float footprint) {
-    return fractal_sum(p, settings, footprint, 0.0f, [](float noise) { return noise; },
+float fbm(const Vec3f& p, const FractalOctaves& octaves, float footprint) {
+    return fractal_sum(p, octaves, footprint, 0.0f, [](float noise) { return noise; },
                        [](float shaped, float fade) { return faded(shaped, fade, 0); });
 }
 
-float turbulence(const Vec3f& p, const FractalSettings& settings, float footprint) {
-    const float mean = basis_statistics(settings.basis).absolute_mean;
-    return fractal_sum(p, settings, footprint, mean, [](float noise) { return std::abs(noise); },
+float turbulence(const Vec3f& p, const FractalOctaves& octaves, float footprint) {
+    const float mean = basis_statistics(octaves.settings().basis).absolute_mean;
+    return fractal_sum(p, octaves, footprint, mean, [](float noise) { return std::abs(noise); },
                        [mean](float shaped, float fade) { return faded(shaped, fade, mean); });
 }
 
@@ -121,10 +131,10 @@ float turbulence(const Vec3f& p, const FractalSettings& settings, float footprin
 // mean is the weight times the signal's mean, and the weight handed on is faded towards its mean given the weight
 // received (mean_feedback), so a faded octave passes on what the whole one would on average. (Only to first order:
 // the mean of the next weight is propagated, not its distribution.)
-float ridged(const Vec3f& p, const FractalSettings& settings, float footprint) {
-    const BasisStatistics& statistics = basis_statistics(settings.basis);
+float ridged(const Vec3f& p, const FractalOctaves& octaves, float footprint) {
+    const BasisStatistics& statistics = basis_statistics(octaves.settings().basis);
     float weight = 1;  // the first octave is whole; each later one is weighted by its predecessor
-    return fractal_sum(p, settings, footprint, statistics.ridge_mean, ridge, [&](float shaped, float fade) {
+    return fractal_sum(p, octaves, footprint, statistics.ridge_mean, ridge, [&](float shaped, float fade) {
         const float term = weight * faded(shaped, fade, statistics.ridge_mean);
         weight = faded(std::min(2 * weight * shaped, 1.0f), fade, mean_feedback(statistics, weight));
         return term;

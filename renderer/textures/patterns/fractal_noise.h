@@ -1,6 +1,7 @@
 #pragma once
 // Fractal sums of noise octaves (Musgrave, "Texturing & Modeling: A Procedural Approach"): fBm, turbulence and the
 // ridged multifractal, band-limited by fading out the octaves a pixel footprint cannot resolve.
+#include <array>
 #include <cstdint>
 
 #include "renderer/math/vec3.h"
@@ -22,26 +23,6 @@ struct FractalSettings {
 
 constexpr int kMaxFractalOctaves = 24;
 
-// The footprint is the width of a pixel at p in the units of p (0 = a point sample). An octave of wavelength λ is
-// whole while λ ≥ 4 footprints, gone at λ ≤ 2 footprints (where it would alias) and fades smoothly in between:
-// a faded octave is replaced by its mean, so the result tends to the pattern's mean, and a gone octave's noise is
-// not evaluated. The normalisation counts every octave, faded or not, so the fade never rescales the others.
-
-// The sum of octaves divided by the sum of their amplitudes: within [-1, 1], mean 0.
-float fbm(const Vec3f& p, const FractalSettings& settings, float footprint);
-
-// The same sum of |noise|: within [0, 1].
-float turbulence(const Vec3f& p, const FractalSettings& settings, float footprint);
-
-// Musgrave's ridged multifractal with offset 1 and feedback gain 2: each octave is (1 − |noise|)², weighted by
-// twice the previous octave's weighted value (clamped to [0, 1]), so ridges carry detail and valleys stay smooth.
-// Within [0, 1]. Its fade also fades the weight an octave hands on towards that weight's mean, so that the mean
-// over space stays put to first order (within 0.015 at the default settings when every octave has faded).
-float ridged(const Vec3f& p, const FractalSettings& settings, float footprint);
-
-// The noise that NoiseBasis names.
-float basis_noise(NoiseBasis basis, const Vec3f& p, std::uint32_t seed);
-
 // Where octave `octave` of frequency `frequency` samples its noise for p: p × frequency turned by a rotation and
 // moved by an offset that the seed and octave hash to, and the seed of that octave's noise. The turn keeps the
 // octaves' lattices (and those of different seeds) out of line: otherwise they would share their zeros, and
@@ -51,6 +32,61 @@ struct OctaveDomain {
     std::uint32_t seed;
 };
 OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_t seed, int octave);
+
+// The turn, offset and noise seed of one octave's domain, which depend on the seed and the octave alone.
+struct OctaveTurn {
+    float turn[3][3];
+    Vec3f offset;
+    std::uint32_t seed;
+
+    // The domain of the point whose coordinates times the octave's frequency are q.
+    OctaveDomain domain(const Vec3f& q) const {
+        const Vec3f turned{turn[0][0] * q.x + turn[0][1] * q.y + turn[0][2] * q.z,
+                           turn[1][0] * q.x + turn[1][1] * q.y + turn[1][2] * q.z,
+                           turn[2][0] * q.x + turn[2][1] * q.y + turn[2][2] * q.z};
+        return {turned + offset, seed};
+    }
+};
+OctaveTurn octave_turn(std::uint32_t seed, int octave);
+
+// Fractal settings clamped as documented above, with every octave's turn taken once rather than hashed again at
+// every point the sum is evaluated at.
+class FractalOctaves {
+public:
+    explicit FractalOctaves(const FractalSettings& settings = {});
+
+    const FractalSettings& settings() const { return settings_; }  // as given, unclamped
+    int count() const { return count_; }
+    float lacunarity() const { return lacunarity_; }
+    float gain() const { return gain_; }
+    const OctaveTurn& turn(int octave) const { return turns_[std::size_t(octave)]; }
+
+private:
+    FractalSettings settings_;
+    int count_;
+    float lacunarity_, gain_;
+    std::array<OctaveTurn, kMaxFractalOctaves> turns_{};
+};
+
+// The footprint is the width of a pixel at p in the units of p (0 = a point sample). An octave of wavelength λ is
+// whole while λ ≥ 4 footprints, gone at λ ≤ 2 footprints (where it would alias) and fades smoothly in between:
+// a faded octave is replaced by its mean, so the result tends to the pattern's mean, and a gone octave's noise is
+// not evaluated. The normalisation counts every octave, faded or not, so the fade never rescales the others.
+
+// The sum of octaves divided by the sum of their amplitudes: within [-1, 1], mean 0.
+float fbm(const Vec3f& p, const FractalOctaves& octaves, float footprint);
+
+// The same sum of |noise|: within [0, 1].
+float turbulence(const Vec3f& p, const FractalOctaves& octaves, float footprint);
+
+// Musgrave's ridged multifractal with offset 1 and feedback gain 2: each octave is (1 − |noise|)², weighted by
+// twice the previous octave's weighted value (clamped to [0, 1]), so ridges carry detail and valleys stay smooth.
+// Within [0, 1]. Its fade also fades the weight an octave hands on towards that weight's mean, so that the mean
+// over space stays put to first order (within 0.015 at the default settings when every octave has faded).
+float ridged(const Vec3f& p, const FractalOctaves& octaves, float footprint);
+
+// The noise that NoiseBasis names.
+float basis_noise(NoiseBasis basis, const Vec3f& p, std::uint32_t seed);
 
 // How much of an octave of frequency `frequency` a footprint keeps: 1 while frequency × footprint ≤ 1/4, 0 from
 // 1/2, smooth in between.

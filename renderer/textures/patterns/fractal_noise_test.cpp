@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "renderer/textures/patterns/pattern_test_support.h"
@@ -25,8 +26,8 @@ TEST(FractalNoise, FbmHasMeanZeroAndStatedSpread) {
     // (0.26 gradient, 0.39 simplex) × √(Σ gain^2i) / Σ gain^i = 0.59 of it.
     const double expected_spread[] = {0.155, 0.234};
     for (const NoiseBasis basis : kBases) {
-        const FractalSettings settings = settings_with(basis);
-        const Moments m = moments(points, [&](const Vec3f& p) { return fbm(p, settings, 0); });
+        const FractalOctaves octaves(settings_with(basis));
+        const Moments m = moments(points, [&](const Vec3f& p) { return fbm(p, octaves, 0); });
         EXPECT_NEAR(m.mean, 0.0, 0.005);
         EXPECT_NEAR(m.standard_deviation, expected_spread[int(basis)], 0.01);
         EXPECT_GE(m.minimum, -1.0);
@@ -37,9 +38,9 @@ TEST(FractalNoise, FbmHasMeanZeroAndStatedSpread) {
 TEST(FractalNoise, TurbulenceAndRidgedStayInUnitRange) {
     const auto points = random_points(100000, 100);
     for (const NoiseBasis basis : kBases) {
-        const FractalSettings settings = settings_with(basis);
-        const Moments t = moments(points, [&](const Vec3f& p) { return turbulence(p, settings, 0); });
-        const Moments r = moments(points, [&](const Vec3f& p) { return ridged(p, settings, 0); });
+        const FractalOctaves octaves(settings_with(basis));
+        const Moments t = moments(points, [&](const Vec3f& p) { return turbulence(p, octaves, 0); });
+        const Moments r = moments(points, [&](const Vec3f& p) { return ridged(p, octaves, 0); });
         EXPECT_GE(t.minimum, 0.0);
         EXPECT_LE(t.maximum, 1.0);
         EXPECT_GE(r.minimum, 0.0);
@@ -53,6 +54,7 @@ TEST(FractalNoise, TurbulenceAndRidgedStayInUnitRange) {
 TEST(FractalNoise, FootprintZeroIsTheUnfilteredSum) {
     for (const NoiseBasis basis : kBases) {
         const FractalSettings settings = settings_with(basis, 7);
+        const FractalOctaves octaves(settings);
         for (const Vec3f& p : random_points(1000, 30)) {
             float sum = 0, total = 0, amplitude = 1, frequency = 1;
             for (int octave = 0; octave < settings.octaves; ++octave) {
@@ -62,18 +64,42 @@ TEST(FractalNoise, FootprintZeroIsTheUnfilteredSum) {
                 amplitude *= settings.gain;
                 frequency *= settings.lacunarity;
             }
-            ASSERT_FLOAT_EQ(fbm(p, settings, 0), sum / total);
+            ASSERT_FLOAT_EQ(fbm(p, octaves, 0), sum / total);
         }
     }
+}
+
+// The octaves' turns, taken once, are those fractal_octave_domain hashes at every point, bit for bit, for every
+// octave a fractal can have; the settings are clamped as documented.
+TEST(FractalNoise, OctaveTurnsAreTheOctavesDomains) {
+    for (const std::uint32_t seed : {0u, 7u, 2147483647u}) {
+        const FractalOctaves octaves(FractalSettings{NoiseBasis::Gradient, kMaxFractalOctaves, 1.7f, 0.5f, seed});
+        ASSERT_EQ(octaves.count(), kMaxFractalOctaves);
+        for (const Vec3f& p : random_points(200, 50)) {
+            float frequency = 1;
+            for (int octave = 0; octave < octaves.count(); ++octave) {
+                const OctaveDomain hashed = fractal_octave_domain(p, frequency, seed, octave);
+                const OctaveDomain tabled = octaves.turn(octave).domain(p * frequency);
+                ASSERT_EQ(std::memcmp(&hashed.point, &tabled.point, sizeof(Vec3f)), 0) << "octave " << octave;
+                ASSERT_EQ(hashed.seed, tabled.seed);
+                frequency *= octaves.lacunarity();
+            }
+        }
+    }
+    const FractalOctaves odd(FractalSettings{NoiseBasis::Gradient, 1000000, std::nanf(""), 100, 1});
+    EXPECT_EQ(odd.count(), kMaxFractalOctaves);
+    EXPECT_EQ(odd.lacunarity(), 1);
+    EXPECT_EQ(odd.gain(), 4);
+    EXPECT_EQ(FractalOctaves(FractalSettings{NoiseBasis::Gradient, -3}).count(), 0);
 }
 
 // A footprint wider than the lowest octave's wavelength fades every octave to its mean: a constant field.
 TEST(FractalNoise, WideFootprintsLeaveNoVariance) {
     const auto points = random_points(10000, 100);
     for (const NoiseBasis basis : kBases) {
-        const FractalSettings settings = settings_with(basis);
+        const FractalOctaves octaves(settings_with(basis));
         for (const auto pattern : {&fbm, &turbulence, &ridged}) {
-            const Moments m = moments(points, [&](const Vec3f& p) { return pattern(p, settings, 10); });
+            const Moments m = moments(points, [&](const Vec3f& p) { return pattern(p, octaves, 10); });
             EXPECT_EQ(m.minimum, m.maximum);
         }
     }
@@ -85,11 +111,11 @@ TEST(FractalNoise, WideFootprintsLeaveNoVariance) {
 TEST(FractalNoise, FootprintKeepsTheMeanAndShrinksTheSpread) {
     const auto points = random_points(100000, 100);
     for (const NoiseBasis basis : kBases) {
-        const FractalSettings settings = settings_with(basis);
+        const FractalOctaves octaves(settings_with(basis));
         for (const auto pattern : {&fbm, &turbulence, &ridged}) {
-            const Moments sharp = moments(points, [&](const Vec3f& p) { return pattern(p, settings, 0); });
-            const Moments blurred = moments(points, [&](const Vec3f& p) { return pattern(p, settings, 0.1f); });
-            const Moments flat = moments(points, [&](const Vec3f& p) { return pattern(p, settings, 10); });
+            const Moments sharp = moments(points, [&](const Vec3f& p) { return pattern(p, octaves, 0); });
+            const Moments blurred = moments(points, [&](const Vec3f& p) { return pattern(p, octaves, 0.1f); });
+            const Moments flat = moments(points, [&](const Vec3f& p) { return pattern(p, octaves, 10); });
             EXPECT_NEAR(blurred.mean, sharp.mean, 0.004);
             EXPECT_NEAR(flat.mean, sharp.mean, pattern == &ridged ? 0.015 : 0.004);
             EXPECT_LT(blurred.standard_deviation, sharp.standard_deviation);
@@ -101,10 +127,10 @@ TEST(FractalNoise, FootprintKeepsTheMeanAndShrinksTheSpread) {
 // off would jump by that octave's whole contribution).
 TEST(FractalNoise, FootprintFadeIsSmooth) {
     for (const NoiseBasis basis : kBases) {
-        const FractalSettings settings = settings_with(basis, 3);
+        const FractalOctaves octaves(settings_with(basis, 3));
         for (const Vec3f& p : random_points(20, 10)) {
             for (const auto pattern : {&fbm, &turbulence, &ridged}) {
-                const auto at = [&](float footprint) { return pattern(p, settings, footprint); };
+                const auto at = [&](float footprint) { return pattern(p, octaves, footprint); };
                 EXPECT_LT(largest_footprint_step(at, 0.6f), 2e-3f);
             }
         }
@@ -114,7 +140,7 @@ TEST(FractalNoise, FootprintFadeIsSmooth) {
 TEST(FractalNoise, SeedsGiveUncorrelatedFields) {
     const auto points = random_points(50000, 100);
     for (const NoiseBasis basis : kBases) {
-        const FractalSettings a = settings_with(basis, 0), b = settings_with(basis, 1);
+        const FractalOctaves a(settings_with(basis, 0)), b(settings_with(basis, 1));
         for (const auto pattern : {&fbm, &turbulence, &ridged}) {
             const double r = correlation(
                 points, [&](const Vec3f& p) { return pattern(p, a, 0); },
@@ -132,10 +158,11 @@ TEST(FractalNoise, AnySettingsGiveFiniteValuesInRange) {
         {NoiseBasis::Simplex, 8, kInfinity, kInfinity, 1}, {NoiseBasis::Gradient, 8, -2, -1, 1},
     };
     for (const FractalSettings& settings : odd) {
+        const FractalOctaves octaves(settings);
         for (const float footprint : {0.0f, 0.3f, kNaN, kInfinity, -1.0f}) {
             const Vec3f p{0.3f, -2.7f, 11.1f};
-            const float f = fbm(p, settings, footprint), t = turbulence(p, settings, footprint),
-                        r = ridged(p, settings, footprint);
+            const float f = fbm(p, octaves, footprint), t = turbulence(p, octaves, footprint),
+                        r = ridged(p, octaves, footprint);
             EXPECT_TRUE(std::abs(f) <= 1) << f;
             EXPECT_TRUE(t >= 0 && t <= 1) << t;
             EXPECT_TRUE(r >= 0 && r <= 1) << r;

@@ -38,13 +38,12 @@ void run(benchmark::State& state, Pattern pattern) {
 
 void BM_GradientNoise(benchmark::State& s) { run(s, [](const Vec3f& p) { return gradient_noise(p, 1); }); }
 void BM_SimplexNoise(benchmark::State& s) { run(s, [](const Vec3f& p) { return simplex_noise(p, 1); }); }
-void BM_FbmGradient5(benchmark::State& s) { run(s, [](const Vec3f& p) { return fbm(p, {}, 0); }); }
-void BM_FbmSimplex5(benchmark::State& s) {
-    run(s, [](const Vec3f& p) { return fbm(p, {NoiseBasis::Simplex}, 0); });
-}
-void BM_Turbulence5(benchmark::State& s) { run(s, [](const Vec3f& p) { return turbulence(p, {}, 0); }); }
-void BM_Ridged5(benchmark::State& s) { run(s, [](const Vec3f& p) { return ridged(p, {}, 0); }); }
-void BM_Fbm5Footprint(benchmark::State& s) { run(s, [](const Vec3f& p) { return fbm(p, {}, 0.1f); }); }
+const FractalOctaves kGradient5{FractalSettings{}}, kSimplex5{FractalSettings{NoiseBasis::Simplex}};
+void BM_FbmGradient5(benchmark::State& s) { run(s, [](const Vec3f& p) { return fbm(p, kGradient5, 0); }); }
+void BM_FbmSimplex5(benchmark::State& s) { run(s, [](const Vec3f& p) { return fbm(p, kSimplex5, 0); }); }
+void BM_Turbulence5(benchmark::State& s) { run(s, [](const Vec3f& p) { return turbulence(p, kGradient5, 0); }); }
+void BM_Ridged5(benchmark::State& s) { run(s, [](const Vec3f& p) { return ridged(p, kGradient5, 0); }); }
+void BM_Fbm5Footprint(benchmark::State& s) { run(s, [](const Vec3f& p) { return fbm(p, kGradient5, 0.1f); }); }
 void BM_CellularF1(benchmark::State& s) {
     run(s, [](const Vec3f& p) { return cellular(p, 1, 1, CellularOutput::F1, 0); });
 }

@@ -23,12 +23,17 @@ TEST(PatternsDeterminism, ParallelEvaluationEqualsSerialBitForBit) {
     // Varying seeds and footprints per point, so that threads interleave different arguments.
     const auto seed = [](std::size_t i) { return static_cast<std::uint32_t>(i % 7); };
     const auto footprint = [](std::size_t i) { return static_cast<float>(i % 5) * 0.1f; };
+    std::vector<FractalOctaves> gradient_fractals, simplex_fractals;
+    for (std::uint32_t s = 0; s < 7; ++s) {
+        gradient_fractals.emplace_back(FractalSettings{NoiseBasis::Gradient, 6, 2, 0.5f, s});
+        simplex_fractals.emplace_back(FractalSettings{NoiseBasis::Simplex, 6, 2, 0.5f, s});
+    }
     const std::vector<std::function<float(const Vec3f&, std::size_t)>> patterns = {
         [&](const Vec3f& p, std::size_t i) { return gradient_noise(p, seed(i)); },
         [&](const Vec3f& p, std::size_t i) { return simplex_noise(p, seed(i)); },
-        [&](const Vec3f& p, std::size_t i) { return fbm(p, {NoiseBasis::Gradient, 6, 2, 0.5f, seed(i)}, footprint(i)); },
-        [&](const Vec3f& p, std::size_t i) { return turbulence(p, {NoiseBasis::Simplex, 6, 2, 0.5f, seed(i)}, footprint(i)); },
-        [&](const Vec3f& p, std::size_t i) { return ridged(p, {NoiseBasis::Gradient, 6, 2, 0.5f, seed(i)}, footprint(i)); },
+        [&](const Vec3f& p, std::size_t i) { return fbm(p, gradient_fractals[seed(i)], footprint(i)); },
+        [&](const Vec3f& p, std::size_t i) { return turbulence(p, simplex_fractals[seed(i)], footprint(i)); },
+        [&](const Vec3f& p, std::size_t i) { return ridged(p, gradient_fractals[seed(i)], footprint(i)); },
         [&](const Vec3f& p, std::size_t i) { return cellular(p, seed(i), 1, CellularOutput::F2MinusF1, footprint(i) * 2); },
         [&](const Vec3f& p, std::size_t i) { return cellular(p, seed(i), 0.8f, CellularOutput::CellValue, footprint(i) * 2); },
         [&](const Vec3f& p, std::size_t i) { return checker(p, footprint(i)); },
