@@ -93,7 +93,7 @@ struct PathIntegrator::Path {
     }
     const SurfaceHit& hit = *found;
     const Vec3f towards_viewer = -ray.direction;
-    if (depth == 0) primary.record(hit, hit.material->albedo(hit));
+    if (depth == 0) primary.record(hit);
 
     const Rgb emitted = hit.material->emission(hit, towards_viewer);
     if (!emitted.is_black()) {

@@ -76,6 +76,8 @@ public:
     // x, y in full-raster pixels inside bounds(). Not thread-safe per pixel (one thread owns a pixel).
     void add_sample(int x, int y, const CameraSample& sample);
     std::uint32_t sample_count(int x, int y) const;
+    // Whether add_sample keeps what a sample's camera ray saw first (the AOVs that need it were asked for).
+    bool keeps_hit_data() const { return !aovs_.empty(); }
     SampleCountRange sample_count_range() const;
     PixelStatistics pixel_statistics(int x, int y) const;
 

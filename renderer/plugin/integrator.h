@@ -7,6 +7,7 @@
 
 #include "renderer/core/ray.h"
 #include "renderer/math/rgb.h"
+#include "renderer/plugin/material.h"
 #include "renderer/plugin/registry.h"
 #include "renderer/plugin/surface_hit.h"
 #include "renderer/sampling/sampler.h"
@@ -24,7 +25,13 @@ struct PrimaryHitRecord {
     float depth = 0;
     std::uint32_t object_id = 0;
     std::uint32_t primitive_id = 0;
+    // Whether the albedo is wanted (the film keeps it): a textured material evaluates its textures for it.
+    bool keeps_albedo = true;
 
+    // Records `hit` (seen first) with its material's albedo there when that is kept, black otherwise.
+    void record(const SurfaceHit& hit) {
+        record(hit, keeps_albedo && hit.material ? hit.material->albedo(hit) : Rgb());
+    }
     // Records `hit` (seen first) with the material's albedo there.
     void record(const SurfaceHit& hit, const Rgb& surface_albedo) {
         this->hit = true;

@@ -62,6 +62,7 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
     std::array<CameraSample, kGroup> samples;
     std::array<PrimaryHitRecord, kGroup> primary;
     std::array<Rgb, kGroup> radiance;
+    const bool keeps_albedo = film.keeps_hit_data();
     std::int64_t taken = 0;
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
@@ -80,6 +81,7 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
                     samples[i].filter_weight = offset.weight;
                     samples[i].offset_squared = offset.dx * offset.dx + offset.dy * offset.dy;
                     primary[i] = PrimaryHitRecord{};
+                    primary[i].keeps_albedo = keeps_albedo;
                 }
                 loaded.integrator->radiance_of_samples(std::span(rays.data(), count), *loaded.scene,
                                                        std::span(streams.data(), count),

@@ -68,6 +68,14 @@ public:
     }
 };
 
+// White where the renderer asked for the first hit's albedo, black where it did not.
+class AlbedoKeptIntegrator final : public Integrator {
+public:
+    Rgb radiance(const Ray&, const RenderScene&, SampleStream&, PrimaryHitRecord& primary) const override {
+        return Rgb(primary.keeps_albedo ? 1.0f : 0.0f);
+    }
+};
+
 }  // namespace
 
 ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_slow_random", "test only: 300 us per sample, random colour",
@@ -77,6 +85,10 @@ ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_slow_random", "test only: 30
 ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_bad_values", "test only: NaN/inf radiance for rays going right",
                          [](const SceneNode&) -> std::unique_ptr<Integrator> {
                              return std::make_unique<BadValueIntegrator>();
+                         })
+ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_albedo_kept", "test only: white where the albedo is kept",
+                         [](const SceneNode&) -> std::unique_ptr<Integrator> {
+                             return std::make_unique<AlbedoKeptIntegrator>();
                          })
 ISOTRACE_REGISTER_PLUGIN(integrator_registry, "test_wait_for_cancel", "test only: blocks until cancelled",
                          [](const SceneNode&) -> std::unique_ptr<Integrator> {
@@ -503,6 +515,22 @@ TEST(TileRenderer, DepthAovIsTheViewDepthOfTheFirstHit) {
         }
     EXPECT_GT(hits, 50);
     EXPECT_GT(misses, 10);  // the quad ends at x = 1, right of the image centre
+}
+
+// A material's albedo (its textures evaluated again at every camera hit) is asked for only when the film keeps what
+// camera rays hit: not for the beauty alone, nor with only the sample-count and variance AOVs.
+TEST(TileRenderer, TheAlbedoIsAskedForOnlyWhenTheFilmKeepsIt) {
+    for (const auto& [aovs, kept] : std::vector<std::pair<std::string, float>>{
+             {"[]", 0.0f}, {R"(["sample_count", "variance"])", 0.0f}, {R"(["albedo"])", 1.0f}, {R"(["depth"])", 1.0f}}) {
+        const SceneFile file(R"({"isotrace": 1, "film": {"resolution": [8, 6], "spp": 2, "aovs": )" + aovs + R"(},
+  "camera": {"type": "perspective", "fov": 60, "look_at": {"eye": [0, 0, 4], "target": [0, 0, 0]}},
+  "integrator": {"type": "test_albedo_kept"}, "materials": {"m": {"type": "diffuse"}},
+  "objects": [{"material": "m", "shape": {"type": "sphere"}}]})");
+        const auto scene = load_scene(file.path());
+        ImageBuffer image = render_with_threads(*scene, 2, options_for(*scene, 8)).film->resolve();
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) ASSERT_EQ(image.pixel(x, y)[0], kept) << aovs << " at " << x << ", " << y;
+    }
 }
 
 // stop_at_pass_end is asked at 1, 2, 4, ... spp, once each, with every pixel at that count; the render it stops
