@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "renderer/core/memory_budget.h"
 #include "renderer/params/scene_node.h"
 #include "renderer/textures/patterns/checker.h"
 #include "renderer/textures/patterns/grid.h"
@@ -70,6 +71,7 @@ ScalarTexturePtr parse_pattern(const SceneNode& node, const std::string& type) {
         noise.basis = choice<NoiseBasis>(node, "basis", {"gradient", "simplex"}, 0);
         noise.seed = std::uint32_t(node.integer_or("seed", 0, NumberRange::between(0, 2147483647)));
     }
+    noise.octaves = 0;  // the other patterns sum no octaves
     if (fractal) {
         noise.octaves = node.integer_or("octaves", 5, NumberRange::between(0, kMaxFractalOctaves));
         noise.lacunarity = float(node.number_or("lacunarity", 2, NumberRange::between(1, 16)));
@@ -80,6 +82,8 @@ ScalarTexturePtr parse_pattern(const SceneNode& node, const std::string& type) {
         settings.jitter = float(node.number_or("jitter", 1, NumberRange::unit_interval()));
         settings.cellular_output = choice<CellularOutput>(node, "output", {"f1", "f2", "f2_minus_f1", "cell_value"}, 0);
     }
+    if (const std::size_t bytes = FractalOctaves::heap_bytes(noise); bytes > 0 && node.context().memory)
+        node.context().memory->charge(bytes, "a fractal pattern's octaves", node.location());
     settings.fractal = FractalOctaves(noise);
     if (kind == PatternKind::Grid)
         settings.line_width = float(node.number_or("line_width", 0.1, NumberRange::unit_interval()));

@@ -109,7 +109,12 @@ FractalOctaves::FractalOctaves(const FractalSettings& settings)
       count_(std::clamp(settings.octaves, 0, kMaxFractalOctaves)),
       lacunarity_(clamp_or_low(settings.lacunarity, 1, 16)),
       gain_(clamp_or_low(settings.gain, 0, 4)) {
-    for (int octave = 0; octave < count_; ++octave) turns_[std::size_t(octave)] = octave_turn(settings.seed, octave);
+    turns_.reserve(std::size_t(count_));
+    for (int octave = 0; octave < count_; ++octave) turns_.push_back(octave_turn(settings.seed, octave));
+}
+
+std::size_t FractalOctaves::heap_bytes(const FractalSettings& settings) {
+    return std::size_t(std::clamp(settings.octaves, 0, kMaxFractalOctaves)) * sizeof(OctaveTurn);
 }
 
 float octave_fade(float frequency, float footprint) {

@@ -1,8 +1,8 @@
 #pragma once
 // Fractal sums of noise octaves (Musgrave, "Texturing & Modeling: A Procedural Approach"): fBm, turbulence and the
 // ridged multifractal, band-limited by fading out the octaves a pixel footprint cannot resolve.
-#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "renderer/math/vec3.h"
 
@@ -50,10 +50,12 @@ struct OctaveTurn {
 OctaveTurn octave_turn(std::uint32_t seed, int octave);
 
 // Fractal settings clamped as documented above, with every octave's turn taken once rather than hashed again at
-// every point the sum is evaluated at.
+// every point the sum is evaluated at (heap_bytes for the turns).
 class FractalOctaves {
 public:
     explicit FractalOctaves(const FractalSettings& settings = {});
+    // What the turns of these settings take on the heap, for the memory budget.
+    static std::size_t heap_bytes(const FractalSettings& settings);
 
     const FractalSettings& settings() const { return settings_; }  // as given, unclamped
     int count() const { return count_; }
@@ -65,7 +67,7 @@ private:
     FractalSettings settings_;
     int count_;
     float lacunarity_, gain_;
-    std::array<OctaveTurn, kMaxFractalOctaves> turns_{};
+    std::vector<OctaveTurn> turns_;  // count_ of them
 };
 
 // The footprint is the width of a pixel at p in the units of p (0 = a point sample). An octave of wavelength λ is
