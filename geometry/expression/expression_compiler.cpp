@@ -430,6 +430,11 @@ private:
                 if (args.size() > 1) jitter = static_cast<float>(constant_between(args[1], "the jitter of cellular", 0, 0.5, false));
                 fractal.seed = seed_at(2);
         }
+        // Each different noise keeps its octaves' tables: bounded here, while the tape's length is checked only
+        // once it is built.
+        if (builder_.noise_count() >= std::size_t(kMaxExpressionTape))
+            fail(offset, std::to_string(kMaxExpressionTape) + " different noises or more: more than a tape of " +
+                             std::to_string(kMaxExpressionTape) + " instructions can hold");
         const int index = builder_.add_noise(make_noise_term(kind, fractal, jitter));
         return scalar(builder_.emit({Op::Noise, point.slots[0], point.slots[1], point.slots[2], index}, offset), offset);
     }

@@ -92,6 +92,19 @@ TEST(ExpressionErrors, DeepNestingAndLongTapesAreRefused) {
     expect_error(sum, 0, "more than the limit of 1024");
 }
 
+// Each different noise keeps tables of its octaves while the tape is built, before the tape's length is checked:
+// the noises are counted as they come, and the one past what a tape can hold is refused where it stands.
+TEST(ExpressionErrors, ManyDifferentNoisesAreRefusedAsTheyCome) {
+    std::string sum = "fbm(p, 24, 2, 0.5, 0)";
+    for (int seed = 1; seed <= 1024; ++seed) sum += " + fbm(p, 24, 2, 0.5, " + std::to_string(seed) + ")";
+    const std::size_t last = sum.rfind("fbm");
+    expect_error(sum, last, "1024 different noises or more");
+    // The same noise many times is one noise.
+    std::string same = "fbm(p, 24)";
+    for (int i = 0; i < 500; ++i) same += " + fbm(p, 24)";
+    EXPECT_NO_THROW(compile_expression({same, {}, ""}, {}));
+}
+
 TEST(ExpressionErrors, TheColumnCountsTheEscapesOfTheJsonString) {
     // The tab is written \t in the file: two columns for one character.
     const InputError error = error_of("x\t+ ?");

@@ -156,6 +156,8 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
     clamped.octaves = std::clamp(fractal.octaves, 0, kMaxFractalOctaves);
     clamped.lacunarity = std::clamp(fractal.lacunarity, 1.0f, 16.0f);
     clamped.gain = std::clamp(fractal.gain, 0.0f, 4.0f);
+    const bool fractal_sum = kind == NoiseKind::Fbm || kind == NoiseKind::Turbulence;
+    if (!fractal_sum) clamped.octaves = 0;  // the other kinds sum no octaves
     term.fractal = FractalOctaves(clamped);
     term.jitter = std::clamp(jitter, 0.0f, 0.5f);
     double finest_frequency = 1;

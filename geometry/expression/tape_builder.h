@@ -25,6 +25,7 @@ public:
     const double* constant_value(int slot) const;
 
     int add_noise(const NoiseTerm& term);
+    std::size_t noise_count() const { return tape_.noises.size(); }
     int add_field(std::shared_ptr<const ImplicitField> field);
 
     // The tape of the instructions that `output` depends on, `output` last.
