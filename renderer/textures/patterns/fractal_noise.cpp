@@ -106,7 +106,7 @@ OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_
 
 FractalOctaves::FractalOctaves(const FractalSettings& settings)
     : settings_(settings),
-      count_(std::clamp(settings.octaves, 0, kMaxFractalOctaves)),
+      count_(clamped_count(settings)),
       lacunarity_(clamp_or_low(settings.lacunarity, 1, 16)),
       gain_(clamp_or_low(settings.gain, 0, 4)) {
     turns_.reserve(std::size_t(count_));
@@ -114,7 +114,11 @@ FractalOctaves::FractalOctaves(const FractalSettings& settings)
 }
 
 std::size_t FractalOctaves::heap_bytes(const FractalSettings& settings) {
-    return std::size_t(std::clamp(settings.octaves, 0, kMaxFractalOctaves)) * sizeof(OctaveTurn);
+    return std::size_t(clamped_count(settings)) * sizeof(OctaveTurn);
+}
+
+int FractalOctaves::clamped_count(const FractalSettings& settings) {
+    return std::clamp(settings.octaves, 0, kMaxFractalOctaves);
 }
 
 float octave_fade(float frequency, float footprint) {

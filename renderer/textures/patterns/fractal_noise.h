@@ -64,6 +64,8 @@ public:
     const OctaveTurn& turn(int octave) const { return turns_[std::size_t(octave)]; }
 
 private:
+    static int clamped_count(const FractalSettings& settings);
+
     FractalSettings settings_;
     int count_;
     float lacunarity_, gain_;
