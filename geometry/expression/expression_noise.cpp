@@ -38,15 +38,15 @@ struct FractalScale {
     double lipschitz_factor = 0, finest_frequency = 1;
 };
 
-FractalScale fractal_scale(const FractalSettings& settings) {
+FractalScale fractal_scale(const FractalOctaves& fractal) {
     FractalScale scale;
     double frequency = 1, amplitude = 1, weighted = 0, total = 0;
-    for (int octave = 0; octave < settings.octaves; ++octave) {
+    for (int octave = 0; octave < fractal.count(); ++octave) {
         weighted += amplitude * frequency;
         total += amplitude;
         scale.finest_frequency = frequency;
-        frequency *= settings.lacunarity;
-        amplitude *= settings.gain;
+        frequency *= fractal.lacunarity();
+        amplitude *= fractal.gain();
     }
     scale.lipschitz_factor = total > 0 ? weighted / total : 0;
     return scale;
@@ -55,18 +55,19 @@ FractalScale fractal_scale(const FractalSettings& settings) {
 // The octaves of fractal_sum (its float frequencies and amplitudes), each octave's affine map read off
 // fractal_octave_domain: the offset is the image of 0 (exact), a column of the turn the image of a large multiple
 // of an axis less the offset (so that the float rounding of the image is a small part of it).
-std::vector<NoiseOctave> fractal_octaves(const FractalSettings& settings) {
+std::vector<NoiseOctave> fractal_octaves(const FractalOctaves& fractal) {
     constexpr float kProbe = 4096;
+    const std::uint32_t seed = fractal.settings().seed;
     std::vector<NoiseOctave> octaves;
     float frequency = 1, amplitude = 1, total = 0;
-    for (int index = 0; index < settings.octaves; ++index) {
+    for (int index = 0; index < fractal.count(); ++index) {
         NoiseOctave octave;
-        const OctaveDomain origin = fractal_octave_domain({0, 0, 0}, frequency, settings.seed, index);
+        const OctaveDomain origin = fractal_octave_domain({0, 0, 0}, frequency, seed, index);
         octave.offset = Vec3d(origin.point);
         for (int k = 0; k < 3; ++k) {
             Vec3f axis{0, 0, 0};
             axis[k] = kProbe;
-            const Vec3d image(fractal_octave_domain(axis, frequency, settings.seed, index).point);
+            const Vec3d image(fractal_octave_domain(axis, frequency, seed, index).point);
             for (int j = 0; j < 3; ++j) octave.turn[j][k] = (image[j] - octave.offset[j]) / kProbe;
         }
         octave.frequency = frequency;
@@ -74,8 +75,8 @@ std::vector<NoiseOctave> fractal_octaves(const FractalSettings& settings) {
         octave.seed = origin.seed;
         octaves.push_back(octave);
         total += amplitude;
-        frequency *= settings.lacunarity;
-        amplitude *= settings.gain;
+        frequency *= fractal.lacunarity();
+        amplitude *= fractal.gain();
     }
     for (NoiseOctave& octave : octaves) octave.weight = total > 0 ? octave.weight / total : 0;
     return octaves;
@@ -151,14 +152,11 @@ OctaveSumBounds octave_sum_bounds(const NoiseTerm& term, const IntervalBox& box)
 NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float jitter) {
     NoiseTerm term;
     term.kind = kind;
-    FractalSettings clamped = fractal;
-    clamped.basis = NoiseBasis::Gradient;
-    clamped.octaves = std::clamp(fractal.octaves, 0, kMaxFractalOctaves);
-    clamped.lacunarity = std::clamp(fractal.lacunarity, 1.0f, 16.0f);
-    clamped.gain = std::clamp(fractal.gain, 0.0f, 4.0f);
+    FractalSettings settings = fractal;  // FractalOctaves clamps the octaves, lacunarity and gain
+    settings.basis = NoiseBasis::Gradient;
     const bool fractal_sum = kind == NoiseKind::Fbm || kind == NoiseKind::Turbulence;
-    if (!fractal_sum) clamped.octaves = 0;  // the other kinds sum no octaves
-    term.fractal = FractalOctaves(clamped);
+    if (!fractal_sum) settings.octaves = 0;  // the other kinds sum no octaves
+    term.fractal = FractalOctaves(settings);
     term.jitter = std::clamp(jitter, 0.0f, 0.5f);
     double finest_frequency = 1;
     switch (kind) {
@@ -172,7 +170,7 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
             break;
         case NoiseKind::Fbm:
         case NoiseKind::Turbulence: {
-            const FractalScale scale = fractal_scale(clamped);
+            const FractalScale scale = fractal_scale(term.fractal);
             term.lipschitz = kGradientNoiseLipschitz * scale.lipschitz_factor;
             finest_frequency = scale.finest_frequency;
             term.range = kind == NoiseKind::Fbm ? Interval{-1, 1} : Interval{0, 1};
@@ -187,9 +185,9 @@ NoiseTerm make_noise_term(NoiseKind kind, const FractalSettings& fractal, float 
     if (kind == NoiseKind::Gradient) {
         term.octaves.resize(1);
         for (int k = 0; k < 3; ++k) term.octaves[0].turn[k][k] = 1;
-        term.octaves[0].seed = clamped.seed;
+        term.octaves[0].seed = settings.seed;
     } else if (kind == NoiseKind::Fbm || kind == NoiseKind::Turbulence) {
-        term.octaves = fractal_octaves(clamped);
+        term.octaves = fractal_octaves(term.fractal);
     }
     return term;
 }

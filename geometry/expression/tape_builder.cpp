@@ -98,9 +98,9 @@ int TapeBuilder::emit(const Instruction& given, std::size_t offset) {
 int TapeBuilder::add_noise(const NoiseTerm& term) {
     // The same noise twice is one term, so that its calls are common subexpressions.
     const auto same = [&term](const NoiseTerm& t) {
-        const FractalSettings &a = t.fractal.settings(), &b = term.fractal.settings();
-        return t.kind == term.kind && a.octaves == b.octaves && a.lacunarity == b.lacunarity && a.gain == b.gain &&
-               a.seed == b.seed && t.jitter == term.jitter;
+        const FractalOctaves &a = t.fractal, &b = term.fractal;
+        return t.kind == term.kind && a.count() == b.count() && a.lacunarity() == b.lacunarity() &&
+               a.gain() == b.gain() && a.settings().seed == b.settings().seed && t.jitter == term.jitter;
     };
     for (std::size_t i = 0; i < tape_.noises.size(); ++i)
         if (same(tape_.noises[i])) return static_cast<int>(i);
