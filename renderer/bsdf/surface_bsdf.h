@@ -50,16 +50,18 @@ public:
     }
 
 private:
+    // A comparison per model, not std::visit: libstdc++'s visit calls each model through a table of function
+    // pointers, which kept every model's code out of the path tracer's bounce. Forced inline, so that the caller
+    // holds the models' calls directly and the small models inline there (docs/decisions.md).
     template <class Call, class Result>
-    Result dispatch(Call&& call, Result none) const {
-        return std::visit(
-            [&](const auto& m) -> Result {
-                if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>)
-                    return none;
-                else
-                    return call(m);
-            },
-            model_);
+    [[gnu::always_inline]] Result dispatch(Call&& call, Result none) const {
+        return dispatch_from(call, none, std::make_index_sequence<std::variant_size_v<Models> - 1>());
+    }
+    template <class Call, class Result, std::size_t... I>
+    [[gnu::always_inline]] Result dispatch_from(Call& call, Result none, std::index_sequence<I...>) const {
+        Result result = none;  // the empty model's (index 0)
+        (void)((model_.index() == I + 1 && (result = call(*std::get_if<I + 1>(&model_)), true)) || ...);
+        return result;
     }
 
     Models model_;
