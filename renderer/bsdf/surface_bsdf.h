@@ -57,6 +57,7 @@ private:
     [[gnu::always_inline]] Result dispatch(Call&& call, Result none) const {
         return dispatch_from(call, none, std::make_index_sequence<std::variant_size_v<Models> - 1>());
     }
+    static_assert(std::is_same_v<std::variant_alternative_t<0, Models>, std::monostate>, "index 0 scatters nothing");
     template <class Call, class Result, std::size_t... I>
     [[gnu::always_inline]] Result dispatch_from(Call& call, Result none, std::index_sequence<I...>) const {
         Result result = none;  // the empty model's (index 0)
