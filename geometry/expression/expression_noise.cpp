@@ -52,22 +52,22 @@ FractalScale fractal_scale(const FractalOctaves& fractal) {
     return scale;
 }
 
-// The octaves of fractal_sum (its float frequencies and amplitudes), each octave's affine map read off
-// fractal_octave_domain: the offset is the image of 0 (exact), a column of the turn the image of a large multiple
-// of an axis less the offset (so that the float rounding of the image is a small part of it).
+// The octaves of fractal_sum (its float frequencies and amplitudes), each octave's affine map read off its turn's
+// domain at the octave's frequency: the offset is the image of 0 (exact), a column of the turn the image of a large
+// multiple of an axis less the offset (so that the float rounding of the image is a small part of it).
 std::vector<NoiseOctave> fractal_octaves(const FractalOctaves& fractal) {
     constexpr float kProbe = 4096;
-    const std::uint32_t seed = fractal.settings().seed;
     std::vector<NoiseOctave> octaves;
     float frequency = 1, amplitude = 1, total = 0;
     for (int index = 0; index < fractal.count(); ++index) {
         NoiseOctave octave;
-        const OctaveDomain origin = fractal_octave_domain({0, 0, 0}, frequency, seed, index);
+        const OctaveTurn& turn = fractal.turn(index);
+        const OctaveDomain origin = turn.domain(Vec3f{0, 0, 0} * frequency);
         octave.offset = Vec3d(origin.point);
         for (int k = 0; k < 3; ++k) {
             Vec3f axis{0, 0, 0};
             axis[k] = kProbe;
-            const Vec3d image(fractal_octave_domain(axis, frequency, seed, index).point);
+            const Vec3d image(turn.domain(axis * frequency).point);
             for (int j = 0; j < 3; ++j) octave.turn[j][k] = (image[j] - octave.offset[j]) / kProbe;
         }
         octave.frequency = frequency;
@@ -199,7 +199,8 @@ double noise_value(const NoiseTerm& term, const Vec3d& q) {
         case NoiseKind::Simplex: return simplex_noise(point, term.fractal.settings().seed);
         case NoiseKind::Fbm: return fbm(point, term.fractal, 0);
         case NoiseKind::Turbulence: return turbulence(point, term.fractal, 0);
-        case NoiseKind::Cellular: return cellular(point, term.fractal.settings().seed, term.jitter, CellularOutput::F1, 0);
+        case NoiseKind::Cellular:
+            return cellular(point, term.fractal.settings().seed, term.jitter, CellularOutput::F1, 0);
     }
     return 0;
 }

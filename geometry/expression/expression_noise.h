@@ -15,7 +15,7 @@ namespace isotrace {
 enum class NoiseKind { Gradient, Simplex, Fbm, Turbulence, Cellular };
 
 // One gradient-noise octave of a term: it samples gradient_noise(turn × q + offset, seed) (turn is the octave's
-// rotation times its frequency, read off the textures' own fractal_octave_domain) with weight `weight` in the sum.
+// rotation times its frequency, read off the textures' own octave turns) with weight `weight` in the sum.
 struct NoiseOctave {
     double turn[3][3] = {};
     Vec3d offset;

@@ -100,10 +100,6 @@ OctaveTurn octave_turn(std::uint32_t seed, int octave) {
             bits[7]};
 }
 
-OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_t seed, int octave) {
-    return octave_turn(seed, octave).domain(p * frequency);
-}
-
 FractalOctaves::FractalOctaves(const FractalSettings& settings)
     : settings_(settings),
       count_(clamped_count(settings)),

@@ -23,17 +23,16 @@ struct FractalSettings {
 
 constexpr int kMaxFractalOctaves = 24;
 
-// Where octave `octave` of frequency `frequency` samples its noise for p: p × frequency turned by a rotation and
-// moved by an offset that the seed and octave hash to, and the seed of that octave's noise. The turn keeps the
-// octaves' lattices (and those of different seeds) out of line: otherwise they would share their zeros, and
-// |noise|, which dips at every lattice point, would be correlated across seeds and octaves.
+// Where an octave samples its noise: the point and the seed of that octave's noise.
 struct OctaveDomain {
     Vec3f point;
     std::uint32_t seed;
 };
-OctaveDomain fractal_octave_domain(const Vec3f& p, float frequency, std::uint32_t seed, int octave);
 
-// The turn, offset and noise seed of one octave's domain, which depend on the seed and the octave alone.
+// Octave `octave` of frequency f samples its noise for p at p × f turned by a rotation and moved by an offset that
+// the seed and octave hash to, with a seed of its own. The turn keeps the octaves' lattices (and those of different
+// seeds) out of line: otherwise they would share their zeros, and |noise|, which dips at every lattice point, would
+// be correlated across seeds and octaves. The turn, offset and seed depend on the seed and the octave alone.
 struct OctaveTurn {
     float turn[3][3];
     Vec3f offset;

@@ -58,7 +58,7 @@ TEST(FractalNoise, FootprintZeroIsTheUnfilteredSum) {
         for (const Vec3f& p : random_points(1000, 30)) {
             float sum = 0, total = 0, amplitude = 1, frequency = 1;
             for (int octave = 0; octave < settings.octaves; ++octave) {
-                const OctaveDomain domain = fractal_octave_domain(p, frequency, settings.seed, octave);
+                const OctaveDomain domain = octave_turn(settings.seed, octave).domain(p * frequency);
                 sum += amplitude * basis_noise(basis, domain.point, domain.seed);
                 total += amplitude;
                 amplitude *= settings.gain;
@@ -69,16 +69,16 @@ TEST(FractalNoise, FootprintZeroIsTheUnfilteredSum) {
     }
 }
 
-// The octaves' turns, taken once, are those fractal_octave_domain hashes at every point, bit for bit, for every
-// octave a fractal can have; the settings are clamped as documented.
-TEST(FractalNoise, OctaveTurnsAreTheOctavesDomains) {
+// The octaves' turns, taken once, are those the seed and octave hash to, bit for bit, for every octave a fractal can
+// have; the settings are clamped as documented.
+TEST(FractalNoise, FractalOctavesKeepEveryOctavesTurn) {
     for (const std::uint32_t seed : {0u, 7u, 2147483647u}) {
         const FractalOctaves octaves(FractalSettings{NoiseBasis::Gradient, kMaxFractalOctaves, 1.7f, 0.5f, seed});
         ASSERT_EQ(octaves.count(), kMaxFractalOctaves);
         for (const Vec3f& p : random_points(200, 50)) {
             float frequency = 1;
             for (int octave = 0; octave < octaves.count(); ++octave) {
-                const OctaveDomain hashed = fractal_octave_domain(p, frequency, seed, octave);
+                const OctaveDomain hashed = octave_turn(seed, octave).domain(p * frequency);
                 const OctaveDomain tabled = octaves.turn(octave).domain(p * frequency);
                 ASSERT_EQ(std::memcmp(&hashed.point, &tabled.point, sizeof(Vec3f)), 0) << "octave " << octave;
                 ASSERT_EQ(hashed.seed, tabled.seed);
