@@ -273,7 +273,8 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
     // through which g keeps its sign; before the first stretch, the sign outside when the line enters the box
     // through a face.
     bool known_inside = false, sign_known = enters_box;
-    shell_.visit_cells(o, d, t0, t1, range, bounds_of, [&](double a, double b, const ShellCellBounds& cell) {
+    // One shell cell's stretch [a, b].
+    const auto search_cell = [&](double a, double b, const ShellCellBounds& cell) {
         const auto no_crossing = [&](bool inside) {
             known_inside = inside, sign_known = true;
             return true;
@@ -320,6 +321,21 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
         if (cell_slope.excludes_zero() && (g_a < 0) == (g_b < 0)) return true;  // monotone without a sign change
         return search_crossings<precision>(a, b, g_a, g_b, resolution, false, value, bound, slope, work.search, visit,
                                            value_and_slope);
+    };
+    using Side = SurfaceShell::Side;
+    shell_.visit_runs(o, d, t0, t1, range, bounds_of, [&](const SurfaceShell::Run& run) {
+        // An occlusion query takes a run that leads from one sign to the other as a whole, as it takes a stretch
+        // whose ends differ in sign: no value of g is needed (a ray through another object, as a rule).
+        if constexpr (precision == CrossingPrecision::SignChange) {
+            const Side before = run.before != Side::Unknown ? run.before
+                                : sign_known                 ? (known_inside ? Side::Inside : Side::Outside)
+                                                             : Side::Unknown;
+            if (before != Side::Unknown && run.after != Side::Unknown && before != run.after)
+                return visit(Crossing{0.5 * (run.lo() + run.hi()), run.after == Side::Inside, run.lo(), run.hi()});
+        }
+        for (std::size_t k = 0; k < run.size(); ++k)
+            if (!search_cell(run.start(k), run.end(k), run.bounds(k))) return false;
+        return true;
     });
 }
 

@@ -8,7 +8,8 @@
 //   piece is searched by interval subdivision (crossing_search.h) with the bounds of g and g′ along the ray
 //   (superquadric_along_ray.h);
 // - deformed: only the ray's stretches through the cells of the surface shell (surface_shell.h) are searched, cell
-//   by cell, with the bounds each cell keeps (shell_cell_bounds.h) asked before those along the ray;
+//   by cell, with the bounds each cell keeps (shell_cell_bounds.h) asked before those along the ray; an occlusion
+//   query settles a run of such cells from outside to inside, as the cells without surface beside it tell, at once;
 // - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches find its crossings without
 //   bounds (convex_crossings.h), from where the ray enters and leaves two quadrics around the solid
 //   (Superellipsoid::enclosing_stretch), the search above taking over only near tangent contacts;

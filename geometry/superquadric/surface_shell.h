@@ -10,12 +10,17 @@
 // can hold the surface): a scene of many deformed superquadrics, each seen by a few pixels, does not pay for
 // grids no ray walks. Threads that meet an unknown block at once both find it, with the same answer; the first to
 // publish it (compare-and-swap) wins, the others free theirs. Blocks without surface cells share one empty block.
+//
+// The cells without surface keep g's sign too (one bit each): the walk hands the search a run of shell cells at a
+// time with the sign on either side of it, so that an occlusion query settles a run that leads from outside to inside
+// (a ray through another object) with no value of g at all.
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "geometry/superquadric/shell_cell_bounds.h"
 #include "renderer/math/interval.h"
@@ -67,16 +72,51 @@ private:
     // heap: it reaches a block only for the entry of a surface cell.
     struct Slot {
         std::atomic<const Block*> block{nullptr};
-        std::atomic<std::uint64_t> cells{0};  // stored before `block` is published
+        std::atomic<std::uint64_t> cells{0};   // stored before `block` is published
+        std::atomic<std::uint64_t> inside{0};  // the cells without surface where g < 0; stored before `block` too
     };
     struct FoundBlock {
         const Block* block;
-        std::uint64_t cells;
+        std::uint64_t cells, inside;
+    };
+    struct CellIndex {
+        int i, j, l;
     };
 
 public:
     // The most a shell takes on the heap, once rays have found every block.
     static constexpr std::size_t kMostHeapBytes = std::size_t(kBlocks) * sizeof(Block);
+
+    // g's sign next to a run, where a cell without surface lies there: such a cell's g keeps one sign, which holds
+    // at the run's padded end (inside that cell, or inside the cells without surface that follow it, which share
+    // its sign: neighbours across a face cannot keep opposite signs).
+    enum class Side : std::uint8_t { Unknown, Outside, Inside };
+
+    // A run of shell cells along a line: its cells' stretches, end to end, from lo() to hi(), and g's sign before
+    // and after it.
+    class Run {
+    public:
+        Side before = Side::Unknown, after = Side::Unknown;
+
+        std::size_t size() const { return count_; }
+        double lo() const { return lo_; }
+        double hi() const { return ends_[count_ - 1]; }
+        // Cell k's stretch and what is known of g over it.
+        double start(std::size_t k) const { return k == 0 ? lo_ : ends_[k - 1]; }
+        double end(std::size_t k) const { return ends_[k]; }
+        ShellCellBounds bounds(std::size_t k) const { return entries_[k]->bounds(shell_->centre(cells_[k])); }
+
+    private:
+        friend class SurfaceShell;
+        static constexpr std::size_t kMostCells = 3 * kCellsPerAxis + 1;  // a line crosses at most 3·n cells
+
+        const SurfaceShell* shell_ = nullptr;
+        double lo_ = 0;
+        std::size_t count_ = 0;
+        double ends_[kMostCells];
+        const CellEntry* entries_[kMostCells];
+        CellIndex cells_[kMostCells];
+    };
 
     SurfaceShell() = default;
     explicit SurfaceShell(const IntervalBox& box) : box_(box) {
@@ -91,44 +131,35 @@ public:
         for (int b = 0; b < kBlocks; ++b) {
             const Block* block = other.slots_[b].block.load(std::memory_order_acquire);
             slots_[b].cells.store(other.slots_[b].cells.load(std::memory_order_relaxed), std::memory_order_relaxed);
+            slots_[b].inside.store(other.slots_[b].inside.load(std::memory_order_relaxed), std::memory_order_relaxed);
             slots_[b].block.store(block && block != empty_block() ? new Block(*block) : block, std::memory_order_relaxed);
         }
         return *this;
     }
     ~SurfaceShell() { release(); }
 
-    // Calls visit(a, b, bounds) for the stretches [a, b] of origin + t·direction within [t0, t1] (the part of the
-    // line inside the box) through shell cells, in increasing t, until it returns false (then returns false), with
-    // what is known of g over each cell (ShellCellBounds). `range(box)` contains g over a box inside the grid's;
-    // `cell_bounds(box, centre)` tells g at a cell's centre and bounds its gradient over the cell (enlarged a little).
-    // The stretches through a run of consecutive shell cells meet end to end; each run is widened by 10⁻⁹ of
-    // [t0, t1] at both ends (its first and last cells' stretches) so that the rounding of the cell boundaries cannot
-    // cut a crossing off, and runs that then touch are joined.
+    // Calls visit(run) for the runs of shell cells (Run) along origin + t·direction within [t0, t1] (the part of the
+    // line inside the box), in increasing t, until it returns false (then returns false). `range(box)` contains g
+    // over a box inside the grid's; `cell_bounds(box, centre)` tells g at a cell's centre and bounds its gradient over
+    // the cell (enlarged a little). Each run is widened by 10⁻⁹ of [t0, t1] at both ends so that the rounding of the
+    // cell boundaries cannot cut a crossing off, and runs that then touch are joined (the gap between them goes to
+    // the later run's first cell).
     template <class Range, class CellBounds, class Visit>
-    bool visit_cells(const Vec3d& origin, const Vec3d& direction, double t0, double t1, const Range& range,
-                     const CellBounds& cell_bounds, Visit&& visit) const {
+    bool visit_runs(const Vec3d& origin, const Vec3d& direction, double t0, double t1, const Range& range,
+                    const CellBounds& cell_bounds, Visit&& visit) const {
         const double pad = 1e-9 * (t1 - t0);
-        // The last cell's stretch waits until the next one shows whether the run goes on.
-        bool pending = false;
-        double pending_lo = 0, pending_hi = 0;
-        ShellCellBounds pending_bounds;
-        const auto flush = [&](double end) {
-            pending = false;
-            return visit(pending_lo, end, pending_bounds);
-        };
-        const auto add_cell = [&](double a, double b, const ShellCellBounds& bounds, bool opens_run) {
-            if (opens_run) {
-                a = std::max(t0, a - pad);
-                if (pending) {  // the last run ends here, padded, unless the two touch once padded
-                    const double padded = std::min(t1, pending_hi + pad);
-                    if (a <= padded) a = pending_hi;
-                    if (!flush(a <= padded ? pending_hi : padded)) return false;
-                }
-            } else if (pending && !flush(pending_hi)) {
-                return false;
-            }
-            pending = true, pending_lo = a, pending_hi = b, pending_bounds = bounds;
-            return true;
+        // The run being gathered, handed over once the walk shows where it ends (a gap after it that no later run
+        // can bridge, or the end of the line); g's sign over the cells without surface last walked.
+        Run run;
+        run.shell_ = this;
+        Side gap = Side::Unknown;
+        double gap_from = t0;  // where the last run's cells end, padded
+        const auto hand_over = [&](Side after, double hi) {
+            run.after = after;
+            run.ends_[run.count_ - 1] = hi;
+            const bool more = visit(std::as_const(run));
+            run.count_ = 0;
+            return more;
         };
         // Cell by cell. Per axis in arrays, indexed only by constants once the loops over the three axes are unrolled
         // (the axis that moves is chosen by selects, not by an index), so that they stay in registers: an index
@@ -159,12 +190,35 @@ public:
             const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
             if (const int index = block_of(cell); index != block_index)
                 block_index = index, block = find_block(index, cell, range, cell_bounds);
-            const bool surface = (block.cells >> bit(cell)) & 1;
+            const int at = bit(cell);
+            const bool surface = (block.cells >> at) & 1;
             const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
             // across[axis], the least (whichever axis a tie went to).
             const double leave = std::min({across[0], across[1], across[2], t1});
-            if (surface && !add_cell(enter, std::max(enter, leave), block.block->entries[bit(cell)].bounds(centre(cell)), !in_run))
-                return false;
+            if (surface) {
+                double a = enter;
+                if (!in_run) {  // a run opens: joined to the last one if the two touch once padded
+                    a = std::max(t0, a - pad);
+                    if (run.count_ > 0) {
+                        if (a <= gap_from) {
+                            a = run.ends_[run.count_ - 1];
+                        } else if (!hand_over(gap, gap_from)) {
+                            return false;
+                        }
+                    }
+                    if (run.count_ == 0) run.lo_ = a, run.before = gap;
+                }
+                run.ends_[run.count_] = std::max(enter, leave);
+                run.entries_[run.count_] = &block.block->entries[at];
+                run.cells_[run.count_] = cell;
+                ++run.count_;
+            } else {
+                gap = (block.inside >> at) & 1 ? Side::Inside : Side::Outside;
+                if (in_run) gap_from = std::min(t1, run.ends_[run.count_ - 1] + pad);
+                // Once the gap is longer than both pads no later run can join the last one: it is handed over here,
+                // not when the next run opens, so that a search that ends in it does not walk the gap first.
+                if (run.count_ > 0 && leave - pad > gap_from && !hand_over(gap, gap_from)) return false;
+            }
             in_run = surface;
             bool off_grid = false;
             for (int k = 0; k < 3; ++k) {
@@ -176,13 +230,11 @@ public:
             if (!(leave < t1) || off_grid) break;
             enter = std::max(enter, leave);
         }
-        return !pending || flush(in_run ? t1 : std::min(t1, pending_hi + pad));
+        if (run.count_ == 0) return true;
+        return in_run ? hand_over(Side::Unknown, t1) : hand_over(gap, gap_from);
     }
 
 private:
-    struct CellIndex {
-        int i, j, l;
-    };
     // Shared by every block without surface cells, which need no bounds.
     static const Block* empty_block() {
         static const Block block;
@@ -206,7 +258,7 @@ private:
     FoundBlock find_block(int index, CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
         const Slot& slot = slots_[index];
         if (const Block* known = slot.block.load(std::memory_order_acquire))
-            return {known, slot.cells.load(std::memory_order_relaxed)};
+            return {known, slot.cells.load(std::memory_order_relaxed), slot.inside.load(std::memory_order_relaxed)};
         return make_block(index, c, range, cell_bounds);
     }
     template <class Range, class CellBounds>
@@ -214,20 +266,26 @@ private:
                                             const CellBounds& cell_bounds) const {
         Slot& slot = slots_[index];
         const CellIndex first{c.i / kBlock * kBlock, c.j / kBlock * kBlock, c.l / kBlock * kBlock};
-        const auto can_hold_surface = [&](CellIndex from, int cells) {
+        // g's range over the cells from `from` on, `cells` of them along each axis.
+        const auto range_over = [&](CellIndex from, int cells) {
             const IntervalBox lower = cell(from), upper = cell({from.i + cells - 1, from.j + cells - 1, from.l + cells - 1});
-            const Interval g = range(IntervalBox{{lower.x.lo, upper.x.hi}, {lower.y.lo, upper.y.hi}, {lower.z.lo, upper.z.hi}});
-            return !(g.lo > 0 || g.hi < 0);
+            return range(IntervalBox{{lower.x.lo, upper.x.hi}, {lower.y.lo, upper.y.hi}, {lower.z.lo, upper.z.hi}});
         };
+        const auto can_hold_surface = [](const Interval& g) { return !(g.lo > 0 || g.hi < 0); };
         const Block* found = empty_block();
-        std::uint64_t cells = 0;
-        if (can_hold_surface(first, kBlock)) {
+        std::uint64_t cells = 0, inside = 0;
+        if (const Interval whole = range_over(first, kBlock); !can_hold_surface(whole)) {
+            inside = whole.hi < 0 ? ~std::uint64_t(0) : 0;
+        } else {
             Block* block = new Block;
             for (int i = 0; i < kBlock; ++i)
                 for (int j = 0; j < kBlock; ++j)
                     for (int l = 0; l < kBlock; ++l) {
                         const CellIndex at{first.i + i, first.j + j, first.l + l};
-                        if (!can_hold_surface(at, 1)) continue;
+                        if (const Interval g = range_over(at, 1); !can_hold_surface(g)) {
+                            inside |= std::uint64_t(g.hi < 0) << bit(at);
+                            continue;
+                        }
                         cells |= std::uint64_t(1) << bit(at);
                         IntervalBox around = cell(at);  // enlarged by far more than a run's padding
                         for (int k = 0; k < 3; ++k) around[k] = {around[k].lo - 1e-6 * cell_size_[k], around[k].hi + 1e-6 * cell_size_[k]};
@@ -236,12 +294,13 @@ private:
             if (cells != 0) found = block;
             else delete block;
         }
-        // A thread that loses the race stores the same word.
+        // A thread that loses the race stores the same words.
         slot.cells.store(cells, std::memory_order_relaxed);
+        slot.inside.store(inside, std::memory_order_relaxed);
         const Block* expected = nullptr;
-        if (slot.block.compare_exchange_strong(expected, found, std::memory_order_acq_rel)) return {found, cells};
+        if (slot.block.compare_exchange_strong(expected, found, std::memory_order_acq_rel)) return {found, cells, inside};
         if (found != empty_block()) delete found;
-        return {expected, cells};
+        return {expected, cells, inside};
     }
 
     IntervalBox cell(CellIndex c) const {

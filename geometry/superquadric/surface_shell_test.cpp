@@ -1,8 +1,9 @@
 // The shell grid against a ball of radius 0.5 in the box [−1, 1]³, whose field range over a box is known exactly
 // (distance to the nearest and farthest point, minus the radius): every crossing of a random line lies in a run,
 // the runs are ordered, disjoint and inside the line's stretch, a run's cells meet end to end and their bounds hold
-// the field and its slope along the line, lines through the box's empty corners have none, a visit that returns
-// false stops the walk, and a copy keeps what was found.
+// the field and its slope along the line, the sign a run is told for either side is the field's there, lines
+// through the box's empty corners have none, a visit that returns false stops the walk, and a copy keeps what was
+// found.
 #include "geometry/superquadric/surface_shell.h"
 
 #include <gtest/gtest.h>
@@ -43,25 +44,28 @@ ShellCellBounds ball_bounds(const IntervalBox& box, const Vec3d& centre) {
     return bounds;
 }
 
-struct ShellRun {
+struct RunStretch {
     double lo, hi;
 };
 
 // The runs of a line: its cells' stretches joined where they meet.
-std::vector<ShellRun> runs_of(const SurfaceShell& shell, const Vec3d& o, const Vec3d& d, int* ranges = nullptr) {
-    std::vector<ShellRun> runs;
+std::vector<RunStretch> runs_of(const SurfaceShell& shell, const Vec3d& o, const Vec3d& d, int* ranges = nullptr) {
+    std::vector<RunStretch> runs;
     const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
     if (!clip) return runs;
     int calls = 0;
-    shell.visit_cells(o, d, clip->t_enter, clip->t_exit, [&](const IntervalBox& b) { ++calls; return ball_range(b); },
-                      ball_bounds, [&](double a, double b, const ShellCellBounds&) {
-                          EXPECT_GE(a, clip->t_enter);
-                          EXPECT_LE(b, clip->t_exit);
-                          EXPECT_LE(a, b);
-                          if (!runs.empty() && runs.back().hi == a) runs.back().hi = b;
-                          else runs.push_back({a, b});
-                          return true;
-                      });
+    shell.visit_runs(o, d, clip->t_enter, clip->t_exit, [&](const IntervalBox& b) { ++calls; return ball_range(b); },
+                     ball_bounds, [&](const SurfaceShell::Run& run) {
+                         EXPECT_GE(run.lo(), clip->t_enter);
+                         EXPECT_LE(run.hi(), clip->t_exit);
+                         EXPECT_GT(run.size(), 0u);
+                         for (std::size_t k = 0; k < run.size(); ++k) {
+                             EXPECT_LE(run.start(k), run.end(k));
+                             if (k > 0) EXPECT_EQ(run.start(k), run.end(k - 1));
+                         }
+                         runs.push_back({run.lo(), run.hi()});
+                         return true;
+                     });
     if (ranges) *ranges = calls;
     return runs;
 }
@@ -74,14 +78,14 @@ TEST(SurfaceShell, EveryCrossingLiesInARun) {
     for (int i = 0; i < 2000; ++i) {
         const Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 3.0;
         const Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.6 - o;
-        const std::vector<ShellRun> runs = runs_of(shell, o, d);
+        const std::vector<RunStretch> runs = runs_of(shell, o, d);
         for (std::size_t k = 1; k < runs.size(); ++k) EXPECT_GT(runs[k].lo, runs[k - 1].hi);
         const auto roots = intersect_sphere(o, d, {0, 0, 0}, kRadius);
         if (!roots) continue;
         for (const double t : {roots->t0, roots->t1}) {
             ++crossings;
             bool inside = false;
-            for (const ShellRun& r : runs) inside = inside || (t >= r.lo && t <= r.hi);
+            for (const RunStretch& r : runs) inside = inside || (t >= r.lo && t <= r.hi);
             EXPECT_TRUE(inside) << "ray " << i << " crossing at " << t;
         }
     }
@@ -91,8 +95,8 @@ TEST(SurfaceShell, EveryCrossingLiesInARun) {
 // The runs of a cell-by-cell walk that looks at every cell (the shell steps over blocks without surface cells at
 // once): the same runs to the bit, also for lines through grid vertices and along grid planes, where the walk's
 // ties between axes decide the order of the cells.
-std::vector<ShellRun> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
-    std::vector<ShellRun> runs;
+std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
+    std::vector<RunStretch> runs;
     const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
     if (!clip) return runs;
     const double t0 = clip->t_enter, t1 = clip->t_exit, pad = 1e-9 * (t1 - t0);
@@ -148,7 +152,7 @@ TEST(SurfaceShell, RunsAreThoseOfTheCellByCellWalkToTheBit) {
         } else if (i % 3 == 2) {  // along a grid plane
             o.z = grid(), d.z = 0;
         }
-        const std::vector<ShellRun> expected = runs_cell_by_cell(o, d), actual = runs_of(shell, o, d);
+        const std::vector<RunStretch> expected = runs_cell_by_cell(o, d), actual = runs_of(shell, o, d);
         ASSERT_EQ(actual.size(), expected.size()) << "line " << i;
         for (std::size_t k = 0; k < actual.size(); ++k) {
             EXPECT_EQ(actual[k].lo, expected[k].lo) << "line " << i;
@@ -167,20 +171,58 @@ TEST(SurfaceShell, EachCellsBoundsHoldTheFieldAndItsSlopeAlongTheLine) {
         const Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.6 - o;
         const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
         if (!clip) continue;
-        shell.visit_cells(o, d, clip->t_enter, clip->t_exit, ball_range, ball_bounds,
-                          [&](double a, double b, const ShellCellBounds& cell) {
-                              if (!cell.known) return true;
-                              ++known;
-                              const Interval range = cell.range(o + d * a, o + d * b), slope = cell.slope(d);
-                              for (int k = 0; k <= 8; ++k) {
-                                  const Vec3d p = o + d * (a + (b - a) * (k < 8 ? fraction(random) : 1.0));
-                                  EXPECT_TRUE(range.contains(length(p) - kRadius)) << "line " << i;
-                                  EXPECT_TRUE(slope.contains(dot(p, d) / length(p))) << "line " << i;
-                              }
-                              return true;
-                          });
+        shell.visit_runs(o, d, clip->t_enter, clip->t_exit, ball_range, ball_bounds, [&](const SurfaceShell::Run& run) {
+            for (std::size_t c = 0; c < run.size(); ++c) {
+                const ShellCellBounds cell = run.bounds(c);
+                if (!cell.known) continue;
+                ++known;
+                const double a = run.start(c), b = run.end(c);
+                const Interval range = cell.range(o + d * a, o + d * b), slope = cell.slope(d);
+                for (int k = 0; k <= 8; ++k) {
+                    const Vec3d p = o + d * (a + (b - a) * (k < 8 ? fraction(random) : 1.0));
+                    EXPECT_TRUE(range.contains(length(p) - kRadius)) << "line " << i;
+                    EXPECT_TRUE(slope.contains(dot(p, d) / length(p))) << "line " << i;
+                }
+            }
+            return true;
+        });
     }
     EXPECT_GT(known, 1000);
+}
+
+// Lines from outside the box, from random points inside it and along grid planes: where a run is told the field's
+// sign beside it, the field has that sign at the run's padded end (strictly), and runs from outside to inside are
+// common (a line through the ball).
+TEST(SurfaceShell, ARunsSidesAreTheFieldsSignsBesideIt) {
+    const SurfaceShell shell(kBox);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> vertex(0, SurfaceShell::kCellsPerAxis);
+    int told = 0, into = 0;
+    for (int i = 0; i < 3000; ++i) {
+        Vec3d o = i % 3 == 0 ? normalize(Vec3d{unit(random), unit(random), unit(random)}) * 3.0
+                             : Vec3d{unit(random), unit(random), unit(random)} * 0.99;
+        Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.8 - o * (i % 3 == 0 ? 1.0 : 0.0);
+        if (i % 3 == 2) o.z = -1 + vertex(random) * (2.0 / SurfaceShell::kCellsPerAxis), d.z = 0;
+        if (length(d) == 0) continue;
+        const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
+        if (!clip) continue;
+        shell.visit_runs(o, d, clip->t_enter, clip->t_exit, ball_range, ball_bounds, [&](const SurfaceShell::Run& run) {
+            const auto check = [&](SurfaceShell::Side side, double t) {
+                if (side == SurfaceShell::Side::Unknown) return;
+                ++told;
+                const double g = length(o + d * t) - kRadius;
+                EXPECT_EQ(side == SurfaceShell::Side::Inside, g < 0) << "line " << i << " at " << t;
+                EXPECT_NE(g, 0.0) << "line " << i;
+            };
+            check(run.before, run.lo());
+            check(run.after, run.hi());
+            into += run.before == SurfaceShell::Side::Outside && run.after == SurfaceShell::Side::Inside;
+            return true;
+        });
+    }
+    EXPECT_GT(told, 2000);
+    EXPECT_GT(into, 300);
 }
 
 TEST(SurfaceShell, LinesThroughEmptyCornersHaveNoRuns) {
@@ -193,7 +235,7 @@ TEST(SurfaceShell, AVisitThatReturnsFalseStopsTheWalk) {
     const SurfaceShell shell(kBox);
     int visits = 0;
     const bool finished =
-        shell.visit_cells({-2, 0, 0}, {1, 0, 0}, 1, 3, ball_range, ball_bounds, [&](double, double, const ShellCellBounds&) {
+        shell.visit_runs({-2, 0, 0}, {1, 0, 0}, 1, 3, ball_range, ball_bounds, [&](const SurfaceShell::Run&) {
             ++visits;
             return false;
         });
