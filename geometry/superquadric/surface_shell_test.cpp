@@ -48,7 +48,7 @@ struct RunStretch {
     double lo, hi;
 };
 
-// The runs of a line: its cells' stretches joined where they meet.
+// The runs of a line as the walk hands them over, each made of cells whose stretches meet end to end.
 std::vector<RunStretch> runs_of(const SurfaceShell& shell, const Vec3d& o, const Vec3d& d, int* ranges = nullptr) {
     std::vector<RunStretch> runs;
     const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
@@ -92,9 +92,8 @@ TEST(SurfaceShell, EveryCrossingLiesInARun) {
     EXPECT_GT(crossings, 1000);
 }
 
-// The runs of a cell-by-cell walk that looks at every cell (the shell steps over blocks without surface cells at
-// once): the same runs to the bit, also for lines through grid vertices and along grid planes, where the walk's
-// ties between axes decide the order of the cells.
+// The runs of a plain cell-by-cell walk that asks every cell's range itself: the same runs to the bit, also for lines
+// through grid vertices and along grid planes, where the walk's ties between axes decide the order of the cells.
 std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
     std::vector<RunStretch> runs;
     const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
