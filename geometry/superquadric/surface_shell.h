@@ -171,18 +171,20 @@ public:
         int cell_of[3];
         for (int k = 0; k < 3; ++k)
             cell_of[k] = std::clamp(int(std::floor((first[k] - lower[k]) / cell_size_[k])), 0, kCellsPerAxis - 1);
-        // Where the line leaves the current cell across axis k's next plane. A product with the reciprocal: a division
-        // would stand on the walk's chain of dependent steps.
-        const double inverse[3] = {1 / along[0], 1 / along[1], 1 / along[2]};
-        const auto next_plane = [&](int k) {
+        // Where the line leaves the current cell across axis k's next plane: the first plane from its position, each
+        // later one a cell's width in t further (`width`), so that the walk's chain of dependent steps holds one
+        // addition per step, not a conversion and two products. The sums drift by a few ulps over a line, far less
+        // than a run's padding.
+        double across[3], width[3];
+        for (int k = 0; k < 3; ++k) {
+            const double inverse = 1 / along[k];
             const int plane = cell_of[k] + (along[k] > 0 ? 1 : 0);
-            const double t = (lower[k] + plane * cell_size_[k] - from[k]) * inverse[k];
-            return along[k] == 0 ? std::numeric_limits<double>::infinity() : t;
-        };
+            across[k] = along[k] == 0 ? std::numeric_limits<double>::infinity()
+                                      : (lower[k] + plane * cell_size_[k] - from[k]) * inverse;
+            width[k] = cell_size_[k] * std::abs(inverse);
+        }
         double enter = t0;
         bool in_run = false;
-        // Only the axis whose plane was crossed moves on: the others keep their next plane.
-        double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
         // The surface bits and cell bounds of the block the walk is in, looked up again only when it enters another.
         int block_index = -1;
         FoundBlock block{};
@@ -225,7 +227,7 @@ public:
                 const bool moves = k == axis;
                 cell_of[k] += moves ? (along[k] > 0 ? 1 : -1) : 0;
                 off_grid |= unsigned(cell_of[k]) >= unsigned(kCellsPerAxis);
-                across[k] = moves ? next_plane(k) : across[k];
+                across[k] = moves ? across[k] + width[k] : across[k];  // the others keep their next plane
             }
             if (!(leave < t1) || off_grid) break;
             enter = std::max(enter, leave);

@@ -108,10 +108,11 @@ std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
     const Vec3d start = o + d * t0;
     int cell[3];
     for (int k = 0; k < 3; ++k) cell[k] = std::clamp(int(std::floor((start[k] + 1) / size)), 0, n - 1);
-    const auto next_plane = [&](int k) {
-        if (d[k] == 0) return std::numeric_limits<double>::infinity();
-        return (-1 + (cell[k] + (d[k] > 0 ? 1 : 0)) * size - o[k]) * (1 / d[k]);  // the walk's formula
-    };
+    // The walk's formulas: the first plane from its position, the later ones a cell's width in t further.
+    double across[3];
+    for (int k = 0; k < 3; ++k)
+        across[k] = d[k] == 0 ? std::numeric_limits<double>::infinity()
+                              : (-1 + (cell[k] + (d[k] > 0 ? 1 : 0)) * size - o[k]) * (1 / d[k]);
     double enter = t0, run_start = 0;
     bool in_run = false;
     const auto add = [&](double a, double b) {
@@ -120,7 +121,6 @@ std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
         else runs.push_back({a, b});
     };
     while (true) {
-        const double across[3] = {next_plane(0), next_plane(1), next_plane(2)};
         const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
         const Interval g = cell_range(cell[0], cell[1], cell[2]);
         const bool surface = !(g.lo > 0 || g.hi < 0);
@@ -128,6 +128,7 @@ std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
         if (!surface && in_run) in_run = false, add(run_start, enter);
         const double leave = std::min(across[axis], t1);
         cell[axis] += d[axis] > 0 ? 1 : -1;
+        across[axis] += size * std::abs(1 / d[axis]);
         if (!(leave < t1) || cell[axis] < 0 || cell[axis] >= n) break;
         enter = std::max(enter, leave);
     }
