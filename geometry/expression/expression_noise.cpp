@@ -62,7 +62,7 @@ std::vector<NoiseOctave> fractal_octaves(const FractalOctaves& fractal) {
     for (int index = 0; index < fractal.count(); ++index) {
         NoiseOctave octave;
         const OctaveTurn& turn = fractal.turn(index);
-        const OctaveDomain origin = turn.domain(Vec3f{0, 0, 0} * frequency);
+        const OctaveDomain origin = turn.domain(Vec3f{0, 0, 0});
         octave.offset = Vec3d(origin.point);
         for (int k = 0; k < 3; ++k) {
             Vec3f axis{0, 0, 0};
