@@ -34,6 +34,8 @@ public:
     // chain's stage box, where k·s < 1).
     IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
     std::string problem(const IntervalBox& input) const;
+    // Bending the z-axis into an arc moves the axis a solid of revolution turns about.
+    bool keeps_solids_of_revolution() const { return false; }
 
 private:
     struct FrameBox {

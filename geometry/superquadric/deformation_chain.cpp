@@ -25,6 +25,8 @@ void DeformationChain::append(const Deformation& stage) {
     const std::string problem = std::visit([&](const auto& s) { return s.problem(boxes_.back()); }, stage);
     if (!problem.empty()) throw std::invalid_argument(problem);
     stages_.push_back(stage);
+    keeps_solids_of_revolution_ =
+        keeps_solids_of_revolution_ && std::visit([](const auto& s) { return s.keeps_solids_of_revolution(); }, stage);
     compute_stage_boxes();
 }
 

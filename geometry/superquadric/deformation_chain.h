@@ -33,6 +33,9 @@ public:
     void append(const Deformation& stage);
 
     bool empty() const { return stages_.empty(); }
+    // Whether every stage maps each solid of revolution about z onto itself (twists only): then such a solid that
+    // holds the undeformed object, or lies within it, does the same for the deformed one.
+    bool keeps_solids_of_revolution() const { return keeps_solids_of_revolution_; }
     std::size_t heap_bytes() const {
         return stages_.capacity() * sizeof(Deformation) + boxes_.capacity() * sizeof(IntervalBox);
     }
@@ -92,6 +95,7 @@ private:
     Superellipsoid shape_;
     std::vector<Deformation> stages_;
     std::vector<IntervalBox> boxes_;  // boxes_[k] bounds the object after k stages, widened slightly
+    bool keeps_solids_of_revolution_ = true;
 };
 
 }  // namespace isotrace

@@ -68,11 +68,19 @@ Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double ea
       log_radii_(std::log(radii.x), std::log(radii.y), std::log(radii.z)) {
     // h = ‖(u, v)‖_p2 ≥ c2·‖(u, v)‖₂ and G = ‖(h, w)‖_p1 ≥ max(h, c1·‖(h, w)‖₂): G ≤ 1 inside both quadrics.
     const double c1 = euclidean_share(p1_.p), c2 = euclidean_share(p2_.p);
-    cylinder_scale_ = {c2 / radii.x, c2 / radii.y, 0};
-    ellipsoid_scale_ = {c1 * c2 / radii.x, c1 * c2 / radii.y, c1 / radii.z};
     // And G ≤ C1·‖(C2·‖(u, v)‖₂, w)‖₂ the same way.
     const double m1 = euclidean_multiple(p1_.p), m2 = euclidean_multiple(p2_.p);
-    inscribed_scale_ = {m1 * m2 / radii.x, m1 * m2 / radii.y, m1 / radii.z};
+    const auto scales_of = [&](double across_x, double across_y) {
+        return QuadricScales{{c2 / across_x, c2 / across_y, 0},
+                             {c1 * c2 / across_x, c1 * c2 / across_y, c1 / radii.z},
+                             {m1 * m2 / across_x, m1 * m2 / across_y, m1 / radii.z}};
+    };
+    along_radii_ = scales_of(radii.x, radii.y);
+    // Round: (x² + y²)/max(a1, a2)² ≤ u² + v² ≤ (x² + y²)/min(a1, a2)², so the outer quadrics widen to the larger
+    // radius and the inner one narrows to the smaller.
+    const QuadricScales wide = scales_of(std::max(radii.x, radii.y), std::max(radii.x, radii.y)),
+                        narrow = scales_of(std::min(radii.x, radii.y), std::min(radii.x, radii.y));
+    round_about_z_ = {wide.cylinder, wide.ellipsoid, narrow.inscribed};
 }
 
 double Superellipsoid::gauge(const Vec3d& p) const {
@@ -123,20 +131,21 @@ std::optional<Interval> within_quadric(const Vec3d& k, const Vec3d& start, const
 // Within the box the squares are a few units, rounded to 10⁻¹⁵; the gauge is within 2⁻⁴⁶ of itself.
 constexpr double kQuadricMargin = 1e-8;
 
-std::optional<Interval> Superellipsoid::enclosing_stretch(const Vec3d& start, const Vec3d& direction,
-                                                         double length) const {
+std::optional<Interval> Superellipsoid::enclosing_stretch(const Vec3d& start, const Vec3d& direction, double length,
+                                                         QuadricForm form) const {
     constexpr double kBound = 1 + kQuadricMargin;
-    const std::optional<Interval> cylinder = within_quadric(cylinder_scale_, start, direction, length, kBound);
+    const QuadricScales& k = scales(form);
+    const std::optional<Interval> cylinder = within_quadric(k.cylinder, start, direction, length, kBound);
     if (!cylinder) return std::nullopt;
-    const std::optional<Interval> ellipsoid = within_quadric(ellipsoid_scale_, start, direction, length, kBound);
+    const std::optional<Interval> ellipsoid = within_quadric(k.ellipsoid, start, direction, length, kBound);
     if (!ellipsoid) return std::nullopt;
     const Interval both{std::max(cylinder->lo, ellipsoid->lo), std::min(cylinder->hi, ellipsoid->hi)};
     return both.lo <= both.hi ? std::optional<Interval>(both) : std::nullopt;
 }
 
-std::optional<Interval> Superellipsoid::inscribed_stretch(const Vec3d& start, const Vec3d& direction,
-                                                         double length) const {
-    return within_quadric(inscribed_scale_, start, direction, length, 1 - kQuadricMargin);
+std::optional<Interval> Superellipsoid::inscribed_stretch(const Vec3d& start, const Vec3d& direction, double length,
+                                                         QuadricForm form) const {
+    return within_quadric(scales(form).inscribed, start, direction, length, 1 - kQuadricMargin);
 }
 
 // h = ‖(u, v)‖_p2 is convex along a piece for p2 ≥ 1 and concave for p2 ≤ 1; R(w) = (1 − w^p1)^(1/p1), the edge of

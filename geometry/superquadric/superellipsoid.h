@@ -52,14 +52,20 @@ public:
     ValueAndDerivative gauge_along(const Vec3d& p, const Vec3d& direction) const {
         return gauge_along(p, rates_along(direction));
     }
+    // Which quadrics: those along the radii (the tightest), or their round forms about z (the circle through the
+    // larger of a1 and a2 around, the smaller within), which every turn about z maps onto themselves, so that they
+    // hold a twisted solid as well.
+    enum class QuadricForm { AlongRadii, RoundAboutZ };
     // The part [lo, hi] of the segment start + τ·direction, τ ∈ [0, length], inside the elliptic cylinder around z
     // and the ellipsoid that hold the solid G ≤ 1, enlarged by a margin far above the gauge's rounding (so that the
     // gauge exceeds 1 where the part ends before `length` or begins after 0); nothing where the segment misses them.
     // For segments within the bounding box, where both quadrics are a few units across.
-    std::optional<Interval> enclosing_stretch(const Vec3d& start, const Vec3d& direction, double length) const;
+    std::optional<Interval> enclosing_stretch(const Vec3d& start, const Vec3d& direction, double length,
+                                              QuadricForm form = QuadricForm::AlongRadii) const;
     // The part of the same segment inside an ellipsoid within the solid, shrunk by the same margin (so that the
     // gauge is below 1 throughout it); nothing where the segment misses it.
-    std::optional<Interval> inscribed_stretch(const Vec3d& start, const Vec3d& direction, double length) const;
+    std::optional<Interval> inscribed_stretch(const Vec3d& start, const Vec3d& direction, double length,
+                                              QuadricForm form = QuadricForm::AlongRadii) const;
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south_ <= 2 && east_west_ <= 2; }
     // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave
@@ -117,9 +123,15 @@ private:
     double north_south_, east_west_;
     NormExponent p1_, p2_;  // of the outer norm (2/ε1) and the inner, horizontal one (2/ε2)
     Vec3d log_radii_;       // the normal's logarithms of the radii, taken once
-    // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = cylinder_scale_ (its z component 0) and for k = ellipsoid_scale_,
-    // and holds the points where it is below 1 for k = inscribed_scale_.
-    Vec3d cylinder_scale_, ellipsoid_scale_, inscribed_scale_;
+    // The solid lies where Σ (kᵢ·xᵢ)² ≤ 1 for k = `cylinder` (its z component 0) and for k = `ellipsoid`, and holds
+    // the points where it is below 1 for k = `inscribed`.
+    struct QuadricScales {
+        Vec3d cylinder, ellipsoid, inscribed;
+    };
+    QuadricScales along_radii_, round_about_z_;
+    const QuadricScales& scales(QuadricForm form) const {
+        return form == QuadricForm::AlongRadii ? along_radii_ : round_about_z_;
+    }
 };
 
 }  // namespace isotrace

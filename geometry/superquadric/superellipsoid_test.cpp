@@ -362,6 +362,47 @@ TEST(SuperquadricSuperellipsoid, TheInscribedStretchLiesInsideTheSolid) {
     EXPECT_NEAR(chord->hi, 1.8, 1e-7);
 }
 
+// The round forms hold the solid turned about z by any angle (a twist turns each height by its own), and their
+// inscribed ellipsoid lies within it at every turn.
+TEST(SuperquadricSuperellipsoid, TheRoundQuadricsHoldTheSolidTurnedAboutZ) {
+    using QuadricForm = Superellipsoid::QuadricForm;
+    std::mt19937 random(13);
+    std::uniform_real_distribution<double> angle(-4, 4);
+    const auto turned = [](const Vec3d& p, double a) {
+        return Vec3d{p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a), p.z};
+    };
+    int inside = 0, within = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const auto [s, start, direction, length] = random_segment(random);
+        // The segment in the turned frame, which reaches beyond the box's corners.
+        const Vec3d wide_start = start * 1.4;
+        const std::optional<Interval> around = s.enclosing_stretch(wide_start, direction, length, QuadricForm::RoundAboutZ);
+        const std::optional<Interval> inner = s.inscribed_stretch(wide_start, direction, length, QuadricForm::RoundAboutZ);
+        for (int k = 0; k <= 200; ++k) {
+            const double t = k == 200 ? length : length * k / 200;
+            const Vec3d q = wide_start + direction * t;
+            const double a = angle(random);
+            if (s.gauge(turned(q, a)) <= 1) {
+                ++inside;
+                ASSERT_TRUE(around) << i;
+                EXPECT_TRUE(around->contains(t)) << i << " t " << t;
+            }
+            if (inner && inner->contains(t)) {
+                ++within;
+                EXPECT_LT(s.gauge(turned(q, a)), 1 - 1e-12) << i << " t " << t;
+            }
+        }
+    }
+    EXPECT_GT(inside, 3000);
+    EXPECT_GT(within, 3000);
+    // Radii 1 and 2 across z: the round cylinder has the larger radius, the inscribed sphere the smaller.
+    const Superellipsoid oval{{1, 2, 1}, 1, 1};
+    EXPECT_TRUE(oval.enclosing_stretch({-3, 1.9, 0}, {1, 0, 0}, 6, QuadricForm::RoundAboutZ));
+    EXPECT_FALSE(oval.enclosing_stretch({-3, 2.1, 0}, {1, 0, 0}, 6, QuadricForm::RoundAboutZ));
+    EXPECT_TRUE(oval.inscribed_stretch({-3, 0.9, 0}, {1, 0, 0}, 6, QuadricForm::RoundAboutZ));
+    EXPECT_FALSE(oval.inscribed_stretch({-3, 1.1, 0}, {1, 0, 0}, 6, QuadricForm::RoundAboutZ));
+}
+
 TEST(SuperquadricSuperellipsoid, TheEnclosingStretchIsTheChordOfASphereAndOfARoundCylinder) {
     const Superellipsoid sphere{{1, 1, 1}, 1, 1}, cylinder{{1, 1, 1}, Superellipsoid::kMinExponent, 1};
     for (const Superellipsoid* s : {&sphere, &cylinder}) {

@@ -148,19 +148,27 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // Two quadrics hold an undeformed solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is
     // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
     // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
-    // coordinate planes, and the pieces' own tests already pass over most of the box.
+    // coordinate planes, and the pieces' own tests already pass over most of the box. Their round forms hold a
+    // twisted solid too, and settle its rays that pass beside them before the shell's walk, whose search is
+    // otherwise left as it is.
     double lo = t0, hi = t1;
-    if (deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) {
-        const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0);
+    const bool turned = !deformation_.empty() && deformation_.keeps_solids_of_revolution();
+    if ((deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) || turned) {
+        using QuadricForm = Superellipsoid::QuadricForm;
+        const QuadricForm form = turned ? QuadricForm::RoundAboutZ : QuadricForm::AlongRadii;
+        const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0, form);
         if (!around) return;
         if (around->lo > 0) lo = t0 + around->lo;
         if (around->hi < t1 - t0) hi = t0 + around->hi;
-        // An occlusion query: a ray that is outside at lo (beyond the quadrics' margin, or on the widened box's face,
-        // where the gauge is at least the largest |xᵢ|/aᵢ) and then reaches the inscribed ellipsoid (g < 0) crosses
-        // the surface in between, and nowhere before.
+        // An occlusion query: a ray that is outside at lo (beyond the quadrics' margin, or on the box's face: the
+        // widened one of an undeformed shape, where the gauge is at least the largest |xᵢ|/aᵢ, or the deformed box,
+        // which holds the solid strictly within) and then reaches the inscribed ellipsoid (g < 0) crosses the surface
+        // in between, and nowhere before.
         if constexpr (precision == CrossingPrecision::SignChange) {
-            if (lo > t0 || shape_.box_gauge(o + d * t0) > 1 + 1e-12)
-                if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo);
+            const bool outside_at_start =
+                turned ? clip->enter_axis >= 0 : shape_.box_gauge(o + d * t0) > 1 + 1e-12;
+            if (lo > t0 || outside_at_start)
+                if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo, form);
                     inside && inside->lo > 0) {
                     const double reached = lo + inside->lo;
                     visit(Crossing{0.5 * (lo + reached), true, lo, reached});

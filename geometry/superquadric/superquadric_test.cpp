@@ -315,6 +315,28 @@ TEST(SuperquadricIntersection, StretchesOutsideTheGaugesUnitBallAreNotSearched) 
     }
 }
 
+// A twist turns every cross-section about z, so the round quadrics around the undeformed solid hold the twisted one:
+// a ray that passes beside them, close to the surface through the box, is settled before the shell's walk, without
+// a bound or a point value; one just inside them is searched.
+TEST(SuperquadricIntersection, ARayBesideATwistedSolidsRoundQuadricsIsNotSearched) {
+    for (const auto& [e1, e2] : {std::pair{1.0, 1.0}, {0.3, 1.0}, {2.5, 2.5}, {0.3, 0.3}}) {
+        const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, e1, e2, {Twist(3.14159 / 0.8, 0.4)});
+        // The round cylinder's radius: 0.4 for round and star-shaped cross-sections, more for squarish ones.
+        const double radius = 0.4 * std::max(1.0, std::exp2((1 - e2) / 2));
+        // Diagonally through the box, past its corner edge along z.
+        const Vec3d across = normalize(Vec3d{1, -1, 0}), out = normalize(Vec3d{1, 1, 0});
+        SuperquadricWork work;
+        const Vec3d beside = out * (radius * 1.001) - across * 3.0 + Vec3d{0, 0, 0.05};
+        EXPECT_FALSE(s.first_crossing(beside, across, 0, 10, work)) << e1 << " " << e2;
+        EXPECT_FALSE(s.blocks(beside, across, 0, 10, work)) << e1 << " " << e2;
+        EXPECT_EQ(work.search.interval_bounds, 0u) << e1 << " " << e2;
+        EXPECT_EQ(work.search.evaluations, 0u) << e1 << " " << e2;
+        const Vec3d within = out * (radius * 0.5) - across * 3.0 + Vec3d{0, 0, 0.05};
+        s.first_crossing(within, across, 0, 10, work);
+        EXPECT_GT(work.search.interval_bounds + work.search.evaluations, 0u) << e1 << " " << e2;
+    }
+}
+
 // Occlusion settled by an unrefined bracket gives first_crossing's answer on every ray, ranges cut short included,
 // for less work.
 TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {

@@ -27,6 +27,8 @@ public:
     IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
     // Why the taper cannot be applied to points of `input` (empty when it can).
     std::string problem(const IntervalBox& input) const;
+    // Scaling the cross-sections by height changes a solid of revolution's profile.
+    bool keeps_solids_of_revolution() const { return false; }
 
     double x_rate() const { return x_rate_; }
     double y_rate() const { return y_rate_; }

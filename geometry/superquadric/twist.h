@@ -34,6 +34,8 @@ public:
     IntervalBox inverse_tangent(const IntervalBox& preimage, const IntervalBox& tangent) const;
     // A twist is a rotation per height: every twist is valid.
     std::string problem(const IntervalBox&) const { return {}; }
+    // Turning about z maps every solid of revolution about z onto itself.
+    bool keeps_solids_of_revolution() const { return true; }
 
     double rate() const { return rate_; }
 
