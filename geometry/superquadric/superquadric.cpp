@@ -149,8 +149,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
     // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
     // coordinate planes, and the pieces' own tests already pass over most of the box. Their round forms hold a
-    // twisted solid too, and settle its rays that pass beside them before the shell's walk, whose search is
-    // otherwise left as it is.
+    // twisted solid too: its rays that pass beside them are settled, and the shell is walked only inside them.
     double lo = t0, hi = t1;
     const bool turned = !deformation_.empty() && deformation_.keeps_solids_of_revolution();
     if ((deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) || turned) {
@@ -214,7 +213,9 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
     if (!deformation_.empty()) {
-        search_shell<precision>(ray, t0, t1, clip->enter_axis >= 0, resolution, work, visit);
+        // Only the part of the line inside a twisted solid's round quadrics is walked (the whole part inside the box
+        // for other chains): every crossing lies there, and the line is outside where it enters them within the box.
+        search_shell<precision>(ray, lo, hi, clip->enter_axis >= 0 || lo > t0, resolution, work, visit);
         return;
     }
     if (convex && visit_convex_crossings(lo, hi, value_and_slope, first_only, work.search, visit)) return;
