@@ -9,7 +9,10 @@
 // the point about the centre, clamped to the region's angles, gives θ; projecting onto the rotated axes gives
 // R − s and z − ẑ. It is a true inverse over the object when k·s < 1 everywhere on it (no point folds through
 // the centre) and the region's total angle is at most 180° (the angle is read within ±180° of the middle one).
+#include <optional>
 #include <string>
+
+#include "geometry/superquadric/cone_about_z.h"
 
 #include "renderer/math/interval.h"
 #include "geometry/superquadric/jacobian.h"
@@ -36,6 +39,8 @@ public:
     std::string problem(const IntervalBox& input) const;
     // Bending the z-axis into an arc moves the axis a solid of revolution turns about.
     bool keeps_solids_of_revolution() const { return false; }
+    // Nor does a cone about z hold the bent object.
+    std::optional<ConeAboutZ> carry(const ConeAboutZ&) const { return std::nullopt; }
 
 private:
     struct FrameBox {

@@ -36,6 +36,9 @@ public:
     // Whether every stage maps each solid of revolution about z onto itself (twists only): then such a solid that
     // holds the undeformed object, or lies within it, does the same for the deformed one.
     bool keeps_solids_of_revolution() const { return keeps_solids_of_revolution_; }
+    // A cone about z that holds the deformed object (the undeformed one's cylinder carried through the stages), where
+    // the stages keep one (twists and one taper, no bend).
+    const std::optional<ConeAboutZ>& enclosing_cone() const { return cone_; }
     std::size_t heap_bytes() const {
         return stages_.capacity() * sizeof(Deformation) + boxes_.capacity() * sizeof(IntervalBox);
     }
@@ -96,6 +99,7 @@ private:
     std::vector<Deformation> stages_;
     std::vector<IntervalBox> boxes_;  // boxes_[k] bounds the object after k stages, widened slightly
     bool keeps_solids_of_revolution_ = true;
+    std::optional<ConeAboutZ> cone_;
 };
 
 }  // namespace isotrace

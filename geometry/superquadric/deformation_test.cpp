@@ -240,6 +240,42 @@ TEST(SuperquadricDeformation, SingularInversesAreRefused) {
     EXPECT_THROW(chain.append(Twist(0.1, kRadii.z)), std::invalid_argument);
 }
 
+// Chains of twists and at most one taper keep a cone about z around the object: every deformed point of the solid
+// lies inside it. A bend or a second taper leaves none.
+TEST(SuperquadricDeformation, TheEnclosingConeHoldsTheDeformedSolid) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> unit(-1, 1), exponent(0.1, 3);
+    const auto inside = [](const ConeAboutZ& cone, const Vec3d& p) {
+        const double x = cone.kx * p.x, y = cone.ky * p.y, w = cone.radius_scale(p.z);
+        return x * x + y * y <= w * w;
+    };
+    int points = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Superellipsoid shape{kRadii, exponent(random), exponent(random)};
+        DeformationChain chain(shape);
+        const Deformation twist = Twist(2 * unit(random), kRadii.z), taper = Taper(0.8 * unit(random), 0.8 * unit(random), kRadii.z);
+        switch (i % 4) {
+            case 0: chain.append(twist); break;
+            case 1: chain.append(taper); break;
+            case 2: chain.append(twist), chain.append(taper); break;
+            default: chain.append(taper), chain.append(twist), chain.append(twist); break;
+        }
+        ASSERT_TRUE(chain.enclosing_cone()) << i;
+        for (int k = 0; k < 200; ++k, ++points) {
+            const Vec3d q = chain.forward(random_point_of(random, shape));
+            EXPECT_TRUE(inside(*chain.enclosing_cone(), q)) << i << " " << k;
+        }
+    }
+    EXPECT_EQ(points, 40000);
+    DeformationChain bent(Superellipsoid{kRadii, 1, 1});
+    bent.append(Bend(0.4, 0.3, 0.2, {-1.5, 1.5}));
+    EXPECT_FALSE(bent.enclosing_cone());
+    DeformationChain tapered_twice(Superellipsoid{kRadii, 1, 1});
+    tapered_twice.append(Taper(0.3, 0.3, kRadii.z));
+    tapered_twice.append(Taper(0.2, -0.2, kRadii.z));
+    EXPECT_FALSE(tapered_twice.enclosing_cone());
+}
+
 TEST(SuperquadricDeformation, TwistKeepsTheAxisAndTaperKeepsTheBottom) {
     const Twist twist(2.0, kRadii.z);
     for (double z : {-1.5, -0.3, 0.0, 1.5}) EXPECT_EQ(twist.forward({0, 0, z}), Vec3d(0, 0, z));

@@ -13,6 +13,7 @@
 
 #include "geometry/field/difference_of_convex.h"
 #include "geometry/polynomial/polynomial.h"  // ValueAndDerivative
+#include "geometry/superquadric/cone_about_z.h"
 #include "geometry/superquadric/norm_exponent.h"
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
@@ -66,6 +67,8 @@ public:
     // gauge is below 1 throughout it); nothing where the segment misses it.
     std::optional<Interval> inscribed_stretch(const Vec3d& start, const Vec3d& direction, double length,
                                               QuadricForm form = QuadricForm::AlongRadii) const;
+    // The elliptic cylinder of enclosing_stretch, for deformations to carry.
+    ConeAboutZ enclosing_cylinder() const { return {along_radii_.cylinder.x, along_radii_.cylinder.y, 1, 0}; }
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south_ <= 2 && east_west_ <= 2; }
     // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave

@@ -149,16 +149,23 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
     // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
     // coordinate planes, and the pieces' own tests already pass over most of the box. Their round forms hold a
-    // twisted solid too: its rays that pass beside them are settled, and the shell is walked only inside them.
+    // twisted solid too, and a cone about z a tapered one (DeformationChain::enclosing_cone): the rays of a deformed
+    // shape that pass beside them are settled, and the shell is walked only inside them.
     double lo = t0, hi = t1;
+    const auto narrow = [&](const std::optional<Interval>& around) {
+        if (!around) return false;
+        if (around->lo > 0) lo = t0 + around->lo;
+        if (around->hi < t1 - t0) hi = t0 + around->hi;
+        return true;
+    };
     const bool turned = !deformation_.empty() && deformation_.keeps_solids_of_revolution();
+    if (!deformation_.empty() && !turned && deformation_.enclosing_cone() &&
+        !narrow(deformation_.enclosing_cone()->stretch(o + d * t0, d, t1 - t0)))
+        return;
     if ((deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) || turned) {
         using QuadricForm = Superellipsoid::QuadricForm;
         const QuadricForm form = turned ? QuadricForm::RoundAboutZ : QuadricForm::AlongRadii;
-        const std::optional<Interval> around = shape_.enclosing_stretch(o + d * t0, d, t1 - t0, form);
-        if (!around) return;
-        if (around->lo > 0) lo = t0 + around->lo;
-        if (around->hi < t1 - t0) hi = t0 + around->hi;
+        if (!narrow(shape_.enclosing_stretch(o + d * t0, d, t1 - t0, form))) return;
         // An occlusion query: a ray that is outside at lo (beyond the quadrics' margin, or on the box's face: the
         // widened one of an undeformed shape, where the gauge is at least the largest |xᵢ|/aᵢ, or the deformed box,
         // which holds the solid strictly within) and then reaches the inscribed ellipsoid (g < 0) crosses the surface
@@ -213,8 +220,8 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
     if (!deformation_.empty()) {
-        // Only the part of the line inside a twisted solid's round quadrics is walked (the whole part inside the box
-        // for other chains): every crossing lies there, and the line is outside where it enters them within the box.
+        // Only the part of the line inside the round quadrics or the cone is walked (the whole part inside the box
+        // for a bend): every crossing lies there, and the line is outside where it enters them within the box.
         search_shell<precision>(ray, lo, hi, clip->enter_axis >= 0 || lo > t0, resolution, work, visit);
         return;
     }

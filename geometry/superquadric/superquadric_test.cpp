@@ -337,6 +337,26 @@ TEST(SuperquadricIntersection, ARayBesideATwistedSolidsRoundQuadricsIsNotSearche
     }
 }
 
+// A taper widens the cylinder around the undeformed solid into a cone about z that holds the tapered one: a ray that
+// passes beside the cone through the box's narrow end is settled before the shell's walk.
+TEST(SuperquadricIntersection, ARayBesideATaperedSolidsConeIsNotSearched) {
+    for (const auto& [e1, e2] : {std::pair{1.0, 1.0}, {0.3, 1.0}, {2.5, 2.5}, {0.3, 0.3}}) {
+        // Full size at the bottom (z = −0.4), 0.4 of it at the top.
+        const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, e1, e2, {Taper(-0.6, -0.6, 0.4)});
+        const double radius = 0.4 * std::max(1.0, std::exp2((1 - e2) / 2)) * (1 - 0.6 * 0.9);  // at z = 0.32
+        const Vec3d across = normalize(Vec3d{1, -1, 0}), out = normalize(Vec3d{1, 1, 0});
+        SuperquadricWork work;
+        const Vec3d beside = out * (radius * 1.01) - across * 3.0 + Vec3d{0, 0, 0.32};
+        EXPECT_FALSE(s.first_crossing(beside, across, 0, 10, work)) << e1 << " " << e2;
+        EXPECT_FALSE(s.blocks(beside, across, 0, 10, work)) << e1 << " " << e2;
+        EXPECT_EQ(work.search.interval_bounds, 0u) << e1 << " " << e2;
+        EXPECT_EQ(work.search.evaluations, 0u) << e1 << " " << e2;
+        const Vec3d within = Vec3d{0, 0, 0.32} - across * 3.0;  // through the axis
+        s.first_crossing(within, across, 0, 10, work);
+        EXPECT_GT(work.search.interval_bounds + work.search.evaluations, 0u) << e1 << " " << e2;
+    }
+}
+
 // Occlusion settled by an unrefined bracket gives first_crossing's answer on every ray, ranges cut short included,
 // for less work.
 TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {

@@ -35,6 +35,13 @@ IntervalBox Taper::inverse_tangent(const IntervalBox& preimage, const IntervalBo
             tangent.z};
 }
 
+std::optional<ConeAboutZ> Taper::carry(const ConeAboutZ& cone) const {
+    if (cone.beta != 0) return std::nullopt;
+    // α·(1 + r·(z + h)/(2h)) for the larger rate r: α + β·z.
+    const double rate = std::max(x_rate_, y_rate_);
+    return ConeAboutZ{cone.kx, cone.ky, cone.alpha * (1 + rate / 2), cone.alpha * rate / (2 * half_height_)};
+}
+
 std::string Taper::problem(const IntervalBox& input) const {
     for (const double rate : {x_rate_, y_rate_}) {
         const Interval s = scale(rate, input.z);

@@ -2,7 +2,10 @@
 // Barr's linear taper along z (the paper's eq. 3, with separate rates for x and y as in Barr 1984):
 //   X = fx(z)·x,  Y = fy(z)·y,  Z = z,  f(z) = 1 + rate·(z + a3)/(2·a3),
 // so the cross-section keeps its size at the bottom (z = −a3) and is scaled by 1 + rate at the top (z = a3).
+#include <optional>
 #include <string>
+
+#include "geometry/superquadric/cone_about_z.h"
 
 #include "renderer/math/interval.h"
 #include "geometry/superquadric/jacobian.h"
@@ -29,6 +32,10 @@ public:
     std::string problem(const IntervalBox& input) const;
     // Scaling the cross-sections by height changes a solid of revolution's profile.
     bool keeps_solids_of_revolution() const { return false; }
+    // A cylinder that holds the object before the taper, scaled by the larger of the two scales at every height
+    // (linear in z, as both are, and equal to them at the bottom): a cone that holds the tapered object. A cone
+    // would become a quadratic profile: nothing.
+    std::optional<ConeAboutZ> carry(const ConeAboutZ& cone) const;
 
     double x_rate() const { return x_rate_; }
     double y_rate() const { return y_rate_; }

@@ -1,7 +1,11 @@
 #pragma once
 // Barr's twist about z (the paper's eq. 4): the cross-section at height z turns by θ = rate·(z + a3), so the
 // bottom (z = −a3) stays put and the top turns by rate·2·a3.
+#include <algorithm>
+#include <optional>
 #include <string>
+
+#include "geometry/superquadric/cone_about_z.h"
 
 #include "renderer/math/interval.h"
 #include "renderer/math/sin_cos.h"
@@ -36,6 +40,12 @@ public:
     std::string problem(const IntervalBox&) const { return {}; }
     // Turning about z maps every solid of revolution about z onto itself.
     bool keeps_solids_of_revolution() const { return true; }
+    // A cone that holds the object before the twist, made round (its larger radius at every height): it holds the
+    // twisted object.
+    std::optional<ConeAboutZ> carry(const ConeAboutZ& cone) const {
+        const double k = std::min(cone.kx, cone.ky);
+        return ConeAboutZ{k, k, cone.alpha, cone.beta};
+    }
 
     double rate() const { return rate_; }
 
