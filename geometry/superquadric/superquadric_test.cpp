@@ -315,45 +315,42 @@ TEST(SuperquadricIntersection, StretchesOutsideTheGaugesUnitBallAreNotSearched) 
     }
 }
 
-// A twist turns every cross-section about z, so the round quadrics around the undeformed solid hold the twisted one:
-// a ray that passes beside them, close to the surface through the box, is settled before the shell's walk, without
-// a bound or a point value; one just inside them is searched.
+// A ray diagonally through a deformed shape's box at height z, passing the z axis at `offset` times `radius` (the
+// bound's radius there): beside the bound it is settled before the shell's walk, without a bound of g or a point
+// value; through the axis it is searched.
+void expect_settled_beside(const Superquadric& s, double radius, double z, double offset) {
+    const Vec3d across = normalize(Vec3d{1, -1, 0}), out = normalize(Vec3d{1, 1, 0});
+    SuperquadricWork work;
+    const Vec3d beside = out * (radius * offset) - across * 3.0 + Vec3d{0, 0, z};
+    EXPECT_FALSE(s.first_crossing(beside, across, 0, 10, work));
+    EXPECT_FALSE(s.blocks(beside, across, 0, 10, work));
+    EXPECT_EQ(work.search.interval_bounds, 0u);
+    EXPECT_EQ(work.search.evaluations, 0u);
+    s.first_crossing(Vec3d{0, 0, z} - across * 3.0, across, 0, 10, work);
+    EXPECT_GT(work.search.interval_bounds + work.search.evaluations, 0u);
+}
+
+// The round cylinder's radius around a superellipsoid of radii 0.4: 0.4 for round and star-shaped cross-sections,
+// more for squarish ones.
+double round_cylinder_radius(double east_west) { return 0.4 * std::max(1.0, std::exp2((1 - east_west) / 2)); }
+
+// A twist turns every cross-section about z, so the round quadrics around the undeformed solid hold the twisted one.
 TEST(SuperquadricIntersection, ARayBesideATwistedSolidsRoundQuadricsIsNotSearched) {
     for (const auto& [e1, e2] : {std::pair{1.0, 1.0}, {0.3, 1.0}, {2.5, 2.5}, {0.3, 0.3}}) {
+        SCOPED_TRACE(testing::Message() << e1 << " " << e2);
         const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, e1, e2, {Twist(3.14159 / 0.8, 0.4)});
-        // The round cylinder's radius: 0.4 for round and star-shaped cross-sections, more for squarish ones.
-        const double radius = 0.4 * std::max(1.0, std::exp2((1 - e2) / 2));
-        // Diagonally through the box, past its corner edge along z.
-        const Vec3d across = normalize(Vec3d{1, -1, 0}), out = normalize(Vec3d{1, 1, 0});
-        SuperquadricWork work;
-        const Vec3d beside = out * (radius * 1.001) - across * 3.0 + Vec3d{0, 0, 0.05};
-        EXPECT_FALSE(s.first_crossing(beside, across, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_FALSE(s.blocks(beside, across, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_EQ(work.search.interval_bounds, 0u) << e1 << " " << e2;
-        EXPECT_EQ(work.search.evaluations, 0u) << e1 << " " << e2;
-        const Vec3d within = out * (radius * 0.5) - across * 3.0 + Vec3d{0, 0, 0.05};
-        s.first_crossing(within, across, 0, 10, work);
-        EXPECT_GT(work.search.interval_bounds + work.search.evaluations, 0u) << e1 << " " << e2;
+        expect_settled_beside(s, round_cylinder_radius(e2), 0.05, 1.001);
     }
 }
 
-// A taper widens the cylinder around the undeformed solid into a cone about z that holds the tapered one: a ray that
-// passes beside the cone through the box's narrow end is settled before the shell's walk.
+// A taper widens the cylinder around the undeformed solid into a cone about z that holds the tapered one: here a ray
+// passes beside it through the box's narrow end.
 TEST(SuperquadricIntersection, ARayBesideATaperedSolidsConeIsNotSearched) {
     for (const auto& [e1, e2] : {std::pair{1.0, 1.0}, {0.3, 1.0}, {2.5, 2.5}, {0.3, 0.3}}) {
-        // Full size at the bottom (z = −0.4), 0.4 of it at the top.
+        SCOPED_TRACE(testing::Message() << e1 << " " << e2);
+        // Full size at the bottom (z = −0.4), 0.4 of it at the top; at z = 0.32, 1 − 0.6 · 0.9 of it.
         const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, e1, e2, {Taper(-0.6, -0.6, 0.4)});
-        const double radius = 0.4 * std::max(1.0, std::exp2((1 - e2) / 2)) * (1 - 0.6 * 0.9);  // at z = 0.32
-        const Vec3d across = normalize(Vec3d{1, -1, 0}), out = normalize(Vec3d{1, 1, 0});
-        SuperquadricWork work;
-        const Vec3d beside = out * (radius * 1.01) - across * 3.0 + Vec3d{0, 0, 0.32};
-        EXPECT_FALSE(s.first_crossing(beside, across, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_FALSE(s.blocks(beside, across, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_EQ(work.search.interval_bounds, 0u) << e1 << " " << e2;
-        EXPECT_EQ(work.search.evaluations, 0u) << e1 << " " << e2;
-        const Vec3d within = Vec3d{0, 0, 0.32} - across * 3.0;  // through the axis
-        s.first_crossing(within, across, 0, 10, work);
-        EXPECT_GT(work.search.interval_bounds + work.search.evaluations, 0u) << e1 << " " << e2;
+        expect_settled_beside(s, round_cylinder_radius(e2) * (1 - 0.6 * 0.9), 0.32, 1.01);
     }
 }
 
