@@ -139,6 +139,20 @@ IntervalBox Bend::inverse_tangent(const IntervalBox& preimage, const IntervalBox
     return from_frame({c * v.s - sn * v.z, v.w, divide_by_positive(sn * v.s + c * v.z, along)});
 }
 
+std::optional<BendSector> Bend::sector(const IntervalBox& before, Interval heights,
+                                       const std::optional<ConeAboutZ>& cone) const {
+    if (!(heights.lo >= region_.lo && heights.hi <= region_.hi)) return std::nullopt;
+    Interval s = to_frame(before).s;
+    if (cone) {  // the cone's widest cross-section, an ellipse, reaches this far along u
+        const double widest = std::max(cone->radius_scale(heights.lo), cone->radius_scale(heights.hi));
+        const double reach = widest * std::hypot(u_.x / cone->kx, u_.y / cone->ky);
+        s = {std::max(s.lo, -reach), std::min(s.hi, reach)};
+    }
+    const SinCos lowest = sin_cos(region_angle(heights.lo)), highest = sin_cos(region_angle(heights.hi));
+    return BendSector{u_, curvature_, centre_, 1 - curvature_ * s.hi, 1 - curvature_ * s.lo,
+                      lowest.sin, lowest.cos, highest.sin, highest.cos};
+}
+
 std::string Bend::problem(const IntervalBox& input) const {
     std::ostringstream message;
     const double reach = to_frame(input).s.hi * curvature_;

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/superquadric/bend_sector.h"
 #include "geometry/superquadric/cone_about_z.h"
 
 #include "renderer/math/interval.h"
@@ -41,6 +42,11 @@ public:
     bool keeps_solids_of_revolution() const { return false; }
     // Nor does a cone about z hold the bent object.
     std::optional<ConeAboutZ> carry(const ConeAboutZ&) const { return std::nullopt; }
+    // The annular sector about the bend's centre that holds the object bent, where `before` bounds it before the bend
+    // (and `cone`, when there is one, too) and `heights` are its heights; nothing where part of it lies beyond the
+    // region, which continues along the tangents instead of turning about the centre.
+    std::optional<BendSector> sector(const IntervalBox& before, Interval heights,
+                                     const std::optional<ConeAboutZ>& cone) const;
 
 private:
     struct FrameBox {

@@ -18,7 +18,10 @@ IntervalBox widened(IntervalBox box) {
 }  // namespace
 
 DeformationChain::DeformationChain(const Superellipsoid& shape)
-    : shape_(shape), boxes_{widened(shape.bounding_box())}, cone_(shape.enclosing_cylinder()) {}
+    : shape_(shape),
+      boxes_{widened(shape.bounding_box())},
+      heights_{-shape.radii().z, shape.radii().z},
+      cone_(shape.enclosing_cylinder()) {}
 
 void DeformationChain::append(const Deformation& stage) {
     if (stages_.size() >= std::size_t(kMaxStages))
@@ -28,8 +31,10 @@ void DeformationChain::append(const Deformation& stage) {
     stages_.push_back(stage);
     keeps_solids_of_revolution_ =
         keeps_solids_of_revolution_ && std::visit([](const auto& s) { return s.keeps_solids_of_revolution(); }, stage);
+    sector_ = std::visit([&](const auto& s) { return s.sector(boxes_.back(), heights_, cone_); }, stage);
     if (cone_) cone_ = std::visit([&](const auto& s) { return s.carry(*cone_); }, stage);
     compute_stage_boxes();
+    if (std::holds_alternative<Bend>(stage)) heights_ = boxes_.back().z;  // twists and tapers keep every height
     // The cone's radius must stay positive over the box, where rays are asked.
     const Interval z = boxes_.back().z;
     if (cone_ && !(cone_->radius_scale(z.lo) > 0 && cone_->radius_scale(z.hi) > 0)) cone_.reset();

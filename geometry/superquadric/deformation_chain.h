@@ -39,6 +39,9 @@ public:
     // A cone about z that holds the deformed object (the undeformed one's cylinder carried through the stages), where
     // the stages keep one (twists and one taper, no bend).
     const std::optional<ConeAboutZ>& enclosing_cone() const { return cone_; }
+    // The annular sector about the last stage's centre that holds the deformed object, when that stage is a bend
+    // and the object lies within its region.
+    const std::optional<BendSector>& enclosing_sector() const { return sector_; }
     std::size_t heap_bytes() const {
         return stages_.capacity() * sizeof(Deformation) + boxes_.capacity() * sizeof(IntervalBox);
     }
@@ -98,8 +101,10 @@ private:
     Superellipsoid shape_;
     std::vector<Deformation> stages_;
     std::vector<IntervalBox> boxes_;  // boxes_[k] bounds the object after k stages, widened slightly
+    Interval heights_;  // the object's heights after the stages so far
     bool keeps_solids_of_revolution_ = true;
     std::optional<ConeAboutZ> cone_;
+    std::optional<BendSector> sector_;
 };
 
 }  // namespace isotrace

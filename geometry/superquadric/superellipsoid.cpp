@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "geometry/superquadric/within_quadric.h"
+
 namespace isotrace {
 namespace {
 
@@ -107,26 +109,6 @@ ValueAndDerivative Superellipsoid::gauge_along(const Vec3d& p, const RadiusRates
     const double slope = dg_dh * dh + dg_dw * rate(p.z, rates.z);
     return {g.norm, std::isfinite(slope) ? slope : NAN};
 }
-
-namespace {
-
-// The τ in [0, length] where Σ (kᵢ·(sᵢ + τ·dᵢ))² ≤ bound: about the line's point nearest the centre, found without
-// cancellation.
-std::optional<Interval> within_quadric(const Vec3d& k, const Vec3d& start, const Vec3d& direction, double length,
-                                       double bound) {
-    const Vec3d s = k * start, d = k * direction;
-    const double a = dot(d, d);
-    if (!(a > 0)) return dot(s, s) <= bound ? std::optional<Interval>(Interval{0, length}) : std::nullopt;
-    const double middle = -dot(s, d) / a;
-    const Vec3d nearest = s + d * middle;
-    const double room = bound - dot(nearest, nearest);
-    if (room < 0) return std::nullopt;
-    const double half = std::sqrt(room / a);
-    const Interval within{std::max(0.0, middle - half), std::min(length, middle + half)};
-    return within.lo <= within.hi ? std::optional<Interval>(within) : std::nullopt;
-}
-
-}  // namespace
 
 // Within the box the squares are a few units, rounded to 10⁻¹⁵; the gauge is within 2⁻⁴⁶ of itself.
 constexpr double kQuadricMargin = 1e-8;

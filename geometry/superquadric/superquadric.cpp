@@ -162,6 +162,8 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     if (!deformation_.empty() && !turned && deformation_.enclosing_cone() &&
         !narrow(deformation_.enclosing_cone()->stretch(o + d * t0, d, t1 - t0)))
         return;
+    if (deformation_.enclosing_sector() && !narrow(deformation_.enclosing_sector()->stretch(o + d * t0, d, t1 - t0)))
+        return;
     if ((deformation_.empty() && (convex || precision == CrossingPrecision::SignChange)) || turned) {
         using QuadricForm = Superellipsoid::QuadricForm;
         const QuadricForm form = turned ? QuadricForm::RoundAboutZ : QuadricForm::AlongRadii;

@@ -354,6 +354,24 @@ TEST(SuperquadricIntersection, ARayBesideATaperedSolidsConeIsNotSearched) {
     }
 }
 
+// A bend turns each cross-section about its centre, so the bent solid lies in an annular sector about it: a ray through
+// the box on the centre's side of the arc, inside the sector's hole and close to the surface, is settled before the
+// shell's walk.
+TEST(SuperquadricIntersection, ARayThroughABentSolidsHoleIsNotSearched) {
+    for (const auto& [e1, e2] : {std::pair{1.0, 1.0}, {0.3, 1.0}, {1.0, 0.3}}) {
+        SCOPED_TRACE(testing::Message() << e1 << " " << e2);
+        // Radius 1/1.2 about (1/1.2, ·, 0): at z = 0 the solid reaches x = 0.4, at its ends x ≈ 0.45.
+        const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, e1, e2, {Bend(1.2, 0, 0, {-0.4, 0.4})});
+        ASSERT_TRUE(s.deformation().deformed_box().contains({0.405, 0, 0}));
+        SuperquadricWork work;
+        EXPECT_FALSE(s.first_crossing({0.405, -3, 0}, {0, 1, 0}, 0, 10, work));
+        EXPECT_FALSE(s.blocks({0.405, -3, 0}, {0, 1, 0}, 0, 10, work));
+        EXPECT_EQ(work.search.interval_bounds, 0u);
+        EXPECT_EQ(work.search.evaluations, 0u);
+        EXPECT_TRUE(s.first_crossing({0.1, -3, 0}, {0, 1, 0}, 0, 10, work));
+    }
+}
+
 // Occlusion settled by an unrefined bracket gives first_crossing's answer on every ray, ranges cut short included,
 // for less work.
 TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/superquadric/bend_sector.h"
 #include "geometry/superquadric/cone_about_z.h"
 
 #include "renderer/math/interval.h"
@@ -36,6 +37,10 @@ public:
     // (linear in z, as both are, and equal to them at the bottom): a cone that holds the tapered object. A cone
     // would become a quadratic profile: nothing.
     std::optional<ConeAboutZ> carry(const ConeAboutZ& cone) const;
+    // Only a bend leaves the object in an annular sector about its centre.
+    std::optional<BendSector> sector(const IntervalBox&, Interval, const std::optional<ConeAboutZ>&) const {
+        return std::nullopt;
+    }
 
     double x_rate() const { return x_rate_; }
     double y_rate() const { return y_rate_; }

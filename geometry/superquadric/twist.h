@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/superquadric/bend_sector.h"
 #include "geometry/superquadric/cone_about_z.h"
 
 #include "renderer/math/interval.h"
@@ -45,6 +46,10 @@ public:
     std::optional<ConeAboutZ> carry(const ConeAboutZ& cone) const {
         const double k = std::min(cone.kx, cone.ky);
         return ConeAboutZ{k, k, cone.alpha, cone.beta};
+    }
+    // Only a bend leaves the object in an annular sector about its centre.
+    std::optional<BendSector> sector(const IntervalBox&, Interval, const std::optional<ConeAboutZ>&) const {
+        return std::nullopt;
     }
 
     double rate() const { return rate_; }

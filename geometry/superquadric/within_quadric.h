@@ -1,0 +1,28 @@
+#pragma once
+// The part of a segment inside an axis-aligned ellipsoid or elliptic cylinder about the origin.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "renderer/math/interval.h"
+#include "renderer/math/vec3.h"
+
+namespace isotrace {
+
+// The τ in [0, length] where Σ (kᵢ·(sᵢ + τ·dᵢ))² ≤ bound (a zero kᵢ leaves axis i out): about the line's point
+// nearest the centre, found without cancellation; nothing where the segment misses the quadric.
+inline std::optional<Interval> within_quadric(const Vec3d& k, const Vec3d& start, const Vec3d& direction, double length,
+                                              double bound) {
+    const Vec3d s = k * start, d = k * direction;
+    const double a = dot(d, d);
+    if (!(a > 0)) return dot(s, s) <= bound ? std::optional<Interval>(Interval{0, length}) : std::nullopt;
+    const double middle = -dot(s, d) / a;
+    const Vec3d nearest = s + d * middle;
+    const double room = bound - dot(nearest, nearest);
+    if (room < 0) return std::nullopt;
+    const double half = std::sqrt(room / a);
+    const Interval within{std::max(0.0, middle - half), std::min(length, middle + half)};
+    return within.lo <= within.hi ? std::optional<Interval>(within) : std::nullopt;
+}
+
+}  // namespace isotrace
