@@ -148,9 +148,10 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // Two quadrics hold an undeformed solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is
     // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
     // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
-    // coordinate planes, and the pieces' own tests already pass over most of the box. Their round forms hold a
-    // twisted solid too, and a cone about z a tapered one (DeformationChain::enclosing_cone): the rays of a deformed
-    // shape that pass beside them are settled, and the shell is walked only inside them.
+    // coordinate planes, and the pieces' own tests already pass over most of the box. A deformed solid has the bound
+    // its stages keep: their round forms for twists, a cone about z with a taper (DeformationChain::enclosing_cone),
+    // an annular sector about a final bend's centre (enclosing_sector). Its rays that miss the bound are settled, and
+    // the shell is walked only from where they first enter it to where they last leave it.
     double lo = t0, hi = t1;
     const auto narrow = [&](const std::optional<Interval>& around) {
         if (!around) return false;
@@ -222,8 +223,8 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     };
     const double resolution = kRelativeResolution * largest_extent(deformation_.deformed_box()) / length(d);
     if (!deformation_.empty()) {
-        // Only the part of the line inside the round quadrics or the cone is walked (the whole part inside the box
-        // for a bend): every crossing lies there, and the line is outside where it enters them within the box.
+        // Every crossing lies within the bound, and the line is outside where it enters the bound within the box
+        // (without a bound, lo and hi are the box's).
         search_shell<precision>(ray, lo, hi, clip->enter_axis >= 0 || lo > t0, resolution, work, visit);
         return;
     }

@@ -10,9 +10,10 @@
 // - deformed: only the ray's stretches through the cells of the surface shell (surface_shell.h) are searched, cell
 //   by cell, with the bounds each cell keeps (shell_cell_bounds.h) asked before those along the ray; an occlusion
 //   query settles a run of such cells from outside to inside, as the cells without surface beside it tell, at once;
-//   when every stage is a twist, the round forms of the quadrics below (which every turn about z keeps) come first:
-//   a ray that misses them is settled, one that reaches the inscribed one is blocked, and the walk covers only the
-//   part of the ray inside them;
+//   first comes a bound the stages keep (the round forms of the quadrics below for twists, which every turn about z
+//   keeps; a cone about z with a taper; an annular sector about a final bend's centre): a ray that misses it is
+//   settled, one that reaches the inscribed quadric of twists is blocked, and the walk covers only the part of the
+//   ray from where it first enters the bound to where it last leaves it;
 // - undeformed and convex (ε1, ε2 ≤ 2): g is convex along the ray, and Newton marches find its crossings without
 //   bounds (convex_crossings.h), from where the ray enters and leaves two quadrics around the solid
 //   (Superellipsoid::enclosing_stretch), the search above taking over only near tangent contacts;
