@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/polynomial/quadratic_negative_pieces.h"
 #include "geometry/polynomial/quadratic_roots.h"
 
 namespace isotrace {
@@ -47,35 +48,6 @@ double polish(const Frustum& f, const LocalLine& line, double t, double max_step
     return t;
 }
 
-struct Piece {
-    double lo, hi;
-};
-
-// The stretches of the line where g < 0, from g = a t² + b t + c and its roots: up to two, ends may be infinite.
-int negative_pieces(double a, double b, double c, const QuadraticRoots& roots, std::array<Piece, 2>& pieces) {
-    if (a == 0) {
-        if (b == 0) {
-            if (!(c < 0)) return 0;
-            pieces[0] = {-kInfinity, kInfinity};
-            return 1;
-        }
-        pieces[0] = b > 0 ? Piece{-kInfinity, roots.roots[0]} : Piece{roots.roots[0], kInfinity};
-        return 1;
-    }
-    if (roots.count < 2) {  // no root or a double one: g keeps the sign of a, but for a touching point
-        if (a > 0) return 0;
-        pieces[0] = {-kInfinity, kInfinity};
-        return 1;
-    }
-    if (a > 0) {
-        pieces[0] = {roots.roots[0], roots.roots[1]};
-        return 1;
-    }
-    pieces[0] = {-kInfinity, roots.roots[0]};
-    pieces[1] = {roots.roots[1], kInfinity};
-    return 2;
-}
-
 }  // namespace
 
 FrustumCrossings frustum_crossings(const Frustum& f, const Vec3d& origin, const Vec3d& direction) {
@@ -113,7 +85,7 @@ FrustumCrossings frustum_crossings(const Frustum& f, const Vec3d& origin, const 
         lo_part = upwards ? FrustumPart::Base : FrustumPart::Top;
         hi_part = upwards ? FrustumPart::Top : FrustumPart::Base;
     }
-    std::array<Piece, 2> pieces;
+    std::array<NegativePiece, 2> pieces;
     const int piece_count = negative_pieces(a, b, c, roots, pieces);
     // The frustum is convex, so at most one piece meets the slab (the other lies on the far nappe); should rounding
     // leave a sliver of the other, the longer one is the solid.
