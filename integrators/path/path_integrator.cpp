@@ -210,49 +210,74 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene, Sa
 }
 
 std::size_t PathIntegrator::samples_traced_together(const RenderScene&) const {
-    static_assert(kLanes <= kMaxSamplesTogether && kLanes <= SampleStream::kMaxStreamsTogether);
-    return kLanes;
+    static_assert(kLanes <= kMaxSamplesTogether && kMaxSamplesTogether <= SampleStream::kMaxStreamsTogether);
+    return kMaxSamplesTogether;
 }
 
 std::string PathIntegrator::packet_description(const RenderScene&) const {
-    return std::to_string(kLanes) + " samples of a pixel as paths in step, each ray kind one packet query";
+    return std::to_string(kMaxSamplesTogether) + " samples (a pixel's, or several pixels') as paths in step, their rays " +
+           std::to_string(kLanes) + "-ray packet queries kept full as paths end";
 }
 
-// The paths of a pixel's samples advance in step, one bounce each per round (their depths stay equal), so that each
-// round's rays are one packet query and their shadow rays another: Embree traverses its tree once for the packet,
-// which costs less than once per ray when the rays are alike, as a pixel's are. Each path does what radiance() does,
-// in the same order, so its result does not depend on its companions.
+// The paths of a group's samples (a pixel's, then the next pixel's) advance in step, one bounce each per round (their
+// depths stay equal), so that each round's rays are packet queries and their shadow rays others: Embree traverses
+// its tree once for a packet, which costs less than once per ray when the rays are alike, as a pixel's camera rays
+// are. Paths that end leave the group and the live ones close up, so that the packets stay full as paths end (a
+// pixel's own paths alone left packets of one to three live rays after a few bounces). Each path does what
+// radiance() does, in the same order, so its result does not depend on its companions.
 void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
                                          std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                          std::span<Rgb> radiance) const {
+    constexpr std::size_t kMost = kMaxSamplesTogether;
     const std::size_t count = camera_rays.size();
-    std::array<std::optional<Path>, kLanes> paths;
-    std::array<Ray, kLanes> rays, shadows;
-    std::array<std::optional<SurfaceHit>, kLanes> hits;
-    unsigned live = 0;
-    for (std::size_t lane = 0; lane < count; ++lane) {
-        rays[lane] = camera_rays[lane];
-        paths[lane].emplace(rays[lane]);
-        live |= 1u << lane;
+    std::array<std::optional<Path>, kMost> paths;
+    std::array<Ray, kMost> rays, shadows;
+    std::array<std::optional<SurfaceHit>, kMost> hits;
+    std::array<std::size_t, kMost> sample_of, casting;  // a slot's sample; the slots whose bounce cast a shadow ray
+    std::array<bool, kMost> continuing;
+    for (std::size_t slot = 0; slot < count; ++slot) {
+        rays[slot] = camera_rays[slot];
+        paths[slot].emplace(rays[slot]);
+        sample_of[slot] = slot;
     }
-    for (int depth = 0; live; ++depth) {
-        scene.intersect(std::span(rays.data(), count), live, depth == 0 ? RayKind::Camera : RayKind::Secondary,
-                        std::span(hits));
-        unsigned casting = 0, continuing = 0;
-        for (unsigned lanes = live; lanes; lanes &= lanes - 1) {
-            const int lane = std::countr_zero(lanes);
-            Path& path = *paths[lane];
-            if (bounce(path, rays[lane], shadows[lane], hits[lane], scene, samples[lane], primary[lane]))
-                continuing |= 1u << lane;
-            if (path.casts_shadow) casting |= 1u << lane;
+    const auto first_lanes = [](std::size_t n) { return (1u << n) - 1u; };  // n ≤ kLanes
+    for (std::size_t live = count, depth = 0; live > 0; ++depth) {
+        const RayKind kind = depth == 0 ? RayKind::Camera : RayKind::Secondary;
+        for (std::size_t first = 0; first < live; first += kLanes) {
+            const std::size_t n = std::min<std::size_t>(kLanes, live - first);
+            scene.intersect(std::span(rays.data() + first, n), first_lanes(n), kind, std::span(hits.data() + first, n));
         }
-        if (casting) {
-            const unsigned reached = casting & ~scene.occluded(std::span(shadows.data(), count), casting);
-            for (unsigned lanes = reached; lanes; lanes &= lanes - 1) add_unblocked(*paths[std::countr_zero(lanes)]);
+        std::size_t casts = 0;
+        for (std::size_t slot = 0; slot < live; ++slot) {
+            Path& path = *paths[slot];
+            continuing[slot] = bounce(path, rays[slot], shadows[slot], hits[slot], scene, samples[sample_of[slot]],
+                                      primary[sample_of[slot]]);
+            if (path.casts_shadow) {
+                shadows[casts] = shadows[slot];  // the shadow rays side by side, in slot order
+                casting[casts++] = slot;
+            }
         }
-        live = continuing;
+        for (std::size_t first = 0; first < casts; first += kLanes) {
+            const std::size_t n = std::min<std::size_t>(kLanes, casts - first);
+            const unsigned reached = first_lanes(n) & ~scene.occluded(std::span(shadows.data() + first, n), first_lanes(n));
+            for (unsigned lanes = reached; lanes; lanes &= lanes - 1)
+                add_unblocked(*paths[casting[first + std::size_t(std::countr_zero(lanes))]]);
+        }
+        std::size_t kept = 0;
+        for (std::size_t slot = 0; slot < live; ++slot) {
+            if (!continuing[slot]) {
+                radiance[sample_of[slot]] = paths[slot]->result;
+                continue;
+            }
+            if (kept != slot) {
+                paths[kept] = std::move(paths[slot]);
+                rays[kept] = rays[slot];
+                sample_of[kept] = sample_of[slot];
+            }
+            ++kept;
+        }
+        live = kept;
     }
-    for (std::size_t lane = 0; lane < count; ++lane) radiance[lane] = paths[lane]->result;
 }
 
 std::map<std::string, std::string> PathIntegrator::settings() const {

@@ -22,8 +22,8 @@ public:
     explicit PathIntegrator(const PathSettings& settings) : settings_(settings) {}
     Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                  PrimaryHitRecord& primary) const override;
-    // Eight samples of a pixel are traced together, with radiance()'s results: as paths in step whose rays are
-    // packet queries.
+    // Up to kMaxSamplesTogether samples (a pixel's, or several pixels') are traced together, with radiance()'s
+    // results: as paths in step whose rays are packet queries.
     std::size_t samples_traced_together(const RenderScene& scene) const override;
     std::string packet_description(const RenderScene& scene) const override;
     void radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene, std::span<SampleStream> samples,

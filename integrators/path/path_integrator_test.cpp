@@ -339,24 +339,28 @@ namespace {
 
 class SamplesInStep : public ::testing::TestWithParam<std::string> {};
 
-// A pixel's samples are traced as paths in step whose rays are packet queries (triangle meshes, user geometries
-// answering packets, placements, point, area and environment lights, delta and layered BSDFs): each sample must
-// keep radiance()'s bits, its AOV record and the sampler dimensions it took, whatever its companions, for groups of
-// eight and a shorter last one.
+// Samples are traced as paths in step whose rays are packet queries, the live paths closing up as others end
+// (triangle meshes, user geometries answering packets, placements, point, area and environment lights, delta and
+// layered BSDFs): each sample must keep radiance()'s bits, its AOV record and the sampler dimensions it took,
+// whatever its companions, for groups of a whole pixel and of several pixels' samples, and a shorter last one.
 TEST_P(SamplesInStep, GiveEachSampleRadiancesBits) {
     const auto loaded = load_scene(std::string(ISOTRACE_SCENES_DIR) + "/" + GetParam() + ".json");
-    ASSERT_EQ(loaded->integrator->samples_traced_together(*loaded->scene), 8u);
+    const std::size_t group = loaded->integrator->samples_traced_together(*loaded->scene);
+    ASSERT_EQ(group, Integrator::kMaxSamplesTogether);
     const int width = loaded->film.raster.width, height = loaded->film.raster.height;
     std::vector<std::array<int, 2>> pixels;
     for (int y = height / 10; y < height; y += height / 5)
         for (int x = width / 14; x < width; x += width / 7) pixels.push_back({x, y});
-    const int lit = testing::expect_groups_match_single_paths(
-        *loaded, pixels, 11,
-        [&](std::span<const Ray> rays, std::span<SampleStream> streams, std::span<PrimaryHitRecord> primary,
-            std::span<Rgb> radiance) {
-            loaded->integrator->radiance_of_samples(rays, *loaded->scene, streams, primary, radiance);
-        });
-    EXPECT_GT(lit, 0);
+    const auto trace = [&](std::span<const Ray> rays, std::span<SampleStream> streams,
+                           std::span<PrimaryHitRecord> primary, std::span<Rgb> radiance) {
+        loaded->integrator->radiance_of_samples(rays, *loaded->scene, streams, primary, radiance);
+    };
+    // Eleven samples a pixel: groups of several pixels' samples, a pixel's split between two groups.
+    EXPECT_GT(testing::expect_groups_match_single_paths(*loaded, pixels, 11, group, trace), 0);
+    // A whole group of one pixel's samples, and packets of eight from it.
+    const std::array<std::array<int, 2>, 1> one{pixels[pixels.size() / 2]};
+    testing::expect_groups_match_single_paths(*loaded, one, std::uint32_t(group), group, trace);
+    testing::expect_groups_match_single_paths(*loaded, one, 8, 8, trace);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SamplesInStep,

@@ -49,9 +49,9 @@ public:
     // Radiance arriving along `camera_ray` (in the working space).
     virtual Rgb radiance(const Ray& camera_ray, const RenderScene& scene, SampleStream& samples,
                          PrimaryHitRecord& primary) const = 0;
-    // How many samples of one pixel radiance_of_samples() traces together in `scene` (1 to kMaxSamplesTogether):
-    // the renderer hands it groups of that size. 1 by default.
-    static constexpr std::size_t kMaxSamplesTogether = 8;
+    // How many samples radiance_of_samples() traces together in `scene` (1 to kMaxSamplesTogether): the renderer
+    // hands it groups of that size, a pixel's samples and then the next pixel's. 1 by default.
+    static constexpr std::size_t kMaxSamplesTogether = 32;
     virtual std::size_t samples_traced_together(const RenderScene& scene) const {
         (void)scene;
         return 1;
@@ -61,9 +61,9 @@ public:
         (void)scene;
         return "";
     }
-    // Several samples of one pixel at once (consecutive sample indices): radiance[i] for camera_rays[i] with
-    // samples[i] and primary[i]. A sample's result must not depend on its companions. By default, radiance() for
-    // each in turn.
+    // Several samples at once (a pixel's consecutive sample indices, then the next pixel's): radiance[i] for
+    // camera_rays[i] with samples[i] and primary[i]. A sample's result must not depend on its companions. By
+    // default, radiance() for each in turn.
     virtual void radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
                                      std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                      std::span<Rgb> radiance) const {

@@ -14,6 +14,7 @@
 #include "renderer/core/parallel_for.h"
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/embree_device.h"
+#include "renderer/math/lanes.h"
 #include "renderer/sampling/sampler.h"
 
 namespace isotrace {
@@ -43,16 +44,17 @@ struct StopFlags {
     }
 };
 
-// How many of a pixel's samples the integrator traces together in this scene (mostly one).
+// How many samples the integrator traces together in this scene (mostly one).
 std::size_t samples_traced_together(const LoadedScene& loaded) {
     return std::clamp<std::size_t>(loaded.integrator->samples_traced_together(*loaded.scene), 1,
                                    Integrator::kMaxSamplesTogether);
 }
 
 // Brings every pixel of `tile` up to `last` samples, continuing from the samples it already has, in sample
-// order, as many of a pixel's samples at a time as the integrator traces together (mostly one). Reads the stop
-// flags before each group (two relaxed loads), so even a tile at high spp stops within one group; returns the
-// samples it took.
+// order. The samples go to the integrator in groups of as many as it traces together (mostly one), a pixel's
+// samples in order and the pixels in scan order, so that a group may hold the samples of several pixels. Reads the
+// stop flags before each pixel's samples are queued (two relaxed loads), so even a tile at high spp stops within
+// one group; samples queued but not yet traced are left untaken. Returns the samples it took.
 std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBounds& tile, std::uint32_t last,
                          const StopFlags& flags) {
     constexpr std::size_t kGroup = Integrator::kMaxSamplesTogether;
@@ -62,18 +64,40 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
     std::array<CameraSample, kGroup> samples;
     std::array<PrimaryHitRecord, kGroup> primary;
     std::array<Rgb, kGroup> radiance;
+    std::array<std::array<int, 2>, kGroup> pixel_of;
     const bool keeps_albedo = film.keeps_hit_data();
     std::int64_t taken = 0;
+    std::size_t queued = 0;
+    const auto trace_queued = [&] {
+        if (queued == 0) return;
+        loaded.integrator->radiance_of_samples(std::span(rays.data(), queued), *loaded.scene,
+                                               std::span(streams.data(), queued), std::span(primary.data(), queued),
+                                               std::span(radiance.data(), queued));
+        for (std::size_t i = 0; i < queued; ++i) {
+            CameraSample& sample = samples[i];
+            sample.radiance = radiance[i];
+            sample.primary = primary[i];
+            // Integrators do not know the camera: the depth AOV is filled in here from the hit position.
+            if (sample.primary.hit) sample.primary.depth = loaded.camera->view_depth(sample.primary.position);
+            if (!sample.radiance.is_finite()) {  // counted and dropped, so one bad path cannot poison a pixel
+                counters::count_nan_sample();
+                sample.radiance = Rgb();
+            }
+            film.add_sample(pixel_of[i][0], pixel_of[i][1], sample);
+        }
+        taken += std::int64_t(queued);
+        queued = 0;
+    };
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
             for (std::uint32_t first = film.sample_count(x, y); first < last;) {
                 if (flags.raised()) return taken;
-                const std::size_t count = std::min<std::size_t>(group, last - first);
+                const std::size_t count = std::min<std::size_t>(group - queued, last - first);
+                const std::span<SampleStream> added(streams.data() + queued, count);
                 for (std::size_t i = 0; i < count; ++i)
-                    streams[i] = SampleStream(*loaded.sampler,
-                                              {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
-                SampleStream::fill_caches(std::span(streams.data(), count));  // the camera's block, for all at once
-                for (std::size_t i = 0; i < count; ++i) {
+                    added[i] = SampleStream(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
+                SampleStream::fill_caches(added);  // the camera's block, for all of the pixel's at once
+                for (std::size_t i = queued; i < queued + count; ++i) {
                     const FilterSample offset = loaded.filter->sample(streams[i].next_2d());
                     rays[i] = loaded.camera->generate_ray(float(x) + 0.5f + offset.dx, float(y) + 0.5f + offset.dy,
                                                           streams[i].next_2d());
@@ -82,27 +106,15 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
                     samples[i].offset_squared = offset.dx * offset.dx + offset.dy * offset.dy;
                     primary[i] = PrimaryHitRecord{};
                     primary[i].keeps_albedo = keeps_albedo;
+                    pixel_of[i] = {x, y};
                 }
-                loaded.integrator->radiance_of_samples(std::span(rays.data(), count), *loaded.scene,
-                                                       std::span(streams.data(), count),
-                                                       std::span(primary.data(), count), std::span(radiance.data(), count));
-                for (std::size_t i = 0; i < count; ++i) {
-                    CameraSample& sample = samples[i];
-                    sample.radiance = radiance[i];
-                    sample.primary = primary[i];
-                    // Integrators do not know the camera: the depth AOV is filled in here from the hit position.
-                    if (sample.primary.hit) sample.primary.depth = loaded.camera->view_depth(sample.primary.position);
-                    if (!sample.radiance.is_finite()) {  // counted and dropped, so one bad path cannot poison a pixel
-                        counters::count_nan_sample();
-                        sample.radiance = Rgb();
-                    }
-                    film.add_sample(x, y, sample);
-                }
-                taken += std::int64_t(count);
+                queued += count;
                 first += std::uint32_t(count);
+                if (queued == group) trace_queued();
             }
         }
     }
+    trace_queued();
     return taken;
 }
 
@@ -212,7 +224,7 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
     std::optional<RenderWatcher> watch(std::in_place, options, stop, elapsed, snapshot);
     RenderWatcher& watcher = *watch;
 
-    const int first_pass_end = int(std::bit_ceil(samples_traced_together(loaded)));
+    const int first_pass_end = int(std::bit_ceil(std::min<std::size_t>(samples_traced_together(loaded), kLanes)));
     std::uint32_t last_pass_end_seen = 0;
     for (;;) {
         const SampleCountRange now = result.film->sample_count_range();
@@ -237,9 +249,9 @@ RenderResult render_scene(const LoadedScene& loaded, const RenderOptions& option
         if (stop != int(Stop::None)) break;
         // Passes end at the powers of two (1, 2, 4, 8, ...): sizes double so early passes give a quick preview,
         // and a film left at another count (a pass shrunk by a time budget, then resumed) is brought back onto
-        // the same boundaries that stop_at_pass_end is asked at. The first pass is as large as the group of
-        // samples the integrator traces together (8 as one packet: passes of 1, 1, 2 and 4 would run packets
-        // with 1, 1, 2 and 4 of their 8 lanes live; docs/decisions.md, "Passes that fill the lanes"). Under a time
+        // the same boundaries that stop_at_pass_end is asked at. An integrator that traces samples together
+        // gets a first pass of a packet's lanes of each pixel's samples (8), so that a pixel's camera rays, which
+        // are near-parallel, make a packet of their own (docs/decisions.md, "Passes that fill the lanes"). Under a time
         // budget the next pass is shrunk to what the measured speed says still fits, so that most budgets end on a
         // whole pass. (The budget is hard either way: a pass that overruns is stopped within a group.)
         const int next_boundary =

@@ -577,9 +577,9 @@ TEST(TileRenderer, PassesRealignToPowersOfTwoAfterAnOddCount) {
     EXPECT_FALSE(result.stopped_at_pass_end);
 }
 
-// A scene whose path tracer traces eight samples of a pixel together (flat meshes, Lambertian, a point light): its
-// passes start at eight samples, so that no packet runs with lanes left empty, and then double as before.
-TEST(TileRenderer, FirstPassIsTheIntegratorsGroupOfSamples) {
+// A scene whose path tracer traces its samples in groups, packets of eight of them: its passes start at eight samples,
+// so that a pixel's first camera rays fill a packet, and then double as before.
+TEST(TileRenderer, FirstPassIsAPacketOfEachPixelsSamples) {
     const SceneFile file(R"({"isotrace": 1,
   "film": {"resolution": [12, 10], "spp": 13},
   "camera": {"type": "perspective", "fov": 50, "look_at": {"eye": [0, 1.5, 4], "target": [0, 0, 0]}},
@@ -589,7 +589,7 @@ TEST(TileRenderer, FirstPassIsTheIntegratorsGroupOfSamples) {
   "objects": [{"material": "grey", "shape": {"type": "mesh",
     "positions": [[-4, 0, -4], [4, 0, -4], [4, 0, 4], [-4, 0, 4]], "triangles": [[0, 2, 1], [0, 3, 2]]}}]})");
     const auto scene = load_scene(file.path(), {});
-    ASSERT_EQ(scene->integrator->samples_traced_together(*scene->scene), 8u);
+    ASSERT_EQ(scene->integrator->samples_traced_together(*scene->scene), Integrator::kMaxSamplesTogether);
 
     const RenderResult thirteen = render_with_threads(*scene, 2, options_for(*scene, 4));
     EXPECT_EQ(thirteen.completed_spp, 13);

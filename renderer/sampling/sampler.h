@@ -81,7 +81,7 @@ public:
     // Several streams of one pixel and sampler (at most kMaxStreamsTogether) whose counters stand in the same
     // block: fill_caches computes that block for all of them together (Sampler::sample_blocks), so that their next
     // next_1d() and next_2d() calls read it without computing.
-    static constexpr std::size_t kMaxStreamsTogether = 8;
+    static constexpr std::size_t kMaxStreamsTogether = 32;
     static void fill_caches(std::span<SampleStream> streams);
 
 private:
