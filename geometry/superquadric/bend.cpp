@@ -44,8 +44,12 @@ Vec3d Bend::inverse(const Vec3d& q) const {
     const double a = curvature_ * s_in - 1, b = curvature_ * z_in;
     const double cm = cos_middle_, sm = sin_middle_;
     const double relative = std::atan2(b * cm + a * sm, -a * cm + b * sm);
-    const double theta = std::clamp(angle_middle_ + relative, angle_lo_, angle_hi_);
-    const SinCos at = sin_cos(theta);
+    const double unclamped = angle_middle_ + relative;
+    const double theta = std::clamp(unclamped, angle_lo_, angle_hi_);
+    // θ is the angle of (−a, b): where it is not clamped, its cosine and sine are that vector's, which takes a root
+    // and two quotients that need not wait for the arctangent, where sincos would.
+    const double rho = std::sqrt(a * a + b * b);
+    const SinCos at = theta == unclamped && rho > 0 ? SinCos{b / rho, -a / rho} : sin_cos(theta);
     return from_frame(versine(at) / curvature_ + s_in * at.cos - z_in * at.sin, dot(q, v_),
                       centre_ + (theta - at.sin) / curvature_ + s_in * at.sin + z_in * at.cos);
 }

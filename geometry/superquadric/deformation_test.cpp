@@ -305,5 +305,16 @@ TEST(SuperquadricDeformation, BendWrapsTheAxisOntoACircle) {
     EXPECT_NEAR(dot(normalize(beyond - end), Vec3d(std::sin(0.25), 0, std::cos(0.25))), 1.0, 1e-12);
 }
 
+// The bend's centre axis (a = k·s − 1 = 0 and z at the centre) has no angle: the inverse takes its cosine and sine
+// from the angle then, not from the zero vector (which gives NaN), so a field asked there stays finite.
+TEST(SuperquadricDeformation, TheBendsInverseIsFiniteOnItsCentreAxis) {
+    const Bend bend(0.5, 0, 0, {-1.5, 1.5});
+    for (double w : {-0.3, 0.0, 0.8}) {
+        const Vec3d back = bend.inverse({2, w, 0});
+        EXPECT_TRUE(std::isfinite(back.x) && std::isfinite(back.y) && std::isfinite(back.z)) << w;
+        EXPECT_EQ(back.y, w);
+    }
+}
+
 }  // namespace
 }  // namespace isotrace
