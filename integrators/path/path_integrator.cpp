@@ -215,16 +215,16 @@ std::size_t PathIntegrator::samples_traced_together(const RenderScene&) const {
 }
 
 std::string PathIntegrator::packet_description(const RenderScene&) const {
-    return std::to_string(kMaxSamplesTogether) + " samples (a pixel's, or several pixels') as paths in step, their rays " +
-           std::to_string(kLanes) + "-ray packet queries kept full as paths end";
+    return std::to_string(kMaxSamplesTogether) + " samples (a pixel's, or several pixels') as paths in step, " +
+           "their rays " + std::to_string(kLanes) + "-ray packet queries kept full as paths end";
 }
 
 // The paths of a group's samples (a pixel's, then the next pixel's) advance in step, one bounce each per round (their
 // depths stay equal), so that each round's rays are packet queries and their shadow rays others: Embree traverses
 // its tree once for a packet, which costs less than once per ray when the rays are alike, as a pixel's camera rays
-// are. Paths that end leave the group and the live ones close up, so that the packets stay full as paths end (a
-// pixel's own paths alone left packets of one to three live rays after a few bounces). Each path does what
-// radiance() does, in the same order, so its result does not depend on its companions.
+// are. Paths that end leave the group and the live ones close up, so that the packets stay full as paths end
+// (escaping paths would otherwise leave most lanes of the later rounds empty). Each path does what radiance() does,
+// in the same order, so its result does not depend on its companions.
 void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const RenderScene& scene,
                                          std::span<SampleStream> samples, std::span<PrimaryHitRecord> primary,
                                          std::span<Rgb> radiance) const {
@@ -259,7 +259,8 @@ void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const
         }
         for (std::size_t first = 0; first < casts; first += kLanes) {
             const std::size_t n = std::min<std::size_t>(kLanes, casts - first);
-            const unsigned reached = first_lanes(n) & ~scene.occluded(std::span(shadows.data() + first, n), first_lanes(n));
+            const unsigned blocked = scene.occluded(std::span(shadows.data() + first, n), first_lanes(n));
+            const unsigned reached = first_lanes(n) & ~blocked;
             for (unsigned lanes = reached; lanes; lanes &= lanes - 1)
                 add_unblocked(*paths[casting[first + std::size_t(std::countr_zero(lanes))]]);
         }

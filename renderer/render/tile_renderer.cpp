@@ -95,7 +95,8 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
                 const std::size_t count = std::min<std::size_t>(group - queued, last - first);
                 const std::span<SampleStream> added(streams.data() + queued, count);
                 for (std::size_t i = 0; i < count; ++i)
-                    added[i] = SampleStream(*loaded.sampler, {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
+                    added[i] = SampleStream(*loaded.sampler,
+                                            {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
                 SampleStream::fill_caches(added);  // the camera's block, for all of the pixel's at once
                 for (std::size_t i = queued; i < queued + count; ++i) {
                     const FilterSample offset = loaded.filter->sample(streams[i].next_2d());
