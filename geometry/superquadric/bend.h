@@ -40,6 +40,8 @@ public:
     std::string problem(const IntervalBox& input) const;
     // Bending the z-axis into an arc moves the axis a solid of revolution turns about.
     bool keeps_solids_of_revolution() const { return false; }
+    // Turning cross-sections about the centre moves their heights.
+    bool keeps_heights() const { return false; }
     // Nor does a cone about z hold the bent object.
     std::optional<ConeAboutZ> carry(const ConeAboutZ&) const { return std::nullopt; }
     // The annular sector about the bend's centre that holds the object bent, where `before` bounds it before the bend

@@ -34,7 +34,7 @@ void DeformationChain::append(const Deformation& stage) {
     sector_ = std::visit([&](const auto& s) { return s.sector(boxes_.back(), heights_, cone_); }, stage);
     if (cone_) cone_ = std::visit([&](const auto& s) { return s.carry(*cone_); }, stage);
     compute_stage_boxes();
-    if (std::holds_alternative<Bend>(stage)) heights_ = boxes_.back().z;  // twists and tapers keep every height
+    if (!std::visit([](const auto& s) { return s.keeps_heights(); }, stage)) heights_ = boxes_.back().z;
     // The cone's radius must stay positive over the box, where rays are asked.
     const Interval z = boxes_.back().z;
     if (cone_ && !(cone_->radius_scale(z.lo) > 0 && cone_->radius_scale(z.hi) > 0)) cone_.reset();

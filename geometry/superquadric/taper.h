@@ -33,6 +33,8 @@ public:
     std::string problem(const IntervalBox& input) const;
     // Scaling the cross-sections by height changes a solid of revolution's profile.
     bool keeps_solids_of_revolution() const { return false; }
+    // Scaling x and y keeps every point's height.
+    bool keeps_heights() const { return true; }
     // A cylinder that holds the object before the taper, scaled by the larger of the two scales at every height
     // (linear in z, as both are, and equal to them at the bottom): a cone that holds the tapered object. A cone
     // would become a quadratic profile: nothing.

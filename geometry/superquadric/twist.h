@@ -41,6 +41,8 @@ public:
     std::string problem(const IntervalBox&) const { return {}; }
     // Turning about z maps every solid of revolution about z onto itself.
     bool keeps_solids_of_revolution() const { return true; }
+    // A turn about z keeps every point's height.
+    bool keeps_heights() const { return true; }
     // A cone that holds the object before the twist, made round (its larger radius at every height): it holds the
     // twisted object.
     std::optional<ConeAboutZ> carry(const ConeAboutZ& cone) const {
