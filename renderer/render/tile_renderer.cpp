@@ -94,9 +94,9 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
                 if (flags.raised()) return taken;
                 const std::size_t count = std::min<std::size_t>(group - queued, last - first);
                 const std::span<SampleStream> added(streams.data() + queued, count);
+                const PixelSampleContext pixel = loaded.sampler->context({std::uint32_t(x), std::uint32_t(y), first});
                 for (std::size_t i = 0; i < count; ++i)
-                    added[i] = SampleStream(*loaded.sampler,
-                                            {std::uint32_t(x), std::uint32_t(y), first + std::uint32_t(i)});
+                    added[i] = SampleStream::of_context(*loaded.sampler, pixel.of_sample(first + std::uint32_t(i)));
                 SampleStream::fill_caches(added);  // the camera's block, for all of the pixel's at once
                 for (std::size_t i = queued; i < queued + count; ++i) {
                     const FilterSample offset = loaded.filter->sample(streams[i].next_2d());

@@ -13,6 +13,10 @@ PixelSampleContext Sampler::context(const PixelSampleKey& key) const {
     return {key, hash_combine(seed_, key.x, key.y), reverse_bits(key.index)};
 }
 
+PixelSampleContext PixelSampleContext::of_sample(uint32_t index) const {
+    return {{key.x, key.y, index}, pixel_hash, reverse_bits(index)};
+}
+
 SampleStream::SampleStream(const Sampler& sampler, PixelSampleKey key)
     : sampler_(&sampler), context_(sampler.context(key)) {}
 

@@ -17,6 +17,9 @@ struct PixelSampleContext {
     PixelSampleKey key;
     uint64_t pixel_hash;      // hash_combine(seed, x, y)
     uint32_t reversed_index;  // reverse_bits(key.index)
+
+    // The context of the same pixel's sample `index`, without hashing the pixel again.
+    PixelSampleContext of_sample(uint32_t index) const;
 };
 
 class Sampler {
@@ -59,6 +62,13 @@ class SampleStream {
 public:
     SampleStream() = default;
     SampleStream(const Sampler& sampler, PixelSampleKey key);
+    // The stream of the sample `context` names (Sampler::context, PixelSampleContext::of_sample).
+    static SampleStream of_context(const Sampler& sampler, const PixelSampleContext& context) {
+        SampleStream stream;
+        stream.sampler_ = &sampler;
+        stream.context_ = context;
+        return stream;
+    }
 
     float next_1d() { return value(dimension_++); }
     // Two consecutive dimensions starting at an even dimension: if the counter is odd, one dimension is

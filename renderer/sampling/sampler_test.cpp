@@ -27,6 +27,21 @@ TEST(SampleStream, HandsOutConsecutiveDimensions) {
     EXPECT_EQ(stream.dimension(), 4u);
 }
 
+TEST(PixelSampleContext, AnotherSampleOfThePixelIsThatSamplesOwnContext) {
+    const SobolSampler sampler(7);
+    const PixelSampleContext pixel = sampler.context({12, 34, 5});
+    for (uint32_t index : {0u, 1u, 5u, 6u, 31u, 1000u, 0xffffffffu}) {
+        const PixelSampleContext shared = pixel.of_sample(index), own = sampler.context({12, 34, index});
+        EXPECT_EQ(shared.key.x, own.key.x);
+        EXPECT_EQ(shared.key.y, own.key.y);
+        EXPECT_EQ(shared.key.index, own.key.index);
+        EXPECT_EQ(shared.pixel_hash, own.pixel_hash);
+        EXPECT_EQ(shared.reversed_index, own.reversed_index) << index;
+        SampleStream from_shared = SampleStream::of_context(sampler, shared), from_key(sampler, own.key);
+        for (int i = 0; i < 12; ++i) EXPECT_EQ(from_shared.next_1d(), from_key.next_1d()) << index << " " << i;
+    }
+}
+
 TEST(SampleStream, PairsStartOnEvenDimensions) {
     const DimensionEchoSampler sampler;
     SampleStream stream(sampler, {0, 0, 0});
