@@ -18,7 +18,7 @@ PixelSampleContext PixelSampleContext::of_sample(uint32_t index) const {
 }
 
 SampleStream::SampleStream(const Sampler& sampler, PixelSampleKey key)
-    : sampler_(&sampler), context_(sampler.context(key)) {}
+    : SampleStream(of_context(sampler, sampler.context(key))) {}
 
 void SampleStream::fill_caches(std::span<SampleStream> streams) {
     std::array<PixelSampleContext, kMaxStreamsTogether> contexts;
