@@ -83,6 +83,7 @@ Superellipsoid::Superellipsoid(const Vec3d& radii, double north_south, double ea
     const QuadricScales wide = scales_of(std::max(radii.x, radii.y), std::max(radii.x, radii.y)),
                         narrow = scales_of(std::min(radii.x, radii.y), std::min(radii.x, radii.y));
     round_about_z_ = {wide.cylinder, wide.ellipsoid, narrow.inscribed};
+    enclosing_polytope_ = EnclosingPolytope(radii, p1_.p, p2_.p);
 }
 
 double Superellipsoid::gauge(const Vec3d& p) const {

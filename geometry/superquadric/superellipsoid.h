@@ -14,6 +14,7 @@
 #include "geometry/field/difference_of_convex.h"
 #include "geometry/polynomial/polynomial.h"  // ValueAndDerivative
 #include "geometry/superquadric/cone_about_z.h"
+#include "geometry/superquadric/enclosing_polytope.h"
 #include "geometry/superquadric/norm_exponent.h"
 #include "renderer/math/interval.h"
 #include "renderer/math/vec3.h"
@@ -67,6 +68,9 @@ public:
     // gauge is below 1 throughout it); nothing where the segment misses it.
     std::optional<Interval> inscribed_stretch(const Vec3d& start, const Vec3d& direction, double length,
                                               QuadricForm form = QuadricForm::AlongRadii) const;
+    // Planes that hold the solid where an exponent is above 1 (none otherwise): a segment that misses them holds no
+    // crossing.
+    const EnclosingPolytope& enclosing_polytope() const { return enclosing_polytope_; }
     // The elliptic cylinder of enclosing_stretch, for deformations to carry.
     ConeAboutZ enclosing_cylinder() const { return {along_radii_.cylinder.x, along_radii_.cylinder.y, 1, 0}; }
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
@@ -132,6 +136,7 @@ private:
         Vec3d cylinder, ellipsoid, inscribed;
     };
     QuadricScales along_radii_, round_about_z_;
+    EnclosingPolytope enclosing_polytope_;
     const QuadricScales& scales(QuadricForm form) const {
         return form == QuadricForm::AlongRadii ? along_radii_ : round_about_z_;
     }

@@ -145,6 +145,12 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         ++work.search.evaluations;
         if (start.value > 0 && start.derivative >= 0) return;
     }
+    // A star-like or pinched shape fills little of its quadrics: a ray that enters its box and passes beside its
+    // planes is settled before them. (One that starts within the box leaves the shape's surface, as a rule: it
+    // starts within the planes too.)
+    if (deformation_.empty() && clip->enter_axis >= 0 &&
+        shape_.enclosing_polytope().misses(o + d * t0, d, t1 - t0))
+        return;
     // Two quadrics hold an undeformed solid (Superellipsoid::enclosing_stretch): a ray that passes beside them is
     // settled at once, and convex shapes' marches start where it enters and leaves them, closer to its crossings than
     // the box's faces. The other shapes take them for occlusion queries only: their searches cut the ray at the
