@@ -1,5 +1,6 @@
 // Scene plugin "superquadric": one superquadric given inline, or a "superquadrics" list (one Embree primitive
 // each), each with its semi-axes, exponents, placement and list of Barr deformations (docs/scene-format.md).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -98,9 +99,22 @@ Superquadric parse_superquadric(const SceneNode& node) {
     return result;
 }
 
+// Each superquadric's record (its shell's block table even when undeformed) is charged before the list is made: a
+// scene file's short entries would otherwise stand for far more memory than the file's text.
+void charge_records(const SceneNode& node, std::size_t count, const char* field) {
+    try {
+        node.context().memory->charge(saturating_product({count, sizeof(Superquadric)}),
+                                      std::to_string(count) + " superquadric record(s)");
+    } catch (const InputError& error) {
+        node.fail_at(field, error.problem());
+    }
+}
+
 std::unique_ptr<Shape> create(const SceneNode& node) {
     std::vector<Superquadric> superquadrics;
     const std::vector<SceneNode> list = node.object_array("superquadrics");
+    charge_records(node, std::max<std::size_t>(1, list.size()), list.empty() ? "type" : "superquadrics");
+    superquadrics.reserve(std::max<std::size_t>(1, list.size()));
     if (!list.empty()) {
         for (const char* key : {"radii", "exponents", "center", "rotate", "deform"})
             if (node.has(key)) node.fail_at(key, "give the fields inside \"superquadrics\" or a single superquadric, not both");

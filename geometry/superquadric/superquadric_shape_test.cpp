@@ -371,7 +371,8 @@ TEST(SuperquadricScene, BadParametersAreInputErrorsNamingTheField) {
 }
 
 // A deformed superquadric's surface shell grows while rays are traced: the loader charges its largest size before
-// any work, so a scene of many deformed shapes that could outgrow the budget is refused at its file and field.
+// any work, so a scene of many deformed shapes that could outgrow the budget is refused at its file and field. Every
+// superquadric's record is charged too, before the list is made.
 TEST(SuperquadricScene, DeformedShapesChargeTheirLargestShellToTheMemoryBudget) {
     const auto load = [](const std::string& json, std::uint64_t limit) {
         const JsonValue value = parse_json(json, "shape.json");
@@ -384,12 +385,22 @@ TEST(SuperquadricScene, DeformedShapesChargeTheirLargestShellToTheMemoryBudget) 
     const std::string undeformed = R"({"type": "superquadric", "superquadrics": [{}, {}, {}]})";
     const std::string twisted = R"({"type": "superquadric", "superquadrics": [{"deform": [{"twist": 90}]},
         {"deform": [{"twist": 90}]}, {"deform": [{"twist": 90}]}]})";
-    EXPECT_EQ(load(undeformed, 1 << 20)->charged_bytes(), 0u);
-    EXPECT_EQ(load(twisted, 4 * SurfaceShell::kMostHeapBytes)->charged_bytes(), 3 * SurfaceShell::kMostHeapBytes);
+    constexpr std::uint64_t kRecord = sizeof(Superquadric);
+    EXPECT_EQ(load(undeformed, 1 << 20)->charged_bytes(), 3 * kRecord);
+    EXPECT_EQ(load(R"({"type": "superquadric"})", 1 << 20)->charged_bytes(), kRecord);
+    EXPECT_EQ(load(twisted, 4 * SurfaceShell::kMostHeapBytes)->charged_bytes(),
+              3 * kRecord + 3 * SurfaceShell::kMostHeapBytes);
     const std::string message =
-        mesh_test::input_error_message([&] { load(twisted, 2 * SurfaceShell::kMostHeapBytes + 1); });
+        mesh_test::input_error_message([&] { load(twisted, 3 * kRecord + 2 * SurfaceShell::kMostHeapBytes + 1); });
     EXPECT_NE(message.find("shape.superquadrics[2].deform"), std::string::npos) << message;
     EXPECT_NE(message.find("surface shell"), std::string::npos) << message;
+    // A long list of short entries is refused before its records are made.
+    std::string many = R"({"type": "superquadric", "superquadrics": [{})";
+    for (int i = 1; i < 1000; ++i) many += ", {}";
+    many += "]}";
+    const std::string too_many = mesh_test::input_error_message([&] { load(many, 100 * kRecord); });
+    EXPECT_NE(too_many.find("shape.superquadrics"), std::string::npos) << too_many;
+    EXPECT_NE(too_many.find("1000 superquadric record"), std::string::npos) << too_many;
 }
 
 // A superquadric tells its first span from its entry and a point past it that the ray reaches inside: the entry bit
