@@ -23,7 +23,9 @@ public:
     // Camera-to-world for a camera at `eye` looking at `target` (camera looks down -z, y up).
     static Transform look_at(const Vec3d& eye, const Vec3d& target, const Vec3d& up);
 
-    const Matrix& matrix() const { return m_; }
+    const Matrix& matrix() const& { return m_; }
+    // Of a temporary, a copy: a reference into it would dangle once the statement ends.
+    Matrix matrix() const&& { return m_; }
     Transform inverse() const;
     Transform operator*(const Transform& rhs) const;  // (A * B)(p) = A(B(p))
 

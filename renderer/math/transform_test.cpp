@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 namespace isotrace {
 namespace {
@@ -248,6 +250,18 @@ TEST(Transform, FloatOverloadsMatchDouble) {
     EXPECT_EQ(a.point(p), Vec3f(a.point(pd)));
     EXPECT_EQ(a.vector(p), Vec3f(a.vector(pd)));
     EXPECT_EQ(a.normal(p), Vec3f(a.normal(pd)));
+}
+
+// A temporary's matrix is handed out as a copy: `const Matrix& m = t.inverse().matrix();` once bound a reference
+// into the dead temporary, which clang's builds happened to read intact and GCC's read as zeros (every placement
+// refused as singular).
+TEST(Transform, AMatrixOfATemporaryIsACopy) {
+    static_assert(std::is_same_v<decltype(std::declval<Transform>().matrix()), Transform::Matrix>);
+    static_assert(std::is_same_v<decltype(std::declval<const Transform&>().matrix()), const Transform::Matrix&>);
+    const Transform to_world = Transform::translate({1, 2, 3}) * Transform::scale({2, 2, 2});
+    const Transform::Matrix& inverse = to_world.inverse().matrix();  // lifetime-extended copy
+    EXPECT_EQ(inverse, to_world.inverse().matrix());
+    EXPECT_EQ(inverse[0][0], 0.5);
 }
 
 }  // namespace

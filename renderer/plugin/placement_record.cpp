@@ -17,7 +17,9 @@ Transform::Matrix promoted(const std::array<float, 12>& rows) {
 
 std::optional<PlacementRecord> placement_record(const Transform& to_world, std::uint32_t variant) {
     PlacementRecord record;
-    const Transform::Matrix& inverse = to_world.inverse().matrix();
+    // Held by value: a reference to the matrix of the temporary inverse() returns dangles once the statement ends.
+    const Transform from_world = to_world.inverse();
+    const Transform::Matrix& inverse = from_world.matrix();
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 4; ++j) record.from_world[std::size_t(i * 4 + j)] = float(inverse[i][j]);
     record.variant = variant;
