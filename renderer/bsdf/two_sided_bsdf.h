@@ -23,8 +23,11 @@ public:
         if (!same_hemisphere(wo, wi)) return 0;
         return wo.z > 0 ? model().pdf_upper(wo, wi) : model().pdf_upper(mirror_z(wo), mirror_z(wi));
     }
-    std::optional<BsdfSample> sample(const Vec3f& wo, float u_lobe, std::array<float, 2> u,
-                                     TransportMode = TransportMode::Radiance) const {
+    // Inlined into its caller (the path tracer's bounce): called, it returns the sample through memory, written a
+    // field at a time, and the caller's one load of both flags with their padding waits until those byte stores
+    // have retired (a failed store forwarding); inlined, the sample stays in registers.
+    [[gnu::always_inline]] std::optional<BsdfSample> sample(const Vec3f& wo, float u_lobe, std::array<float, 2> u,
+                                                            TransportMode = TransportMode::Radiance) const {
         if (wo.z == 0) return std::nullopt;
         const bool below = wo.z < 0;
         std::optional<BsdfSample> sample = model().sample_upper(below ? mirror_z(wo) : wo, u_lobe, u);
