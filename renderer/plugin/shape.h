@@ -26,8 +26,8 @@ struct LocalShading {
     Vec3f normal;                 // shading normal, unit length
     std::array<float, 2> uv{0, 0};
     std::uint32_t part = 0;       // composite shapes: the part hit, an index into Shape::part_materials()
-    Vec3f dpdu, dpdv;             // derivatives of the point along uv, where the shape has uv (else zero)
-    MaterialBlend blend;          // parts whose materials blend at the hit (Shape::part_materials indices)
+    Vec3f dpdu{}, dpdv{};         // derivatives of the point along uv, where the shape has uv (else zero)
+    MaterialBlend blend{};        // parts whose materials blend at the hit (Shape::part_materials indices)
 };
 
 // The material a part of a composite shape names (a CSG child's "material"), and where the name is written, so

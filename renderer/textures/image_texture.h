@@ -38,7 +38,7 @@ enum class ImageContent {
 struct ImageLoadOptions {
     ImageContent content = ImageContent::Colour;
     bool mip_levels = false;  // build the reduced levels, for lookups with a footprint
-    TextureSetUpMemory set_up;
+    TextureSetUpMemory set_up{};
 };
 
 class ImageTexture {

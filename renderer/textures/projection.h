@@ -32,7 +32,7 @@ struct ProjectionSettings {
     int axis = 2;  // planar, spherical and cylindrical: the axis the mapping looks along or turns about
     float sharpness = 4;  // triplanar: the weights are |n_i|^sharpness, normalised
     bool object_space = true;
-    Transform placement;  // the texture's placement in its space (identity: none)
+    Transform placement{};  // the texture's placement in its space (identity: none)
 };
 
 class Projection {
