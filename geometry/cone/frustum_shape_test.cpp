@@ -346,7 +346,7 @@ TEST(FrustumShape, UvDerivativesAreThoseOfTheParametrisation) {
             EXPECT_NEAR(length(Vec3d(s.dpdu) - dpdu), 0, 1e-4 * length(dpdu)) << int(part) << " " << i;
             EXPECT_NEAR(length(Vec3d(s.dpdv) - dpdv), 0, 1e-4 * length(dpdv)) << int(part) << " " << i;
             // Right-handed with the outward normal on the side: dpdu × dpdv points out.
-            if (part == FrustumPart::Side) EXPECT_GT(dot(cross(dpdu, dpdv), frustum_normal(f, part, p)), 0);
+            if (part == FrustumPart::Side) { EXPECT_GT(dot(cross(dpdu, dpdv), frustum_normal(f, part, p)), 0); }
         }
     }
 }

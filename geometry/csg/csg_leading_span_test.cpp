@@ -35,7 +35,7 @@ TEST(CsgLeadingSpan, OpensWithTheFullCombinationsFirstSpanAndEndsNoLater) {
             unions[k]->inside_spans(origin, direction, t_min, 1e30, spans, scratch);
             const LeadingSpan lead = unions[k]->leading_span(origin, direction, t_min, 1e30, scratch);
             const std::string what = "union " + std::to_string(k) + " ray " + std::to_string(i);
-            if (lead.outcome == LeadingSpan::Outcome::None) EXPECT_TRUE(spans.empty()) << what;
+            if (lead.outcome == LeadingSpan::Outcome::None) { EXPECT_TRUE(spans.empty()) << what; }
             if (!lead.found()) continue;
             ++found;
             ASSERT_FALSE(spans.empty()) << what;

@@ -45,7 +45,7 @@ TEST(DifferenceOfConvex, BoundsCloseInQuadratically) {
         const Interval range = difference_of_convex_range(a, at(a), b, at(b));
         const double excess = range.hi - range.lo - b * b;  // φ's own range is [−b², 0]
         EXPECT_GT(excess, 0);
-        if (halvings > 0) EXPECT_NEAR(excess / previous, 0.25, 1e-9) << halvings;
+        if (halvings > 0) { EXPECT_NEAR(excess / previous, 0.25, 1e-9) << halvings; }
         previous = excess;
     }
 }

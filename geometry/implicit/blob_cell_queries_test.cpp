@@ -59,7 +59,7 @@ int expect_same_bits(const BlobGroup& group, std::uint64_t seed) {
                 EXPECT_EQ(a->crossing.entering, b->crossing.entering);
                 EXPECT_EQ(a->crossing.element, b->crossing.element);
                 EXPECT_EQ(a->normal.has_value(), b->normal.has_value());
-                if (a->normal && b->normal) EXPECT_TRUE(same_bits(*a->normal, *b->normal));
+                if (a->normal && b->normal) { EXPECT_TRUE(same_bits(*a->normal, *b->normal)); }
             }
             EXPECT_EQ(baseline.occluded_in_cell(group, cell, origin, direction, 0, 10, work_a),
                       chosen.occluded_in_cell(group, cell, origin, direction, 0, 10, work_b));

@@ -102,7 +102,7 @@ TEST(SuperquadricNormExponent, PowersAndRootsOfAnyArgumentAreWithinAFewUlps) {
             const double r = unit(random);
             const long double power = std::pow((long double)r, (long double)e.p);
             const double allowed = e.whole > 0 ? e.p - 1 : e.tabulated ? 6.0 : 1.0;
-            if (power > 1e-300L) EXPECT_LE(ulps(e.unit_power(r), power), allowed) << e.p << " " << r;
+            if (power > 1e-300L) { EXPECT_LE(ulps(e.unit_power(r), power), allowed) << e.p << " " << r; }
             EXPECT_LE(ulps(e.any_root(r), std::pow((long double)r, (long double)e.inverse)), 1.0) << e.p << " " << r;
         }
         EXPECT_EQ(e.unit_power(0), 0);

@@ -286,7 +286,7 @@ TEST(SuperquadricSuperellipsoid, NormalsAreTheGradientsDirection) {
             int unbounded = 0, axis_of = 0;
             for (int axis = 0; axis < 3; ++axis)
                 if (std::isnan(double(gradient[axis]))) ++unbounded, axis_of = axis;
-            if (unbounded == 1) EXPECT_EQ(std::abs(n[axis_of]), max_component(abs(n))) << i;
+            if (unbounded == 1) { EXPECT_EQ(std::abs(n[axis_of]), max_component(abs(n))) << i; }
             ++limits;
             continue;
         }

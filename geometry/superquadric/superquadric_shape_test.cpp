@@ -464,7 +464,7 @@ TEST(SuperquadricSpans, NormalsAreComputedForTheEndAskedAbout) {
     ASSERT_FALSE(spans.empty());
     for (const InsideSpan& span : spans)
         for (const BoundaryPoint& end : {span.enter, span.exit})
-            if (end.on_surface()) EXPECT_EQ(shape.boundary_normal(o, d, end), star.normal(o + d * end.t));
+            if (end.on_surface()) { EXPECT_EQ(shape.boundary_normal(o, d, end), star.normal(o + d * end.t)); }
 
     // A ball minus the unit sphere stretched by 1.5 along y: the cavity's wall faces into the cavity.
     std::vector<CsgChild> children;

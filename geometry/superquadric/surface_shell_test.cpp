@@ -61,7 +61,7 @@ std::vector<RunStretch> runs_of(const SurfaceShell& shell, const Vec3d& o, const
                          EXPECT_GT(run.size(), 0u);
                          for (std::size_t k = 0; k < run.size(); ++k) {
                              EXPECT_LE(run.start(k), run.end(k));
-                             if (k > 0) EXPECT_EQ(run.start(k), run.end(k - 1));
+                             if (k > 0) { EXPECT_EQ(run.start(k), run.end(k - 1)); }
                          }
                          runs.push_back({run.lo(), run.hi()});
                          return true;

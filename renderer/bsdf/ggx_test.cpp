@@ -118,12 +118,12 @@ TEST(Ggx, TinyAlphasSampleFinitelyAndKeepTheirEnergy) {
                 for (std::size_t i = 0; i < 2000; ++i) {
                     const BsdfRandom r = test_support::bsdf_random(i);
                     const auto sample = bsdf.sample(wo, r.u_lobe, r.u, TransportMode::Radiance);
-                    if (sample) ASSERT_LT(sample->pdf * sample->pdf, 1e32f) << alpha << " " << theta;
+                    if (sample) { ASSERT_LT(sample->pdf * sample->pdf, 1e32f) << alpha << " " << theta; }
                 }
             }
             const auto albedo = test_support::estimate_albedo(SurfaceBsdf(conductor), wo, 2000);
             EXPECT_LE(albedo.mean.r, 1.0f + 1e-4f) << alpha << " " << theta;
-            if (theta < 89) EXPECT_GT(albedo.mean.r, 0.99f) << alpha << " " << theta;  // a mirror's, nearly all
+            if (theta < 89) { EXPECT_GT(albedo.mean.r, 0.99f) << alpha << " " << theta; }  // a mirror's, nearly all
         }
     }
 }

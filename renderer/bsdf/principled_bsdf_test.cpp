@@ -244,7 +244,7 @@ TEST(PrincipledBsdf, TransmissionObeysGeneralisedReciprocity) {
             EXPECT_NEAR(lhs, rhs, relative * std::max(lhs, rhs) + 1e-7f) << c.name << " " << i;
             EXPECT_NEAR(bsdf.eval(a, b, TransportMode::Importance).g, ba.g, relative * ba.g + 1e-7f) << c.name << " " << i;
         }
-        if (c.parameters.roughness > 0) EXPECT_GT(transmissions, 100) << c.name;
+        if (c.parameters.roughness > 0) { EXPECT_GT(transmissions, 100) << c.name; }
     }
 }
 

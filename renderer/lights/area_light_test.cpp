@@ -123,7 +123,7 @@ TEST(AreaLight, RectangleLightSampledBySolidAngleMatchesTheClosedFormWithLessVar
         const Estimate area = estimate_irradiance(area_light, point, {0, 1, 0}, 50000);
         const double joint = std::hypot(solid_angle.standard_error, area.standard_error);
         EXPECT_NEAR(solid_angle.mean, area.mean, 3 * joint) << point.x << " " << point.y;
-        if (point.y == 0) EXPECT_NEAR(solid_angle.mean, square_irradiance(), 3 * solid_angle.standard_error);
+        if (point.y == 0) { EXPECT_NEAR(solid_angle.mean, square_irradiance(), 3 * solid_angle.standard_error); }
         // Only cos θ at the receiver varies under solid-angle sampling; by area, 1/d² and cos at the light too.
         EXPECT_LT(solid_angle.standard_error, 0.7 * area.standard_error) << point.y;
     }
@@ -186,7 +186,7 @@ TEST(AreaLight, RectangleSamplePdfEqualsPdfBySolidAngleAndByArea) {
             ASSERT_GT(s.pdf, 0.0f);
             EXPECT_NEAR((point + s.direction * s.distance).y, kHeight, 2e-4f * s.distance);
             EXPECT_NEAR(light.pdf(point, s.direction, s.distance, {0, -1, 0}), s.pdf, 1e-4f * s.pdf);
-            if (by_solid_angle) EXPECT_EQ(s.pdf, rectangle.solid_angle_pdf(point));
+            if (by_solid_angle) { EXPECT_EQ(s.pdf, rectangle.solid_angle_pdf(point)); }
         }
     }
 }

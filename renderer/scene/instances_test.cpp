@@ -270,7 +270,7 @@ TEST_F(Instances, PlacementsCostOneCopyAndAHundredBytesEach) {
         EXPECT_LT(double(after.heap - before.heap), allowed);
         // The resident pages also move by what the allocators keep around (a few hundred kilobytes): only many
         // placements make that small beside them.
-        if (count > 100000) EXPECT_LT(double(after.resident - before.resident), allowed);
+        if (count > 100000) { EXPECT_LT(double(after.resident - before.resident), allowed); }
     }
 }
 
