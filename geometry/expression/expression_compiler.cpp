@@ -139,8 +139,8 @@ private:
     }
     double require_constant(const Value& v, const std::string& what) const {
         require_scalar(v, what);
-        const double* c = builder_.constant_value(v.slots[0]);
-        if (c == nullptr) fail(v.offset, what + " must be a constant (numbers and parameters)");
+        const std::optional<double> c = builder_.constant_value(v.slots[0]);
+        if (!c) fail(v.offset, what + " must be a constant (numbers and parameters)");
         return *c;
     }
     double constant_between(const Value& v, const std::string& what, double low, double high, bool integer) const {
@@ -197,9 +197,9 @@ private:
 
     // Whole constant exponents become multiplications; others exp(b log a), under log's rule.
     Value raise(const Value& base, const Value& exponent, std::size_t offset) {
-        const double* n = exponent.vector ? nullptr : builder_.constant_value(exponent.slots[0]);
+        const std::optional<double> n = exponent.vector ? std::nullopt : builder_.constant_value(exponent.slots[0]);
         constexpr double kLargestWholeExponent = 1 << 20;
-        if (n != nullptr && *n == std::floor(*n) && std::abs(*n) <= kLargestWholeExponent) {
+        if (n && *n == std::floor(*n) && std::abs(*n) <= kLargestWholeExponent) {
             const int whole = static_cast<int>(std::abs(*n));
             return elementwise({base}, offset, [&](const int* s) {
                 int power = whole == 0 ? builder_.constant(1)

@@ -42,8 +42,9 @@ int operand_count(Op op) {
     }
 }
 
-const double* TapeBuilder::constant_value(int slot) const {
-    return is_constant_[static_cast<std::size_t>(slot)] ? &tape_.code[static_cast<std::size_t>(slot)].constant : nullptr;
+std::optional<double> TapeBuilder::constant_value(int slot) const {
+    if (!is_constant_[static_cast<std::size_t>(slot)]) return std::nullopt;
+    return tape_.code[static_cast<std::size_t>(slot)].constant;
 }
 
 int TapeBuilder::constant(double value) { return emit({Op::Constant, 0, 0, 0, 0, value}, 0); }
@@ -78,9 +79,8 @@ int TapeBuilder::emit(const Instruction& given, std::size_t offset) {
 
     // x + 0, x − 0, x·1 and x/1 are x (vector arithmetic makes many: p - vec(0, 0.35, 0)).
     if (operands == 2) {
-        const double* left = constant_value(in.a);
-        const double* right = constant_value(in.b);
-        const auto is = [](const double* c, double v) { return c != nullptr && *c == v; };
+        const std::optional<double> left = constant_value(in.a), right = constant_value(in.b);
+        const auto is = [](const std::optional<double>& c, double v) { return c && *c == v; };
         if (((in.op == Op::Add || in.op == Op::Sub) && is(right, 0)) || ((in.op == Op::Mul || in.op == Op::Div) && is(right, 1)))
             return in.a;
         if ((in.op == Op::Add && is(left, 0)) || (in.op == Op::Mul && is(left, 1))) return in.b;

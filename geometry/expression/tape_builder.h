@@ -4,6 +4,7 @@
 // subexpressions), and finish() drops the instructions the value does not depend on.
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -21,8 +22,8 @@ public:
     int constant(double value);
     int unary(Op op, int a, std::size_t offset) { return emit({op, a}, offset); }
     int binary(Op op, int a, int b, std::size_t offset) { return emit({op, a, b}, offset); }
-    // The slot's value when it holds a constant.
-    const double* constant_value(int slot) const;
+    // The slot's value when it holds a constant: a copy, since emitting moves the tape.
+    std::optional<double> constant_value(int slot) const;
 
     int add_noise(const NoiseTerm& term);
     std::size_t noise_count() const { return tape_.noises.size(); }
