@@ -223,7 +223,13 @@ std::uint64_t scene_bytes(const BuildStatistics& build) {
 }
 
 // What the process holds: the heap in use (malloc's own count) and the resident pages (Embree maps its large blocks
-// itself, past malloc), each after returning the heap's free pages.
+// itself, past malloc), each after returning the heap's free pages. Not under AddressSanitizer, whose allocator
+// keeps freed blocks in quarantine and leaves malloc's count empty.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kProcessBytesTell = false;
+#else
+constexpr bool kProcessBytesTell = true;
+#endif
 struct ProcessBytes {
     std::int64_t heap = 0, resident = 0;
     static ProcessBytes now() {
@@ -267,6 +273,7 @@ TEST_F(Instances, PlacementsCostOneCopyAndAHundredBytesEach) {
                     double(after.resident - before.resident) / double(count));
         EXPECT_EQ(build.shape_bytes, one->scene->build_statistics().shape_bytes);
         EXPECT_LT(double(all), allowed);
+        if (!kProcessBytesTell) continue;
         EXPECT_LT(double(after.heap - before.heap), allowed);
         // The resident pages also move by what the allocators keep around (a few hundred kilobytes): only many
         // placements make that small beside them.
