@@ -4,6 +4,9 @@
 # Instrumented builds run 3-15 times slower: the scripts' bounds on waiting for an event are multiplied by this
 # (CTest sets it from cmake/Sanitizers.cmake, like its own time limits; 1 when a script is run by hand).
 time_scale=${ISOTRACE_TEST_TIMEOUT_SCALE:-1}
+# 1 in instrumented builds (cmake/Sanitizers.cmake): their shadow memory and quarantine are not isotrace's, so a
+# run's peak resident memory is not held to isotrace's bounds there.
+instrumented=${ISOTRACE_TEST_INSTRUMENTED:-0}
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/isotrace-test.XXXXXX")
 trap 'rm -rf "$work"' EXIT
