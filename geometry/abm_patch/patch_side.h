@@ -15,7 +15,7 @@ struct PatchSide {
     std::shared_ptr<const SpaceCurve> curve;
     bool reversed = false;
     std::string name;  // for messages: "curve 2" or the scene's curve name
-    std::shared_ptr<const CrossTangent> ribbon;  // in the side's own parameter; none: the side's attribute is c
+    std::shared_ptr<const CrossTangent> ribbon{};  // in the side's own parameter; none: the side's attribute is c
 
     Vec3d point(double t) const { return (*curve)(reversed ? 1 - t : t); }
     // The point and the derivative along the side's own direction.

@@ -199,7 +199,9 @@ TEST(Frustum, KnownAnswersOfACone) {
     ASSERT_EQ(c.count, 2);
     EXPECT_DOUBLE_EQ(c.crossing[0].t, 2);
     // The apex is reported as the top (a cap of radius 0): its shading has finite uv.
-    const LocalShading apex = FrustumShape("cone", cone).shading(RTCHit{.primID = unsigned(c.crossing[0].part)}, Vec3f(0, 1, 0), {0, 1, 0});
+    RTCHit at_apex{};
+    at_apex.primID = unsigned(c.crossing[0].part);
+    const LocalShading apex = FrustumShape("cone", cone).shading(at_apex, Vec3f(0, 1, 0), {0, 1, 0});
     EXPECT_TRUE(std::isfinite(apex.uv[0]) && std::isfinite(apex.uv[1]));
     EXPECT_TRUE(std::isfinite(apex.dpdu.x) && std::isfinite(apex.dpdv.x));
     EXPECT_DOUBLE_EQ(c.crossing[1].t, 3);
