@@ -250,12 +250,10 @@ void PathIntegrator::radiance_of_samples(std::span<const Ray> camera_rays, const
         std::size_t casts = 0;
         for (std::size_t slot = 0; slot < live; ++slot) {
             Path& path = *paths[slot];
-            continuing[slot] = bounce(path, rays[slot], shadows[slot], hits[slot], scene, samples[sample_of[slot]],
+            // The shadow rays side by side, in slot order: each bounce writes its own after those before it.
+            continuing[slot] = bounce(path, rays[slot], shadows[casts], hits[slot], scene, samples[sample_of[slot]],
                                       primary[sample_of[slot]]);
-            if (path.casts_shadow) {
-                shadows[casts] = shadows[slot];  // the shadow rays side by side, in slot order
-                casting[casts++] = slot;
-            }
+            if (path.casts_shadow) casting[casts++] = slot;
         }
         for (std::size_t first = 0; first < casts; first += kLanes) {
             const std::size_t n = std::min<std::size_t>(kLanes, casts - first);

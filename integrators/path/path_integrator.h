@@ -35,8 +35,8 @@ private:
     PathSettings settings_;
 
     // One bounce of `path` at what its ray `ray` found: gathers emission there (or escaped light), sets `shadow` to
-    // the shadow ray of next-event estimation (when Path::casts_shadow), and samples the next ray into `ray`; false
-    // when the path ends there.
+    // the shadow ray of next-event estimation when Path::casts_shadow (and leaves it alone otherwise), and samples the
+    // next ray into `ray`; false when the path ends there.
     bool bounce(Path& path, Ray& ray, Ray& shadow, const std::optional<SurfaceHit>& found, const RenderScene& scene,
                 SampleStream& samples, PrimaryHitRecord& primary) const;
     // Adds what the bounce's shadow ray brings, once the caller found it unblocked.
