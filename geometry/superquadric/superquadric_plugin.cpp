@@ -61,15 +61,6 @@ Deformation parse_deformation(const SceneNode& entry, double half_height, const 
     entry.fail("unknown deformation");
 }
 
-// Charges `bytes` for `what` to the scene's memory budget, or fails at the node's `field`.
-void charge(const SceneNode& node, const char* field, std::uint64_t bytes, const std::string& what) {
-    try {
-        node.context().memory->charge(bytes, what);
-    } catch (const InputError& error) {
-        node.fail_at(field, error.problem());
-    }
-}
-
 Superquadric parse_superquadric(const SceneNode& node) {
     Vec3d radii{1, 1, 1};
     if (node.has("radii")) {
@@ -96,7 +87,7 @@ Superquadric parse_superquadric(const SceneNode& node) {
     }
     // A deformed shape's surface shell grows as rays find its blocks: charged at its largest before any is found.
     if (!chain.empty())
-        charge(node, "deform", SurfaceShell::kMostHeapBytes, "the surface shell of a deformed superquadric");
+        node.charge_at("deform", SurfaceShell::kMostHeapBytes, "the surface shell of a deformed superquadric");
     Superquadric result(shape, std::move(chain), placement);
     const IntervalBox b = result.bounds();
     if (std::max(max_component(abs(b.lower())), max_component(abs(b.upper()))) > kWorldLimit)
@@ -110,8 +101,8 @@ std::unique_ptr<Shape> create(const SceneNode& node) {
     // Each superquadric's record (its shell's block table even when undeformed) is charged before the list is made:
     // a scene file's short entries would otherwise stand for far more memory than the file's text.
     const std::size_t count = std::max<std::size_t>(1, list.size());
-    charge(node, list.empty() ? "type" : "superquadrics", saturating_product({count, sizeof(Superquadric)}),
-           std::to_string(count) + " superquadric record(s)");
+    node.charge_at(list.empty() ? "type" : "superquadrics", saturating_product({count, sizeof(Superquadric)}),
+                   std::to_string(count) + " superquadric record(s)");
     superquadrics.reserve(count);
     if (!list.empty()) {
         for (const char* key : {"radii", "exponents", "center", "rotate", "deform"})

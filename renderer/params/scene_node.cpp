@@ -80,6 +80,14 @@ void SceneNode::fail_at(const std::string& key, const std::string& problem) cons
     wrap(*found, child_path(key)).fail(problem);
 }
 
+void SceneNode::charge_at(const std::string& key, std::uint64_t bytes, const std::string& what) const {
+    try {
+        context().memory->charge(bytes, what);
+    } catch (const InputError& error) {
+        fail_at(key, error.problem());
+    }
+}
+
 SceneNode SceneNode::object(const std::string& key) const {
     SceneNode child = wrap(require(key), child_path(key));
     if (!child.json().is_object())

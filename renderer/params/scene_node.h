@@ -109,6 +109,8 @@ public:
     // Error at this node, or at the value of `key` when it exists.
     [[noreturn]] void fail(const std::string& problem) const;
     [[noreturn]] void fail_at(const std::string& key, const std::string& problem) const;
+    // Charges `bytes` for `what` to the scene's memory budget, or fails at `key` when they do not fit.
+    void charge_at(const std::string& key, std::uint64_t bytes, const std::string& what) const;
 
     // Throws for the first key that no getter read (typo protection).
     void finish() const;

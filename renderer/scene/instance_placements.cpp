@@ -41,12 +41,8 @@ void charge_placements(const SceneNode& node, const std::string& field, std::uin
         node.fail_at(field, "these placements add " + std::to_string(objects) + " objects (" + std::to_string(placements) +
                                 " placements of " + std::to_string(parts) + " parts); at most " +
                                 std::to_string(kMaxPlacedObjects) + " are allowed");
-    try {
-        node.context().memory->charge(saturating_product({objects, kBytesPerPlacedObject}),
-                                      std::to_string(objects) + " placed objects");
-    } catch (const InputError& error) {
-        node.fail_at(field, error.problem());
-    }
+    node.charge_at(field, saturating_product({objects, kBytesPerPlacedObject}),
+                   std::to_string(objects) + " placed objects");
 }
 
 void read_grid(const SceneNode& grid, const std::string& name, const Transform& outer, const Material* outer_material,

@@ -92,14 +92,10 @@ void load_film(const SceneNode& root, const SceneOverrides& overrides, LoadedSce
     for (Aov aov : overrides.extra_aovs)
         if (std::find(loaded.film.aovs.begin(), loaded.film.aovs.end(), aov) == loaded.film.aovs.end())
             loaded.film.aovs.push_back(aov);
-    try {
-        film.context().memory->charge(Film::memory_bytes(loaded.film),
-                                      "a film of " + std::to_string(loaded.film.crop.width()) + "x" +
-                                          std::to_string(loaded.film.crop.height()) + " pixels with " +
-                                          std::to_string(loaded.film.aovs.size()) + " AOV(s)");
-    } catch (const InputError& error) {
-        film.fail_at("resolution", error.problem());
-    }
+    film.charge_at("resolution", Film::memory_bytes(loaded.film),
+                   "a film of " + std::to_string(loaded.film.crop.width()) + "x" +
+                       std::to_string(loaded.film.crop.height()) + " pixels with " +
+                       std::to_string(loaded.film.aovs.size()) + " AOV(s)");
     loaded.display = film.string_or("display", "");
     loaded.view = film.string_or("view", "");
     try {  // a dry run: an unknown display or view would otherwise surface only when writing, after the render
