@@ -171,7 +171,9 @@ struct PathIntegrator::Path {
     // Continue the path by sampling the BSDF.
     const std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u_direction);
     if (!scattered || scattered->pdf <= 0 || scattered->weight.is_black()) return false;
-    const Vec3f direction = normalize(frame.to_world(scattered->wi));
+    // Unit within a few roundings (a unit wi in an orthonormal frame): normalising again would put a square root
+    // and a division on the way to the next ray for nothing.
+    const Vec3f direction = frame.to_world(scattered->wi);
     if (!sides_agree(direction, hit.geometric_normal, scattered->wi.z)) return false;
     path.throughput *= scattered->weight;
     // Every later contribution is a multiple of the throughput: a black one ends the path with the same result

@@ -20,8 +20,15 @@ private:
     friend class TwoSidedBsdf<LambertBsdf>;
     Rgb eval_upper(const Vec3f&, const Vec3f&) const { return reflectance_ * std::numbers::inv_pi_v<float>; }
     float pdf_upper(const Vec3f&, const Vec3f& wi) const { return square_to_cosine_hemisphere_pdf(wi); }
-    std::optional<BsdfSample> sample_upper(const Vec3f& wo, float, std::array<float, 2> u) const {
-        return sample_towards(*this, wo, square_to_cosine_hemisphere(u), TransportMode::Radiance);
+    // The weight f·cos/pdf = (R/π)·cos/(cos/π) is the reflectance itself: taken as it is, it is exact and costs
+    // neither the evaluation nor the division (the pdf is still the cosine's, for multiple importance sampling).
+    std::optional<BsdfSample> sample_upper(const Vec3f&, float, std::array<float, 2> u) const {
+        BsdfSample sample;
+        sample.wi = square_to_cosine_hemisphere(u);
+        sample.pdf = square_to_cosine_hemisphere_pdf(sample.wi);
+        if (!(sample.pdf > 0)) return std::nullopt;  // lost to rounding at the horizon
+        sample.weight = reflectance_;
+        return sample;
     }
 
     Rgb reflectance_;

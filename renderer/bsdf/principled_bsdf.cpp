@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "renderer/bsdf/fresnel.h"
+#include "renderer/bsdf/lambert_bsdf.h"
 #include "renderer/bsdf/microfacet.h"
 #include "renderer/bsdf/shading_frame.h"
 #include "renderer/sampling/warps.h"
@@ -83,6 +84,7 @@ PrincipledBsdf::PrincipledBsdf(const PrincipledParameters& p)
     has_delta_lobe_ = (coat_on && coat_smooth_) || (base_smooth_ && (base_on || glass_on));
     is_fully_delta_ = !((coat_on && !coat_smooth_) || cosine_on || (!base_smooth_ && (base_on || glass_on)));
     chooses_lobe_ = glass_on || int(coat_on) + int(base_on) + int(cosine_on) > 1;
+    plain_diffuse_ = !coat_on && !base_on && !glass_on && sheen_max_ == 0;
 }
 
 PrincipledBsdf::View PrincipledBsdf::view(const Vec3f& wo) const {
@@ -215,6 +217,7 @@ Rgb PrincipledBsdf::base_mirror_weight(float mu, const View& v) const {
 std::optional<BsdfSample> PrincipledBsdf::sample(const Vec3f& wo, float u_lobe, std::array<float, 2> u,
                                                  TransportMode mode) const {
     if (wo.z == 0) return std::nullopt;
+    if (plain_diffuse_) return LambertBsdf(base_colour_).sample(wo, u_lobe, u);  // its weight, the colour itself
     const View v = view(wo);
     const LobeProbabilities p = lobe_probabilities(wo, v);
     // The lobe whose interval of [0, 1) holds u_lobe; rounding past the last interval falls in the last lobe.

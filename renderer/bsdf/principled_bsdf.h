@@ -132,6 +132,7 @@ private:
     CharlieSheen sheen_;
     bool base_smooth_, coat_smooth_;
     bool has_delta_lobe_, is_fully_delta_, chooses_lobe_;
+    bool plain_diffuse_;    // only the cosine lobe, unscaled: the model is LambertBsdf(base_colour_) and samples as it
 };
 
 }  // namespace isotrace
