@@ -22,11 +22,12 @@ private:
     float pdf_upper(const Vec3f&, const Vec3f& wi) const { return square_to_cosine_hemisphere_pdf(wi); }
     // The weight f·cos/pdf = (R/π)·cos/(cos/π) is the reflectance itself: taken as it is, it is exact and costs
     // neither the evaluation nor the division (the pdf is still the cosine's, for multiple importance sampling).
+    // A direction lost to rounding at the horizon (z = 0, pdf 0) is discarded by TwoSidedBsdf::sample; any z > 0
+    // a sample can have gives a positive pdf.
     std::optional<BsdfSample> sample_upper(const Vec3f&, float, std::array<float, 2> u) const {
         BsdfSample sample;
         sample.wi = square_to_cosine_hemisphere(u);
         sample.pdf = square_to_cosine_hemisphere_pdf(sample.wi);
-        if (!(sample.pdf > 0)) return std::nullopt;  // lost to rounding at the horizon
         sample.weight = reflectance_;
         return sample;
     }
