@@ -72,6 +72,23 @@ TEST(LambertBsdf, SampleAgreesWithEvalAndPdf) {
     }
 }
 
+// The weight f·cos/pdf is the reflectance exactly, not its value after a multiplication and a division, on both sides.
+TEST(LambertBsdf, SampleWeightIsTheReflectanceItself) {
+    const Rgb reflectance(0.3f, 0.6f, 0.9f);
+    const LambertBsdf bsdf(reflectance);
+    for (const double theta : {10.0, 50.0, 89.0, 130.0}) {
+        const Vec3f wo = direction_from_degrees(theta, 10);
+        for (std::size_t i = 0; i < 1000; ++i) {
+            const auto r = test_support::bsdf_random(i);
+            const std::optional<BsdfSample> s = bsdf.sample(wo, r.u_lobe, r.u);
+            if (!s) continue;
+            EXPECT_EQ(s->weight, reflectance) << theta << " " << i;
+            EXPECT_GT(s->pdf, 0.0f);
+            EXPECT_GT(s->wi.z * wo.z, 0.0f);
+        }
+    }
+}
+
 TEST(LambertBsdf, DegenerateDirectionsGiveNothingOrFiniteValues) {
     const LambertBsdf bsdf(Rgb(0.5f));
     EXPECT_FALSE(bsdf.sample(Vec3f(1, 0, 0), 0.5f, {0.5f, 0.5f}));

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "renderer/bsdf/shading_frame.h"
 #include "tests/support/bsdf_checks.h"
 
 namespace isotrace {
@@ -57,6 +58,36 @@ TEST(SurfaceBsdf, ChoosesLobeExactlyWhenSamplingReadsTheLobeNumber) {
         EXPECT_TRUE(models[m].scatters()) << m;
         EXPECT_EQ(models[m].chooses_lobe(), sample_depends_on_u_lobe(models[m])) << "model " << m;
     }
+}
+
+// The path tracer takes a sampled direction into the world frame without normalising it again: every model must
+// sample unit directions (to within a few roundings), and an orthonormal shading frame keeps them so.
+TEST(SurfaceBsdf, SampledDirectionsAreUnitInTheWorldToo) {
+    const DielectricCoating rough_coating(1.5f, 0.3f);
+    const std::vector<SurfaceBsdf> models = {
+        LambertBsdf(Rgb(0.5f)),
+        ConductorBsdf({Rgb(0.2f), Rgb(3.0f)}, 0.3f, 0.1f),
+        DielectricBsdf(1.5f, 0, 0),
+        DielectricBsdf(1.5f, 0.3f, 0.3f),
+        CoatedDiffuseBsdf(rough_coating, Rgb(0.5f)),
+        principled({.roughness = 0.4f}),
+        principled({.roughness = 0.3f, .transmission = 1}),
+        principled({.roughness = 0.3f, .clearcoat = 1, .sheen = 1}),
+    };
+    constexpr float kTolerance = 4e-6f;  // of the squared length: some ten roundings of 6e-8 each
+    for (std::size_t m = 0; m < models.size(); ++m)
+        for (std::size_t i = 0; i < 512; ++i) {
+            const test_support::BsdfRandom r = test_support::bsdf_random(i);
+            // A frame from a normal and a tangent that is not perpendicular to it (as meshes give them).
+            const Vec3f normal = normalize(Vec3f(0.3f, -0.5f, 0.8f) + Vec3f(r.u[1], 0.1f * r.u_lobe, -r.u[0]));
+            const ShadingFrame frame(normal, Vec3f(1.0f, 0.2f * r.u[0], 0.3f));
+            const Vec3f wo = test_support::view_at(170.0 * r.u_lobe);
+            const std::optional<BsdfSample> s = models[m].sample(wo, r.u_lobe, r.u);
+            if (!s) continue;
+            EXPECT_NEAR(dot(s->wi, s->wi), 1.0f, kTolerance) << "model " << m << " sample " << i;
+            const Vec3f world = frame.to_world(s->wi);
+            EXPECT_NEAR(dot(world, world), 1.0f, kTolerance) << "model " << m << " sample " << i;
+        }
 }
 
 }  // namespace
