@@ -27,11 +27,20 @@ inline ShadowSegment shadow_segment(const Vec3f& position, const Vec3f& origin, 
     return {to_point * (1.0f / length_to_point), length_to_point * (1 - kShadowRayMargin)};
 }
 
+// What lies at a light sample's point: the surface of an emitter, or nothing (a point or spot light).
+enum class LightPoint { OnASurface, Bare };
+
 // The shadow ray from `hit` towards the light point `distance` along the unit `direction` (a LightSample's); lights
-// at infinity (infinite distance) keep the direction and test all the way.
-inline Ray shadow_ray(const SurfaceHit& hit, const Vec3f& direction, float distance) {
+// at infinity (infinite distance) keep the direction and test all the way. A bare point has no plane to miss: the ray
+// keeps the direction too and ends, short by the margin, where it passes closest to the point (beside it by at most
+// the push off the surface), without the square root and division of aiming at it.
+inline Ray shadow_ray(const SurfaceHit& hit, const Vec3f& direction, float distance, LightPoint point) {
     const Vec3f origin = hit.spawn_origin(direction);
     if (std::isinf(distance)) return {origin, direction, 0, distance};
+    if (point == LightPoint::Bare) {
+        const float closest = distance - dot(direction, origin - hit.position);
+        return {origin, direction, 0, closest * (1 - kShadowRayMargin)};
+    }
     const ShadowSegment segment = shadow_segment(hit.position, origin, direction, distance);
     return {origin, segment.direction, 0, segment.t_far};
 }

@@ -71,7 +71,7 @@ SecondaryRayLists build_secondary_rays(const LoadedScene& scene, float clearance
             const Vec3f to_light = lists.light - hit.position;
             const float distance = length(to_light);
             if (distance > 0 && dot(to_light, hit.geometric_normal) > 0)
-                row.shadow.push_back(shadow_ray(hit, to_light / distance, distance));
+                row.shadow.push_back(shadow_ray(hit, to_light / distance, distance, LightPoint::OnASurface));
             const PixelSampleKey key{std::uint32_t(x), std::uint32_t(y), 0};
             const Vec3f local = square_to_cosine_hemisphere({sampler.sample(key, 0), sampler.sample(key, 1)});
             Vec3f tangent, bitangent;
