@@ -126,12 +126,8 @@ void generate_elements(const SceneNode& node, std::vector<Metacube>& elements, E
     // Where the generator or an element listed before it names a material, every element keeps its part.
     const bool keeps_parts = !parts.empty() || materials.keeps_parts();
     const std::uint64_t bytes_per_element = BlobGroup::kPeakBytesPerElement + (keeps_parts ? sizeof(std::uint32_t) : 0);
-    try {
-        node.context().memory->charge(saturating_product({std::uint64_t(count), bytes_per_element}),
-                                      "a blob group of " + std::to_string(count) + " generated elements");
-    } catch (const InputError& error) {
-        node.fail_at("count", error.problem());
-    }
+    node.charge_at("count", saturating_product({std::uint64_t(count), bytes_per_element}),
+                   "a blob group of " + std::to_string(count) + " generated elements");
     const auto lerp = [](const std::array<double, 2>& r, double u) { return r[0] + (r[1] - r[0]) * u; };
     elements.reserve(elements.size() + std::size_t(count));
     if (keeps_parts) materials.reserve(elements.size() + std::size_t(count));

@@ -157,8 +157,7 @@ struct PathIntegrator::Path {
                     const float light_pdf = choice.probability * light.pdf;
                     const float weight = light.is_delta ? 1.0f : power_heuristic(light_pdf, bsdf.pdf(wo, wi));
                     path.casts_shadow = true;
-                    shadow = shadow_ray(hit, light.direction, light.distance,
-                                        light.is_delta ? LightPoint::Bare : LightPoint::OnASurface);
+                    shadow = shadow_ray(hit, light);
                     path.unblocked = throughput_f * light.radiance * (weight / light_pdf);
                 }
             }

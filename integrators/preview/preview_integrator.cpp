@@ -32,8 +32,7 @@ Rgb PreviewIntegrator::radiance(const Ray& camera_ray, const RenderScene& scene,
         const LightSample s = light->sample(hit.position, samples.next_2d());
         const float cosine = dot(hit.shading_normal, s.direction);
         if (cosine <= 0 || s.pdf <= 0 || s.radiance.is_black()) continue;
-        const LightPoint point = s.is_delta ? LightPoint::Bare : LightPoint::OnASurface;
-        if (!scene.occluded(shadow_ray(hit, s.direction, s.distance, point))) direct += s.radiance * (cosine / s.pdf);
+        if (!scene.occluded(shadow_ray(hit, s))) direct += s.radiance * (cosine / s.pdf);
     }
     result += albedo * direct * float(std::numbers::inv_pi);
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "renderer/core/ray.h"
+#include "renderer/plugin/light.h"
 #include "renderer/plugin/surface_hit.h"
 
 namespace isotrace {
@@ -43,6 +44,11 @@ inline Ray shadow_ray(const SurfaceHit& hit, const Vec3f& direction, float dista
     }
     const ShadowSegment segment = shadow_segment(hit.position, origin, direction, distance);
     return {origin, segment.direction, 0, segment.t_far};
+}
+
+// The shadow ray of a light sample: a delta light's point (a point or spot light) is bare.
+inline Ray shadow_ray(const SurfaceHit& hit, const LightSample& light) {
+    return shadow_ray(hit, light.direction, light.distance, light.is_delta ? LightPoint::Bare : LightPoint::OnASurface);
 }
 
 }  // namespace isotrace
