@@ -20,27 +20,27 @@ bool needs_hit_data(const std::vector<Aov>& aovs) {
 }
 
 // into += from, field by field (the sums of a block added to those of the blocks before it).
-template <class Sums>
-void add_sums(Sums& into, const Sums& from) {
-    static_assert(sizeof(Sums) == Sums::kFieldCount * sizeof(double), "kFieldCount counts every sum");
-    double* target[Sums::kFieldCount];
+template <template <class> class Sums, class Real>
+void add_sums(Sums<double>& into, const Sums<Real>& from) {
+    static_assert(sizeof(Sums<Real>) == Sums<Real>::kFieldCount * sizeof(Real), "kFieldCount counts every sum");
+    double* target[Sums<double>::kFieldCount];
     int n = 0;
-    Sums::each(into, [&](double& field) { target[n++] = &field; });
+    Sums<double>::each(into, [&](double& field) { target[n++] = &field; });
     n = 0;
-    Sums::each(from, [&](const double& field) { *target[n++] += field; });
+    Sums<Real>::each(from, [&](const Real& field) { *target[n++] += double(field); });
 }
 
 // Ends a pixel's block: its sums join the total and the next block starts from zero.
-template <class Sums>
-void close_block(Sums& total, Sums& block) {
+template <template <class> class Sums>
+void close_block(Sums<double>& total, Sums<float>& block) {
     add_sums(total, block);
-    block = Sums();
+    block = Sums<float>();
 }
 
 // total + block: a pixel's sums over all its samples.
-template <class Sums>
-Sums all_samples(const Sums& total, const Sums& block) {
-    Sums sum = total;
+template <template <class> class Sums>
+Sums<double> all_samples(const Sums<double>& total, const Sums<float>& block) {
+    Sums<double> sum = total;
     add_sums(sum, block);
     return sum;
 }
@@ -55,9 +55,11 @@ std::uint64_t Film::memory_bytes(const FilmSettings& settings) {
     return saturating_product({std::uint64_t(settings.crop.area()), per_pixel});
 }
 
-Film::Film(FilmSettings settings) : settings_(std::move(settings)) {
-    beauty_.resize(std::size_t(settings_.crop.area()));
-    if (needs_hit_data(settings_.aovs)) aovs_.resize(beauty_.size());
+Film::Film(FilmSettings settings)
+    : settings_(std::move(settings)),
+      beauty_(std::size_t(settings_.crop.area())),
+      aovs_(needs_hit_data(settings_.aovs) ? beauty_.size() : 0) {
+    for (AovAccumulator& a : aovs_) a = AovAccumulator();  // no id yet: not all zero bytes
 }
 
 Film::Film(FilmSettings settings, std::uint32_t first_sample) : Film(std::move(settings)) {
@@ -69,9 +71,9 @@ Film::Film(FilmSettings settings, std::uint32_t first_sample) : Film(std::move(s
 void Film::add_sample(int x, int y, const CameraSample& sample) {
     const std::size_t i = index(x, y);
     Accumulator& pixel = beauty_[i];
-    BeautySums& sums = pixel.block;
-    const double w = sample.filter_weight;
-    const double value[3] = {sample.radiance.r, sample.radiance.g, sample.radiance.b};
+    BeautySums<float>& sums = pixel.block;
+    const float w = sample.filter_weight;
+    const float value[3] = {sample.radiance.r, sample.radiance.g, sample.radiance.b};
     sums.weight += w;
     sums.weight_squared += w * w;
     for (int c = 0; c < 3; ++c) {
@@ -108,7 +110,7 @@ std::uint32_t Film::sample_count(int x, int y) const { return beauty_[index(x, y
 SampleCountRange Film::sample_count_range() const {
     SampleCountRange range;
     if (beauty_.empty()) return range;
-    range.min = range.max = beauty_.front().samples;
+    range.min = range.max = beauty_[0].samples;
     for (const Accumulator& p : beauty_) {
         range.min = std::min(range.min, p.samples);
         range.max = std::max(range.max, p.samples);
@@ -122,7 +124,7 @@ PixelStatistics Film::pixel_statistics(int x, int y) const {
     return statistics_of(all_samples(pixel.total, pixel.block), pixel.samples);
 }
 
-PixelStatistics Film::statistics_of(const BeautySums& p, std::uint32_t samples) {
+PixelStatistics Film::statistics_of(const BeautySums<double>& p, std::uint32_t samples) {
     PixelStatistics statistics;
     statistics.samples = samples;
     const double inv_w = p.weight > 0 ? 1.0 / p.weight : 0.0;
@@ -143,13 +145,13 @@ PixelStatistics Film::statistics_of(const BeautySums& p, std::uint32_t samples) 
 template <class Self, class Visit>
 void Film::visit_state(Self& film, Visit&& visit) {
     for (auto& p : film.beauty_) {
-        BeautySums::each(p.total, visit);
-        BeautySums::each(p.block, visit);
+        BeautySums<double>::each(p.total, visit);
+        BeautySums<float>::each(p.block, visit);
         visit(p.samples);
     }
     for (auto& a : film.aovs_) {
-        AovSums::each(a.total, visit);
-        AovSums::each(a.block, visit);
+        AovSums<double>::each(a.total, visit);
+        AovSums<float>::each(a.block, visit);
         visit(a.nearest_offset);
         visit(a.object_id);
         visit(a.primitive_id);
@@ -189,7 +191,7 @@ void Film::restore_state(std::string_view bytes, std::uint32_t max_samples) {
     };
     const auto finite = [](const auto& sums) {
         bool all = true;
-        std::decay_t<decltype(sums)>::each(sums, [&](double v) { all = all && std::isfinite(v); });
+        std::decay_t<decltype(sums)>::each(sums, [&](auto v) { all = all && std::isfinite(v); });
         return all;
     };
     for (std::size_t i = 0; i < beauty_.size(); ++i) {
@@ -267,7 +269,7 @@ ImageBuffer Film::resolve() const {
 
     for (std::size_t i = 0; i < beauty_.size(); ++i) {
         const std::uint32_t samples = beauty_[i].samples;
-        const BeautySums p = all_samples(beauty_[i].total, beauty_[i].block);
+        const BeautySums<double> p = all_samples(beauty_[i].total, beauty_[i].block);
         float* out = image.pixels.data() + i * stride;
         const double inv_w = p.weight > 0 ? 1.0 / p.weight : 0.0;
         for (int c = 0; c < 3; ++c) out[c] = float(p.rgb[c] * inv_w);
@@ -275,9 +277,9 @@ ImageBuffer Film::resolve() const {
         std::size_t k = 4;
         for (Aov aov : settings_.aovs) {
             const AovAccumulator* ids = aovs_.empty() ? nullptr : &aovs_[i];
-            const std::optional<AovSums> sums =
-                ids ? std::optional<AovSums>(all_samples(ids->total, ids->block)) : std::nullopt;
-            const AovSums* a = sums ? &*sums : nullptr;
+            const std::optional<AovSums<double>> sums =
+                ids ? std::optional<AovSums<double>>(all_samples(ids->total, ids->block)) : std::nullopt;
+            const AovSums<double>* a = sums ? &*sums : nullptr;
             const double inv_hit = a && a->hit_weight > 0 ? 1.0 / a->hit_weight : 0.0;
             switch (aov) {
                 case Aov::Albedo:

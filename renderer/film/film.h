@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "renderer/core/huge_page_allocator.h"
+#include "renderer/core/zeroed_pages.h"
 #include "renderer/film/aov.h"
 #include "renderer/image/image_buffer.h"
 #include "renderer/math/rgb.h"
@@ -102,11 +102,14 @@ public:
     ImageBuffer resolve() const;
 
 private:
+    // A pixel's sums in Real: the samples of its open block in float (32 values lose no more than a float image
+    // keeps), the completed blocks' total in double (a reference render adds thousands of blocks).
+    template <class Real>
     struct BeautySums {
-        double weight = 0, weight_squared = 0;
-        double rgb[3] = {0, 0, 0};
-        double rgb_squared[3] = {0, 0, 0};
-        double coverage = 0;  // weighted fraction of samples that hit a surface
+        Real weight = 0, weight_squared = 0;
+        Real rgb[3] = {0, 0, 0};
+        Real rgb_squared[3] = {0, 0, 0};
+        Real coverage = 0;  // weighted fraction of samples that hit a surface
         static constexpr int kFieldCount = 9;
         // Calls visit(field) for every sum; Self is BeautySums or const BeautySums.
         template <class Self, class Visit>
@@ -118,9 +121,10 @@ private:
             visit(sums.coverage);
         }
     };
+    template <class Real>
     struct AovSums {
-        double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, position[3] = {0, 0, 0};
-        double depth = 0, hit_weight = 0;
+        Real albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, position[3] = {0, 0, 0};
+        Real depth = 0, hit_weight = 0;
         static constexpr int kFieldCount = 11;
         template <class Self, class Visit>
         static void each(Self& sums, Visit&& visit) {
@@ -133,15 +137,17 @@ private:
     };
     // total: the sums of the completed blocks; block: of the samples since.
     struct Accumulator {
-        BeautySums total, block;
+        BeautySums<double> total;
+        BeautySums<float> block;
         std::uint32_t samples = 0;
     };
     struct AovAccumulator {
-        AovSums total, block;
+        AovSums<double> total;
+        AovSums<float> block;
         float nearest_offset = 1e30f;
         std::int64_t object_id = -1, primitive_id = -1;
     };
-    static PixelStatistics statistics_of(const BeautySums& sums, std::uint32_t samples);
+    static PixelStatistics statistics_of(const BeautySums<double>& sums, std::uint32_t samples);
     std::size_t index(int x, int y) const {
         return std::size_t(y - settings_.crop.y0) * std::size_t(settings_.crop.width()) + std::size_t(x - settings_.crop.x0);
     }
@@ -154,8 +160,9 @@ private:
     static void copy_pixels(const Film& from, Film& to, const PixelBounds& area);
 
     FilmSettings settings_;
-    std::vector<Accumulator, HugePageAllocator<Accumulator>> beauty_;
-    std::vector<AovAccumulator, HugePageAllocator<AovAccumulator>> aovs_;  // empty unless AOVs need them
+    // A film starts with zero bytes (zero sums, no samples), written first by the threads that render its pixels.
+    ZeroedPages<Accumulator> beauty_;
+    ZeroedPages<AovAccumulator> aovs_;  // empty unless AOVs need them
 };
 
 }  // namespace isotrace

@@ -275,8 +275,9 @@ TEST(Film, StateWithValuesNoRenderLeavesIsRefused) {
     film.add_sample(0, 0, hit(Rgb(1, 1, 1), 1, 2, 3, 4));
     film.add_sample(1, 0, miss(Rgb(1, 1, 1)));
     const std::string state = film.state();
-    // A pixel's beauty state: two sets (completed blocks, open block) of 9 sums, then the count.
-    constexpr std::size_t kSums = 2 * 9 * sizeof(double), kPixel = kSums + sizeof(std::uint32_t);
+    // A pixel's beauty state: 9 sums of the completed blocks (double), 9 of the open block (float), then the count.
+    constexpr std::size_t kTotal = 9 * sizeof(double), kSums = kTotal + 9 * sizeof(float);
+    constexpr std::size_t kPixel = kSums + sizeof(std::uint32_t);
     const auto refusal = [&](std::string bytes, std::uint32_t max_samples) -> std::string {
         try {
             Film(s).restore_state(bytes, max_samples);
@@ -296,7 +297,7 @@ TEST(Film, StateWithValuesNoRenderLeavesIsRefused) {
               "film state: pixel (1, 0) has a sample count of 4294967295, above the render's target of 16");
     EXPECT_EQ(refusal(with(kPixel, std::numeric_limits<double>::quiet_NaN()), 16),
               "film state: pixel (1, 0) holds a sum that is not a finite number");
-    EXPECT_EQ(refusal(with(kPixel + 9 * sizeof(double), std::numeric_limits<double>::infinity()), 16),
+    EXPECT_EQ(refusal(with(kPixel + kTotal, std::numeric_limits<float>::infinity()), 16),
               "film state: pixel (1, 0) holds a sum that is not a finite number");
     EXPECT_EQ(refusal(with(2 * kPixel + 3 * sizeof(double), -std::numeric_limits<double>::infinity()), 16),
               "film state: pixel (0, 0) holds an AOV sum that is not a finite number");

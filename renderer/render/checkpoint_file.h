@@ -10,7 +10,7 @@
 namespace isotrace {
 
 // 2: the film's sums in blocks of sample indices (Film::kSampleBlock).
-inline constexpr std::uint32_t kCheckpointFormatVersion = 2;
+inline constexpr std::uint32_t kCheckpointFormatVersion = 3;
 
 struct CheckpointContents {
     std::string metadata_json;

@@ -2500,7 +2500,7 @@ PY
   value_refused 'meta["options"]["resolution"] = [100000, 16]' "options.resolution"
   value_refused 'meta["options"]["target_error"] = -1' "options.target_error"
   value_refused 'struct.pack_into("<d", state, 0, float("nan"))' "pixel (0, 0) holds a sum that is not a finite number"
-  value_refused 'struct.pack_into("<I", state, 148 * 17 + 144, 0xFFFFFFFF)' \
+  value_refused 'struct.pack_into("<I", state, 112 * 17 + 108, 0xFFFFFFFF)' \
     "pixel (1, 1) has a sample count of 4294967295, above the render's target of 100000"
 }
 
