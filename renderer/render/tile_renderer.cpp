@@ -15,6 +15,7 @@
 #include "renderer/core/render_counters.h"
 #include "renderer/embree/embree_device.h"
 #include "renderer/math/lanes.h"
+#include "renderer/render/sample_camera_ray.h"
 #include "renderer/sampling/sampler.h"
 
 namespace isotrace {
@@ -99,9 +100,9 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
                     added[i] = SampleStream::of_context(*loaded.sampler, pixel.of_sample(first + std::uint32_t(i)));
                 SampleStream::fill_caches(added);  // the camera's block, for all of the pixel's at once
                 for (std::size_t i = queued; i < queued + count; ++i) {
-                    const FilterSample offset = loaded.filter->sample(streams[i].next_2d());
-                    rays[i] = loaded.camera->generate_ray(float(x) + 0.5f + offset.dx, float(y) + 0.5f + offset.dy,
-                                                          streams[i].next_2d());
+                    const SampleCameraRay camera = sample_camera_ray(loaded, x, y, streams[i]);
+                    const FilterSample& offset = camera.offset;
+                    rays[i] = camera.ray;
                     samples[i] = CameraSample{};
                     samples[i].filter_weight = offset.weight;
                     samples[i].offset_squared = offset.dx * offset.dx + offset.dy * offset.dy;

@@ -7,8 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/plugin/camera.h"
-#include "renderer/plugin/pixel_filter.h"
+#include "renderer/render/sample_camera_ray.h"
 
 namespace isotrace::testing {
 
@@ -26,9 +25,7 @@ int expect_groups_match_single_paths(const LoadedScene& loaded, std::span<const 
         return SampleStream(*loaded.sampler, {std::uint32_t(key.x), std::uint32_t(key.y), key.index});
     };
     const auto camera_ray = [&](const Key& key, SampleStream& stream) {
-        const FilterSample offset = loaded.filter->sample(stream.next_2d());
-        return loaded.camera->generate_ray(float(key.x) + 0.5f + offset.dx, float(key.y) + 0.5f + offset.dy,
-                                           stream.next_2d());
+        return sample_camera_ray(loaded, key.x, key.y, stream).ray;
     };
     int lit = 0;
     for (std::size_t first = 0; first < keys.size(); first += group) {

@@ -129,7 +129,8 @@ std::string benchmark_table(const nlohmann::json& report) {
     std::string out = format("Primary, shadow and bounce rays; medians of %d run(s); %u cores, %s\n\n",
                              report["repeats"].get<int>(), report["machine"]["cores"].get<unsigned>(),
                              report["machine"]["cpu"].get<std::string>().c_str());
-    out += "Direct: blob groups as Embree user geometry (primary rays)\n";
+    out += "Direct: the scene's implicit shapes as Embree user geometry; an element is a blob element, isosurface,\n"
+           "superquadric, CSG solid, torus, cylinder or cone (primary rays)\n";
     out += format("%-12s %9s %9s %9s %12s %8s %9s %10s\n", "scene", "elements", "rays", "build ms", "bytes/elem",
                   "threads", "Mrays/s", "ns/ray");
     for (const auto& s : report["scenes"]) {
