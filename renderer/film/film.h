@@ -5,6 +5,7 @@
 // kSampleBlock consecutive sample indices (each block summed from zero, the blocks' sums added in block order),
 // so that a block rendered elsewhere (another MPI rank) can be added with the same roundings: the image is
 // bit-identical however the sample indices were split between processes (docs/decisions.md).
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -73,7 +74,16 @@ public:
     const FilmSettings& settings() const { return settings_; }
     const PixelBounds& bounds() const { return settings_.crop; }
 
-    // x, y in full-raster pixels inside bounds(). Not thread-safe per pixel (one thread owns a pixel).
+    // The largest radiance a sample may carry: 32 of its squares, times a filter's weight, must stay finite in the open
+    // block's single-precision sums. No scene's light comes near it; a path that does is as broken as a NaN.
+    static constexpr float kLargestRadiance = 1e17f;
+    static bool holds(const Rgb& radiance) {
+        return radiance.is_finite() && std::abs(radiance.r) <= kLargestRadiance &&
+               std::abs(radiance.g) <= kLargestRadiance && std::abs(radiance.b) <= kLargestRadiance;
+    }
+
+    // x, y in full-raster pixels inside bounds(), the radiance one the film holds(). Not thread-safe per pixel (one
+    // thread owns a pixel).
     void add_sample(int x, int y, const CameraSample& sample);
     std::uint32_t sample_count(int x, int y) const;
     // Whether add_sample keeps what a sample's camera ray saw first (the AOVs that need it were asked for).

@@ -269,6 +269,18 @@ TEST(Film, StateOfOtherSettingsIsRefused) {
 
 // A checkpoint's checksum says only that its bytes are the ones written: restore_state checks the values behind it.
 // A count beyond the render's target never finished the render; a NaN sum gave NaN pixels.
+TEST(Film, HoldsRadianceWhoseSquareItsSumsKeepFinite) {
+    EXPECT_TRUE(Film::holds(Rgb(0, 1, 2)));
+    EXPECT_TRUE(Film::holds(Rgb(-Film::kLargestRadiance, Film::kLargestRadiance, 0)));
+    EXPECT_FALSE(Film::holds(Rgb(0, 0, 3e30f)));  // finite, but its square is not in single precision
+    EXPECT_FALSE(Film::holds(Rgb(0, -2 * Film::kLargestRadiance, 0)));
+    EXPECT_FALSE(Film::holds(Rgb(std::numeric_limits<float>::quiet_NaN(), 0, 0)));
+    EXPECT_FALSE(Film::holds(Rgb(0, std::numeric_limits<float>::infinity(), 0)));
+    // The largest held value, squared and weighted by a generous filter weight, keeps the sums finite.
+    const float most = Film::kLargestRadiance;
+    EXPECT_TRUE(std::isfinite(32 * 100.0f * most * most));
+}
+
 TEST(Film, StateWithValuesNoRenderLeavesIsRefused) {
     const FilmSettings s = settings(2, 1, {Aov::Depth});
     Film film(s);

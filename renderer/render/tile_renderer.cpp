@@ -80,7 +80,7 @@ std::int64_t render_tile(const LoadedScene& loaded, Film& film, const PixelBound
             sample.primary = primary[i];
             // Integrators do not know the camera: the depth AOV is filled in here from the hit position.
             if (sample.primary.hit) sample.primary.depth = loaded.camera->view_depth(sample.primary.position);
-            if (!sample.radiance.is_finite()) {  // counted and dropped, so one bad path cannot poison a pixel
+            if (!Film::holds(sample.radiance)) {  // counted and dropped, so one bad path cannot poison a pixel
                 counters::count_nan_sample();
                 sample.radiance = Rgb();
             }

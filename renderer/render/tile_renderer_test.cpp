@@ -28,15 +28,18 @@ namespace {
 
 // ---- test-only integrators --------------------------------------------------------------------------------
 
-// Radiance 1 for rays going left, NaN or +inf for rays going right; counts what it returned.
-std::atomic<std::uint64_t> g_bad_samples{0};
+// Radiance 1 for rays going left; for rays going right NaN (upwards), +inf (well below) or a finite value whose
+// square overflows a float (just below); counts what it returned.
+std::atomic<std::uint64_t> g_bad_samples{0}, g_huge_samples{0};
 class BadValueIntegrator final : public Integrator {
 public:
     Rgb radiance(const Ray& ray, const RenderScene&, SampleStream&, PrimaryHitRecord&) const override {
         if (ray.direction.x <= 0) return Rgb(1.0f);
         ++g_bad_samples;
-        return ray.direction.y > 0 ? Rgb(std::numeric_limits<float>::quiet_NaN(), 1, 1)
-                                   : Rgb(1, std::numeric_limits<float>::infinity(), 1);
+        if (ray.direction.y > 0) return Rgb(std::numeric_limits<float>::quiet_NaN(), 1, 1);
+        if (ray.direction.y < -0.05f) return Rgb(1, std::numeric_limits<float>::infinity(), 1);
+        ++g_huge_samples;
+        return Rgb(1, 1, 3e30f);
     }
 };
 
@@ -459,10 +462,15 @@ TEST(TileRenderer, NonFiniteRadianceIsCountedAndDropped) {
     const auto scene = load_scene(file.path(), overrides);
     const std::uint64_t before = counters::totals().nan_samples;
     g_bad_samples = 0;
+    g_huge_samples = 0;
     const RenderResult result = render_with_threads(*scene, 2, options_for(*scene, 5));
     const std::uint64_t bad = g_bad_samples.load();
     EXPECT_GT(bad, 0u);
+    EXPECT_GT(g_huge_samples.load(), 0u);
     EXPECT_EQ(counters::totals().nan_samples - before, bad);
+    // A finite radiance whose square overflows the film's single-precision sums is dropped too: the sums stay
+    // finite, so the film can be checkpointed and resumed.
+    EXPECT_NO_THROW(Film(result.film->settings()).restore_state(result.film->state()));
     ImageBuffer image = result.film->resolve();
     const std::size_t stride = image.channels.size();
     int clean = 0, poisoned = 0;
@@ -474,7 +482,8 @@ TEST(TileRenderer, NonFiniteRadianceIsCountedAndDropped) {
                     image.channels[c] != "variance.B" && image.channels[c] != "Z") {
                     ASSERT_TRUE(std::isfinite(p[c])) << image.channels[c] << " at " << x << ", " << y;
                 }
-            ASSERT_TRUE(std::isfinite(p[channel(image, "variance.R")]));
+            for (const char* variance : {"variance.R", "variance.G", "variance.B"})
+                ASSERT_TRUE(std::isfinite(p[channel(image, variance)])) << variance << " at " << x << ", " << y;
             // Left half: every sample was 1. Right half: every sample was dropped to black.
             if (p[0] == 1.0f && p[1] == 1.0f && p[2] == 1.0f) ++clean;
             if (p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f) ++poisoned;
