@@ -91,7 +91,7 @@ public:
     SampleCountRange sample_count_range() const;
     PixelStatistics pixel_statistics(int x, int y) const;
 
-    // The accumulators exactly (doubles, counts, ids), for checkpoints: restore_state(state()) on a film with the
+    // The accumulators exactly (sums, counts, ids), for checkpoints: restore_state(state()) on a film with the
     // same settings gives a film that continues bit-identically. restore_state throws std::invalid_argument naming
     // the pixel if the bytes do not have the size these settings need, a pixel holds more than `max_samples`
     // samples (the render's target) or a sum is not finite.
@@ -112,8 +112,8 @@ public:
     ImageBuffer resolve() const;
 
 private:
-    // A pixel's sums in Real: the samples of its open block in float (32 values lose no more than a float image
-    // keeps), the completed blocks' total in double (a reference render adds thousands of blocks).
+    // A pixel's sums in Real: the samples of its open block in float (a sum of 32 is good to a few parts in 10⁷, near
+    // the float image's own rounding), the completed blocks' total in double (a reference render adds thousands).
     template <class Real>
     struct BeautySums {
         Real weight = 0, weight_squared = 0;
