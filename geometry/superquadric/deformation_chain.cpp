@@ -1,5 +1,6 @@
 #include "geometry/superquadric/deformation_chain.h"
 
+#include <limits>
 #include <stdexcept>
 
 namespace isotrace {
@@ -21,7 +22,8 @@ DeformationChain::DeformationChain(const Superellipsoid& shape)
     : shape_(shape),
       boxes_{widened(shape.bounding_box())},
       heights_{-shape.radii().z, shape.radii().z},
-      cone_(shape.enclosing_cylinder()) {}
+      cone_(shape.enclosing_cylinder()),
+      convex_levels_(shape.is_convex() ? std::numeric_limits<double>::infinity() : 0) {}
 
 void DeformationChain::append(const Deformation& stage) {
     if (stages_.size() >= std::size_t(kMaxStages))
@@ -29,6 +31,9 @@ void DeformationChain::append(const Deformation& stage) {
     const std::string problem = std::visit([&](const auto& s) { return s.problem(boxes_.back()); }, stage);
     if (!problem.empty()) throw std::invalid_argument(problem);
     stages_.push_back(stage);
+    const Taper* taper = std::get_if<Taper>(&stage);
+    convex_levels_ = stages_.size() == 1 && taper && shape_.is_convex() ? taper->convex_levels(2 / shape_.north_south())
+                                                                        : 0;
     keeps_solids_of_revolution_ =
         keeps_solids_of_revolution_ && std::visit([](const auto& s) { return s.keeps_solids_of_revolution(); }, stage);
     sector_ = std::visit([&](const auto& s) { return s.sector(boxes_.back(), heights_, cone_); }, stage);

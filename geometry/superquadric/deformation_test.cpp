@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -314,6 +316,70 @@ TEST(SuperquadricDeformation, TheBendsInverseIsFiniteOnItsCentreAxis) {
         EXPECT_TRUE(std::isfinite(back.x) && std::isfinite(back.y) && std::isfinite(back.z)) << w;
         EXPECT_EQ(back.y, w);
     }
+}
+
+// The levels a lone taper keeps convex: the cross-section's half-width a·f(z)·s·r(z/(s·a3)) is concave in z there (second
+// differences on a fine grid), for exponents from boxy to the cone (p1 = 1, where no nonzero rate keeps any level),
+// and beyond them, at twice the level, a rate of -0.9 on an ellipsoid's profile is not.
+TEST(SuperquadricDeformation, ATapersConvexLevelsKeepTheCrossSectionsConcave) {
+    constexpr double kA3 = 0.7;
+    const auto half_width_is_concave = [&](double rate, double p1, double s) {
+        const Taper taper(rate, rate, kA3);
+        const auto width = [&](double z) {
+            const double u = std::min(1.0, std::abs(z) / (s * kA3));
+            const double scale = taper.forward({1, 1, z}).x;  // f(z): the taper of x = 1
+            return scale * s * std::pow(1 - std::pow(u, p1), 1 / p1);
+        };
+        constexpr int kSteps = 20000;
+        const double h = 2 * s * kA3 / kSteps;
+        for (int i = 1; i < kSteps; ++i) {
+            const double z = -s * kA3 + i * h;
+            if (width(z - h) - 2 * width(z) + width(z + h) > 1e-12) return false;
+        }
+        return true;
+    };
+    for (const double p1 : {1.0, 1.01, 1.5, 2.0, 4.0, 20.0, 100.0})
+        for (const double rate : {-0.95, -0.6, -0.2, 0.0, 0.3, 1.0, 3.0}) {
+            const double levels = Taper(rate, rate, kA3).convex_levels(p1);
+            if (rate == 0) {
+                EXPECT_TRUE(std::isinf(levels));
+                continue;
+            }
+            if (p1 == 1.0) {
+                EXPECT_EQ(levels, 0.0);
+                continue;
+            }
+            EXPECT_GT(levels, 0.0);
+            for (const double s : {std::min(levels, 1.0), levels}) {
+                if (!std::isfinite(s)) continue;
+                EXPECT_TRUE(half_width_is_concave(rate, p1, s)) << "p1 " << p1 << ", rate " << rate << ", level " << s;
+            }
+        }
+    EXPECT_FALSE(half_width_is_concave(-0.9, 2.0, 2 * Taper(-0.9, -0.9, kA3).convex_levels(2.0)));
+    // The benchmark scene's taper keeps the levels a leaving ray starts at, on an ellipsoid and on a boxy shape.
+    EXPECT_GT(Taper(-0.6, -0.6, 0.4).convex_levels(2.0), 1.3);
+    EXPECT_GT(Taper(-0.6, -0.6, 0.4).convex_levels(2 / 0.3), 1.8);
+}
+
+// A chain knows every level convex for an undeformed convex shape, a lone taper's levels, and none otherwise.
+TEST(SuperquadricDeformation, TheChainsConvexLevels) {
+    const Vec3d radii{0.5, 0.6, 0.7};
+    EXPECT_TRUE(std::isinf(DeformationChain(Superellipsoid(radii, 1, 1)).convex_levels()));
+    EXPECT_EQ(DeformationChain(Superellipsoid(radii, 2.5, 1)).convex_levels(), 0.0);
+    DeformationChain tapered(Superellipsoid(radii, 1, 0.5));
+    tapered.append(Taper(-0.6, -0.6, radii.z));
+    EXPECT_EQ(tapered.convex_levels(), Taper(-0.6, -0.6, radii.z).convex_levels(2.0));
+    EXPECT_GT(tapered.convex_levels(), 1.0);
+    // Two rates change the cross-sections' shape with the height: no level is known convex.
+    DeformationChain two_rates(Superellipsoid(radii, 1, 0.5));
+    two_rates.append(Taper(-0.6, 0.4, radii.z));
+    EXPECT_EQ(two_rates.convex_levels(), 0.0);
+    DeformationChain twisted = tapered;
+    twisted.append(Twist(1.0, radii.z));
+    EXPECT_EQ(twisted.convex_levels(), 0.0);
+    DeformationChain star(Superellipsoid(radii, 3, 1));
+    star.append(Taper(-0.6, -0.6, radii.z));
+    EXPECT_EQ(star.convex_levels(), 0.0);
 }
 
 }  // namespace

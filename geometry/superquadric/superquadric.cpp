@@ -138,12 +138,16 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return;
     }
     const bool convex = deformation_.empty() && shape_.is_convex();
-    // A ray that starts within a convex shape's box outside it and moving away (a ray leaving its surface, as a rule)
-    // has no crossing: one point value says so, before the quadrics.
-    if (convex && clip->enter_axis < 0) {
+    // A ray that starts within the box outside the object and moving away (a ray leaving its surface, as a rule) has
+    // no crossing where the level set through its start is convex (DeformationChain::convex_levels): one point value
+    // says so, before the quadrics. A convex gauge grows along every direction it does not fall along; a tapered one
+    // is only known to have convex level sets, along whose outward normal the start must move strictly.
+    if (clip->enter_axis < 0 && deformation_.convex_levels() > 1) {
         const ValueAndDerivative start = ray.value_and_slope(t0);
         ++work.search.evaluations;
-        if (start.value > 0 && start.derivative >= 0) return;
+        if (start.value > 0 && 1 + start.value <= deformation_.convex_levels() &&
+            (convex ? start.derivative >= 0 : start.derivative > 0))
+            return;
     }
     // A star-like or pinched shape fills little of its quadrics: a ray that enters its box and passes beside its
     // planes is settled before them. (One that starts within the box leaves the shape's surface, as a rule: it

@@ -8,6 +8,7 @@
 // it (the `long` CTest label runs 10⁶).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -102,50 +103,62 @@ OracleAnswer oracle(const Superquadric& s, const Vec3d& origin, const Vec3d& dir
     return answer;
 }
 
+// What first_crossing answers, checked against the oracle.
+struct FirstCrossingTally {
+    std::size_t hits = 0, thin_hits = 0, grazing_misses = 0;
+};
+
+// s.first_crossing along origin + t·direction, t ∈ [0, t_max], against the oracle with `samples` samples: empty where
+// they agree, else what is wrong.
+std::string check_first_crossing(const Superquadric& s, const Vec3d& origin, const Vec3d& direction, double t_max,
+                                 int samples, SuperquadricWork& work, FirstCrossingTally& tally) {
+    const IntervalBox bounds = s.bounds();
+    const double size = std::max({bounds.x.width(), bounds.y.width(), bounds.z.width()});
+    // Two crossings closer than this may be taken for a grazing contact (the search's rule).
+    const double grazing = 4 * Superquadric::kRelativeResolution * size;
+    const std::optional<double> t = s.first_crossing(origin, direction, 0, t_max, work);
+    const auto [t0, t1] = clip_to_box(bounds, origin, direction, 0, t_max);
+    const OracleAnswer expected = t0 < t1 ? oracle(s, origin, direction, t0, t1, samples) : OracleAnswer{};
+    const double scale = length(direction);
+    const auto real_crossing = [&](double at) {
+        const double step = 1e-9 * size / scale + 1e-12 * at;
+        return (s.field(origin + direction * (at - step)) < 0) != (s.field(origin + direction * (at + step)) < 0);
+    };
+    if (t) {
+        ++tally.hits;
+        if (!real_crossing(*t)) return "a hit where the field does not change sign";
+        if (!expected.crossings.empty() && expected.crossings[0] < *t - grazing / scale) {
+            // An earlier crossing was skipped, unless it pairs up with a second one within the resolution.
+            if (!(expected.crossings.size() > 1 && expected.crossings[1] - expected.crossings[0] < grazing / scale))
+                return "missed the crossing at " + std::to_string(expected.crossings[0]);
+        } else if (expected.crossings.empty() || expected.crossings[0] > *t + grazing / scale) {
+            ++tally.thin_hits;  // a real crossing between the oracle's samples
+        } else if (std::abs(*t - expected.crossings[0]) > 1e-9 * std::max(1.0, std::abs(*t))) {
+            return "hit at " + std::to_string(*t) + " but the crossing is at " + std::to_string(expected.crossings[0]);
+        }
+    } else if (!expected.crossings.empty()) {
+        if (!(expected.crossings.size() > 1 && expected.crossings[1] - expected.crossings[0] < grazing / scale))
+            return "no hit, but the field changes sign at " + std::to_string(expected.crossings[0]);
+        ++tally.grazing_misses;
+    }
+    return {};
+}
+
 TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
     const std::size_t rays = stress_rays();
     constexpr int kRaysPerShape = 20, kSamples = 4000;
     constexpr double kTMax = 40;
     std::mt19937 random(55);
-    std::size_t hits = 0, thin_hits = 0, grazing_misses = 0, failures = 0;
+    FirstCrossingTally tally;
+    std::size_t failures = 0;
     for (std::size_t done = 0; done < rays && failures < 20;) {
         Vec3d radii;
         const Superquadric s = random_superquadric(random, radii);
-        const IntervalBox bounds = s.bounds();
-        const double size = std::max({bounds.x.width(), bounds.y.width(), bounds.z.width()});
-        // Two crossings closer than this may be taken for a grazing contact (the search's rule).
-        const double grazing = 4 * Superquadric::kRelativeResolution * size;
         for (int r = 0; r < kRaysPerShape && done < rays; ++r, ++done) {
             const RandomRay local = random_ray(random, radii, r % 5 == 0);
             const Vec3d origin = s.placement().point(local.origin), direction = s.placement().vector(local.direction);
             SuperquadricWork work;
-            const std::optional<double> t = s.first_crossing(origin, direction, 0, kTMax, work);
-            const auto [t0, t1] = clip_to_box(bounds, origin, direction, 0, kTMax);
-            const OracleAnswer expected = t0 < t1 ? oracle(s, origin, direction, t0, t1, kSamples) : OracleAnswer{};
-            const double scale = length(direction);
-            const auto real_crossing = [&](double at) {
-                const double step = 1e-9 * size / scale + 1e-12 * at;
-                return (s.field(origin + direction * (at - step)) < 0) != (s.field(origin + direction * (at + step)) < 0);
-            };
-            std::string problem;
-            if (t) {
-                ++hits;
-                if (!real_crossing(*t)) problem = "a hit where the field does not change sign";
-                else if (!expected.crossings.empty() && expected.crossings[0] < *t - grazing / scale) {
-                    // An earlier crossing was skipped, unless it pairs up with a second one within the resolution.
-                    if (!(expected.crossings.size() > 1 && expected.crossings[1] - expected.crossings[0] < grazing / scale))
-                        problem = "missed the crossing at " + std::to_string(expected.crossings[0]);
-                } else if (expected.crossings.empty() || expected.crossings[0] > *t + grazing / scale) {
-                    ++thin_hits;  // a real crossing between the oracle's samples
-                } else if (std::abs(*t - expected.crossings[0]) > 1e-9 * std::max(1.0, std::abs(*t))) {
-                    problem = "hit at " + std::to_string(*t) + " but the crossing is at " + std::to_string(expected.crossings[0]);
-                }
-            } else if (!expected.crossings.empty()) {
-                if (expected.crossings.size() > 1 && expected.crossings[1] - expected.crossings[0] < grazing / scale)
-                    ++grazing_misses;
-                else
-                    problem = "no hit, but the field changes sign at " + std::to_string(expected.crossings[0]);
-            }
+            const std::string problem = check_first_crossing(s, origin, direction, kTMax, kSamples, work, tally);
             if (!problem.empty()) {
                 ++failures;
                 ADD_FAILURE() << problem << " (ε1 " << s.shape().north_south() << ", ε2 " << s.shape().east_west()
@@ -153,9 +166,62 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
             }
         }
     }
-    std::printf("%zu rays: %zu hits (%zu between the oracle's samples), %zu grazing contacts left out\n", rays, hits,
-                thin_hits, grazing_misses);
-    EXPECT_GT(hits, rays / 5);
+    std::printf("%zu rays: %zu hits (%zu between the oracle's samples), %zu grazing contacts left out\n", rays,
+                tally.hits, tally.thin_hits, tally.grazing_misses);
+    EXPECT_GT(tally.hits, rays / 5);
+}
+
+// Rays leaving tapered convex shapes, which one point value settles where the level set through their start is
+// convex (DeformationChain::convex_levels): from just outside the surface (pushed out along a line from the centre
+// by 10⁻⁷ to 10⁻¹ of the way), in every direction, the ones moving outward and the ones turning back in, against the
+// oracle. Tapers of every rate a shape takes, also beyond the levels that are known convex.
+TEST(SuperquadricStress, RaysLeavingTaperedConvexShapesFindTheOraclesFirstCrossing) {
+    const std::size_t rays = stress_rays();
+    constexpr int kRaysPerShape = 20, kSamples = 4000;
+    constexpr double kTMax = 40;
+    std::mt19937 random(59);
+    std::uniform_real_distribution<double> unit(-1, 1), size(0.3, 1.5), rate(-0.95, 2.0),
+        log_round(std::log(Superellipsoid::kMinExponent), std::log(2.0)), log_push(std::log(1e-7), std::log(1e-1));
+    FirstCrossingTally tally;
+    std::size_t failures = 0, settled_at_once = 0;
+    for (std::size_t done = 0; done < rays && failures < 20;) {
+        const Vec3d radii{size(random), size(random), size(random)};
+        const Superellipsoid shape{radii, std::exp(log_round(random)), std::exp(log_round(random))};
+        DeformationChain chain(shape);
+        // One rate for both axes half the time: only such tapers keep levels convex.
+        const double rate_x = rate(random), rate_y = random() % 2 ? rate_x : rate(random);
+        try {
+            chain.append(Taper(rate_x, rate_y, radii.z));
+        } catch (const std::invalid_argument&) {
+            continue;  // a scale that does not stay positive over the object
+        }
+        const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
+                                    Transform::rotate({unit(random), unit(random), unit(random) + 1e-3}, 180 * unit(random));
+        const Superquadric s(shape, std::move(chain), placement);
+        for (int r = 0; r < kRaysPerShape && done < rays; ++r, ++done) {
+            // The surface along a line from the centre (inside: the taper keeps the middle's cross-section), found
+            // by bisection, then a point a little beyond it on the line.
+            const Vec3d out = normalize(Vec3d{unit(random), unit(random), unit(random)});
+            const auto inside = [&](double t) { return s.field(placement.point(out * t)) < 0; };
+            double lo = 0, hi = 4 * std::max({radii.x, radii.y, radii.z});
+            for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) (inside(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+            const Vec3d origin = placement.point(out * (hi * (1 + std::exp(log_push(random)))));
+            const Vec3d direction = placement.vector(Vec3d{unit(random), unit(random), unit(random)});
+            SuperquadricWork work;
+            const std::string problem = check_first_crossing(s, origin, direction, kTMax, kSamples, work, tally);
+            settled_at_once += work.search.evaluations == 1 && work.search.interval_bounds == 0;
+            if (!problem.empty()) {
+                ++failures;
+                ADD_FAILURE() << problem << " (ε1 " << shape.north_south() << ", ε2 " << shape.east_west()
+                              << ", levels known convex up to " << s.deformation().convex_levels() << ", ray " << done
+                              << ", rates " << rate_x << " and " << rate_y << ")";
+            }
+        }
+    }
+    std::printf("%zu rays: %zu hits, %zu settled by their start's value and slope\n", rays, tally.hits,
+                settled_at_once);
+    EXPECT_GT(tally.hits, rays / 10);
+    EXPECT_GT(settled_at_once, rays / 10);
 }
 
 // Undeformed stars, whose crossings come from tangent cutting planes (both exponents ≥ 2, concave_crossings.h) or

@@ -1,6 +1,8 @@
 #include "geometry/superquadric/taper.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace isotrace {
@@ -53,6 +55,20 @@ std::string Taper::problem(const IntervalBox& input) const {
         return message.str();
     }
     return {};
+}
+
+// With one rate for x and y, {G ≤ s} holds the points whose cross-section coordinates satisfy ‖(X/a1, Y/a2)‖_p2 ≤
+// φ(z) = f(z)·s·r(z/(s·a3)), r(u) = (1 − |u|^p1)^(1/p1) the profile: a norm (convex) below φ, a convex set where φ is
+// concave. (With two rates the cross-sections change their shape with the height, and some such sets are not convex.)
+// In w = z/(s·a3), f = α + β·w with α = 1 + rate/2 (the scale at the centre) and β = rate·s/2; (α + β·w)·r(w) is
+// concave on the side where the scale falls (the other side holds for any β) where (α − |β|·u)(p1 − 1) ≥
+// 2|β|·u·(1 − u^p1) for u ∈ [0, 1], which holds where (α − |β|)(p1 − 1) ≥ 2|β|·m with m = max u·(1 − u^p1) =
+// p1/(p1 + 1)·(p1 + 1)^(−1/p1): s ≤ α(p1 − 1) / (½|rate|·(p1 − 1 + 2m)). That also keeps the scale positive there.
+double Taper::convex_levels(double p1) const {
+    if (x_rate_ != y_rate_) return 0;
+    if (x_rate_ == 0) return std::numeric_limits<double>::infinity();
+    const double alpha = 1 + x_rate_ / 2, m = p1 / (p1 + 1) * std::pow(p1 + 1, -1 / p1);
+    return alpha * (p1 - 1) / (std::abs(x_rate_) / 2 * (p1 - 1 + 2 * m)) * (1 - 1e-9);  // below, for its rounding
 }
 
 }  // namespace isotrace

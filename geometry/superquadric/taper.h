@@ -44,6 +44,11 @@ public:
         return std::nullopt;
     }
 
+    // As the only stage on a convex superellipsoid (both exponents at most 2) whose outer norm has the exponent p1 =
+    // 2/ε1: the gauge levels s up to which the tapered sublevel set {G ≤ s} is known to be convex (0: none is, as
+    // for two different rates).
+    double convex_levels(double p1) const;
+
     double x_rate() const { return x_rate_; }
     double y_rate() const { return y_rate_; }
 
