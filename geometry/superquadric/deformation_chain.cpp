@@ -31,9 +31,17 @@ void DeformationChain::append(const Deformation& stage) {
     const std::string problem = std::visit([&](const auto& s) { return s.problem(boxes_.back()); }, stage);
     if (!problem.empty()) throw std::invalid_argument(problem);
     stages_.push_back(stage);
+    // The levels known convex: a twist turns a solid of revolution about z onto itself, level sets and all, and so
+    // keeps what was known; a taper of the shape's own level sets (those of a convex shape, undeformed or only
+    // turned) keeps Taper::convex_levels; nothing else is known.
     const Taper* taper = std::get_if<Taper>(&stage);
-    convex_levels_ = stages_.size() == 1 && taper && shape_.is_convex() ? taper->convex_levels(2 / shape_.north_south())
-                                                                        : 0;
+    if (std::holds_alternative<Twist>(stage)) {
+        if (!shape_.is_round_about_z()) convex_levels_ = 0;
+    } else if (taper && convex_levels_ == std::numeric_limits<double>::infinity()) {
+        convex_levels_ = taper->convex_levels(2 / shape_.north_south());
+    } else {
+        convex_levels_ = 0;
+    }
     keeps_solids_of_revolution_ =
         keeps_solids_of_revolution_ && std::visit([](const auto& s) { return s.keeps_solids_of_revolution(); }, stage);
     sector_ = std::visit([&](const auto& s) { return s.sector(boxes_.back(), heights_, cone_); }, stage);

@@ -43,8 +43,9 @@ public:
     // and the object lies within its region.
     const std::optional<BendSector>& enclosing_sector() const { return sector_; }
     // The gauge levels s up to which the deformed sublevel set {G∘D⁻¹ ≤ s} is known to be convex: every level for a
-    // convex shape undeformed, those of Taper::convex_levels for a lone taper of one, none (0) otherwise. A ray from a
-    // point of such a level (outside the object) that moves strictly outward never meets the object.
+    // convex shape undeformed or only twisted with round cross-sections, those of Taper::convex_levels for a taper of
+    // one (twisted before or after, if round), none (0) otherwise. A ray from a point of such a level (outside the
+    // object) that moves strictly outward never meets the object.
     double convex_levels() const { return convex_levels_; }
     std::size_t heap_bytes() const {
         return stages_.capacity() * sizeof(Deformation) + boxes_.capacity() * sizeof(IntervalBox);

@@ -361,7 +361,8 @@ TEST(SuperquadricDeformation, ATapersConvexLevelsKeepTheCrossSectionsConcave) {
     EXPECT_GT(Taper(-0.6, -0.6, 0.4).convex_levels(2 / 0.3), 1.8);
 }
 
-// A chain knows every level convex for an undeformed convex shape, a lone taper's levels, and none otherwise.
+// A chain knows every level convex for an undeformed convex shape, a taper's levels, and none after a bend, a second
+// taper or a twist of cross-sections that are not round.
 TEST(SuperquadricDeformation, TheChainsConvexLevels) {
     const Vec3d radii{0.5, 0.6, 0.7};
     EXPECT_TRUE(std::isinf(DeformationChain(Superellipsoid(radii, 1, 1)).convex_levels()));
@@ -374,9 +375,24 @@ TEST(SuperquadricDeformation, TheChainsConvexLevels) {
     DeformationChain two_rates(Superellipsoid(radii, 1, 0.5));
     two_rates.append(Taper(-0.6, 0.4, radii.z));
     EXPECT_EQ(two_rates.convex_levels(), 0.0);
+    // A twist keeps them where the cross-sections are round (the level sets are solids of revolution about z),
+    // before a taper or after one, and loses them otherwise.
     DeformationChain twisted = tapered;
     twisted.append(Twist(1.0, radii.z));
     EXPECT_EQ(twisted.convex_levels(), 0.0);
+    const Superellipsoid round({0.5, 0.5, 0.7}, 0.4, 1);
+    DeformationChain turned(round);
+    turned.append(Twist(1.0, 0.7));
+    EXPECT_TRUE(std::isinf(turned.convex_levels()));
+    turned.append(Taper(-0.6, -0.6, 0.7));
+    EXPECT_EQ(turned.convex_levels(), Taper(-0.6, -0.6, 0.7).convex_levels(2 / 0.4));
+    turned.append(Twist(-2.0, 0.7));
+    EXPECT_EQ(turned.convex_levels(), Taper(-0.6, -0.6, 0.7).convex_levels(2 / 0.4));
+    turned.append(Taper(0.3, 0.3, 0.7));
+    EXPECT_EQ(turned.convex_levels(), 0.0);  // a second taper: the profile is no longer the shape's own
+    DeformationChain bent(round);
+    bent.append(Bend(1.0, 0.3, 0.0, {-0.7, 0.7}));
+    EXPECT_EQ(bent.convex_levels(), 0.0);
     DeformationChain star(Superellipsoid(radii, 3, 1));
     star.append(Taper(-0.6, -0.6, radii.z));
     EXPECT_EQ(star.convex_levels(), 0.0);

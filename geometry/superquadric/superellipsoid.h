@@ -75,6 +75,8 @@ public:
     ConeAboutZ enclosing_cylinder() const { return {along_radii_.cylinder.x, along_radii_.cylinder.y, 1, 0}; }
     // Exponents ≤ 2 make the gauge a (nested) norm, so the solid is convex.
     bool is_convex() const { return north_south_ <= 2 && east_west_ <= 2; }
+    // Round cross-sections (a1 = a2, ε2 = 1): the gauge, and every level set of it, is a solid of revolution about z.
+    bool is_round_about_z() const { return radii_.x == radii_.y && east_west_ == 1; }
     // Exponents ≥ 2 make each p-norm one with p ≤ 1, concave on the non-negative orthant, and so the gauge concave
     // within each octant: along a ray, between the coordinate planes.
     bool is_concave_in_octants() const { return north_south_ >= 2 && east_west_ >= 2; }

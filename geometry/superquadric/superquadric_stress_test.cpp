@@ -171,11 +171,11 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
     EXPECT_GT(tally.hits, rays / 5);
 }
 
-// Rays leaving tapered convex shapes, which one point value settles where the level set through their start is
-// convex (DeformationChain::convex_levels): from just outside the surface (pushed out along a line from the centre
-// by 10⁻⁷ to 10⁻¹ of the way), in every direction, the ones moving outward and the ones turning back in, against the
-// oracle. Tapers of every rate a shape takes, also beyond the levels that are known convex.
-TEST(SuperquadricStress, RaysLeavingTaperedConvexShapesFindTheOraclesFirstCrossing) {
+// Rays leaving tapered (and twisted round) convex shapes, which one point value settles where the level set through
+// their start is convex (DeformationChain::convex_levels): from just outside the surface (pushed out along a line from
+// the centre by 10⁻⁷ to 10⁻¹ of the way), in every direction, the ones moving outward and the ones turning back in,
+// against the oracle. Tapers of every rate a shape takes, also beyond the levels that are known convex.
+TEST(SuperquadricStress, RaysLeavingTaperedOrTwistedConvexShapesFindTheOraclesFirstCrossing) {
     const std::size_t rays = stress_rays();
     constexpr int kRaysPerShape = 20, kSamples = 4000;
     constexpr double kTMax = 40;
@@ -185,13 +185,22 @@ TEST(SuperquadricStress, RaysLeavingTaperedConvexShapesFindTheOraclesFirstCrossi
     FirstCrossingTally tally;
     std::size_t failures = 0, settled_at_once = 0;
     for (std::size_t done = 0; done < rays && failures < 20;) {
-        const Vec3d radii{size(random), size(random), size(random)};
-        const Superellipsoid shape{radii, std::exp(log_round(random)), std::exp(log_round(random))};
+        // A third of the shapes with round cross-sections, twisted before or after the taper (or only twisted).
+        const bool round = random() % 3 == 0;
+        Vec3d radii{size(random), size(random), size(random)};
+        if (round) radii.y = radii.x;
+        const double north_south = std::exp(log_round(random)), east_west = round ? 1 : std::exp(log_round(random));
+        const Superellipsoid shape{radii, north_south, east_west};
         DeformationChain chain(shape);
+        const auto maybe_twist = [&] {
+            if (round && random() % 2) chain.append(Twist(1.5 * unit(random) / radii.z, radii.z));
+        };
         // One rate for both axes half the time: only such tapers keep levels convex.
         const double rate_x = rate(random), rate_y = random() % 2 ? rate_x : rate(random);
         try {
-            chain.append(Taper(rate_x, rate_y, radii.z));
+            maybe_twist();
+            if (!round || random() % 4 != 0) chain.append(Taper(rate_x, rate_y, radii.z));
+            maybe_twist();
         } catch (const std::invalid_argument&) {
             continue;  // a scale that does not stay positive over the object
         }
