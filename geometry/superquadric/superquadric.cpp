@@ -140,7 +140,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     const bool convex = deformation_.empty() && shape_.is_convex();
     // A ray that starts within the box outside the object and moving away (a ray leaving its surface, as a rule) has
     // no crossing where the level set through its start is convex (DeformationChain::convex_levels): one point value
-    // says so, before the quadrics. A convex gauge grows along every direction it does not fall along; a tapered one
+    // says so, before the quadrics. A convex gauge grows along every direction it does not fall along; a deformed one
     // is only known to have convex level sets, along whose outward normal the start must move strictly.
     if (clip->enter_axis < 0 && deformation_.convex_levels() > 1) {
         const ValueAndDerivative start = ray.value_and_slope(t0);
