@@ -58,6 +58,14 @@ Superquadric random_superquadric(std::mt19937& random, Vec3d& radii) {
     return Superquadric(shape, std::move(chain), placement);
 }
 
+// A translation within ±1 along each axis after a turn of up to 180° about a random axis.
+Transform random_placement(std::mt19937& random) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const Vec3d offset{unit(random), unit(random), unit(random)};
+    const Vec3d axis{unit(random), unit(random), unit(random) + 1e-3};
+    return Transform::translate(offset) * Transform::rotate(axis, 180 * unit(random));
+}
+
 // The part [t0, t1] of origin + t·direction, t in [t_min, t_max], inside `box`; empty when t0 > t1.
 std::pair<double, double> clip_to_box(const IntervalBox& box, const Vec3d& origin, const Vec3d& direction,
                                       double t_min, double t_max) {
@@ -204,8 +212,7 @@ TEST(SuperquadricStress, RaysLeavingTaperedOrTwistedConvexShapesFindTheOraclesFi
         } catch (const std::invalid_argument&) {
             continue;  // a scale that does not stay positive over the object
         }
-        const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
-                                    Transform::rotate({unit(random), unit(random), unit(random) + 1e-3}, 180 * unit(random));
+        const Transform placement = random_placement(random);
         const Superquadric s(shape, std::move(chain), placement);
         for (int r = 0; r < kRaysPerShape && done < rays; ++r, ++done) {
             // The surface along a line from the centre (inside: the taper keeps the middle's cross-section), found
@@ -250,8 +257,7 @@ TEST(SuperquadricStress, UndeformedStarsGiveEveryCrossingTheOracleSees) {
         const bool mixed = done % 40 >= 20, round_north_south = random() % 2;
         const double first = star(random), second = mixed ? std::exp(log_round(random)) : star(random);
         const Superellipsoid shape{radii, round_north_south ? second : first, round_north_south ? first : second};
-        const Transform placement = Transform::translate({unit(random), unit(random), unit(random)}) *
-                                    Transform::rotate({unit(random), unit(random), unit(random) + 1e-3}, 180 * unit(random));
+        const Transform placement = random_placement(random);
         const Superquadric s(shape, DeformationChain(shape), placement);
         const IntervalBox bounds = s.bounds();
         const double grazing = 4 * Superquadric::kRelativeResolution *

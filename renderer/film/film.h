@@ -77,9 +77,10 @@ public:
     // The largest radiance a sample may carry: 32 of its squares, times a filter's weight, must stay finite in the open
     // block's single-precision sums. No scene's light comes near it; a path that does is as broken as a NaN.
     static constexpr float kLargestRadiance = 1e17f;
+    // (The comparisons are false for NaN and infinities too.)
     static bool holds(const Rgb& radiance) {
-        return radiance.is_finite() && std::abs(radiance.r) <= kLargestRadiance &&
-               std::abs(radiance.g) <= kLargestRadiance && std::abs(radiance.b) <= kLargestRadiance;
+        return std::abs(radiance.r) <= kLargestRadiance && std::abs(radiance.g) <= kLargestRadiance &&
+               std::abs(radiance.b) <= kLargestRadiance;
     }
 
     // x, y in full-raster pixels inside bounds(), the radiance one the film holds(). Not thread-safe per pixel (one
