@@ -134,20 +134,27 @@ void SuperquadricShape::intersect_callback(const RTCIntersectFunctionNArguments*
         });
 }
 
+bool SuperquadricShape::blocks(const void* self, std::uint32_t index, const Vec3d& origin, const Vec3d& direction,
+                               double t_near, float t_far) {
+    const auto* shape = static_cast<const SuperquadricShape*>(self);
+    SuperquadricWork work;
+    const bool blocked = shape->superquadrics_[index].blocks(origin, direction, t_near, t_far, work);
+    shape->record_work(work);
+    return blocked;
+}
+
 void SuperquadricShape::occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* self = static_cast<const SuperquadricShape*>(args->geometryUserPtr);
     const Superquadric& s = self->superquadrics_[args->primID];
     user_geometry::occlude_rays(
         args, self->counter_slot_,
         [&](const Vec3d& origin, const Vec3d& direction, double t_near, float t_far) {
-            SuperquadricWork work;
-            const bool blocked = s.blocks(origin, direction, t_near, t_far, work);
-            self->record_work(work);
-            return blocked;
+            return blocks(self, args->primID, origin, direction, t_near, t_far);
         },
         [&](const Vec3d& origin, const Vec3d& direction, double t_near) {
             return s.starts_within_deformed_box(origin, direction, t_near);
-        });
+        },
+        blocks);
 }
 
 void SuperquadricShape::primitive_spans(std::uint32_t index, const Vec3d& origin, const Vec3d& direction,

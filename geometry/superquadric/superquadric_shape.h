@@ -59,6 +59,10 @@ private:
     // Superquadric `index`'s first crossing in (t_near, t_far), its work recorded.
     std::optional<double> first_hit(std::uint32_t index, const Vec3d& origin, const Vec3d& direction, double t_near,
                                     float t_far) const;
+    // Whether superquadric `index` of the shape `self` blocks the ray (an occlusion query), its work recorded; also
+    // what a query put off by the first pass of a two-pass occlusion query is asked (PutOffQuery::Ask).
+    static bool blocks(const void* self, std::uint32_t index, const Vec3d& origin, const Vec3d& direction,
+                       double t_near, float t_far);
 
     static void bounds_callback(const RTCBoundsFunctionArguments* args);
     static void intersect_callback(const RTCIntersectFunctionNArguments* args);

@@ -6,6 +6,7 @@
 
 #include <type_traits>
 
+#include "renderer/embree/put_off_queries.h"
 #include "renderer/embree/query_scratch_pool.h"
 
 namespace isotrace {
@@ -13,11 +14,12 @@ namespace isotrace {
 // Which of a primitive's occlusion queries a pass answers (RenderScene::occluded). A primitive may put off a query
 // whose ray starts within it (a shadow ray leaving its surface), when proving that such a ray gets out costs far
 // more than a query from outside: the first pass asks every other query, and only a ray none of them blocks is
-// asked again for the ones put off. The answer is the same; a ray that something else blocks skips the costly one.
+// asked again for the ones put off (PutOffQueries, or a second traversal where they were not all kept). The answer
+// is the same; a ray that something else blocks skips the costly one.
 enum class OcclusionPass {
     All,             // a single pass
     AwayFromStarts,  // every query but those put off, which are noted (QueryContext::put_off)
-    AtStarts,        // only the queries put off
+    AtStarts,        // only the queries put off (a second traversal)
 };
 
 struct QueryContext {
@@ -25,7 +27,10 @@ struct QueryContext {
     QueryScratchPool* pool;
     QueryScratchPool::Loan loan;  // from `pool`, by the first callback that asks for a scratch
     OcclusionPass occlusion_pass = OcclusionPass::All;
-    bool put_off = false;  // a query of this one was put off by its first pass
+    PutOffQueries put_off;  // by the first pass
+    // The query's own rays (an RTCRay or RTCRay8) and their number: a callback given these keeps what it puts off.
+    const void* rays = nullptr;
+    unsigned ray_count = 0;
 
     explicit QueryContext(QueryScratchPool& scratch_pool) : pool(&scratch_pool) { rtcInitIntersectContext(&embree); }
     ~QueryContext() {

@@ -96,25 +96,30 @@ void intersect_rays(const RTCIntersectFunctionNArguments* args, int counter_slot
 
 // The loop of an occluded callback, with first_hit as above: a hit occludes the ray (t_far = −∞). A query for
 // which puts_off(origin, direction, t_near) is true is put off to the second pass of a two-pass occlusion query
-// (OcclusionPass); the other queries are answered in the first pass or in a single one.
+// (OcclusionPass), where ask_later(shape, primitive, ...) answers it as first_hit would; the other queries are
+// answered in the first pass or in a single one.
 template <class FirstHit, class PutsOff>
 void occlude_rays(const RTCOccludedFunctionNArguments* args, int counter_slot, FirstHit&& first_hit,
-                  PutsOff&& puts_off) {
+                  PutsOff&& puts_off, PutOffQuery::Ask ask_later) {
     QueryContext& query = query_context(args->context);
     RTCRayN* rays = args->ray;
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
         const Vec3d origin = ray_origin(rays, args->N, i), direction = ray_direction(rays, args->N, i);
         const double t_near = RTCRayN_tnear(rays, args->N, i);
+        float& t_far = RTCRayN_tfar(rays, args->N, i);
         if (query.occlusion_pass != OcclusionPass::All) {
             const bool put_off = puts_off(origin, direction, t_near);
             if (put_off != (query.occlusion_pass == OcclusionPass::AtStarts)) {
-                query.put_off = query.put_off || put_off;
+                if (put_off)
+                    query.put_off.add({ask_later, args->geometryUserPtr, args->primID, counter_slot, i,
+                                       {origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z},
+                                       t_near, t_far},
+                                      ask_later && rays == query.rays && args->N == query.ray_count);
                 continue;
             }
         }
         counters::count_test(counter_slot);
-        float& t_far = RTCRayN_tfar(rays, args->N, i);
         if (!first_hit(origin, direction, t_near, t_far)) continue;
         counters::count_candidate_hit(counter_slot);
         t_far = -std::numeric_limits<float>::infinity();
@@ -124,8 +129,9 @@ void occlude_rays(const RTCOccludedFunctionNArguments* args, int counter_slot, F
 // The same for a primitive that answers every query at once.
 template <class FirstHit>
 void occlude_rays(const RTCOccludedFunctionNArguments* args, int counter_slot, FirstHit&& first_hit) {
-    occlude_rays(args, counter_slot, std::forward<FirstHit>(first_hit),
-                 [](const Vec3d&, const Vec3d&, double) { return false; });
+    occlude_rays(
+        args, counter_slot, std::forward<FirstHit>(first_hit), [](const Vec3d&, const Vec3d&, double) { return false; },
+        nullptr);
 }
 
 }  // namespace isotrace::user_geometry

@@ -367,14 +367,17 @@ unsigned RenderScene::occluded(std::span<const Ray> rays, unsigned live) const {
     RTCRay8 query;  // Embree reads only the valid lanes
     alignas(32) std::array<std::int32_t, 8> valid;
     const unsigned untraceable = set_packet(rays, live, query, valid);  // no light arrives along an untraceable ray
+    context.rays = &query, context.ray_count = 8;
     rtcOccluded8(valid.data(), scene_, &context.embree, &query);
     const auto blocked = [&] {
         return lane_bits(load_lanes(valid.data()) & (load_lanes(query.tfar) == -std::numeric_limits<float>::infinity()));
     };
     unsigned found = blocked();
-    if (context.put_off) {
+    if (context.put_off.any()) {
         const IntLanes open = load_lanes(valid.data()) & ~lanes_of_bits(found);
-        if (lane_bits(open)) {
+        if (lane_bits(open) && context.put_off.all_kept()) {
+            found |= context.put_off.ask(lane_bits(open));
+        } else if (lane_bits(open)) {
             store_lanes(valid.data(), open);  // the rays nothing blocked, as they were
             context.occlusion_pass = OcclusionPass::AtStarts;
             rtcOccluded8(valid.data(), scene_, &context.embree, &query);

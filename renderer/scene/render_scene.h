@@ -106,10 +106,12 @@ public:
         context.occlusion_pass = OcclusionPass::AwayFromStarts;
         RTCRay query;
         set_embree_ray(query, ray);
+        context.rays = &query, context.ray_count = 1;
         rtcOccluded1(scene_, &context.embree, &query);
         constexpr float kBlocked = -std::numeric_limits<float>::infinity();
         if (query.tfar == kBlocked) return true;
-        if (!context.put_off) return false;
+        if (!context.put_off.any()) return false;
+        if (context.put_off.all_kept()) return context.put_off.ask(1u) != 0;
         context.occlusion_pass = OcclusionPass::AtStarts;
         rtcOccluded1(scene_, &context.embree, &query);  // a ray nothing blocked is as it was
         return query.tfar == kBlocked;
