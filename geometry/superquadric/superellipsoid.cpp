@@ -131,6 +131,11 @@ std::optional<Interval> Superellipsoid::inscribed_stretch(const Vec3d& start, co
     return within_quadric(scales(form).inscribed, start, direction, length, 1 - kQuadricMargin);
 }
 
+double Superellipsoid::nearest_to_centre(const Vec3d& start, const Vec3d& direction, double length,
+                                         QuadricForm form) const {
+    return nearest_in_quadric(scales(form).inscribed, start, direction, length);
+}
+
 // h = ‖(u, v)‖_p2 is convex along a piece for p2 ≥ 1 and concave for p2 ≤ 1; R(w) = (1 − w^p1)^(1/p1), the edge of
 // the p1-ball, is concave for p1 ≥ 1 and convex for p1 ≤ 1. With one exponent on each side of 2 both are convex or
 // both concave, and φ = h − R is their difference (negated for the concave pair).

@@ -68,6 +68,10 @@ public:
     // gauge is below 1 throughout it); nothing where the segment misses it.
     std::optional<Interval> inscribed_stretch(const Vec3d& start, const Vec3d& direction, double length,
                                               QuadricForm form = QuadricForm::AlongRadii) const;
+    // The τ in [0, length] where the same segment comes nearest the centre as that ellipsoid measures it: where a
+    // segment that misses the ellipsoid passes deepest into the solid, as a rule.
+    double nearest_to_centre(const Vec3d& start, const Vec3d& direction, double length,
+                             QuadricForm form = QuadricForm::AlongRadii) const;
     // Planes that hold the solid where an exponent is above 1 (none otherwise): a segment that misses them holds no
     // crossing.
     const EnclosingPolytope& enclosing_polytope() const { return enclosing_polytope_; }

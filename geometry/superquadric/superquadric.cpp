@@ -186,13 +186,24 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         if constexpr (precision == CrossingPrecision::SignChange) {
             const bool outside_at_start =
                 turned ? clip->enter_axis >= 0 : shape_.box_gauge(o + d * t0) > 1 + 1e-12;
-            if (lo > t0 || outside_at_start)
+            if (lo > t0 || outside_at_start) {
                 if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo, form);
                     inside && inside->lo > 0) {
                     const double reached = lo + inside->lo;
                     visit(Crossing{0.5 * (lo + reached), true, lo, reached});
                     return;
                 }
+                // One that passes beside that ellipsoid may still cross a convex solid (a box's edges): one value
+                // where it comes nearest the centre settles most such rays alike. (A star's arms lie away from it.)
+                if (convex) {
+                    const double nearest = lo + shape_.nearest_to_centre(o + d * lo, d, hi - lo, form);
+                    ++work.search.evaluations;
+                    if (nearest > lo && ray.value(nearest) < 0) {
+                        visit(Crossing{0.5 * (lo + nearest), true, lo, nearest});
+                        return;
+                    }
+                }
+            }
         }
     }
     const bool concave = deformation_.empty() && shape_.is_concave_in_octants();

@@ -411,6 +411,18 @@ TEST(SuperquadricIntersection, ARayThroughAShapesInscribedEllipsoidIsBlockedWith
     }
 }
 
+// One that passes beside that ellipsoid through a convex solid (a box's edge) is settled by one point value where it
+// comes nearest the centre; one that stops short of the solid is not blocked.
+TEST(SuperquadricIntersection, ARayThroughAConvexSolidBesideItsEllipsoidIsBlockedByOnePointValue) {
+    for (const auto& [e1, e2] : {std::pair{0.1, 0.1}, {0.3, 0.05}, {0.05, 1.0}}) {
+        const Superquadric s = make_superquadric({1, 1, 1}, e1, e2);
+        SuperquadricWork work;
+        EXPECT_TRUE(s.blocks({-3, 0.75, 0.75}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
+        EXPECT_EQ(work.search.evaluations, 1u) << e1 << " " << e2;
+        EXPECT_FALSE(s.blocks({-3, 0.75, 0.75}, {1, 0, 0}, 0, 1.5f, work)) << e1 << " " << e2;
+    }
+}
+
 // A deformed shape's occlusion query from outside through the solid is settled by the shell alone (a run of surface
 // cells between cells without surface outside and inside it), without a point value, whatever the exponents; one
 // that stops short of the surface is not blocked.
