@@ -116,7 +116,7 @@ Vec3d Superquadric::surface_point(double eta, double omega) const {
 template <CrossingPrecision precision, class Visit>
 void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_min, double t_max, bool first_only,
                           SuperquadricWork& work, Visit&& visit) const {
-    const SuperquadricAlongRay ray(*this, origin, direction);
+    const SuperquadricAlongRay ray(*this, origin, direction, &work.point_values);
     const Vec3d &o = ray.local_origin(), &d = ray.local_direction();
     const IntervalBox& box = deformation_.deformed_box();
     const std::optional<LineBoxClip> clip = clip_line_to_box(box.lower(), box.upper(), o, d, t_min, t_max);
@@ -144,7 +144,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // is only known to have convex level sets, along whose outward normal the start must move strictly.
     if (clip->enter_axis < 0 && deformation_.convex_levels() > 1) {
         const ValueAndDerivative start = ray.value_and_slope(t0);
-        ++work.search.evaluations;
         if (start.value > 0 && 1 + start.value <= deformation_.convex_levels() &&
             (convex ? start.derivative >= 0 : start.derivative > 0))
             return;
@@ -197,7 +196,6 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
                 // where it comes nearest the centre settles most such rays alike. (A star's arms lie away from it.)
                 if (convex) {
                     const double nearest = lo + shape_.nearest_to_centre(o + d * lo, d, hi - lo, form);
-                    ++work.search.evaluations;
                     if (nearest > lo && ray.value(nearest) < 0) {
                         visit(Crossing{0.5 * (lo + nearest), true, lo, nearest});
                         return;
@@ -213,7 +211,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     bool cusp_lo = false, cusp_hi = false;
     RecentSamples<Superellipsoid::GaugeAndDifference> samples;
     const auto mixed_at = [&](double t) -> const Superellipsoid::GaugeAndDifference& {
-        return samples.at(t, [&] { return shape_.gauge_and_difference(o + d * t, ray.undeformed_rates()); });
+        return samples.at(t, [&] { return ray.gauge_and_difference(t); });
     };
     // Undeformed, the field is the gauge less 1 (local_field): mixed shapes take it with their parts.
     const auto value = [&](double t) { return mixed ? mixed_at(t).gauge - 1 : ray.value(t); };

@@ -38,6 +38,9 @@ class SuperquadricAlongRay;
 
 struct SuperquadricWork {
     CrossingSearchWork search;
+    // Every value of g the search took along the ray, also those at the ends of pieces and cells and the tests
+    // before the search (its own count has only the values it asks for).
+    std::uint64_t point_values = 0;
     std::uint64_t quadratic_solves = 0;  // an ellipsoid's closed form
 };
 

@@ -5,13 +5,15 @@
 namespace isotrace {
 
 SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, const Vec3d& origin,
-                                           const Vec3d& direction)
+                                           const Vec3d& direction, std::uint64_t* point_values)
     : superquadric_(superquadric),
       origin_(superquadric.placement().inverse_point(origin)),
       direction_(superquadric.placement().inverse_vector(direction)),
-      rates_(superquadric.shape().rates_along(direction_)) {}
+      rates_(superquadric.shape().rates_along(direction_)),
+      point_values_(point_values) {}
 
 ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
+    count_value();
     const Vec3d point = origin_ + direction_ * t;
     if (superquadric_.deformation().empty()) {
         const ValueAndDerivative gauge = superquadric_.shape().gauge_along(point, rates_);

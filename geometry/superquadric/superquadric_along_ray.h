@@ -6,6 +6,7 @@
 // interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]). g is continued
 // beyond the undeformed box by the gauge (DeformationChain::BeyondUndeformedBox::Gauge), not cut to 1 there: a
 // stretch that reaches past a face of that box, as those near a boxy shape's surface do, keeps its bound of g′.
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -17,17 +18,26 @@ namespace isotrace {
 // One per query: it keeps the walk of the last stretch it bounded (not to be shared between threads).
 class SuperquadricAlongRay {
 public:
-    // `origin` and `direction` in the superquadric's shape space.
-    SuperquadricAlongRay(const Superquadric& superquadric, const Vec3d& origin, const Vec3d& direction);
+    // `origin` and `direction` in the superquadric's shape space; every point value taken is counted in
+    // `point_values` when given.
+    SuperquadricAlongRay(const Superquadric& superquadric, const Vec3d& origin, const Vec3d& direction,
+                         std::uint64_t* point_values = nullptr);
 
     const Vec3d& local_origin() const { return origin_; }
     const Vec3d& local_direction() const { return direction_; }
-    // The local direction in the undeformed shape's radii (Superellipsoid::rates_along), for an undeformed one.
-    const Superellipsoid::RadiusRates& undeformed_rates() const { return rates_; }
 
-    double value(double t) const { return superquadric_.local_field(origin_ + direction_ * t, kBeyond); }
+    double value(double t) const {
+        count_value();
+        return superquadric_.local_field(origin_ + direction_ * t, kBeyond);
+    }
     // g(t) (bit for bit value(t)) and g′(t) (NaN where unknown: outside a stage box, on a crease).
     ValueAndDerivative value_and_slope(double t) const;
+    // An undeformed superquadric's gauge at t and its parts as a difference of convex functions
+    // (Superellipsoid::gauge_and_difference).
+    Superellipsoid::GaugeAndDifference gauge_and_difference(double t) const {
+        count_value();
+        return superquadric_.shape().gauge_and_difference(origin_ + direction_ * t, rates_);
+    }
     // Contains g over [a, b] (points outside a deformed stage box count as outside, g = 1).
     Interval bound(double a, double b) const;
     // Contains g′ over [a, b] wherever g is differentiable; unbounded when some of the stretch lies outside a
@@ -37,6 +47,9 @@ public:
 private:
     static constexpr DeformationChain::BeyondUndeformedBox kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
 
+    void count_value() const {
+        if (point_values_) ++*point_values_;
+    }
     IntervalBox stretch(double a, double b) const;
     // The inverse walk of stretch(a, b) (nullptr when no part of it lies inside every stage box), kept for the last
     // stretch asked about: the search asks for the bound of g and then of g′ over the same stretch, and the walk
@@ -46,6 +59,7 @@ private:
     const Superquadric& superquadric_;
     Vec3d origin_, direction_;
     Superellipsoid::RadiusRates rates_;  // taken once: the ray's direction is the same all along it undeformed
+    std::uint64_t* point_values_;
     mutable double walked_a_ = std::numeric_limits<double>::quiet_NaN(), walked_b_ = walked_a_;
     mutable bool walked_inside_ = false;
     mutable std::optional<DeformationChain::InverseBoxes> walked_;  // made when first asked: most rays ask none

@@ -99,7 +99,7 @@ RTCGeometry SuperquadricShape::create_geometry(RTCDevice device) {
 
 void SuperquadricShape::record_work(const SuperquadricWork& work) const {
     const std::array<std::uint64_t, 7> amounts{
-        work.search.interval_bounds, work.search.slope_bounds, work.search.slope_proofs, work.search.evaluations,
+        work.search.interval_bounds, work.search.slope_bounds, work.search.slope_proofs, work.point_values,
         work.search.halvings,        work.search.crossings,    work.quadratic_solves};
     // Most queries of a scene of many shapes pass beside a shape's quadrics and count nothing.
     if (std::none_of(amounts.begin(), amounts.end(), [](std::uint64_t amount) { return amount != 0; })) return;

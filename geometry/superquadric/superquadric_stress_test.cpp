@@ -225,7 +225,7 @@ TEST(SuperquadricStress, RaysLeavingTaperedOrTwistedConvexShapesFindTheOraclesFi
             const Vec3d direction = placement.vector(Vec3d{unit(random), unit(random), unit(random)});
             SuperquadricWork work;
             const std::string problem = check_first_crossing(s, origin, direction, kTMax, kSamples, work, tally);
-            settled_at_once += work.search.evaluations == 1 && work.search.interval_bounds == 0;
+            settled_at_once += work.point_values == 1 && work.search.interval_bounds == 0;
             if (!problem.empty()) {
                 ++failures;
                 ADD_FAILURE() << problem << " (ε1 " << shape.north_south() << ", ε2 " << shape.east_west()

@@ -308,10 +308,10 @@ TEST(SuperquadricIntersection, StretchesOutsideTheGaugesUnitBallAreNotSearched) 
         // Along the box's edge x = y = 0.95, outside the surface, through the plane z = 0.
         EXPECT_FALSE(s.first_crossing({0.95, 0.95, -2}, {0, 0, 1}, 0, 10, work));
         EXPECT_FALSE(s.blocks({0.95, 0.95, -2}, {0, 0, 1}, 0, 10, work));
-        EXPECT_EQ(work.search.evaluations, 0u);
+        EXPECT_EQ(work.point_values, 0u);
         // Through the middle it is searched, and hits.
         EXPECT_TRUE(s.first_crossing({0.01, 0.02, -2}, {0, 0, 1}, 0, 10, work));
-        EXPECT_GT(work.search.evaluations, 0u);
+        EXPECT_GT(work.point_values, 0u);
     }
 }
 
@@ -325,9 +325,9 @@ void expect_settled_beside(const Superquadric& s, double radius, double z, doubl
     EXPECT_FALSE(s.first_crossing(beside, across, 0, 10, work));
     EXPECT_FALSE(s.blocks(beside, across, 0, 10, work));
     EXPECT_EQ(work.search.interval_bounds, 0u);
-    EXPECT_EQ(work.search.evaluations, 0u);
+    EXPECT_EQ(work.point_values, 0u);
     s.first_crossing(Vec3d{0, 0, z} - across * 3.0, across, 0, 10, work);
-    EXPECT_GT(work.search.interval_bounds + work.search.evaluations, 0u);
+    EXPECT_GT(work.search.interval_bounds + work.point_values, 0u);
 }
 
 // The round cylinder's radius around a superellipsoid of radii 0.4: 0.4 for round and star-shaped cross-sections,
@@ -367,7 +367,7 @@ TEST(SuperquadricIntersection, ARayThroughABentSolidsHoleIsNotSearched) {
         EXPECT_FALSE(s.first_crossing({0.405, -3, 0}, {0, 1, 0}, 0, 10, work));
         EXPECT_FALSE(s.blocks({0.405, -3, 0}, {0, 1, 0}, 0, 10, work));
         EXPECT_EQ(work.search.interval_bounds, 0u);
-        EXPECT_EQ(work.search.evaluations, 0u);
+        EXPECT_EQ(work.point_values, 0u);
         EXPECT_TRUE(s.first_crossing({0.1, -3, 0}, {0, 1, 0}, 0, 10, work));
     }
 }
@@ -393,9 +393,9 @@ TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {
         }
     }
     EXPECT_GT(blocked, 300);
-    EXPECT_LT(by_blocks.search.evaluations, by_crossing.search.evaluations);
-    std::printf("point evaluations: %llu blocking, %llu locating\n", (unsigned long long)by_blocks.search.evaluations,
-                (unsigned long long)by_crossing.search.evaluations);
+    EXPECT_LT(by_blocks.point_values, by_crossing.point_values);
+    std::printf("point values: %llu blocking, %llu locating\n", (unsigned long long)by_blocks.point_values,
+                (unsigned long long)by_crossing.point_values);
 }
 
 // An undeformed shape's occlusion query that enters the quadrics around it from outside and reaches the ellipsoid
@@ -406,7 +406,7 @@ TEST(SuperquadricIntersection, ARayThroughAShapesInscribedEllipsoidIsBlockedWith
         const Superquadric s = make_superquadric({0.5, 0.8, 1.2}, e1, e2);
         SuperquadricWork work;
         EXPECT_TRUE(s.blocks({-3, 0.05, 0.1}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_EQ(work.search.evaluations, 0u) << e1 << " " << e2;
+        EXPECT_EQ(work.point_values, 0u) << e1 << " " << e2;
         EXPECT_FALSE(s.blocks({-3, 0.05, 0.1}, {1, 0, 0}, 0, 2.4f, work)) << e1 << " " << e2;
     }
 }
@@ -418,7 +418,7 @@ TEST(SuperquadricIntersection, ARayThroughAConvexSolidBesideItsEllipsoidIsBlocke
         const Superquadric s = make_superquadric({1, 1, 1}, e1, e2);
         SuperquadricWork work;
         EXPECT_TRUE(s.blocks({-3, 0.75, 0.75}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_EQ(work.search.evaluations, 1u) << e1 << " " << e2;
+        EXPECT_EQ(work.point_values, 1u) << e1 << " " << e2;
         EXPECT_FALSE(s.blocks({-3, 0.75, 0.75}, {1, 0, 0}, 0, 1.5f, work)) << e1 << " " << e2;
     }
 }
@@ -433,7 +433,7 @@ TEST(SuperquadricIntersection, ARayThroughADeformedSolidIsBlockedWithoutAPointVa
             const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, e1, e2, {stage});
             SuperquadricWork work;
             EXPECT_TRUE(s.blocks({-3, 0.02, 0.03}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
-            EXPECT_EQ(work.search.evaluations, 0u) << e1 << " " << e2;
+            EXPECT_EQ(work.point_values, 0u) << e1 << " " << e2;
             EXPECT_FALSE(s.blocks({-3, 0.02, 0.03}, {1, 0, 0}, 0, 2.4f, work)) << e1 << " " << e2;
         }
     }
@@ -448,7 +448,7 @@ TEST(SuperquadricIntersection, ARayLeavingAConvexSurfaceTakesOnePointValue) {
             const Vec3d n = s.normal(p);
             SuperquadricWork work;
             EXPECT_FALSE(s.first_crossing(p + n * 1e-4, n, 0, 10, work)) << e1 << " " << e2 << " " << eta;
-            EXPECT_EQ(work.search.evaluations, 1u) << e1 << " " << e2 << " " << eta;
+            EXPECT_EQ(work.point_values, 1u) << e1 << " " << e2 << " " << eta;
         }
     }
 }
