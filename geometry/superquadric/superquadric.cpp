@@ -306,6 +306,21 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
     const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const auto range = [&](const IntervalBox& cell) { return local_field_range(cell); };
     const auto bounds_of = [&](const IntervalBox& cell, const Vec3d& centre) { return cell_bounds(cell, centre); };
+    using Side = SurfaceShell::Side;
+    // An occlusion query that enters from outside is settled where the middle of its stretch lies inside: the shell's
+    // cell there tells so without a value, or one value does where the cell can hold the surface (a ray through the
+    // solid). A cell outside tells nothing, and the walk goes on as if the middle had not been asked. (A twisted
+    // shape's rays that pass deep through it were settled before, by the quadric inscribed in it.)
+    if constexpr (precision == CrossingPrecision::SignChange) {
+        const double middle = 0.5 * (t0 + t1);
+        if (enters_box && middle > t0 && !deformation_.keeps_solids_of_revolution()) {
+            const Side side = shell_.side_at(o + d * middle, range, bounds_of);
+            if (side == Side::Inside || (side == Side::Unknown && value(middle) < 0)) {
+                visit(Crossing{0.5 * (t0 + middle), true, t0, middle});
+                return;
+            }
+        }
+    }
     // g's sign at the end of the last cell's stretch (its value, when taken, is among the recent values). It is the
     // sign where the next stretch starts, whether the run goes on or the line first crosses cells without surface,
     // through which g keeps its sign; before the first stretch, the sign outside when the line enters the box
@@ -360,7 +375,6 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
         return search_crossings<precision>(a, b, g_a, g_b, resolution, false, value, bound, slope, work.search, visit,
                                            value_and_slope);
     };
-    using Side = SurfaceShell::Side;
     shell_.visit_runs(o, d, t0, t1, range, bounds_of, [&](const SurfaceShell::Run& run) {
         // An occlusion query takes a run that leads from one sign to the other as a whole, as it takes a stretch
         // whose ends differ in sign: no value of g is needed (a ray through another object, as a rule).

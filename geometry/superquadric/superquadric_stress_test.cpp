@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -177,6 +178,39 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
     std::printf("%zu rays: %zu hits (%zu between the oracle's samples), %zu grazing contacts left out\n", rays,
                 tally.hits, tally.thin_hits, tally.grazing_misses);
     EXPECT_GT(tally.hits, rays / 5);
+}
+
+// Occlusion queries give first_crossing's answer (which the test above holds to the oracle) on random rays from
+// outside and inside random shapes, with ranges that end before, inside and beyond them: the shortcuts that settle
+// a query by one value inside the solid (where a ray comes nearest a convex shape's centre, at the middle of a
+// deformed shape's stretch) or by the shell's cells alone may not block a ray that first_crossing lets through.
+TEST(SuperquadricStress, OcclusionQueriesGiveTheFirstCrossingsAnswer) {
+    const std::size_t rays = stress_rays();
+    constexpr int kRaysPerShape = 20;
+    std::mt19937 random(61);
+    std::uniform_real_distribution<double> range(0, 12);
+    std::size_t blocked = 0, failures = 0;
+    for (std::size_t done = 0; done < rays && failures < 20;) {
+        Vec3d radii;
+        const Superquadric s = random_superquadric(random, radii);
+        for (int r = 0; r < kRaysPerShape && done < rays; ++r, ++done) {
+            const RandomRay local = random_ray(random, radii, r % 5 == 0);
+            const Vec3d origin = s.placement().point(local.origin), direction = s.placement().vector(local.direction);
+            const float t_max = r % 3 ? float(range(random)) : std::numeric_limits<float>::infinity();
+            SuperquadricWork work;
+            const std::optional<double> t = s.first_crossing(origin, direction, 0, t_max, work);
+            const bool expected = t && *t > 0 && float(*t) < t_max;
+            blocked += expected;
+            if (s.blocks(origin, direction, 0, t_max, work) != expected) {
+                ++failures;
+                ADD_FAILURE() << "blocks() says " << !expected << " (ε1 " << s.shape().north_south() << ", ε2 "
+                              << s.shape().east_west() << ", " << s.deformation().size() << " deformations, ray "
+                              << done << ")";
+            }
+        }
+    }
+    std::printf("%zu rays: %zu blocked\n", rays, blocked);
+    EXPECT_GT(blocked, rays / 5);
 }
 
 // Rays leaving tapered (and twisted round) convex shapes, which one point value settles where the level set through

@@ -236,6 +236,25 @@ public:
         return in_run ? hand_over(Side::Unknown, t1) : hand_over(gap, gap_from);
     }
 
+    // g's sign at a point of the box as the cell that holds it tells (its block found as the walk finds it, with the
+    // same `range` and `cell_bounds`): Unknown in a surface cell, and within a millionth of a cell of its faces, where
+    // rounding might take the point to the neighbouring cell.
+    template <class Range, class CellBounds>
+    Side side_at(const Vec3d& point, const Range& range, const CellBounds& cell_bounds) const {
+        int at_cell[3];
+        for (int k = 0; k < 3; ++k) {
+            const double along = (point[k] - box_[k].lo) / cell_size_[k], whole = std::floor(along);
+            if (!(whole >= 0 && whole < kCellsPerAxis) || along - whole < 1e-6 || along - whole > 1 - 1e-6)
+                return Side::Unknown;
+            at_cell[k] = int(whole);
+        }
+        const CellIndex cell{at_cell[0], at_cell[1], at_cell[2]};
+        const FoundBlock block = find_block(block_of(cell), cell, range, cell_bounds);
+        const int at = bit(cell);
+        if ((block.cells >> at) & 1) return Side::Unknown;
+        return (block.inside >> at) & 1 ? Side::Inside : Side::Outside;
+    }
+
 private:
     // Shared by every block without surface cells, which need no bounds.
     static const Block* empty_block() {

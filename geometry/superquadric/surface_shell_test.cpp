@@ -2,8 +2,8 @@
 // (distance to the nearest and farthest point, minus the radius): every crossing of a random line lies in a run,
 // the runs are ordered, disjoint and inside the line's stretch, a run's cells meet end to end and their bounds hold
 // the field and its slope along the line, the sign a run is told for either side is the field's there, lines
-// through the box's empty corners have none, a visit that returns false stops the walk, and a copy keeps what was
-// found.
+// through the box's empty corners have none, a visit that returns false stops the walk, a copy keeps what was
+// found, and a point's cell tells the field's sign there where it holds no surface.
 #include "geometry/superquadric/surface_shell.h"
 
 #include <gtest/gtest.h>
@@ -253,6 +253,31 @@ TEST(SurfaceShell, BlocksAreFoundOnceAndKeptByCopies) {
     EXPECT_GT(first, 0);
     EXPECT_EQ(again, 0);
     EXPECT_EQ(copied, 0);
+}
+
+// A point's cell tells the field's sign where the cell holds no surface: inside near the centre, outside in the
+// corners; in a surface cell, or within rounding of a cell's face, it tells nothing. Random points: a sign told is
+// the field's.
+TEST(SurfaceShell, APointsCellTellsTheSignWhereItHoldsNoSurface) {
+    const SurfaceShell shell(kBox);
+    const double cell = 2.0 / SurfaceShell::kCellsPerAxis;
+    using Side = SurfaceShell::Side;
+    EXPECT_EQ(shell.side_at({0.3 * cell, 0.4 * cell, 0.6 * cell}, ball_range, ball_bounds), Side::Inside);
+    EXPECT_EQ(shell.side_at({0.9 - 0.5 * cell, 0.9, 0.9 - 0.3 * cell}, ball_range, ball_bounds), Side::Outside);
+    EXPECT_EQ(shell.side_at({kRadius + 0.3 * cell, 0.4 * cell, 0.6 * cell}, ball_range, ball_bounds), Side::Unknown);
+    EXPECT_EQ(shell.side_at({0, 0.4 * cell, 0.6 * cell}, ball_range, ball_bounds), Side::Unknown);  // on a face
+    EXPECT_EQ(shell.side_at({2, 0, 0}, ball_range, ball_bounds), Side::Unknown);                     // beyond the box
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int told = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3d p{unit(random), unit(random), unit(random)};
+        const Side side = shell.side_at(p, ball_range, ball_bounds);
+        if (side == Side::Unknown) continue;
+        ++told;
+        EXPECT_EQ(side == Side::Inside, length(p) < kRadius) << p.x << " " << p.y << " " << p.z;
+    }
+    EXPECT_GT(told, 1800);
 }
 
 }  // namespace
