@@ -153,12 +153,11 @@ std::string check_first_crossing(const Superquadric& s, const Vec3d& origin, con
     return {};
 }
 
-TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
-    const std::size_t rays = stress_rays();
-    constexpr int kRaysPerShape = 20, kSamples = 4000;
-    constexpr double kTMax = 40;
-    std::mt19937 random(55);
-    FirstCrossingTally tally;
+// Hands visit(s, origin, direction, r, done) random rays (in the placed shape's space, every fifth from inside)
+// against random superquadrics, twenty each, until `rays` were handed over or twenty visits returned false.
+template <class Visit>
+void visit_random_rays(std::mt19937& random, std::size_t rays, Visit&& visit) {
+    constexpr int kRaysPerShape = 20;
     std::size_t failures = 0;
     for (std::size_t done = 0; done < rays && failures < 20;) {
         Vec3d radii;
@@ -166,15 +165,26 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
         for (int r = 0; r < kRaysPerShape && done < rays; ++r, ++done) {
             const RandomRay local = random_ray(random, radii, r % 5 == 0);
             const Vec3d origin = s.placement().point(local.origin), direction = s.placement().vector(local.direction);
-            SuperquadricWork work;
-            const std::string problem = check_first_crossing(s, origin, direction, kTMax, kSamples, work, tally);
-            if (!problem.empty()) {
-                ++failures;
-                ADD_FAILURE() << problem << " (ε1 " << s.shape().north_south() << ", ε2 " << s.shape().east_west()
-                              << ", " << s.deformation().size() << " deformations, ray " << done << ")";
-            }
+            if (!visit(s, origin, direction, r, done)) ++failures;
         }
     }
+}
+
+TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
+    const std::size_t rays = stress_rays();
+    constexpr int kSamples = 4000;
+    constexpr double kTMax = 40;
+    std::mt19937 random(55);
+    FirstCrossingTally tally;
+    visit_random_rays(random, rays, [&](const Superquadric& s, const Vec3d& origin, const Vec3d& direction, int,
+                                        std::size_t done) {
+        SuperquadricWork work;
+        const std::string problem = check_first_crossing(s, origin, direction, kTMax, kSamples, work, tally);
+        if (problem.empty()) return true;
+        ADD_FAILURE() << problem << " (ε1 " << s.shape().north_south() << ", ε2 " << s.shape().east_west() << ", "
+                      << s.deformation().size() << " deformations, ray " << done << ")";
+        return false;
+    });
     std::printf("%zu rays: %zu hits (%zu between the oracle's samples), %zu grazing contacts left out\n", rays,
                 tally.hits, tally.thin_hits, tally.grazing_misses);
     EXPECT_GT(tally.hits, rays / 5);
@@ -186,29 +196,22 @@ TEST(SuperquadricStress, RandomRaysFindTheOraclesFirstCrossing) {
 // deformed shape's stretch) or by the shell's cells alone may not block a ray that first_crossing lets through.
 TEST(SuperquadricStress, OcclusionQueriesGiveTheFirstCrossingsAnswer) {
     const std::size_t rays = stress_rays();
-    constexpr int kRaysPerShape = 20;
     std::mt19937 random(61);
     std::uniform_real_distribution<double> range(0, 12);
-    std::size_t blocked = 0, failures = 0;
-    for (std::size_t done = 0; done < rays && failures < 20;) {
-        Vec3d radii;
-        const Superquadric s = random_superquadric(random, radii);
-        for (int r = 0; r < kRaysPerShape && done < rays; ++r, ++done) {
-            const RandomRay local = random_ray(random, radii, r % 5 == 0);
-            const Vec3d origin = s.placement().point(local.origin), direction = s.placement().vector(local.direction);
-            const float t_max = r % 3 ? float(range(random)) : std::numeric_limits<float>::infinity();
-            SuperquadricWork work;
-            const std::optional<double> t = s.first_crossing(origin, direction, 0, t_max, work);
-            const bool expected = t && *t > 0 && float(*t) < t_max;
-            blocked += expected;
-            if (s.blocks(origin, direction, 0, t_max, work) != expected) {
-                ++failures;
-                ADD_FAILURE() << "blocks() says " << !expected << " (ε1 " << s.shape().north_south() << ", ε2 "
-                              << s.shape().east_west() << ", " << s.deformation().size() << " deformations, ray "
-                              << done << ")";
-            }
-        }
-    }
+    std::size_t blocked = 0;
+    visit_random_rays(random, rays, [&](const Superquadric& s, const Vec3d& origin, const Vec3d& direction, int r,
+                                        std::size_t done) {
+        const float t_max = r % 3 ? float(range(random)) : std::numeric_limits<float>::infinity();
+        SuperquadricWork work;
+        const std::optional<double> t = s.first_crossing(origin, direction, 0, t_max, work);
+        const bool expected = t && *t > 0 && float(*t) < t_max;
+        blocked += expected;
+        if (s.blocks(origin, direction, 0, t_max, work) == expected) return true;
+        ADD_FAILURE() << "blocks() says " << !expected << " (ε1 " << s.shape().north_south() << ", ε2 "
+                      << s.shape().east_west() << ", " << s.deformation().size() << " deformations, ray " << done
+                      << ")";
+        return false;
+    });
     std::printf("%zu rays: %zu blocked\n", rays, blocked);
     EXPECT_GT(blocked, rays / 5);
 }
