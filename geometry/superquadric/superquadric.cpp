@@ -213,8 +213,12 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     const auto mixed_at = [&](double t) -> const Superellipsoid::GaugeAndDifference& {
         return samples.at(t, [&] { return ray.gauge_and_difference(t); });
     };
-    // Undeformed, the field is the gauge less 1 (local_field): mixed shapes take it with their parts.
-    const auto value = [&](double t) { return mixed ? mixed_at(t).gauge - 1 : ray.value(t); };
+    // Undeformed, the field is the gauge less 1 (local_field): mixed shapes take it with their parts. An occlusion
+    // query asks the cuts' values before their pieces do.
+    RecentSamples<double> values;
+    const auto value = [&](double t) {
+        return mixed ? mixed_at(t).gauge - 1 : values.at(t, [&] { return ray.value(t); });
+    };
     const auto value_and_slope = [&](double t) { return ray.value_and_slope(t); };
     const auto sample_at = [&](double t) {
         DifferenceOfConvexSample sample = mixed_at(t).difference;
@@ -271,6 +275,17 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         stretch.extend(o + d * b);
         return shape_.least_gauge(stretch) > 1;
     };
+    // An occlusion query from outside (beyond the quadrics, or outside at the start) is settled by any cut inside the
+    // quadrics where g < 0: a star's arms and a pinched shape's bulk lie about the coordinate planes, and a ray that
+    // crosses the solid crosses one there as a rule. The values are the search's own at the pieces' ends.
+    if constexpr (precision == CrossingPrecision::SignChange) {
+        if (!convex && (lo > t0 || shape_.box_gauge(o + d * t0) > 1 + 1e-12))
+            for (int i = 1; i + 1 < count; ++i)
+                if (cuts[i] > lo && cuts[i] < hi && value(cuts[i]) < 0) {
+                    visit(Crossing{0.5 * (lo + cuts[i]), true, lo, cuts[i]});
+                    return;
+                }
+    }
     for (int i = 0; i + 1 < count; ++i) {
         if (outside_throughout(cuts[i], cuts[i + 1])) {
             known_start = false;

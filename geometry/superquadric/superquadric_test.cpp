@@ -423,6 +423,16 @@ TEST(SuperquadricIntersection, ARayThroughAConvexSolidBesideItsEllipsoidIsBlocke
     }
 }
 
+// One through a pinched shape beside that ellipsoid (its bulk about the plane z = 0) is settled by the values where it
+// crosses the coordinate planes, without bounding g: the ray below crosses the solid about the plane x = 0.
+TEST(SuperquadricIntersection, ARayThroughAPinchedSolidBesideItsEllipsoidIsBlockedByItsCutsValues) {
+    const Superquadric s = make_superquadric({1, 1, 1}, 3.5, 0.3);
+    SuperquadricWork work;
+    EXPECT_TRUE(s.blocks({-3, 0.36, -0.11}, {1, -0.127, 0.26}, 0, 10, work));
+    EXPECT_EQ(work.search.interval_bounds, 0u);
+    EXPECT_LE(work.point_values, 2u);
+}
+
 // A deformed shape's occlusion query from outside through the solid is settled by the shell alone (the cell where
 // the middle of its stretch lies, or a run of surface cells between cells without surface outside and inside it),
 // or by one point value at that middle, whatever the exponents, without bounding g anywhere; one that stops short
