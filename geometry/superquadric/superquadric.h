@@ -18,7 +18,11 @@
 //   bounds (convex_crossings.h), from where the ray enters and leaves two quadrics around the solid
 //   (Superellipsoid::enclosing_stretch), the search above taking over only near tangent contacts;
 // - undeformed occlusion queries, whatever the exponents: a ray that misses those quadrics is not blocked, and one
-//   that reaches an ellipsoid inscribed in the solid from outside is, without a point value;
+//   that reaches an ellipsoid inscribed in the solid from outside is, without a point value; one that passes beside
+//   it is blocked by one value inside the solid, where it comes nearest the centre (convex shapes) or where it
+//   crosses a coordinate plane within the quadrics (the others: a star's arms lie about those planes);
+// - deformed occlusion queries from outside (but twists'): blocked where the middle of their stretch through the
+//   bound lies inside, as the shell's cell there tells or one value in a surface cell;
 // - undeformed with ε1, ε2 ≥ 2: g is concave on each piece between the coordinate planes, and tangent cutting
 //   planes settle each piece without bounds (concave_crossings.h), again the search taking over near tangents;
 // - undeformed with one exponent on each side of 2: the search takes bounds of a difference of convex functions
