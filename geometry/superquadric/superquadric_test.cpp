@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 #include <random>
 #include <utility>
@@ -398,29 +399,33 @@ TEST(SuperquadricIntersection, BlocksAgreesWithTheFirstCrossingForLessWork) {
                 (unsigned long long)by_crossing.point_values);
 }
 
+// Occlusion queries along +x from `origin` through a shape with radii `radii` and each pair of exponents: blocked
+// within 10 after exactly `values` point values, and not blocked when the range stops short of the solid, at
+// `short_of`.
+void expect_blocked_along_x(const Vec3d& radii, std::initializer_list<std::pair<double, double>> exponents,
+                            const Vec3d& origin, std::uint64_t values, float short_of) {
+    for (const auto& [e1, e2] : exponents) {
+        const Superquadric s = make_superquadric(radii, e1, e2);
+        SuperquadricWork work;
+        EXPECT_TRUE(s.blocks(origin, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
+        EXPECT_EQ(work.point_values, values) << e1 << " " << e2;
+        EXPECT_FALSE(s.blocks(origin, {1, 0, 0}, 0, short_of, work)) << e1 << " " << e2;
+    }
+}
+
 // An undeformed shape's occlusion query that enters the quadrics around it from outside and reaches the ellipsoid
 // inside it is settled by the two alone, without a point value; one that stops short of the surface is not blocked.
 TEST(SuperquadricIntersection, ARayThroughAShapesInscribedEllipsoidIsBlockedWithoutAPointValue) {
-    for (const auto& [e1, e2] :
-         {std::pair{0.1, 1.0}, {0.5, 0.3}, {1.0, 2.0}, {2.0, 2.0}, {0.02, 0.02}, {3.0, 3.0}, {0.5, 3.0}, {4.0, 1.0}}) {
-        const Superquadric s = make_superquadric({0.5, 0.8, 1.2}, e1, e2);
-        SuperquadricWork work;
-        EXPECT_TRUE(s.blocks({-3, 0.05, 0.1}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_EQ(work.point_values, 0u) << e1 << " " << e2;
-        EXPECT_FALSE(s.blocks({-3, 0.05, 0.1}, {1, 0, 0}, 0, 2.4f, work)) << e1 << " " << e2;
-    }
+    expect_blocked_along_x(
+        {0.5, 0.8, 1.2},
+        {{0.1, 1.0}, {0.5, 0.3}, {1.0, 2.0}, {2.0, 2.0}, {0.02, 0.02}, {3.0, 3.0}, {0.5, 3.0}, {4.0, 1.0}},
+        {-3, 0.05, 0.1}, 0, 2.4f);
 }
 
 // One that passes beside that ellipsoid through a convex solid (a box's edge) is settled by one point value where it
 // comes nearest the centre; one that stops short of the solid is not blocked.
 TEST(SuperquadricIntersection, ARayThroughAConvexSolidBesideItsEllipsoidIsBlockedByOnePointValue) {
-    for (const auto& [e1, e2] : {std::pair{0.1, 0.1}, {0.3, 0.05}, {0.05, 1.0}}) {
-        const Superquadric s = make_superquadric({1, 1, 1}, e1, e2);
-        SuperquadricWork work;
-        EXPECT_TRUE(s.blocks({-3, 0.75, 0.75}, {1, 0, 0}, 0, 10, work)) << e1 << " " << e2;
-        EXPECT_EQ(work.point_values, 1u) << e1 << " " << e2;
-        EXPECT_FALSE(s.blocks({-3, 0.75, 0.75}, {1, 0, 0}, 0, 1.5f, work)) << e1 << " " << e2;
-    }
+    expect_blocked_along_x({1, 1, 1}, {{0.1, 0.1}, {0.3, 0.05}, {0.05, 1.0}}, {-3, 0.75, 0.75}, 1, 1.5f);
 }
 
 // One through a pinched shape beside that ellipsoid (its bulk about the plane z = 0) is settled by the values where it
