@@ -32,10 +32,19 @@ struct ShellCellBounds {
             g_a = g_a + gradient[k] * (a[k] - centre[k]);
             g_b = g_b + gradient[k] * (b[k] - centre[k]);
         }
-        // The centre's value and the products are rounded: widen by far more than their errors.
-        constexpr double kRounding = 1e-12;
         return {std::min(g_a.lo, g_b.lo) - kRounding, std::max(g_a.hi, g_b.hi) + kRounding};
     }
+    // Contains g over a box that holds the centre and lies within the cell (the cell itself): each axis's term takes
+    // its own worst end.
+    Interval range(const IntervalBox& box) const {
+        Interval g = Interval::point(value);
+        for (int k = 0; k < 3; ++k) g = g + gradient[k] * Interval{box[k].lo - centre[k], box[k].hi - centre[k]};
+        return {g.lo - kRounding, g.hi + kRounding};
+    }
+
+private:
+    // The centre's value and the products are rounded: the ranges are widened by far more than their errors.
+    static constexpr double kRounding = 1e-12;
 };
 
 }  // namespace isotrace

@@ -51,6 +51,30 @@ TEST(ShellCellBounds, RangeHoldsEveryLinearFieldWithinTheGradientBounds) {
     }
 }
 
+// Over a whole box around the centre: every linear field within the bounds, at every corner (where its extremes lie)
+// and at random points; and exactly the interval product there, the box being the segments' worst case.
+TEST(ShellCellBounds, RangeOverABoxHoldsEveryLinearFieldWithinTheGradientBounds) {
+    std::mt19937 random(13);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1), half(0.001, 0.05);
+    for (int i = 0; i < 2000; ++i) {
+        const ShellCellBounds bounds = random_bounds(random);
+        IntervalBox box;
+        for (int k = 0; k < 3; ++k) box[k] = {bounds.centre[k] - half(random), bounds.centre[k] + half(random)};
+        const Interval range = bounds.range(box);
+        for (int j = 0; j < 24; ++j) {
+            Vec3d gradient, p;
+            for (int k = 0; k < 3; ++k) {
+                gradient[k] = bounds.gradient[k].lo + bounds.gradient[k].width() * (j < 8 ? double(j >> k & 1) : fraction(random));
+                p[k] = box[k].lo + box[k].width() * (j < 16 ? double((j + i) >> k & 1) : fraction(random));
+            }
+            EXPECT_TRUE(range.contains(bounds.value + dot(gradient, p - bounds.centre))) << i << " " << j;
+        }
+        const Interval product = interval_product_range(bounds, box.lower(), box.upper());
+        EXPECT_NEAR(range.lo, product.lo, 1e-11) << i;
+        EXPECT_NEAR(range.hi, product.hi, 1e-11) << i;
+    }
+}
+
 TEST(ShellCellBounds, RangeIsNeverWiderThanTheIntervalProduct) {
     std::mt19937 random(12);
     std::uniform_real_distribution<double> unit(-1, 1);

@@ -1,6 +1,7 @@
 #pragma once
 // The cells of a uniform grid over a deformed superquadric's box that can hold its surface: those where the interval
-// range of g contains zero. Elsewhere g keeps one sign throughout a cell, and (g being continuous) throughout any
+// range of g contains zero, and so do the cell's own bounds (below), which are far tighter where a twist or a bend
+// turns the cell. Elsewhere g keeps one sign throughout a cell, and (g being continuous) throughout any
 // chain of such cells, so a ray needs searching only along its runs of shell cells: rays that pass the object
 // through its box's empty corners cost a walk through the grid. Each shell cell also keeps g at its centre and bounds
 // of g's gradient over it (ShellCellBounds), which settle most of a ray's stretch through the cell without walking it
@@ -307,10 +308,17 @@ private:
                             inside |= std::uint64_t(g.hi < 0) << bit(at);
                             continue;
                         }
-                        cells |= std::uint64_t(1) << bit(at);
                         IntervalBox around = cell(at);  // enlarged by far more than a run's padding
                         for (int k = 0; k < 3; ++k) around[k] = {around[k].lo - 1e-6 * cell_size_[k], around[k].hi + 1e-6 * cell_size_[k]};
-                        block->entries[bit(at)] = CellEntry::of(cell_bounds(around, centre(at)));
+                        const ShellCellBounds bounds = cell_bounds(around, centre(at));
+                        // The cell's own bounds (its centre's value, its gradient's bounds) are far tighter than
+                        // `range` where a twist or a bend turns the cell: they clear many cells it could not.
+                        if (const Interval g = bounds.range(around); bounds.known && !can_hold_surface(g)) {
+                            inside |= std::uint64_t(g.hi < 0) << bit(at);
+                            continue;
+                        }
+                        cells |= std::uint64_t(1) << bit(at);
+                        block->entries[bit(at)] = CellEntry::of(bounds);
                     }
             if (cells != 0) found = block;
             else delete block;

@@ -48,13 +48,16 @@ struct RunStretch {
     double lo, hi;
 };
 
+using Range = Interval (*)(const IntervalBox&);
+
 // The runs of a line as the walk hands them over, each made of cells whose stretches meet end to end.
-std::vector<RunStretch> runs_of(const SurfaceShell& shell, const Vec3d& o, const Vec3d& d, int* ranges = nullptr) {
+std::vector<RunStretch> runs_of(const SurfaceShell& shell, const Vec3d& o, const Vec3d& d, int* ranges = nullptr,
+                                Range range = ball_range) {
     std::vector<RunStretch> runs;
     const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
     if (!clip) return runs;
     int calls = 0;
-    shell.visit_runs(o, d, clip->t_enter, clip->t_exit, [&](const IntervalBox& b) { ++calls; return ball_range(b); },
+    shell.visit_runs(o, d, clip->t_enter, clip->t_exit, [&](const IntervalBox& b) { ++calls; return range(b); },
                      ball_bounds, [&](const SurfaceShell::Run& run) {
                          EXPECT_GE(run.lo(), clip->t_enter);
                          EXPECT_LE(run.hi(), clip->t_exit);
@@ -70,15 +73,16 @@ std::vector<RunStretch> runs_of(const SurfaceShell& shell, const Vec3d& o, const
     return runs;
 }
 
-TEST(SurfaceShell, EveryCrossingLiesInARun) {
-    const SurfaceShell shell(kBox);
-    std::mt19937 random(3);
+// Lines from around the box toward the ball: the runs come in order and every crossing of the ball lies in one.
+// Returns how many crossings there were.
+int crossings_in_runs(const SurfaceShell& shell, std::uint32_t seed, int lines, Range range = ball_range) {
+    std::mt19937 random(seed);
     std::uniform_real_distribution<double> unit(-1, 1);
     int crossings = 0;
-    for (int i = 0; i < 2000; ++i) {
+    for (int i = 0; i < lines; ++i) {
         const Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 3.0;
         const Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.6 - o;
-        const std::vector<RunStretch> runs = runs_of(shell, o, d);
+        const std::vector<RunStretch> runs = runs_of(shell, o, d, nullptr, range);
         for (std::size_t k = 1; k < runs.size(); ++k) EXPECT_GT(runs[k].lo, runs[k - 1].hi);
         const auto roots = intersect_sphere(o, d, {0, 0, 0}, kRadius);
         if (!roots) continue;
@@ -89,7 +93,12 @@ TEST(SurfaceShell, EveryCrossingLiesInARun) {
             EXPECT_TRUE(inside) << "ray " << i << " crossing at " << t;
         }
     }
-    EXPECT_GT(crossings, 1000);
+    return crossings;
+}
+
+TEST(SurfaceShell, EveryCrossingLiesInARun) {
+    const SurfaceShell shell(kBox);
+    EXPECT_GT(crossings_in_runs(shell, 3, 2000), 1000);
 }
 
 // The runs of a plain cell-by-cell walk that asks every cell's range itself: the same runs to the bit, also for lines
@@ -278,6 +287,22 @@ TEST(SurfaceShell, APointsCellTellsTheSignWhereItHoldsNoSurface) {
         EXPECT_EQ(side == Side::Inside, length(p) < kRadius) << p.x << " " << p.y << " " << p.z;
     }
     EXPECT_GT(told, 1800);
+}
+
+// A range that clears nothing (as an interval walk through a strong twist may): the cells' own bounds still tell
+// which cells hold no surface, and the sign there. Every crossing still lies in a run, and a line that passes far
+// from the ball has none.
+TEST(SurfaceShell, ACellsOwnBoundsClearItWhereTheRangeCannot) {
+    const SurfaceShell shell(kBox);
+    const Range clears_nothing = [](const IntervalBox&) { return Interval::unbounded(); };
+    const double cell = 2.0 / SurfaceShell::kCellsPerAxis;
+    using Side = SurfaceShell::Side;
+    EXPECT_EQ(shell.side_at({0.25 + 0.3 * cell, 0.4 * cell, 0.6 * cell}, clears_nothing, ball_bounds), Side::Inside);
+    EXPECT_EQ(shell.side_at({0.9 - 0.5 * cell, 0.9, 0.9 - 0.3 * cell}, clears_nothing, ball_bounds), Side::Outside);
+    EXPECT_EQ(shell.side_at({kRadius + 0.3 * cell, 0.4 * cell, 0.6 * cell}, clears_nothing, ball_bounds),
+              Side::Unknown);
+    EXPECT_TRUE(runs_of(shell, {-2, 0.8, 0.1}, {1, 0, 0}, nullptr, clears_nothing).empty());
+    EXPECT_GT(crossings_in_runs(shell, 17, 1000, clears_nothing), 500);
 }
 
 }  // namespace
