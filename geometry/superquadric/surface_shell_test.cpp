@@ -101,8 +101,9 @@ TEST(SurfaceShell, EveryCrossingLiesInARun) {
     EXPECT_GT(crossings_in_runs(shell, 3, 2000), 1000);
 }
 
-// The runs of a plain cell-by-cell walk that asks every cell's range itself: the same runs to the bit, also for lines
-// through grid vertices and along grid planes, where the walk's ties between axes decide the order of the cells.
+// The runs of a plain cell-by-cell walk that asks every cell's range and own bounds itself: the same runs to the bit,
+// also for lines through grid vertices and along grid planes, where the walk's ties between axes decide the order of
+// the cells.
 std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
     std::vector<RunStretch> runs;
     const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
@@ -110,9 +111,17 @@ std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
     const double t0 = clip->t_enter, t1 = clip->t_exit, pad = 1e-9 * (t1 - t0);
     constexpr int n = SurfaceShell::kCellsPerAxis;
     const double size = 2.0 / n;
-    const auto cell_range = [&](int i, int j, int l) {
+    // A cell holds the surface where its range and its own bounds (over the cell enlarged as the shell takes it)
+    // both hold zero.
+    const auto holds_surface = [&](int i, int j, int l) {
         const auto side = [&](int at) { return Interval{-1 + at * size, at + 1 == n ? 1 : -1 + (at + 1) * size}; };
-        return ball_range({side(i), side(j), side(l)});
+        const auto holds_zero = [](const Interval& g) { return !(g.lo > 0 || g.hi < 0); };
+        const IntervalBox cell{side(i), side(j), side(l)};
+        if (!holds_zero(ball_range(cell))) return false;
+        IntervalBox around = cell;
+        for (int k = 0; k < 3; ++k) around[k] = {cell[k].lo - 1e-6 * size, cell[k].hi + 1e-6 * size};
+        const ShellCellBounds own = ball_bounds(around, (cell.lower() + cell.upper()) * 0.5);
+        return !own.known || holds_zero(own.range(around));
     };
     const Vec3d start = o + d * t0;
     int cell[3];
@@ -131,8 +140,7 @@ std::vector<RunStretch> runs_cell_by_cell(const Vec3d& o, const Vec3d& d) {
     };
     while (true) {
         const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
-        const Interval g = cell_range(cell[0], cell[1], cell[2]);
-        const bool surface = !(g.lo > 0 || g.hi < 0);
+        const bool surface = holds_surface(cell[0], cell[1], cell[2]);
         if (surface && !in_run) in_run = true, run_start = enter;
         if (!surface && in_run) in_run = false, add(run_start, enter);
         const double leave = std::min(across[axis], t1);
