@@ -169,6 +169,12 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         return true;
     };
     const bool turned = !deformation_.empty() && deformation_.keeps_solids_of_revolution();
+    // Whether the line is outside where the stretch starts (an occlusion query from outside): beyond the margin of the
+    // quadrics or bound that narrowed it, or on the box's face: the widened one of an undeformed shape, where the
+    // gauge is at least the largest |xᵢ|/aᵢ, or the deformed box, which holds the solid strictly within.
+    const auto outside_at_lo = [&] {
+        return lo > t0 || (turned ? clip->enter_axis >= 0 : shape_.box_gauge(o + d * t0) > 1 + 1e-12);
+    };
     if (!deformation_.empty() && !turned && deformation_.enclosing_cone() &&
         !narrow(deformation_.enclosing_cone()->stretch(o + d * t0, d, t1 - t0)))
         return;
@@ -178,14 +184,10 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
         using QuadricForm = Superellipsoid::QuadricForm;
         const QuadricForm form = turned ? QuadricForm::RoundAboutZ : QuadricForm::AlongRadii;
         if (!narrow(shape_.enclosing_stretch(o + d * t0, d, t1 - t0, form))) return;
-        // An occlusion query: a ray that is outside at lo (beyond the quadrics' margin, or on the box's face: the
-        // widened one of an undeformed shape, where the gauge is at least the largest |xᵢ|/aᵢ, or the deformed box,
-        // which holds the solid strictly within) and then reaches the inscribed ellipsoid (g < 0) crosses the surface
-        // in between, and nowhere before.
+        // An occlusion query: a ray that is outside at lo and then reaches the inscribed ellipsoid (g < 0) crosses the
+        // surface in between, and nowhere before.
         if constexpr (precision == CrossingPrecision::SignChange) {
-            const bool outside_at_start =
-                turned ? clip->enter_axis >= 0 : shape_.box_gauge(o + d * t0) > 1 + 1e-12;
-            if (lo > t0 || outside_at_start) {
+            if (outside_at_lo()) {
                 if (const std::optional<Interval> inside = shape_.inscribed_stretch(o + d * lo, d, hi - lo, form);
                     inside && inside->lo > 0) {
                     const double reached = lo + inside->lo;
@@ -279,7 +281,7 @@ void Superquadric::search(const Vec3d& origin, const Vec3d& direction, double t_
     // quadrics where g < 0: a star's arms and a pinched shape's bulk lie about the coordinate planes, and a ray that
     // crosses the solid crosses one there as a rule. The values are the search's own at the pieces' ends.
     if constexpr (precision == CrossingPrecision::SignChange) {
-        if (!convex && (lo > t0 || shape_.box_gauge(o + d * t0) > 1 + 1e-12))
+        if (!convex && outside_at_lo())
             for (int i = 1; i + 1 < count; ++i)
                 if (cuts[i] > lo && cuts[i] < hi && value(cuts[i]) < 0) {
                     visit(Crossing{0.5 * (lo + cuts[i]), true, lo, cuts[i]});
