@@ -186,13 +186,11 @@ public:
         }
         double enter = t0;
         bool in_run = false;
-        // The surface bits and cell bounds of the block the walk is in, looked up again only when it enters another.
-        int block_index = -1;
-        FoundBlock block{};
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
             const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
-            if (const int index = block_of(cell); index != block_index)
-                block_index = index, block = find_block(index, cell, range, cell_bounds);
+            // The block's words are read at every step: they lie side by side in the slots, and a branch on whether
+            // the walk entered another block (every few steps, in no pattern) cost more than the loads.
+            const FoundBlock block = find_block(block_of(cell), cell, range, cell_bounds);
             const int at = bit(cell);
             const bool surface = (block.cells >> at) & 1;
             const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
