@@ -349,6 +349,11 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
             known_inside = inside, sign_known = true;
             return true;
         };
+        // A stretch whose bound excludes zero holds no crossing: settled without its end values (most cells a line
+        // crosses, before anything else of the cell is asked).
+        ++work.search.interval_bounds;
+        const Interval whole = cell.known ? cell.range(o + d * a, o + d * b) : ray.bound(a, b);
+        if (whole.lo >= 0 || whole.hi < 0) return no_crossing(whole.hi < 0);
         const Interval cell_slope = cell.known ? cell.slope(d) : Interval::unbounded();
         // Bounds over a part [u, v] of the cell's stretch: the cell's first (a few products), the walk through
         // the deformations only where they settle nothing. Where both ends' values are known, the cell's bound of
@@ -370,10 +375,6 @@ void Superquadric::search_shell(const SuperquadricAlongRay& ray, double t0, doub
             const Interval both{std::max(walked.lo, cell_slope.lo), std::min(walked.hi, cell_slope.hi)};
             return both.lo <= both.hi ? both : walked;
         };
-        // A stretch whose bound excludes zero holds no crossing: settled without its end values.
-        ++work.search.interval_bounds;
-        const Interval whole = cell.known ? cell.range(o + d * a, o + d * b) : ray.bound(a, b);
-        if (whole.lo >= 0 || whole.hi < 0) return no_crossing(whole.hi < 0);
         // The stretches before told a's sign, perhaps without its value.
         const bool inside_a = sign_known ? known_inside : value(a) < 0;
         // g monotone over the cell and moving away from zero from a: no crossing, and b keeps a's sign.
