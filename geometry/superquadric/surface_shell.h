@@ -273,7 +273,7 @@ private:
     }
 
     // The block with index `index`, which holds cell c: once known, read inline; found out of line when first asked
-    // for (the walk asks at every block it enters, and nearly always the block is known).
+    // for (the walk asks at every step, and nearly always the block is known).
     template <class Range, class CellBounds>
     FoundBlock find_block(int index, CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
         const Slot& slot = slots_[index];
