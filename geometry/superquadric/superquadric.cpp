@@ -64,8 +64,13 @@ Interval Superquadric::field_range(const DeformationChain::InverseBoxes& walked)
 ShellCellBounds Superquadric::cell_bounds(const IntervalBox& cell, const Vec3d& centre) const {
     ShellCellBounds bounds;
     constexpr DeformationChain::BeyondUndeformedBox kBeyond = DeformationChain::BeyondUndeformedBox::Gauge;
+    // The cell's part within the deformed box: the search asks no point beyond it (SuperquadricAlongRay), and an
+    // outer cell, enlarged past the box's face, would otherwise count as clipped and keep no gradient bound.
+    IntervalBox inside = cell;
     DeformationChain::InverseBoxes walked;
-    if (!deformation_.inverse_boxes(cell, walked, kBeyond) || walked.clipped) return bounds;
+    if (!clip_box(inside, deformation_.deformed_box()) || !deformation_.inverse_boxes(inside, walked, kBeyond) ||
+        walked.clipped)
+        return bounds;
     bounds.gradient = deformation_.gauge_gradient(walked);
     if (!bounds.gradient.is_finite()) return bounds;
     bounds.centre = centre;

@@ -1,5 +1,6 @@
 #include "geometry/superquadric/superquadric_along_ray.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace isotrace {
@@ -14,7 +15,7 @@ SuperquadricAlongRay::SuperquadricAlongRay(const Superquadric& superquadric, con
 
 ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
     count_value();
-    const Vec3d point = origin_ + direction_ * t;
+    const Vec3d point = point_at(t);
     if (superquadric_.deformation().empty()) {
         const ValueAndDerivative gauge = superquadric_.shape().gauge_along(point, rates_);
         return {gauge.value - 1, gauge.derivative};
@@ -26,9 +27,17 @@ ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
     return {gauge.value - 1, gauge.derivative};
 }
 
+Vec3d SuperquadricAlongRay::point_at(double t) const {
+    const Vec3d point = origin_ + direction_ * t;
+    if (superquadric_.deformation().empty()) return point;
+    const IntervalBox& box = superquadric_.deformation().deformed_box();
+    return {std::clamp(point.x, box.x.lo, box.x.hi), std::clamp(point.y, box.y.lo, box.y.hi),
+            std::clamp(point.z, box.z.lo, box.z.hi)};
+}
+
 IntervalBox SuperquadricAlongRay::stretch(double a, double b) const {
-    IntervalBox box = IntervalBox::point(origin_ + direction_ * a);
-    box.extend(origin_ + direction_ * b);
+    IntervalBox box = IntervalBox::point(point_at(a));
+    box.extend(point_at(b));
     return box;
 }
 

@@ -6,6 +6,9 @@
 // interval inverse Jacobians (a bound of g′ that excludes zero proves g strictly monotone on [a, b]). g is continued
 // beyond the undeformed box by the gauge (DeformationChain::BeyondUndeformedBox::Gauge), not cut to 1 there: a
 // stretch that reaches past a face of that box, as those near a boxy shape's surface do, keeps its bound of g′.
+// Nor is it cut at the faces of the deformed box, which the search's stretches lie within: a point that the rounding
+// of a stretch's end puts just beyond a face is taken at the face (g is positive there, the solid lying strictly
+// inside), so that the bounds of g′ over the cells and stretches at the faces hold for every point the search asks.
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -28,7 +31,7 @@ public:
 
     double value(double t) const {
         count_value();
-        return superquadric_.local_field(origin_ + direction_ * t, kBeyond);
+        return superquadric_.local_field(point_at(t), kBeyond);
     }
     // g(t) (bit for bit value(t)) and g′(t) (NaN where unknown: outside a stage box, on a crease).
     ValueAndDerivative value_and_slope(double t) const;
@@ -38,9 +41,9 @@ public:
         count_value();
         return superquadric_.shape().gauge_and_difference(origin_ + direction_ * t, rates_);
     }
-    // Contains g over [a, b] (points outside a deformed stage box count as outside, g = 1).
+    // Contains g over [a, b] (points outside an inner stage box of a deformation count as outside, g = 1).
     Interval bound(double a, double b) const;
-    // Contains g′ over [a, b] wherever g is differentiable; unbounded when some of the stretch lies outside a
+    // Contains g′ over [a, b] wherever g is differentiable; unbounded when some of the stretch lies outside an inner
     // stage box (g is not continuous there) or the gradient is unbounded.
     Interval slope_bound(double a, double b) const;
 
@@ -50,6 +53,9 @@ private:
     void count_value() const {
         if (point_values_) ++*point_values_;
     }
+    // The ray's point at t, taken into the deformed box (of a deformed shape; the box's faces, which the field is
+    // not cut at, lie rounding errors away from where the search asks).
+    Vec3d point_at(double t) const;
     IntervalBox stretch(double a, double b) const;
     // The inverse walk of stretch(a, b) (nullptr when no part of it lies inside every stage box), kept for the last
     // stretch asked about: the search asks for the bound of g and then of g′ over the same stretch, and the walk

@@ -147,6 +147,27 @@ TEST(SuperquadricAlongRay, StretchesBeyondTheUndeformedBoxKeepTheirSlopeBound) {
     EXPECT_LE(work.search.halvings, 12u) << found.size() << " crossings";
 }
 
+// A stretch's end that rounding puts just beyond a face of the deformed box is taken at the face: g keeps its value
+// there (not the constant of the outside) and the stretch its bound of g′.
+TEST(SuperquadricAlongRay, PointsJustBeyondTheDeformedBoxAreTakenAtItsFace) {
+    const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, 0.3, 0.3, {Twist(3.14159 / 0.8, 0.4)});
+    const IntervalBox& box = s.deformation().deformed_box();
+    // Straight down through the top face, near the flat cap.
+    const Vec3d origin{0.05, -0.03, 1}, direction{0, 0, -1};
+    const SuperquadricAlongRay ray(s, origin, direction);
+    const double face = origin.z - box.z.hi, beyond = face - 1e-9;
+    const Vec3d at_face{origin.x, origin.y, box.z.hi};
+    EXPECT_EQ(ray.value(beyond), s.local_field(at_face, DeformationChain::BeyondUndeformedBox::Gauge));
+    EXPECT_GT(ray.value(beyond), 0);
+    EXPECT_LT(ray.value(beyond), 1e-3);  // the cap lies just below the face
+    EXPECT_EQ(ray.value_and_slope(beyond).value, ray.value(beyond));
+    EXPECT_TRUE(ray.slope_bound(beyond, face + 0.01).is_finite());
+    SuperquadricWork work;
+    const std::optional<double> hit = s.first_crossing(origin, direction, 0, 10, work);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(*hit, face, 1e-3);
+}
+
 // The walk kept for the last stretch gives the bounds a fresh walk gives, whichever stretch was asked before.
 TEST(SuperquadricAlongRay, BoundsDoNotDependOnTheStretchAskedBefore) {
     std::mt19937 random(17);

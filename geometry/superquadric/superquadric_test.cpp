@@ -637,14 +637,18 @@ TEST(SuperquadricBounds, CellBoundsHoldTheFieldAndItsSlopesOverTheCell) {
             if (!bounds.known) continue;
             ++known;
             EXPECT_EQ(bounds.value, s.local_field(centre, kBeyond));
+            // The bounds hold over the cell's part within the deformed box, where the search asks.
+            IntervalBox within = around;
+            ASSERT_TRUE(clip_box(within, box));
             for (int i = 0; i < 20; ++i) {
-                const Vec3d p = centre + Vec3d{half.x * unit(random), half.y * unit(random), half.z * unit(random)};
+                Vec3d p;
+                for (int k = 0; k < 3; ++k) p[k] = within[k].lo + within[k].width() * fraction(random);
                 EXPECT_TRUE(bounds.range(p, p).contains(s.local_field(p, kBeyond))) << shape << " " << cell;
-                // A line through p within the box: its difference quotient is g′ somewhere between (mean value).
+                // A line through p within that part: its difference quotient is g′ somewhere between (mean value).
                 const Vec3d d = normalize(Vec3d{unit(random), unit(random), unit(random)});
                 double reach = 1e300;
                 for (int k = 0; k < 3; ++k)
-                    if (d[k] != 0) reach = std::min(reach, (half[k] - std::abs(p[k] - centre[k])) / std::abs(d[k]));
+                    if (d[k] != 0) reach = std::min(reach, ((d[k] > 0 ? within[k].hi : within[k].lo) - p[k]) / d[k]);
                 const double h = 0.5 * reach;
                 if (!(h > 1e-6)) continue;
                 const double quotient = (s.local_field(p + d * h, kBeyond) - s.local_field(p, kBeyond)) / h;
@@ -655,6 +659,24 @@ TEST(SuperquadricBounds, CellBoundsHoldTheFieldAndItsSlopesOverTheCell) {
         }
     }
     EXPECT_GT(known, 3000);
+}
+
+// The outer cells of the shell reach past the deformed box's faces; the search asks nothing there, so their bounds
+// are taken over their part within the box. A twisted boxy shape's flat cap lies in the top layer of cells, which
+// keep their gradient bounds.
+TEST(SuperquadricBounds, CellsAtTheDeformedBoxFacesKeepTheirBounds) {
+    const Superquadric s = make_superquadric({0.4, 0.4, 0.4}, 0.3, 0.3, {Twist(3.14159 / 0.8, 0.4)});
+    const IntervalBox& box = s.deformation().deformed_box();
+    const double side = box.z.width() / 32;
+    int known = 0;
+    for (int i = 0; i < 8; ++i) {
+        const double x = -0.2 + 0.05 * i;
+        const IntervalBox cell{{x, x + side}, {-side / 2, side / 2}, {box.z.hi - side, box.z.hi + 1e-6 * side}};
+        const Vec3d centre = (cell.lower() + cell.upper()) * 0.5;
+        ASSERT_FALSE(s.local_field_range(cell).excludes_zero()) << x;  // the cap crosses the cell
+        known += s.cell_bounds(cell, centre).known;
+    }
+    EXPECT_EQ(known, 8);
 }
 
 TEST(SuperquadricIntersection, FarAwayRaysAndRaysAlongThePlanesStayFinite) {
