@@ -15,7 +15,7 @@ struct ShellCellBounds {
     Vec3d centre;
     double value = 0;
     IntervalBox gradient;  // ∂g/∂x, ∂g/∂y, ∂g/∂z over the cell
-    bool known = false;    // false where g has no finite gradient bound (a crease, a clipped stage box)
+    bool known = false;    // false where g has no finite gradient bound (a crease, a cell an inner stage box clips)
 
     // Contains g′ along `direction` over the cell.
     Interval slope(const Vec3d& direction) const {
