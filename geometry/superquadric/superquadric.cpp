@@ -88,10 +88,8 @@ bool Superquadric::contains(const Vec3d& point) const {
 
 double Superquadric::continued_field(const Vec3d& point) const {
     const Vec3d local = placement_.inverse_point(point);
-    const IntervalBox& box = deformation_.deformed_box();
-    const Vec3d clamped(std::clamp(local.x, box.x.lo, box.x.hi), std::clamp(local.y, box.y.lo, box.y.hi),
-                        std::clamp(local.z, box.z.lo, box.z.hi));
-    return local_field(clamped) + length(local - clamped);
+    const Vec3d nearest = deformation_.deformed_box().nearest(local);
+    return local_field(nearest) + length(local - nearest);
 }
 
 // For ε1, ε2 ≤ 2 the gauge G is a norm of the radii-scaled coordinates, at most their 1-norm, so a step v changes

@@ -1,6 +1,5 @@
 #include "geometry/superquadric/superquadric_along_ray.h"
 
-#include <algorithm>
 #include <limits>
 
 namespace isotrace {
@@ -30,9 +29,7 @@ ValueAndDerivative SuperquadricAlongRay::value_and_slope(double t) const {
 Vec3d SuperquadricAlongRay::point_at(double t) const {
     const Vec3d point = origin_ + direction_ * t;
     if (superquadric_.deformation().empty()) return point;
-    const IntervalBox& box = superquadric_.deformation().deformed_box();
-    return {std::clamp(point.x, box.x.lo, box.x.hi), std::clamp(point.y, box.y.lo, box.y.hi),
-            std::clamp(point.z, box.z.lo, box.z.hi)};
+    return superquadric_.deformation().deformed_box().nearest(point);
 }
 
 IntervalBox SuperquadricAlongRay::stretch(double a, double b) const {

@@ -311,9 +311,11 @@ private:
                         const ShellCellBounds bounds = cell_bounds(around, centre(at));
                         // The cell's own bounds (its centre's value, its gradient's bounds) are far tighter than
                         // `range` where a twist or a bend turns the cell: they clear many cells it could not.
-                        if (const Interval g = bounds.range(around); bounds.known && !can_hold_surface(g)) {
-                            inside |= std::uint64_t(g.hi < 0) << bit(at);
-                            continue;
+                        if (bounds.known) {
+                            if (const Interval g = bounds.range(around); !can_hold_surface(g)) {
+                                inside |= std::uint64_t(g.hi < 0) << bit(at);
+                                continue;
+                            }
                         }
                         cells |= std::uint64_t(1) << bit(at);
                         block->entries[bit(at)] = CellEntry::of(bounds);

@@ -182,6 +182,10 @@ struct IntervalBox {
     // The box of |x|, |y|, |z| for the points of this one.
     IntervalBox magnitude() const { return {x.magnitude(), y.magnitude(), z.magnitude()}; }
     bool contains(const Vec3d& p) const { return x.contains(p.x) && y.contains(p.y) && z.contains(p.z); }
+    // The point of the box nearest p (p itself when the box contains it).
+    Vec3d nearest(const Vec3d& p) const {
+        return {std::clamp(p.x, x.lo, x.hi), std::clamp(p.y, y.lo, y.hi), std::clamp(p.z, z.lo, z.hi)};
+    }
     void extend(const Vec3d& p) {
         for (int k = 0; k < 3; ++k) {
             (*this)[k].lo = std::min((*this)[k].lo, p[k]);
