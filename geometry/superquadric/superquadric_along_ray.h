@@ -39,7 +39,7 @@ public:
     // (Superellipsoid::gauge_and_difference).
     Superellipsoid::GaugeAndDifference gauge_and_difference(double t) const {
         count_value();
-        return superquadric_.shape().gauge_and_difference(origin_ + direction_ * t, rates_);
+        return superquadric_.shape().gauge_and_difference(point_at(t), rates_);
     }
     // Contains g over [a, b] (points outside an inner stage box of a deformation count as outside, g = 1).
     Interval bound(double a, double b) const;
