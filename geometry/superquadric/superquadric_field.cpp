@@ -48,11 +48,11 @@ private:
     static Interval continued_range(const Superquadric& s, const IntervalBox& box) {
         const IntervalBox local = transformed_box(box, s.placement().inverse());
         const IntervalBox& deformed = s.deformation().deformed_box();
-        IntervalBox clamped = local;
+        // The nearest points of the deformed box to the box's points: clamping is monotone in each coordinate.
+        IntervalBox clamped = IntervalBox::point(deformed.nearest(local.lower()));
+        clamped.extend(deformed.nearest(local.upper()));
         double near2 = 0, far2 = 0;
         for (int k = 0; k < 3; ++k) {
-            clamped[k] = {std::clamp(local[k].lo, deformed[k].lo, deformed[k].hi),
-                          std::clamp(local[k].hi, deformed[k].lo, deformed[k].hi)};
             const double below = deformed[k].lo - local[k].lo, above = local[k].hi - deformed[k].hi;
             const double gap_near = std::max({deformed[k].lo - local[k].hi, local[k].lo - deformed[k].hi, 0.0});
             const double gap_far = std::max({below, above, 0.0});
