@@ -1,5 +1,9 @@
 #include "geometry/mesh/mesh_crossing_scene.h"
 
+#include <algorithm>
+
+#include "renderer/embree/triangle_hit.h"
+
 namespace isotrace {
 namespace {
 
@@ -27,10 +31,18 @@ void record_and_reject(const RTCFilterFunctionNArguments* args) {
 
 }  // namespace
 
-MeshCrossingScene::MeshCrossingScene(RTCDevice device, RTCGeometry triangles) : scene_(rtcNewScene(device)) {
+MeshCrossingScene::MeshCrossingScene(RTCDevice device, RTCGeometry triangles)
+    : scene_(rtcNewScene(device)),
+      positions_(static_cast<const Vec3f*>(rtcGetGeometryBufferData(triangles, RTC_BUFFER_TYPE_VERTEX, 0))),
+      corners_(static_cast<const std::array<std::uint32_t, 3>*>(
+          rtcGetGeometryBufferData(triangles, RTC_BUFFER_TYPE_INDEX, 0))) {
+    static_assert(sizeof(Vec3f) == 3 * sizeof(float) && sizeof(corners_[0]) == 3 * sizeof(std::uint32_t));
     rtcSetGeometryIntersectFilterFunction(triangles, record_and_reject);
     rtcCommitGeometry(triangles);
     rtcAttachGeometry(scene_, triangles);
+    // Which triangles a ray crosses decides inside from outside: robust traversal keeps a ray through an edge from
+    // being culled by the rounding of its box tests, which differs between Embree's kernels and CPU makers.
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
     rtcReleaseGeometry(triangles);
     rtcCommitScene(scene_);
 }
@@ -39,7 +51,20 @@ MeshCrossingScene::~MeshCrossingScene() { rtcReleaseScene(scene_); }
 
 void MeshCrossingScene::crossings(const Vec3d& origin, const Vec3d& direction, double t_far,
                                   std::vector<MeshCrossing>& out) const {
+    const std::size_t first = out.size();
     traverse(origin, direction, t_far, &out);
+    // Embree's distances come from an approximate reciprocal whose last bits vary between CPU makers; which
+    // triangles are crossed does not (triangle_hit.h). So each distance is solved again, for the ray as given.
+    for (std::size_t i = first; i < out.size(); ++i) {
+        const std::array<std::uint32_t, 3>& corners = corners_[out[i].triangle];
+        TriangleSolution<double> solved;
+        if (!solve_triangle_hit(origin, direction, Vec3d(positions_[corners[0]]), Vec3d(positions_[corners[1]]),
+                                Vec3d(positions_[corners[2]]), solved))
+            continue;
+        out[i].t = solved.t;
+        out[i].normal = solved.normal;
+        out[i].on_edge = std::min({solved.u, solved.v, 1 - solved.u - solved.v}) < kEdgeBand;
+    }
 }
 
 std::size_t MeshCrossingScene::crossing_count(const Vec3d& origin, const Vec3d& direction, double t_far) const {

@@ -3,6 +3,7 @@
 // traversal lists every crossing of a ray with the surface (for the mesh's inside spans).
 #include <embree3/rtcore.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -15,7 +16,12 @@ struct MeshCrossing {
     double t = 0;
     Vec3d normal;  // the triangle's front normal (counter-clockwise), not normalised
     std::uint32_t triangle = 0;
+    // Within kEdgeBand of an edge of its triangle, in barycentric terms: where Embree's float test decides by its
+    // rounding whether the ray crosses this triangle, its neighbour, both or neither.
+    bool on_edge = false;
 };
+
+inline constexpr double kEdgeBand = 1e-6;
 
 class MeshCrossingScene {
 public:
@@ -35,6 +41,9 @@ private:
     std::size_t traverse(const Vec3d& origin, const Vec3d& direction, double t_far, std::vector<MeshCrossing>* out) const;
 
     RTCScene scene_ = nullptr;
+    // The geometry's own buffers, which the scene keeps alive.
+    const Vec3f* positions_;
+    const std::array<std::uint32_t, 3>* corners_;
 };
 
 }  // namespace isotrace

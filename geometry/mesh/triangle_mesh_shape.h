@@ -28,6 +28,7 @@ public:
     LocalShading shading(const RTCHit& hit, const Vec3f& embree_normal, const Vec3d& point) const override;
     // Without vertex normals and uvs a hit's shading is Embree's own (uv swapped after a mirroring bake).
     HitShading hit_shading() const override;
+    TriangleView embree_triangles() const override { return {mesh_.positions, mesh_.triangles}; }
     // Meshes with a uv table: a hit's dpdu and dpdv are those of its triangle's affine uv map (zero where the
     // triangle's uvs are collinear).
     bool has_uv() const override { return !mesh_.uvs.empty(); }

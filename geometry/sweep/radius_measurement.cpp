@@ -25,17 +25,36 @@ std::vector<double> RadiusProbe::measure(const Vec3d& centre, const Quaternion& 
         throw std::invalid_argument("radii: the key section's centre is not finite or too far out (beyond 1e18)");
     std::vector<double> radii;
     std::vector<MeshCrossing> crossings;
+    struct Nearest {
+        double t = INFINITY;
+        bool on_edge = false;
+    };
+    const auto nearest_at = [&](double theta) {
+        const Vec3d direction = orientation.rotate({std::cos(theta), std::sin(theta), 0});
+        crossings.clear();
+        scene_->crossings(centre, direction, reach_, crossings);
+        Nearest found;
+        for (const MeshCrossing& c : crossings)
+            if (c.t > 0 && c.t < found.t) found = {c.t, c.on_edge};
+        return found;
+    };
+    constexpr double kTurn = 1e-5;  // radians
     for (int j = 0; j < samples; ++j) {
-        double nearest = INFINITY;
-        // A ray along a shared edge can slip between its triangles: then two slightly turned rays try again.
-        for (const double nudge : {0.0, 1e-5, -1e-5}) {
-            const double theta = 2 * std::numbers::pi * j / samples + nudge;
-            const Vec3d direction = orientation.rotate({std::cos(theta), std::sin(theta), 0});
-            crossings.clear();
-            scene_->crossings(centre, direction, reach_, crossings);
-            for (const MeshCrossing& c : crossings)
-                if (c.t > 0) nearest = std::min(nearest, c.t);
-            if (std::isfinite(nearest)) break;
+        const double theta = 2 * std::numbers::pi * j / samples;
+        const Nearest straight = nearest_at(theta);
+        double nearest = straight.t;
+        // A ray along a shared edge can slip between its triangles; one whose nearest crossing lies on an edge meets
+        // there what rounding decides (a corner that only touches the plane, the rim of an open part). Rays turned a
+        // little either way decide instead: the first that crosses, for a ray that slipped through; for an edge,
+        // its own distance where a turned ray finds the surface going on through it, else the turned rays' nearest.
+        if (!std::isfinite(straight.t) || straight.on_edge) {
+            const Nearest turned[2] = {nearest_at(theta + kTurn), nearest_at(theta - kTurn)};
+            const auto continues = [&](const Nearest& n) { return std::abs(n.t - straight.t) <= 1e-3 * straight.t; };
+            const double nearest_turned = std::min(turned[0].t, turned[1].t);
+            if (!std::isfinite(straight.t))
+                nearest = std::isfinite(turned[0].t) ? turned[0].t : turned[1].t;
+            else if (!continues(turned[0]) && !continues(turned[1]) && std::isfinite(nearest_turned))
+                nearest = nearest_turned;
         }
         if (!std::isfinite(nearest)) {
             std::ostringstream problem;

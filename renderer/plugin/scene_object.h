@@ -23,6 +23,7 @@ struct SceneObject {
     Transform to_world;
     bool instanced = false;  // true: the shape stays in object space, traced as a placement (PlacementArray)
     HitShading hit_shading = HitShading::Computed;  // the shape's, after any bake (set by commit)
+    TriangleView triangles;  // the shape's embree_triangles(), after any bake (set by commit)
     int counter_slot = 0;
     LightChoice area_light;  // set when the object emits and its surface can be sampled
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "renderer/core/input_error.h"
+#include "renderer/embree/triangle_hit.h"
 #include "renderer/math/transform.h"
 #include "renderer/plugin/implicit_field.h"
 #include "renderer/plugin/registry.h"
@@ -141,6 +142,9 @@ public:
     // What shading() is, asked once after any bake: a shape that overrides shading() says EmbreeHit (or
     // EmbreeHitSwappedUv) only when its shading() then returns exactly shading_of_embree_hit.
     virtual HitShading hit_shading() const { return HitShading::Computed; }
+    // Shapes traced as Embree's own triangles: their vertices and triangles, after any bake, so that the scene
+    // solves each hit's t, u, v and Ng again (triangle_hit.h) before shading() sees it. Empty for other shapes.
+    virtual TriangleView embree_triangles() const { return {}; }
 
     // Composite shapes whose parts may carry their own materials: one entry per part (LocalShading::part).
     // Empty for shapes of one part, which show the object's material.

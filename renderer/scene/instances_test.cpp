@@ -80,6 +80,7 @@ public:
         return inner_->shading(hit, ng, point);
     }
     HitShading hit_shading() const override { return inner_->hit_shading(); }
+    TriangleView embree_triangles() const override { return inner_->embree_triangles(); }
     bool has_uv() const override { return inner_->has_uv(); }
 
 private:

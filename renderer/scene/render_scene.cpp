@@ -152,6 +152,7 @@ void RenderScene::commit() {
         object.instanced = !shape.can_bake(object.to_world);
         if (!object.instanced) shape.bake(object.to_world);
         object.hit_shading = shape.hit_shading();
+        object.triangles = shape.embree_triangles();
         shape.set_object_name(object.name);
         RTCGeometry geometry = shape.create_geometry(device);
         check_embree("building object \"" + object.name + "\"");
@@ -213,6 +214,7 @@ void RenderScene::commit() {
         const Shape& shape = *variant.shape;
         variant.instanced = true;
         variant.hit_shading = shape.hit_shading();
+        variant.triangles = shape.embree_triangles();
         variant.counter_slot = counters::geometry_type_slot(shape.type_name(), shape.counts_intersection_tests());
         build_statistics_.object_bytes += object_record_bytes(variant);
     }
@@ -231,7 +233,19 @@ namespace {
 // Embree stores the hit's fields one by one: each is read alone (a volatile load is never merged with its
 // neighbours), since a wider load would span several of those stores and wait until they are written (a failed
 // store forwarding).
-float alone(const float& field) { return *static_cast<const volatile float*>(&field); }
+template <class Field>
+Field alone(const Field& field) {
+    return *static_cast<const volatile Field*>(&field);
+}
+
+// The fields of Embree's hit that hit completion reads, copied one by one (see alone).
+RTCHit fields_of(const RTCHit& hit) {
+    RTCHit copy;
+    copy.Ng_x = alone(hit.Ng_x), copy.Ng_y = alone(hit.Ng_y), copy.Ng_z = alone(hit.Ng_z);
+    copy.u = alone(hit.u), copy.v = alone(hit.v);
+    copy.primID = alone(hit.primID), copy.geomID = alone(hit.geomID), copy.instID[0] = alone(hit.instID[0]);
+    return copy;
+}
 
 // Four rows of four floats turned into their four columns.
 void transpose(Float4& a, Float4& b, Float4& c, Float4& d) {
@@ -387,22 +401,33 @@ unsigned RenderScene::occluded(std::span<const Ray> rays, unsigned live) const {
     return untraceable | found;
 }
 
-void RenderScene::complete_hit(const Ray& ray, const RTCHit& embree_hit, float t,
+void RenderScene::complete_hit(const Ray& ray, const RTCHit& found_hit, float t,
                                std::optional<SurfaceHit>& found) const {
     // A placement array's hit names the placement in instID[0] (PlacementArray::intersect).
-    const TracedGeometry& traced = traced_[embree_hit.geomID];
-    const std::uint32_t placement = traced.placements ? embree_hit.instID[0] : 0;
+    const TracedGeometry& traced = traced_[found_hit.geomID];
+    const std::uint32_t placement = traced.placements ? found_hit.instID[0] : 0;
     const SceneObject& object = traced.placements ? traced.placements->variant_of(placement) : *traced.object;
     const std::uint32_t object_index = traced.id + placement;
     counters::count_closest_hit(object.counter_slot);
+    const PlacementRecord* record = traced.placements ? &traced.placements->record(placement) : nullptr;
+    std::optional<Transform> computed;  // a placed copy's, computed from its record
+    const Transform& to_world = record ? computed.emplace(to_world_of_record(*record)) : object.to_world;
+
+    RTCHit solved;  // a triangle hit's numbers solved again, in the triangles' own space
+    if (!object.triangles.empty()) {
+        solved = fields_of(found_hit);
+        if (object.instanced)
+            resolve_triangle_hit(object.triangles, Vec3f(to_world.inverse_point(Vec3d(ray.origin))),
+                                 Vec3f(to_world.inverse_vector(Vec3d(ray.direction))), solved, t);
+        else
+            resolve_triangle_hit(object.triangles, ray.origin, ray.direction, solved, t);
+    }
+    const RTCHit& embree_hit = object.triangles.empty() ? found_hit : solved;
 
     // The normal is read a float at a time, and the result is built once from registers rather than in pieces on
     // the stack.
     const Vec3f embree_ng =
         safe_normalize(Vec3f(alone(embree_hit.Ng_x), alone(embree_hit.Ng_y), alone(embree_hit.Ng_z)), {0, 0, 1});
-    const PlacementRecord* record = traced.placements ? &traced.placements->record(placement) : nullptr;
-    std::optional<Transform> computed;  // a placed copy's, computed from its record
-    const Transform& to_world = record ? computed.emplace(to_world_of_record(*record)) : object.to_world;
     const auto shape_shading = [&] {
         // The hit in the shape's own space (object space when instanced), for shapes that compute normals there.
         const Vec3d world_point = Vec3d(ray.origin) + Vec3d(ray.direction) * double(t);
