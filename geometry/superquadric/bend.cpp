@@ -23,6 +23,8 @@ Bend::Bend(double curvature, double direction, double centre, Interval region)
 
 double Bend::region_angle(double z) const { return curvature_ * (std::clamp(z, region_.lo, region_.hi) - centre_); }
 
+double Bend::beyond_region(double z) const { return z - std::clamp(z, region_.lo, region_.hi); }
+
 // 1 − cos θ without cancellation: sin²θ/(1 + cos θ) where cos θ ≥ 0 (then 1 + cos θ ≥ 1), 1 − cos θ itself below
 // (then it is at least 1).
 double Bend::versine(SinCos at) { return at.cos >= 0 ? at.sin * at.sin / (1 + at.cos) : 1 - at.cos; }
@@ -32,7 +34,7 @@ double Bend::versine(SinCos at) { return at.cos >= 0 ? at.sin * at.sin / (1 + at
 Vec3d Bend::forward(const Vec3d& p) const {
     const double s = dot(p, u_), w = dot(p, v_);
     const double theta = region_angle(p.z);
-    const double beyond = p.z - std::clamp(p.z, region_.lo, region_.hi);
+    const double beyond = beyond_region(p.z);
     const SinCos at = sin_cos(theta);
     return from_frame(versine(at) / curvature_ + s * at.cos + beyond * at.sin, w,
                       centre_ + at.sin / curvature_ - s * at.sin + beyond * at.cos);
@@ -83,8 +85,7 @@ Interval Bend::versine_over_curvature(SinCos at_lo, SinCos at_hi, Interval cos) 
 IntervalBox Bend::forward_box(const IntervalBox& box) const {
     const FrameBox f = to_frame(box);
     const Interval theta = {region_angle(f.z.lo), region_angle(f.z.hi)};
-    const auto beyond_at = [&](double z) { return z - std::clamp(z, region_.lo, region_.hi); };
-    const Interval beyond = {beyond_at(f.z.lo), beyond_at(f.z.hi)};  // non-decreasing in z
+    const Interval beyond = {beyond_region(f.z.lo), beyond_region(f.z.hi)};  // non-decreasing in z
     const SinCos at_lo = sin_cos(theta.lo), at_hi = sin_cos(theta.hi);
     const auto [sn, c] = sin_cos_range(theta, at_lo, at_hi);
     return from_frame({versine_over_curvature(at_lo, at_hi, c) + f.s * c + beyond * sn, f.w,

@@ -58,6 +58,8 @@ private:
     IntervalBox from_frame(const FrameBox& box) const;
     Vec3d from_frame(double s, double w, double z) const { return u_ * s + v_ * w + Vec3d(0, 0, z); }
     double region_angle(double z) const;
+    // How far z lies beyond the bent region (0 inside it): the straight continuation past either end.
+    double beyond_region(double z) const;
     static double versine(SinCos at);
     // (1 − cos θ)/k over an interval of angles, from sin and cos at its ends and the range of cos over it.
     Interval versine_over_curvature(SinCos at_lo, SinCos at_hi, Interval cos) const;
