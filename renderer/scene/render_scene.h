@@ -188,8 +188,8 @@ private:
     // The buffers of queries that reach solids (CSG, superquadrics, ...), lent to them through QueryContext.
     mutable QueryScratchPool scratch_pool_;
 
-    // The SurfaceHit of Embree's hit at distance t along `ray`.
-    void complete_hit(const Ray& ray, const RTCHit& embree_hit, float t, std::optional<SurfaceHit>& found) const;
+    // The SurfaceHit of Embree's hit at distance t along `ray` (a triangle hit's t, u, v and Ng solved again).
+    void complete_hit(const Ray& ray, const RTCHit& found_hit, float t, std::optional<SurfaceHit>& found) const;
     RTCScene new_shape_scene(RTCGeometry geometry);
     void attach(RTCGeometry geometry, const TracedGeometry& traced, const std::string& name);
     void build_lights();
