@@ -124,24 +124,26 @@ nlohmann::json benchmark_result_json(const std::vector<BenchmarkWorkloadResult>&
                              {"threads", nlohmann::json::array()},
                              {"workloads", nlohmann::json::array()},
                              {"scores", nlohmann::json::array()}};
+    const std::string embree_isa = system.is_object() ? system.value("embree_isa", "") : "";
     for (const BenchmarkWorkloadResult& r : results) {
         const BenchmarkReference& reference = references.workloads.at(r.workload->name);
+        const std::string& reference_hash = reference.hash_for(embree_isa);
         std::set<std::string> hashes;
         for (const BenchmarkRun& run : r.runs) hashes.insert(run.hashes.begin(), run.hashes.end());
-        const bool valid = hashes.size() == 1 && *hashes.begin() == reference.hash;
+        const bool valid = hashes.size() == 1 && *hashes.begin() == reference_hash;
         if (hashes.size() > 1)
             result["problems"].push_back(r.workload->name + ": the units gave " + std::to_string(hashes.size()) +
                                          " different outputs (a deterministic computation came out differently)");
         else if (!valid)
             result["problems"].push_back(r.workload->name + ": the output (hash " +
                                          (hashes.empty() ? "none" : *hashes.begin()) +
-                                         ") is not the reference output (hash " + reference.hash + ")");
+                                         ") is not the reference output (hash " + reference_hash + ")");
         result["valid"] = result["valid"].get<bool>() && valid;
         nlohmann::json workload = {{"name", r.workload->name},
                                    {"measures", r.workload->measures},
                                    {"units_per_run", r.workload->units},
                                    {"hash", hashes.size() == 1 ? nlohmann::json(*hashes.begin()) : nlohmann::json()},
-                                   {"reference_hash", reference.hash},
+                                   {"reference_hash", reference_hash},
                                    {"valid", valid},
                                    {"runs", nlohmann::json::array()}};
         // A short run (one unit, no warm-up) checks the outputs; its times are not scored.

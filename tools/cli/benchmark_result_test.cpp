@@ -81,6 +81,23 @@ TEST(BenchmarkResult, AWrongOutputVoidsTheScore) {
     EXPECT_NE(summary.find(benchmark_workloads()[2].name), std::string::npos) << summary;
 }
 
+// The output is checked against the hash for the Embree kernels the machine runs (the system's "embree_isa").
+TEST(BenchmarkResult, TheReferenceHashIsTheOneForTheMachinesEmbreeKernels) {
+    BenchmarkReferences older = references();
+    older.workloads.at(benchmark_workloads()[1].name).hash_without_avx2 = "h-sse";
+    std::vector<BenchmarkWorkloadResult> all = results(1, "h");
+    for (BenchmarkRun& run : all[1].runs) run.hashes = {"h-sse"};
+    const nlohmann::json on_avx = benchmark_result_json(all, older, false, {{"embree_isa", "AVX"}});
+    EXPECT_TRUE(on_avx["valid"].get<bool>()) << on_avx["problems"].dump();
+    EXPECT_EQ(on_avx["workloads"][1]["reference_hash"], "h-sse");
+    EXPECT_EQ(on_avx["workloads"][0]["reference_hash"], "h");
+    // The same output where Embree runs its AVX2 kernels is wrong, and so is the AVX2 output on AVX.
+    const nlohmann::json on_avx2 = benchmark_result_json(all, older, false, {{"embree_isa", "AVX2"}});
+    EXPECT_FALSE(on_avx2["valid"].get<bool>());
+    EXPECT_FALSE(on_avx2["workloads"][1]["valid"].get<bool>());
+    EXPECT_FALSE(benchmark_result_json(results(1, "h"), older, false, {{"embree_isa", "SSE4.2"}})["valid"].get<bool>());
+}
+
 TEST(BenchmarkResult, OneThreadCountHasNoSpeedUpAndAPartialSuiteNoOverallScore) {
     std::vector<BenchmarkWorkloadResult> all = results(1, "h");
     for (BenchmarkWorkloadResult& r : all) r.runs.pop_back();

@@ -5,6 +5,7 @@
 #include "renderer/core/input_error.h"
 #include "renderer/params/json_document.h"
 #include "renderer/params/scene_node.h"
+#include "tools/cli/machine_description.h"
 
 namespace isotrace::cli {
 
@@ -52,6 +53,7 @@ BenchmarkReferences read_benchmark_references(const std::filesystem::path& folde
         const SceneNode entry = workloads.object(workload.name);
         BenchmarkReference& reference = references.workloads[workload.name];
         reference.hash = entry.string("hash");
+        reference.hash_without_avx2 = entry.string_or("hash_without_avx2", "");
         reference.single_thread_rate = entry.number_or("single_thread_units_per_second", 0, NumberRange::non_negative());
         reference.all_threads_rate = entry.number_or("all_threads_units_per_second", 0, NumberRange::non_negative());
         entry.finish();
@@ -59,6 +61,10 @@ BenchmarkReferences read_benchmark_references(const std::filesystem::path& folde
     workloads.finish();
     root.finish();
     return references;
+}
+
+const std::string& BenchmarkReference::hash_for(std::string_view embree_isa) const {
+    return embree_isa_before_avx2(embree_isa) && !hash_without_avx2.empty() ? hash_without_avx2 : hash;
 }
 
 std::filesystem::path installed_benchmark_folder() {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace isotrace::cli {
@@ -31,10 +32,16 @@ struct BenchmarkWorkload {
 const std::vector<BenchmarkWorkload>& benchmark_workloads();
 
 // Per workload, from references.json: the hash of one unit's output and the reference machine's units per second
-// on one thread and on all its threads (0 when not recorded).
+// on one thread and on all its threads (0 when not recorded). Embree's kernels for CPUs without AVX2 (SSE2, SSE4.2,
+// AVX) decide a few triangle hits at shared edges differently from its AVX2 ones, which use fused multiply-adds: a
+// workload whose output they change has its hash for them too (`hash_without_avx2`; empty when it is the same).
 struct BenchmarkReference {
     std::string hash;
     double single_thread_rate = 0, all_threads_rate = 0;
+    std::string hash_without_avx2{};
+
+    // The reference output's hash where Embree runs its kernels for `embree_isa` (as machine_description names it).
+    const std::string& hash_for(std::string_view embree_isa) const;
 };
 struct BenchmarkReferences {
     std::string machine;  // a description of the reference machine

@@ -56,6 +56,8 @@ namespace {
 // Embree's instruction sets, narrowest first.
 constexpr std::array<std::string_view, 5> kEmbreeIsas = {"SSE2", "SSE4.2", "AVX", "AVX2", "AVX512SKX"};
 
+const std::string_view* rank_of(std::string_view isa) { return std::find(kEmbreeIsas.begin(), kEmbreeIsas.end(), isa); }
+
 }  // namespace
 
 std::string isa_from_cpu_flags(const std::string& flags) {
@@ -77,8 +79,12 @@ std::string isa_from_cpu_flags(const std::string& flags) {
 
 std::string embree_isa() {
     const std::string best = isa_from_cpu_flags(cpuinfo_value("flags"));
-    const auto rank = [](std::string_view isa) { return std::find(kEmbreeIsas.begin(), kEmbreeIsas.end(), isa); };
-    return rank(best) != kEmbreeIsas.end() && rank(best) > rank(kEmbreeIsaCap) ? std::string(kEmbreeIsaCap) : best;
+    return rank_of(best) != kEmbreeIsas.end() && rank_of(best) > rank_of(kEmbreeIsaCap) ? std::string(kEmbreeIsaCap)
+                                                                                          : best;
+}
+
+bool embree_isa_before_avx2(std::string_view isa) {
+    return rank_of(isa) != kEmbreeIsas.end() && rank_of(isa) < rank_of("AVX2");
 }
 
 nlohmann::json machine_description() {

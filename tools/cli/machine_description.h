@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace isotrace::cli {
 
@@ -19,6 +20,10 @@ std::string cpu_model();
 // SSE4.2, AVX, AVX2, AVX-512), so this reads the same CPU flags, and the native packet widths the device reports
 // (RTC_DEVICE_PROPERTY_NATIVE_RAY{4,8,16}_SUPPORTED) are given beside it.
 std::string embree_isa();
+
+// Whether Embree's kernels for `isa` (as embree_isa names it) come before its AVX2 ones: SSE2, SSE4.2 and AVX, which
+// test triangle edges without fused multiply-adds and so decide a few hits at shared edges differently.
+bool embree_isa_before_avx2(std::string_view isa);
 
 // The best ISA named by a /proc/cpuinfo "flags" line: "AVX512SKX", "AVX2", "AVX", "SSE4.2", "SSE2" or "unknown".
 std::string isa_from_cpu_flags(const std::string& flags);

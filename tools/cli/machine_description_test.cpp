@@ -34,5 +34,10 @@ TEST(MachineDescription, IsaFromCpuFlags) {
     EXPECT_EQ(isa_from_cpu_flags("avx2x sse2y"), "unknown");  // whole words only
 }
 
+TEST(MachineDescription, EmbreeKernelsBeforeAvx2) {
+    for (const char* isa : {"SSE2", "SSE4.2", "AVX"}) EXPECT_TRUE(embree_isa_before_avx2(isa)) << isa;
+    for (const char* isa : {"AVX2", "AVX512SKX", "unknown", ""}) EXPECT_FALSE(embree_isa_before_avx2(isa)) << isa;
+}
+
 }  // namespace
 }  // namespace isotrace::cli
