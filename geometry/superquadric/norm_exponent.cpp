@@ -1,5 +1,7 @@
 #include "geometry/superquadric/norm_exponent.h"
 
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <utility>
 
@@ -87,25 +89,54 @@ constexpr std::array<double (*)(double), sizeof...(n)> powers_of(std::integer_se
 
 constexpr auto kWholePowers = powers_of(std::make_integer_sequence<int, kMaxWhole>());  // x^1 to x^64
 
+// The tables of exponent p (with its flags set in `e`), made the first time p is asked for and shared while any
+// NormExponent holds them. Exponents are made while scenes load; the lock is not on any ray's way.
+std::shared_ptr<const NormTables> tables_of(const NormExponent& e) {
+    static std::mutex mutex;
+    static std::map<double, std::weak_ptr<const NormTables>> made;
+    const std::lock_guard lock(mutex);
+    std::weak_ptr<const NormTables>& slot = made[e.p];
+    if (std::shared_ptr<const NormTables> shared = slot.lock()) return shared;
+    auto tables = std::make_shared<NormTables>();
+    constexpr std::size_t kTerms = std::tuple_size_v<decltype(tables->root_polynomial)>;
+    const long double p = e.p;
+    if (!e.has_closed_root())
+        tables->root_polynomial =
+            chebyshev_interpolant<kTerms>([&](long double t) { return std::pow(1.5L + 0.5L * t, 1 / p); });
+    // A function of the mantissa m on one half of [1, 2), as NormExponent::split takes it: in s = 2m − 2 over
+    // [1, 1.5] and 2m − 3 over [1.5, 2], both in [0, 1], the terms of the polynomial are then all but its last few of
+    // one sign, and their sum loses nothing to cancellation.
+    const auto on_half = [&](int half, const auto& f) {
+        return chebyshev_interpolant<kTerms>([&](long double t) { return f((t + 5 + 2 * half) / 4); }, Basis::Unit);
+    };
+    if (e.tabulated) {
+        for (int half = 0; half < 2; ++half)
+            tables->mantissa_power_polynomials[half] = on_half(half, [&](long double m) { return std::pow(m, p); });
+        for (int k = 0; k < NormExponent::kOctaves; ++k) tables->octave_powers[k] = double(std::exp2(-k * p));
+    }
+    if (e.norm_tabulated)
+        for (int k = 1; k <= NormExponent::kNormOctaves; ++k)
+            for (int half = 0; half < 2; ++half)
+                tables->norm_polynomials[2 * (k - 1) + half] = on_half(half, [&](long double m) {
+                    return std::pow(1 + std::pow(std::ldexp(m, -k), p), 1 / p);
+                });
+    slot = tables;
+    // Entries of exponents no longer held are dropped whenever the map has doubled, so that it keeps to about those
+    // in use at a cost that does not grow with their number.
+    if ((made.size() & (made.size() - 1)) == 0)
+        std::erase_if(made, [](const auto& entry) { return entry.second.expired(); });
+    return tables;
+}
+
 }  // namespace
 
 NormExponent NormExponent::of_epsilon(double epsilon) {
     const double p = 2 / epsilon;
     NormExponent e{p, p == std::floor(p) && p <= kMaxWhole ? int(p) : 0, 1 / p};
     if (e.whole > 0) e.whole_power = kWholePowers[e.whole - 1];
-    constexpr std::size_t kTerms = std::tuple_size_v<decltype(root_polynomial)>;
-    if (!e.has_closed_root())
-        e.root_polynomial =
-            chebyshev_interpolant<kTerms>([&](long double t) { return std::pow(1.5L + 0.5L * t, 1.0L / e.p); });
-    if (e.whole == 0 && p <= kMostTabulated) {
-        e.tabulated = true;
-        // In s = 2m − 2 over [1, 1.5] and 2m − 3 over [1.5, 2], both in [0, 1]: the terms of m^p's polynomial are
-        // then all but its last few of one sign, and their sum loses nothing to cancellation.
-        for (int half = 0; half < 2; ++half)
-            e.mantissa_power_polynomials[half] = chebyshev_interpolant<kTerms>(
-                [&](long double t) { return std::pow((t + 5 + 2 * half) / 4, (long double)e.p); }, Basis::Unit);
-        for (int k = 0; k < kOctaves; ++k) e.octave_powers[k] = double(std::exp2(-k * (long double)e.p));
-    }
+    e.tabulated = e.whole == 0 && p <= kMostTabulated;
+    e.norm_tabulated = e.whole == 0 && p <= kMostNormTabulated;
+    if (!e.has_closed_root() || e.tabulated) e.tables = tables_of(e);
     return e;
 }
 

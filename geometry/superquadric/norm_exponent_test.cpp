@@ -1,6 +1,7 @@
 // The powers and roots of the gauge's p-norms against long double pow: within four ulps for the roots of every whole
 // exponent up to 64 and of sampled fractional ones (a polynomial, its terms rounded once each), within six for the
-// fractional powers up to p = 16 (a polynomial times a power of two's power) over every octave they take.
+// fractional powers up to p = 16 (a polynomial times a power of two's power) over every octave they take, and within
+// three for the norms that fractional exponents up to p = 8 take from their own polynomials.
 #include "geometry/superquadric/norm_exponent.h"
 
 #include <gtest/gtest.h>
@@ -91,6 +92,34 @@ TEST(SuperquadricNormExponent, FractionalPowersAreWithinSixUlpsOverEveryOctave) 
         EXPECT_LE(worst, e.tabulated ? 6.0 : 1.0) << "p = " << e.p;
     }
     EXPECT_GE(tabulated, 20);
+}
+
+// The norm ‖(1, r)‖_p of fractional exponents up to p = 8 from its own polynomials, over the eight octaves they
+// cover, against long double; r outside them (and other exponents) takes the root of 1 + r^p.
+TEST(SuperquadricNormExponent, TabulatedNormsAreWithinThreeUlps) {
+    std::mt19937 random(10);
+    std::uniform_real_distribution<double> epsilon(0.25, 4), octaves(0, 8);
+    int tabulated = 0;
+    for (int i = 0; i < 40; ++i) {
+        const NormExponent e = NormExponent::of_epsilon(epsilon(random));
+        EXPECT_EQ(e.norm_tabulated, e.whole == 0 && e.p <= NormExponent::kMostNormTabulated) << e.p;
+        if (!e.norm_tabulated) continue;
+        ++tabulated;
+        double worst = 0;
+        for (int k = 0; k < 3000; ++k) {
+            // Shares just below and at each power of two, and spread over the octaves.
+            const double r = k < 18 ? std::exp2(-0.5 * (k + 1)) : k < 36 ? std::nextafter(std::exp2(-0.5 * (k - 17)), 0.0)
+                                                                       : std::exp2(-octaves(random));
+            ASSERT_EQ(e.has_tabulated_norm(r), r >= 0x1p-8 && r < 1) << r;
+            if (!e.has_tabulated_norm(r)) continue;
+            const long double exact = std::pow(1 + std::pow((long double)r, (long double)e.p), 1 / (long double)e.p);
+            worst = std::max(worst, ulps(e.tabulated_norm(r), exact));
+        }
+        EXPECT_LE(worst, 3.0) << "p = " << e.p;
+    }
+    EXPECT_GE(tabulated, 20);
+    // Whole exponents and those above p = 8 have none.
+    for (const double epsilon : {1.0, 2.0, 0.5, 0.2, 0.15}) EXPECT_FALSE(NormExponent::of_epsilon(epsilon).norm_tabulated);
 }
 
 TEST(SuperquadricNormExponent, PowersAndRootsOfAnyArgumentAreWithinAFewUlps) {

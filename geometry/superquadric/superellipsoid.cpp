@@ -19,13 +19,23 @@ struct PNorm {
     bool euclidean = false;  // then ratio, power, sum and root are not taken
 };
 
-// Inlined into its callers: a call costs as much as the rest of a round p-norm.
+// Inlined into its callers: a call costs as much as the rest of a round p-norm. Without `partials` only the norm is
+// wanted: where it has its own polynomial (NormExponent::tabulated_norm), r^p and 1 + r^p are not taken.
+template <bool partials = true>
 [[gnu::always_inline]] inline PNorm p_norm_parts(double a, double b, const NormExponent& p) {
     const double larger = std::max(a, b), smaller = std::min(a, b);
     if (larger == 0 || std::isinf(larger)) return {larger, smaller, 0, 0, 1, 1, larger};
     if (p.whole == 2 && larger > 0x1p-480 && larger < 0x1p480)
         return {larger, smaller, 0, 0, 0, 0, std::sqrt(a * a + b * b), true};
-    const double ratio = smaller / larger, power = p.unit_power(ratio), sum = 1 + power, root = p.root(sum);
+    const double ratio = smaller / larger;
+    const bool tabulated = p.has_tabulated_norm(ratio);
+    if (!partials && tabulated) {
+        const double root = p.tabulated_norm(ratio);
+        return {larger, smaller, ratio, NAN, NAN, root, larger * root};
+    }
+    const double power = p.unit_power(ratio), sum = 1 + power;
+    // The root from the norm's own polynomial where there is one, as the norm alone takes it.
+    const double root = tabulated ? p.tabulated_norm(ratio) : p.root(sum);
     return {larger, smaller, ratio, power, sum, root, larger * root};
 }
 
@@ -42,7 +52,7 @@ std::pair<double, double> share_powers_at(const PNorm& n, double vanishing) {
     return {of_larger, n.ratio > 0 ? n.power / n.ratio * of_larger : vanishing};
 }
 
-double p_norm(double a, double b, const NormExponent& p) { return p_norm_parts(a, b, p).norm; }
+double p_norm(double a, double b, const NormExponent& p) { return p_norm_parts<false>(a, b, p).norm; }
 
 // ∂‖(a, b)‖_p/∂a and ∂/∂b: (a/N)^(p−1). At a zero argument the limit: 0 for p > 1, 1 for p = 1, unbounded (NaN,
 // so that no Newton step is taken) below.

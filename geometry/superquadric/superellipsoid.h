@@ -117,6 +117,13 @@ public:
     // over the cell contains 1): a deformed object's bounds are the union of its deformed surface cells.
     std::vector<IntervalBox> surface_cells(int per_axis) const;
 
+    // The bytes of its exponents' tables (shared with every superellipsoid of the same exponents: an upper bound).
+    std::size_t table_bytes() const {
+        return (p1_.tables ? sizeof(NormTables) : 0) + (p2_.tables ? sizeof(NormTables) : 0);
+    }
+    // The most table_bytes() can be.
+    static constexpr std::size_t kMostTableBytes = 2 * sizeof(NormTables);
+
     IntervalBox bounding_box() const {
         return {{-radii_.x, radii_.x}, {-radii_.y, radii_.y}, {-radii_.z, radii_.z}};
     }

@@ -98,10 +98,12 @@ Superquadric parse_superquadric(const SceneNode& node) {
 std::unique_ptr<Shape> create(const SceneNode& node) {
     std::vector<Superquadric> superquadrics;
     const std::vector<SceneNode> list = node.object_array("superquadrics");
-    // Each superquadric's record (its shell's block table even when undeformed) is charged before the list is made:
-    // a scene file's short entries would otherwise stand for far more memory than the file's text.
+    // Each superquadric's record (its shell's block table even when undeformed) and its exponents' tables (shared
+    // where exponents repeat, so at most) are charged before the list is made: a scene file's short entries would
+    // otherwise stand for far more memory than the file's text.
     const std::size_t count = std::max<std::size_t>(1, list.size());
-    node.charge_at(list.empty() ? "type" : "superquadrics", saturating_product({count, sizeof(Superquadric)}),
+    node.charge_at(list.empty() ? "type" : "superquadrics",
+                   saturating_product({count, sizeof(Superquadric) + Superellipsoid::kMostTableBytes}),
                    std::to_string(count) + " superquadric record(s)");
     superquadrics.reserve(count);
     if (!list.empty()) {

@@ -71,7 +71,7 @@ Vec3d SuperquadricShape::field_gradient(const Vec3d& point) const {
 
 std::size_t SuperquadricShape::memory_bytes() const {
     std::size_t bytes = superquadrics_.capacity() * sizeof(Superquadric);
-    for (const Superquadric& s : superquadrics_) bytes += s.deformation().heap_bytes();
+    for (const Superquadric& s : superquadrics_) bytes += s.deformation().heap_bytes() + s.shape().table_bytes();
     return bytes;
 }
 
