@@ -20,6 +20,9 @@ namespace isotrace {
 // The polynomials and octave powers of one exponent (NormExponent, below), made once per exponent and shared by
 // every NormExponent made for it: a scene's superquadrics share a few exponents, and the tables are most of their size.
 struct NormTables {
+    // The octaves of the powers' table, and those the norm's polynomials cover: r ∈ [2^−kNormOctaves, 1).
+    static constexpr int kOctaves = 64, kNormOctaves = 8;
+    static constexpr double kLeastNormShare = 1.0 / (1 << kNormOctaves);
     // For p without a closed-form root (all but 1, 2 and 4): s^(1/p) over s ∈ [1, 2] as a polynomial in 2s − 3
     // (interpolation at Chebyshev nodes, within 4 ulps for every whole p up to 64 and fractional ones tested),
     // root() itself.
@@ -27,11 +30,11 @@ struct NormTables {
     // For fractional p up to NormExponent::kMostTabulated: m^p over each half of [1, 2) as a polynomial in
     // s ∈ [0, 1), and the powers 2^(−kp) of the octaves k = 0 to 63.
     std::array<std::array<double, 18>, 2> mantissa_power_polynomials{};
-    std::array<double, 64> octave_powers{};
+    std::array<double, kOctaves> octave_powers{};
     // For fractional p up to NormExponent::kMostNormTabulated: the norm ‖(1, r)‖_p = (1 + r^p)^(1/p) itself for
     // r ∈ [2^−8, 1), by a polynomial of the same degree on each half of each of those eight octaves: one chain of
     // dependent operations on the gauge's critical path where the power and then the root of 1 + r^p take two.
-    std::array<std::array<double, 18>, 16> norm_polynomials{};
+    std::array<std::array<double, 18>, 2 * kNormOctaves> norm_polynomials{};
 };
 
 struct NormExponent {
@@ -41,7 +44,7 @@ struct NormExponent {
     bool norm_tabulated = false;  // the tables hold the norm's own polynomials
     double (*whole_power)(double) = nullptr;  // x^p by repeated squaring, for whole p
     static constexpr double kMostTabulated = 16, kMostNormTabulated = 8;
-    static constexpr int kOctaves = 64, kNormOctaves = 8;
+    static constexpr int kOctaves = NormTables::kOctaves, kNormOctaves = NormTables::kNormOctaves;
     bool tabulated = false;  // the tables hold the powers' polynomials and octaves
     // Null where p needs none (p = 1, 2, 4).
     std::shared_ptr<const NormTables> tables{};
@@ -61,7 +64,7 @@ struct NormExponent {
         return r == 0 ? 0 : std::pow(r, p);  // on coordinate planes: pow's exact answer without the call
     }
     // Whether ‖(1, r)‖_p has its own polynomial at r (tabulated_norm).
-    bool has_tabulated_norm(double r) const { return norm_tabulated && r >= 0x1p-8 && r < 1; }
+    bool has_tabulated_norm(double r) const { return norm_tabulated && r >= NormTables::kLeastNormShare && r < 1; }
     // ‖(1, r)‖_p for r where has_tabulated_norm(r), within a few ulps (tested against long double). Out of line: its
     // twenty-odd values would crowd the registers of every p-norm it were inlined into, for all exponents.
     [[gnu::noinline]] double tabulated_norm(double r) const {

@@ -110,7 +110,7 @@ TEST(SuperquadricNormExponent, TabulatedNormsAreWithinThreeUlps) {
             // Shares just below and at each power of two, and spread over the octaves.
             const double r = k < 18 ? std::exp2(-0.5 * (k + 1)) : k < 36 ? std::nextafter(std::exp2(-0.5 * (k - 17)), 0.0)
                                                                        : std::exp2(-octaves(random));
-            ASSERT_EQ(e.has_tabulated_norm(r), r >= 0x1p-8 && r < 1) << r;
+            ASSERT_EQ(e.has_tabulated_norm(r), r >= 0x1p-8 && r < 1) << r;  // 2^−8: the eight octaves
             if (!e.has_tabulated_norm(r)) continue;
             const long double exact = std::pow(1 + std::pow((long double)r, (long double)e.p), 1 / (long double)e.p);
             worst = std::max(worst, ulps(e.tabulated_norm(r), exact));
