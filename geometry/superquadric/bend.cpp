@@ -119,8 +119,27 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
         const Interval spanned{relative_angle(first), relative_angle(last)};
         if (spanned.lo <= spanned.hi && spanned.width() < std::numbers::pi) relative = spanned;
     }
-    const Interval theta = {std::clamp(angle_middle_ + relative.lo, angle_lo_, angle_hi_),
-                            std::clamp(angle_middle_ + relative.hi, angle_lo_, angle_hi_)};
+    const Interval unclamped = Interval{angle_middle_, angle_middle_} + relative;
+    if (unclamped.lo >= angle_lo_ && unclamped.hi <= angle_hi_) {
+        // Every point of the box turns about the centre within the region: its preimage is s = (1 − ρ)/k along the
+        // bend direction and z = z0 + θ/k, with ρ its distance from the centre (in units of 1/k) and θ its angle. So
+        // the ranges of ρ (nearest and farthest point) and θ over the box give the preimage's own bounding box,
+        // without the wrapping of interval sines and cosines. (1 − ρ)/k is taken as (s·(2 − k·s) − k·z²)/(1 + ρ) at
+        // those points, which forms nothing of size 1/k: a slight bend stays as exact as no bend.
+        const auto undeformed_s = [&](double s, double z, double x, double y) {
+            return (s * (2 - curvature_ * s) - curvature_ * z * z) / (1 + std::sqrt(x * x + y * y));
+        };
+        const bool near_x_inside = !(x0 > 0) && !(x1 < 0), near_y_inside = !(y0 > 0) && !(y1 < 0);
+        const double near_s = near_x_inside ? 1 / curvature_ : x0 > 0 ? f.s.hi : f.s.lo;
+        const double near_z = near_y_inside ? 0 : y0 > 0 ? z_in.lo : z_in.hi;
+        const double near_x = near_x_inside ? 0 : x0 > 0 ? x0 : x1, near_y = near_y_inside ? 0 : y0 > 0 ? y0 : y1;
+        const bool far_x0 = std::abs(x0) >= std::abs(x1), far_y0 = std::abs(y0) >= std::abs(y1);
+        const double lowest = undeformed_s(far_x0 ? f.s.hi : f.s.lo, far_y0 ? z_in.lo : z_in.hi,
+                                           far_x0 ? x0 : x1, far_y0 ? y0 : y1);
+        const double highest = undeformed_s(near_s, near_z, near_x, near_y);
+        return from_frame({{lowest, highest}, f.w, unclamped * (1 / curvature_) + centre_});
+    }
+    const Interval theta = {std::clamp(unclamped.lo, angle_lo_, angle_hi_), std::clamp(unclamped.hi, angle_lo_, angle_hi_)};
     const SinCos at_lo = sin_cos(theta.lo), at_hi = sin_cos(theta.hi);
     const auto [sn, c] = sin_cos_range(theta, at_lo, at_hi);
     // θ − sin θ is non-decreasing.

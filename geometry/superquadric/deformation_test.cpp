@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <string>
 
@@ -191,6 +192,54 @@ TEST(SuperquadricDeformation, TheBendsInverseBoxHoldsItsPointsAllAroundTheCentre
                 EXPECT_LE(p[a], preimage[a].hi + 1e-12) << i;
             }
         }
+    }
+}
+
+// A box that turns about the bend's centre within the region has for its inverse box the bounding box of its points'
+// preimages, not more: its nearest and farthest points from the centre and its extreme angles about it bound them
+// (interval rotations by the box's range of angles took up to twice that width).
+TEST(SuperquadricDeformation, TheBendsInverseBoxIsTightWithinTheRegion) {
+    std::mt19937 random(29);
+    std::uniform_real_distribution<double> unit(0, 1), signed_unit(-1, 1);
+    int tested = 0;
+    for (int i = 0; i < 500; ++i) {
+        // Bent along x or along y, so that a box of the bend's frame (s along the bend direction, z) is one of space.
+        const double curvature = 0.3 + 1.2 * unit(random);
+        const bool along_x = i % 2 == 0;
+        const Bend bend(curvature, along_x ? 0 : std::numbers::pi / 2, 0, {-1, 1});
+        const auto point = [&](double s, double z) { return along_x ? Vec3d(s, 0.1, z) : Vec3d(-0.1, s, z); };
+        const auto s_of = [&](const Vec3d& p) { return along_x ? p.x : p.y; };
+        const double s = (0.9 / curvature) * signed_unit(random), z = signed_unit(random);
+        const double size = (i % 4 < 2 ? 0.02 : 0.3) * unit(random) + 1e-3;
+        IntervalBox box = IntervalBox::point(point(s, z));
+        box.extend(point(s + size, z + size));
+        const IntervalBox preimage = bend.inverse_box(box);
+        // The preimages of the box's edges, densely: the extremes lie on them.
+        Interval seen_s{1e300, -1e300}, seen_z{1e300, -1e300};
+        bool in_region = true;
+        for (int k = 0; k <= 400; ++k) {
+            const double f = k / 400.0;
+            for (const Vec3d q : {point(s + f * size, z), point(s + f * size, z + size), point(s, z + f * size),
+                                  point(s + size, z + f * size)}) {
+                const Vec3d p = bend.inverse(q);
+                in_region = in_region && p.z > -1 && p.z < 1;
+                seen_s = hull(seen_s, Interval::point(s_of(p)));
+                seen_z = hull(seen_z, Interval::point(p.z));
+            }
+        }
+        if (!in_region) continue;
+        ++tested;
+        const Interval preimage_s = along_x ? preimage.x : preimage.y;
+        EXPECT_LE(preimage.z.width(), seen_z.width() * 1.001 + 1e-9) << i;
+        EXPECT_LE(preimage_s.width(), seen_s.width() * 1.001 + 1e-9) << i;
+    }
+    EXPECT_GT(tested, 200);
+    // A slight bend's preimage of a box is the box itself, to the last digits: nothing of size 1/k is formed.
+    const IntervalBox box{{-0.8, 0.8}, {-0.5, 0.5}, {-0.9, 0.9}};
+    const IntervalBox preimage = Bend(1e-12, 0, 0, {-1, 1}).inverse_box(box);
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(preimage[a].lo, box[a].lo, 1e-11) << a;
+        EXPECT_NEAR(preimage[a].hi, box[a].hi, 1e-11) << a;
     }
 }
 
