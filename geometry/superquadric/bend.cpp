@@ -139,7 +139,8 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
         const double highest = undeformed_s(near_s, near_z, near_x, near_y);
         return from_frame({{lowest, highest}, f.w, unclamped * (1 / curvature_) + centre_});
     }
-    const Interval theta = {std::clamp(unclamped.lo, angle_lo_, angle_hi_), std::clamp(unclamped.hi, angle_lo_, angle_hi_)};
+    const Interval theta = {std::clamp(unclamped.lo, angle_lo_, angle_hi_),
+                            std::clamp(unclamped.hi, angle_lo_, angle_hi_)};
     const SinCos at_lo = sin_cos(theta.lo), at_hi = sin_cos(theta.hi);
     const auto [sn, c] = sin_cos_range(theta, at_lo, at_hi);
     // θ − sin θ is non-decreasing.
