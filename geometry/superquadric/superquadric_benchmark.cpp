@@ -3,7 +3,7 @@
 // 2/ε, polynomials for fractional ones), then whole queries of the three kinds `isotrace bench` times — a camera ray's
 // nearest crossing, a shadow ray leaving the surface (an occlusion query toward a light above), a bounce ray leaving
 // it (nearest crossing, cosine-distributed) — with the gauge values each took. The rays leave the surface as the
-// bench's do: pushed off along the normal by a thousandth of the shape's size. Twisted and bent star-like shapes go
+// bench's do: pushed off along the normal by a thousandth of the shape's size. Twisted, bent and tapered shapes go
 // through the surface shell (the shell is filled by the warm-up, as a long render fills it).
 // Run: cmake --build build --target superquadric_benchmark && build/bin/superquadric_benchmark
 #include <benchmark/benchmark.h>
@@ -22,12 +22,12 @@ namespace {
 struct Case {
     const char* label;
     double north_south, east_west;
-    double twist_degrees = 0, bend_curvature = 0;
+    double twist_degrees = 0, bend_curvature = 0, taper_rate = 0;
 };
 
-// Undeformed, from the closed form to the fractional exponents; then star-like ones deformed as the benchmark
-// scenes deform them.
-constexpr std::array<Case, 9> kCases{{
+// Undeformed, from the closed form to the fractional exponents; then deformed ones as the benchmark scenes deform
+// them.
+constexpr std::array<Case, 11> kCases{{
     {"ellipsoid e=(1,1)", 1, 1},
     {"box-like e=(0.05,0.05), whole p=40", 0.05, 0.05},
     {"rounded box e=(0.3,0.3), fractional p", 0.3, 0.3},
@@ -37,6 +37,8 @@ constexpr std::array<Case, 9> kCases{{
     {"mixed e=(2.5,1)", 2.5, 1},
     {"star-like e=(2.5,2.5) twisted 90 degrees", 2.5, 2.5, 90, 0},
     {"star-like e=(2.5,2.5) bent, k=0.8", 2.5, 2.5, 0, 0.8},
+    {"rounded box e=(0.3,0.3) tapered -0.6", 0.3, 0.3, 0, 0, -0.6},
+    {"star-like e=(2.5,2.5) tapered -0.6", 2.5, 2.5, 0, 0, -0.6},
 }};
 
 constexpr double kRadius = 0.4;
@@ -44,6 +46,7 @@ constexpr double kRadius = 0.4;
 Superquadric make(const Case& c) {
     const Superellipsoid shape({kRadius, kRadius, kRadius}, c.north_south, c.east_west);
     DeformationChain chain(shape);
+    if (c.taper_rate != 0) chain.append(Taper(c.taper_rate, c.taper_rate, kRadius));
     if (c.twist_degrees != 0) chain.append(Twist(c.twist_degrees * std::numbers::pi / 180 / (2 * kRadius), kRadius));
     if (c.bend_curvature != 0) chain.append(Bend(c.bend_curvature, 0, 0, {-kRadius, kRadius}));
     return Superquadric(shape, std::move(chain), Transform::rotate({0.3, 1, 0.2}, 40));
