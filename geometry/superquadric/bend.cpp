@@ -119,7 +119,7 @@ IntervalBox Bend::inverse_box(const IntervalBox& box) const {
         const Interval spanned{relative_angle(first), relative_angle(last)};
         if (spanned.lo <= spanned.hi && spanned.width() < std::numbers::pi) relative = spanned;
     }
-    const Interval unclamped = Interval{angle_middle_, angle_middle_} + relative;
+    const Interval unclamped = relative + angle_middle_;
     if (unclamped.lo >= angle_lo_ && unclamped.hi <= angle_hi_) {
         // Every point of the box turns about the centre within the region: its preimage is s = (1 − ρ)/k along the
         // bend direction and z = z0 + θ/k, with ρ its distance from the centre (in units of 1/k) and θ its angle. So

@@ -112,10 +112,10 @@ std::shared_ptr<const NormTables> tables_of(const NormExponent& e) {
     if (e.tabulated) {
         for (int half = 0; half < 2; ++half)
             tables->mantissa_power_polynomials[half] = on_half(half, [&](long double m) { return std::pow(m, p); });
-        for (int k = 0; k < NormExponent::kOctaves; ++k) tables->octave_powers[k] = double(std::exp2(-k * p));
+        for (int k = 0; k < NormTables::kOctaves; ++k) tables->octave_powers[k] = double(std::exp2(-k * p));
     }
     if (e.norm_tabulated)
-        for (int k = 1; k <= NormExponent::kNormOctaves; ++k)
+        for (int k = 1; k <= NormTables::kNormOctaves; ++k)
             for (int half = 0; half < 2; ++half)
                 tables->norm_polynomials[2 * (k - 1) + half] = on_half(half, [&](long double m) {
                     return std::pow(1 + std::pow(std::ldexp(m, -k), p), 1 / p);

@@ -44,7 +44,6 @@ struct NormExponent {
     bool norm_tabulated = false;  // the tables hold the norm's own polynomials
     double (*whole_power)(double) = nullptr;  // x^p by repeated squaring, for whole p
     static constexpr double kMostTabulated = 16, kMostNormTabulated = 8;
-    static constexpr int kOctaves = NormTables::kOctaves, kNormOctaves = NormTables::kNormOctaves;
     bool tabulated = false;  // the tables hold the powers' polynomials and octaves
     // Null where p needs none (p = 1, 2, 4).
     std::shared_ptr<const NormTables> tables{};
