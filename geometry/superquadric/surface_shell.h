@@ -12,16 +12,25 @@
 // grids no ray walks. Threads that meet an unknown block at once both find it, with the same answer; the first to
 // publish it (compare-and-swap) wins, the others free theirs. Blocks without surface cells share one empty block.
 //
+// A shell cell whose own bounds are unknown — g's gradient is unbounded in it, as the gauge's is for p < 1 on the
+// coordinate planes the cell's preimage touches, the creases of a star-like shape — is split into eighths, each with
+// its own bounds or sign: most eighths lie away from the crease, and a ray's stretch through them is settled by their
+// bounds where the whole cell would have taken a walk through the deformations. A ray's runs then hold the stretches
+// through the eighths, not through the whole cell.
+//
 // The cells without surface keep g's sign too (one bit each): the walk hands the search a run of shell cells at a
 // time with the sign on either side of it, so that an occlusion query settles a run that leads from outside to inside
 // (a ray through another object) with no value of g at all.
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <utility>
+#include <vector>
 
 #include "geometry/superquadric/shell_cell_bounds.h"
 #include "renderer/math/interval.h"
@@ -64,9 +73,17 @@ private:
             return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
         }
     };
-    // What is known of g over a block's 64 cells, where they can hold the surface.
+    // A split cell's eighths (eighth_box): what is known of g over those that can hold the surface, and g's sign over
+    // the others.
+    struct Eighths {
+        std::uint8_t cells = 0, inside = 0;  // first: read with the first entries, in one cache line
+        std::array<CellEntry, 8> entries{};
+    };
+    // What is known of g over a block's 64 cells, where they can hold the surface, and the eighths of its split cells
+    // (in the order of their bits).
     struct Block {
         std::array<CellEntry, kBlock * kBlock * kBlock> entries{};
+        std::vector<Eighths> eighths;
     };
     // A block, once found, and which of its cells can hold the surface (the bits of one word). The words lie side
     // by side with the pointers, so that the walk reads them without touching the blocks, which lie apart on the
@@ -75,26 +92,32 @@ private:
         std::atomic<const Block*> block{nullptr};
         std::atomic<std::uint64_t> cells{0};   // stored before `block` is published
         std::atomic<std::uint64_t> inside{0};  // the cells without surface where g < 0; stored before `block` too
+        std::atomic<std::uint64_t> split{0};   // the surface cells split into eighths; stored before `block` too
     };
     struct FoundBlock {
         const Block* block;
-        std::uint64_t cells, inside;
+        std::uint64_t cells, inside, split;
     };
     struct CellIndex {
         int i, j, l;
     };
+    static constexpr int kWholeCell = -1;  // a stretch through a cell, not one of its eighths
 
 public:
+    // The most cells of a block that are split (the first in the order of their bits), for a bound on the heap: the
+    // star-like shapes' blocks hold up to a few dozen cells without bounds.
+    static constexpr int kMostSplitPerBlock = 32;
     // The most a shell takes on the heap, once rays have found every block.
-    static constexpr std::size_t kMostHeapBytes = std::size_t(kBlocks) * sizeof(Block);
+    static constexpr std::size_t kMostHeapBytes =
+        std::size_t(kBlocks) * (sizeof(Block) + kMostSplitPerBlock * sizeof(Eighths));
 
     // g's sign next to a run, where a cell without surface lies there: such a cell's g keeps one sign, which holds
     // at the run's padded end (inside that cell, or inside the cells without surface that follow it, which share
     // its sign: neighbours across a face cannot keep opposite signs).
     enum class Side : std::uint8_t { Unknown, Outside, Inside };
 
-    // A run of shell cells along a line: its cells' stretches, end to end, from lo() to hi(), and g's sign before
-    // and after it.
+    // A run of shell cells along a line: its cells' stretches (or, through a split cell, its eighths'), end to end,
+    // from lo() to hi(), and g's sign before and after it.
     class Run {
     public:
         Side before = Side::Unknown, after = Side::Unknown;
@@ -102,21 +125,25 @@ public:
         std::size_t size() const { return count_; }
         double lo() const { return lo_; }
         double hi() const { return ends_[count_ - 1]; }
-        // Cell k's stretch and what is known of g over it.
+        // Stretch k and what is known of g over its cell or eighth.
         double start(std::size_t k) const { return k == 0 ? lo_ : ends_[k - 1]; }
         double end(std::size_t k) const { return ends_[k]; }
-        ShellCellBounds bounds(std::size_t k) const { return entries_[k]->bounds(shell_->centre(cells_[k])); }
+        ShellCellBounds bounds(std::size_t k) const {
+            return entries_[k]->bounds(shell_->centre(cells_[k], eighths_[k]));
+        }
 
     private:
         friend class SurfaceShell;
-        static constexpr std::size_t kMostCells = 3 * kCellsPerAxis + 1;  // a line crosses at most 3·n cells
+        // A line crosses at most 3·n cells, and 3·2n eighths.
+        static constexpr std::size_t kMostStretches = 6 * kCellsPerAxis + 1;
 
         const SurfaceShell* shell_ = nullptr;
         double lo_ = 0;
         std::size_t count_ = 0;
-        double ends_[kMostCells];
-        const CellEntry* entries_[kMostCells];
-        CellIndex cells_[kMostCells];
+        double ends_[kMostStretches];
+        const CellEntry* entries_[kMostStretches];
+        CellIndex cells_[kMostStretches];
+        std::int8_t eighths_[kMostStretches];  // kWholeCell, or the stretch's eighth of its cell
     };
 
     SurfaceShell() = default;
@@ -133,6 +160,7 @@ public:
             const Block* block = other.slots_[b].block.load(std::memory_order_acquire);
             slots_[b].cells.store(other.slots_[b].cells.load(std::memory_order_relaxed), std::memory_order_relaxed);
             slots_[b].inside.store(other.slots_[b].inside.load(std::memory_order_relaxed), std::memory_order_relaxed);
+            slots_[b].split.store(other.slots_[b].split.load(std::memory_order_relaxed), std::memory_order_relaxed);
             slots_[b].block.store(block && block != empty_block() ? new Block(*block) : block, std::memory_order_relaxed);
         }
         return *this;
@@ -186,41 +214,74 @@ public:
         }
         double enter = t0;
         bool in_run = false;
+        // A stretch [lo, hi] of a surface cell or eighth joins the run, opening one after a gap (joined to the last
+        // run if the two touch once padded: the gap goes to this stretch); one of a cell or eighth without surface,
+        // where g has the sign `side`, ends the run.
+        const auto surface_stretch = [&](double lo, double hi, const CellEntry* entry, CellIndex cell, int eighth) {
+            if (!in_run) {
+                const double a = std::max(t0, lo - pad);
+                if (run.count_ > 0 && a > gap_from && !hand_over(gap, gap_from)) return false;
+                if (run.count_ == 0) run.lo_ = a, run.before = gap;
+            }
+            run.ends_[run.count_] = std::max(lo, hi);
+            run.entries_[run.count_] = entry;
+            run.cells_[run.count_] = cell;
+            run.eighths_[run.count_] = std::int8_t(eighth);
+            ++run.count_;
+            in_run = true;
+            return true;
+        };
+        const auto gap_stretch = [&](double hi, Side side) {
+            gap = side;
+            if (in_run) gap_from = std::min(t1, run.ends_[run.count_ - 1] + pad);
+            in_run = false;
+            // Once the gap is longer than both pads no later run can join the last one: it is handed over here,
+            // not when the next run opens, so that a search that ends in it does not walk the gap first.
+            return !(run.count_ > 0 && hi - pad > gap_from) || hand_over(gap, gap_from);
+        };
         for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
             const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
             // The block's words are read at every step: they lie side by side in the slots, and a branch on whether
             // the walk entered another block (every few steps, in no pattern) cost more than the loads.
             const FoundBlock block = find_block(block_of(cell), cell, range, cell_bounds);
             const int at = bit(cell);
-            const bool surface = (block.cells >> at) & 1;
             const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
             // across[axis], the least (whichever axis a tie went to).
             const double leave = std::min({across[0], across[1], across[2], t1});
-            if (surface) {
-                double a = enter;
-                if (!in_run) {  // a run opens: joined to the last one if the two touch once padded
-                    a = std::max(t0, a - pad);
-                    if (run.count_ > 0) {
-                        if (a <= gap_from) {
-                            a = run.ends_[run.count_ - 1];
-                        } else if (!hand_over(gap, gap_from)) {
-                            return false;
-                        }
-                    }
-                    if (run.count_ == 0) run.lo_ = a, run.before = gap;
-                }
-                run.ends_[run.count_] = std::max(enter, leave);
-                run.entries_[run.count_] = &block.block->entries[at];
-                run.cells_[run.count_] = cell;
-                ++run.count_;
+            if (!((block.cells >> at) & 1)) {
+                if (!gap_stretch(leave, (block.inside >> at) & 1 ? Side::Inside : Side::Outside)) return false;
+            } else if (!((block.split >> at) & 1)) {
+                if (!surface_stretch(enter, leave, &block.block->entries[at], cell, kWholeCell)) return false;
             } else {
-                gap = (block.inside >> at) & 1 ? Side::Inside : Side::Outside;
-                if (in_run) gap_from = std::min(t1, run.ends_[run.count_ - 1] + pad);
-                // Once the gap is longer than both pads no later run can join the last one: it is handed over here,
-                // not when the next run opens, so that a search that ends in it does not walk the gap first.
-                if (run.count_ > 0 && leave - pad > gap_from && !hand_over(gap, gap_from)) return false;
+                // Through the eighths: cut where the line crosses the cell's middle planes, half a cell's width in t
+                // before it leaves across each; each piece's eighth is that of its middle.
+                const Eighths& eighths =
+                    block.block->eighths[std::popcount(block.split & ((std::uint64_t(1) << at) - 1))];
+                double cuts[4];
+                int count = 0;
+                for (int k = 0; k < 3; ++k) {
+                    const double middle = across[k] - 0.5 * width[k];
+                    if (!(middle > enter && middle < leave)) continue;
+                    int i = count++;
+                    for (; i > 0 && cuts[i - 1] > middle; --i) cuts[i] = cuts[i - 1];
+                    cuts[i] = middle;
+                }
+                cuts[count++] = leave;
+                const IntervalBox box = this->cell(cell);
+                double lo = enter;
+                for (int c = 0; c < count; ++c) {
+                    const double middle = 0.5 * (lo + cuts[c]);
+                    int eighth = 0;
+                    for (int k = 0; k < 3; ++k)
+                        eighth |= int(from[k] + along[k] * middle >= 0.5 * (box[k].lo + box[k].hi)) << (2 - k);
+                    const bool more =
+                        (eighths.cells >> eighth) & 1
+                            ? surface_stretch(lo, cuts[c], &eighths.entries[eighth], cell, eighth)
+                            : gap_stretch(cuts[c], (eighths.inside >> eighth) & 1 ? Side::Inside : Side::Outside);
+                    if (!more) return false;
+                    lo = std::max(lo, cuts[c]);
+                }
             }
-            in_run = surface;
             bool off_grid = false;
             for (int k = 0; k < 3; ++k) {
                 const bool moves = k == axis;
@@ -250,8 +311,17 @@ public:
         const CellIndex cell{at_cell[0], at_cell[1], at_cell[2]};
         const FoundBlock block = find_block(block_of(cell), cell, range, cell_bounds);
         const int at = bit(cell);
-        if ((block.cells >> at) & 1) return Side::Unknown;
-        return (block.inside >> at) & 1 ? Side::Inside : Side::Outside;
+        if (!((block.cells >> at) & 1)) return (block.inside >> at) & 1 ? Side::Inside : Side::Outside;
+        if (!((block.split >> at) & 1)) return Side::Unknown;
+        int eighth = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double half = (point[k] - box_[k].lo) / cell_size_[k] - at_cell[k];
+            if (std::abs(half - 0.5) < 1e-6) return Side::Unknown;
+            eighth |= int(half >= 0.5) << (2 - k);
+        }
+        const Eighths& eighths = block.block->eighths[std::popcount(block.split & ((std::uint64_t(1) << at) - 1))];
+        if ((eighths.cells >> eighth) & 1) return Side::Unknown;
+        return (eighths.inside >> eighth) & 1 ? Side::Inside : Side::Outside;
     }
 
 private:
@@ -278,7 +348,8 @@ private:
     FoundBlock find_block(int index, CellIndex c, const Range& range, const CellBounds& cell_bounds) const {
         const Slot& slot = slots_[index];
         if (const Block* known = slot.block.load(std::memory_order_acquire))
-            return {known, slot.cells.load(std::memory_order_relaxed), slot.inside.load(std::memory_order_relaxed)};
+            return {known, slot.cells.load(std::memory_order_relaxed), slot.inside.load(std::memory_order_relaxed),
+                    slot.split.load(std::memory_order_relaxed)};
         return make_block(index, c, range, cell_bounds);
     }
     template <class Range, class CellBounds>
@@ -293,7 +364,7 @@ private:
         };
         const auto can_hold_surface = [](const Interval& g) { return !(g.lo > 0 || g.hi < 0); };
         const Block* found = empty_block();
-        std::uint64_t cells = 0, inside = 0;
+        std::uint64_t cells = 0, inside = 0, split = 0;
         if (const Interval whole = range_over(first, kBlock); !can_hold_surface(whole)) {
             inside = whole.hi < 0 ? ~std::uint64_t(0) : 0;
         } else {
@@ -306,9 +377,8 @@ private:
                             inside |= std::uint64_t(g.hi < 0) << bit(at);
                             continue;
                         }
-                        IntervalBox around = cell(at);  // enlarged by far more than a run's padding
-                        for (int k = 0; k < 3; ++k) around[k] = {around[k].lo - 1e-6 * cell_size_[k], around[k].hi + 1e-6 * cell_size_[k]};
-                        const ShellCellBounds bounds = cell_bounds(around, centre(at));
+                        const IntervalBox around = enlarged(cell(at));
+                        const ShellCellBounds bounds = cell_bounds(around, centre(at, kWholeCell));
                         // The cell's own bounds (its centre's value, its gradient's bounds) are far tighter than
                         // `range` where a twist or a bend turns the cell: they clear many cells it could not.
                         if (bounds.known) {
@@ -319,6 +389,11 @@ private:
                         }
                         cells |= std::uint64_t(1) << bit(at);
                         block->entries[bit(at)] = CellEntry::of(bounds);
+                        if (bounds.known || block->eighths.size() == kMostSplitPerBlock) continue;
+                        if (const std::optional<Eighths> eighths = eighths_of(at, range, cell_bounds)) {
+                            split |= std::uint64_t(1) << bit(at);
+                            block->eighths.push_back(*eighths);
+                        }
                     }
             if (cells != 0) found = block;
             else delete block;
@@ -326,10 +401,40 @@ private:
         // A thread that loses the race stores the same words.
         slot.cells.store(cells, std::memory_order_relaxed);
         slot.inside.store(inside, std::memory_order_relaxed);
+        slot.split.store(split, std::memory_order_relaxed);
         const Block* expected = nullptr;
-        if (slot.block.compare_exchange_strong(expected, found, std::memory_order_acq_rel)) return {found, cells, inside};
+        if (slot.block.compare_exchange_strong(expected, found, std::memory_order_acq_rel))
+            return {found, cells, inside, split};
         if (found != empty_block()) delete found;
-        return {expected, cells, inside};
+        return {expected, cells, inside, split};
+    }
+
+    // What is known over a surface cell's eighths, where that settles some of them (their own bounds, or a sign),
+    // found as make_block finds a cell's.
+    template <class Range, class CellBounds>
+    std::optional<Eighths> eighths_of(CellIndex at, const Range& range, const CellBounds& cell_bounds) const {
+        Eighths eighths;
+        bool settles = false;
+        for (int eighth = 0; eighth < 8; ++eighth) {
+            const IntervalBox around = enlarged(eighth_box(at, eighth));
+            if (const Interval g = range(around); g.lo > 0 || g.hi < 0) {
+                eighths.inside |= std::uint8_t(int(g.hi < 0) << eighth);
+                settles = true;
+                continue;
+            }
+            const ShellCellBounds bounds = cell_bounds(around, centre(at, eighth));
+            if (bounds.known) {
+                settles = true;
+                if (const Interval g = bounds.range(around); g.lo > 0 || g.hi < 0) {
+                    eighths.inside |= std::uint8_t(int(g.hi < 0) << eighth);
+                    continue;
+                }
+            }
+            eighths.cells |= std::uint8_t(1 << eighth);
+            eighths.entries[eighth] = CellEntry::of(bounds);
+        }
+        if (!settles) return std::nullopt;
+        return eighths;
     }
 
     IntervalBox cell(CellIndex c) const {
@@ -339,8 +444,23 @@ private:
         return {side(0, c.i), side(1, c.j), side(2, c.l)};
     }
 
-    Vec3d centre(CellIndex c) const {
-        const IntervalBox box = cell(c);
+    // A cell's eighth: the halves of its sides below or above their middles, as the bits 4, 2 and 1 of `eighth`
+    // say for x, y and z.
+    IntervalBox eighth_box(CellIndex c, int eighth) const {
+        IntervalBox box = cell(c);
+        for (int k = 0; k < 3; ++k) {
+            const double middle = 0.5 * (box[k].lo + box[k].hi);
+            box[k] = (eighth >> (2 - k)) & 1 ? Interval{middle, box[k].hi} : Interval{box[k].lo, middle};
+        }
+        return box;
+    }
+    // A box enlarged by far more than a run's padding, for the bounds of the cell or eighth it is.
+    IntervalBox enlarged(IntervalBox box) const {
+        for (int k = 0; k < 3; ++k) box[k] = {box[k].lo - 1e-6 * cell_size_[k], box[k].hi + 1e-6 * cell_size_[k]};
+        return box;
+    }
+    Vec3d centre(CellIndex c, int eighth) const {
+        const IntervalBox box = eighth == kWholeCell ? cell(c) : eighth_box(c, eighth);
         return (box.lower() + box.upper()) * 0.5;
     }
 

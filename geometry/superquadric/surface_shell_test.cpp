@@ -3,7 +3,8 @@
 // the runs are ordered, disjoint and inside the line's stretch, a run's cells meet end to end and their bounds hold
 // the field and its slope along the line, the sign a run is told for either side is the field's there, lines
 // through the box's empty corners have none, a visit that returns false stops the walk, a copy keeps what was
-// found, and a point's cell tells the field's sign there where it holds no surface.
+// found, and a point's cell tells the field's sign there where it holds no surface. A star-like field, whose gradient is
+// unbounded on the coordinate planes, has its cells there split into eighths with bounds of their own.
 #include "geometry/superquadric/surface_shell.h"
 
 #include <gtest/gtest.h>
@@ -311,6 +312,142 @@ TEST(SurfaceShell, ACellsOwnBoundsClearItWhereTheRangeCannot) {
               Side::Unknown);
     EXPECT_TRUE(runs_of(shell, {-2, 0.8, 0.1}, {1, 0, 0}, nullptr, clears_nothing).empty());
     EXPECT_GT(crossings_in_runs(shell, 17, 1000, clears_nothing), 500);
+}
+
+// (√|x| + √|y| + √|z|)² − r: star-like, with creases on the coordinate planes, where its gradient is unbounded; so
+// the shell cells that touch them keep no bounds of their own and are split into eighths. Its range over a box: the
+// nearest and the farthest |xᵢ| on each axis.
+constexpr double kStar = 0.6;
+
+double star_field(const Vec3d& p) {
+    const double s = std::sqrt(std::abs(p.x)) + std::sqrt(std::abs(p.y)) + std::sqrt(std::abs(p.z));
+    return s * s - kStar;
+}
+
+Interval star_roots(const Interval& side) {
+    const double nearest = side.lo > 0 ? side.lo : side.hi < 0 ? -side.hi : 0;
+    return {std::sqrt(nearest), std::sqrt(std::max(std::abs(side.lo), std::abs(side.hi)))};
+}
+
+Interval star_range(const IntervalBox& box) {
+    const Interval sum = star_roots(box.x) + star_roots(box.y) + star_roots(box.z);
+    return {sum.lo * sum.lo - kStar, sum.hi * sum.hi - kStar};
+}
+
+// ∂/∂xᵢ = sign(xᵢ)·S/√|xᵢ| with S = Σ√|xⱼ|: bounded only over boxes that keep off the planes.
+ShellCellBounds star_bounds(const IntervalBox& box, const Vec3d& centre) {
+    ShellCellBounds bounds;
+    const Interval sum = star_roots(box.x) + star_roots(box.y) + star_roots(box.z);
+    for (int k = 0; k < 3; ++k) {
+        if (!(box[k].lo > 0 || box[k].hi < 0)) return bounds;
+        const Interval root = star_roots(box[k]), slope{sum.lo / root.hi, sum.hi / root.lo};
+        bounds.gradient[k] = box[k].lo > 0 ? slope : Interval{-slope.hi, -slope.lo};
+    }
+    bounds.centre = centre, bounds.value = star_field(centre), bounds.known = true;
+    return bounds;
+}
+
+double star_slope(const Vec3d& p, const Vec3d& d) {
+    const double s = std::sqrt(std::abs(p.x)) + std::sqrt(std::abs(p.y)) + std::sqrt(std::abs(p.z));
+    double slope = 0;
+    for (int k = 0; k < 3; ++k) slope += std::copysign(s / std::sqrt(std::abs(p[k])), p[k]) * d[k];
+    return slope;
+}
+
+// Whether the cell of the grid that holds p (away from its faces) keeps no bounds of its own though it can hold
+// the surface: a cell the shell splits.
+bool in_cell_without_bounds(const Vec3d& p) {
+    constexpr int n = SurfaceShell::kCellsPerAxis;
+    const double size = 2.0 / n;
+    IntervalBox cell;
+    for (int k = 0; k < 3; ++k) {
+        const double at = std::floor((p[k] + 1) / size);
+        cell[k] = {-1 + at * size, -1 + (at + 1) * size};
+    }
+    const Interval g = star_range(cell);
+    return g.lo <= 0 && g.hi >= 0 && !star_bounds(cell, (cell.lower() + cell.upper()) * 0.5).known;
+}
+
+// Lines from around the box: every sign change of the field (sampled finely) lies in a run, the bounds of each
+// stretch that has them hold the field and its slope along it, and many such stretches are eighths of cells without
+// bounds (their centres a quarter of a cell from the grid's cell centres).
+TEST(SurfaceShell, CellsWithoutBoundsAreSplitIntoEighthsWithBoundsOfTheirOwn) {
+    const SurfaceShell shell(kBox);
+    std::mt19937 random(21);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1);
+    const double cell = 2.0 / SurfaceShell::kCellsPerAxis;
+    int sign_changes = 0, eighths_known = 0;
+    for (int i = 0; i < 600; ++i) {
+        const Vec3d o = normalize(Vec3d{unit(random), unit(random), unit(random)}) * 3.0;
+        const Vec3d d = Vec3d{unit(random), unit(random), unit(random)} * 0.4 - o;
+        const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
+        if (!clip) continue;
+        std::vector<RunStretch> runs;
+        shell.visit_runs(o, d, clip->t_enter, clip->t_exit, star_range, star_bounds, [&](const SurfaceShell::Run& run) {
+            for (std::size_t c = 0; c < run.size(); ++c) {
+                if (c > 0) { EXPECT_EQ(run.start(c), run.end(c - 1)); }
+                const ShellCellBounds bounds = run.bounds(c);
+                if (!bounds.known) continue;
+                const double quarter = std::abs(std::fmod(bounds.centre.x + 1, cell) / cell - 0.5);
+                eighths_known += std::abs(quarter - 0.25) < 1e-9;
+                const double a = run.start(c), b = run.end(c);
+                const Interval range = bounds.range(o + d * a, o + d * b), slope = bounds.slope(d);
+                for (int k = 0; k <= 8; ++k) {
+                    const Vec3d p = o + d * (a + (b - a) * (k < 8 ? fraction(random) : 1.0));
+                    EXPECT_TRUE(range.contains(star_field(p))) << "line " << i;
+                    EXPECT_TRUE(slope.contains(star_slope(p, d))) << "line " << i;
+                }
+            }
+            runs.push_back({run.lo(), run.hi()});
+            return true;
+        });
+        constexpr int kSamples = 4000;
+        const double t0 = clip->t_enter, t1 = clip->t_exit;
+        double previous = star_field(o + d * t0);
+        for (int k = 1; k <= kSamples; ++k) {
+            const double t = t0 + (t1 - t0) * k / kSamples, g = star_field(o + d * t);
+            if ((g < 0) != (previous < 0)) {
+                ++sign_changes;
+                const double before = t0 + (t1 - t0) * (k - 1) / kSamples;
+                bool covered = false;
+                for (const RunStretch& r : runs) covered = covered || (r.lo <= t && r.hi >= before);
+                EXPECT_TRUE(covered) << "line " << i << " sign change in [" << before << ", " << t << "]";
+            }
+            previous = g;
+        }
+    }
+    EXPECT_GT(sign_changes, 500);
+    EXPECT_GT(eighths_known, 100);
+}
+
+// Where a line leaves or enters a run beside an eighth without surface, the sign the run is told is the field's; and
+// a point in a split cell's eighth without surface is told its sign.
+TEST(SurfaceShell, AnEighthWithoutSurfaceTellsItsSign) {
+    const SurfaceShell shell(kBox);
+    std::mt19937 random(23);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int told = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3d o{unit(random) * 0.9, unit(random) * 0.9, unit(random) * 0.9}, d{unit(random), unit(random), unit(random)};
+        const auto clip = clip_line_to_box(kBox.lower(), kBox.upper(), o, d, 0, 100);
+        if (!clip) continue;
+        shell.visit_runs(o, d, clip->t_enter, clip->t_exit, star_range, star_bounds, [&](const SurfaceShell::Run& run) {
+            for (const auto& [side, t] : {std::pair{run.before, run.lo()}, std::pair{run.after, run.hi()}}) {
+                if (side == SurfaceShell::Side::Unknown) continue;
+                const double g = star_field(o + d * t);
+                EXPECT_EQ(side == SurfaceShell::Side::Inside, g < 0) << "line " << i << " at " << t;
+            }
+            return true;
+        });
+    }
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3d p{unit(random) * 0.7, unit(random) * 0.7, unit(random) * 0.7};
+        const SurfaceShell::Side side = shell.side_at(p, star_range, star_bounds);
+        if (side == SurfaceShell::Side::Unknown) continue;
+        EXPECT_EQ(side == SurfaceShell::Side::Inside, star_field(p) < 0) << p.x << " " << p.y << " " << p.z;
+        told += in_cell_without_bounds(p);
+    }
+    EXPECT_GT(told, 50);
 }
 
 }  // namespace
