@@ -255,8 +255,7 @@ public:
             } else {
                 // Through the eighths: cut where the line crosses the cell's middle planes, half a cell's width in t
                 // before it leaves across each; each piece's eighth is that of its middle.
-                const Eighths& eighths =
-                    block.block->eighths[std::popcount(block.split & ((std::uint64_t(1) << at) - 1))];
+                const Eighths& eighths = split_eighths(block, at);
                 double cuts[4];
                 int count = 0;
                 for (int k = 0; k < 3; ++k) {
@@ -319,7 +318,7 @@ public:
             if (std::abs(half - 0.5) < 1e-6) return Side::Unknown;
             eighth |= int(half >= 0.5) << (2 - k);
         }
-        const Eighths& eighths = block.block->eighths[std::popcount(block.split & ((std::uint64_t(1) << at) - 1))];
+        const Eighths& eighths = split_eighths(block, at);
         if ((eighths.cells >> eighth) & 1) return Side::Unknown;
         return (eighths.inside >> eighth) & 1 ? Side::Inside : Side::Outside;
     }
@@ -342,6 +341,11 @@ private:
         return int(((i / kBlock) * kBlocksPerAxis + j / kBlock) * kBlocksPerAxis + l / kBlock);
     }
 
+    // The eighths of a split cell of a found block, kept in the order of the cells' bits.
+    static const Eighths& split_eighths(const FoundBlock& block, int at) {
+        return block.block->eighths[std::popcount(block.split & ((std::uint64_t(1) << at) - 1))];
+    }
+
     // The block with index `index`, which holds cell c: once known, read inline; found out of line when first asked
     // for (the walk asks at every step, and nearly always the block is known).
     template <class Range, class CellBounds>
@@ -362,7 +366,6 @@ private:
             const IntervalBox lower = cell(from), upper = cell({from.i + cells - 1, from.j + cells - 1, from.l + cells - 1});
             return range(IntervalBox{{lower.x.lo, upper.x.hi}, {lower.y.lo, upper.y.hi}, {lower.z.lo, upper.z.hi}});
         };
-        const auto can_hold_surface = [](const Interval& g) { return !(g.lo > 0 || g.hi < 0); };
         const Block* found = empty_block();
         std::uint64_t cells = 0, inside = 0, split = 0;
         if (const Interval whole = range_over(first, kBlock); !can_hold_surface(whole)) {
@@ -377,20 +380,17 @@ private:
                             inside |= std::uint64_t(g.hi < 0) << bit(at);
                             continue;
                         }
-                        const IntervalBox around = enlarged(cell(at));
-                        const ShellCellBounds bounds = cell_bounds(around, centre(at, kWholeCell));
                         // The cell's own bounds (its centre's value, its gradient's bounds) are far tighter than
                         // `range` where a twist or a bend turns the cell: they clear many cells it could not.
-                        if (bounds.known) {
-                            if (const Interval g = bounds.range(around); !can_hold_surface(g)) {
-                                inside |= std::uint64_t(g.hi < 0) << bit(at);
-                                continue;
-                            }
+                        const OwnBounds own = own_bounds(enlarged(cell(at)), centre(at, kWholeCell), cell_bounds);
+                        if (own.clears) {
+                            inside |= std::uint64_t(own.inside) << bit(at);
+                            continue;
                         }
                         cells |= std::uint64_t(1) << bit(at);
-                        block->entries[bit(at)] = CellEntry::of(bounds);
-                        if (bounds.known || block->eighths.size() == kMostSplitPerBlock) continue;
-                        if (const std::optional<Eighths> eighths = eighths_of(at, range, cell_bounds)) {
+                        block->entries[bit(at)] = CellEntry::of(own.bounds);
+                        if (own.bounds.known || block->eighths.size() == kMostSplitPerBlock) continue;
+                        if (const std::optional<Eighths> eighths = find_eighths(at, range, cell_bounds)) {
                             split |= std::uint64_t(1) << bit(at);
                             block->eighths.push_back(*eighths);
                         }
@@ -412,26 +412,24 @@ private:
     // What is known over a surface cell's eighths, where that settles some of them (their own bounds, or a sign),
     // found as make_block finds a cell's.
     template <class Range, class CellBounds>
-    std::optional<Eighths> eighths_of(CellIndex at, const Range& range, const CellBounds& cell_bounds) const {
+    std::optional<Eighths> find_eighths(CellIndex at, const Range& range, const CellBounds& cell_bounds) const {
         Eighths eighths;
         bool settles = false;
         for (int eighth = 0; eighth < 8; ++eighth) {
             const IntervalBox around = enlarged(eighth_box(at, eighth));
-            if (const Interval g = range(around); g.lo > 0 || g.hi < 0) {
+            if (const Interval g = range(around); !can_hold_surface(g)) {
                 eighths.inside |= std::uint8_t(int(g.hi < 0) << eighth);
                 settles = true;
                 continue;
             }
-            const ShellCellBounds bounds = cell_bounds(around, centre(at, eighth));
-            if (bounds.known) {
-                settles = true;
-                if (const Interval g = bounds.range(around); g.lo > 0 || g.hi < 0) {
-                    eighths.inside |= std::uint8_t(int(g.hi < 0) << eighth);
-                    continue;
-                }
+            const OwnBounds own = own_bounds(around, centre(at, eighth), cell_bounds);
+            settles = settles || own.bounds.known;
+            if (own.clears) {
+                eighths.inside |= std::uint8_t(int(own.inside) << eighth);
+                continue;
             }
             eighths.cells |= std::uint8_t(1 << eighth);
-            eighths.entries[eighth] = CellEntry::of(bounds);
+            eighths.entries[eighth] = CellEntry::of(own.bounds);
         }
         if (!settles) return std::nullopt;
         return eighths;
@@ -442,6 +440,23 @@ private:
             return Interval{box_[k].lo + at * cell_size_[k], at + 1 == kCellsPerAxis ? box_[k].hi : box_[k].lo + (at + 1) * cell_size_[k]};
         };
         return {side(0, c.i), side(1, c.j), side(2, c.l)};
+    }
+
+    static bool can_hold_surface(const Interval& g) { return !(g.lo > 0 || g.hi < 0); }
+
+    // A cell's or an eighth's own bounds over `around` (it, enlarged), and whether they clear it of the surface after
+    // all, with g's sign there.
+    struct OwnBounds {
+        ShellCellBounds bounds;
+        bool clears = false, inside = false;
+    };
+    template <class CellBounds>
+    static OwnBounds own_bounds(const IntervalBox& around, const Vec3d& centre, const CellBounds& cell_bounds) {
+        OwnBounds own{cell_bounds(around, centre)};
+        if (!own.bounds.known) return own;
+        const Interval g = own.bounds.range(around);
+        own.clears = !can_hold_surface(g), own.inside = g.hi < 0;
+        return own;
     }
 
     // A cell's eighth: the halves of its sides below or above their middles, as the bits 4, 2 and 1 of `eighth`

@@ -319,8 +319,10 @@ TEST(SurfaceShell, ACellsOwnBoundsClearItWhereTheRangeCannot) {
 // nearest and the farthest |xᵢ| on each axis.
 constexpr double kStar = 0.6;
 
+double star_sum(const Vec3d& p) { return std::sqrt(std::abs(p.x)) + std::sqrt(std::abs(p.y)) + std::sqrt(std::abs(p.z)); }
+
 double star_field(const Vec3d& p) {
-    const double s = std::sqrt(std::abs(p.x)) + std::sqrt(std::abs(p.y)) + std::sqrt(std::abs(p.z));
+    const double s = star_sum(p);
     return s * s - kStar;
 }
 
@@ -329,15 +331,17 @@ Interval star_roots(const Interval& side) {
     return {std::sqrt(nearest), std::sqrt(std::max(std::abs(side.lo), std::abs(side.hi)))};
 }
 
+Interval star_sum(const IntervalBox& box) { return star_roots(box.x) + star_roots(box.y) + star_roots(box.z); }
+
 Interval star_range(const IntervalBox& box) {
-    const Interval sum = star_roots(box.x) + star_roots(box.y) + star_roots(box.z);
+    const Interval sum = star_sum(box);
     return {sum.lo * sum.lo - kStar, sum.hi * sum.hi - kStar};
 }
 
 // ∂/∂xᵢ = sign(xᵢ)·S/√|xᵢ| with S = Σ√|xⱼ|: bounded only over boxes that keep off the planes.
 ShellCellBounds star_bounds(const IntervalBox& box, const Vec3d& centre) {
     ShellCellBounds bounds;
-    const Interval sum = star_roots(box.x) + star_roots(box.y) + star_roots(box.z);
+    const Interval sum = star_sum(box);
     for (int k = 0; k < 3; ++k) {
         if (!(box[k].lo > 0 || box[k].hi < 0)) return bounds;
         const Interval root = star_roots(box[k]), slope{sum.lo / root.hi, sum.hi / root.lo};
@@ -348,7 +352,7 @@ ShellCellBounds star_bounds(const IntervalBox& box, const Vec3d& centre) {
 }
 
 double star_slope(const Vec3d& p, const Vec3d& d) {
-    const double s = std::sqrt(std::abs(p.x)) + std::sqrt(std::abs(p.y)) + std::sqrt(std::abs(p.z));
+    const double s = star_sum(p);
     double slope = 0;
     for (int k = 0; k < 3; ++k) slope += std::copysign(s / std::sqrt(std::abs(p[k])), p[k]) * d[k];
     return slope;
