@@ -225,6 +225,9 @@ public:
             }
             run.ends_[run.count_] = std::max(lo, hi);
             run.entries_[run.count_] = entry;
+            // The search reads the entry once the run is handed over, steps later: fetched now, its cache miss (the
+            // blocks of a scene's shells outgrow a core's cache) overlaps the walk instead of stalling the search.
+            __builtin_prefetch(entry);
             run.cells_[run.count_] = cell;
             run.eighths_[run.count_] = std::int8_t(eighth);
             ++run.count_;
@@ -239,17 +242,57 @@ public:
             // not when the next run opens, so that a search that ends in it does not walk the gap first.
             return !(run.count_ > 0 && hi - pad > gap_from) || hand_over(gap, gap_from);
         };
-        for (int step = 0; step <= 3 * kCellsPerAxis; ++step) {  // a line crosses at most 3·n cells
+        // The axis across which the line leaves the current cell (whichever a tie went to), and where: across[axis].
+        const auto next_axis = [&] {
+            return across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
+        };
+        const auto leaving = [&] { return std::min({across[0], across[1], across[2], t1}); };
+        int step = 0;  // a line crosses at most 3·n cells
+        // Into the next cell across `axis`, which the line reaches at `leave`: false where the line ends or leaves
+        // the grid there.
+        const auto step_across = [&](int axis, double leave) {
+            bool off_grid = false;
+            for (int k = 0; k < 3; ++k) {
+                const bool moves = k == axis;
+                cell_of[k] += moves ? (along[k] > 0 ? 1 : -1) : 0;
+                off_grid |= unsigned(cell_of[k]) >= unsigned(kCellsPerAxis);
+                across[k] = moves ? across[k] + width[k] : across[k];  // the others keep their next plane
+            }
+            if (!(leave < t1) || off_grid || ++step > 3 * kCellsPerAxis) return false;
+            enter = std::max(enter, leave);
+            return true;
+        };
+        while (true) {
             const CellIndex cell{cell_of[0], cell_of[1], cell_of[2]};
             // The block's words are read at every step: they lie side by side in the slots, and a branch on whether
             // the walk entered another block (every few steps, in no pattern) cost more than the loads.
             const FoundBlock block = find_block(block_of(cell), cell, range, cell_bounds);
             const int at = bit(cell);
-            const int axis = across[0] <= across[1] && across[0] <= across[2] ? 0 : across[1] <= across[2] ? 1 : 2;
-            // across[axis], the least (whichever axis a tie went to).
-            const double leave = std::min({across[0], across[1], across[2], t1});
+            int axis = next_axis();
+            double leave = leaving();
             if (!((block.cells >> at) & 1)) {
-                if (!gap_stretch(leave, (block.inside >> at) & 1 ? Side::Inside : Side::Outside)) return false;
+                const bool inside = (block.inside >> at) & 1;
+                if (!gap_stretch(leave, inside ? Side::Inside : Side::Outside)) return false;
+                if (run.count_ == 0) {
+                    // Nothing gathered waits for the gap's end: the cells without surface that follow, of the same
+                    // sign, need nothing but the walk's steps, taken in a loop of their own, small enough to keep
+                    // its state in registers (most of a walk's steps: those of a ray that has left the surface).
+                    // The first cell of another kind is handled as any cell, at the top.
+                    bool more;
+                    while ((more = step_across(axis, leave))) {
+                        const CellIndex next{cell_of[0], cell_of[1], cell_of[2]};
+                        const Slot& slot = slots_[block_of(next)];
+                        const int next_at = bit(next);
+                        if (!slot.block.load(std::memory_order_acquire) ||
+                            ((slot.cells.load(std::memory_order_relaxed) >> next_at) & 1) ||
+                            bool((slot.inside.load(std::memory_order_relaxed) >> next_at) & 1) != inside)
+                            break;
+                        axis = next_axis();
+                        leave = leaving();
+                    }
+                    if (!more) break;
+                    continue;
+                }
             } else if (!((block.split >> at) & 1)) {
                 if (!surface_stretch(enter, leave, &block.block->entries[at], cell, kWholeCell)) return false;
             } else {
@@ -281,15 +324,7 @@ public:
                     lo = std::max(lo, cuts[c]);
                 }
             }
-            bool off_grid = false;
-            for (int k = 0; k < 3; ++k) {
-                const bool moves = k == axis;
-                cell_of[k] += moves ? (along[k] > 0 ? 1 : -1) : 0;
-                off_grid |= unsigned(cell_of[k]) >= unsigned(kCellsPerAxis);
-                across[k] = moves ? across[k] + width[k] : across[k];  // the others keep their next plane
-            }
-            if (!(leave < t1) || off_grid) break;
-            enter = std::max(enter, leave);
+            if (!step_across(axis, leave)) break;
         }
         if (run.count_ == 0) return true;
         return in_run ? hand_over(Side::Unknown, t1) : hand_over(gap, gap_from);
