@@ -79,10 +79,11 @@ private:
         std::uint8_t cells = 0, inside = 0;  // first: read with the first entries, in one cache line
         std::array<CellEntry, 8> entries{};
     };
-    // What is known of g over a block's 64 cells, where they can hold the surface, and the eighths of its split cells
-    // (in the order of their bits).
+    // What is known of g over a block's surface cells and the eighths of its split cells, each in the order of their
+    // bits: only those, so that the entries the walks read crowd fewer cache lines (a quarter of a surface block's
+    // cells hold the surface, as a rule).
     struct Block {
-        std::array<CellEntry, kBlock * kBlock * kBlock> entries{};
+        std::vector<CellEntry> entries;
         std::vector<Eighths> eighths;
     };
     // A block, once found, and which of its cells can hold the surface (the bits of one word). The words lie side
@@ -109,7 +110,8 @@ public:
     static constexpr int kMostSplitPerBlock = 32;
     // The most a shell takes on the heap, once rays have found every block.
     static constexpr std::size_t kMostHeapBytes =
-        std::size_t(kBlocks) * (sizeof(Block) + kMostSplitPerBlock * sizeof(Eighths));
+        std::size_t(kBlocks) *
+        (sizeof(Block) + kBlock * kBlock * kBlock * sizeof(CellEntry) + kMostSplitPerBlock * sizeof(Eighths));
 
     // g's sign next to a run, where a cell without surface lies there: such a cell's g keeps one sign, which holds
     // at the run's padded end (inside that cell, or inside the cells without surface that follow it, which share
@@ -294,7 +296,7 @@ public:
                     continue;
                 }
             } else if (!((block.split >> at) & 1)) {
-                if (!surface_stretch(enter, leave, &block.block->entries[at], cell, kWholeCell)) return false;
+                if (!surface_stretch(enter, leave, &cell_entry(block, at), cell, kWholeCell)) return false;
             } else {
                 // Through the eighths: cut where the line crosses the cell's middle planes, half a cell's width in t
                 // before it leaves across each; each piece's eighth is that of its middle.
@@ -376,7 +378,10 @@ private:
         return int(((i / kBlock) * kBlocksPerAxis + j / kBlock) * kBlocksPerAxis + l / kBlock);
     }
 
-    // The eighths of a split cell of a found block, kept in the order of the cells' bits.
+    // A surface cell's entry and a split cell's eighths in a found block, kept in the order of the cells' bits.
+    static const CellEntry& cell_entry(const FoundBlock& block, int at) {
+        return block.block->entries[std::popcount(block.cells & ((std::uint64_t(1) << at) - 1))];
+    }
     static const Eighths& split_eighths(const FoundBlock& block, int at) {
         return block.block->eighths[std::popcount(block.split & ((std::uint64_t(1) << at) - 1))];
     }
@@ -423,15 +428,19 @@ private:
                             continue;
                         }
                         cells |= std::uint64_t(1) << bit(at);
-                        block->entries[bit(at)] = CellEntry::of(own.bounds);
+                        block->entries.push_back(CellEntry::of(own.bounds));
                         if (own.bounds.known || block->eighths.size() == kMostSplitPerBlock) continue;
                         if (const std::optional<Eighths> eighths = find_eighths(at, range, cell_bounds)) {
                             split |= std::uint64_t(1) << bit(at);
                             block->eighths.push_back(*eighths);
                         }
                     }
-            if (cells != 0) found = block;
-            else delete block;
+            if (cells != 0) {
+                block->entries.shrink_to_fit();
+                found = block;
+            } else {
+                delete block;
+            }
         }
         // A thread that loses the race stores the same words.
         slot.cells.store(cells, std::memory_order_relaxed);
