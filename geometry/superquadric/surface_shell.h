@@ -80,8 +80,7 @@ private:
         std::array<CellEntry, 8> entries{};
     };
     // What is known of g over a block's surface cells and the eighths of its split cells, each in the order of their
-    // bits: only those, so that the entries the walks read crowd fewer cache lines (a quarter of a surface block's
-    // cells hold the surface, as a rule).
+    // bits: only those, as a rule a quarter of the block's cells (the others' entries would be memory no walk reads).
     struct Block {
         std::vector<CellEntry> entries;
         std::vector<Eighths> eighths;
