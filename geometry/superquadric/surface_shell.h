@@ -377,12 +377,16 @@ private:
         return int(((i / kBlock) * kBlocksPerAxis + j / kBlock) * kBlocksPerAxis + l / kBlock);
     }
 
-    // A surface cell's entry and a split cell's eighths in a found block, kept in the order of the cells' bits.
+    // A surface cell's entry and a split cell's eighths in a found block, kept in the order of the cells' bits: the
+    // place of bit `at` among the bits set in `word`.
+    static std::size_t rank(std::uint64_t word, int at) {
+        return std::size_t(std::popcount(word & ((std::uint64_t(1) << at) - 1)));
+    }
     static const CellEntry& cell_entry(const FoundBlock& block, int at) {
-        return block.block->entries[std::popcount(block.cells & ((std::uint64_t(1) << at) - 1))];
+        return block.block->entries[rank(block.cells, at)];
     }
     static const Eighths& split_eighths(const FoundBlock& block, int at) {
-        return block.block->eighths[std::popcount(block.split & ((std::uint64_t(1) << at) - 1))];
+        return block.block->eighths[rank(block.split, at)];
     }
 
     // The block with index `index`, which holds cell c: once known, read inline; found out of line when first asked
