@@ -28,7 +28,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -73,17 +72,19 @@ private:
             return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
         }
     };
-    // A split cell's eighths (eighth_box): what is known of g over those that can hold the surface, and g's sign over
-    // the others.
+    // A split cell's eighths (eighth_box): which can hold the surface, g's sign over the others, and where the
+    // entries of the first lie among the block's eighth_entries (theirs follow, in the order of their bits).
     struct Eighths {
-        std::uint8_t cells = 0, inside = 0;  // first: read with the first entries, in one cache line
-        std::array<CellEntry, 8> entries{};
+        std::uint8_t cells = 0, inside = 0;
+        std::uint16_t first = 0;
     };
-    // What is known of g over a block's surface cells and the eighths of its split cells, each in the order of their
-    // bits: only those, as a rule a quarter of the block's cells (the others' entries would be memory no walk reads).
+    // What is known of g over a block's surface cells and the eighths of its split cells that can hold the surface,
+    // each in the order of their bits: only those, as a rule a quarter of the block's cells and half of a split
+    // cell's eighths (the others' entries would be memory no walk reads).
     struct Block {
         std::vector<CellEntry> entries;
         std::vector<Eighths> eighths;
+        std::vector<CellEntry> eighth_entries;
     };
     // A block, once found, and which of its cells can hold the surface (the bits of one word). The words lie side
     // by side with the pointers, so that the walk reads them without touching the blocks, which lie apart on the
@@ -110,7 +111,8 @@ public:
     // The most a shell takes on the heap, once rays have found every block.
     static constexpr std::size_t kMostHeapBytes =
         std::size_t(kBlocks) *
-        (sizeof(Block) + kBlock * kBlock * kBlock * sizeof(CellEntry) + kMostSplitPerBlock * sizeof(Eighths));
+        (sizeof(Block) + kBlock * kBlock * kBlock * sizeof(CellEntry) +
+         kMostSplitPerBlock * (sizeof(Eighths) + 8 * sizeof(CellEntry)));
 
     // g's sign next to a run, where a cell without surface lies there: such a cell's g keeps one sign, which holds
     // at the run's padded end (inside that cell, or inside the cells without surface that follow it, which share
@@ -319,7 +321,7 @@ public:
                         eighth |= int(from[k] + along[k] * middle >= 0.5 * (box[k].lo + box[k].hi)) << (2 - k);
                     const bool more =
                         (eighths.cells >> eighth) & 1
-                            ? surface_stretch(lo, cuts[c], &eighths.entries[eighth], cell, eighth)
+                            ? surface_stretch(lo, cuts[c], &eighth_entry(block, eighths, eighth), cell, eighth)
                             : gap_stretch(cuts[c], (eighths.inside >> eighth) & 1 ? Side::Inside : Side::Outside);
                     if (!more) return false;
                     lo = std::max(lo, cuts[c]);
@@ -388,6 +390,9 @@ private:
     static const Eighths& split_eighths(const FoundBlock& block, int at) {
         return block.block->eighths[rank(block.split, at)];
     }
+    static const CellEntry& eighth_entry(const FoundBlock& block, const Eighths& eighths, int eighth) {
+        return block.block->eighth_entries[eighths.first + rank(eighths.cells, eighth)];
+    }
 
     // The block with index `index`, which holds cell c: once known, read inline; found out of line when first asked
     // for (the walk asks at every step, and nearly always the block is known).
@@ -433,13 +438,12 @@ private:
                         cells |= std::uint64_t(1) << bit(at);
                         block->entries.push_back(CellEntry::of(own.bounds));
                         if (own.bounds.known || block->eighths.size() == kMostSplitPerBlock) continue;
-                        if (const std::optional<Eighths> eighths = find_eighths(at, range, cell_bounds)) {
-                            split |= std::uint64_t(1) << bit(at);
-                            block->eighths.push_back(*eighths);
-                        }
+                        if (find_eighths(at, range, cell_bounds, *block)) split |= std::uint64_t(1) << bit(at);
                     }
             if (cells != 0) {
                 block->entries.shrink_to_fit();
+                block->eighths.shrink_to_fit();
+                block->eighth_entries.shrink_to_fit();
                 found = block;
             } else {
                 delete block;
@@ -456,11 +460,12 @@ private:
         return {expected, cells, inside, split};
     }
 
-    // What is known over a surface cell's eighths, where that settles some of them (their own bounds, or a sign),
-    // found as make_block finds a cell's.
+    // What is known over a surface cell's eighths, found as make_block finds a cell's, kept in `block` where that
+    // settles some of them (their own bounds, or a sign): whether it does.
     template <class Range, class CellBounds>
-    std::optional<Eighths> find_eighths(CellIndex at, const Range& range, const CellBounds& cell_bounds) const {
-        Eighths eighths;
+    bool find_eighths(CellIndex at, const Range& range, const CellBounds& cell_bounds, Block& block) const {
+        Eighths eighths{.first = std::uint16_t(block.eighth_entries.size())};
+        std::array<CellEntry, 8> entries;
         bool settles = false;
         for (int eighth = 0; eighth < 8; ++eighth) {
             const IntervalBox around = enlarged(eighth_box(at, eighth));
@@ -475,11 +480,14 @@ private:
                 eighths.inside |= std::uint8_t(int(own.inside) << eighth);
                 continue;
             }
+            entries[std::popcount(eighths.cells)] = CellEntry::of(own.bounds);
             eighths.cells |= std::uint8_t(1 << eighth);
-            eighths.entries[eighth] = CellEntry::of(own.bounds);
         }
-        if (!settles) return std::nullopt;
-        return eighths;
+        if (!settles) return false;
+        block.eighths.push_back(eighths);
+        block.eighth_entries.insert(block.eighth_entries.end(), entries.begin(),
+                                    entries.begin() + std::popcount(eighths.cells));
+        return true;
     }
 
     IntervalBox cell(CellIndex c) const {
