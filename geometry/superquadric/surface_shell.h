@@ -379,8 +379,8 @@ private:
         return int(((i / kBlock) * kBlocksPerAxis + j / kBlock) * kBlocksPerAxis + l / kBlock);
     }
 
-    // A surface cell's entry and a split cell's eighths in a found block, kept in the order of the cells' bits: the
-    // place of bit `at` among the bits set in `word`.
+    // A surface cell's entry, a split cell's eighths and an eighth's entry in a found block, each kept in the order of
+    // its bits (the cells' word, the eighths' byte): the place of bit `at` among the bits set in `word`.
     static std::size_t rank(std::uint64_t word, int at) {
         return std::size_t(std::popcount(word & ((std::uint64_t(1) << at) - 1)));
     }
